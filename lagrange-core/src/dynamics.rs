@@ -1,0 +1,254 @@
+//! The equations of motion of a [`Model`], by automatic differentiation.
+//!
+//! With Cartesian coordinates x(q, t), masses μ and Jacobian J = ∂x/∂q (see [`crate::model`]),
+//! Lagrange's equations d/dt(∂T/∂q̇ₖ) − ∂T/∂qₖ = 𝓕ₖ become (DESIGN §2; the lecture's "golden rule")
+//!
+//! ```text
+//! M(q,t) q̈ = 𝓕 − b,    M = Jᵀ diag(μ) J,    b = Jᵀ diag(μ) a,    a = d²/ds² x(q + s q̇, t + s)|₀,
+//! 𝓕 = Jᵀ F − ∇V + Q    (virtual work of Cartesian forces F, potential V, direct generalized forces Q).
+//! ```
+//!
+//! `a` is the acceleration x would have with q̈ = 0: every velocity-product (Coriolis, centripetal)
+//! and time term at once. Two passes of dual numbers give everything:
+//! 1. q seeded as a gradient dual (`DualSVec<S, N>`): x and its Jacobian rows, V and ∇V;
+//! 2. (q, t) seeded along (q̇, 1) as a second-order dual (`Dual2<S>`): x, ẋ and a.
+//!
+//! All functions are generic over the outer scalar `S`, so the accelerations themselves can be
+//! differentiated (implicit integrators, linearization) by calling them with dual numbers.
+
+use crate::error::{describe_configuration, Error, Result};
+use crate::geometry::Scalar;
+use crate::linalg::cholesky;
+use crate::model::{Coordinates, Model};
+use nalgebra::{SMatrix, SVector};
+use num_dual::{Dual, Dual2, DualSVec};
+
+/// The terms of M q̈ = 𝓕 − b at one state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EquationsOfMotion<S: Scalar, const N: usize> {
+    /// M(q, t), symmetric positive (semi)definite.
+    pub mass_matrix: SMatrix<S, N, N>,
+    /// 𝓕: generalized forces from potentials, applied forces and direct generalized forces.
+    pub generalized_forces: SVector<S, N>,
+    /// b: the inertial terms at q̈ = 0 (velocity products and explicit time dependence).
+    pub inertial_terms: SVector<S, N>,
+}
+
+/// Pass 1: x(q, t) seeded as a gradient over q. Returns the values and Jacobian rows.
+#[inline(always)]
+fn cartesian_with_jacobian<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+) -> ([DualSVec<S, N>; K], [DualSVec<S, N>; N], DualSVec<S, N>) {
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let td = DualSVec::from_re(t);
+    (model.cartesian(td, &qd), qd, td)
+}
+
+#[inline(always)]
+fn gradient<S: Scalar, const N: usize>(x: &DualSVec<S, N>) -> SVector<S, N> {
+    x.eps.0.unwrap_or_else(SVector::zeros)
+}
+
+/// Pass 2: x along (q̇, 1): values, ẋ and the q̈ = 0 accelerations `a`.
+#[inline(always)]
+fn cartesian_along_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> [Dual2<S>; K] {
+    let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
+    // A scleronomic mechanism never reads t: seeding it would be wasted work.
+    let t2 = if M::RHEONOMIC { Dual2::new(t, S::one(), S::zero()) } else { Dual2::from_re(t) };
+    model.cartesian(t2, &q2)
+}
+
+/// M(q, t) = Jᵀ diag(μ) J, from its Jacobian rows by full-square rank-one updates.
+#[inline(always)]
+fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
+    inertial: usize,
+    masses: &[f64; K],
+    rows: &[SVector<S, N>; K],
+) -> SMatrix<S, N, N> {
+    let mut mass_matrix = SMatrix::<S, N, N>::zeros();
+    for i in 0..inertial {
+        let mu = masses[i];
+        if mu == 0.0 {
+            continue;
+        }
+        let g = &rows[i];
+        for c in 0..N {
+            let gc = g[c] * mu;
+            for r in 0..N {
+                mass_matrix[(r, c)] += g[r] * gc;
+            }
+        }
+    }
+    mass_matrix
+}
+
+/// M, 𝓕 and b at (t, q, q̇).
+pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> EquationsOfMotion<S, N> {
+    let masses = model.masses();
+    // Pass 1: Jacobian rows and ∇V.
+    let (x1, qd, td) = cartesian_with_jacobian(model, t, q);
+    let rows: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    let mass_matrix = assemble_mass_matrix(M::INERTIAL, &masses, &rows);
+    let mut generalized_forces = if M::HAS_POTENTIAL {
+        -gradient(&model.potential(td, &qd, &x1))
+    } else {
+        SVector::zeros()
+    };
+
+    // Pass 2: ẋ and a.
+    let x2 = cartesian_along_motion(model, t, q, v);
+    let mut inertial_terms = SVector::<S, N>::zeros();
+    for i in 0..M::INERTIAL {
+        if masses[i] != 0.0 {
+            inertial_terms += rows[i] * (x2[i].v2 * masses[i]);
+        }
+    }
+
+    // Applied forces, by virtual work: 𝓕 += Jᵀ F + Q.
+    if M::HAS_FORCES {
+        let x: [S; K] = std::array::from_fn(|i| x2[i].re);
+        let x_dot: [S; K] = std::array::from_fn(|i| x2[i].v1);
+        let mut cartesian_force = [S::zero(); K];
+        let mut direct = [S::zero(); N];
+        model.applied_forces(t, q, v, &x, &x_dot, &mut cartesian_force, &mut direct);
+        for i in 0..K {
+            if cartesian_force[i] != 0.0 {
+                generalized_forces += rows[i] * cartesian_force[i];
+            }
+        }
+        generalized_forces += SVector::from(direct);
+    }
+    EquationsOfMotion { mass_matrix, generalized_forces, inertial_terms }
+}
+
+/// q̈ from M q̈ = 𝓕 − b, for any scalar (dual numbers give derivatives of the accelerations).
+/// Fails when M is singular at this configuration.
+pub fn accelerations_generic<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Result<[S; N]> {
+    let eom = equations_of_motion(model, t, q, v);
+    solve_accelerations::<M::Coords, S, N>(&eom, t, q)
+}
+
+/// Solves M q̈ = 𝓕 − b, naming the configuration when M is singular.
+pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
+    eom: &EquationsOfMotion<S, N>,
+    t: S,
+    q: &[S; N],
+) -> Result<[S; N]> {
+    let real = |q: &[S; N]| -> [f64; N] { std::array::from_fn(|j| q[j].re()) };
+    let l = cholesky(&eom.mass_matrix).map_err(|e| Error::SingularMassMatrix {
+        t: t.re(),
+        configuration: describe_configuration(&C::NAMES, &real(q)),
+        coordinate: C::NAMES[e.index],
+        pivot: e.pivot,
+    })?;
+    let qdd = crate::linalg::cholesky_substitute(&l, &(eom.generalized_forces - eom.inertial_terms));
+    if qdd.iter().all(|a| a.re().is_finite()) {
+        Ok(qdd.into())
+    } else {
+        Err(Error::NonFiniteDynamics { t: t.re(), configuration: describe_configuration(&C::NAMES, &real(q)) })
+    }
+}
+
+/// ẋ = J q̇ + ∂x/∂t: the Cartesian coordinates and their velocities, by one forward-mode pass.
+pub fn cartesian_velocities<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> ([S; K], [S; K]) {
+    let qd: [Dual<S>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
+    let td = if M::RHEONOMIC { Dual::new(t, S::one()) } else { Dual::from_re(t) };
+    let x = model.cartesian(td, &qd);
+    (std::array::from_fn(|i| x[i].re), std::array::from_fn(|i| x[i].eps))
+}
+
+/// T = ½ Σ μᵢ ẋᵢ².
+pub fn kinetic_energy<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> S {
+    let masses = model.masses();
+    let (_, x_dot) = cartesian_velocities(model, t, q, v);
+    let mut twice_t = S::zero();
+    for i in 0..M::INERTIAL {
+        twice_t += x_dot[i] * x_dot[i] * masses[i];
+    }
+    twice_t * 0.5
+}
+
+/// V(q, t).
+pub fn potential_energy<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(model: &M, t: S, q: &[S; N]) -> S {
+    if M::HAS_POTENTIAL {
+        let x = model.cartesian(t, q);
+        model.potential(t, q, &x)
+    } else {
+        S::zero()
+    }
+}
+
+/// Generalized momenta pₖ = ∂L/∂q̇ₖ = Σᵢ μᵢ ẋᵢ ∂xᵢ/∂qₖ = (Jᵀ diag(μ) ẋ)ₖ.
+pub fn momenta<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> [S; N] {
+    let masses = model.masses();
+    let (x1, _, _) = cartesian_with_jacobian(model, t, q);
+    let (_, x_dot) = cartesian_velocities(model, t, q, v);
+    let mut p = SVector::<S, N>::zeros();
+    for i in 0..M::INERTIAL {
+        if masses[i] != 0.0 {
+            p += gradient(&x1[i]) * (x_dot[i] * masses[i]);
+        }
+    }
+    p.into()
+}
+
+/// The mass matrix alone (one gradient pass).
+pub fn mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+) -> SMatrix<S, N, N> {
+    let (x1, _, _) = cartesian_with_jacobian(model, t, q);
+    let rows: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    assemble_mass_matrix(M::INERTIAL, &model.masses(), &rows)
+}
+
+/// ∂L/∂t = ∂T/∂t − ∂V/∂t at fixed (q, q̇): the rate of change of the energy function
+/// h = Σ pₖq̇ₖ − L along a motion without non-conservative forces (dh/dt = −∂L/∂t).
+pub fn lagrangian_time_derivative<M: Model<N, K>, const N: usize, const K: usize>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> f64 {
+    if !M::RHEONOMIC {
+        return 0.0;
+    }
+    let td = Dual::new(t, 1.0);
+    let qd: [Dual<f64>; N] = std::array::from_fn(|j| Dual::from_re(q[j]));
+    let vd: [Dual<f64>; N] = std::array::from_fn(|j| Dual::from_re(v[j]));
+    let lagrangian = kinetic_energy(model, td, &qd, &vd) - potential_energy(model, td, &qd);
+    lagrangian.eps
+}

@@ -1,0 +1,66 @@
+//! The errors a simulation can return. Nothing in the runtime panics on user input: a bad
+//! parameter, a bad state, a bad step or a configuration where the equations of motion cannot be
+//! solved is one of these, and the state the caller passed in is left as it was.
+
+/// Everything that can go wrong while evaluating or stepping a mechanism.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A parameter of the mechanism is NaN or infinite.
+    #[error("parameter `{name}` is not finite ({value})")]
+    NonFiniteParameter { name: &'static str, value: f64 },
+
+    /// A mass or moment of inertia is not positive, or an inertia tensor violates the triangle
+    /// inequality (I₁ + I₂ ≥ I₃ and permutations).
+    #[error("body `{body}`: {reason}")]
+    InvalidInertia { body: &'static str, reason: String },
+
+    /// The time, a coordinate or a velocity of the state is NaN or infinite.
+    #[error("state is not finite: {state}")]
+    NonFiniteState { state: String },
+
+    /// The step size is zero, negative, NaN or infinite.
+    #[error("step size must be positive and finite, got {h}")]
+    InvalidStep { h: f64 },
+
+    /// The mass matrix M(q, t) is singular (or not positive definite) at this configuration, so
+    /// the accelerations are not determined — for example spherical coordinates at a pole.
+    #[error("mass matrix is singular at t = {t}, {configuration} (pivot {pivot:e} of coordinate `{coordinate}`)")]
+    SingularMassMatrix { t: f64, configuration: String, coordinate: &'static str, pivot: f64 },
+
+    /// The equations of motion produced a NaN or an infinity (for example a position function
+    /// that divides by zero at this configuration).
+    #[error("equations of motion are not finite at t = {t}, {configuration}")]
+    NonFiniteDynamics { t: f64, configuration: String },
+
+    /// A Newton iteration of an implicit method did not converge.
+    #[error("Newton iteration did not converge in {iterations} iterations at t = {t} (residual {residual:e})")]
+    NewtonDiverged { t: f64, iterations: usize, residual: f64 },
+
+    /// The method refuses this mechanism (for example Störmer–Verlet on a mass matrix that depends
+    /// on the configuration).
+    #[error("{method} cannot integrate this mechanism: {reason}")]
+    UnsuitableMethod { method: &'static str, reason: String },
+
+    /// An explicit method has become unstable (the solution grew without bound at this step size).
+    #[error("{method} became unstable at t = {t} with h = {h}: the step is too large for the fastest mode")]
+    Unstable { method: &'static str, t: f64, h: f64 },
+}
+
+/// Shorthand for results of this crate.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// "theta1 = 0.1, theta2 = -3": a configuration named by its coordinates, for error messages.
+pub fn describe_configuration<const N: usize>(names: &[&'static str; N], q: &[f64; N]) -> String {
+    let parts: Vec<String> = names.iter().zip(q).map(|(n, v)| format!("{n} = {v}")).collect();
+    parts.join(", ")
+}
+
+/// "t = 0, q = (x = 1, y = NaN), v = (...)": a whole state, for error messages.
+pub fn describe_state<const N: usize>(names: &[&'static str; N], t: f64, q: &[f64; N], v: &[f64; N]) -> String {
+    format!(
+        "t = {t}, q = ({}), v = ({})",
+        describe_configuration(names, q),
+        describe_configuration(names, v)
+    )
+}

@@ -1,0 +1,25 @@
+//! The runtime of `lagrange`: the numerical work behind every `#[mechanism]`.
+//!
+//! - [`model`]: what a declaration compiles to (Cartesian coordinates x(q, t) with masses) and the
+//!   [`State`](model::State) a mechanism is simulated in;
+//! - [`dynamics`]: M q̈ = 𝓕 − b by dual-number automatic differentiation;
+//! - [`linalg`]: small dense solves generic over dual numbers;
+//! - [`mechanism`]: the user-facing [`Mechanism`](mechanism::Mechanism) trait;
+//! - [`integrate`]: integrators;
+//! - [`error`]: typed errors; nothing here panics on user input.
+//!
+//! Users depend on the `lagrange` facade crate, which re-exports all of this.
+
+pub mod dynamics;
+pub mod error;
+pub mod geometry;
+pub mod integrate;
+pub mod linalg;
+pub mod mechanism;
+pub mod model;
+
+pub use error::{Error, Result};
+pub use geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3};
+pub use integrate::{Integrator, Rk4};
+pub use mechanism::Mechanism;
+pub use model::{Coordinates, Model, State};

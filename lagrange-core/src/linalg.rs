@@ -1,0 +1,192 @@
+//! Small dense linear algebra for the equations of motion, generic over the scalar so the same
+//! solve runs on `f64` and on dual numbers (for exact Jacobians of the accelerations).
+//!
+//! The mass matrix is symmetric positive definite wherever the coordinates are independent, so the
+//! solve is a Cholesky factorisation M = L Lᵀ (Golub & Van Loan, *Matrix Computations*, 4th ed.,
+//! Alg. 4.2.1), written out for fixed N so the compiler unrolls it for the tiny systems mechanisms
+//! usually are. A pivot that is not clearly positive relative to the largest diagonal entry means
+//! the coordinates are locally dependent: that is reported, never turned into NaN.
+
+use crate::geometry::Scalar;
+use nalgebra::{SMatrix, SVector};
+
+/// Relative size (against the largest diagonal entry) under which a squared Cholesky pivot counts
+/// as zero. The squared pivots bound the smallest eigenvalue from above, so a pivot this small means
+/// κ(M) ≳ 1/(1e3·ε) ≈ 4.5e12: the solve would have lost all but three or four digits, and a
+/// configuration this close to singular is reported rather than trusted.
+pub const SINGULAR_PIVOT: f64 = 1e3 * f64::EPSILON;
+
+/// Why a Cholesky factorisation failed: the index of the first pivot that is not positive, and its
+/// (real part's) value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NotPositiveDefinite {
+    pub index: usize,
+    pub pivot: f64,
+}
+
+/// Solves M x = b for symmetric positive definite M by Cholesky, in place of nothing: returns x.
+///
+/// ```
+/// use lagrange_core::linalg::cholesky_solve;
+/// use nalgebra::{matrix, vector};
+/// let m = matrix![4.0, 2.0; 2.0, 3.0];
+/// let x = cholesky_solve(&m, &vector![2.0, 1.0]).unwrap();
+/// assert!(((m * x) - vector![2.0, 1.0]).norm() < 1e-15);
+/// ```
+#[inline]
+pub fn cholesky_solve<S: Scalar, const N: usize>(
+    m: &SMatrix<S, N, N>,
+    b: &SVector<S, N>,
+) -> Result<SVector<S, N>, NotPositiveDefinite> {
+    let l = cholesky(m)?;
+    Ok(cholesky_substitute(&l, b))
+}
+
+/// The lower Cholesky factor L of M = L Lᵀ (only the lower triangle of M is read).
+#[inline]
+pub fn cholesky<S: Scalar, const N: usize>(m: &SMatrix<S, N, N>) -> Result<SMatrix<S, N, N>, NotPositiveDefinite> {
+    let mut scale = 0.0f64;
+    for i in 0..N {
+        scale = scale.max(m[(i, i)].re().abs());
+    }
+    let tol = SINGULAR_PIVOT * scale;
+    let mut l = SMatrix::<S, N, N>::zeros();
+    for j in 0..N {
+        let mut d = m[(j, j)];
+        for k in 0..j {
+            d -= l[(j, k)] * l[(j, k)];
+        }
+        // `!(d > tol)` also catches NaN.
+        if !(d.re() > tol) {
+            return Err(NotPositiveDefinite { index: j, pivot: d.re() });
+        }
+        let ljj = d.sqrt();
+        l[(j, j)] = ljj;
+        let inv = ljj.recip();
+        for i in (j + 1)..N {
+            let mut s = m[(i, j)];
+            for k in 0..j {
+                s -= l[(i, k)] * l[(j, k)];
+            }
+            l[(i, j)] = s * inv;
+        }
+    }
+    Ok(l)
+}
+
+/// Solves L Lᵀ x = b given the lower Cholesky factor L.
+#[inline]
+pub fn cholesky_substitute<S: Scalar, const N: usize>(l: &SMatrix<S, N, N>, b: &SVector<S, N>) -> SVector<S, N> {
+    // forward: L y = b
+    let mut y = *b;
+    for i in 0..N {
+        let mut s = y[i];
+        for k in 0..i {
+            s -= l[(i, k)] * y[k];
+        }
+        y[i] = s / l[(i, i)];
+    }
+    // backward: Lᵀ x = y
+    for i in (0..N).rev() {
+        let mut s = y[i];
+        for k in (i + 1)..N {
+            s -= l[(k, i)] * y[k];
+        }
+        y[i] = s / l[(i, i)];
+    }
+    y
+}
+
+/// Solves A x = b for a general square A by LU with partial pivoting; `None` when a pivot vanishes
+/// (|pivot| ≤ `SINGULAR_PIVOT`·max|Aᵢⱼ|). Used by Newton iterations of implicit methods, whose
+/// Jacobians are not symmetric.
+pub fn lu_solve<const N: usize>(a: &SMatrix<f64, N, N>, b: &SVector<f64, N>) -> Option<SVector<f64, N>> {
+    let mut a = *a;
+    let mut x = *b;
+    let scale = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !scale.is_finite() {
+        return None;
+    }
+    let tol = SINGULAR_PIVOT * scale;
+    for c in 0..N {
+        let mut p = c;
+        for r in (c + 1)..N {
+            if a[(r, c)].abs() > a[(p, c)].abs() {
+                p = r;
+            }
+        }
+        if !(a[(p, c)].abs() > tol) {
+            return None;
+        }
+        if p != c {
+            a.swap_rows(p, c);
+            x.swap_rows(p, c);
+        }
+        let inv = 1.0 / a[(c, c)];
+        for r in (c + 1)..N {
+            let f = a[(r, c)] * inv;
+            if f != 0.0 {
+                for k in c..N {
+                    a[(r, k)] -= f * a[(c, k)];
+                }
+                x[r] -= f * x[c];
+            }
+        }
+    }
+    for r in (0..N).rev() {
+        let mut s = x[r];
+        for k in (r + 1)..N {
+            s -= a[(r, k)] * x[k];
+        }
+        x[r] = s / a[(r, r)];
+    }
+    Some(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{matrix, vector};
+    use num_dual::Dual64;
+
+    #[test]
+    fn cholesky_solves_spd_system() {
+        let m = matrix![4.0, 1.0, 0.5; 1.0, 3.0, 0.2; 0.5, 0.2, 2.0];
+        let b = vector![1.0, -2.0, 0.5];
+        let x = cholesky_solve(&m, &b).unwrap();
+        assert!((m * x - b).norm() < 1e-14);
+    }
+
+    #[test]
+    fn cholesky_reports_singular_pivot() {
+        // Rank one: second pivot is exactly zero.
+        let m = matrix![1.0, 2.0; 2.0, 4.0];
+        let e = cholesky(&m).unwrap_err();
+        assert_eq!(e.index, 1);
+        let nan = matrix![f64::NAN, 0.0; 0.0, 1.0];
+        assert_eq!(cholesky(&nan).unwrap_err().index, 0);
+    }
+
+    #[test]
+    fn cholesky_differentiates_through_dual_numbers() {
+        // x(s) = M(s)⁻¹ b with M(s) = [[2+s, 1],[1, 3]]: dx/ds = −M⁻¹ (dM/ds) x.
+        let s = Dual64::from_re(0.5).derivative();
+        let m = matrix![s + 2.0, Dual64::from(1.0); Dual64::from(1.0), Dual64::from(3.0)];
+        let b = vector![Dual64::from(1.0), Dual64::from(2.0)];
+        let x = cholesky_solve(&m, &b).unwrap();
+        let m0 = matrix![2.5, 1.0; 1.0, 3.0];
+        let x0 = cholesky_solve(&m0, &vector![1.0, 2.0]).unwrap();
+        let dx = -cholesky_solve(&m0, &vector![x0[0], 0.0]).unwrap();
+        assert!((x[0].re - x0[0]).abs() < 1e-15 && (x[1].re - x0[1]).abs() < 1e-15);
+        assert!((x[0].eps - dx[0]).abs() < 1e-14 && (x[1].eps - dx[1]).abs() < 1e-14);
+    }
+
+    #[test]
+    fn lu_solves_general_system_and_detects_singular() {
+        let a = matrix![0.0, 2.0, 1.0; 1.0, 1.0, 0.0; 3.0, 0.0, 1.0];
+        let b = vector![1.0, 2.0, 3.0];
+        let x = lu_solve(&a, &b).unwrap();
+        assert!((a * x - b).norm() < 1e-14);
+        assert!(lu_solve(&matrix![1.0, 2.0; 2.0, 4.0], &vector![1.0, 1.0]).is_none());
+    }
+}

@@ -1,0 +1,140 @@
+//! [`Mechanism`]: what every generated mechanism offers its user.
+
+use crate::dynamics::EquationsOfMotion;
+use crate::error::{Error, Result};
+use crate::geometry::Scalar;
+use crate::integrate::Integrator;
+use crate::model::{check_state, Coordinates, State};
+use nalgebra::SMatrix;
+
+/// A mechanism with `N` degrees of freedom, as `#[mechanism]` generates it.
+///
+/// The required methods are the generated glue (each forwards to a generic function of
+/// [`crate::dynamics`]); everything a user calls is provided on top of them, with named coordinates
+/// in and out and typed errors.
+pub trait Mechanism<const N: usize>: Sized {
+    /// The named generalized coordinates (`Coords` of the declaration).
+    type Coords: Coordinates<N>;
+
+    /// Checks parameters: finite, masses and inertias positive.
+    fn validate(&self) -> Result<()>;
+    /// M, 𝓕 and b at (t, q, q̇), for any scalar.
+    fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> EquationsOfMotion<S, N>;
+    /// T at (t, q, q̇), for any scalar.
+    fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> S;
+    /// V at (t, q), for any scalar.
+    fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; N]) -> S;
+    /// p = ∂L/∂q̇ at (t, q, q̇), for any scalar.
+    fn momenta_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [S; N];
+    /// ∂L/∂t at fixed (q, q̇) (zero for a scleronomic mechanism).
+    fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> f64;
+
+    /// q̈ at (t, q, q̇) for any scalar: solves M q̈ = 𝓕 − b. No validation (the hot path of
+    /// integrators, which validate once per step).
+    #[inline]
+    fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
+        let eom = self.equations_of_motion_at(t, q, v);
+        crate::dynamics::solve_accelerations::<Self::Coords, S, N>(&eom, t, q)
+    }
+
+    /// Checks parameters and state; what every user-facing call does first.
+    fn check(&self, state: &State<Self::Coords>) -> Result<([f64; N], [f64; N])> {
+        self.validate()?;
+        let (q, v) = (state.q.to_array(), state.v.to_array());
+        check_state(&Self::Coords::NAMES, state.t, &q, &v)?;
+        Ok((q, v))
+    }
+
+    /// The generalized accelerations q̈, by name.
+    ///
+    /// Errors: non-finite parameters or state, a singular mass matrix (the error names the
+    /// configuration), non-finite dynamics.
+    fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
+        let (q, v) = self.check(state)?;
+        self.accelerations_at(state.t, &q, &v).map(Self::Coords::from_array)
+    }
+
+    /// M(q, t): the mass matrix, row and column k for coordinate k in declaration order.
+    fn mass_matrix(&self, state: &State<Self::Coords>) -> Result<SMatrix<f64, N, N>> {
+        let (q, v) = self.check(state)?;
+        Ok(self.equations_of_motion_at(state.t, &q, &v).mass_matrix)
+    }
+
+    /// 𝓕: the generalized forces (potentials, applied and direct forces), by name.
+    fn generalized_forces(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
+        let (q, v) = self.check(state)?;
+        Ok(Self::Coords::from_array(self.equations_of_motion_at(state.t, &q, &v).generalized_forces.into()))
+    }
+
+    /// T: kinetic energy.
+    fn kinetic_energy(&self, state: &State<Self::Coords>) -> Result<f64> {
+        let (q, v) = self.check(state)?;
+        Ok(self.kinetic_energy_at(state.t, &q, &v))
+    }
+
+    /// V: potential energy.
+    fn potential_energy(&self, state: &State<Self::Coords>) -> Result<f64> {
+        let (q, _) = self.check(state)?;
+        Ok(self.potential_energy_at(state.t, &q))
+    }
+
+    /// T + V. Conserved when nothing depends on time and no non-conservative force acts.
+    fn energy(&self, state: &State<Self::Coords>) -> Result<f64> {
+        let (q, v) = self.check(state)?;
+        Ok(self.kinetic_energy_at(state.t, &q, &v) + self.potential_energy_at(state.t, &q))
+    }
+
+    /// p = ∂L/∂q̇, by name.
+    fn momenta(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
+        let (q, v) = self.check(state)?;
+        Ok(Self::Coords::from_array(self.momenta_at(state.t, &q, &v)))
+    }
+
+    /// The energy function (Jacobi integral) h = Σ pₖ q̇ₖ − L. Conserved when L does not depend on
+    /// t explicitly, even where T + V is not (a bead on a spinning hoop); in general
+    /// dh/dt = −∂L/∂t + (power of non-conservative forces).
+    fn energy_function(&self, state: &State<Self::Coords>) -> Result<f64> {
+        let (q, v) = self.check(state)?;
+        let p = self.momenta_at(state.t, &q, &v);
+        let pv: f64 = p.iter().zip(&v).map(|(p, v)| p * v).sum();
+        let lagrangian = self.kinetic_energy_at(state.t, &q, &v) - self.potential_energy_at(state.t, &q);
+        Ok(pv - lagrangian)
+    }
+
+    /// ∂L/∂t at the state (zero for a scleronomic mechanism).
+    fn lagrangian_time_derivative(&self, state: &State<Self::Coords>) -> Result<f64> {
+        let (q, v) = self.check(state)?;
+        Ok(self.lagrangian_time_derivative_at(state.t, &q, &v))
+    }
+
+    /// Advances `state` by one step of size `h` with integrator `I` (for example
+    /// [`Rk4`](crate::integrate::Rk4)). On error the state is unchanged.
+    fn step<I: Integrator>(&self, state: &mut State<Self::Coords>, h: f64) -> Result<()> {
+        I::step(self, state, h)
+    }
+
+    /// Advances `state` by `steps` steps of size `h`, calling `observe` after each. Stops at the first
+    /// error, leaving the state after the last successful step.
+    fn simulate<I: Integrator>(
+        &self,
+        state: &mut State<Self::Coords>,
+        h: f64,
+        steps: usize,
+        mut observe: impl FnMut(&State<Self::Coords>),
+    ) -> Result<()> {
+        for _ in 0..steps {
+            I::step(self, state, h)?;
+            observe(state);
+        }
+        Ok(())
+    }
+}
+
+/// Checks a step size.
+pub fn check_step(h: f64) -> Result<()> {
+    if h.is_finite() && h > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::InvalidStep { h })
+    }
+}

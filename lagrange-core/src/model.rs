@@ -1,0 +1,145 @@
+//! What a mechanism declaration compiles to, and the state it is simulated in.
+//!
+//! A declaration is reduced to one idea: the **Cartesian coordinates** x(q, t) ∈ ℝᴷ of everything
+//! that carries mass, each with a constant mass μᵢ, so that the kinetic energy is
+//!
+//! ```text
+//! T = ½ Σᵢ μᵢ ẋᵢ²,        ẋ = J(q,t) q̇ + ∂x/∂t,   J = ∂x/∂q.
+//! ```
+//!
+//! A particle contributes its 2 or 3 position components (μ = its mass). A planar rigid body
+//! contributes its centre of mass (μ = m) and its angle (μ = I, since ½Iθ̇² has the same form).
+//! A spatial rigid body with principal moments I₁, I₂, I₃ contributes its centre of mass and the
+//! three columns of its rotation matrix R, column k with μ = Jₖ = (I₁ + I₂ + I₃)/2 − Iₖ, because
+//! ½ ωᵀ I ω = ½ tr(Ṙ diag(J) Ṙᵀ) (Lee, Leok & McClamroch, *Global Formulations of Lagrangian and
+//! Hamiltonian Dynamics on Manifolds*, 2018, eq. (6.34)). Points where forces act but that carry no
+//! mass come last, with μ = 0, so their Jacobians are available for the virtual work of forces.
+//!
+//! Everything else — mass matrix, inertial terms, generalized forces — follows from x(q, t) by
+//! automatic differentiation in [`crate::dynamics`]. The `#[mechanism]` attribute writes an
+//! implementation of [`Model`]; users never implement it by hand (but can).
+
+use crate::error::{Error, Result};
+use crate::geometry::Scalar;
+
+/// A named set of generalized coordinates (or velocities) of a mechanism with `N` degrees of
+/// freedom. The `#[mechanism]` attribute implements it for the generated `Coords` struct.
+pub trait Coordinates<const N: usize>: Copy + Default + std::fmt::Debug {
+    /// The coordinates' names, in declaration order.
+    const NAMES: [&'static str; N];
+    /// The values in declaration order.
+    fn to_array(&self) -> [f64; N];
+    /// Builds the named struct from values in declaration order.
+    fn from_array(values: [f64; N]) -> Self;
+}
+
+/// Plain arrays are coordinates too (named q0, q1, … in messages); useful for hand-written models.
+impl<const N: usize> Coordinates<N> for [f64; N]
+where
+    [f64; N]: Default,
+{
+    const NAMES: [&'static str; N] = {
+        const NAMES: [&str; 32] = [
+            "q0", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "q8", "q9", "q10", "q11", "q12", "q13", "q14", "q15",
+            "q16", "q17", "q18", "q19", "q20", "q21", "q22", "q23", "q24", "q25", "q26", "q27", "q28", "q29",
+            "q30", "q31",
+        ];
+        let mut out = ["q"; N];
+        let mut i = 0;
+        while i < N && i < 32 {
+            out[i] = NAMES[i];
+            i += 1;
+        }
+        out
+    };
+    fn to_array(&self) -> [f64; N] {
+        *self
+    }
+    fn from_array(values: [f64; N]) -> Self {
+        values
+    }
+}
+
+/// The state of a mechanism: time, generalized coordinates q and generalized velocities v = q̇.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct State<C> {
+    /// Time.
+    pub t: f64,
+    /// Generalized coordinates q.
+    pub q: C,
+    /// Generalized velocities q̇.
+    pub v: C,
+}
+
+impl<C: Default> State<C> {
+    /// At rest at `q`, at t = 0.
+    pub fn at_rest(q: C) -> Self {
+        State { t: 0.0, q, v: C::default() }
+    }
+}
+
+impl<C> State<C> {
+    /// At `q` with velocities `v`, at time `t`.
+    pub fn new(t: f64, q: C, v: C) -> Self {
+        State { t, q, v }
+    }
+}
+
+/// The generated description of a mechanism: `N` generalized coordinates, `K` Cartesian coordinates
+/// (see the [module docs](self)). Implemented by `#[mechanism]`; the numerical work on it lives in
+/// [`crate::dynamics`].
+pub trait Model<const N: usize, const K: usize> {
+    /// The named coordinates.
+    type Coords: Coordinates<N>;
+
+    /// Rows `0..INERTIAL` of x carry mass; rows `INERTIAL..K` are massless points forces act at.
+    const INERTIAL: usize = K;
+    /// Whether x or V depend on time explicitly (a rheonomic mechanism). When false no time
+    /// derivative is seeded and momenta need no ∂x/∂t term.
+    const RHEONOMIC: bool;
+    /// Whether a potential V(q, t) is declared (gravity, springs, …).
+    const HAS_POTENTIAL: bool;
+    /// Whether applied Cartesian or generalized forces are declared.
+    const HAS_FORCES: bool;
+
+    /// Checks the parameters: finite, masses and inertias positive.
+    fn validate(&self) -> Result<()>;
+
+    /// μᵢ for each Cartesian coordinate (0 for massless force points).
+    fn masses(&self) -> [f64; K];
+
+    /// x(q, t).
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; N]) -> [D; K];
+
+    /// V(q, t); `x` is [`Model::cartesian`] at the same (q, t), passed so bodies are not recomputed.
+    fn potential<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> D {
+        let _ = (t, q, x);
+        D::zero()
+    }
+
+    /// Adds applied forces at (t, q, q̇): Cartesian components on the rows of x they act on
+    /// (`cartesian_force`), and forces directly on coordinates (`generalized_force`).
+    /// `x` and `x_dot` are the Cartesian positions and velocities at the same state.
+    #[allow(clippy::too_many_arguments)]
+    fn applied_forces<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+        x: &[S; K],
+        x_dot: &[S; K],
+        cartesian_force: &mut [S; K],
+        generalized_force: &mut [S; N],
+    ) {
+        let _ = (t, q, v, x, x_dot, cartesian_force, generalized_force);
+    }
+}
+
+/// Checks that a state is finite; the error names the coordinates.
+pub fn check_state<const N: usize>(names: &[&'static str; N], t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+    if t.is_finite() && q.iter().chain(v).all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(Error::NonFiniteState { state: crate::error::describe_state(names, t, q, v) })
+    }
+}
