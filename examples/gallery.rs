@@ -1,0 +1,50 @@
+//! The gallery: every scene, simulated and printed against its closed form, with plots written to
+//! `plots/` (or `$LAGRANGE_PLOTS`). Exits non-zero if any check fails.
+//!
+//! ```text
+//! cargo run --release --example gallery
+//! ```
+
+#[path = "atwood.rs"]
+mod atwood;
+#[path = "breathing_ellipse.rs"]
+mod breathing_ellipse;
+#[path = "double_pendulum.rs"]
+mod double_pendulum;
+#[path = "pendulum.rs"]
+mod pendulum;
+#[path = "ramp.rs"]
+mod ramp;
+#[path = "rigid_triangle.rs"]
+mod rigid_triangle;
+#[path = "spinning_hoop.rs"]
+mod spinning_hoop;
+#[path = "wedge_block.rs"]
+mod wedge_block;
+
+use lagrange_gallery::{plots_dir, table, Check};
+use std::path::Path;
+
+/// Every scene, in the order the README lists them.
+pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
+    wedge_block::run,
+    ramp::run,
+    breathing_ellipse::run,
+    spinning_hoop::run,
+    pendulum::run,
+    double_pendulum::run,
+    rigid_triangle::run,
+    atwood::run,
+];
+
+fn main() {
+    let plots = plots_dir();
+    let checks: Vec<Check> = SCENES.iter().flat_map(|run| run(&plots)).collect();
+    println!();
+    print!("{}", table(&checks));
+    let failed = checks.iter().filter(|c| !c.passed()).count();
+    println!("\n{} checks, {} failed; plots in {}", checks.len(), failed, plots.display());
+    if failed > 0 {
+        std::process::exit(1);
+    }
+}

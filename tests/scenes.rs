@@ -1,0 +1,78 @@
+//! Every gallery scene against its closed form: the same `run` functions the gallery prints, each
+//! check carrying the tolerance its scene file argues from the method's error.
+
+#[path = "../examples/atwood.rs"]
+#[allow(dead_code)]
+mod atwood;
+#[path = "../examples/breathing_ellipse.rs"]
+#[allow(dead_code)]
+mod breathing_ellipse;
+#[path = "../examples/double_pendulum.rs"]
+#[allow(dead_code)]
+mod double_pendulum;
+#[path = "../examples/pendulum.rs"]
+#[allow(dead_code)]
+mod pendulum;
+#[path = "../examples/ramp.rs"]
+#[allow(dead_code)]
+mod ramp;
+#[path = "../examples/rigid_triangle.rs"]
+#[allow(dead_code)]
+mod rigid_triangle;
+#[path = "../examples/spinning_hoop.rs"]
+#[allow(dead_code)]
+mod spinning_hoop;
+#[path = "../examples/wedge_block.rs"]
+#[allow(dead_code)]
+mod wedge_block;
+
+use lagrange_gallery::{table, Check};
+use std::path::PathBuf;
+
+fn assert_scene(run: fn(&std::path::Path) -> Vec<Check>) {
+    let dir: PathBuf = std::env::temp_dir().join("lagrange-test-plots");
+    std::fs::create_dir_all(&dir).unwrap();
+    let checks = run(&dir);
+    assert!(!checks.is_empty(), "a scene must check something");
+    assert!(checks.iter().all(Check::passed), "\n{}", table(&checks));
+}
+
+#[test]
+fn wedge_and_block() {
+    assert_scene(wedge_block::run);
+}
+
+#[test]
+fn block_on_a_ramp() {
+    assert_scene(ramp::run);
+}
+
+#[test]
+fn bead_on_a_breathing_ellipse() {
+    assert_scene(breathing_ellipse::run);
+}
+
+#[test]
+fn bead_on_a_spinning_hoop() {
+    assert_scene(spinning_hoop::run);
+}
+
+#[test]
+fn large_amplitude_pendulum() {
+    assert_scene(pendulum::run);
+}
+
+#[test]
+fn double_pendulum_energy() {
+    assert_scene(double_pendulum::run);
+}
+
+#[test]
+fn three_particles_equal_one_rigid_body() {
+    assert_scene(rigid_triangle::run);
+}
+
+#[test]
+fn atwood_machine() {
+    assert_scene(atwood::run);
+}
