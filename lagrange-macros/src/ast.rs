@@ -1,0 +1,206 @@
+//! The declaration as a typed model: the module's structs and marked functions, with their spans.
+
+use crate::attr::{self, Args, Kind};
+use crate::ctxt::Ctxt;
+use proc_macro2::Span;
+use syn::{
+    Attribute, Block, Ident, Item, ItemMod, ItemStruct, ReturnType, Signature, Type, Visibility,
+};
+
+/// One `f64` field of the coordinates or parameters struct.
+#[derive(Clone)]
+pub struct Field {
+    pub attrs: Vec<Attribute>,
+    pub ident: Ident,
+}
+
+/// A marked function: a body, point, potential, gravity or force.
+#[derive(Clone)]
+pub struct Decl {
+    pub args: Args,
+    /// Attributes other than the kind (doc comments).
+    pub attrs: Vec<Attribute>,
+    pub sig: Signature,
+    pub block: Block,
+}
+
+impl Decl {
+    pub fn ident(&self) -> &Ident {
+        &self.sig.ident
+    }
+    pub fn kind(&self) -> Kind {
+        self.args.kind
+    }
+    /// The declared return type, if any.
+    pub fn output(&self) -> Option<&Type> {
+        match &self.sig.output {
+            ReturnType::Type(_, ty) => Some(ty),
+            ReturnType::Default => None,
+        }
+    }
+}
+
+/// The whole declaration.
+pub struct Mechanism {
+    pub attrs: Vec<Attribute>,
+    pub vis: Visibility,
+    pub ident: Ident,
+    /// `struct Coords`, as written, and its fields.
+    pub coords: Option<(ItemStruct, Vec<Field>)>,
+    /// The parameter struct, as written, and its fields.
+    pub params: Option<(ItemStruct, Vec<Field>)>,
+    pub decls: Vec<Decl>,
+    /// Everything else (`use`, helper functions, constants), re-emitted untouched.
+    pub other_items: Vec<Item>,
+    /// Names of the module's own items and imports: in scope in every function.
+    pub item_names: Vec<Ident>,
+    /// A `use path::*;` brings in names we cannot see: unknown names are then left to rustc.
+    pub has_glob_import: bool,
+}
+
+impl Mechanism {
+    /// Parses the module, reporting what is not a declaration.
+    pub fn from_module(cx: &Ctxt, module: ItemMod) -> Option<Mechanism> {
+        let Some((_, items)) = module.content else {
+            // `#[mechanism] mod m;`: the declaration must be inline.
+            cx.error_spanned_by(
+                &module.ident,
+                "#[mechanism] goes on an inline module: `mod name { ... }`",
+            );
+            return None;
+        };
+        let mut mechanism = Mechanism {
+            attrs: module.attrs,
+            vis: module.vis,
+            ident: module.ident,
+            coords: None,
+            params: None,
+            decls: Vec::new(),
+            other_items: Vec::new(),
+            item_names: Vec::new(),
+            has_glob_import: false,
+        };
+        for item in items {
+            mechanism.add_item(cx, item);
+        }
+        Some(mechanism)
+    }
+
+    fn add_item(&mut self, cx: &Ctxt, item: Item) {
+        match item {
+            Item::Struct(s) => self.add_struct(cx, s),
+            Item::Fn(f) => match attr::split_kind(cx, &f.attrs) {
+                (Some((kind, kind_attr)), attrs) => {
+                    let args = attr::parse_args(cx, kind, &kind_attr);
+                    self.decls.push(Decl {
+                        args,
+                        attrs,
+                        sig: f.sig,
+                        block: *f.block,
+                    });
+                }
+                (None, _) => {
+                    self.item_names.push(f.sig.ident.clone());
+                    self.other_items.push(Item::Fn(f));
+                }
+            },
+            other => {
+                self.record_names(&other);
+                self.other_items.push(other);
+            }
+        }
+    }
+
+    fn add_struct(&mut self, cx: &Ctxt, s: ItemStruct) {
+        let fields = struct_fields(cx, &s);
+        if s.ident == "Coords" {
+            // Two `struct Coords`: rustc would say so too, but only once here.
+            if self.coords.is_some() {
+                cx.error_spanned_by(&s.ident, "`Coords` is declared twice");
+            } else {
+                self.coords = Some((s, fields));
+            }
+        } else if let Some((first, _)) = &self.params {
+            // `struct Pendulum {..} struct Helper {..}`: the parameter struct is the only other struct.
+            cx.error_spanned_by(
+                &s.ident,
+                format!(
+                    "a mechanism has one parameter struct, `{}`; move `{}` out of the module",
+                    first.ident, s.ident
+                ),
+            );
+        } else {
+            self.params = Some((s, fields));
+        }
+    }
+
+    fn record_names(&mut self, item: &Item) {
+        let ident = match item {
+            Item::Const(i) => Some(&i.ident),
+            Item::Static(i) => Some(&i.ident),
+            Item::Enum(i) => Some(&i.ident),
+            Item::Mod(i) => Some(&i.ident),
+            Item::Type(i) => Some(&i.ident),
+            Item::Union(i) => Some(&i.ident),
+            Item::Trait(i) => Some(&i.ident),
+            Item::Macro(i) => i.ident.as_ref(),
+            Item::Use(u) => {
+                self.record_use(&u.tree);
+                None
+            }
+            _ => None,
+        };
+        self.item_names.extend(ident.cloned());
+    }
+
+    fn record_use(&mut self, tree: &syn::UseTree) {
+        match tree {
+            syn::UseTree::Path(p) => self.record_use(&p.tree),
+            syn::UseTree::Name(n) => self.item_names.push(n.ident.clone()),
+            syn::UseTree::Rename(r) => self.item_names.push(r.rename.clone()),
+            syn::UseTree::Glob(_) => self.has_glob_import = true,
+            syn::UseTree::Group(g) => g.items.iter().for_each(|t| self.record_use(t)),
+        }
+    }
+
+    /// The module name's span, for errors about something missing.
+    pub fn span(&self) -> Span {
+        self.ident.span()
+    }
+}
+
+/// The named fields of the coordinates or parameters struct, each checked to be `f64`.
+fn struct_fields(cx: &Ctxt, s: &ItemStruct) -> Vec<Field> {
+    match &s.fields {
+        syn::Fields::Named(named) => named
+            .named
+            .iter()
+            .map(|f| {
+                // `pub l: f32`: everything is f64 (and lifted to dual numbers).
+                if !is_f64(&f.ty) {
+                    cx.error_spanned_by(&f.ty, "fields of a mechanism's structs are `f64`");
+                }
+                Field {
+                    attrs: f.attrs.clone(),
+                    ident: f.ident.clone().unwrap(),
+                }
+            })
+            .collect(),
+        syn::Fields::Unit => Vec::new(),
+        // `struct Coords(f64, f64)`: coordinates and parameters have names.
+        syn::Fields::Unnamed(u) => {
+            cx.error_spanned_by(
+                u,
+                format!(
+                    "`{}` needs named fields: `{} {{ pub x: f64 }}`",
+                    s.ident, s.ident
+                ),
+            );
+            Vec::new()
+        }
+    }
+}
+
+fn is_f64(ty: &Type) -> bool {
+    matches!(ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
+}

@@ -1,0 +1,203 @@
+//! The attributes that mark a declaration's functions, and their arguments.
+
+use crate::ctxt::Ctxt;
+use syn::parse::{Parse, ParseStream};
+use syn::punctuated::Punctuated;
+use syn::{Attribute, Expr, Ident, Token};
+
+/// What a function of the declaration is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    Particle,
+    RigidBody,
+    Point,
+    Potential,
+    Gravity,
+    Force,
+    Torque,
+    GeneralizedForce,
+}
+
+impl Kind {
+    /// The attribute name, as written.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Particle => "particle",
+            Kind::RigidBody => "rigid_body",
+            Kind::Point => "point",
+            Kind::Potential => "potential",
+            Kind::Gravity => "gravity",
+            Kind::Force => "force",
+            Kind::Torque => "torque",
+            Kind::GeneralizedForce => "generalized_force",
+        }
+    }
+
+    fn from_attribute(attr: &Attribute) -> Option<Kind> {
+        let ident = attr.path().get_ident()?;
+        [
+            Kind::Particle,
+            Kind::RigidBody,
+            Kind::Point,
+            Kind::Potential,
+            Kind::Gravity,
+            Kind::Force,
+            Kind::Torque,
+            Kind::GeneralizedForce,
+        ]
+        .into_iter()
+        .find(|k| ident == k.name())
+    }
+
+    /// The arguments this kind accepts.
+    fn allowed_arguments(self) -> &'static [&'static str] {
+        match self {
+            Kind::Particle => &["mass"],
+            Kind::RigidBody => &["mass", "inertia"],
+            Kind::Force | Kind::Torque | Kind::GeneralizedForce => &["on"],
+            Kind::Point | Kind::Potential | Kind::Gravity => &[],
+        }
+    }
+
+    /// Whether the function's body is a position (a body or a point).
+    pub fn is_position(self) -> bool {
+        matches!(self, Kind::Particle | Kind::RigidBody | Kind::Point)
+    }
+}
+
+/// A moment of inertia: one about the centre of mass (planar), or three principal moments (spatial).
+#[derive(Clone)]
+pub enum Inertia {
+    Moment(Expr),
+    Principal(syn::ExprArray),
+}
+
+/// The parsed arguments of one kind attribute.
+#[derive(Clone)]
+pub struct Args {
+    pub kind: Kind,
+    /// The whole attribute, for errors about something missing.
+    pub attr: Attribute,
+    pub mass: Option<Expr>,
+    pub inertia: Option<Inertia>,
+    pub on: Option<Ident>,
+}
+
+struct Argument {
+    key: Ident,
+    value: Expr,
+}
+
+impl Parse for Argument {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let key: Ident = input.parse()?;
+        let _: Token![=] = input.parse()?;
+        let value: Expr = input.parse()?;
+        Ok(Argument { key, value })
+    }
+}
+
+/// Finds the one kind attribute among `attrs`, reporting a second one. Returns the kind attribute
+/// and the others (doc comments, lints) untouched.
+pub fn split_kind(cx: &Ctxt, attrs: &[Attribute]) -> (Option<(Kind, Attribute)>, Vec<Attribute>) {
+    let mut kind = None;
+    let mut rest = Vec::new();
+    for attr in attrs {
+        match Kind::from_attribute(attr) {
+            // `#[particle(mass = m)] #[point] fn tip()`: one function is one thing.
+            Some(k) if kind.is_some() => cx.error_spanned_by(
+                attr,
+                format!("a function is only one thing; remove `#[{}]`", k.name()),
+            ),
+            Some(k) => kind = Some((k, attr.clone())),
+            None => rest.push(attr.clone()),
+        }
+    }
+    (kind, rest)
+}
+
+/// Parses the arguments of a kind attribute, reporting unknown and repeated ones.
+pub fn parse_args(cx: &Ctxt, kind: Kind, attr: &Attribute) -> Args {
+    let mut args = Args {
+        kind,
+        attr: attr.clone(),
+        mass: None,
+        inertia: None,
+        on: None,
+    };
+    let parsed = match &attr.meta {
+        syn::Meta::Path(_) => Punctuated::new(),
+        syn::Meta::List(list) => {
+            match list.parse_args_with(Punctuated::<Argument, Token![,]>::parse_terminated) {
+                Ok(parsed) => parsed,
+                Err(e) => {
+                    cx.syn_error(e);
+                    return args;
+                }
+            }
+        }
+        // `#[particle = m]`: arguments go in parentheses.
+        syn::Meta::NameValue(nv) => {
+            cx.error_spanned_by(nv, format!("write `#[{}(name = value)]`", kind.name()));
+            return args;
+        }
+    };
+    for argument in parsed {
+        add_argument(cx, &mut args, argument);
+    }
+    args
+}
+
+fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
+    let allowed = args.kind.allowed_arguments();
+    // `#[particle(mas = m)]`: an argument this attribute does not know.
+    if !allowed.iter().any(|a| key == a) {
+        let expected = match allowed {
+            [] => format!("`#[{}]` takes no arguments", args.kind.name()),
+            _ => format!(
+                "expected {}",
+                allowed
+                    .iter()
+                    .map(|a| format!("`{a}`"))
+                    .collect::<Vec<_>>()
+                    .join(" or ")
+            ),
+        };
+        cx.error_spanned_by(
+            &key,
+            format!(
+                "unknown argument `{key}` of `#[{}]`: {expected}",
+                args.kind.name()
+            ),
+        );
+        return;
+    }
+    let repeated = match key.to_string().as_str() {
+        "mass" => args.mass.replace(value).is_some(),
+        "inertia" => {
+            let inertia = match value {
+                Expr::Array(array) => Inertia::Principal(array),
+                other => Inertia::Moment(other),
+            };
+            args.inertia.replace(inertia).is_some()
+        }
+        _ => match value {
+            Expr::Path(p) if p.path.get_ident().is_some() => args
+                .on
+                .replace(p.path.get_ident().unwrap().clone())
+                .is_some(),
+            // `#[force(on = bodies[0])]`: the target is a name.
+            other => {
+                cx.error_spanned_by(
+                    other,
+                    "`on =` takes the name of a body, point or coordinate",
+                );
+                false
+            }
+        },
+    };
+    // `#[particle(mass = m, mass = 2.0)]`: said twice.
+    if repeated {
+        cx.error_spanned_by(&key, format!("`{key}` is given twice"));
+    }
+}

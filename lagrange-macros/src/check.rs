@@ -1,0 +1,599 @@
+//! The checks: every rule a declaration must satisfy, each reported at the offending tokens into
+//! the error context. The result is the checked model the expansion works from.
+
+use crate::ast::{Decl, Field, Mechanism};
+use crate::attr::{Inertia, Kind};
+use crate::ctxt::Ctxt;
+use crate::names;
+use std::collections::{BTreeSet, HashMap};
+use syn::{Ident, Type};
+
+/// Functions of the geometry module, in scope in every function body.
+pub const GEOMETRY_FUNCTIONS: &[&str] = &[
+    "vec2", "vec3", "planar", "spatial", "rot_x", "rot_y", "rot_z",
+];
+/// Single-segment values of Rust's prelude.
+const PRELUDE_VALUES: &[&str] = &["Some", "None", "Ok", "Err", "drop", "self", "Self"];
+
+/// Dimension of a vector.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dim {
+    Two,
+    Three,
+}
+
+/// What a body or point is, geometrically.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    Particle(Dim),
+    Point(Dim),
+    Planar,
+    Spatial,
+}
+
+impl Shape {
+    /// Rows of the Cartesian coordinates x it occupies.
+    pub fn rows(self) -> usize {
+        match self {
+            Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => 2,
+            Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => 3,
+            Shape::Planar => 3,
+            Shape::Spatial => 12,
+        }
+    }
+    /// Dimension of its position (centre of mass).
+    pub fn dim(self) -> Dim {
+        match self {
+            Shape::Particle(d) | Shape::Point(d) => d,
+            Shape::Planar => Dim::Two,
+            Shape::Spatial => Dim::Three,
+        }
+    }
+    pub fn has_mass(self) -> bool {
+        !matches!(self, Shape::Point(_))
+    }
+}
+
+/// A body or point: its declaration, shape, first row in x, and free names.
+pub struct Body<'a> {
+    pub decl: &'a Decl,
+    pub shape: Shape,
+    pub row: usize,
+}
+
+/// A force, torque or generalized force and what it acts on.
+pub struct Force<'a> {
+    pub decl: &'a Decl,
+    /// Index into `bodies` (force, torque) or `coords` (generalized force).
+    pub target: usize,
+    pub kind: Kind,
+}
+
+/// A checked declaration: what the expansion works from.
+pub struct Model<'a> {
+    pub mechanism: &'a Mechanism,
+    pub params_ident: &'a Ident,
+    pub coords: &'a [Field],
+    pub params: &'a [Field],
+    /// Bodies and points in declaration order.
+    pub bodies: Vec<Body<'a>>,
+    pub potentials: Vec<&'a Decl>,
+    pub gravities: Vec<(&'a Decl, Dim)>,
+    pub forces: Vec<Force<'a>>,
+    /// Free names of each declared function, by function name.
+    pub free_names: HashMap<String, Vec<Ident>>,
+    /// Whether `t` is named in a position, potential or gravity.
+    pub rheonomic: bool,
+    /// Rows of x in total.
+    pub rows: usize,
+    /// Rows that carry mass (massless points come after).
+    pub inertial_rows: usize,
+}
+
+impl<'a> Model<'a> {
+    /// The free names of a group of functions.
+    pub fn names_used_by<'d>(&self, decls: impl IntoIterator<Item = &'d Decl>) -> BTreeSet<String> {
+        decls
+            .into_iter()
+            .flat_map(|d| {
+                self.free_names
+                    .get(&d.ident().to_string())
+                    .into_iter()
+                    .flatten()
+            })
+            .map(|i| i.to_string())
+            .collect()
+    }
+}
+
+/// Checks `mechanism`, reporting every problem into `cx`. Returns the model when the declaration
+/// has its two structs (even if other errors were found, so that they are all reported).
+pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
+    // `#[mechanism] mod m { struct Pendulum {..} ... }` without `struct Coords`.
+    let Some((_, coords)) = &mechanism.coords else {
+        cx.error_at(mechanism.span(), "missing `pub struct Coords { ... }`: the generalized coordinates, one `f64` field each");
+        return None;
+    };
+    // `#[mechanism] mod m { struct Coords {..} ... }` without a parameter struct.
+    let Some((params_struct, params)) = &mechanism.params else {
+        cx.error_at(mechanism.span(), "missing the parameter struct (`pub struct Name { pub m: f64, ... }`): its name is the mechanism's type");
+        return None;
+    };
+    // `struct Coords {}`: nothing moves.
+    if coords.is_empty() {
+        cx.error_spanned_by(
+            &mechanism.coords.as_ref().unwrap().0.ident,
+            "`Coords` needs at least one coordinate",
+        );
+    }
+    check_duplicates(cx, mechanism, coords, params);
+    let bodies = lay_out_bodies(cx, mechanism);
+    let mut model = Model {
+        mechanism,
+        params_ident: &params_struct.ident,
+        coords,
+        params,
+        potentials: Vec::new(),
+        gravities: Vec::new(),
+        forces: Vec::new(),
+        free_names: HashMap::new(),
+        rheonomic: false,
+        rows: bodies.iter().map(|b| b.shape.rows()).sum(),
+        inertial_rows: bodies
+            .iter()
+            .filter(|b| b.shape.has_mass())
+            .map(|b| b.shape.rows())
+            .sum(),
+        bodies,
+    };
+    for decl in &mechanism.decls {
+        check_signature(cx, decl);
+        check_function(cx, &mut model, decl);
+    }
+    check_masses(cx, &model);
+    check_coordinates_are_used(cx, &model);
+    Some(model)
+}
+
+/// Bodies and points with their shapes, massive ones first in x, points last.
+fn lay_out_bodies<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Vec<Body<'a>> {
+    let mut bodies: Vec<Body> = mechanism
+        .decls
+        .iter()
+        .filter(|d| d.kind().is_position())
+        .map(|decl| Body {
+            decl,
+            shape: body_shape(cx, decl),
+            row: 0,
+        })
+        .collect();
+    let mut row = 0;
+    for massive in [true, false] {
+        for body in bodies.iter_mut().filter(|b| b.shape.has_mass() == massive) {
+            body.row = row;
+            row += body.shape.rows();
+        }
+    }
+    bodies
+}
+
+/// The last segment of a return type, if it is a plain name (`Vec2`, `lagrange::Vec2`).
+fn return_type_name(decl: &Decl) -> Option<String> {
+    match decl.output()? {
+        Type::Path(p) if p.qself.is_none() => {
+            let last = p.path.segments.last()?;
+            last.arguments.is_none().then(|| last.ident.to_string())
+        }
+        _ => None,
+    }
+}
+
+/// Reports a return type that is not one of `expected`, at the return type (or the name if none).
+fn expect_return_type(cx: &Ctxt, decl: &Decl, expected: &[&str], why: &str) -> Option<String> {
+    let name = return_type_name(decl).filter(|n| expected.contains(&n.as_str()));
+    if name.is_none() {
+        let list = expected
+            .iter()
+            .map(|e| format!("`{e}`"))
+            .collect::<Vec<_>>()
+            .join(" or ");
+        let message = format!("`#[{}]` returns {list}: {why}", decl.kind().name());
+        match decl.output() {
+            Some(ty) => cx.error_spanned_by(ty, message),
+            None => cx.error_spanned_by(&decl.sig, format!("missing return type; {message}")),
+        }
+    }
+    name
+}
+
+fn vector_dim(name: Option<String>) -> Dim {
+    if name.as_deref() == Some("Vec3") {
+        Dim::Three
+    } else {
+        Dim::Two
+    }
+}
+
+/// The shape of a body from its return type and inertia, reporting mismatches.
+fn body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
+    match decl.kind() {
+        // `#[particle(mass = m)] fn bob() -> f64`: a particle is where it is.
+        Kind::Particle => Shape::Particle(vector_dim(expect_return_type(
+            cx,
+            decl,
+            &["Vec2", "Vec3"],
+            "its position",
+        ))),
+        // `#[point] fn tip() -> Planar`: a point is a position.
+        Kind::Point => Shape::Point(vector_dim(expect_return_type(
+            cx,
+            decl,
+            &["Vec2", "Vec3"],
+            "its position",
+        ))),
+        _ => rigid_body_shape(cx, decl),
+    }
+}
+
+fn rigid_body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
+    let principal = matches!(decl.args.inertia, Some(Inertia::Principal(_)));
+    // `#[rigid_body(..)] fn bar() -> Vec2`: a rigid body has an orientation too.
+    let name = expect_return_type(
+        cx,
+        decl,
+        &["Planar", "Spatial"],
+        "its centre of mass and orientation",
+    );
+    match (name.as_deref(), principal) {
+        (Some("Spatial"), true) | (None, true) => Shape::Spatial,
+        (Some("Planar"), false) | (None, false) => Shape::Planar,
+        // `#[rigid_body(mass = m, inertia = [a, b, c])] fn top() -> Planar`.
+        (Some(_), true) => {
+            cx.error_spanned_by(decl.output(), "three principal moments `inertia = [I1, I2, I3]` make a spatial body: return `Spatial`");
+            Shape::Spatial
+        }
+        // `#[rigid_body(mass = m, inertia = i)] fn top() -> Spatial`.
+        (Some(_), false) => {
+            cx.error_spanned_by(decl.output(), "a spatial body needs its principal moments `inertia = [I1, I2, I3]`; one moment makes a `Planar` body");
+            Shape::Spatial
+        }
+    }
+}
+
+/// Duplicate names among coordinates, parameters, bodies and functions, and the reserved `t`.
+fn check_duplicates(cx: &Ctxt, mechanism: &Mechanism, coords: &[Field], params: &[Field]) {
+    let mut seen: HashMap<String, &'static str> = HashMap::new();
+    let names = coords
+        .iter()
+        .map(|f| (&f.ident, "a coordinate"))
+        .chain(params.iter().map(|f| (&f.ident, "a parameter")))
+        .chain(mechanism.decls.iter().map(|d| (d.ident(), "a function")));
+    for (ident, what) in names {
+        // `pub struct Coords { pub t: f64 }`: `t` is time.
+        if ident == "t" {
+            cx.error_spanned_by(ident, "`t` is time; choose another name");
+        }
+        // `pub struct Coords { pub x: f64, pub x: f64 }`, or a parameter named like a coordinate.
+        if let Some(first) = seen.insert(ident.to_string(), what) {
+            cx.error_spanned_by(ident, format!("`{ident}` is already declared as {first}"));
+        }
+    }
+}
+
+/// A marked function takes no arguments, no generics, and is a plain `fn`.
+fn check_signature(cx: &Ctxt, decl: &Decl) {
+    let sig = &decl.sig;
+    // `fn bob(theta: f64) -> Vec2`: coordinates, parameters and `t` are in scope by name.
+    if !sig.inputs.is_empty() {
+        cx.error_spanned_by(&sig.inputs, "declaration functions take no arguments: coordinates, parameters and `t` are in scope by name");
+    }
+    // `fn bob<T>() -> Vec2`: the scalar type is chosen by the macro.
+    if !sig.generics.params.is_empty() || sig.generics.where_clause.is_some() {
+        cx.error_spanned_by(
+            &sig.generics,
+            "declaration functions are not generic: the macro makes them generic over the scalar",
+        );
+    }
+    // `async fn`, `const fn`, `unsafe fn`, `extern fn`: a plain function body is expected.
+    if let Some(token) = sig
+        .asyncness
+        .as_ref()
+        .map(|t| t.span)
+        .or(sig.constness.map(|t| t.span))
+        .or(sig.unsafety.map(|t| t.span))
+    {
+        cx.error_at(token, "declaration functions are plain `fn`s");
+    }
+}
+
+/// Checks the return type, target and names of one function and records what it uses.
+fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
+    let context = match decl.kind() {
+        Kind::Particle | Kind::RigidBody | Kind::Point => {
+            let index = model
+                .bodies
+                .iter()
+                .position(|b| std::ptr::eq(b.decl, decl))
+                .unwrap();
+            Context::Position(index)
+        }
+        Kind::Potential => {
+            // `#[potential] fn spring() -> Vec2`: a potential is an energy.
+            expect_return_type(cx, decl, &["f64"], "the potential energy");
+            model.potentials.push(decl);
+            Context::Potential
+        }
+        Kind::Gravity => {
+            // `#[gravity] fn down() -> f64`: gravity is a field vector.
+            let dim = vector_dim(expect_return_type(
+                cx,
+                decl,
+                &["Vec2", "Vec3"],
+                "the field vector g",
+            ));
+            model.gravities.push((decl, dim));
+            Context::Potential
+        }
+        Kind::Force | Kind::Torque | Kind::GeneralizedForce => {
+            if let Some(force) = check_force_target(cx, model, decl) {
+                model.forces.push(force);
+            }
+            Context::Force
+        }
+    };
+    let free = names::free_names(&decl.block);
+    for ident in &free {
+        let name = Resolver { model, context }.resolve(cx, ident);
+        if name == Some(Name::Time) && context != Context::Force {
+            model.rheonomic = true;
+        }
+    }
+    model.free_names.insert(decl.ident().to_string(), free);
+}
+
+/// The body or coordinate a force acts on, checked against its kind and return type.
+fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Option<Force<'a>> {
+    let kind = decl.kind();
+    let dim = match kind {
+        // `#[force(on = bob)] fn push() -> f64`: a Cartesian force is a vector.
+        Kind::Force => Some(vector_dim(expect_return_type(
+            cx,
+            decl,
+            &["Vec2", "Vec3"],
+            "the force vector",
+        ))),
+        // `#[torque(on = bar)] fn motor() -> Vec2`: a planar torque is a scalar.
+        _ => expect_return_type(cx, decl, &["f64"], "its magnitude").map(|_| Dim::Two),
+    };
+    // `#[force] fn drag() -> Vec2`: what does it act on?
+    let Some(on) = &decl.args.on else {
+        cx.error_spanned_by(
+            &decl.args.attr,
+            format!("missing `on = ...`: `#[{}(on = name)]`", kind.name()),
+        );
+        return None;
+    };
+    let target = match kind {
+        Kind::GeneralizedForce => model.coords.iter().position(|c| c.ident == *on),
+        _ => model.bodies.iter().position(|b| b.decl.ident() == on),
+    };
+    let Some(target) = target else {
+        // `#[force(on = bobb)]`: a typo in the target.
+        let what = if kind == Kind::GeneralizedForce {
+            "coordinate"
+        } else {
+            "body or point"
+        };
+        cx.error_spanned_by(on, format!("`{on}` is not a {what} of this mechanism"));
+        return None;
+    };
+    if kind == Kind::Torque && model.bodies[target].shape != Shape::Planar {
+        // `#[torque(on = bob)]` on a particle: only a planar rigid body has an angle to twist.
+        cx.error_spanned_by(
+            on,
+            format!("`{on}` is not a planar rigid body: a torque acts on a `Planar` body's angle"),
+        );
+    }
+    if kind == Kind::Force && dim != Some(model.bodies[target].shape.dim()) {
+        // `#[force(on = bob3d)] fn push() -> Vec2`: the force has the dimension of its body.
+        let want = if model.bodies[target].shape.dim() == Dim::Two {
+            "Vec2"
+        } else {
+            "Vec3"
+        };
+        cx.error_spanned_by(
+            decl.output(),
+            format!(
+                "`{on}` moves in {}: the force on it is a `{want}`",
+                if want == "Vec2" { "the plane" } else { "space" }
+            ),
+        );
+    }
+    Some(Force { decl, target, kind })
+}
+
+/// Masses and inertias: present where needed, constant.
+fn check_masses(cx: &Ctxt, model: &Model) {
+    for body in &model.bodies {
+        let args = &body.decl.args;
+        let name = body.decl.ident();
+        if args.kind == Kind::Point {
+            continue;
+        }
+        // `#[particle] fn bob() -> Vec2`: a body without a mass.
+        match &args.mass {
+            None => cx.error_spanned_by(
+                &args.attr,
+                format!(
+                    "`{name}` has no mass: write `#[{}(mass = ...)]`",
+                    args.kind.name()
+                ),
+            ),
+            Some(mass) => check_constant(cx, model, mass),
+        }
+        if args.kind != Kind::RigidBody {
+            continue;
+        }
+        match &args.inertia {
+            // `#[rigid_body(mass = m)] fn bar() -> Planar`: a rigid body also needs its inertia.
+            None => cx.error_spanned_by(&args.attr, format!("rigid body `{name}` has no inertia: add `inertia = ...` (one moment, or `[I1, I2, I3]`)")),
+            Some(Inertia::Moment(e)) => check_constant(cx, model, e),
+            Some(Inertia::Principal(array)) => {
+                // `inertia = [a, b]`: three principal moments.
+                if array.elems.len() != 3 {
+                    cx.error_spanned_by(array, "principal moments are three: `[I1, I2, I3]`");
+                }
+                array.elems.iter().for_each(|e| check_constant(cx, model, e));
+            }
+        }
+    }
+}
+
+/// A mass or inertia names only parameters and module items.
+fn check_constant(cx: &Ctxt, model: &Model, expr: &syn::Expr) {
+    for ident in names::free_names_of_expr(expr) {
+        Resolver {
+            model,
+            context: Context::Mass,
+        }
+        .resolve(cx, &ident);
+    }
+}
+
+/// A coordinate that no position depends on leaves the mass matrix singular.
+fn check_coordinates_are_used(cx: &Ctxt, model: &Model) {
+    let mut depends: Vec<BTreeSet<usize>> = Vec::new();
+    for body in &model.bodies {
+        let mut coords = BTreeSet::new();
+        for ident in model
+            .free_names
+            .get(&body.decl.ident().to_string())
+            .into_iter()
+            .flatten()
+        {
+            if let Some(j) = model.coords.iter().position(|c| c.ident == *ident) {
+                coords.insert(j);
+            } else if let Some(b) = model.bodies.iter().position(|b| b.decl.ident() == ident) {
+                coords.extend(depends.get(b).into_iter().flatten().copied());
+            }
+        }
+        depends.push(coords);
+    }
+    let used: BTreeSet<usize> = depends.into_iter().flatten().collect();
+    for (j, coord) in model.coords.iter().enumerate() {
+        // `Coords { x, y }` where no body's position names `y`: its mass-matrix row is zero.
+        if !used.contains(&j) {
+            cx.error_spanned_by(
+                &coord.ident,
+                format!("no body or point position depends on coordinate `{}`: its row of the mass matrix would be zero", coord.ident),
+            );
+        }
+    }
+}
+
+/// Where a name is being resolved.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Context {
+    /// The position of the body with this index.
+    Position(usize),
+    /// A potential or gravity.
+    Potential,
+    /// A force, torque or generalized force.
+    Force,
+    /// A mass or inertia.
+    Mass,
+}
+
+/// What a free name refers to.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Name {
+    Coord,
+    Param,
+    Time,
+    Body(usize),
+    CoordVelocity,
+    BodyVelocity,
+    Item,
+}
+
+struct Resolver<'m, 'a> {
+    model: &'m Model<'a>,
+    context: Context,
+}
+
+impl Resolver<'_, '_> {
+    fn lookup(&self, ident: &Ident) -> Option<Name> {
+        let model = self.model;
+        let name = ident.to_string();
+        let velocity_of = name.strip_suffix("_dot");
+        if model.coords.iter().any(|c| c.ident == name) {
+            Some(Name::Coord)
+        } else if model.params.iter().any(|p| p.ident == name) {
+            Some(Name::Param)
+        } else if name == "t" {
+            Some(Name::Time)
+        } else if let Some(b) = model.bodies.iter().position(|b| b.decl.ident() == &name) {
+            Some(Name::Body(b))
+        } else if velocity_of.is_some_and(|v| model.coords.iter().any(|c| c.ident == v)) {
+            Some(Name::CoordVelocity)
+        } else if velocity_of.is_some_and(|v| model.bodies.iter().any(|b| b.decl.ident() == v)) {
+            Some(Name::BodyVelocity)
+        } else if model.mechanism.item_names.iter().any(|i| *i == name)
+            || GEOMETRY_FUNCTIONS.contains(&name.as_str())
+            || PRELUDE_VALUES.contains(&name.as_str())
+        {
+            Some(Name::Item)
+        } else {
+            None
+        }
+    }
+
+    /// Resolves a free name, reporting one that is unknown or not allowed here.
+    fn resolve(&self, cx: &Ctxt, ident: &Ident) -> Option<Name> {
+        let name = self.lookup(ident);
+        match (self.context, name) {
+            (_, None) => {
+                // `vec2(theta.sin(), 0.0) * lenght`: a typo, or something not in scope.
+                if !self.model.mechanism.has_glob_import {
+                    cx.error_spanned_by(ident, self.unknown_message(ident));
+                }
+            }
+            // `fn bob() -> Vec2 { vec2(theta_dot, 0.0) }`.
+            (Context::Position(_), Some(Name::CoordVelocity | Name::BodyVelocity)) => cx.error_spanned_by(
+                ident,
+                format!("positions cannot depend on velocities: `{ident}` is in scope in forces only"),
+            ),
+            // `#[potential] fn v() -> f64 { theta_dot * theta_dot }`.
+            (Context::Potential, Some(Name::CoordVelocity | Name::BodyVelocity)) => cx.error_spanned_by(
+                ident,
+                format!("potentials cannot depend on velocities: `{ident}` is in scope in forces only (write a `#[force]` or `#[generalized_force]`)"),
+            ),
+            // `fn bob1() -> Vec2 { bob2 + ... }` where `bob2` comes later (or is `bob1` itself).
+            (Context::Position(me), Some(Name::Body(b))) if b >= me => {
+                let this = self.model.bodies[me].decl.ident();
+                let message = if b == me {
+                    format!("`{this}` cannot use its own position")
+                } else {
+                    format!("`{ident}` is declared after `{this}`: a position can only use bodies and points declared before it")
+                };
+                cx.error_spanned_by(ident, message);
+            }
+            // `#[particle(mass = m * theta)]`: masses are constants.
+            (Context::Mass, Some(Name::Coord | Name::Time | Name::Body(_) | Name::CoordVelocity | Name::BodyVelocity)) => {
+                cx.error_spanned_by(ident, format!("masses and inertias are constant: they cannot depend on `{ident}`"))
+            }
+            _ => {}
+        }
+        name
+    }
+
+    fn unknown_message(&self, ident: &Ident) -> String {
+        let in_scope = match self.context {
+            Context::Position(_) => "a coordinate, a parameter, `t`, a body or point declared earlier, or an item of this module",
+            Context::Potential => "a coordinate, a parameter, `t`, a body or point, or an item of this module",
+            Context::Force => "a coordinate or its `_dot` velocity, a parameter, `t`, a body or point or its `_dot` velocity, or an item of this module",
+            Context::Mass => "a parameter or an item of this module",
+        };
+        format!("unknown name `{ident}`: not {in_scope}")
+    }
+}

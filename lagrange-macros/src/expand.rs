@@ -1,0 +1,759 @@
+//! Expansion: the checked model into the module a user gets (see the README's "The declaration").
+//!
+//! Generated code names only `::lagrange::__private::…` paths. Per declaration it writes:
+//! `Coords<T = f64>` and its `Coordinates` impl, `DOF`, `State`, `Bodies<T = f64>` (each body and
+//! point's position: `Vec2`/`Vec3`/`Planar`/`Spatial`), `BodyVelocities<T = f64>` (a particle or
+//! point's velocity vector; a planar body's centre-of-mass velocity and angular velocity as a
+//! `Planar`; a spatial body's centre-of-mass velocity `Vec3`), inherent `bodies` and
+//! `body_velocities`, and the `Model` and `Mechanism` impls. `potential` and `applied_forces` are
+//! only written when something is declared for them.
+
+use crate::ast::{Field, Mechanism};
+use crate::attr::{Inertia, Kind};
+use crate::check::{self, Body, Dim, Model, Shape};
+use crate::ctxt::{self, Ctxt};
+use crate::lift;
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::{format_ident, quote};
+use std::collections::BTreeSet;
+
+/// The `#[mechanism]` attribute: `attr` are its arguments, `item` the module.
+pub(crate) fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
+    let cx = Ctxt::new();
+    // `#[mechanism(fast)]`: the attribute takes no arguments.
+    if !attr.is_empty() {
+        cx.error_spanned_by(&attr, "`#[mechanism]` takes no arguments");
+    }
+    let module: syn::ItemMod = match syn::parse2(item.clone()) {
+        Ok(module) => module,
+        // `#[mechanism] struct S;`: the declaration is a module.
+        Err(_) => {
+            cx.error_at(
+                Span::call_site(),
+                "#[mechanism] goes on an inline module: `pub mod name { ... }`",
+            );
+            return errors_then(cx, item);
+        }
+    };
+    let Some(mechanism) = Mechanism::from_module(&cx, module.clone()) else {
+        return errors_then(cx, quote!(#module));
+    };
+    let model = check::check(&cx, &mechanism);
+    match (cx.check(), model) {
+        (Ok(()), Some(model)) => generate(&model),
+        (Err(errors), _) => fallback(&mechanism, errors),
+        (Ok(()), None) => unreachable!("the checks report why there is no model"),
+    }
+}
+
+fn errors_then(cx: Ctxt, item: TokenStream) -> TokenStream {
+    let errors = cx
+        .check()
+        .err()
+        .map(ctxt::to_compile_errors)
+        .unwrap_or_default();
+    quote!(#errors #item)
+}
+
+/// `::lagrange::__private`.
+fn private() -> TokenStream {
+    quote!(::lagrange::__private)
+}
+
+/// The scalar type parameter of generated generic functions.
+fn scalar() -> TokenStream {
+    quote!(__D)
+}
+
+/// The geometry functions and types, and num-dual's methods, inside a generated function.
+fn prelude() -> TokenStream {
+    let p = private();
+    quote! {
+        #[allow(unused_imports)]
+        use #p::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
+        #[allow(unused_imports)]
+        use #p::DualNum as _;
+    }
+}
+
+/// The whole module for a declaration that passed every check.
+fn generate(model: &Model) -> TokenStream {
+    let mechanism = model.mechanism;
+    let (attrs, vis, ident) = (&mechanism.attrs, &mechanism.vis, &mechanism.ident);
+    let other_items = &mechanism.other_items;
+    let params_struct = &mechanism.params.as_ref().unwrap().0;
+    let coords = coords_items(mechanism, model.coords);
+    let bodies = bodies_structs(model);
+    let inherent = inherent_impl(model);
+    let model_impl = model_impl(model);
+    let mechanism_impl = mechanism_impl(model.params_ident, model.coords.len(), model.rows);
+    quote! {
+        #(#attrs)*
+        #vis mod #ident {
+            #(#other_items)*
+            #params_struct
+            #coords
+            #bodies
+            #inherent
+            #model_impl
+            #mechanism_impl
+        }
+    }
+}
+
+/// `Coords<T = f64>`, its `Coordinates` impl, `DOF` and `State`.
+fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
+    let p = private();
+    let n = coords.len();
+    let attrs = mechanism
+        .coords
+        .as_ref()
+        .map(|(s, _)| &s.attrs[..])
+        .unwrap_or_default();
+    let vis = mechanism
+        .coords
+        .as_ref()
+        .map(|(s, _)| s.vis.clone())
+        .unwrap_or(syn::Visibility::Inherited);
+    let field_attrs = coords.iter().map(|f| &f.attrs);
+    let names: Vec<&Ident> = coords.iter().map(|f| &f.ident).collect();
+    let strings = names.iter().map(|n| n.to_string());
+    let indices = 0..n;
+    quote! {
+        #(#attrs)*
+        #[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq, #p::core::default::Default)]
+        #vis struct Coords<T = f64> {
+            #( #(#field_attrs)* pub #names: T, )*
+        }
+
+        impl #p::Coordinates<#n> for Coords<f64> {
+            const NAMES: [&'static str; #n] = [#(#strings),*];
+            #[inline(always)]
+            fn to_array(&self) -> [f64; #n] {
+                [#(self.#names),*]
+            }
+            #[inline(always)]
+            fn from_array(values: [f64; #n]) -> Self {
+                Coords { #(#names: values[#indices]),* }
+            }
+        }
+
+        /// Degrees of freedom: the number of generalized coordinates.
+        #[allow(dead_code)]
+        pub const DOF: usize = #n;
+
+        /// The state of this mechanism: time, coordinates, velocities.
+        #[allow(dead_code)]
+        pub type State = #p::State<Coords>;
+    }
+}
+
+/// The type of a body's position and velocity in `Bodies<T>` / `BodyVelocities<T>`.
+fn body_types(shape: Shape) -> (TokenStream, TokenStream) {
+    let g = quote!(::lagrange::__private::geometry);
+    match shape {
+        Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => {
+            (quote!(#g::Vec2<T>), quote!(#g::Vec2<T>))
+        }
+        Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => {
+            (quote!(#g::Vec3<T>), quote!(#g::Vec3<T>))
+        }
+        Shape::Planar => (quote!(#g::Planar<T>), quote!(#g::Planar<T>)),
+        Shape::Spatial => (quote!(#g::Spatial<T>), quote!(#g::Vec3<T>)),
+    }
+}
+
+fn bodies_structs(model: &Model) -> TokenStream {
+    let p = private();
+    let names: Vec<&Ident> = model.bodies.iter().map(|b| b.decl.ident()).collect();
+    let docs: Vec<Vec<&syn::Attribute>> = model
+        .bodies
+        .iter()
+        .map(|b| {
+            b.decl
+                .attrs
+                .iter()
+                .filter(|a| a.path().is_ident("doc"))
+                .collect()
+        })
+        .collect();
+    let (positions, velocities): (Vec<_>, Vec<_>) =
+        model.bodies.iter().map(|b| body_types(b.shape)).unzip();
+    let derive = quote!(#[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq)]);
+    quote! {
+        /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+        /// body's centre of mass and orientation.
+        #derive
+        #[allow(dead_code)]
+        pub struct Bodies<T = f64> {
+            #( #(#docs)* pub #names: #positions, )*
+        }
+
+        /// The velocity of every body and point, by name: a particle or point's velocity; for a
+        /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+        /// spatial body, its centre-of-mass velocity.
+        #derive
+        #[allow(dead_code)]
+        pub struct BodyVelocities<T = f64> {
+            #( #(#docs)* pub #names: #velocities, )*
+        }
+    }
+}
+
+/// `let theta1 = …; let l1 = <__D>::from(self.l1); let t = __t;` for the names `used`.
+fn bind_inputs(model: &Model, used: &BTreeSet<String>, q: TokenStream) -> TokenStream {
+    let d = scalar();
+    let coords = model.coords.iter().map(|c| &c.ident);
+    let params = model
+        .params
+        .iter()
+        .map(|p| &p.ident)
+        .filter(|p| used.contains(&p.to_string()));
+    let time = used.contains("t").then(|| quote!(let t = __t;));
+    quote! {
+        let [#(#coords),*] = *#q;
+        #( let #params = <#d>::from(self.#params); )*
+        #time
+    }
+}
+
+/// The Rust type of a body's position on scalar `__D`.
+fn position_type(shape: Shape) -> TokenStream {
+    let g = quote!(::lagrange::__private::geometry);
+    match shape.dim() {
+        _ if shape == Shape::Planar => quote!(#g::Planar<__D>),
+        _ if shape == Shape::Spatial => quote!(#g::Spatial<__D>),
+        Dim::Two => quote!(#g::Vec2<__D>),
+        Dim::Three => quote!(#g::Vec3<__D>),
+    }
+}
+
+/// The inherent impl: `bodies`, `body_velocities`, and the private generic body functions.
+fn inherent_impl(model: &Model) -> TokenStream {
+    let p = private();
+    let (params, n, k) = (model.params_ident, model.coords.len(), model.rows);
+    let bodies_fn = bodies_fn(model);
+    let from_cartesian =
+        (!model.potentials.is_empty() || !model.gravities.is_empty() || !model.forces.is_empty())
+            .then(|| positions_from_cartesian(model));
+    let velocities_from_cartesian = velocities_from_cartesian(model);
+    quote! {
+        impl #params {
+            /// Every body and point at `state`, by name.
+            #[allow(dead_code)]
+            pub fn bodies(&self, state: &State) -> Bodies {
+                let q = <Coords as #p::Coordinates<#n>>::to_array(&state.q);
+                self.__lagrange_bodies(state.t, &q)
+            }
+
+            /// The velocity of every body and point at `state`, by name (one forward-mode pass
+            /// along (q̇, 1)).
+            #[allow(dead_code)]
+            pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+                let q = <Coords as #p::Coordinates<#n>>::to_array(&state.q);
+                let v = <Coords as #p::Coordinates<#n>>::to_array(&state.v);
+                let (_, x_dot) = #p::dynamics::cartesian_velocities::<Self, f64, #n, #k>(self, state.t, &q, &v);
+                Self::__lagrange_velocities_from_cartesian(&x_dot)
+            }
+
+            #bodies_fn
+            #from_cartesian
+            #velocities_from_cartesian
+        }
+    }
+}
+
+/// The user's position functions as `let` bindings in declaration order, on any scalar.
+fn bodies_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, d) = (model.coords.len(), scalar());
+    let prelude = prelude();
+    let used = model.names_used_by(model.bodies.iter().map(|b| b.decl));
+    let inputs = bind_inputs(model, &used, quote!(__q));
+    let names: Vec<&Ident> = model.bodies.iter().map(|b| b.decl.ident()).collect();
+    let types = model.bodies.iter().map(|b| position_type(b.shape));
+    let blocks = model
+        .bodies
+        .iter()
+        .map(|b| lift::lift_block(&b.decl.block, &d));
+    quote! {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> Bodies<__D> {
+            #prelude
+            #inputs
+            #( let #names: #types = #blocks; )*
+            Bodies { #(#names),* }
+        }
+    }
+}
+
+/// `x[i]` as tokens.
+fn row(x: &TokenStream, i: usize) -> TokenStream {
+    quote!(#x[#i])
+}
+
+/// A body rebuilt from its rows of x (or ẋ, for velocities).
+fn unflatten(body: &Body, x: &TokenStream, velocity: bool) -> TokenStream {
+    let g = quote!(::lagrange::__private::geometry);
+    let r = |i: usize| row(x, body.row + i);
+    let (r0, r1, r2) = (r(0), r(1), r(2));
+    match body.shape {
+        Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => quote!(#g::vec2(#r0, #r1)),
+        Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => quote!(#g::vec3(#r0, #r1, #r2)),
+        Shape::Planar => quote!(#g::planar(#g::vec2(#r0, #r1), #r2)),
+        Shape::Spatial if velocity => quote!(#g::vec3(#r0, #r1, #r2)),
+        Shape::Spatial => {
+            // Column k of the rotation occupies rows 3 + 3k .. 6 + 3k: rows[r][k] = x[3 + 3k + r].
+            let rows = (0..3).map(|i| {
+                let entries = (0..3).map(|k| r(3 + 3 * k + i));
+                quote!([#(#entries),*])
+            });
+            quote!(#g::spatial(#g::vec3(#r0, #r1, #r2), #g::Rot3 { rows: [#(#rows),*] }))
+        }
+    }
+}
+
+/// The rows of x a body occupies, read from its position `b`.
+fn flatten(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
+    match body.shape {
+        Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => vec![quote!(#b.x), quote!(#b.y)],
+        Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => {
+            vec![quote!(#b.x), quote!(#b.y), quote!(#b.z)]
+        }
+        Shape::Planar => vec![
+            quote!(#b.position.x),
+            quote!(#b.position.y),
+            quote!(#b.angle),
+        ],
+        Shape::Spatial => {
+            let mut rows = vec![
+                quote!(#b.position.x),
+                quote!(#b.position.y),
+                quote!(#b.position.z),
+            ];
+            for k in 0..3usize {
+                rows.extend((0..3usize).map(|r| quote!(#b.rotation.rows[#r][#k])));
+            }
+            rows
+        }
+    }
+}
+
+fn positions_from_cartesian(model: &Model) -> TokenStream {
+    let p = private();
+    let k = model.rows;
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let values = model
+        .bodies
+        .iter()
+        .map(|b| unflatten(b, &quote!(__x), false));
+    quote! {
+        #[inline(always)]
+        fn __lagrange_bodies_from_cartesian<__D: #p::Scalar>(__x: &[__D; #k]) -> Bodies<__D> {
+            Bodies { #(#names: #values),* }
+        }
+    }
+}
+
+fn velocities_from_cartesian(model: &Model) -> TokenStream {
+    let p = private();
+    let k = model.rows;
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let values = model
+        .bodies
+        .iter()
+        .map(|b| unflatten(b, &quote!(__x_dot), true));
+    quote! {
+        #[inline(always)]
+        fn __lagrange_velocities_from_cartesian<__D: #p::Scalar>(__x_dot: &[__D; #k]) -> BodyVelocities<__D> {
+            BodyVelocities { #(#names: #values),* }
+        }
+    }
+}
+
+/// Parameters bound as `f64`, then each body's mass and inertia: shared by `validate` and `masses`.
+fn mass_bindings(model: &Model) -> TokenStream {
+    let params = model.params.iter().map(|p| &p.ident);
+    let mut out = quote!(#( let #params: f64 = self.#params; )*);
+    for body in model.bodies.iter().filter(|b| b.shape.has_mass()) {
+        let args = &body.decl.args;
+        let mass = args.mass.as_ref().unwrap();
+        let mass_ident = format_ident!("__mass_{}", body.decl.ident());
+        let inertia_ident = format_ident!("__inertia_{}", body.decl.ident());
+        out.extend(quote!(let #mass_ident: f64 = #mass;));
+        match &args.inertia {
+            Some(Inertia::Moment(i)) => out.extend(quote!(let #inertia_ident: f64 = #i;)),
+            Some(Inertia::Principal(i)) => out.extend(quote!(let #inertia_ident: [f64; 3] = #i;)),
+            None => {}
+        }
+    }
+    out
+}
+
+/// The `Model` impl.
+fn model_impl(model: &Model) -> TokenStream {
+    let p = private();
+    let (params, n, k, inertial) = (
+        model.params_ident,
+        model.coords.len(),
+        model.rows,
+        model.inertial_rows,
+    );
+    let rheonomic = model.rheonomic;
+    let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
+    let has_forces = !model.forces.is_empty();
+    let validate = validate_fn(model);
+    let masses = masses_fn(model);
+    let cartesian = cartesian_fn(model);
+    let potential = has_potential.then(|| potential_fn(model));
+    let forces = has_forces.then(|| applied_forces_fn(model));
+    quote! {
+        impl #p::Model<#n, #k> for #params {
+            type Coords = Coords;
+            const INERTIAL: usize = #inertial;
+            const RHEONOMIC: bool = #rheonomic;
+            const HAS_POTENTIAL: bool = #has_potential;
+            const HAS_FORCES: bool = #has_forces;
+            #validate
+            #masses
+            #cartesian
+            #potential
+            #forces
+        }
+    }
+}
+
+fn validate_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let params = model.params.iter().map(|f| &f.ident);
+    let strings = model.params.iter().map(|f| f.ident.to_string());
+    let bindings = mass_bindings(model);
+    let err = quote!(return #p::core::result::Result::Err);
+    let bodies = model.bodies.iter().filter(|b| b.shape.has_mass()).map(|body| {
+        let name = body.decl.ident().to_string();
+        let mass = format_ident!("__mass_{}", body.decl.ident());
+        let inertia = format_ident!("__inertia_{}", body.decl.ident());
+        let check_mass = quote! {
+            if !(#mass.is_finite() && #mass > 0.0) {
+                #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("mass must be positive and finite, got {}", #mass) });
+            }
+        };
+        let check_inertia = match body.shape {
+            Shape::Planar => quote! {
+                if !(#inertia.is_finite() && #inertia > 0.0) {
+                    #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("moment of inertia must be positive and finite, got {}", #inertia) });
+                }
+            },
+            Shape::Spatial => quote! {
+                let __sum: f64 = #inertia[0] + #inertia[1] + #inertia[2];
+                for (__k, __moment) in #inertia.into_iter().enumerate() {
+                    if !(__moment.is_finite() && __moment > 0.0) {
+                        #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("principal moment I{} must be positive and finite, got {}", __k + 1, __moment) });
+                    }
+                    // I_k ≤ I_i + I_j (equality for a flat body), up to rounding.
+                    if __moment > __sum - __moment + 1e-12 * __sum {
+                        #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("principal moments {:?} violate the triangle inequality: I{} exceeds the sum of the other two", #inertia, __k + 1) });
+                    }
+                }
+            },
+            _ => quote!(),
+        };
+        quote!(#check_mass #check_inertia)
+    });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> #p::Result<()> {
+            #(
+                if !self.#params.is_finite() {
+                    #err(#p::Error::NonFiniteParameter { name: #strings, value: self.#params });
+                }
+            )*
+            #bindings
+            #(#bodies)*
+            #p::core::result::Result::Ok(())
+        }
+    }
+}
+
+fn masses_fn(model: &Model) -> TokenStream {
+    let k = model.rows;
+    let bindings = mass_bindings(model);
+    let mut rows = vec![quote!(0.0); k];
+    for body in &model.bodies {
+        let mass = format_ident!("__mass_{}", body.decl.ident());
+        let inertia = format_ident!("__inertia_{}", body.decl.ident());
+        let r = body.row;
+        match body.shape {
+            Shape::Point(_) => {}
+            Shape::Particle(dim) => {
+                let d = if dim == Dim::Two { 2 } else { 3 };
+                (0..d).for_each(|i| rows[r + i] = quote!(#mass));
+            }
+            Shape::Planar => {
+                rows[r] = quote!(#mass);
+                rows[r + 1] = quote!(#mass);
+                rows[r + 2] = quote!(#inertia);
+            }
+            Shape::Spatial => {
+                (0..3).for_each(|i| rows[r + i] = quote!(#mass));
+                // Column k carries J_k = (I₁ + I₂ + I₃)/2 − I_k (see lagrange_core::model).
+                for col in 0..3usize {
+                    let j =
+                        quote!(((#inertia[0] + #inertia[1] + #inertia[2]) * 0.5 - #inertia[#col]));
+                    (0..3).for_each(|i| rows[r + 3 + 3 * col + i] = j.clone());
+                }
+            }
+        }
+    }
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; #k] {
+            #bindings
+            [#(#rows),*]
+        }
+    }
+}
+
+fn cartesian_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k) = (model.coords.len(), model.rows);
+    let mut by_row: Vec<&Body> = model.bodies.iter().collect();
+    by_row.sort_by_key(|b| b.row);
+    let rows = by_row.iter().flat_map(|b| {
+        let name = b.decl.ident();
+        flatten(b, &quote!(__bodies.#name))
+    });
+    quote! {
+        #[inline(always)]
+        fn cartesian<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> [__D; #k] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [#(#rows),*]
+        }
+    }
+}
+
+/// `let Bodies { bob1, .. } = …;` from x.
+fn bind_bodies(model: &Model) -> TokenStream {
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    quote!(let Bodies { #(#names),* } = Self::__lagrange_bodies_from_cartesian(__x);)
+}
+
+fn potential_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k, d) = (model.coords.len(), model.rows, scalar());
+    let prelude = prelude();
+    let decls = model
+        .potentials
+        .iter()
+        .copied()
+        .chain(model.gravities.iter().map(|(g, _)| *g));
+    let inputs = bind_inputs(model, &model.names_used_by(decls), quote!(__q));
+    let bodies = bind_bodies(model);
+    let potentials = model.potentials.iter().map(|decl| {
+        let ident = format_ident!("__potential_{}", decl.ident());
+        let block = lift::lift_block(&decl.block, &d);
+        quote!(let #ident: __D = #block; __potential += #ident;)
+    });
+    let gravities = model
+        .gravities
+        .iter()
+        .map(|(decl, dim)| gravity_terms(model, decl, *dim));
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D {
+            #prelude
+            #inputs
+            #bodies
+            let __masses = <Self as #p::Model<#n, #k>>::masses(self);
+            let mut __potential = <__D>::zero();
+            #(#potentials)*
+            #(#gravities)*
+            __potential
+        }
+    }
+}
+
+/// V −= m g·r for every massive body whose position has the field's dimension.
+fn gravity_terms(model: &Model, decl: &crate::ast::Decl, dim: Dim) -> TokenStream {
+    let d = scalar();
+    let ident = format_ident!("__gravity_{}", decl.ident());
+    let ty = position_type(Shape::Point(dim));
+    let block = lift::lift_block(&decl.block, &d);
+    let terms = model
+        .bodies
+        .iter()
+        .filter(|b| b.shape.has_mass() && b.shape.dim() == dim)
+        .map(|b| {
+            let (name, row) = (b.decl.ident(), b.row);
+            let centre = match b.shape {
+                Shape::Planar | Shape::Spatial => quote!(#name.position),
+                _ => quote!(#name),
+            };
+            quote!(__potential -= #ident.dot(&#centre) * __masses[#row];)
+        });
+    quote!(let #ident: #ty = #block; #(#terms)*)
+}
+
+fn applied_forces_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k, d) = (model.coords.len(), model.rows, scalar());
+    let prelude = prelude();
+    let inputs = bind_inputs(
+        model,
+        &model.names_used_by(model.forces.iter().map(|f| f.decl)),
+        quote!(__q),
+    );
+    let velocities = model
+        .coords
+        .iter()
+        .map(|c| format_ident!("{}_dot", c.ident));
+    let bodies = bind_bodies(model);
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let body_velocities = model
+        .bodies
+        .iter()
+        .map(|b| format_ident!("{}_dot", b.decl.ident()));
+    let forces = model.forces.iter().map(|force| {
+        let block = lift::lift_block(&force.decl.block, &d);
+        let ident = format_ident!("__{}_{}", force.kind.name(), force.decl.ident());
+        match force.kind {
+            Kind::Force => {
+                let body = &model.bodies[force.target];
+                let ty = position_type(Shape::Point(body.shape.dim()));
+                let components: &[&str] = if body.shape.dim() == Dim::Two {
+                    &["x", "y"]
+                } else {
+                    &["x", "y", "z"]
+                };
+                let adds = components.iter().enumerate().map(|(i, c)| {
+                    let (r, c) = (body.row + i, format_ident!("{}", c));
+                    quote!(__cartesian_force[#r] += #ident.#c;)
+                });
+                quote!(let #ident: #ty = #block; #(#adds)*)
+            }
+            Kind::Torque => {
+                let r = model.bodies[force.target].row + 2;
+                quote!(let #ident: __D = #block; __cartesian_force[#r] += #ident;)
+            }
+            _ => {
+                let j = force.target;
+                quote!(let #ident: __D = #block; __generalized_force[#j] += #ident;)
+            }
+        }
+    });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn applied_forces<__D: #p::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; #n],
+            __v: &[__D; #n],
+            __x: &[__D; #k],
+            __x_dot: &[__D; #k],
+            __cartesian_force: &mut [__D; #k],
+            __generalized_force: &mut [__D; #n],
+        ) {
+            #prelude
+            #inputs
+            let [#(#velocities),*] = *__v;
+            #bodies
+            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
+            #(#forces)*
+        }
+    }
+}
+
+/// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
+fn mechanism_impl(params: &Ident, n: usize, k: usize) -> TokenStream {
+    let p = private();
+    quote! {
+        impl #p::Mechanism<#n> for #params {
+            type Coords = Coords;
+            #[inline]
+            fn validate(&self) -> #p::Result<()> {
+                <Self as #p::Model<#n, #k>>::validate(self)
+            }
+            #[inline]
+            fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
+                #p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v)
+            }
+            #[inline]
+            fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S {
+                #p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)
+            }
+            #[inline]
+            fn potential_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> S {
+                #p::dynamics::potential_energy::<Self, S, #n, #k>(self, t, q)
+            }
+            #[inline]
+            fn momenta_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
+                #p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)
+            }
+            #[inline]
+            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
+                #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
+            }
+        }
+    }
+}
+
+/// On error: the user's items, stubs for what the rest of their code names (`Coords`, the
+/// parameter struct, `State`, a `Mechanism` impl that is never run), and every error. So one
+/// mistake gives one message, not a cascade of rustc errors about missing items.
+fn fallback(mechanism: &Mechanism, errors: Vec<syn::Error>) -> TokenStream {
+    let p = private();
+    let (attrs, vis, ident) = (&mechanism.attrs, &mechanism.vis, &mechanism.ident);
+    let other_items = &mechanism.other_items;
+    let coords = dedup(
+        mechanism
+            .coords
+            .as_ref()
+            .map(|(_, f)| &f[..])
+            .unwrap_or_default(),
+    );
+    let n = coords.len();
+    let coords_items = coords_items(mechanism, &coords);
+    let params = mechanism.params.as_ref().map(|(s, _)| {
+        let mut s = s.clone();
+        if let syn::Fields::Named(named) = &mut s.fields {
+            let mut seen = BTreeSet::new();
+            named.named = named.named.clone().into_iter().filter(|f| seen.insert(f.ident.clone())).collect();
+        }
+        let ident = &s.ident;
+        let unreachable = quote!(#p::core::unreachable!("this mechanism failed to compile"));
+        quote! {
+            #s
+            impl #p::Mechanism<#n> for #ident {
+                type Coords = Coords;
+                fn validate(&self) -> #p::Result<()> { #unreachable }
+                fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> { #unreachable }
+                fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S { #unreachable }
+                fn potential_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> S { #unreachable }
+                fn momenta_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] { #unreachable }
+                fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 { #unreachable }
+            }
+        }
+    });
+    let errors = ctxt::to_compile_errors(errors);
+    quote! {
+        #(#attrs)*
+        #[allow(dead_code, unused)]
+        #vis mod #ident {
+            #(#other_items)*
+            #params
+            #coords_items
+            #errors
+        }
+    }
+}
+
+/// Fields with repeated names dropped (the repeat was reported).
+fn dedup(fields: &[Field]) -> Vec<Field> {
+    let mut seen = BTreeSet::new();
+    fields
+        .iter()
+        .filter(|f| seen.insert(f.ident.to_string()))
+        .cloned()
+        .collect()
+}
