@@ -44,7 +44,9 @@ pub fn cholesky_solve<S: Scalar, const N: usize>(
 
 /// The lower Cholesky factor L of M = L Lᵀ (only the lower triangle of M is read).
 #[inline]
-pub fn cholesky<S: Scalar, const N: usize>(m: &SMatrix<S, N, N>) -> Result<SMatrix<S, N, N>, NotPositiveDefinite> {
+pub fn cholesky<S: Scalar, const N: usize>(
+    m: &SMatrix<S, N, N>,
+) -> Result<SMatrix<S, N, N>, NotPositiveDefinite> {
     let mut scale = 0.0f64;
     for i in 0..N {
         scale = scale.max(m[(i, i)].re().abs());
@@ -58,7 +60,10 @@ pub fn cholesky<S: Scalar, const N: usize>(m: &SMatrix<S, N, N>) -> Result<SMatr
         }
         // `!(d > tol)` also catches NaN.
         if !(d.re() > tol) {
-            return Err(NotPositiveDefinite { index: j, pivot: d.re() });
+            return Err(NotPositiveDefinite {
+                index: j,
+                pivot: d.re(),
+            });
         }
         let ljj = d.sqrt();
         l[(j, j)] = ljj;
@@ -76,7 +81,10 @@ pub fn cholesky<S: Scalar, const N: usize>(m: &SMatrix<S, N, N>) -> Result<SMatr
 
 /// Solves L Lᵀ x = b given the lower Cholesky factor L.
 #[inline]
-pub fn cholesky_substitute<S: Scalar, const N: usize>(l: &SMatrix<S, N, N>, b: &SVector<S, N>) -> SVector<S, N> {
+pub fn cholesky_substitute<S: Scalar, const N: usize>(
+    l: &SMatrix<S, N, N>,
+    b: &SVector<S, N>,
+) -> SVector<S, N> {
     // forward: L y = b
     let mut y = *b;
     for i in 0..N {
@@ -100,7 +108,10 @@ pub fn cholesky_substitute<S: Scalar, const N: usize>(l: &SMatrix<S, N, N>, b: &
 /// Solves A x = b for a general square A by LU with partial pivoting; `None` when a pivot vanishes
 /// (|pivot| ≤ `SINGULAR_PIVOT`·max|Aᵢⱼ|). Used by Newton iterations of implicit methods, whose
 /// Jacobians are not symmetric.
-pub fn lu_solve<const N: usize>(a: &SMatrix<f64, N, N>, b: &SVector<f64, N>) -> Option<SVector<f64, N>> {
+pub fn lu_solve<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+) -> Option<SVector<f64, N>> {
     let mut a = *a;
     let mut x = *b;
     let scale = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -139,6 +150,75 @@ pub fn lu_solve<const N: usize>(a: &SMatrix<f64, N, N>, b: &SVector<f64, N>) -> 
             s -= a[(r, k)] * x[k];
         }
         x[r] = s / a[(r, r)];
+    }
+    Some(x)
+}
+
+/// Solves a block system Σₖ Aᵢₖ xₖ = bᵢ (i, k = 0..B) with N×N blocks, that is the (B·N)×(B·N)
+/// system of the stage equations of a B-stage implicit Runge–Kutta method, by LU with partial
+/// pivoting over the whole system (Golub & Van Loan, *Matrix Computations*, 4th ed., Alg. 3.4.1).
+/// The blocks are addressed as one matrix with row r = i·N + a, so a pivot may come from any block.
+/// `None` when a pivot vanishes (|pivot| ≤ `SINGULAR_PIVOT`·max|Aᵢⱼ|) or an entry is not finite.
+/// No allocation: the work copy lives on the stack.
+pub fn lu_solve_blocks<const N: usize, const B: usize>(
+    a: &[[SMatrix<f64, N, N>; B]; B],
+    b: &[SVector<f64, N>; B],
+) -> Option<[SVector<f64, N>; B]> {
+    let mut a = *a;
+    let mut x = *b;
+    let dim = N * B;
+    let get =
+        |a: &[[SMatrix<f64, N, N>; B]; B], r: usize, c: usize| a[r / N][c / N][(r % N, c % N)];
+    let mut scale = 0.0f64;
+    for r in 0..dim {
+        for c in 0..dim {
+            scale = scale.max(get(&a, r, c).abs());
+        }
+    }
+    if !scale.is_finite() || x.iter().any(|v| !v.iter().all(|e| e.is_finite())) {
+        return None;
+    }
+    let tol = SINGULAR_PIVOT * scale;
+    for c in 0..dim {
+        let mut p = c;
+        for r in (c + 1)..dim {
+            if get(&a, r, c).abs() > get(&a, p, c).abs() {
+                p = r;
+            }
+        }
+        let pivot = get(&a, p, c);
+        if !(pivot.abs() > tol) {
+            return None;
+        }
+        if p != c {
+            for k in 0..dim {
+                let (u, w) = (get(&a, p, k), get(&a, c, k));
+                a[p / N][k / N][(p % N, k % N)] = w;
+                a[c / N][k / N][(c % N, k % N)] = u;
+            }
+            let (u, w) = (x[p / N][p % N], x[c / N][c % N]);
+            x[p / N][p % N] = w;
+            x[c / N][c % N] = u;
+        }
+        let inv = 1.0 / pivot;
+        for r in (c + 1)..dim {
+            let f = get(&a, r, c) * inv;
+            if f != 0.0 {
+                for k in c..dim {
+                    let v = get(&a, c, k);
+                    a[r / N][k / N][(r % N, k % N)] -= f * v;
+                }
+                let xc = x[c / N][c % N];
+                x[r / N][r % N] -= f * xc;
+            }
+        }
+    }
+    for r in (0..dim).rev() {
+        let mut s = x[r / N][r % N];
+        for k in (r + 1)..dim {
+            s -= get(&a, r, k) * x[k / N][k % N];
+        }
+        x[r / N][r % N] = s / get(&a, r, r);
     }
     Some(x)
 }
@@ -188,5 +268,22 @@ mod tests {
         let x = lu_solve(&a, &b).unwrap();
         assert!((a * x - b).norm() < 1e-14);
         assert!(lu_solve(&matrix![1.0, 2.0; 2.0, 4.0], &vector![1.0, 1.0]).is_none());
+    }
+
+    #[test]
+    fn block_lu_matches_dense_solve() {
+        // A 4×4 system as 2×2 blocks of 2×2, with a zero leading block so pivoting must cross blocks.
+        let a = [
+            [matrix![0.0, 0.0; 0.0, 0.0], matrix![1.0, 2.0; 3.0, 1.0]],
+            [matrix![2.0, 1.0; 1.0, 3.0], matrix![0.5, 0.0; 0.0, 0.5]],
+        ];
+        let b = [vector![1.0, 2.0], vector![3.0, 4.0]];
+        let x = lu_solve_blocks(&a, &b).unwrap();
+        for i in 0..2 {
+            let r = a[i][0] * x[0] + a[i][1] * x[1] - b[i];
+            assert!(r.norm() < 1e-14, "{r}");
+        }
+        let singular = [[matrix![1.0], matrix![2.0]], [matrix![2.0], matrix![4.0]]];
+        assert!(lu_solve_blocks(&singular, &[vector![1.0], vector![1.0]]).is_none());
     }
 }

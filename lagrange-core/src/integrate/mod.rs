@@ -1,7 +1,33 @@
 //! Integrators, generic over every generated mechanism.
+//!
+//! | method | order | steps | evaluations of q̈ per step | geometric properties |
+//! |---|---|---|---|---|
+//! | [`Rk4`] | 4 | fixed | 4 | none (energy drifts) |
+//! | [`Dopri5`] | 5(4) | adaptive, dense output, events | 6 (FSAL) | none |
+//! | [`ImplicitMidpoint`] | 2 | fixed | Newton: 1 with Jacobians per iteration | symmetric; symplectic for constant M |
+//! | [`GaussLegendre2`] | 4 | fixed | Newton: 2 with Jacobians per iteration | symmetric; symplectic for constant M |
+//! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations | symplectic in (q, p) for any Lagrangian |
+//! | [`StormerVerlet`] | 2 | fixed | 2 | symplectic; refuses a non-constant mass matrix |
+//!
+//! Every step is allocation-free (a test counts allocations) and leaves the caller's state
+//! unchanged on error.
 
+mod dopri5;
+mod implicit;
+mod newton;
 mod rk4;
+mod variational;
+mod verlet;
+
+pub use dopri5::{
+    DenseOutput, Direction, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper, Event, EventHit,
+    Observation, StopReason,
+};
+pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats};
+pub use newton::{acceleration_jacobians, MAX_NEWTON_ITERATIONS};
 pub use rk4::Rk4;
+pub use variational::{momentum_rate, Variational, VariationalStepStats};
+pub use verlet::{StormerVerlet, MASS_MATRIX_VARIATION};
 
 use crate::error::Result;
 use crate::mechanism::Mechanism;
@@ -13,5 +39,9 @@ pub trait Integrator {
     /// The method's name, for reports and errors.
     const NAME: &'static str;
     /// Advances `state` by `h`.
-    fn step<M: Mechanism<N>, const N: usize>(mechanism: &M, state: &mut State<M::Coords>, h: f64) -> Result<()>;
+    fn step<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        state: &mut State<M::Coords>,
+        h: f64,
+    ) -> Result<()>;
 }

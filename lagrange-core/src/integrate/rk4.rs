@@ -44,7 +44,11 @@ impl Rk4 {
 impl Integrator for Rk4 {
     const NAME: &'static str = "RK4";
 
-    fn step<M: Mechanism<N>, const N: usize>(mechanism: &M, state: &mut State<M::Coords>, h: f64) -> Result<()> {
+    fn step<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        state: &mut State<M::Coords>,
+        h: f64,
+    ) -> Result<()> {
         check_step(h)?;
         let (q, v) = mechanism.check(state)?;
         let (q_new, v_new) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;

@@ -1,0 +1,849 @@
+//! Adaptive Dormand–Prince 5(4) with dense output and event location.
+//!
+//! - Method: Dormand & Prince, *A family of embedded Runge–Kutta formulae*, J. Comput. Appl. Math. 6
+//!   (1980); coefficients as in Hairer, Nørsett & Wanner, *Solving ODEs I* (HNW I), §II.5,
+//!   Table 5.2, and Hairer's code DOPRI5. Seven stages, the last evaluated at the new solution and
+//!   reused as the first stage of the next step (FSAL), so an accepted step costs 6 evaluations.
+//! - Error control (HNW I §II.4, (4.10)–(4.13)): err = √(1/n Σ (eᵢ/scᵢ)²) with
+//!   scᵢ = atol + rtol·max(|y₀ᵢ|, |y₁ᵢ|) over all q and v components; the step is accepted when
+//!   err ≤ 1 and the new step is h·min(fac_max, max(fac_min, safety·err^(−1/5)·PI)). The optional PI
+//!   factor err_old^β with exponent 1/5 − 0.75β is Gustafsson's stabilisation as in DOPRI5 (HNW II
+//!   §IV.2 / HNW I §II.4, β = 0.04 by default, β = 0 gives the classical controller). After a rejection
+//!   the step does not grow.
+//! - Initial step: HNW I §II.4, "Starting step size" (Hairer's routine HINIT), one extra evaluation.
+//! - Dense output: the continuous extension of order 4 of DOPRI5 (HNW I §II.6, (6.12) and the
+//!   coefficients d₁…d₇ of Hairer's DOPRI5/CONTD5), no extra evaluation:
+//!   y(t₀ + θh) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))).
+//! - Events: after each accepted step every event function g(state) is evaluated at the new point;
+//!   a sign change in the event's direction is located on the dense output by the Illinois variant of
+//!   regula falsi (Dowell & Jarratt, BIT 11 (1971)), which keeps a bracket, until the bracket is
+//!   shorter than max(1e-13, 4ε|t|) (so within 1e-12 of the root of g on the dense output; the
+//!   distance to the exact root is then that of the dense solution, O(tolerance)). Events in one step
+//!   are reported in time order; a terminal event ends the integration at its time, with the state
+//!   taken from the dense output. An event function with two roots inside one step shows no sign
+//!   change and is missed: bound `h_max` if that matters.
+//!
+//! Integration is forward in time only.
+
+use crate::error::{Error, Result};
+use crate::mechanism::Mechanism;
+use crate::model::{check_state, Coordinates, State};
+
+// Nodes and coefficients: HNW I, Table 5.2 (DOPRI5).
+const C2: f64 = 1.0 / 5.0;
+const C3: f64 = 3.0 / 10.0;
+const C4: f64 = 4.0 / 5.0;
+const C5: f64 = 8.0 / 9.0;
+const A21: f64 = 1.0 / 5.0;
+const A31: f64 = 3.0 / 40.0;
+const A32: f64 = 9.0 / 40.0;
+const A41: f64 = 44.0 / 45.0;
+const A42: f64 = -56.0 / 15.0;
+const A43: f64 = 32.0 / 9.0;
+const A51: f64 = 19372.0 / 6561.0;
+const A52: f64 = -25360.0 / 2187.0;
+const A53: f64 = 64448.0 / 6561.0;
+const A54: f64 = -212.0 / 729.0;
+const A61: f64 = 9017.0 / 3168.0;
+const A62: f64 = -355.0 / 33.0;
+const A63: f64 = 46732.0 / 5247.0;
+const A64: f64 = 49.0 / 176.0;
+const A65: f64 = -5103.0 / 18656.0;
+const A71: f64 = 35.0 / 384.0;
+const A73: f64 = 500.0 / 1113.0;
+const A74: f64 = 125.0 / 192.0;
+const A75: f64 = -2187.0 / 6784.0;
+const A76: f64 = 11.0 / 84.0;
+// Error estimate coefficients eᵢ = bᵢ − b̂ᵢ (Hairer's DOPRI5).
+const E1: f64 = 71.0 / 57600.0;
+const E3: f64 = -71.0 / 16695.0;
+const E4: f64 = 71.0 / 1920.0;
+const E5: f64 = -17253.0 / 339200.0;
+const E6: f64 = 22.0 / 525.0;
+const E7: f64 = -1.0 / 40.0;
+// Dense output (Hairer's DOPRI5, CONTD5; HNW I §II.6).
+const D1: f64 = -12715105075.0 / 11282082432.0;
+const D3: f64 = 87487479700.0 / 32700410799.0;
+const D4: f64 = -10690763975.0 / 1880347072.0;
+const D5: f64 = 701980252875.0 / 199316789632.0;
+const D6: f64 = -1453857185.0 / 822651844.0;
+const D7: f64 = 69997945.0 / 29380423.0;
+
+/// Width under which an event's bracket counts as located (absolute, in time units; widened to
+/// 4 ulp of t for large t).
+pub const EVENT_TIME_TOLERANCE: f64 = 1e-13;
+
+/// Settings of the adaptive Dormand–Prince 5(4) method (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dopri5 {
+    /// Relative tolerance (per component, against max(|y₀|, |y₁|)).
+    pub rtol: f64,
+    /// Absolute tolerance (per component).
+    pub atol: f64,
+    /// First step; `None` chooses it (HNW I §II.4).
+    pub h_init: Option<f64>,
+    /// Largest step.
+    pub h_max: f64,
+    /// Most step attempts (accepted + rejected) of one [`Dopri5::integrate`] call.
+    pub max_steps: usize,
+    /// Safety factor of the step-size controller.
+    pub safety: f64,
+    /// Smallest factor by which a step may shrink.
+    pub fac_min: f64,
+    /// Largest factor by which a step may grow.
+    pub fac_max: f64,
+    /// PI stabilisation exponent β (0: classical controller).
+    pub beta: f64,
+}
+
+impl Default for Dopri5 {
+    /// rtol = 1e-6, atol = 1e-9, DOPRI5's controller constants (safety 0.9, factors 0.2…10, β = 0.04).
+    fn default() -> Self {
+        Dopri5 {
+            rtol: 1e-6,
+            atol: 1e-9,
+            h_init: None,
+            h_max: f64::INFINITY,
+            max_steps: 1_000_000,
+            safety: 0.9,
+            fac_min: 0.2,
+            fac_max: 10.0,
+            beta: 0.04,
+        }
+    }
+}
+
+/// What an integration cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Dopri5Stats {
+    /// Accepted steps.
+    pub accepted: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Evaluations of the accelerations q̈ (right-hand side).
+    pub evaluations: usize,
+    /// Evaluations of event functions (including root finding).
+    pub event_evaluations: usize,
+}
+
+/// The dense output of one step: a 4th-order polynomial in time for q and v over [t₀, t₀ + h].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DenseOutput<const N: usize> {
+    t0: f64,
+    h: f64,
+    q: [[f64; N]; 5],
+    v: [[f64; N]; 5],
+}
+
+impl<const N: usize> DenseOutput<N> {
+    fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
+        let mut d = DenseOutput {
+            t0: t,
+            h: 0.0,
+            q: [[0.0; N]; 5],
+            v: [[0.0; N]; 5],
+        };
+        d.q[0] = *q;
+        d.v[0] = *v;
+        d
+    }
+
+    /// Start of the step.
+    pub fn t_start(&self) -> f64 {
+        self.t0
+    }
+
+    /// End of the step.
+    pub fn t_end(&self) -> f64 {
+        self.t0 + self.h
+    }
+
+    /// (q, v) at time t (meant for t in the step; outside it this extrapolates).
+    pub fn eval(&self, t: f64) -> ([f64; N], [f64; N]) {
+        if self.h == 0.0 {
+            return (self.q[0], self.v[0]);
+        }
+        let th = (t - self.t0) / self.h;
+        let th1 = 1.0 - th;
+        let f = |r: &[[f64; N]; 5]| -> [f64; N] {
+            std::array::from_fn(|i| {
+                r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * r[4][i])))
+            })
+        };
+        (f(&self.q), f(&self.v))
+    }
+
+    /// The root in (t_start, t_end] of g(t, q(t), v(t)) given its values at both ends (of opposite
+    /// signs, or zero at the end), by the Illinois method to within [`EVENT_TIME_TOLERANCE`]. The
+    /// returned time is on the far side of the bracket (g has its end-of-step sign there or is zero).
+    /// Also returns the number of evaluations of g.
+    pub fn find_root(
+        &self,
+        mut g: impl FnMut(f64, &[f64; N], &[f64; N]) -> f64,
+        g_start: f64,
+        g_end: f64,
+    ) -> (f64, usize) {
+        let (mut a, mut fa, mut b, mut fb) = (self.t0, g_start, self.t_end(), g_end);
+        if fb == 0.0 {
+            return (b, 0);
+        }
+        let tol = EVENT_TIME_TOLERANCE.max(4.0 * f64::EPSILON * b.abs());
+        let mut side = 0i8;
+        let mut evaluations = 0;
+        for _ in 0..200 {
+            if (b - a).abs() <= tol {
+                break;
+            }
+            let mut c = (a * fb - b * fa) / (fb - fa);
+            if !(c > a.min(b) && c < a.max(b)) {
+                c = 0.5 * (a + b);
+            }
+            let (q, v) = self.eval(c);
+            let fc = g(c, &q, &v);
+            evaluations += 1;
+            if fc == 0.0 {
+                return (c, evaluations);
+            }
+            if !fc.is_finite() {
+                // Cannot judge the sign: bisect towards the start, keeping the bracket.
+                b = c;
+                continue;
+            }
+            if (fc > 0.0) == (fb > 0.0) {
+                b = c;
+                fb = fc;
+                if side == -1 {
+                    fa *= 0.5;
+                }
+                side = -1;
+            } else {
+                a = c;
+                fa = fc;
+                if side == 1 {
+                    fb *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        (b, evaluations)
+    }
+}
+
+/// Which sign changes of an event function count.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Direction {
+    /// g goes from negative to non-negative.
+    Rising,
+    /// g goes from positive to non-positive.
+    Falling,
+    /// Either.
+    #[default]
+    Either,
+}
+
+/// An event function g(state) whose sign changes are located during [`Dopri5::integrate`].
+pub struct Event<'a, C> {
+    g: &'a dyn Fn(&State<C>) -> f64,
+    direction: Direction,
+    terminal: bool,
+    g_prev: f64,
+    pending: Option<(f64, bool)>,
+}
+
+impl<'a, C> Event<'a, C> {
+    /// An event on every sign change of g, not terminal.
+    pub fn new(g: &'a dyn Fn(&State<C>) -> f64) -> Self {
+        Event {
+            g,
+            direction: Direction::Either,
+            terminal: false,
+            g_prev: f64::NAN,
+            pending: None,
+        }
+    }
+
+    /// Only sign changes in this direction count.
+    pub fn direction(mut self, direction: Direction) -> Self {
+        self.direction = direction;
+        self
+    }
+
+    /// The integration stops at this event.
+    pub fn terminal(mut self) -> Self {
+        self.terminal = true;
+        self
+    }
+
+    /// Whether the change from g_prev to g_new is a crossing to report, and its direction (rising?).
+    fn crossing(&self, g_new: f64) -> Option<bool> {
+        let g0 = self.g_prev;
+        let rising = g0 < 0.0 && g_new >= 0.0;
+        let falling = g0 > 0.0 && g_new <= 0.0;
+        match self.direction {
+            Direction::Rising if rising => Some(true),
+            Direction::Falling if falling => Some(false),
+            Direction::Either if rising || falling => Some(rising),
+            _ => None,
+        }
+    }
+}
+
+/// An event located during an integration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventHit<C> {
+    /// Index of the event in the slice passed to [`Dopri5::integrate`].
+    pub index: usize,
+    /// The state at the event (from the dense output).
+    pub state: State<C>,
+    /// Whether g was rising (negative to non-negative).
+    pub rising: bool,
+    /// Whether the event stopped the integration.
+    pub terminal: bool,
+}
+
+/// Why [`Dopri5::integrate`] returned.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StopReason<C> {
+    /// t_end was reached.
+    Reached,
+    /// A terminal event occurred; the state is the state at the event.
+    Event(EventHit<C>),
+    /// `max_steps` attempts were made before reaching t_end; the state is the last accepted one.
+    MaxSteps,
+}
+
+/// The result of [`Dopri5::integrate`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dopri5Outcome<C> {
+    /// Cost.
+    pub stats: Dopri5Stats,
+    /// Why the integration ended.
+    pub reason: StopReason<C>,
+}
+
+/// What [`Dopri5::integrate`] shows its observer.
+#[derive(Debug)]
+pub enum Observation<'a, C, const N: usize> {
+    /// An accepted step: the state at its end and the dense output over it.
+    Step {
+        state: &'a State<C>,
+        dense: &'a DenseOutput<N>,
+    },
+    /// A located event (reported before the step it lies in).
+    Event(&'a EventHit<C>),
+}
+
+impl Dopri5 {
+    /// The default settings with these tolerances.
+    pub fn new(rtol: f64, atol: f64) -> Self {
+        Dopri5 {
+            rtol,
+            atol,
+            ..Dopri5::default()
+        }
+    }
+
+    /// Checks the settings. Tolerances must be finite and non-negative, not both zero; reported
+    /// as [`Error::NonFiniteParameter`] naming the setting. Steps as [`Error::InvalidStep`].
+    pub fn validate(&self) -> Result<()> {
+        for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(Error::NonFiniteParameter { name, value });
+            }
+        }
+        if self.rtol == 0.0 && self.atol == 0.0 {
+            return Err(Error::NonFiniteParameter {
+                name: "rtol",
+                value: 0.0,
+            });
+        }
+        for (name, value, ok) in [
+            (
+                "safety",
+                self.safety,
+                self.safety > 0.0 && self.safety <= 1.0,
+            ),
+            (
+                "fac_min",
+                self.fac_min,
+                self.fac_min > 0.0 && self.fac_min <= 1.0,
+            ),
+            (
+                "fac_max",
+                self.fac_max,
+                self.fac_max >= 1.0 && self.fac_max.is_finite(),
+            ),
+            ("beta", self.beta, (0.0..0.2).contains(&self.beta)),
+        ] {
+            if !ok {
+                return Err(Error::NonFiniteParameter { name, value });
+            }
+        }
+        if !(self.h_max > 0.0) {
+            return Err(Error::InvalidStep { h: self.h_max });
+        }
+        if let Some(h) = self.h_init {
+            crate::mechanism::check_step(h)?;
+        }
+        Ok(())
+    }
+
+    /// Integrates from `state` to `t_end` (≥ state.t), calling `observer` after every accepted
+    /// step and for every located event, and stopping early at a terminal event or after
+    /// `max_steps` attempts. On success `state` is the final state (at t_end, at the terminal event,
+    /// or the last accepted one); on error `state` is unchanged. No allocation.
+    pub fn integrate<M: Mechanism<N>, const N: usize>(
+        &self,
+        mechanism: &M,
+        state: &mut State<M::Coords>,
+        t_end: f64,
+        events: &mut [Event<'_, M::Coords>],
+        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
+    ) -> Result<Dopri5Outcome<M::Coords>> {
+        if !(t_end.is_finite() && t_end >= state.t) {
+            return Err(Error::InvalidStep { h: t_end - state.t });
+        }
+        let mut stepper = Dopri5Stepper::new(mechanism, *self, state)?;
+        for ev in events.iter_mut() {
+            ev.g_prev = (ev.g)(state);
+            ev.pending = None;
+            stepper.stats.event_evaluations += 1;
+        }
+        let mut reason = StopReason::Reached;
+        while stepper.t < t_end {
+            if stepper.stats.accepted + stepper.stats.rejected >= self.max_steps {
+                reason = StopReason::MaxSteps;
+                break;
+            }
+            stepper.step(t_end)?;
+            let current = stepper.state();
+            // Locate this step's crossings.
+            let mut t_stop = f64::INFINITY;
+            let mut any = false;
+            for ev in events.iter_mut() {
+                let g_new = (ev.g)(&current);
+                stepper.stats.event_evaluations += 1;
+                ev.pending = None;
+                if let Some(rising) = ev.crossing(g_new) {
+                    let g = ev.g;
+                    let (root, n) = stepper.dense.find_root(
+                        |t, q, v| {
+                            g(&State::new(
+                                t,
+                                M::Coords::from_array(*q),
+                                M::Coords::from_array(*v),
+                            ))
+                        },
+                        ev.g_prev,
+                        g_new,
+                    );
+                    stepper.stats.event_evaluations += n;
+                    ev.pending = Some((root, rising));
+                    any = true;
+                    if ev.terminal {
+                        t_stop = t_stop.min(root);
+                    }
+                }
+                ev.g_prev = g_new;
+            }
+            // Report them in time order, up to the first terminal one.
+            while any {
+                let mut best: Option<(usize, f64, bool)> = None;
+                for (i, ev) in events.iter().enumerate() {
+                    if let Some((root, rising)) = ev.pending {
+                        if root <= t_stop && best.is_none_or(|(_, t, _)| root < t) {
+                            best = Some((i, root, rising));
+                        }
+                    }
+                }
+                let Some((index, root, rising)) = best else {
+                    break;
+                };
+                events[index].pending = None;
+                let (q, v) = stepper.dense.eval(root);
+                let hit = EventHit {
+                    index,
+                    state: State::new(root, M::Coords::from_array(q), M::Coords::from_array(v)),
+                    rising,
+                    terminal: events[index].terminal,
+                };
+                observer(Observation::Event(&hit));
+                if hit.terminal {
+                    check_state(&M::Coords::NAMES, root, &q, &v)?;
+                    *state = hit.state;
+                    return Ok(Dopri5Outcome {
+                        stats: stepper.stats,
+                        reason: StopReason::Event(hit),
+                    });
+                }
+            }
+            observer(Observation::Step {
+                state: &current,
+                dense: &stepper.dense,
+            });
+        }
+        *state = stepper.state();
+        Ok(Dopri5Outcome {
+            stats: stepper.stats,
+            reason,
+        })
+    }
+}
+
+/// Step-by-step use of [`Dopri5`]: holds the current state, the proposed next step and the dense
+/// output of the last accepted step.
+///
+/// ```
+/// # use lagrange_core::integrate::{Dopri5, Dopri5Stepper};
+/// # fn demo<M: lagrange_core::Mechanism<2, Coords = [f64; 2]>>(m: &M) -> lagrange_core::Result<()> {
+/// let start = lagrange_core::State::new(0.0, [0.1, 0.0], [0.0, 0.0]);
+/// let mut stepper = Dopri5Stepper::new(m, Dopri5::new(1e-8, 1e-10), &start)?;
+/// while stepper.t() < 10.0 {
+///     stepper.step(10.0)?; // one accepted step, never past 10
+///     let (q_mid, _v_mid) = stepper.dense().eval(stepper.t() - 0.5 * stepper.last_step());
+/// }
+/// # Ok(()) }
+/// ```
+pub struct Dopri5Stepper<'m, M: Mechanism<N>, const N: usize> {
+    mechanism: &'m M,
+    settings: Dopri5,
+    t: f64,
+    q: [f64; N],
+    v: [f64; N],
+    a: [f64; N],
+    h: f64,
+    fac_old: f64,
+    dense: DenseOutput<N>,
+    stats: Dopri5Stats,
+}
+
+#[inline(always)]
+fn combo<const N: usize, const S: usize>(
+    y: &[f64; N],
+    h: f64,
+    coef: [f64; S],
+    k: [&[f64; N]; S],
+) -> [f64; N] {
+    std::array::from_fn(|i| {
+        let mut s = 0.0;
+        for j in 0..S {
+            s += coef[j] * k[j][i];
+        }
+        y[i] + h * s
+    })
+}
+
+impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
+    /// Starts at `state`: validates settings, mechanism and state, evaluates q̈ and chooses the
+    /// first step.
+    pub fn new(mechanism: &'m M, settings: Dopri5, state: &State<M::Coords>) -> Result<Self> {
+        settings.validate()?;
+        let (q, v) = mechanism.check(state)?;
+        let a = mechanism.accelerations_at(state.t, &q, &v)?;
+        let mut s = Dopri5Stepper {
+            mechanism,
+            settings,
+            t: state.t,
+            q,
+            v,
+            a,
+            h: 0.0,
+            fac_old: 1e-4,
+            dense: DenseOutput::constant(state.t, &q, &v),
+            stats: Dopri5Stats {
+                evaluations: 1,
+                ..Dopri5Stats::default()
+            },
+        };
+        s.h = match settings.h_init {
+            Some(h) => h.min(settings.h_max),
+            None => s.initial_step(),
+        };
+        Ok(s)
+    }
+
+    /// HNW I §II.4, "Starting step size" (Hairer's HINIT, order 5).
+    fn initial_step(&mut self) -> f64 {
+        let st = &self.settings;
+        let (mut dnf, mut dny) = (0.0, 0.0);
+        for i in 0..N {
+            let sq = st.atol + st.rtol * self.q[i].abs();
+            let sv = st.atol + st.rtol * self.v[i].abs();
+            dnf += (self.v[i] / sq).powi(2) + (self.a[i] / sv).powi(2);
+            dny += (self.q[i] / sq).powi(2) + (self.v[i] / sv).powi(2);
+        }
+        let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
+            1e-6
+        } else {
+            (dny / dnf).sqrt() * 0.01
+        };
+        h = h.min(st.h_max);
+        let q1: [f64; N] = std::array::from_fn(|i| self.q[i] + h * self.v[i]);
+        let v1: [f64; N] = std::array::from_fn(|i| self.v[i] + h * self.a[i]);
+        self.stats.evaluations += 1;
+        let Ok(a1) = self.mechanism.accelerations_at(self.t + h, &q1, &v1) else {
+            return h;
+        };
+        let mut der2 = 0.0;
+        for i in 0..N {
+            let sq = st.atol + st.rtol * self.q[i].abs();
+            let sv = st.atol + st.rtol * self.v[i].abs();
+            der2 += ((v1[i] - self.v[i]) / sq).powi(2) + ((a1[i] - self.a[i]) / sv).powi(2);
+        }
+        let der2 = der2.sqrt() / h;
+        let der12 = der2.max(dnf.sqrt());
+        let h1 = if der12 <= 1e-15 {
+            (h * 1e-3).max(1e-6)
+        } else {
+            (0.01 / der12).powf(0.2)
+        };
+        let h = (100.0 * h).min(h1).min(st.h_max);
+        if h.is_finite() && h > 0.0 {
+            h
+        } else {
+            1e-6
+        }
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Current state.
+    pub fn state(&self) -> State<M::Coords> {
+        State::new(
+            self.t,
+            M::Coords::from_array(self.q),
+            M::Coords::from_array(self.v),
+        )
+    }
+
+    /// Dense output of the last accepted step (a constant before the first step).
+    pub fn dense(&self) -> &DenseOutput<N> {
+        &self.dense
+    }
+
+    /// Length of the last accepted step.
+    pub fn last_step(&self) -> f64 {
+        self.dense.h
+    }
+
+    /// The step the controller proposes next.
+    pub fn proposed_step(&self) -> f64 {
+        self.h
+    }
+
+    /// Cost so far.
+    pub fn stats(&self) -> Dopri5Stats {
+        self.stats
+    }
+
+    /// Takes one accepted step, not past `t_limit` (> current time), rejecting and shrinking as
+    /// needed. A stage that fails (singular mass matrix, non-finite dynamics) counts as a rejection
+    /// with the step cut by `fac_min`; when the step can no longer shrink (0.1·h below round-off of t)
+    /// the last failure is returned ([`Error::InvalidStep`] if steps were rejected only for
+    /// accuracy). On error the accepted state is unchanged.
+    pub fn step(&mut self, t_limit: f64) -> Result<()> {
+        if !(t_limit > self.t) || !t_limit.is_finite() {
+            return Err(Error::InvalidStep {
+                h: t_limit - self.t,
+            });
+        }
+        let st = self.settings;
+        let expo1 = 0.2 - st.beta * 0.75;
+        let mut last_rejected = false;
+        let mut last_error: Option<Error> = None;
+        loop {
+            let mut h = self.h.min(st.h_max);
+            let last = self.t + 1.01 * h >= t_limit;
+            if last {
+                h = t_limit - self.t;
+            }
+            if !(self.t + 0.1 * h > self.t) {
+                return Err(last_error.unwrap_or(Error::InvalidStep { h }));
+            }
+            match self.attempt(h) {
+                Ok((q1, v1, a1, err, k)) => {
+                    let fac11 = err.powf(expo1);
+                    if err <= 1.0 {
+                        // Accepted.
+                        let fac = (fac11 / self.fac_old.powf(st.beta) / st.safety)
+                            .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
+                        let mut h_new = h / fac;
+                        if last_rejected {
+                            h_new = h_new.min(h);
+                        }
+                        self.fac_old = err.max(1e-4);
+                        self.dense = self.build_dense(h, &q1, &v1, &a1, &k);
+                        self.t = if last { t_limit } else { self.t + h };
+                        self.q = q1;
+                        self.v = v1;
+                        self.a = a1;
+                        self.h = h_new;
+                        self.stats.accepted += 1;
+                        return Ok(());
+                    }
+                    self.h = h / (1.0 / st.fac_min).min(fac11 / st.safety);
+                }
+                Err(e) => {
+                    self.h = h * st.fac_min;
+                    last_error = Some(e);
+                }
+            }
+            last_rejected = true;
+            self.stats.rejected += 1;
+        }
+    }
+
+    /// One trial step of size h: (q₁, v₁, q̈₁, err, stage data for the dense output).
+    #[allow(clippy::type_complexity)]
+    fn attempt(&mut self, h: f64) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
+        let m = self.mechanism;
+        let (t, q, v) = (self.t, &self.q, &self.v);
+        let (kq1, ka1) = (*v, self.a);
+        // Stage i: position increments use the stage velocities kqⱼ, velocity increments the stage
+        // accelerations kaⱼ.
+        let (q2, v2) = (combo(q, h, [A21], [&kq1]), combo(v, h, [A21], [&ka1]));
+        self.stats.evaluations += 1;
+        let ka2 = m.accelerations_at(t + C2 * h, &q2, &v2)?;
+        let kq2 = v2;
+        let (q3, v3) = (
+            combo(q, h, [A31, A32], [&kq1, &kq2]),
+            combo(v, h, [A31, A32], [&ka1, &ka2]),
+        );
+        self.stats.evaluations += 1;
+        let ka3 = m.accelerations_at(t + C3 * h, &q3, &v3)?;
+        let kq3 = v3;
+        let (q4, v4) = (
+            combo(q, h, [A41, A42, A43], [&kq1, &kq2, &kq3]),
+            combo(v, h, [A41, A42, A43], [&ka1, &ka2, &ka3]),
+        );
+        self.stats.evaluations += 1;
+        let ka4 = m.accelerations_at(t + C4 * h, &q4, &v4)?;
+        let kq4 = v4;
+        let (q5, v5) = (
+            combo(q, h, [A51, A52, A53, A54], [&kq1, &kq2, &kq3, &kq4]),
+            combo(v, h, [A51, A52, A53, A54], [&ka1, &ka2, &ka3, &ka4]),
+        );
+        self.stats.evaluations += 1;
+        let ka5 = m.accelerations_at(t + C5 * h, &q5, &v5)?;
+        let kq5 = v5;
+        let (q6, v6) = (
+            combo(
+                q,
+                h,
+                [A61, A62, A63, A64, A65],
+                [&kq1, &kq2, &kq3, &kq4, &kq5],
+            ),
+            combo(
+                v,
+                h,
+                [A61, A62, A63, A64, A65],
+                [&ka1, &ka2, &ka3, &ka4, &ka5],
+            ),
+        );
+        self.stats.evaluations += 1;
+        let ka6 = m.accelerations_at(t + h, &q6, &v6)?;
+        let kq6 = v6;
+        let q1 = combo(
+            q,
+            h,
+            [A71, A73, A74, A75, A76],
+            [&kq1, &kq3, &kq4, &kq5, &kq6],
+        );
+        let v1 = combo(
+            v,
+            h,
+            [A71, A73, A74, A75, A76],
+            [&ka1, &ka3, &ka4, &ka5, &ka6],
+        );
+        check_state(&M::Coords::NAMES, t + h, &q1, &v1)?;
+        self.stats.evaluations += 1;
+        let ka7 = m.accelerations_at(t + h, &q1, &v1)?;
+        let kq7 = v1;
+        let st = &self.settings;
+        let mut sum = 0.0;
+        for i in 0..N {
+            let eq = h
+                * (E1 * kq1[i]
+                    + E3 * kq3[i]
+                    + E4 * kq4[i]
+                    + E5 * kq5[i]
+                    + E6 * kq6[i]
+                    + E7 * kq7[i]);
+            let ev = h
+                * (E1 * ka1[i]
+                    + E3 * ka3[i]
+                    + E4 * ka4[i]
+                    + E5 * ka5[i]
+                    + E6 * ka6[i]
+                    + E7 * ka7[i]);
+            let sq = st.atol + st.rtol * q[i].abs().max(q1[i].abs());
+            let sv = st.atol + st.rtol * v[i].abs().max(v1[i].abs());
+            sum += (eq / sq).powi(2) + (ev / sv).powi(2);
+        }
+        let err = (sum / (2 * N) as f64).sqrt();
+        if !err.is_finite() {
+            return Err(Error::NonFiniteDynamics {
+                t: t + h,
+                configuration: crate::error::describe_configuration(&M::Coords::NAMES, &q1),
+            });
+        }
+        // The dense output needs d-weighted sums of the stages for q and v.
+        let dq = combo(
+            &[0.0; N],
+            1.0,
+            [D1, D3, D4, D5, D6, D7],
+            [&kq1, &kq3, &kq4, &kq5, &kq6, &kq7],
+        );
+        let dv = combo(
+            &[0.0; N],
+            1.0,
+            [D1, D3, D4, D5, D6, D7],
+            [&ka1, &ka3, &ka4, &ka5, &ka6, &ka7],
+        );
+        Ok((
+            q1,
+            v1,
+            ka7,
+            err,
+            [kq1, ka1, kq7, ka7, dq, dv, [0.0; N], [0.0; N]],
+        ))
+    }
+
+    fn build_dense(
+        &self,
+        h: f64,
+        q1: &[f64; N],
+        v1: &[f64; N],
+        _a1: &[f64; N],
+        k: &[[f64; N]; 8],
+    ) -> DenseOutput<N> {
+        let [kq1, ka1, kq7, ka7, dq, dv, _, _] = k;
+        let make = |y0: &[f64; N],
+                    y1: &[f64; N],
+                    k1: &[f64; N],
+                    k7: &[f64; N],
+                    d: &[f64; N]|
+         -> [[f64; N]; 5] {
+            let mut r = [[0.0; N]; 5];
+            for i in 0..N {
+                let diff = y1[i] - y0[i];
+                let bspl = h * k1[i] - diff;
+                r[0][i] = y0[i];
+                r[1][i] = diff;
+                r[2][i] = bspl;
+                r[3][i] = diff - h * k7[i] - bspl;
+                r[4][i] = h * d[i];
+            }
+            r
+        };
+        DenseOutput {
+            t0: self.t,
+            h,
+            q: make(&self.q, q1, kq1, kq7, dq),
+            v: make(&self.v, v1, ka1, ka7, dv),
+        }
+    }
+}

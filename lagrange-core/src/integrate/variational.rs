@@ -1,0 +1,227 @@
+//! A variational integrator: the discrete Euler–Lagrange equations of the midpoint discrete
+//! Lagrangian, forced by the discrete Lagrange–d'Alembert principle (Marsden & West, *Discrete
+//! mechanics and variational integrators*, Acta Numerica 10 (2001), §1.2, §3.2 and §3.5.3).
+//!
+//! ```text
+//! L_d(q₀, q₁) = h · L(t + h/2, q_m, v_m),     q_m = (q₀ + q₁)/2,   v_m = (q₁ − q₀)/h,
+//! F_d^±(q₀, q₁) = (h/2) · F_nc(t + h/2, q_m, v_m)                 (midpoint quadrature of the forcing),
+//! p₀ = −D₁L_d(q₀, q₁) − F_d^−(q₀, q₁),   p₁ = D₂L_d(q₀, q₁) + F_d^+(q₀, q₁)   (M&W (3.2.7) with forcing).
+//! ```
+//!
+//! With D₁L_d = (h/2) ∂L/∂q − ∂L/∂v and D₂L_d = (h/2) ∂L/∂q + ∂L/∂v at the midpoint, and
+//! ∂L/∂q + F_nc = ∂T/∂q + 𝓕 =: G (𝓕 the generalized forces of the equations of motion, which
+//! already contain −∇V, so the non-conservative part need not be separated), this is
+//!
+//! ```text
+//! R(v_m) = p(t_m, q₀ + (h/2) v_m, v_m) − (h/2) G(t_m, q₀ + (h/2) v_m, v_m) − p₀ = 0,
+//! q₁ = q₀ + h v_m,     p₁ = p₀ + h G(t_m, q_m, v_m),
+//! ```
+//!
+//! solved for v_m by Newton's method with the exact Jacobian dR/dv_m, obtained by evaluating R with
+//! v_m seeded as a gradient dual number (∂T/∂q inside G is itself a gradient, so this nests dual
+//! numbers: exact second derivatives of T). Starting guess v_m = v₀.
+//!
+//! **State and momenta.** The method lives on (q, p). [`Variational`] implements
+//! [`Integrator`] on the (q, v) [`State`] by a Legendre transform at both ends of a step:
+//! p₀ = ∂L/∂v(t₀, q₀, v₀) before, and after it v₁ solves ∂L/∂v(t₁, q₁, v₁) = p₁, by Newton's method
+//! with the exact Jacobian ∂p/∂v = M(q₁, t₁) (from dual numbers). For every mechanism built from a
+//! [`Model`](crate::Model), T is quadratic in v, so this Newton converges in one iteration (a second
+//! confirms it); for a general Lagrangian it is an ordinary Newton iteration. Because the Legendre
+//! transform at t₁ is inverted exactly (to round-off), the next step's p₀ is this step's p₁ and
+//! the sequence of (q, p) is that of the discrete flow: the step map is symplectic in (q, p) for any
+//! Lagrangian, second order, symmetric. [`Variational::step_momenta`] works on (q, p) directly.
+
+use super::newton::{jacobian_rows, max_norm, Convergence, MAX_NEWTON_ITERATIONS};
+use super::Integrator;
+use crate::error::{Error, Result};
+use crate::geometry::Scalar;
+use crate::linalg::lu_solve;
+use crate::mechanism::{check_step, Mechanism};
+use crate::model::{check_state, Coordinates, State};
+use nalgebra::SVector;
+use num_dual::DualSVec;
+
+/// The midpoint variational integrator (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Variational;
+
+/// G = ∂T/∂q + 𝓕 = ∂L/∂q + F_nc at (t, q, v), for any scalar: the right-hand side of ṗ = G.
+pub fn momentum_rate<M: Mechanism<N>, S: Scalar, const N: usize>(
+    mechanism: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> [S; N] {
+    let td = DualSVec::<S, N>::from_re(t);
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let vd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]));
+    let kinetic = mechanism.kinetic_energy_at(td, &qd, &vd);
+    let forces = mechanism.equations_of_motion_at(t, q, v).generalized_forces;
+    match kinetic.eps.0 {
+        Some(grad) => std::array::from_fn(|k| grad[k] + forces[k]),
+        None => forces.into(),
+    }
+}
+
+/// R(v_m) of the module docs, for any scalar.
+#[inline]
+fn residual<M: Mechanism<N>, S: Scalar, const N: usize>(
+    mechanism: &M,
+    tm: f64,
+    q0: &[f64; N],
+    p0: &[f64; N],
+    vm: &[S; N],
+    h: f64,
+) -> [S; N] {
+    let qm: [S; N] = std::array::from_fn(|j| vm[j] * (0.5 * h) + q0[j]);
+    let t = S::from(tm);
+    let p = mechanism.momenta_at(t, &qm, vm);
+    let g = momentum_rate(mechanism, t, &qm, vm);
+    std::array::from_fn(|k| p[k] - g[k] * (0.5 * h) - p0[k])
+}
+
+/// What a variational step cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct VariationalStepStats {
+    /// Newton iterations of the discrete Euler–Lagrange equation.
+    pub iterations: usize,
+    /// Newton iterations of the velocity recovery ∂L/∂v = p₁.
+    pub velocity_iterations: usize,
+}
+
+impl Variational {
+    /// One step of the discrete flow on (q, p): returns (q₁, p₁) and the midpoint velocity v_m
+    /// (a good starting guess for recovering v₁). No validation.
+    #[allow(clippy::type_complexity)]
+    pub fn step_momenta<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        t: f64,
+        q0: &[f64; N],
+        p0: &[f64; N],
+        v_guess: &[f64; N],
+        h: f64,
+    ) -> Result<([f64; N], [f64; N], [f64; N], usize)> {
+        let tm = t + 0.5 * h;
+        let mut vm = SVector::<f64, N>::from(*v_guess);
+        let mut conv = Convergence::new();
+        let mut residual_norm = f64::NAN;
+        for it in 1..=MAX_NEWTON_ITERATIONS {
+            let seeded: [DualSVec<f64, N>; N] =
+                std::array::from_fn(|j| DualSVec::from_re(vm[j]).derivative(j));
+            let r = residual(mechanism, tm, q0, p0, &seeded, h);
+            let value = SVector::<f64, N>::from_fn(|i, _| r[i].re);
+            residual_norm = max_norm(&value);
+            if !residual_norm.is_finite() {
+                break;
+            }
+            let Some(delta) = lu_solve(&jacobian_rows(&r), &value) else {
+                break;
+            };
+            vm -= delta;
+            if conv.converged(max_norm(&delta), max_norm(&vm)) {
+                let vm: [f64; N] = vm.into();
+                let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
+                let g = momentum_rate(mechanism, tm, &qm, &vm);
+                let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
+                let p1 = std::array::from_fn(|j| p0[j] + h * g[j]);
+                return Ok((q1, p1, vm, it));
+            }
+        }
+        Err(Error::NewtonDiverged {
+            t,
+            iterations: MAX_NEWTON_ITERATIONS,
+            residual: residual_norm,
+        })
+    }
+
+    /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method
+    /// with the exact Jacobian ∂p/∂v from dual numbers, from `guess`. Returns v and the iterations.
+    pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        t: f64,
+        q: &[f64; N],
+        p: &[f64; N],
+        guess: &[f64; N],
+    ) -> Result<([f64; N], usize)> {
+        let td = DualSVec::<f64, N>::from_re(t);
+        let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
+        let mut v = SVector::<f64, N>::from(*guess);
+        let mut conv = Convergence::new();
+        let mut residual_norm = f64::NAN;
+        for it in 1..=MAX_NEWTON_ITERATIONS {
+            let vd: [DualSVec<f64, N>; N] =
+                std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
+            let pv = mechanism.momenta_at(td, &qd, &vd);
+            let r = SVector::<f64, N>::from_fn(|i, _| pv[i].re - p[i]);
+            residual_norm = max_norm(&r);
+            if !residual_norm.is_finite() {
+                break;
+            }
+            let Some(delta) = lu_solve(&jacobian_rows(&pv), &r) else {
+                break;
+            };
+            v -= delta;
+            if conv.converged(max_norm(&delta), max_norm(&v)) {
+                return Ok((v.into(), it));
+            }
+        }
+        Err(Error::NewtonDiverged {
+            t,
+            iterations: MAX_NEWTON_ITERATIONS,
+            residual: residual_norm,
+        })
+    }
+
+    /// One step on (q, v) arrays through the Legendre transform at both ends. No validation.
+    #[allow(clippy::type_complexity)]
+    pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+    ) -> Result<([f64; N], [f64; N], VariationalStepStats)> {
+        let p0 = mechanism.momenta_at(t, q, v);
+        let (q1, p1, vm, iterations) = Self::step_momenta(mechanism, t, q, &p0, v, h)?;
+        // v₁ ≈ 2 v_m − v₀ to first order: the Newton start for the inverse Legendre transform.
+        let guess: [f64; N] = std::array::from_fn(|j| 2.0 * vm[j] - v[j]);
+        let (v1, velocity_iterations) =
+            Self::velocities_from_momenta(mechanism, t + h, &q1, &p1, &guess)?;
+        Ok((
+            q1,
+            v1,
+            VariationalStepStats {
+                iterations,
+                velocity_iterations,
+            },
+        ))
+    }
+
+    /// A validated step that also reports its Newton cost; the state is unchanged on error.
+    pub fn step_with_stats<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        state: &mut State<M::Coords>,
+        h: f64,
+    ) -> Result<VariationalStepStats> {
+        check_step(h)?;
+        let (q, v) = mechanism.check(state)?;
+        let (q1, v1, stats) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        check_state(&M::Coords::NAMES, state.t + h, &q1, &v1)?;
+        state.t += h;
+        state.q = M::Coords::from_array(q1);
+        state.v = M::Coords::from_array(v1);
+        Ok(stats)
+    }
+}
+
+impl Integrator for Variational {
+    const NAME: &'static str = "variational midpoint";
+
+    fn step<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        state: &mut State<M::Coords>,
+        h: f64,
+    ) -> Result<()> {
+        Self::step_with_stats(mechanism, state, h).map(|_| ())
+    }
+}

@@ -1,0 +1,95 @@
+//! Störmer–Verlet in velocity form (Hairer, Lubich & Wanner, *Geometric Numerical Integration*,
+//! §I.1.4, (1.17); Hairer, Lubich & Wanner, Acta Numerica 12 (2003), "Geometric numerical integration
+//! illustrated by the Störmer–Verlet method"):
+//!
+//! ```text
+//! v_{1/2} = v₀ + (h/2) q̈(t₀, q₀, v₀),   q₁ = q₀ + h v_{1/2},   v₁ = v_{1/2} + (h/2) q̈(t₁, q₁, v_{1/2}).
+//! ```
+//!
+//! Explicit, order 2, symplectic and symmetric for q̈ = −M⁻¹∇V(q) with a **constant** mass matrix M
+//! (then (q, Mv) are canonical and the method is the composition of two symplectic Euler steps).
+//! With forces that depend on the velocity the last evaluation uses v_{1/2} in place of the unknown
+//! v₁ (which keeps the method explicit, but it is then neither symmetric nor symplectic — use
+//! [`Variational`](super::Variational) for forced mechanisms).
+//!
+//! **The constant-mass-matrix test.** Every step evaluates the equations of motion at the old and
+//! the new configuration anyway (for q̈), so it compares the two mass matrices: if
+//! max|M(q₁, t₁) − M(q₀, t₀)| > 1e-12 · max|M(q₀, t₀)| the step is refused with
+//! [`Error::UnsuitableMethod`] and the state is left as it was. The threshold is 4500 ε: far above
+//! the round-off of assembling M = Jᵀ diag(μ) J for small systems, far below the change of any mass
+//! matrix that actually depends on q over a step that moves it. So a mechanism whose mass matrix
+//! varies (a double pendulum, polar coordinates, a time-dependent M) is refused at its first step
+//! that moves; one whose M is constant up to round-off (a pendulum in its angle, Cartesian
+//! particles) is accepted. A step that does not move (v = q̈ = 0) cannot see the difference and
+//! is allowed, harmlessly: it is exact for any M.
+
+use super::Integrator;
+use crate::dynamics::solve_accelerations;
+use crate::error::{Error, Result};
+use crate::mechanism::{check_step, Mechanism};
+use crate::model::{check_state, Coordinates, State};
+
+/// Relative change of the mass matrix over one step above which [`StormerVerlet`] refuses the
+/// mechanism (see the [module docs](self)).
+pub const MASS_MATRIX_VARIATION: f64 = 1e-12;
+
+/// Störmer–Verlet, velocity form (see the [module docs](self)): two evaluations of q̈ per step.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct StormerVerlet;
+
+impl StormerVerlet {
+    /// One step on raw arrays: (q₁, v₁), or [`Error::UnsuitableMethod`] when the mass matrix
+    /// changed over the step. No validation of the inputs.
+    pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+    ) -> Result<([f64; N], [f64; N])> {
+        let eom0 = mechanism.equations_of_motion_at(t, q, v);
+        let a0 = solve_accelerations::<M::Coords, f64, N>(&eom0, t, q)?;
+        let vh: [f64; N] = std::array::from_fn(|i| v[i] + 0.5 * h * a0[i]);
+        let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * vh[i]);
+        let t1 = t + h;
+        let eom1 = mechanism.equations_of_motion_at(t1, &q1, &vh);
+        let scale = eom0.mass_matrix.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let change = (eom1.mass_matrix - eom0.mass_matrix)
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        // `!(a <= b)` also refuses NaN.
+        if !(change <= MASS_MATRIX_VARIATION * scale) {
+            return Err(Error::UnsuitableMethod {
+                method: Self::NAME,
+                reason: format!(
+                    "the mass matrix is not constant: it changed by {change:e} (relative {:e}) over the step from \
+                     t = {t} to t = {t1}; use a method for general mass matrices (implicit midpoint, Gauss-Legendre, \
+                     variational, RK4, Dopri5)",
+                    change / scale
+                ),
+            });
+        }
+        let a1 = solve_accelerations::<M::Coords, f64, N>(&eom1, t1, &q1)?;
+        let v1 = std::array::from_fn(|i| vh[i] + 0.5 * h * a1[i]);
+        Ok((q1, v1))
+    }
+}
+
+impl Integrator for StormerVerlet {
+    const NAME: &'static str = "Stormer-Verlet";
+
+    fn step<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        state: &mut State<M::Coords>,
+        h: f64,
+    ) -> Result<()> {
+        check_step(h)?;
+        let (q, v) = mechanism.check(state)?;
+        let (q1, v1) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        check_state(&M::Coords::NAMES, state.t + h, &q1, &v1)?;
+        state.t += h;
+        state.q = M::Coords::from_array(q1);
+        state.v = M::Coords::from_array(v1);
+        Ok(())
+    }
+}
