@@ -111,12 +111,18 @@ impl<'a> Model<'a> {
 pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     // `#[mechanism] mod m { struct Pendulum {..} ... }` without `struct Coords`.
     let Some((_, coords)) = &mechanism.coords else {
-        cx.error_at(mechanism.span(), "missing `pub struct Coords { ... }`: the generalized coordinates, one `f64` field each");
+        cx.error_at(
+            mechanism.span(),
+            "missing `pub struct Coords { ... }`: the generalized coordinates, one `f64` field each",
+        );
         return None;
     };
     // `#[mechanism] mod m { struct Coords {..} ... }` without a parameter struct.
     let Some((params_struct, params)) = &mechanism.params else {
-        cx.error_at(mechanism.span(), "missing the parameter struct (`pub struct Name { pub m: f64, ... }`): its name is the mechanism's type");
+        cx.error_at(
+            mechanism.span(),
+            "missing the parameter struct (`pub struct Name { pub m: f64, ... }`): its name is the mechanism's type",
+        );
         return None;
     };
     // `struct Coords {}`: nothing moves.
@@ -249,12 +255,18 @@ fn rigid_body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
         (Some("Planar"), false) | (None, false) => Shape::Planar,
         // `#[rigid_body(mass = m, inertia = [a, b, c])] fn top() -> Planar`.
         (Some(_), true) => {
-            cx.error_spanned_by(decl.output(), "three principal moments `inertia = [I1, I2, I3]` make a spatial body: return `Spatial`");
+            cx.error_spanned_by(
+                decl.output(),
+                "three principal moments `inertia = [I1, I2, I3]` make a spatial body: return `Spatial`",
+            );
             Shape::Spatial
         }
         // `#[rigid_body(mass = m, inertia = i)] fn top() -> Spatial`.
         (Some(_), false) => {
-            cx.error_spanned_by(decl.output(), "a spatial body needs its principal moments `inertia = [I1, I2, I3]`; one moment makes a `Planar` body");
+            cx.error_spanned_by(
+                decl.output(),
+                "a spatial body needs its principal moments `inertia = [I1, I2, I3]`; one moment makes a `Planar` body",
+            );
             Shape::Spatial
         }
     }
@@ -285,7 +297,10 @@ fn check_signature(cx: &Ctxt, decl: &Decl) {
     let sig = &decl.sig;
     // `fn bob(theta: f64) -> Vec2`: coordinates, parameters and `t` are in scope by name.
     if !sig.inputs.is_empty() {
-        cx.error_spanned_by(&sig.inputs, "declaration functions take no arguments: coordinates, parameters and `t` are in scope by name");
+        cx.error_spanned_by(
+            &sig.inputs,
+            "declaration functions take no arguments: coordinates, parameters and `t` are in scope by name",
+        );
     }
     // `fn bob<T>() -> Vec2`: the scalar type is chosen by the macro.
     if !sig.generics.params.is_empty() || sig.generics.where_clause.is_some() {
@@ -436,7 +451,10 @@ fn check_masses(cx: &Ctxt, model: &Model) {
         }
         match &args.inertia {
             // `#[rigid_body(mass = m)] fn bar() -> Planar`: a rigid body also needs its inertia.
-            None => cx.error_spanned_by(&args.attr, format!("rigid body `{name}` has no inertia: add `inertia = ...` (one moment, or `[I1, I2, I3]`)")),
+            None => cx.error_spanned_by(
+                &args.attr,
+                format!("rigid body `{name}` has no inertia: add `inertia = ...` (one moment, or `[I1, I2, I3]`)"),
+            ),
             Some(Inertia::Moment(e)) => check_constant(cx, model, e),
             Some(Inertia::Principal(array)) => {
                 // `inertia = [a, b]`: three principal moments.
@@ -485,7 +503,10 @@ fn check_coordinates_are_used(cx: &Ctxt, model: &Model) {
         if !used.contains(&j) {
             cx.error_spanned_by(
                 &coord.ident,
-                format!("no body or point position depends on coordinate `{}`: its row of the mass matrix would be zero", coord.ident),
+                format!(
+                    "no body or point position depends on coordinate `{}`: its row of the mass matrix would be zero",
+                    coord.ident
+                ),
             );
         }
     }

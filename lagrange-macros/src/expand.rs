@@ -55,6 +55,11 @@ fn errors_then(cx: Ctxt, item: TokenStream) -> TokenStream {
     quote!(#errors #item)
 }
 
+/// An unsuffixed integer literal (`3`, not `3usize`).
+fn lit(n: usize) -> proc_macro2::Literal {
+    proc_macro2::Literal::usize_unsuffixed(n)
+}
+
 /// `::lagrange::__private`.
 fn private() -> TokenStream {
     quote!(::lagrange::__private)
@@ -104,7 +109,7 @@ fn generate(model: &Model) -> TokenStream {
 /// `Coords<T = f64>`, its `Coordinates` impl, `DOF` and `State`.
 fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
     let p = private();
-    let n = coords.len();
+    let n = lit(coords.len());
     let attrs = mechanism
         .coords
         .as_ref()
@@ -118,7 +123,7 @@ fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
     let field_attrs = coords.iter().map(|f| &f.attrs);
     let names: Vec<&Ident> = coords.iter().map(|f| &f.ident).collect();
     let strings = names.iter().map(|n| n.to_string());
-    let indices = 0..n;
+    let indices = (0..coords.len()).map(lit);
     quote! {
         #(#attrs)*
         #[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq, #p::core::default::Default)]
@@ -231,7 +236,7 @@ fn position_type(shape: Shape) -> TokenStream {
 /// The inherent impl: `bodies`, `body_velocities`, and the private generic body functions.
 fn inherent_impl(model: &Model) -> TokenStream {
     let p = private();
-    let (params, n, k) = (model.params_ident, model.coords.len(), model.rows);
+    let (params, n, k) = (model.params_ident, lit(model.coords.len()), lit(model.rows));
     let bodies_fn = bodies_fn(model);
     let from_cartesian =
         (!model.potentials.is_empty() || !model.gravities.is_empty() || !model.forces.is_empty())
@@ -266,7 +271,7 @@ fn inherent_impl(model: &Model) -> TokenStream {
 /// The user's position functions as `let` bindings in declaration order, on any scalar.
 fn bodies_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, d) = (model.coords.len(), scalar());
+    let (n, d) = (lit(model.coords.len()), scalar());
     let prelude = prelude();
     let used = model.names_used_by(model.bodies.iter().map(|b| b.decl));
     let inputs = bind_inputs(model, &used, quote!(__q));
@@ -290,6 +295,7 @@ fn bodies_fn(model: &Model) -> TokenStream {
 
 /// `x[i]` as tokens.
 fn row(x: &TokenStream, i: usize) -> TokenStream {
+    let i = lit(i);
     quote!(#x[#i])
 }
 
@@ -333,7 +339,10 @@ fn flatten(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
                 quote!(#b.position.z),
             ];
             for k in 0..3usize {
-                rows.extend((0..3usize).map(|r| quote!(#b.rotation.rows[#r][#k])));
+                rows.extend((0..3).map(|r| {
+                    let (r, k) = (lit(r), lit(k));
+                    quote!(#b.rotation.rows[#r][#k])
+                }));
             }
             rows
         }
@@ -342,7 +351,7 @@ fn flatten(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
 
 fn positions_from_cartesian(model: &Model) -> TokenStream {
     let p = private();
-    let k = model.rows;
+    let k = lit(model.rows);
     let names = model.bodies.iter().map(|b| b.decl.ident());
     let values = model
         .bodies
@@ -358,7 +367,7 @@ fn positions_from_cartesian(model: &Model) -> TokenStream {
 
 fn velocities_from_cartesian(model: &Model) -> TokenStream {
     let p = private();
-    let k = model.rows;
+    let k = lit(model.rows);
     let names = model.bodies.iter().map(|b| b.decl.ident());
     let values = model
         .bodies
@@ -396,9 +405,9 @@ fn model_impl(model: &Model) -> TokenStream {
     let p = private();
     let (params, n, k, inertial) = (
         model.params_ident,
-        model.coords.len(),
-        model.rows,
-        model.inertial_rows,
+        lit(model.coords.len()),
+        lit(model.rows),
+        lit(model.inertial_rows),
     );
     let rheonomic = model.rheonomic;
     let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
@@ -477,9 +486,9 @@ fn validate_fn(model: &Model) -> TokenStream {
 }
 
 fn masses_fn(model: &Model) -> TokenStream {
-    let k = model.rows;
+    let k = lit(model.rows);
     let bindings = mass_bindings(model);
-    let mut rows = vec![quote!(0.0); k];
+    let mut rows = vec![quote!(0.0); model.rows];
     for body in &model.bodies {
         let mass = format_ident!("__mass_{}", body.decl.ident());
         let inertia = format_ident!("__inertia_{}", body.decl.ident());
@@ -517,7 +526,7 @@ fn masses_fn(model: &Model) -> TokenStream {
 
 fn cartesian_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, k) = (model.coords.len(), model.rows);
+    let (n, k) = (lit(model.coords.len()), lit(model.rows));
     let mut by_row: Vec<&Body> = model.bodies.iter().collect();
     by_row.sort_by_key(|b| b.row);
     let rows = by_row.iter().flat_map(|b| {
@@ -541,7 +550,7 @@ fn bind_bodies(model: &Model) -> TokenStream {
 
 fn potential_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, k, d) = (model.coords.len(), model.rows, scalar());
+    let (n, k, d) = (lit(model.coords.len()), lit(model.rows), scalar());
     let prelude = prelude();
     let decls = model
         .potentials
@@ -585,7 +594,7 @@ fn gravity_terms(model: &Model, decl: &crate::ast::Decl, dim: Dim) -> TokenStrea
         .iter()
         .filter(|b| b.shape.has_mass() && b.shape.dim() == dim)
         .map(|b| {
-            let (name, row) = (b.decl.ident(), b.row);
+            let (name, row) = (b.decl.ident(), lit(b.row));
             let centre = match b.shape {
                 Shape::Planar | Shape::Spatial => quote!(#name.position),
                 _ => quote!(#name),
@@ -597,7 +606,7 @@ fn gravity_terms(model: &Model, decl: &crate::ast::Decl, dim: Dim) -> TokenStrea
 
 fn applied_forces_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, k, d) = (model.coords.len(), model.rows, scalar());
+    let (n, k, d) = (lit(model.coords.len()), lit(model.rows), scalar());
     let prelude = prelude();
     let inputs = bind_inputs(
         model,
@@ -627,17 +636,17 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
                     &["x", "y", "z"]
                 };
                 let adds = components.iter().enumerate().map(|(i, c)| {
-                    let (r, c) = (body.row + i, format_ident!("{}", c));
+                    let (r, c) = (lit(body.row + i), format_ident!("{}", c));
                     quote!(__cartesian_force[#r] += #ident.#c;)
                 });
                 quote!(let #ident: #ty = #block; #(#adds)*)
             }
             Kind::Torque => {
-                let r = model.bodies[force.target].row + 2;
+                let r = lit(model.bodies[force.target].row + 2);
                 quote!(let #ident: __D = #block; __cartesian_force[#r] += #ident;)
             }
             _ => {
-                let j = force.target;
+                let j = lit(force.target);
                 quote!(let #ident: __D = #block; __generalized_force[#j] += #ident;)
             }
         }
@@ -666,7 +675,7 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
 
 /// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
 fn mechanism_impl(params: &Ident, n: usize, k: usize) -> TokenStream {
-    let p = private();
+    let (p, n, k) = (private(), lit(n), lit(k));
     quote! {
         impl #p::Mechanism<#n> for #params {
             type Coords = Coords;
@@ -712,7 +721,7 @@ fn fallback(mechanism: &Mechanism, errors: Vec<syn::Error>) -> TokenStream {
             .map(|(_, f)| &f[..])
             .unwrap_or_default(),
     );
-    let n = coords.len();
+    let n = lit(coords.len());
     let coords_items = coords_items(mechanism, &coords);
     let params = mechanism.params.as_ref().map(|(s, _)| {
         let mut s = s.clone();

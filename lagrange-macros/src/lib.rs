@@ -13,6 +13,9 @@ mod expand;
 mod lift;
 mod names;
 
+#[cfg(test)]
+mod expand_tests;
+
 use proc_macro::TokenStream;
 
 /// Turns an inline module declaring a mechanism into typed equations of motion. See the `lagrange`

@@ -1,0 +1,181 @@
+//! Expansion tests: each declaration is expanded, pretty-printed and compared with a snapshot in
+//! `tests/expand/`. Run with `LAGRANGE_BLESS=1` to rewrite the snapshots after a deliberate change
+//! (and read the diff). The assertions below pin down what DESIGN §3 promises: only the effects a
+//! declaration calls for are generated.
+
+use crate::expand::expand;
+use proc_macro2::TokenStream;
+use quote::quote;
+use std::path::PathBuf;
+
+fn pretty(tokens: TokenStream) -> String {
+    prettyplease::unparse(&syn::parse2(tokens).expect("the expansion parses as a file"))
+}
+
+/// Expands `module`, compares with the snapshot `name`, and returns the pretty-printed expansion.
+fn snapshot(name: &str, module: TokenStream) -> String {
+    let expanded = pretty(expand(TokenStream::new(), module));
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/expand")
+        .join(format!("{name}.expanded.rs"));
+    if std::env::var_os("LAGRANGE_BLESS").is_some() {
+        std::fs::write(&path, &expanded).unwrap();
+    } else {
+        let want = std::fs::read_to_string(&path).unwrap_or_else(|_| {
+            panic!("no snapshot {}; run with LAGRANGE_BLESS=1", path.display())
+        });
+        assert!(
+            want == expanded,
+            "expansion of `{name}` differs from {}:\n{expanded}",
+            path.display()
+        );
+    }
+    expanded
+}
+
+fn pendulum() -> TokenStream {
+    quote! {
+        pub mod pendulum {
+            pub struct Coords { pub theta: f64 }
+            pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+            #[particle(mass = m)]
+            fn bob() -> Vec2 { vec2(theta.sin(), -theta.cos()) * l }
+            #[gravity]
+            fn down() -> Vec2 { vec2(0.0, -g) }
+        }
+    }
+}
+
+#[test]
+fn pendulum_is_scleronomic_without_forces() {
+    let out = snapshot("pendulum", pendulum());
+    assert!(out.contains("const RHEONOMIC: bool = false;"));
+    assert!(out.contains("const HAS_FORCES: bool = false;"));
+    assert!(
+        !out.contains("fn applied_forces"),
+        "a mechanism without forces has no force pass"
+    );
+    assert!(out.contains("fn potential<"), "gravity is a potential");
+}
+
+#[test]
+fn drag_adds_a_force_pass() {
+    let out = snapshot(
+        "pendulum_with_drag",
+        quote! {
+            pub mod pendulum {
+                pub struct Coords { pub theta: f64 }
+                pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64, pub c: f64 }
+                #[particle(mass = m)]
+                fn bob() -> Vec2 { vec2(theta.sin(), -theta.cos()) * l }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+                #[force(on = bob)]
+                fn drag() -> Vec2 { bob_dot * (-c) }
+            }
+        },
+    );
+    assert!(out.contains("fn applied_forces"));
+    assert!(out.contains("const HAS_FORCES: bool = true;"));
+    assert!(
+        out.contains("const RHEONOMIC: bool = false;"),
+        "forces naming t do not make x(q, t) rheonomic"
+    );
+}
+
+#[test]
+fn no_potential_means_no_potential_fn() {
+    let out = snapshot(
+        "free_particle",
+        quote! {
+            pub mod free {
+                pub struct Coords { pub x: f64, pub y: f64 }
+                pub struct Free { pub m: f64 }
+                #[particle(mass = m)]
+                fn ball() -> Vec2 { vec2(x, y) }
+            }
+        },
+    );
+    assert!(!out.contains("fn potential<"));
+    assert!(out.contains("const HAS_POTENTIAL: bool = false;"));
+}
+
+#[test]
+fn time_in_a_position_is_rheonomic() {
+    let out = snapshot(
+        "driven_pendulum",
+        quote! {
+            pub mod driven {
+                pub struct Coords { pub theta: f64 }
+                pub struct Driven { pub m: f64, pub l: f64, pub a: f64, pub w: f64, pub g: f64 }
+                #[particle(mass = m)]
+                fn bob() -> Vec2 { vec2(a * (w * t).cos() + l * theta.sin(), -l * theta.cos()) }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+            }
+        },
+    );
+    assert!(out.contains("const RHEONOMIC: bool = true;"));
+}
+
+#[test]
+fn every_item_kind() {
+    let out = snapshot(
+        "every_item_kind",
+        quote! {
+            pub mod everything {
+                use core::f64::consts::PI;
+                const HALF: f64 = 0.5;
+                pub struct Coords { pub theta: f64, pub phi: f64 }
+                pub struct Everything { pub m: f64, pub i: f64, pub k: f64, pub c: f64, pub tau: f64, pub g: f64 }
+                /// A bar on a pivot.
+                #[rigid_body(mass = m, inertia = i)]
+                fn bar() -> Planar { planar(vec2(theta.sin(), -theta.cos()) * HALF, theta) }
+                #[point]
+                fn tip() -> Vec2 { bar.point(vec2(0.5, 0.0)) }
+                #[rigid_body(mass = m, inertia = [i, i, i * 1.5])]
+                fn top() -> Spatial { spatial(vec3(0.0, 0.0, 1.0), rot_z(phi) * rot_x(PI * 0.1)) }
+                #[potential]
+                fn spring() -> f64 { k * phi.powf(2.0) * 0.5 }
+                #[gravity]
+                fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+                #[force(on = tip)]
+                fn push() -> Vec2 { vec2(c, 0.0) }
+                #[torque(on = bar)]
+                fn motor() -> f64 { tau }
+                #[generalized_force(on = phi)]
+                fn damping() -> f64 { -c * phi_dot }
+            }
+        },
+    );
+    // The massless point comes after both bodies: 3 + 12 inertial rows, then 2.
+    assert!(out.contains("const INERTIAL: usize = 15;"));
+    assert!(out.contains("Model<2, 17>"));
+    // Literals are lifted, except a direct argument of a method.
+    assert!(out.contains("phi.powf(2.0)"));
+    assert!(out.contains("<__D>::from(0.5)"));
+}
+
+#[test]
+fn an_error_still_emits_the_items_and_stubs() {
+    let out = pretty(expand(
+        TokenStream::new(),
+        quote! {
+            pub mod broken {
+                pub struct Coords { pub theta: f64 }
+                pub struct Broken { pub m: f64 }
+                #[particle(mass = m)]
+                fn bob() -> Vec2 { vec2(thta, 0.0) }
+            }
+        },
+    ));
+    assert_eq!(
+        out.matches("compile_error!").count(),
+        2,
+        "unknown name and unused coordinate:\n{out}"
+    );
+    assert!(out.contains("pub struct Broken"));
+    assert!(out.contains("pub struct Coords<T = f64>"));
+    assert!(out.contains("pub type State"));
+    assert!(out.contains("Mechanism<1> for Broken"));
+}

@@ -1,0 +1,317 @@
+pub mod pendulum {
+    pub struct Pendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+        pub c: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq,
+        ::lagrange::__private::core::default::Default
+    )]
+    pub struct Coords<T = f64> {
+        pub theta: T,
+    }
+    impl ::lagrange::__private::Coordinates<1> for Coords<f64> {
+        const NAMES: [&'static str; 1] = ["theta"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 1] {
+            [self.theta]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 1]) -> Self {
+            Coords { theta: values[0] }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 1;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's centre of mass and orientation.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub bob: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, its centre-of-mass velocity.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub bob: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    impl Pendulum {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                1,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                1,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                1,
+            >>::to_array(&state.v);
+            let (_, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                1,
+                2,
+            >(self, state.t, &q, &v);
+            Self::__lagrange_velocities_from_cartesian(&x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta] = *__q;
+            let l = <__D>::from(self.l);
+            let bob: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(theta.sin(), -theta.cos()) * l
+            };
+            Bodies { bob }
+        }
+        #[inline(always)]
+        fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x: &[__D; 2],
+        ) -> Bodies<__D> {
+            Bodies {
+                bob: ::lagrange::__private::geometry::vec2(__x[0], __x[1]),
+            }
+        }
+        #[inline(always)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x_dot: &[__D; 2],
+        ) -> BodyVelocities<__D> {
+            BodyVelocities {
+                bob: ::lagrange::__private::geometry::vec2(__x_dot[0], __x_dot[1]),
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<1, 2> for Pendulum {
+        type Coords = Coords;
+        const INERTIAL: usize = 2;
+        const RHEONOMIC: bool = false;
+        const HAS_POTENTIAL: bool = true;
+        const HAS_FORCES: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            if !self.m.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m",
+                    value: self.m,
+                });
+            }
+            if !self.l.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "l",
+                    value: self.l,
+                });
+            }
+            if !self.g.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "g",
+                    value: self.g,
+                });
+            }
+            if !self.c.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "c",
+                    value: self.c,
+                });
+            }
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let c: f64 = self.c;
+            let __mass_bob: f64 = m;
+            if !(__mass_bob.is_finite() && __mass_bob > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "bob",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_bob
+                    ),
+                });
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 2] {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let c: f64 = self.c;
+            let __mass_bob: f64 = m;
+            [__mass_bob, __mass_bob]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+        ) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [__bodies.bob.x, __bodies.bob.y]
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn potential<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+            __x: &[__D; 2],
+        ) -> __D {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta] = *__q;
+            let g = <__D>::from(self.g);
+            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
+            let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
+            let mut __potential = <__D>::zero();
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(<__D>::from(0.0), -g)
+            };
+            __potential -= __gravity_down.dot(&bob) * __masses[0];
+            __potential
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn applied_forces<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+            __x: &[__D; 2],
+            __x_dot: &[__D; 2],
+            __cartesian_force: &mut [__D; 2],
+            __generalized_force: &mut [__D; 1],
+        ) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta] = *__q;
+            let c = <__D>::from(self.c);
+            let [theta_dot] = *__v;
+            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
+            let BodyVelocities { bob: bob_dot } = Self::__lagrange_velocities_from_cartesian(
+                __x_dot,
+            );
+            let __force_drag: ::lagrange::__private::geometry::Vec2<__D> = {
+                bob_dot * (-c)
+            };
+            __cartesian_force[0] += __force_drag.x;
+            __cartesian_force[1] += __force_drag.y;
+        }
+    }
+    impl ::lagrange::__private::Mechanism<1> for Pendulum {
+        type Coords = Coords;
+        #[inline]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<1, 2>>::validate(self)
+        }
+        #[inline]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 1> {
+            ::lagrange::__private::dynamics::equations_of_motion::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> [S; 1] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 1],
+            v: &[f64; 1],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+    }
+}
