@@ -26,7 +26,12 @@ pub enum Error {
     /// The mass matrix M(q, t) is singular (or not positive definite) at this configuration, so
     /// the accelerations are not determined — for example spherical coordinates at a pole.
     #[error("mass matrix is singular at t = {t}, {configuration} (pivot {pivot:e} of coordinate `{coordinate}`)")]
-    SingularMassMatrix { t: f64, configuration: String, coordinate: &'static str, pivot: f64 },
+    SingularMassMatrix {
+        t: f64,
+        configuration: String,
+        coordinate: &'static str,
+        pivot: f64,
+    },
 
     /// The equations of motion produced a NaN or an infinity (for example a position function
     /// that divides by zero at this configuration).
@@ -35,16 +40,61 @@ pub enum Error {
 
     /// A Newton iteration of an implicit method did not converge.
     #[error("Newton iteration did not converge in {iterations} iterations at t = {t} (residual {residual:e})")]
-    NewtonDiverged { t: f64, iterations: usize, residual: f64 },
+    NewtonDiverged {
+        t: f64,
+        iterations: usize,
+        residual: f64,
+    },
 
     /// The method refuses this mechanism (for example Störmer–Verlet on a mass matrix that depends
     /// on the configuration).
     #[error("{method} cannot integrate this mechanism: {reason}")]
-    UnsuitableMethod { method: &'static str, reason: String },
+    UnsuitableMethod {
+        method: &'static str,
+        reason: String,
+    },
 
     /// An explicit method has become unstable (the solution grew without bound at this step size).
     #[error("{method} became unstable at t = {t} with h = {h}: the step is too large for the fastest mode")]
-    Unstable { method: &'static str, t: f64, h: f64 },
+    Unstable {
+        method: &'static str,
+        t: f64,
+        h: f64,
+    },
+
+    /// The search for an equilibrium (all generalized forces balanced at rest) did not converge:
+    /// too many iterations, or the line search stalled at a point that is not a root.
+    #[error("no equilibrium found at t = {t} after {iterations} iterations: residual {residual:e} at {configuration}")]
+    EquilibriumNotFound {
+        t: f64,
+        iterations: usize,
+        residual: f64,
+        configuration: String,
+    },
+
+    /// A configuration passed as an equilibrium is not one: the generalized forces at rest do not
+    /// balance there.
+    #[error(
+        "not an equilibrium at t = {t}, {configuration}: unbalanced generalized force {residual:e}"
+    )]
+    NotAnEquilibrium {
+        t: f64,
+        configuration: String,
+        residual: f64,
+    },
+
+    /// Normal modes were asked for where they do not exist (an equilibrium that is not stable, or
+    /// circulatory forces).
+    #[error("no normal modes at t = {t}, {configuration}: {reason}")]
+    NoNormalModes {
+        t: f64,
+        configuration: String,
+        reason: String,
+    },
+
+    /// An eigenvalue iteration did not converge.
+    #[error("eigenvalue iteration did not converge at t = {t}, {configuration}")]
+    EigenvalueFailure { t: f64, configuration: String },
 }
 
 /// Shorthand for results of this crate.
@@ -52,12 +102,21 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 
 /// "theta1 = 0.1, theta2 = -3": a configuration named by its coordinates, for error messages.
 pub fn describe_configuration<const N: usize>(names: &[&'static str; N], q: &[f64; N]) -> String {
-    let parts: Vec<String> = names.iter().zip(q).map(|(n, v)| format!("{n} = {v}")).collect();
+    let parts: Vec<String> = names
+        .iter()
+        .zip(q)
+        .map(|(n, v)| format!("{n} = {v}"))
+        .collect();
     parts.join(", ")
 }
 
 /// "t = 0, q = (x = 1, y = NaN), v = (...)": a whole state, for error messages.
-pub fn describe_state<const N: usize>(names: &[&'static str; N], t: f64, q: &[f64; N], v: &[f64; N]) -> String {
+pub fn describe_state<const N: usize>(
+    names: &[&'static str; N],
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> String {
     format!(
         "t = {t}, q = ({}), v = ({})",
         describe_configuration(names, q),

@@ -6,10 +6,12 @@
 //! - [`linalg`]: small dense solves generic over dual numbers;
 //! - [`mechanism`]: the user-facing [`Mechanism`](mechanism::Mechanism) trait;
 //! - [`integrate`]: integrators;
+//! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`error`]: typed errors; nothing here panics on user input.
 //!
 //! Users depend on the `lagrange` facade crate, which re-exports all of this.
 
+pub mod analysis;
 pub mod dynamics;
 pub mod error;
 pub mod geometry;
@@ -18,8 +20,14 @@ pub mod linalg;
 pub mod mechanism;
 pub mod model;
 
+pub use analysis::{
+    continuation, equilibrium, linearize, normal_modes, stability, Equilibrium, EquilibriumOptions,
+    Linearization, NormalModes, Stability,
+};
 pub use error::{Error, Result};
-pub use geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3};
+pub use geometry::{
+    planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3,
+};
 pub use integrate::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, StormerVerlet, Variational,
 };

@@ -1,0 +1,946 @@
+//! Statics and small oscillations (`lagrange_core::analysis`) on hand-written models (what
+//! `#[mechanism]` generates), against closed forms.
+
+use lagrange_core::analysis::{
+    continuation, equilibrium, linearize, normal_modes, stability, unbalanced_forces,
+    EquilibriumOptions, Stability, StabilityMethod,
+};
+use lagrange_core::dynamics::{self, EquationsOfMotion};
+use lagrange_core::{Error, Mechanism, Model, Rk4, Scalar, State};
+use nalgebra::SMatrix;
+use std::f64::consts::PI;
+
+fn finite(parameters: &[(&'static str, f64)]) -> lagrange_core::Result<()> {
+    for &(name, value) in parameters {
+        if !value.is_finite() {
+            return Err(Error::NonFiniteParameter { name, value });
+        }
+    }
+    Ok(())
+}
+
+/// The `Mechanism` glue `#[mechanism]` generates: every method forwards to `dynamics`.
+macro_rules! forward_mechanism {
+    ($ty:ty, $n:literal) => {
+        impl Mechanism<$n> for $ty {
+            type Coords = [f64; $n];
+            fn validate(&self) -> lagrange_core::Result<()> {
+                Model::validate(self)
+            }
+            fn equations_of_motion_at<S: Scalar>(
+                &self,
+                t: S,
+                q: &[S; $n],
+                v: &[S; $n],
+            ) -> EquationsOfMotion<S, $n> {
+                dynamics::equations_of_motion(self, t, q, v)
+            }
+            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
+                dynamics::kinetic_energy(self, t, q, v)
+            }
+            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
+                dynamics::potential_energy(self, t, q)
+            }
+            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
+                dynamics::momenta(self, t, q, v)
+            }
+            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
+                dynamics::lagrangian_time_derivative(self, t, q, v)
+            }
+        }
+    };
+}
+
+fn close(got: f64, want: f64, rel: f64) -> bool {
+    (got - want).abs() <= rel * want.abs().max(1e-300)
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1. The lecture's wedge and block.
+// ---------------------------------------------------------------------------------------------
+
+/// Wedge (mass `big_m`) on a frictionless floor, block (mass `m`) on its frictionless incline of
+/// angle `alpha`, a horizontal force `force` on the wedge. Coordinates (X, d) as in the lecture's
+/// eqs. (27)–(28): r₁ = (X, 0), r₂ = (X + d cos α, h − d sin α).
+struct WedgeBlock {
+    big_m: f64,
+    m: f64,
+    alpha: f64,
+    h: f64,
+    g: f64,
+    force: f64,
+}
+
+impl Model<2, 4> for WedgeBlock {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = true;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[
+            ("M", self.big_m),
+            ("m", self.m),
+            ("alpha", self.alpha),
+            ("h", self.h),
+            ("g", self.g),
+            ("F", self.force),
+        ])
+    }
+    fn masses(&self) -> [f64; 4] {
+        [self.big_m, self.big_m, self.m, self.m]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 4] {
+        [
+            q[0],
+            D::zero(),
+            q[0] + q[1] * self.alpha.cos(),
+            D::from(self.h) - q[1] * self.alpha.sin(),
+        ]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 4]) -> D {
+        (x[1] * self.big_m + x[3] * self.m) * self.g
+    }
+    fn applied_forces<S: Scalar>(
+        &self,
+        _t: S,
+        _q: &[S; 2],
+        _v: &[S; 2],
+        _x: &[S; 4],
+        _x_dot: &[S; 4],
+        cartesian_force: &mut [S; 4],
+        _generalized_force: &mut [S; 2],
+    ) {
+        cartesian_force[0] = S::from(self.force);
+    }
+}
+forward_mechanism!(WedgeBlock, 2);
+
+/// The block alone, described in the frame of a wedge that moves with constant acceleration A:
+/// X(t) = ½At² is prescribed (rheonomic), d is the only coordinate. At rest relative to the wedge
+/// (ḋ = 0) −b is the d'Alembert inertial force −m A of the accelerating frame.
+struct BlockInAcceleratingWedge {
+    m: f64,
+    alpha: f64,
+    h: f64,
+    g: f64,
+    acceleration: f64,
+}
+
+impl Model<1, 2> for BlockInAcceleratingWedge {
+    type Coords = [f64; 1];
+    const RHEONOMIC: bool = true;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[
+            ("m", self.m),
+            ("alpha", self.alpha),
+            ("h", self.h),
+            ("g", self.g),
+            ("A", self.acceleration),
+        ])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m; 2]
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 1]) -> [D; 2] {
+        let wedge = t * t * (0.5 * self.acceleration);
+        [
+            wedge + q[0] * self.alpha.cos(),
+            D::from(self.h) - q[0] * self.alpha.sin(),
+        ]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+}
+forward_mechanism!(BlockInAcceleratingWedge, 1);
+
+#[test]
+fn wedge_force_that_holds_the_block_by_virtual_work() {
+    let (big_m, m, alpha, h, g) = (3.0, 1.0, 0.5f64, 1.0, 9.81);
+    let closed_form = (big_m + m) * g * alpha.tan();
+    let free = WedgeBlock {
+        big_m,
+        m,
+        alpha,
+        h,
+        g,
+        force: 0.0,
+    };
+    let q = [0.2, 0.4];
+
+    // The lecture's generalized forces, eqs. (31)–(32): 𝓕_X = 0, 𝓕_d = m g sin α (at rest, F = 0).
+    let f = unbalanced_forces(&free, 0.0, &q).unwrap();
+    assert!(f[0].abs() < 1e-15, "{f:?}");
+    assert!(close(f[1], m * g * alpha.sin(), 1e-15), "{f:?}");
+
+    // With F on the wedge, 𝓕 = (F, m g sin α) and q̈ = M⁻¹𝓕: F enters through ∂q̈/∂u = M⁻¹, the input
+    // matrix of a generalized force on X (F acts horizontally on the wedge, ∂r₁/∂X = (1, 0)).
+    // The block is at rest relative to the wedge when d̈ = (M⁻¹𝓕)_d + (M⁻¹)_{dX} F = 0.
+    let lin = linearize(&free, &State::at_rest(q)).unwrap();
+    let force = -lin.accelerations[1] / lin.dqdd_du[(1, 0)];
+    // Both sides are a 2×2 solve of O(1) numbers: agreement to a few ulps.
+    assert!(
+        close(force, closed_form, 1e-14),
+        "F = {force}, (M + m) g tan α = {closed_form}"
+    );
+
+    // The whole system then accelerates rigidly with Ẍ = g tan α and d̈ = 0.
+    let held = WedgeBlock { force, ..free };
+    let qdd = held.accelerations(&State::at_rest(q)).unwrap();
+    assert!(qdd[1].abs() < 1e-14 * g, "d̈ = {}", qdd[1]);
+    assert!(close(qdd[0], g * alpha.tan(), 1e-14), "Ẍ = {}", qdd[0]);
+
+    // The lecture's other reading: equilibrium of the block in the wedge's accelerating frame. There
+    // the virtual work per δd is m g sin α − m A cos α (gravity and the d'Alembert force −m A); it is
+    // affine in A, so two evaluations give the A that balances it, and F = (M + m) A.
+    let frame = |acceleration| BlockInAcceleratingWedge {
+        m,
+        alpha,
+        h,
+        g,
+        acceleration,
+    };
+    let r0 = unbalanced_forces(&frame(0.0), 0.0, &[0.4]).unwrap()[0];
+    let r1 = unbalanced_forces(&frame(1.0), 0.0, &[0.4]).unwrap()[0];
+    assert!(close(r0, m * g * alpha.sin(), 1e-15) && close(r1 - r0, -m * alpha.cos(), 1e-14));
+    let a_star = -r0 / (r1 - r0);
+    assert!(
+        close((big_m + m) * a_star, closed_form, 1e-14),
+        "F = {}",
+        (big_m + m) * a_star
+    );
+
+    // At that acceleration every d is an equilibrium (neutral, K = 0): the search stops at the guess,
+    // and stability cannot be decided at linear order.
+    let options = EquilibriumOptions::default();
+    let eq = equilibrium(&frame(a_star), 0.0, &[0.7], &options).unwrap();
+    assert_eq!((eq.q, eq.iterations), ([0.7], 0));
+    assert_eq!(
+        stability(&frame(a_star), 0.0, &[0.7]).unwrap().stability,
+        Stability::Marginal
+    );
+    // At any other acceleration there is none: a typed error, not a wrong answer.
+    let err = equilibrium(&frame(1.1 * a_star), 0.0, &[0.7], &options).unwrap_err();
+    assert!(matches!(err, Error::EquilibriumNotFound { .. }), "{err}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. A bead on a spinning hoop.
+// ---------------------------------------------------------------------------------------------
+
+/// A bead of mass m on a hoop of radius R spun about its vertical diameter at the constant rate ω;
+/// θ from the bottom: x = R sin θ cos ωt, y = R sin θ sin ωt, z = −R cos θ (rheonomic).
+#[derive(Clone, Copy)]
+struct Hoop {
+    m: f64,
+    r: f64,
+    g: f64,
+    omega: f64,
+}
+
+impl Model<1, 3> for Hoop {
+    type Coords = [f64; 1];
+    const RHEONOMIC: bool = true;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[
+            ("m", self.m),
+            ("R", self.r),
+            ("g", self.g),
+            ("omega", self.omega),
+        ])
+    }
+    fn masses(&self) -> [f64; 3] {
+        [self.m; 3]
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 1]) -> [D; 3] {
+        let spin = t * self.omega;
+        let rho = q[0].sin() * self.r;
+        [rho * spin.cos(), rho * spin.sin(), -q[0].cos() * self.r]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 3]) -> D {
+        x[2] * (self.m * self.g)
+    }
+}
+forward_mechanism!(Hoop, 1);
+
+const M_BEAD: f64 = 0.2;
+const R_HOOP: f64 = 0.5;
+const G: f64 = 9.81;
+
+fn hoop(omega: f64) -> Hoop {
+    Hoop {
+        m: M_BEAD,
+        r: R_HOOP,
+        g: G,
+        omega,
+    }
+}
+
+// Closed forms from the effective potential V_eff = −m g R cos θ − ½ m R² ω² sin²θ with the mass
+// m R²: V_eff' = m R sin θ (g − ω² R cos θ), V_eff'' = m g R cos θ − m R² ω² cos 2θ. At θ = 0,
+// ω₀² = V_eff''/(m R²) = g/R − ω²; at cos θ* = g/(ω² R), V_eff'' = m R² ω² sin²θ*, so
+// ω_osc² = ω² sin²θ* = ω² − g²/(ω² R²).
+
+#[test]
+fn hoop_bottom_is_stable_below_critical_spin() {
+    let omega = 3.0; // ω² = 9 < g/R = 19.62
+    let h = hoop(omega);
+    let eq = equilibrium(&h, 0.0, &[0.4], &EquilibriumOptions::default()).unwrap();
+    // Newton on r(θ) = −m R sin θ (g − ω²R cos θ): quadratic convergence to θ = 0; the step test
+    // stops once |δθ| ≤ 1e-12, so what is left is ~|δθ|² (or exact zero).
+    assert!(eq.q[0].abs() < 1e-12, "θ* = {}", eq.q[0]);
+    let s = stability(&h, 0.0, &eq.q).unwrap();
+    assert_eq!(
+        (s.stability, s.method),
+        (Stability::Stable, StabilityMethod::Potential)
+    );
+    let modes = normal_modes(&h, 0.0, &eq.q).unwrap();
+    let want = G / R_HOOP - omega * omega;
+    // K and M come from exact derivatives; ω₀² is a difference of two O(20) numbers giving ~10.6,
+    // so a few ulps of 20 relative to 10.6: 1e-14 is generous.
+    assert!(
+        close(modes.frequencies[0].powi(2), want, 1e-14),
+        "ω₀² = {} vs {want}",
+        modes.frequencies[0].powi(2)
+    );
+}
+
+#[test]
+fn hoop_off_bottom_equilibria_above_critical_spin() {
+    let omega = 6.0; // ω² = 36 > g/R = 19.62
+    let h = hoop(omega);
+    let cos_star = G / (omega * omega * R_HOOP);
+    let freq2 = omega * omega - G * G / (omega * omega * R_HOOP * R_HOOP);
+    for guess in [1.0, -1.0, 0.7, 1.5] {
+        let eq = equilibrium(&h, 0.0, &[guess], &EquilibriumOptions::default()).unwrap();
+        // cos θ* from a root found to ~1e-16 in θ: |δ cos| ≤ sin θ* |δθ|.
+        assert!(
+            (eq.q[0].cos() - cos_star).abs() < 1e-14,
+            "guess {guess}: θ* = {}",
+            eq.q[0]
+        );
+        assert_eq!(eq.q[0].signum(), guess.signum());
+        assert_eq!(
+            stability(&h, 0.0, &eq.q).unwrap().stability,
+            Stability::Stable
+        );
+        let modes = normal_modes(&h, 0.0, &eq.q).unwrap();
+        assert!(
+            close(modes.frequencies[0].powi(2), freq2, 1e-13),
+            "ω² = {} vs {freq2}",
+            modes.frequencies[0].powi(2)
+        );
+    }
+    // The bottom is still an equilibrium, now unstable: λ = g/R − ω² < 0.
+    let bottom = stability(&h, 0.0, &[0.0]).unwrap();
+    assert_eq!(bottom.stability, Stability::Unstable);
+    assert!(close(
+        bottom.stiffness_eigenvalues[0],
+        G / R_HOOP - omega * omega,
+        1e-14
+    ));
+    let err = normal_modes(&h, 0.0, &[0.0]).unwrap_err();
+    assert!(matches!(err, Error::NoNormalModes { .. }), "{err}");
+    // The stiffness K = ∂(b − 𝓕)/∂θ at θ* is V_eff'' = m R² ω² sin²θ*.
+    let eq = equilibrium(&h, 0.0, &[1.0], &EquilibriumOptions::default()).unwrap();
+    let k = M_BEAD * R_HOOP * R_HOOP * omega * omega * (1.0 - cos_star * cos_star);
+    assert!(
+        close(eq.stiffness[(0, 0)], k, 1e-13),
+        "K = {} vs {k}",
+        eq.stiffness[(0, 0)]
+    );
+    // The same equilibrium at a later time (the hoop has turned): rheonomic, but steady.
+    let later = equilibrium(&h, 0.37, &[1.0], &EquilibriumOptions::default()).unwrap();
+    assert!((later.q[0].cos() - cos_star).abs() < 1e-14);
+}
+
+#[test]
+fn hoop_at_critical_spin_is_marginal() {
+    let h = hoop((G / R_HOOP).sqrt());
+    let s = stability(&h, 0.0, &[0.0]).unwrap();
+    assert_eq!(
+        s.stability,
+        Stability::Marginal,
+        "λ = {:?}",
+        s.stiffness_eigenvalues
+    );
+    assert!(matches!(
+        normal_modes(&h, 0.0, &[0.0]),
+        Err(Error::NoNormalModes { .. })
+    ));
+}
+
+#[test]
+fn hoop_bifurcation_by_continuation() {
+    let critical = (G / R_HOOP).sqrt();
+    // The off-bottom branch, from fast spin down through the pitchfork at ω_c = √(g/R).
+    let omegas: Vec<f64> = (0..=60)
+        .map(|i| critical * (2.5 - 0.03 * i as f64))
+        .collect();
+    let branch = continuation(hoop, &omegas, 0.0, &[1.3], &EquilibriumOptions::default());
+    assert!(branch.stopped.is_none(), "{:?}", branch.stopped);
+    assert_eq!(branch.points.len(), omegas.len());
+    println!("  ω/ω_c   θ* (rad)   stability   closed form θ*");
+    for p in &branch.points {
+        let omega = p.parameter;
+        let theta = p.equilibrium.q[0];
+        let want = if omega > critical {
+            (G / (omega * omega * R_HOOP)).acos()
+        } else {
+            0.0
+        };
+        println!(
+            "  {:5.2}   {theta:8.5}   {:?}   {want:8.5}",
+            omega / critical,
+            p.stability
+        );
+        if omega > 1.05 * critical {
+            assert!(
+                (theta - want).abs() < 1e-12,
+                "ω = {omega}: θ* = {theta}, want {want}"
+            );
+            assert_eq!(p.stability, Stability::Stable);
+        } else if omega < 0.95 * critical {
+            // Below ω_c the branch has merged into the bottom, which is stable again.
+            assert!(theta.abs() < 1e-10, "ω = {omega}: θ* = {theta}");
+            assert_eq!(p.stability, Stability::Stable);
+        } else {
+            // Within 5 % of the pitchfork θ* ∝ √(ω − ω_c) is steep, and at ω_c itself the root is
+            // triple (r ∝ θ³): Newton converges only linearly there and the residual reaches its
+            // tolerance (1e-14 of the terms, relative) at θ ~ (1e-14)^(1/3) ≈ 2e-5. Hence 1e-4.
+            assert!(
+                (theta - want).abs() < 1e-4,
+                "ω = {omega}: θ* = {theta}, want {want}"
+            );
+        }
+    }
+    // The bottom branch over the same range: stable below ω_c, unstable above.
+    let bottom = continuation(hoop, &omegas, 0.0, &[0.0], &EquilibriumOptions::default());
+    assert!(bottom.stopped.is_none());
+    for p in &bottom.points {
+        assert_eq!(p.equilibrium.q, [0.0]);
+        let want = if p.parameter > 1.01 * critical {
+            Stability::Unstable
+        } else if p.parameter < 0.99 * critical {
+            Stability::Stable
+        } else {
+            p.stability
+        };
+        assert_eq!(p.stability, want, "ω = {}", p.parameter);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. and 5. The double pendulum.
+// ---------------------------------------------------------------------------------------------
+
+struct DoublePendulum {
+    m: f64,
+    l: f64,
+    g: f64,
+}
+
+impl Model<2, 4> for DoublePendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("l", self.l), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 4] {
+        [self.m; 4]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 4] {
+        let (x1, y1) = (q[0].sin() * self.l, -q[0].cos() * self.l);
+        [x1, y1, x1 + q[1].sin() * self.l, y1 - q[1].cos() * self.l]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 4]) -> D {
+        (x[1] + x[3]) * (self.m * self.g)
+    }
+}
+forward_mechanism!(DoublePendulum, 2);
+
+const DP: DoublePendulum = DoublePendulum {
+    m: 0.7,
+    l: 1.3,
+    g: 9.81,
+};
+
+#[test]
+fn double_pendulum_normal_modes() {
+    let eq = equilibrium(&DP, 0.0, &[0.3, -0.2], &EquilibriumOptions::default()).unwrap();
+    assert!(eq.q.iter().all(|x| x.abs() < 1e-12), "{:?}", eq.q);
+    let modes = normal_modes(&DP, 0.0, &eq.q).unwrap();
+    let unit = (DP.g / DP.l).sqrt();
+    // Goldstein, Poole & Safko, *Classical Mechanics*, 3rd ed., §6.4 (two coupled pendula) gives
+    // ω² = (2 ∓ √2) g/l for equal masses and lengths, with shapes θ₂/θ₁ = ±√2.
+    let want = [
+        (2.0 - 2f64.sqrt()).sqrt() * unit,
+        (2.0 + 2f64.sqrt()).sqrt() * unit,
+    ];
+    for j in 0..2 {
+        // A 2×2 symmetric eigenproblem from exact derivatives: ~1e-15 relative.
+        assert!(
+            close(modes.frequencies[j], want[j], 1e-14),
+            "ω{j} = {} vs {}",
+            modes.frequencies[j],
+            want[j]
+        );
+    }
+    let ratio = |j: usize| modes.shapes[(1, j)] / modes.shapes[(0, j)];
+    assert!(close(ratio(0), 2f64.sqrt(), 1e-13) && close(ratio(1), -(2f64.sqrt()), 1e-13));
+    // M-orthonormal shapes.
+    let m = DP.mass_matrix(&State::at_rest([0.0, 0.0])).unwrap();
+    let gram = modes.shapes.transpose() * m * modes.shapes;
+    assert!(
+        (gram - SMatrix::<f64, 2, 2>::identity()).norm() < 1e-14,
+        "{gram}"
+    );
+    // The other equilibria are unstable (one pendulum or both upside down).
+    for q in [[PI, 0.0], [0.0, PI], [PI, PI]] {
+        assert_eq!(
+            stability(&DP, 0.0, &q).unwrap().stability,
+            Stability::Unstable,
+            "{q:?}"
+        );
+    }
+}
+
+/// RK4 on the linear system d/dt (δq, δv) = (δv, A_qq δq + A_qv δv).
+fn rk4_linear(
+    a_qq: &SMatrix<f64, 2, 2>,
+    a_qv: &SMatrix<f64, 2, 2>,
+    x: [nalgebra::Vector2<f64>; 2],
+    h: f64,
+) -> [nalgebra::Vector2<f64>; 2] {
+    let f = |[q, v]: [nalgebra::Vector2<f64>; 2]| [v, a_qq * q + a_qv * v];
+    let add = |[q, v]: [nalgebra::Vector2<f64>; 2],
+               s: f64,
+               [dq, dv]: [nalgebra::Vector2<f64>; 2]| [q + dq * s, v + dv * s];
+    let k1 = f(x);
+    let k2 = f(add(x, 0.5 * h, k1));
+    let k3 = f(add(x, 0.5 * h, k2));
+    let k4 = f(add(x, h, k3));
+    let mut out = x;
+    for i in 0..2 {
+        out[i] += (k1[i] + (k2[i] + k3[i]) * 2.0 + k4[i]) * (h / 6.0);
+    }
+    out
+}
+
+#[test]
+fn linearized_double_pendulum_agrees_to_second_order_in_amplitude() {
+    let lin = linearize(&DP, &State::at_rest([0.0, 0.0])).unwrap();
+    assert_eq!(lin.accelerations, [0.0, 0.0]);
+    assert!(lin.dqdd_dv.norm() == 0.0); // no velocity terms at rest for a scleronomic conservative system
+    let a = lin.a_matrix();
+    assert_eq!(a.shape(), (4, 4));
+    // One test of the assembled A: its lower-left block is −M⁻¹K.
+    assert_eq!(a[(2, 0)], lin.dqdd_dq[(0, 0)]);
+    assert_eq!(a[(0, 2)], 1.0);
+
+    // Start from rest at ε·(1, −0.7) (a mix of both modes), run both for 3 s (several periods of the
+    // slow mode, T ≈ 3 s) with h = 1e-3 and record the largest relative deviation. RK4's own error,
+    // (hω)⁴·ωT ~ 1e-12 relative, is the same for both runs to O(ε²) and far below the ε² effect.
+    let h = 1e-3;
+    let steps = 3000;
+    let deviation = |eps: f64| -> f64 {
+        let (mut q, mut v) = ([eps, -0.7 * eps], [0.0, 0.0]);
+        let mut x = [
+            nalgebra::Vector2::new(eps, -0.7 * eps),
+            nalgebra::Vector2::zeros(),
+        ];
+        let mut worst = 0.0f64;
+        for i in 0..steps {
+            (q, v) = Rk4::step_arrays(&DP, i as f64 * h, &q, &v, h).unwrap();
+            x = rk4_linear(&lin.dqdd_dq, &lin.dqdd_dv, x, h);
+            worst = worst.max((q[0] - x[0][0]).abs().max((q[1] - x[0][1]).abs()));
+        }
+        worst / eps
+    };
+    let amplitudes = [0.08, 0.04, 0.02, 0.01];
+    let relative: Vec<f64> = amplitudes.iter().map(|&e| deviation(e)).collect();
+    println!("amplitude  relative deviation  ratio to previous");
+    for (i, (e, d)) in amplitudes.iter().zip(&relative).enumerate() {
+        let ratio = if i > 0 { relative[i - 1] / d } else { f64::NAN };
+        println!("{e:9.3}  {d:18.3e}  {ratio:8.4}");
+    }
+    // The nonlinear terms are cubic (sin θ = θ − θ³/6, cos(θ₁ − θ₂) = 1 − …), so the relative
+    // deviation is C ε² + O(ε⁴): halving ε divides it by 4 (1 ± 0.05 covers the O(ε²) correction,
+    // which is a few per cent at ε = 0.08 and shrinks fourfold each halving).
+    for i in 1..relative.len() {
+        let ratio = relative[i - 1] / relative[i];
+        assert!(
+            (ratio - 4.0).abs() < 0.2,
+            "ratio {ratio} at ε = {}",
+            amplitudes[i]
+        );
+    }
+    assert!(
+        relative[0] < 0.1,
+        "linearization is poor even at ε = 0.08: {}",
+        relative[0]
+    );
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. A chain of masses and springs between two walls.
+// ---------------------------------------------------------------------------------------------
+
+const CHAIN: usize = 10;
+
+/// N = 10 masses m on a line, joined to each other and to walls at 0 and (N + 1)a by N + 1 springs
+/// of stiffness κ and natural length a; qᵢ is the displacement of mass i from its rest position.
+struct Chain {
+    m: f64,
+    kappa: f64,
+    a: f64,
+}
+
+impl Model<CHAIN, CHAIN> for Chain {
+    type Coords = [f64; CHAIN];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("kappa", self.kappa), ("a", self.a)])
+    }
+    fn masses(&self) -> [f64; CHAIN] {
+        [self.m; CHAIN]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; CHAIN]) -> [D; CHAIN] {
+        std::array::from_fn(|i| q[i] + self.a * (i + 1) as f64)
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; CHAIN], x: &[D; CHAIN]) -> D {
+        let mut v = D::zero();
+        let mut left = D::zero();
+        for &xi in x
+            .iter()
+            .chain(std::iter::once(&D::from(self.a * (CHAIN + 1) as f64)))
+        {
+            let stretch = xi - left - self.a;
+            v += stretch * stretch * (0.5 * self.kappa);
+            left = xi;
+        }
+        v
+    }
+}
+forward_mechanism!(Chain, 10);
+
+#[test]
+fn spring_chain_normal_modes() {
+    let chain = Chain {
+        m: 0.3,
+        kappa: 40.0,
+        a: 0.25,
+    };
+    let guess: [f64; CHAIN] = std::array::from_fn(|i| 0.05 * (i as f64).sin());
+    let eq = equilibrium(&chain, 0.0, &guess, &EquilibriumOptions::default()).unwrap();
+    // Linear forces: Newton lands on the root in one step (up to rounding of the step).
+    assert!(eq.iterations <= 2, "{} iterations", eq.iterations);
+    assert!(eq.q.iter().all(|x| x.abs() < 1e-14), "{:?}", eq.q);
+    let modes = normal_modes(&chain, 0.0, &eq.q).unwrap();
+    // Closed form for the fixed–fixed chain (e.g. Goldstein, Poole & Safko, §6.4; Fetter & Walecka,
+    // *Theoretical Mechanics of Particles and Continua*, §24): ω_j = 2√(κ/m) sin(jπ/(2(N+1))).
+    for j in 1..=CHAIN {
+        let want = 2.0
+            * (chain.kappa / chain.m).sqrt()
+            * (j as f64 * PI / (2.0 * (CHAIN + 1) as f64)).sin();
+        // The symmetric QR eigen-solver is backward stable: |δλ| ≲ N ε ‖K̃‖ with ‖K̃‖ ≤ 4κ/m, i.e.
+        // ≲ 2e-14 relative to the smallest λ₁ ≈ 0.08 κ/m; 1e-12 on ω leaves a margin.
+        assert!(
+            close(modes.frequencies[j - 1], want, 1e-12),
+            "ω_{j} = {} vs {want}",
+            modes.frequencies[j - 1]
+        );
+        // Shapes are sines: q_i ∝ sin(i j π/(N+1)).
+        let shape = modes.shapes.column(j - 1);
+        let i_max = (0..CHAIN)
+            .max_by(|&a, &b| shape[a].abs().total_cmp(&shape[b].abs()))
+            .unwrap();
+        let scale = shape[i_max] / ((i_max + 1) as f64 * j as f64 * PI / (CHAIN + 1) as f64).sin();
+        for i in 0..CHAIN {
+            let s = scale * ((i + 1) as f64 * j as f64 * PI / (CHAIN + 1) as f64).sin();
+            assert!(
+                (shape[i] - s).abs() < 1e-10 * scale.abs(),
+                "mode {j}, mass {i}"
+            );
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Non-conservative forces and bad input.
+// ---------------------------------------------------------------------------------------------
+
+/// A unit mass in the plane on an isotropic spring (stiffness k), with a circulatory force
+/// c (q₁, −q₀) (velocity-independent but not a gradient) and linear damping −d q̇. Its linearized
+/// equations λ² + dλ + k ± i c = 0 have a root on the imaginary axis λ = iy exactly when y² = k and
+/// d y = ∓c, i.e. it is stable iff c² < d² k (Ziegler's destabilizing effect of circulatory forces;
+/// H. Ziegler, *Principles of Structural Stability*, 1968).
+struct Circulatory {
+    k: f64,
+    c: f64,
+    d: f64,
+}
+
+impl Model<2, 2> for Circulatory {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = true;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("k", self.k), ("c", self.c), ("d", self.d)])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0; 2]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, q: &[D; 2], _x: &[D; 2]) -> D {
+        (q[0] * q[0] + q[1] * q[1]) * (0.5 * self.k)
+    }
+    fn applied_forces<S: Scalar>(
+        &self,
+        _t: S,
+        q: &[S; 2],
+        v: &[S; 2],
+        _x: &[S; 2],
+        _x_dot: &[S; 2],
+        _cartesian_force: &mut [S; 2],
+        generalized_force: &mut [S; 2],
+    ) {
+        generalized_force[0] = q[1] * self.c - v[0] * self.d;
+        generalized_force[1] = -q[0] * self.c - v[1] * self.d;
+    }
+}
+forward_mechanism!(Circulatory, 2);
+
+#[test]
+fn circulatory_forces_are_classified_by_the_linearized_system() {
+    let (k, c) = (1.0, 0.5);
+    for (d, want) in [
+        (0.0, Stability::Unstable),
+        (0.3, Stability::Unstable),
+        (1.0, Stability::Stable),
+    ] {
+        let s = stability(&Circulatory { k, c, d }, 0.0, &[0.0, 0.0]).unwrap();
+        assert_eq!(
+            (s.stability, s.method),
+            (want, StabilityMethod::Linearized),
+            "d = {d}: {:?}",
+            s.system_eigenvalues
+        );
+        // The eigenvalues: roots of λ² + dλ + k ± i c, largest real part first.
+        let roots: Vec<f64> = [1.0, -1.0]
+            .iter()
+            .flat_map(|&sign| {
+                let disc = nalgebra::Complex::new(d * d - 4.0 * k, -4.0 * sign * c).sqrt();
+                [(-d + disc.re) / 2.0, (-d - disc.re) / 2.0]
+            })
+            .collect();
+        let max_re = roots.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        assert!(
+            (s.system_eigenvalues[0].re - max_re).abs() < 1e-12,
+            "{:?} vs {max_re}",
+            s.system_eigenvalues
+        );
+    }
+    // Damping alone keeps a potential minimum stable (decided from K relative to M).
+    let damped = stability(&Circulatory { k, c: 0.0, d: 0.3 }, 0.0, &[0.0, 0.0]).unwrap();
+    assert_eq!(
+        (damped.stability, damped.method),
+        (Stability::Stable, StabilityMethod::Potential)
+    );
+    // Circulatory forces: no normal modes even where stable.
+    let err = normal_modes(&Circulatory { k, c, d: 1.0 }, 0.0, &[0.0, 0.0]).unwrap_err();
+    assert!(matches!(err, Error::NoNormalModes { .. }), "{err}");
+}
+
+/// A pendulum with a constant torque τ at the pivot: equilibria sin θ = τ/(m g l), none for τ > m g l.
+struct TorquedPendulum {
+    m: f64,
+    l: f64,
+    g: f64,
+    torque: f64,
+}
+
+impl Model<1, 2> for TorquedPendulum {
+    type Coords = [f64; 1];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = true;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[
+            ("m", self.m),
+            ("l", self.l),
+            ("g", self.g),
+            ("torque", self.torque),
+        ])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m; 2]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+        [q[0].sin() * self.l, -q[0].cos() * self.l]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+    fn applied_forces<S: Scalar>(
+        &self,
+        _t: S,
+        _q: &[S; 1],
+        _v: &[S; 1],
+        _x: &[S; 2],
+        _x_dot: &[S; 2],
+        _cartesian_force: &mut [S; 2],
+        generalized_force: &mut [S; 1],
+    ) {
+        generalized_force[0] = S::from(self.torque);
+    }
+}
+forward_mechanism!(TorquedPendulum, 1);
+
+#[test]
+fn torqued_pendulum_equilibrium_and_no_equilibrium() {
+    let (m, l, g) = (1.0, 1.0, 9.81);
+    let p = TorquedPendulum {
+        m,
+        l,
+        g,
+        torque: 0.5 * m * g * l,
+    };
+    let options = EquilibriumOptions::default();
+    // Which of the two equilibria is found depends on the side of θ = π/2 (where the Jacobian
+    // vanishes) the guess is on.
+    let eq = equilibrium(&p, 0.0, &[0.1], &options).unwrap();
+    assert!((eq.q[0] - (0.5f64).asin()).abs() < 1e-14, "{:?}", eq.q);
+    let upper = equilibrium(&p, 0.0, &[2.0], &options).unwrap();
+    assert!(
+        (upper.q[0] - (PI - 0.5f64.asin())).abs() < 1e-14,
+        "{:?}",
+        upper.q
+    );
+    assert_eq!(
+        stability(&p, 0.0, &eq.q).unwrap().stability,
+        Stability::Stable
+    );
+    assert_eq!(
+        stability(&p, 0.0, &upper.q).unwrap().stability,
+        Stability::Unstable
+    );
+
+    // τ > m g l: the residual τ − m g l sin θ never vanishes; the merit function has its minimum
+    // at θ = π/2 where the Jacobian is singular. A typed error naming the configuration.
+    let too_strong = TorquedPendulum {
+        torque: 1.5 * m * g * l,
+        ..p
+    };
+    let guess = [0.3];
+    let err = equilibrium(&too_strong, 0.0, &guess, &options).unwrap_err();
+    match &err {
+        Error::EquilibriumNotFound {
+            residual,
+            configuration,
+            ..
+        } => {
+            // At best the residual reaches τ − m g l = 0.5 m g l.
+            assert!(*residual >= 0.5 * m * g * l * (1.0 - 1e-9), "{err}");
+            assert!(configuration.contains("q0 = "), "{err}");
+        }
+        other => panic!("unexpected {other}"),
+    }
+    assert_eq!(guess, [0.3]); // the guess is untouched
+                              // An iteration budget that is too small is reported the same way.
+    let tight = EquilibriumOptions {
+        max_iterations: 1,
+        ..options
+    };
+    assert!(matches!(
+        equilibrium(&p, 0.0, &[2.9], &tight),
+        Err(Error::EquilibriumNotFound { iterations: 1, .. })
+    ));
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let options = EquilibriumOptions::default();
+    assert!(matches!(
+        equilibrium(&DP, 0.0, &[f64::NAN, 0.0], &options),
+        Err(Error::NonFiniteState { .. })
+    ));
+    assert!(matches!(
+        equilibrium(&DP, f64::INFINITY, &[0.0, 0.0], &options),
+        Err(Error::NonFiniteState { .. })
+    ));
+    let bad = DoublePendulum { g: f64::NAN, ..DP };
+    assert!(matches!(
+        equilibrium(&bad, 0.0, &[0.0, 0.0], &options),
+        Err(Error::NonFiniteParameter { name: "g", .. })
+    ));
+    assert!(matches!(
+        stability(&bad, 0.0, &[0.0, 0.0]),
+        Err(Error::NonFiniteParameter { .. })
+    ));
+    assert!(matches!(
+        normal_modes(&DP, 0.0, &[0.5, 0.0]),
+        Err(Error::NotAnEquilibrium { .. })
+    ));
+    assert!(matches!(
+        linearize(&DP, &State::new(0.0, [0.0, f64::NAN], [0.0, 0.0])),
+        Err(Error::NonFiniteState { .. })
+    ));
+    // A degenerate mechanism (zero lengths): M is singular, reported by name.
+    let degenerate = DoublePendulum { l: 0.0, ..DP };
+    let err = stability(&degenerate, 0.0, &[0.0, 0.0]).unwrap_err();
+    assert!(matches!(err, Error::SingularMassMatrix { .. }), "{err}");
+    assert!(matches!(
+        linearize(&degenerate, &State::at_rest([0.0, 0.0])),
+        Err(Error::SingularMassMatrix { .. })
+    ));
+}
+
+#[test]
+fn linearization_about_a_moving_state_matches_finite_differences() {
+    // Not an equilibrium: θ = (0.4, −0.9), θ̇ = (1.1, 0.3). Central differences of the accelerations
+    // with step 1e-5 are accurate to ~(1e-5)² · |q̈'''| ~ 1e-9 (truncation) + ε/1e-5 ~ 1e-11 (rounding).
+    let state = State::new(0.0, [0.4, -0.9], [1.1, 0.3]);
+    let lin = linearize(&DP, &state).unwrap();
+    let acc = |q: [f64; 2], v: [f64; 2]| DP.accelerations_at(0.0, &q, &v).unwrap();
+    let e = 1e-5;
+    for j in 0..2 {
+        let (mut qp, mut qm, mut vp, mut vm) = (state.q, state.q, state.v, state.v);
+        qp[j] += e;
+        qm[j] -= e;
+        vp[j] += e;
+        vm[j] -= e;
+        for i in 0..2 {
+            let dq = (acc(qp, state.v)[i] - acc(qm, state.v)[i]) / (2.0 * e);
+            let dv = (acc(state.q, vp)[i] - acc(state.q, vm)[i]) / (2.0 * e);
+            assert!(
+                (lin.dqdd_dq[(i, j)] - dq).abs() < 1e-7,
+                "∂q̈{i}/∂q{j}: {} vs {dq}",
+                lin.dqdd_dq[(i, j)]
+            );
+            assert!(
+                (lin.dqdd_dv[(i, j)] - dv).abs() < 1e-7,
+                "∂q̈{i}/∂v{j}: {} vs {dv}",
+                lin.dqdd_dv[(i, j)]
+            );
+        }
+    }
+    // B = [0; M⁻¹].
+    let m = DP.mass_matrix(&state).unwrap();
+    assert!((m * lin.dqdd_du - SMatrix::<f64, 2, 2>::identity()).norm() < 1e-14);
+    let b = lin.b_matrix();
+    assert_eq!(b.shape(), (4, 2));
+    assert_eq!(b[(0, 0)], 0.0);
+    assert_eq!(b[(3, 1)], lin.dqdd_du[(1, 1)]);
+}
