@@ -682,11 +682,13 @@ fn spring_chain_normal_modes() {
 /// c (q₁, −q₀) (velocity-independent but not a gradient) and linear damping −d q̇. Its linearized
 /// equations λ² + dλ + k ± i c = 0 have a root on the imaginary axis λ = iy exactly when y² = k and
 /// d y = ∓c, i.e. it is stable iff c² < d² k (Ziegler's destabilizing effect of circulatory forces;
-/// H. Ziegler, *Principles of Structural Stability*, 1968).
+/// H. Ziegler, *Principles of Structural Stability*, 1968). Optionally also a gyroscopic force
+/// γ (q̇₁, −q̇₀) (a charge in a magnetic field, or Coriolis forces in a rotating frame).
 struct Circulatory {
     k: f64,
     c: f64,
     d: f64,
+    gyro: f64,
 }
 
 impl Model<2, 2> for Circulatory {
@@ -695,7 +697,12 @@ impl Model<2, 2> for Circulatory {
     const HAS_POTENTIAL: bool = true;
     const HAS_FORCES: bool = true;
     fn validate(&self) -> lagrange_core::Result<()> {
-        finite(&[("k", self.k), ("c", self.c), ("d", self.d)])
+        finite(&[
+            ("k", self.k),
+            ("c", self.c),
+            ("d", self.d),
+            ("gyro", self.gyro),
+        ])
     }
     fn masses(&self) -> [f64; 2] {
         [1.0; 2]
@@ -716,8 +723,8 @@ impl Model<2, 2> for Circulatory {
         _cartesian_force: &mut [S; 2],
         generalized_force: &mut [S; 2],
     ) {
-        generalized_force[0] = q[1] * self.c - v[0] * self.d;
-        generalized_force[1] = -q[0] * self.c - v[1] * self.d;
+        generalized_force[0] = q[1] * self.c - v[0] * self.d + v[1] * self.gyro;
+        generalized_force[1] = -q[0] * self.c - v[1] * self.d - v[0] * self.gyro;
     }
 }
 forward_mechanism!(Circulatory, 2);
@@ -730,7 +737,7 @@ fn circulatory_forces_are_classified_by_the_linearized_system() {
         (0.3, Stability::Unstable),
         (1.0, Stability::Stable),
     ] {
-        let s = stability(&Circulatory { k, c, d }, 0.0, &[0.0, 0.0]).unwrap();
+        let s = stability(&Circulatory { k, c, d, gyro: 0.0 }, 0.0, &[0.0, 0.0]).unwrap();
         assert_eq!(
             (s.stability, s.method),
             (want, StabilityMethod::Linearized),
@@ -753,14 +760,64 @@ fn circulatory_forces_are_classified_by_the_linearized_system() {
         );
     }
     // Damping alone keeps a potential minimum stable (decided from K relative to M).
-    let damped = stability(&Circulatory { k, c: 0.0, d: 0.3 }, 0.0, &[0.0, 0.0]).unwrap();
+    let damped = stability(
+        &Circulatory {
+            k,
+            c: 0.0,
+            d: 0.3,
+            gyro: 0.0,
+        },
+        0.0,
+        &[0.0, 0.0],
+    )
+    .unwrap();
     assert_eq!(
         (damped.stability, damped.method),
         (Stability::Stable, StabilityMethod::Potential)
     );
     // Circulatory forces: no normal modes even where stable.
-    let err = normal_modes(&Circulatory { k, c, d: 1.0 }, 0.0, &[0.0, 0.0]).unwrap_err();
+    let err = normal_modes(
+        &Circulatory {
+            k,
+            c,
+            d: 1.0,
+            gyro: 0.0,
+        },
+        0.0,
+        &[0.0, 0.0],
+    )
+    .unwrap_err();
     assert!(matches!(err, Error::NoNormalModes { .. }), "{err}");
+}
+
+#[test]
+fn gyroscopic_stabilization_and_its_loss_to_damping() {
+    let at = |k, d, gyro| stability(&Circulatory { k, c: 0.0, d, gyro }, 0.0, &[0.0, 0.0]).unwrap();
+    // A potential minimum stays stable with gyroscopic forces (Kelvin–Tait–Chetaev; decided from K).
+    let s = at(1.0, 0.0, 1.0);
+    assert_eq!(
+        (s.stability, s.method),
+        (Stability::Stable, StabilityMethod::Potential)
+    );
+    // A maximum (k = −1): the linearized equations give (λ² + k)² + γ²λ² = 0, i.e.
+    // λ = (±iγ ± √(−γ² − 4k))/2, all imaginary when γ² ≥ −4k = 4. Strong spin: linearly stable,
+    // which the linear analysis can only call marginal; weak spin: unstable.
+    let strong = at(-1.0, 0.0, 3.0);
+    assert_eq!(
+        (strong.stability, strong.method),
+        (Stability::Marginal, StabilityMethod::Linearized)
+    );
+    for mu in &strong.system_eigenvalues {
+        // |λ| = (3 ± √5)/2.
+        let want = [(3.0 + 5f64.sqrt()) / 2.0, (3.0 - 5f64.sqrt()) / 2.0];
+        assert!(
+            mu.re.abs() < 1e-12 && want.iter().any(|w| (mu.im.abs() - w).abs() < 1e-12),
+            "{mu}"
+        );
+    }
+    assert_eq!(at(-1.0, 0.0, 1.0).stability, Stability::Unstable);
+    // Any damping destroys gyroscopic stabilization of a maximum (Kelvin–Tait–Chetaev).
+    assert_eq!(at(-1.0, 0.1, 3.0).stability, Stability::Unstable);
 }
 
 /// A pendulum with a constant torque τ at the pivot: equilibria sin θ = τ/(m g l), none for τ > m g l.

@@ -6,6 +6,19 @@ use crate::error::Error;
 use crate::mechanism::Mechanism;
 
 /// One point of an equilibrium branch.
+///
+/// ```
+/// use lagrange_core::analysis::{continuation, EquilibriumOptions, Stability};
+/// # use lagrange_core::analysis::doc_models::SpinningHoop;
+/// // The bottom of the hoop (g/R = 19.62) loses stability as the spin passes √(g/R) ≈ 4.43.
+/// let branch = continuation(
+///     |omega| SpinningHoop { m: 0.1, r: 0.5, g: 9.81, omega },
+///     &[3.0, 6.0], 0.0, &[0.0], &EquilibriumOptions::default(),
+/// );
+/// let verdicts: Vec<Stability> = branch.points.iter().map(|p| p.stability).collect();
+/// assert_eq!(verdicts, [Stability::Stable, Stability::Unstable]);
+/// assert_eq!(branch.points[1].equilibrium.q, [0.0]);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BranchPoint<C, const N: usize> {
     /// The parameter value.
@@ -17,6 +30,26 @@ pub struct BranchPoint<C, const N: usize> {
 }
 
 /// An equilibrium branch traced by [`continuation`].
+///
+/// ```
+/// use lagrange_core::analysis::{continuation, EquilibriumOptions};
+/// use lagrange_core::Error;
+/// # use lagrange_core::analysis::doc_models::SpinningHoop;
+/// // Following the off-bottom equilibrium to slower spins: it merges into the bottom at √(g/R),
+/// // and the branch goes on there.
+/// let branch = continuation(
+///     |omega| SpinningHoop { m: 0.1, r: 0.5, g: 9.81, omega },
+///     &[6.0, 5.0, 4.0], 0.0, &[1.0], &EquilibriumOptions::default(),
+/// );
+/// assert!(branch.stopped.is_none());
+/// assert!(branch.points[2].equilibrium.q[0].abs() < 1e-12);
+/// // A branch that cannot start reports where and why.
+/// let none = continuation(
+///     |omega| SpinningHoop { m: 0.1, r: 0.5, g: f64::NAN, omega },
+///     &[6.0], 0.0, &[1.0], &EquilibriumOptions::default(),
+/// );
+/// assert!(matches!(none.stopped, Some((6.0, Error::NonFiniteParameter { .. }))));
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Branch<C, const N: usize> {
     /// The points found, in the order of the parameter values given.

@@ -7,6 +7,15 @@ use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
 /// How [`equilibrium`] iterates and when it stops.
+///
+/// ```
+/// use lagrange_core::analysis::{equilibrium, EquilibriumOptions};
+/// use lagrange_core::Error;
+/// # use lagrange_core::analysis::doc_models::Pendulum;
+/// let p = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+/// let one_step = EquilibriumOptions { max_iterations: 1, ..Default::default() };
+/// assert!(matches!(equilibrium(&p, 0.0, &[1.0], &one_step), Err(Error::EquilibriumNotFound { .. })));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EquilibriumOptions {
     /// At most this many Newton iterations (each one Jacobian and a few residuals).
@@ -38,6 +47,18 @@ impl Default for EquilibriumOptions {
 }
 
 /// An equilibrium found by [`equilibrium`].
+///
+/// ```
+/// use lagrange_core::analysis::{equilibrium, EquilibriumOptions};
+/// # use lagrange_core::analysis::doc_models::Pendulum;
+/// let p = Pendulum { m: 2.0, l: 0.5, g: 9.81 };
+/// let eq = equilibrium(&p, 0.0, &[3.0], &EquilibriumOptions::default())?;
+/// // The top: K = −m g l (a maximum of V).
+/// assert!((eq.q[0] - std::f64::consts::PI).abs() < 1e-12);
+/// assert!((eq.stiffness[(0, 0)] + 2.0 * 9.81 * 0.5).abs() < 1e-12);
+/// assert!(eq.iterations > 0 && eq.residual < 1e-12);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Equilibrium<C, const N: usize> {
     /// The time it is an equilibrium at (matters for rheonomic mechanisms only).

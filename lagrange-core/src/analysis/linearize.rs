@@ -25,6 +25,17 @@ use num_dual::DualSVec;
 /// direct generalized force on coordinate k is column k of B. An input that is a Cartesian force
 /// F on a point with Jacobian Jₚ = ∂rₚ/∂q enters as u = Jₚᵀ F, so its B is [0; M⁻¹Jₚᵀ]; inputs that
 /// enter the forces non-linearly need their own derivative and are not covered here.
+///
+/// ```
+/// use lagrange_core::analysis::linearize;
+/// use lagrange_core::State;
+/// # use lagrange_core::analysis::doc_models::Pendulum;
+/// // A swinging pendulum: ∂θ̈/∂θ = −(g/l) cos θ, no velocity dependence.
+/// let lin = linearize(&Pendulum { m: 1.0, l: 1.0, g: 9.81 }, &State::new(0.0, [0.2], [1.5]))?;
+/// assert!((lin.dqdd_dq[(0, 0)] + 9.81 * 0.2f64.cos()).abs() < 1e-12);
+/// assert_eq!(lin.dqdd_dv[(0, 0)], 0.0);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Linearization<const N: usize> {
     /// Time of the state linearized about.

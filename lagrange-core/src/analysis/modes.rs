@@ -7,6 +7,15 @@ use crate::mechanism::Mechanism;
 use nalgebra::SMatrix;
 
 /// Small oscillations about a stable equilibrium: δq(t) = Σⱼ cⱼ shapeⱼ cos(ωⱼ t + φⱼ).
+///
+/// ```
+/// use lagrange_core::analysis::normal_modes;
+/// # use lagrange_core::analysis::doc_models::Pendulum;
+/// let modes = normal_modes(&Pendulum { m: 1.0, l: 1.0, g: 9.81 }, 0.0, &[0.0])?;
+/// assert!((modes.frequencies[0] - 9.81f64.sqrt()).abs() < 1e-12);
+/// assert!((modes.shapes[(0, 0)] - 1.0).abs() < 1e-12); // m l² shape² = 1
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NormalModes<const N: usize> {
     /// Angular frequencies ωⱼ (rad per unit time), ascending.

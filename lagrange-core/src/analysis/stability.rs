@@ -17,6 +17,17 @@ use nalgebra::{Complex, DMatrix, SMatrix};
 /// eigen-solvers, so a simple eigenvalue is
 /// accurate to a few ε·s²; the margin leaves room for near-multiple eigenvalues and for parameters
 /// that put the mechanism on a bifurcation only up to rounding (ω² = g/R for the hoop).
+///
+/// ```
+/// use lagrange_core::analysis::{stability, Stability, MARGINAL_TOLERANCE};
+/// # use lagrange_core::analysis::doc_models::SpinningHoop;
+/// // Exactly at the critical spin ω² = g/R (up to rounding) the bottom is neutral at linear order.
+/// let hoop = SpinningHoop { m: 0.1, r: 0.5, g: 9.81, omega: (9.81f64 / 0.5).sqrt() };
+/// let s = stability(&hoop, 0.0, &[0.0])?;
+/// assert_eq!(s.stability, Stability::Marginal);
+/// assert!(s.stiffness_eigenvalues[0].abs() < MARGINAL_TOLERANCE);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 pub const MARGINAL_TOLERANCE: f64 = 1e-8;
 
 /// A configuration counts as an equilibrium when ‖𝓕 − b‖∞ ≤ 1e-8·(‖𝓕‖∞ + ‖b‖∞ + (‖∂𝓕/∂q‖∞ +
@@ -24,6 +35,20 @@ pub const MARGINAL_TOLERANCE: f64 = 1e-8;
 const EQUILIBRIUM_TOLERANCE: f64 = 1e-8;
 
 /// What small disturbances of an equilibrium do.
+///
+/// ```
+/// use lagrange_core::analysis::{stability, Stability};
+/// # use lagrange_core::analysis::doc_models::SpinningHoop;
+/// let hoop = |omega| SpinningHoop { m: 0.1, r: 0.5, g: 9.81, omega };
+/// let describe = |s: Stability| match s {
+///     Stability::Stable => "stays",
+///     Stability::Unstable => "leaves",
+///     Stability::Marginal => "undecided",
+/// };
+/// assert_eq!(describe(stability(&hoop(3.0), 0.0, &[0.0])?.stability), "stays");
+/// assert_eq!(describe(stability(&hoop(6.0), 0.0, &[0.0])?.stability), "leaves");
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Stability {
     /// Small disturbances stay small (a strict minimum of the potential, possibly with damping or
@@ -38,6 +63,15 @@ pub enum Stability {
 }
 
 /// Which criterion [`stability`] used.
+///
+/// ```
+/// use lagrange_core::analysis::{stability, StabilityMethod};
+/// # use lagrange_core::analysis::doc_models::Pendulum;
+/// // A conservative mechanism is decided from K relative to M.
+/// let s = stability(&Pendulum { m: 1.0, l: 1.0, g: 9.81 }, 0.0, &[0.0])?;
+/// assert_eq!(s.method, StabilityMethod::Potential);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum StabilityMethod {
     /// The eigenvalues of K relative to M (K symmetric, no circulatory forces; the velocity terms
@@ -48,6 +82,18 @@ pub enum StabilityMethod {
 }
 
 /// The stability of an equilibrium and everything it was decided from.
+///
+/// ```
+/// use lagrange_core::analysis::stability;
+/// # use lagrange_core::analysis::doc_models::Pendulum;
+/// // Pendulum at the bottom: K = m g l, M = m l², so λ = g/l and μ = ±i√(g/l).
+/// let s = stability(&Pendulum { m: 2.0, l: 0.5, g: 9.81 }, 0.0, &[0.0])?;
+/// assert!((s.stiffness[(0, 0)] - 2.0 * 9.81 * 0.5).abs() < 1e-12);
+/// assert!((s.stiffness_eigenvalues[0] - 9.81 / 0.5).abs() < 1e-12);
+/// assert!(s.system_eigenvalues.iter().all(|mu| mu.re.abs() < 1e-12));
+/// assert!((s.system_eigenvalues[0].im.abs() - (9.81f64 / 0.5).sqrt()).abs() < 1e-12);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct StabilityAnalysis<const N: usize> {
     /// The verdict.
