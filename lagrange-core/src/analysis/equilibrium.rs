@@ -126,9 +126,11 @@ const MIN_STEP: f64 = 1e-12;
 /// steepest-descent direction −Jᵀr is used instead. Which equilibrium is found depends on the
 /// guess — minima and maxima of V alike; classify it with [`stability`](super::stability()).
 ///
-/// Errors: non-finite parameters or guess; [`Error::EquilibriumNotFound`] when the iteration does
-/// not converge in `options.max_iterations`, the line search stalls (a local minimum of ½‖r‖² that
-/// is not a root), or the residual is not finite at the guess. The guess is never modified.
+/// Errors: non-finite parameters or guess; [`Error::NonFiniteDynamics`] when the forces are not
+/// finite at the guess; [`Error::EquilibriumNotFound`] (naming the last iterate and its residual)
+/// when the iteration does not converge in `options.max_iterations`, the line search stalls (a
+/// local minimum of ½‖r‖² that is not a root, or a singular Jacobian with Jᵀr = 0), or the
+/// iterates run into a configuration where the forces are not finite. The guess is never modified.
 ///
 /// ```
 /// use lagrange_core::analysis::{equilibrium, EquilibriumOptions};
@@ -157,7 +159,10 @@ pub fn equilibrium<M: Mechanism<N>, const N: usize>(
     let mut terms = rest_terms(mechanism, t, &q.into());
     let finite = |r: &SVector<f64, N>| r.iter().all(|x| x.is_finite());
     if !finite(&terms.residual) || !terms.stiffness.iter().all(|x| x.is_finite()) {
-        return Err(not_found(0, f64::NAN, &q));
+        return Err(Error::NonFiniteDynamics {
+            t,
+            configuration: describe::<M, N>(&q.into()),
+        });
     }
     let done = |q: &SVector<f64, N>, terms: &super::RestTerms<N>, iterations: usize| Equilibrium {
         t,
