@@ -112,6 +112,13 @@ impl Mechanism {
     }
 
     fn add_struct(&mut self, cx: &Ctxt, s: ItemStruct) {
+        // Unit and tuple structs (markers, newtypes) are ordinary items; the parameter struct has
+        // named fields.
+        if s.ident != "Coords" && !matches!(s.fields, syn::Fields::Named(_)) {
+            self.item_names.push(s.ident.clone());
+            self.other_items.push(Item::Struct(s));
+            return;
+        }
         let fields = struct_fields(cx, &s);
         if s.ident == "Coords" {
             // Two `struct Coords`: rustc would say so too, but only once here.
@@ -121,7 +128,8 @@ impl Mechanism {
                 self.coords = Some((s, fields));
             }
         } else if let Some((first, _)) = &self.params {
-            // `struct Pendulum {..} struct Helper {..}`: the parameter struct is the only other struct.
+            // `struct Pendulum {..} struct Helper {..}`: the parameter struct is the only other struct
+            // with named fields.
             cx.error_spanned_by(
                 &s.ident,
                 format!(

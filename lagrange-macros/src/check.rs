@@ -203,7 +203,7 @@ fn expect_return_type(cx: &Ctxt, decl: &Decl, expected: &[&str], why: &str) -> O
             .map(|e| format!("`{e}`"))
             .collect::<Vec<_>>()
             .join(" or ");
-        let message = format!("`#[{}]` returns {list}: {why}", decl.kind().name());
+        let message = format!("`#[{}]` returns {why}: {list}", decl.kind().name());
         match decl.output() {
             Some(ty) => cx.error_spanned_by(ty, message),
             None => cx.error_spanned_by(&decl.sig, format!("missing return type; {message}")),
@@ -499,8 +499,9 @@ fn check_coordinates_are_used(cx: &Ctxt, model: &Model) {
     }
     let used: BTreeSet<usize> = depends.into_iter().flatten().collect();
     for (j, coord) in model.coords.iter().enumerate() {
+        let repeated = model.coords[..j].iter().any(|c| c.ident == coord.ident);
         // `Coords { x, y }` where no body's position names `y`: its mass-matrix row is zero.
-        if !used.contains(&j) {
+        if !used.contains(&j) && !repeated {
             cx.error_spanned_by(
                 &coord.ident,
                 format!(
@@ -610,11 +611,11 @@ impl Resolver<'_, '_> {
 
     fn unknown_message(&self, ident: &Ident) -> String {
         let in_scope = match self.context {
-            Context::Position(_) => "a coordinate, a parameter, `t`, a body or point declared earlier, or an item of this module",
-            Context::Potential => "a coordinate, a parameter, `t`, a body or point, or an item of this module",
-            Context::Force => "a coordinate or its `_dot` velocity, a parameter, `t`, a body or point or its `_dot` velocity, or an item of this module",
+            Context::Position(_) => "a coordinate, parameter, `t`, body or point declared earlier, or item of this module",
+            Context::Potential => "a coordinate, parameter, `t`, body, point, or item of this module",
+            Context::Force => "a coordinate, parameter, `t`, body, point, their `_dot` velocities, or item of this module",
             Context::Mass => "a parameter or an item of this module",
         };
-        format!("unknown name `{ident}`: not {in_scope}")
+        format!("unknown name `{ident}`: it is not {in_scope}")
     }
 }
