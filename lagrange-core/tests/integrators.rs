@@ -111,6 +111,450 @@ fn stormer_verlet_is_second_order() {
     assert!((p - 2.0).abs() < 0.3, "observed order {p}");
 }
 
+// Dopri5: error control, dense output, events.
+
+#[test]
+fn dopri5_meets_its_tolerance_on_the_oscillator() {
+    // q̈ = −q from (1, 0): q = cos t, v = −sin t. With rtol = atol = tol the local error of every
+    // step is held below tol (scaled per component); the oscillator neither amplifies nor damps
+    // errors, so after 10 time units the global error is the sum of ~n local errors, and local
+    // extrapolation (the step is advanced with the 5th-order solution while the 4th-order estimate
+    // is controlled) keeps the sum of the order of tol. Bound: 10·tol (measured ratios ≈ 3).
+    for tol in [1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
+        let mut s = State::new(0.0, [1.0], [0.0]);
+        let out = Dopri5::new(tol, tol)
+            .integrate(&Oscillator { damping: 0.0 }, &mut s, 10.0, &mut [], |_| {})
+            .unwrap();
+        assert_eq!(out.reason, StopReason::Reached);
+        assert_eq!(s.t, 10.0);
+        let err = distance(&s.q, &s.v, &[10f64.cos()], &[-10f64.sin()]);
+        eprintln!("Dopri5 tol {tol:e}: error {err:.3e}, {:?}", out.stats);
+        assert!(err <= 10.0 * tol, "tol {tol}: error {err}");
+        // FSAL: 6 evaluations per attempted step, plus the first evaluation and the initial-step
+        // estimate.
+        let attempts = out.stats.accepted + out.stats.rejected;
+        assert_eq!(out.stats.evaluations, 6 * attempts + 2);
+    }
+}
+
+#[test]
+fn dopri5_dense_output_is_accurate_inside_steps() {
+    let tol = 1e-9;
+    let mut stepper = Dopri5Stepper::new(
+        &Oscillator { damping: 0.0 },
+        Dopri5::new(tol, tol),
+        &State::new(0.0, [1.0], [0.0]),
+    )
+    .unwrap();
+    let mut worst = 0.0f64;
+    while stepper.t() < 6.0 {
+        stepper.step(6.0).unwrap();
+        let dense = stepper.dense();
+        for k in 1..8 {
+            let t = dense.t_start() + (dense.t_end() - dense.t_start()) * k as f64 / 8.0;
+            let (q, v) = dense.eval(t);
+            worst = worst.max(distance(&q, &v, &[t.cos()], &[-t.sin()]));
+        }
+    }
+    // The continuous extension is of order 4 (one less than the step): its error inside a step is
+    // of the size of the local error estimate, ≲ tol, plus the global error carried in, ≲ tol.
+    eprintln!("dense output worst error {worst:.3e}");
+    assert!(worst <= 20.0 * tol, "{worst}");
+    assert_eq!(stepper.t(), 6.0);
+}
+
+#[test]
+fn dopri5_events_on_the_oscillator() {
+    // q = cos t crosses 0 falling at π/2 and rising at 3π/2; the rising one is terminal.
+    let g = |s: &State<[f64; 1]>| s.q[0];
+    let mut events = [
+        Event::new(&g).direction(Direction::Falling),
+        Event::new(&g).direction(Direction::Rising).terminal(),
+    ];
+    let mut seen = Vec::new();
+    let mut s = State::new(0.0, [1.0], [0.0]);
+    let tol = 1e-10;
+    let out = Dopri5::new(tol, tol)
+        .integrate(
+            &Oscillator { damping: 0.0 },
+            &mut s,
+            10.0,
+            &mut events,
+            |o| {
+                if let Observation::Event(hit) = o {
+                    seen.push(*hit)
+                }
+            },
+        )
+        .unwrap();
+    assert_eq!(seen.len(), 2, "{seen:?}");
+    assert_eq!(
+        (seen[0].index, seen[0].rising, seen[0].terminal),
+        (0, false, false)
+    );
+    assert_eq!(
+        (seen[1].index, seen[1].rising, seen[1].terminal),
+        (1, true, true)
+    );
+    // Event times are those of the numerical solution, which is within ~tol of the exact one;
+    // |q̇| = 1 at the crossings, so the time error is ~tol too. Bound 10·tol.
+    assert!(
+        (seen[0].state.t - PI / 2.0).abs() < 10.0 * tol,
+        "{}",
+        seen[0].state.t - PI / 2.0
+    );
+    assert!(
+        (seen[1].state.t - 1.5 * PI).abs() < 10.0 * tol,
+        "{}",
+        seen[1].state.t - 1.5 * PI
+    );
+    match out.reason {
+        StopReason::Event(hit) => assert_eq!(hit, seen[1]),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(s, seen[1].state);
+}
+
+/// Complete elliptic integral of the first kind K(k) = π / (2 AGM(1, √(1 − k²))) (Abramowitz &
+/// Stegun 17.6).
+fn elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0f64, (1.0 - k * k).sqrt());
+    for _ in 0..40 {
+        let (a1, b1) = (0.5 * (a + b), (a * b).sqrt());
+        a = a1;
+        b = b1;
+    }
+    PI / (2.0 * a)
+}
+
+#[test]
+fn dopri5_locates_the_pendulum_quarter_period() {
+    // Released from rest at θ₀ = 2 rad (115°), the pendulum θ̈ = −sin θ first reaches θ = 0 after a
+    // quarter period K(k), k = sin(θ₀/2) (Landau & Lifshitz, Mechanics §11, problem 1).
+    let theta0 = 2.0f64;
+    let exact = elliptic_k((theta0 / 2.0).sin());
+    let g = |s: &State<[f64; 1]>| s.q[0];
+    let mut events = [Event::new(&g).direction(Direction::Falling).terminal()];
+    let mut s = State::new(0.0, [theta0], [0.0]);
+    let tol = 1e-12;
+    let out = Dopri5::new(tol, tol)
+        .integrate(&Pendulum, &mut s, 10.0, &mut events, |_| {})
+        .unwrap();
+    assert!(matches!(out.reason, StopReason::Event(_)));
+    // The root of the dense output is bracketed to 1e-13 s, so |θ| there is ≤ 1e-13·|θ̇| ≈ 2e-13
+    // (θ̇ = −2k ≈ −1.68 at the crossing), plus round-off.
+    assert!(s.q[0].abs() <= 1e-12, "θ at the event {}", s.q[0]);
+    // The dense solution itself is within ~tol·(number of steps) of the exact one; divided by
+    // |θ̇| ≈ 1.68 that is the time error. Bound 1e-10 (measured ~1e-12).
+    eprintln!(
+        "quarter period: located {} exact {exact} difference {:.3e}",
+        s.t,
+        s.t - exact
+    );
+    assert!((s.t - exact).abs() < 1e-10, "{} vs {exact}", s.t);
+}
+
+// Long-time energy behaviour on the Kepler orbit e = 0.6.
+
+/// Least-squares slope of y against x.
+fn slope(x: &[f64], y: &[f64]) -> f64 {
+    let n = x.len() as f64;
+    let (mx, my) = (x.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
+    let sxy: f64 = x.iter().zip(y).map(|(a, b)| (a - mx) * (b - my)).sum();
+    let sxx: f64 = x.iter().map(|a| (a - mx).powi(2)).sum();
+    sxy / sxx
+}
+
+/// Energy error H − H₀ over `periods` periods with `per_period` steps each, sampled every step:
+/// returns (linear drift over the run from a least-squares fit, max |H − H₀|).
+fn kepler_energy_drift<I: Integrator>(periods: usize, per_period: usize) -> (f64, f64) {
+    let mut s = kepler_start(E);
+    let e0 = Kepler.energy(&s).unwrap();
+    let h = 2.0 * PI / per_period as f64;
+    let (mut ts, mut es) = (Vec::new(), Vec::new());
+    for _ in 0..periods * per_period {
+        Kepler.step::<I>(&mut s, h).unwrap();
+        ts.push(s.t);
+        es.push(Kepler.energy(&s).unwrap() - e0);
+    }
+    let max = es.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    (slope(&ts, &es) * s.t, max)
+}
+
+#[test]
+fn symplectic_methods_keep_kepler_energy_bounded_while_rk4_drifts() {
+    // 100 periods of the e = 0.6 orbit. A symplectic method (constant mass matrix here) conserves a
+    // modified energy O(hᵖ)-close to H, so H − H₀ oscillates with the orbit and shows no trend: the
+    // least-squares drift over the run is a small fraction of the oscillation (the fit of a
+    // periodic signal over 100 periods leaves ≲ 1/100 of its amplitude, bound 0.05). RK4 is not
+    // symplectic and dissipates energy at a constant rate per period: its error is a trend, so the
+    // drift is comparable to the maximum error (ratio near 1, bound > 0.5).
+    let (periods, per_period) = (100, 100);
+    let rk4 = kepler_energy_drift::<Rk4>(periods, per_period);
+    eprintln!("RK4: drift {:.3e}, max {:.3e}", rk4.0, rk4.1);
+    assert!(rk4.0.abs() > 0.5 * rk4.1, "{rk4:?}");
+    for (name, (drift, max)) in [
+        (
+            "implicit midpoint",
+            kepler_energy_drift::<ImplicitMidpoint>(periods, per_period),
+        ),
+        (
+            "Gauss-Legendre 2",
+            kepler_energy_drift::<GaussLegendre2>(periods, per_period),
+        ),
+        (
+            "variational",
+            kepler_energy_drift::<Variational>(periods, per_period),
+        ),
+        (
+            "Stormer-Verlet",
+            kepler_energy_drift::<StormerVerlet>(periods, per_period),
+        ),
+    ] {
+        eprintln!("{name}: drift {drift:.3e}, max {max:.3e}");
+        assert!(
+            drift.abs() < 0.05 * max,
+            "{name}: drift {drift:e}, max {max:e}"
+        );
+    }
+}
+
+// The variational integrator beyond constant mass matrices, and with forcing.
+
+#[test]
+fn variational_is_second_order_with_forcing() {
+    // Damped oscillator q̈ + c q̇ + q = 0, c = 0.3, from (1, 0): the damping enters through the
+    // discrete Lagrange–d'Alembert principle. Exact: q = e^{−ct/2}(cos ωt + (c/2ω) sin ωt),
+    // ω = √(1 − c²/4).
+    let c = 0.3f64;
+    let w = (1.0 - c * c / 4.0).sqrt();
+    let exact = |t: f64| {
+        let e = (-c * t / 2.0).exp();
+        let q = e * ((w * t).cos() + c / (2.0 * w) * (w * t).sin());
+        let v = -e * (1.0 + c * c / (4.0 * w * w)) * w * (w * t).sin();
+        (q, v)
+    };
+    let err = |n: usize| {
+        let mut s = State::new(0.0, [1.0], [0.0]);
+        let h = 5.0 / n as f64;
+        for _ in 0..n {
+            Oscillator { damping: c }
+                .step::<Variational>(&mut s, h)
+                .unwrap();
+        }
+        let (q, v) = exact(s.t);
+        distance(&s.q, &s.v, &[q], &[v])
+    };
+    let p = observed_order("variational, damped oscillator", err, 100);
+    assert!((p - 2.0).abs() < 0.3, "{p}");
+}
+
+#[test]
+fn variational_and_gauss_converge_on_the_double_pendulum() {
+    // A mass matrix that depends on q. Reference: Dopri5 at rtol = atol = 1e-13 (its error ~1e-12
+    // is far below the errors measured, ≥ 1e-9).
+    let start = State::new(0.0, [1.0, -0.5], [0.0, 0.0]);
+    let t_end = 2.0;
+    let mut reference = start;
+    Dopri5::new(1e-13, 1e-13)
+        .integrate(&DoublePendulum, &mut reference, t_end, &mut [], |_| {})
+        .unwrap();
+    fn run<I: Integrator>(
+        start: State<[f64; 2]>,
+        t_end: f64,
+        n: usize,
+        r: &State<[f64; 2]>,
+    ) -> f64 {
+        let mut s = start;
+        for _ in 0..n {
+            DoublePendulum.step::<I>(&mut s, t_end / n as f64).unwrap();
+        }
+        distance(&s.q, &s.v, &r.q, &r.v)
+    }
+    let p = observed_order(
+        "variational, double pendulum",
+        |n| run::<Variational>(start, t_end, n, &reference),
+        100,
+    );
+    assert!((p - 2.0).abs() < 0.3, "{p}");
+    let p = observed_order(
+        "Gauss-Legendre 2, double pendulum",
+        |n| run::<GaussLegendre2>(start, t_end, n, &reference),
+        25,
+    );
+    assert!((p - 4.0).abs() < 0.3, "{p}");
+    let p = observed_order(
+        "implicit midpoint, double pendulum",
+        |n| run::<ImplicitMidpoint>(start, t_end, n, &reference),
+        100,
+    );
+    assert!((p - 2.0).abs() < 0.3, "{p}");
+}
+
+#[test]
+fn variational_keeps_double_pendulum_energy_bounded() {
+    // Symplectic in (q, p) for this q-dependent mass matrix: the energy error stays at its O(h²)
+    // level without a trend over 20 000 steps (the chaotic motion makes the oscillation irregular,
+    // hence the looser drift bound than on Kepler).
+    let mut s = State::new(0.0, [1.0, -0.5], [0.0, 0.0]);
+    let e0 = DoublePendulum.energy(&s).unwrap();
+    let (mut ts, mut es) = (Vec::new(), Vec::new());
+    for _ in 0..20_000 {
+        DoublePendulum.step::<Variational>(&mut s, 0.01).unwrap();
+        ts.push(s.t);
+        es.push(DoublePendulum.energy(&s).unwrap() - e0);
+    }
+    let max = es.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    let drift = slope(&ts, &es) * s.t;
+    eprintln!("variational double pendulum: drift {drift:.3e}, max {max:.3e}");
+    // (hω)² with ω ~ 2: ~4e-4 relative to |E| ~ 2.
+    assert!(max < 1e-2, "{max}");
+    assert!(drift.abs() < 0.2 * max, "{drift} vs {max}");
+}
+
+// Störmer–Verlet and the constant-mass-matrix check.
+
+#[test]
+fn stormer_verlet_refuses_a_varying_mass_matrix() {
+    let mut s = State::new(0.0, [1.0, -0.5], [0.3, 0.0]);
+    let before = s;
+    let err = DoublePendulum
+        .step::<StormerVerlet>(&mut s, 0.01)
+        .unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::UnsuitableMethod {
+                method: "Stormer-Verlet",
+                ..
+            }
+        ),
+        "{err}"
+    );
+    assert!(
+        err.to_string().contains("mass matrix is not constant"),
+        "{err}"
+    );
+    assert_eq!(s, before);
+    // The pendulum's mass matrix sin² + cos² is constant up to round-off: accepted.
+    let mut s = State::new(0.0, [2.0], [0.0]);
+    for _ in 0..1000 {
+        Pendulum.step::<StormerVerlet>(&mut s, 0.01).unwrap();
+    }
+}
+
+// Errors leave the state alone.
+
+fn assert_unchanged_on_error<I: Integrator>(h: f64) {
+    // q̈ = q² blows up at t = √6; keep stepping until the method reports it.
+    let mut s = State::new(0.0, [1.0], [(2.0f64 / 3.0).sqrt()]);
+    for _ in 0..10_000 {
+        let before = s;
+        match BlowUp.step::<I>(&mut s, h) {
+            Ok(()) => continue,
+            Err(e) => {
+                assert!(
+                    matches!(
+                        e,
+                        Error::NonFiniteState { .. }
+                            | Error::NonFiniteDynamics { .. }
+                            | Error::NewtonDiverged { .. }
+                    ),
+                    "{}: {e}",
+                    I::NAME
+                );
+                assert_eq!(s, before, "{}", I::NAME);
+                assert!(s.q[0].is_finite() && s.v[0].is_finite());
+                return;
+            }
+        }
+    }
+    panic!("{} never failed", I::NAME);
+}
+
+#[test]
+fn non_finite_results_are_errors_and_leave_the_state_alone() {
+    assert_unchanged_on_error::<Rk4>(0.05);
+    assert_unchanged_on_error::<ImplicitMidpoint>(0.05);
+    assert_unchanged_on_error::<GaussLegendre2>(0.05);
+    assert_unchanged_on_error::<Variational>(0.05);
+    assert_unchanged_on_error::<StormerVerlet>(0.05);
+    // Non-finite input.
+    fn nan_input<I: Integrator>() {
+        let mut s = State::new(0.0, [1.0, f64::NAN], [0.0, 0.0]);
+        let before = s;
+        assert!(matches!(
+            Kepler.step::<I>(&mut s, 0.1),
+            Err(Error::NonFiniteState { .. })
+        ));
+        assert_eq!(format!("{s:?}"), format!("{before:?}"));
+        let mut s = kepler_start(E);
+        assert!(matches!(
+            Kepler.step::<I>(&mut s, -0.1),
+            Err(Error::InvalidStep { .. })
+        ));
+        assert_eq!(s, kepler_start(E));
+    }
+    nan_input::<ImplicitMidpoint>();
+    nan_input::<GaussLegendre2>();
+    nan_input::<Variational>();
+    nan_input::<StormerVerlet>();
+}
+
+#[test]
+fn dopri5_blow_up_is_an_error_and_leaves_the_state_alone() {
+    let start = State::new(0.0, [1.0], [(2.0f64 / 3.0).sqrt()]);
+    let mut s = start;
+    let mut last_t = 0.0;
+    let err = Dopri5::new(1e-8, 1e-8)
+        .integrate(&BlowUp, &mut s, 5.0, &mut [], |o| {
+            if let Observation::Step { state, .. } = o {
+                last_t = state.t
+            }
+        })
+        .unwrap_err();
+    eprintln!(
+        "Dopri5 on the blow-up: {err} (last accepted t = {last_t}, blow-up at √6 = {})",
+        6f64.sqrt()
+    );
+    assert!(matches!(
+        err,
+        Error::NonFiniteState { .. } | Error::NonFiniteDynamics { .. } | Error::InvalidStep { .. }
+    ));
+    // It got close to the singularity before giving up, and the caller's state is untouched.
+    assert!((last_t - 6f64.sqrt()).abs() < 1e-3, "{last_t}");
+    assert_eq!(s, start);
+    // Bad settings and a backwards end time are errors too.
+    assert!(Dopri5::new(-1.0, 1e-6)
+        .integrate(&BlowUp, &mut s, 1.0, &mut [], |_| {})
+        .is_err());
+    assert!(matches!(
+        Dopri5::default().integrate(&BlowUp, &mut s, -1.0, &mut [], |_| {}),
+        Err(Error::InvalidStep { .. })
+    ));
+    assert_eq!(s, start);
+}
+
+#[test]
+fn newton_without_a_solution_is_an_error() {
+    // q̈ = q² from (1, √(2/3)) with h = 2: the midpoint equation V = v₀ + (1 + V)² has no real
+    // root, so Newton cannot converge; the same holds for the variational step (p = v here).
+    fn diverges<I: Integrator>() {
+        let mut s = State::new(0.0, [1.0], [(2.0f64 / 3.0).sqrt()]);
+        let before = s;
+        let err = BlowUp.step::<I>(&mut s, 2.0).unwrap_err();
+        assert!(
+            matches!(err, Error::NewtonDiverged { .. }),
+            "{}: {err}",
+            I::NAME
+        );
+        assert_eq!(s, before);
+    }
+    diverges::<ImplicitMidpoint>();
+    diverges::<GaussLegendre2>();
+    diverges::<Variational>();
+}
+
 // ---------------------------------------------------------------------------------------------
 // Hand-written models (the pattern of `hand_written_model.rs`: what `#[mechanism]` generates).
 
@@ -302,6 +746,6 @@ pub fn kepler_exact(e: f64, t: f64) -> ([f64; 2], [f64; 2]) {
 }
 
 /// Initial state of [`kepler_exact`].
-pub fn kepler_start(e: f64) -> lagrange_core::State<[f64; 2]> {
+fn kepler_start(e: f64) -> lagrange_core::State<[f64; 2]> {
     lagrange_core::State::new(0.0, [1.0 - e, 0.0], [0.0, ((1.0 + e) / (1.0 - e)).sqrt()])
 }

@@ -25,6 +25,9 @@
 //!
 //! Integration is forward in time only.
 
+// `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
+
 use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
 use crate::model::{check_state, Coordinates, State};
@@ -447,7 +450,7 @@ impl Dopri5 {
                 ev.g_prev = g_new;
             }
             // Report them in time order, up to the first terminal one.
-            while any {
+            while any && events.iter().any(|e| e.pending.is_some()) {
                 let mut best: Option<(usize, f64, bool)> = None;
                 for (i, ev) in events.iter().enumerate() {
                     if let Some((root, rising)) = ev.pending {

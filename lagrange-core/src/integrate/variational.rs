@@ -19,7 +19,8 @@
 //!
 //! solved for v_m by Newton's method with the exact Jacobian dR/dv_m, obtained by evaluating R with
 //! v_m seeded as a gradient dual number (∂T/∂q inside G is itself a gradient, so this nests dual
-//! numbers: exact second derivatives of T). Starting guess v_m = v₀.
+//! numbers: exact second derivatives of T). [`Variational::step_arrays`] starts from the predictor
+//! v_m = v₀ + (h/2) q̈(t₀, q₀, v₀).
 //!
 //! **State and momenta.** The method lives on (q, p). [`Variational`] implements
 //! [`Integrator`] on the (q, v) [`State`] by a Legendre transform at both ends of a step:
@@ -182,7 +183,10 @@ impl Variational {
         h: f64,
     ) -> Result<([f64; N], [f64; N], VariationalStepStats)> {
         let p0 = mechanism.momenta_at(t, q, v);
-        let (q1, p1, vm, iterations) = Self::step_momenta(mechanism, t, q, &p0, v, h)?;
+        // Predictor v_m = v₀ + (h/2) q̈(t₀, q₀, v₀), O(h²) from the solution.
+        let a0 = mechanism.accelerations_at(t, q, v)?;
+        let guess: [f64; N] = std::array::from_fn(|j| v[j] + 0.5 * h * a0[j]);
+        let (q1, p1, vm, iterations) = Self::step_momenta(mechanism, t, q, &p0, &guess, h)?;
         // v₁ ≈ 2 v_m − v₀ to first order: the Newton start for the inverse Legendre transform.
         let guess: [f64; N] = std::array::from_fn(|j| 2.0 * vm[j] - v[j]);
         let (v1, velocity_iterations) =

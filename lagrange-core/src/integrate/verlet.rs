@@ -23,6 +23,9 @@
 //! particles) is accepted. A step that does not move (v = q̈ = 0) cannot see the difference and
 //! is allowed, harmlessly: it is exact for any M.
 
+// `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
+
 use super::Integrator;
 use crate::dynamics::solve_accelerations;
 use crate::error::{Error, Result};
