@@ -357,7 +357,9 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
         }
     };
     let free = names::free_names(&decl.block);
-    for ident in &free {
+    let mut seen = BTreeSet::new();
+    // Each name is resolved (and reported) once per function.
+    for ident in free.iter().filter(|i| seen.insert(i.to_string())) {
         let name = Resolver { model, context }.resolve(cx, ident);
         if name == Some(Name::Time) && context != Context::Force {
             model.rheonomic = true;
@@ -469,7 +471,11 @@ fn check_masses(cx: &Ctxt, model: &Model) {
 
 /// A mass or inertia names only parameters and module items.
 fn check_constant(cx: &Ctxt, model: &Model, expr: &syn::Expr) {
-    for ident in names::free_names_of_expr(expr) {
+    let mut seen = BTreeSet::new();
+    for ident in names::free_names_of_expr(expr)
+        .iter()
+        .filter(|i| seen.insert(i.to_string()))
+    {
         Resolver {
             model,
             context: Context::Mass,

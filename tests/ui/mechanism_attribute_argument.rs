@@ -1,0 +1,21 @@
+use lagrange::mechanism;
+
+#[mechanism(fast)]
+pub mod pendulum {
+    pub struct Coords {
+        pub theta: f64,
+    }
+
+    pub struct Pendulum {
+        pub m: f64,
+        pub l: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * l
+    }
+
+}
+
+fn main() {}
