@@ -95,6 +95,72 @@ pub enum Error {
     /// An eigenvalue iteration did not converge.
     #[error("eigenvalue iteration did not converge at t = {t}, {configuration}")]
     EigenvalueFailure { t: f64, configuration: String },
+
+    /// The constraints enforced at this configuration are redundant or contradictory: the matrix
+    /// G M⁻¹ Gᵀ of their rows is singular. Names the rows involved.
+    #[error("constraints {constraints} are redundant or contradictory at t = {t}, {configuration} (pivot {pivot:e})")]
+    SingularConstraints {
+        t: f64,
+        configuration: String,
+        constraints: String,
+        pivot: f64,
+    },
+
+    /// A state violates the constraints beyond tolerance (and projection was not asked for).
+    #[error("state violates the constraints at t = {t}: {residuals} (largest {residual:e}); make it consistent with `consistent_state` first")]
+    ConstraintViolation {
+        t: f64,
+        residual: f64,
+        residuals: String,
+    },
+
+    /// Projecting a state onto the constraints did not converge (the guess is too far from the
+    /// constraint manifold, or the constraints cannot be satisfied there).
+    #[error("projection onto the constraints failed after {iterations} iterations (residual {residual:e}) from {state}")]
+    ProjectionFailed {
+        t: f64,
+        iterations: usize,
+        residual: f64,
+        state: String,
+    },
+
+    /// A velocity constraint or slip velocity is not linear in the generalized velocities.
+    #[error("velocity constraint `{constraint}` is not linear in the velocities at t = {t}, {configuration} (deviation {deviation:e})")]
+    NonlinearVelocityConstraint {
+        constraint: &'static str,
+        t: f64,
+        configuration: String,
+        deviation: f64,
+    },
+
+    /// Sliding friction makes the contact forces indeterminate (or inconsistent): the
+    /// friction-coupled constraint matrix is singular (Painlevé's paradox).
+    #[error("sliding friction of {constraints} makes the contact forces indeterminate at t = {t}, {configuration}")]
+    FrictionIndeterminate {
+        t: f64,
+        configuration: String,
+        constraints: String,
+    },
+
+    /// Friction coefficients that are not finite or not 0 ≤ μₖ ≤ μₛ.
+    #[error("friction `{constraint}`: coefficients must satisfy 0 <= kinetic <= static, got kinetic {kinetic}, static {stiction}")]
+    InvalidFriction {
+        constraint: &'static str,
+        kinetic: f64,
+        stiction: f64,
+    },
+
+    /// A constraint declaration that does not make sense (for example friction pointing at a row
+    /// that is not a contact).
+    #[error("constraint `{constraint}`: {reason}")]
+    InvalidConstraintDeclaration {
+        constraint: &'static str,
+        reason: String,
+    },
+
+    /// More mode changes (contacts, releases, stick/slip switches) within one step than allowed.
+    #[error("{events} mode changes within one step at t = {t} (Zeno behaviour or an inconsistent contact mode)")]
+    TooManyEvents { t: f64, events: usize },
 }
 
 /// Shorthand for results of this crate.

@@ -12,6 +12,7 @@
 //! Users depend on the `lagrange` facade crate, which re-exports all of this.
 
 pub mod analysis;
+pub mod constraints;
 pub mod dynamics;
 pub mod error;
 pub mod geometry;
@@ -24,6 +25,7 @@ pub use analysis::{
     continuation, equilibrium, linearize, normal_modes, stability, Equilibrium, EquilibriumOptions,
     Linearization, NormalModes, Stability,
 };
+pub use constraints::{Constraints, ContactRk4};
 pub use error::{Error, Result};
 pub use geometry::{
     planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3,

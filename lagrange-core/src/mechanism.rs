@@ -19,7 +19,12 @@ pub trait Mechanism<const N: usize>: Sized {
     /// Checks parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
     /// M, 𝓕 and b at (t, q, q̇), for any scalar.
-    fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> EquationsOfMotion<S, N>;
+    fn equations_of_motion_at<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> EquationsOfMotion<S, N>;
     /// T at (t, q, q̇), for any scalar.
     fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> S;
     /// V at (t, q), for any scalar.
@@ -37,6 +42,24 @@ pub trait Mechanism<const N: usize>: Sized {
         crate::dynamics::solve_accelerations::<Self::Coords, S, N>(&eom, t, q)
     }
 
+    /// Hook for mechanisms with constraints: projects (q, q̇) at time `t` back onto the constraints
+    /// (see [`crate::constraints::project`]). Integrators call it after every step; the default does
+    /// nothing. On error `q` and `v` are unchanged.
+    #[inline]
+    fn project(&self, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {
+        let _ = (t, q, v);
+        Ok(())
+    }
+
+    /// Hook for mechanisms with constraints: checks that (t, q, q̇) satisfies them within tolerance
+    /// (see [`crate::constraints::check_consistent`]), so a state violating them is refused rather
+    /// than silently projected. Integrators call it before every step; the default accepts.
+    #[inline]
+    fn check_constraints(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+        let _ = (t, q, v);
+        Ok(())
+    }
+
     /// Checks parameters and state; what every user-facing call does first.
     fn check(&self, state: &State<Self::Coords>) -> Result<([f64; N], [f64; N])> {
         self.validate()?;
@@ -51,7 +74,8 @@ pub trait Mechanism<const N: usize>: Sized {
     /// configuration), non-finite dynamics.
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
-        self.accelerations_at(state.t, &q, &v).map(Self::Coords::from_array)
+        self.accelerations_at(state.t, &q, &v)
+            .map(Self::Coords::from_array)
     }
 
     /// M(q, t): the mass matrix, row and column k for coordinate k in declaration order.
@@ -63,7 +87,11 @@ pub trait Mechanism<const N: usize>: Sized {
     /// 𝓕: the generalized forces (potentials, applied and direct forces), by name.
     fn generalized_forces(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
-        Ok(Self::Coords::from_array(self.equations_of_motion_at(state.t, &q, &v).generalized_forces.into()))
+        Ok(Self::Coords::from_array(
+            self.equations_of_motion_at(state.t, &q, &v)
+                .generalized_forces
+                .into(),
+        ))
     }
 
     /// T: kinetic energy.
@@ -97,7 +125,8 @@ pub trait Mechanism<const N: usize>: Sized {
         let (q, v) = self.check(state)?;
         let p = self.momenta_at(state.t, &q, &v);
         let pv: f64 = p.iter().zip(&v).map(|(p, v)| p * v).sum();
-        let lagrangian = self.kinetic_energy_at(state.t, &q, &v) - self.potential_energy_at(state.t, &q);
+        let lagrangian =
+            self.kinetic_energy_at(state.t, &q, &v) - self.potential_energy_at(state.t, &q);
         Ok(pv - lagrangian)
     }
 

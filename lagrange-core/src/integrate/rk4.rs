@@ -51,7 +51,9 @@ impl Integrator for Rk4 {
     ) -> Result<()> {
         check_step(h)?;
         let (q, v) = mechanism.check(state)?;
-        let (q_new, v_new) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        mechanism.check_constraints(state.t, &q, &v)?;
+        let (mut q_new, mut v_new) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        mechanism.project(state.t + h, &mut q_new, &mut v_new)?;
         crate::model::check_state(&M::Coords::NAMES, state.t + h, &q_new, &v_new)?;
         state.t += h;
         state.q = M::Coords::from_array(q_new);

@@ -1,0 +1,274 @@
+//! Constraints the generalized coordinates do not absorb: closed loops, rheonomic guides, rolling
+//! without slipping, contacts that can separate, and Coulomb friction.
+//!
+//! # Physics
+//!
+//! A mechanism with `C` constraint rows adds to M q̈ = 𝓕 − b (see [`crate::dynamics`]) one
+//! generalized constraint force per row, λᵢ·rᵢ, where rᵢ ∈ ℝᴺ is the row's Jacobian:
+//!
+//! ```text
+//! M q̈ = 𝓕 − b + Σᵢ λᵢ rᵢ,           rᵢ · q̈ = −βᵢ   for every active row i.
+//! ```
+//!
+//! | kind | declared function | row rᵢ | βᵢ (acceleration-level bias) | multiplier |
+//! |---|---|---|---|---|
+//! | [`Holonomic`](ConstraintKind::Holonomic) | g(q, t, x) = 0 | ∂g/∂q (through x too) | d²/ds² g(q + s q̇, t + s)│₀ | free sign |
+//! | [`Velocity`](ConstraintKind::Velocity) | h = A(q, t) q̇ + a(q, t) = 0 | ∂h/∂q̇ = A | d/ds h(q + s q̇, q̇, t + s)│₀ | free sign |
+//! | [`Unilateral`](ConstraintKind::Unilateral) | c(q, t, x) ≥ 0 | ∂c/∂q | as holonomic, while in contact | λ ≥ 0 (pushes only) |
+//! | [`Friction`](ConstraintKind::Friction) | slip velocity s = S(q, t) q̇ + s₀(q, t) | S = ∂s/∂q̇ | as velocity, while sticking | see below |
+//!
+//! This is the KKT system of DESIGN §2, [M −Rᵀ; R 0][q̈; λ] = [𝓕 − b; −β], the index-1 form of
+//! the equations of motion of a constrained mechanical system (Hairer & Wanner, *Solving Ordinary
+//! Differential Equations II*, 2nd ed., §VII.1, eq. (1.46); Lagrange multipliers for
+//! nonholonomic constraints linear in the velocities: Goldstein, Poole & Safko, *Classical
+//! Mechanics*, 3rd ed., §2.4). It is solved by the Schur complement: with M = LLᵀ (Cholesky),
+//! (R M⁻¹ Rᵀ) λ = −β − R M⁻¹(𝓕 − b), then q̈ = M⁻¹(𝓕 − b + Rᵀλ). Every matrix stays N×N or C×C, so
+//! sizes are const generics on stable Rust. **M must be positive definite** (the generalized
+//! coordinates independent before the constraints are imposed); a singular M is
+//! [`Error::SingularMassMatrix`](crate::Error::SingularMassMatrix) as without constraints. A
+//! singular R M⁻¹ Rᵀ (redundant or contradictory constraints at this configuration) is
+//! [`Error::SingularConstraints`](crate::Error::SingularConstraints), naming the rows involved.
+//!
+//! **Friction** follows the lecture's model (Cross, Caltech Ph106 Lecture 4, "Constraints"): the
+//! contact constraint is holonomic (or unilateral) and the friction force is part of the constraint
+//! force; unlike the normal force it does virtual work, so it stays in the equations. A friction
+//! row j attached to normal row n has a slip velocity sⱼ, linear in q̇ (the tangential relative
+//! velocity at the contact, written with ẋ). Its generalized force is fⱼ·Sⱼ, fⱼ being the tangential
+//! force along the slip direction:
+//! - **sliding** (sⱼ ≠ 0): fⱼ = −μₖ·sign(sⱼ)·|λₙ| (Coulomb's law; the friction force opposes the slip and
+//!   its magnitude is proportional to the normal force, which itself depends on q̈, so the two are
+//!   solved together: the Schur matrix R M⁻¹ Wᵀ is then not symmetric and is solved by LU);
+//! - **sticking** (sⱼ = 0): the row is an active velocity constraint sⱼ = 0 and fⱼ = λⱼ is its
+//!   multiplier, admissible while |λⱼ| ≤ μₛ|λₙ|.
+//!
+//! Friction is planar (a scalar slip velocity per row). For a contact in space declare two rows with
+//! the two tangent directions: that is the *anisotropic* (box) Coulomb law, not the circular cone.
+//!
+//! # Modes and events
+//!
+//! Which rows are enforced is the [`Mode`]: unilateral rows are in contact or separated, friction
+//! rows stick or slide in one direction. [`infer_mode`] reads it from a state by complementarity
+//! (a contact with c ≈ 0 and ċ ≈ 0 is active if its λ ≥ 0; a slip velocity ≈ 0 sticks if static
+//! friction can hold it). [`ContactRk4`] integrates with the mode fixed during a step and locates the
+//! instant a mode changes — contact, release (λ = 0), slip velocity reaching 0, static friction
+//! exceeded — to 1e-12 relative by the Illinois method on the step length, so mode changes happen
+//! exactly once and never chatter.
+//!
+//! **Impact law**: when a separated unilateral contact closes (c reaches 0 with ċ < 0), the
+//! velocities jump by an impulse along the contact row (and the other active rows, which stay
+//! satisfied): q̇⁺ = q̇⁻ + M⁻¹Rᵀp with ċ⁺ = −e·ċ⁻, e the [`ContactOptions::restitution`] (Newton's
+//! restitution law; e = 0, the default, is a plastic impact after which the contact is active). The
+//! impulse is frictionless (no tangential impulse). The kinetic energy lost is ½(1 − e²)·(ċ⁻)²/(R M⁻¹ Rᵀ).
+//!
+//! # Drift
+//!
+//! Integrating the acceleration-level equations lets g and ġ drift (Hairer & Wanner II, §VII.2).
+//! After each step, [`project`] moves q back onto the active position constraints by the
+//! mass-weighted least-norm Newton correction q ← q − M⁻¹Gᵀ(GM⁻¹Gᵀ)⁻¹g (iterated to round-off), then
+//! q̇ onto the active velocity-level constraints, q̇ ← q̇ − M⁻¹Rᵀ(RM⁻¹Rᵀ)⁻¹(Rq̇ + r_t), which is exact
+//! because they are linear in q̇ (the "coordinate projection" of Hairer & Wanner II, §VII.2,
+//! eq. (2.19) ff., in the metric of M, so the correction removes the least kinetic energy).
+//!
+//! # Only what is declared
+//!
+//! Every branch on [`Constraints::KINDS`] is on a constant, so a mechanism with only holonomic rows
+//! carries no velocity-row, contact or friction code after monomorphization, and a mechanism without
+//! constraints does not implement [`Constraints`] at all (no KKT solve).
+
+mod contact;
+mod solve;
+
+pub use contact::{ContactOptions, ContactRk4, ModeChange};
+pub use solve::{
+    accelerations, accelerations_in_mode, check_consistent, consistent_state, constraint_forces,
+    constraint_rows, infer_mode, project, ConstrainedAccelerations, ConstraintForces,
+    ConstraintRows, CONSISTENCY_TOLERANCE,
+};
+
+use crate::geometry::Scalar;
+use crate::model::Model;
+
+/// What one constraint row declares. See the [module docs](self) for the equations.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ConstraintKind {
+    /// g(q, t, x) = 0, from [`Constraints::position_constraints`].
+    Holonomic,
+    /// h(q, q̇, t, x, ẋ) = A(q, t) q̇ + a(q, t) = 0, from [`Constraints::velocity_constraints`].
+    Velocity,
+    /// c(q, t, x) ≥ 0, from [`Constraints::position_constraints`]; the force can only push (λ ≥ 0).
+    Unilateral,
+    /// Coulomb friction at the contact of row `normal` (a holonomic, velocity or unilateral row,
+    /// not a friction row): the slip velocity s(q, q̇, t, x, ẋ), linear in q̇, comes from
+    /// [`Constraints::velocity_constraints`]; coefficients from [`Constraints::friction_coefficients`].
+    Friction {
+        /// Index of the row whose multiplier is the normal force.
+        normal: usize,
+    },
+}
+
+impl ConstraintKind {
+    /// Whether the row is declared by a position-level function (holonomic or unilateral).
+    pub const fn is_position(self) -> bool {
+        matches!(self, ConstraintKind::Holonomic | ConstraintKind::Unilateral)
+    }
+    /// Whether the row is declared by a velocity-level function (velocity constraint or slip).
+    pub const fn is_velocity(self) -> bool {
+        matches!(
+            self,
+            ConstraintKind::Velocity | ConstraintKind::Friction { .. }
+        )
+    }
+}
+
+/// Coulomb friction coefficients of a friction row.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Coulomb {
+    /// μₖ: sliding friction, |f| = μₖ|λₙ| while slipping.
+    pub kinetic: f64,
+    /// μₛ ≥ μₖ: sticking holds while |f| ≤ μₛ|λₙ|.
+    pub stiction: f64,
+}
+
+/// The state of one constraint row in a [`Mode`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RowMode {
+    /// Enforced (holonomic and velocity rows always; a unilateral row in contact).
+    Active,
+    /// Not enforced: a separated unilateral row, or a friction row whose contact is separated.
+    Inactive,
+    /// A friction row with zero slip, enforced as s = 0.
+    Stick,
+    /// A friction row sliding with s > 0.
+    SlipPositive,
+    /// A friction row sliding with s < 0.
+    SlipNegative,
+}
+
+/// Which constraint rows are enforced, and how friction rows act.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Mode<const C: usize> {
+    /// One entry per row, in declaration order.
+    pub rows: [RowMode; C],
+}
+
+impl<const C: usize> Mode<C> {
+    /// Every row enforced: holonomic, velocity and unilateral rows active, friction rows sticking.
+    pub fn all_active<M: Constraints<N, K, C>, const N: usize, const K: usize>() -> Self {
+        Mode {
+            rows: std::array::from_fn(|i| match M::KINDS[i] {
+                ConstraintKind::Friction { .. } => RowMode::Stick,
+                _ => RowMode::Active,
+            }),
+        }
+    }
+    /// Whether row `i` is enforced as a constraint (contributes a row to the KKT system).
+    pub fn enforced(&self, i: usize) -> bool {
+        matches!(self.rows[i], RowMode::Active | RowMode::Stick)
+    }
+}
+
+/// The constraints of a mechanism: what `#[constraint]`, `#[velocity_constraint]`, `#[unilateral]`
+/// and `#[friction]` items compile to, on top of its [`Model`].
+///
+/// # Contract for implementors (the `#[mechanism]` expansion)
+///
+/// `C` is the number of rows, in declaration order; each declaration item is one row (a friction
+/// item is its own row, after or before its contact row, pointing at it by index).
+///
+/// - [`NAMES`](Self::NAMES): the item names, used in error messages.
+/// - [`KINDS`](Self::KINDS): one [`ConstraintKind`] per row. For `Friction { normal }`, `normal`
+///   must index a row of another kind. Checked by [`check_declaration`].
+/// - [`position_constraints`](Self::position_constraints) returns one value per row: g(q, t, x)
+///   for holonomic rows, c(q, t, x) for unilateral rows (≥ 0 means admissible, the force pushes
+///   towards increasing c) and **zero for every other row**. `x` is [`Model::cartesian`] at the
+///   same (t, q), so constraints can be written on body positions. It must not read velocities.
+///   It is evaluated on `f64`, gradient duals (for ∂/∂q), second-order duals (for β) and nested duals,
+///   so it must be written generically, like `cartesian`.
+/// - [`velocity_constraints`](Self::velocity_constraints) returns one value per row: h for
+///   velocity rows, the slip velocity s for friction rows (its sign defines the slip direction; the
+///   friction force opposes it) and **zero for every other row**. `x_dot` is ẋ = J q̇ + ∂x/∂t at the
+///   same state. The function must be affine in `v` (and in `x_dot`, which is affine in `v`):
+///   h(q, v) = A(q, t) v + a(q, t). This is checked at run time by [`check_consistent`]
+///   ([`Error::NonlinearVelocityConstraint`](crate::Error::NonlinearVelocityConstraint)).
+/// - Explicit time dependence: if any constraint reads `t`, [`Model::RHEONOMIC`] must be `true`
+///   (otherwise the time derivatives are not seeded and the constraint is treated as frozen in time).
+/// - [`friction_coefficients`](Self::friction_coefficients)`(i)` for each friction row `i`
+///   (parameters of the mechanism, so a method, not a constant); [`validate_constraints`](Self::validate_constraints)
+///   checks them (finite, 0 ≤ μₖ ≤ μₛ) and is called by the steppers.
+///
+/// The generated `Mechanism` impl then overrides
+/// [`Mechanism::accelerations_at`](crate::Mechanism::accelerations_at) with [`accelerations`],
+/// [`Mechanism::project`](crate::Mechanism::project) with [`project`] in the [`infer_mode`]d mode, and
+/// [`Mechanism::check_constraints`](crate::Mechanism::check_constraints) with [`check_consistent`],
+/// so every integrator enforces the constraints; see `tests/constraints.rs` for the exact code.
+pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, K> {
+    /// Row names, in declaration order.
+    const NAMES: [&'static str; C];
+    /// Row kinds, in declaration order.
+    const KINDS: [ConstraintKind; C];
+
+    /// g or c for position rows (holonomic, unilateral); zero for the others.
+    fn position_constraints<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> [D; C];
+
+    /// h for velocity rows, the slip velocity for friction rows; zero for the others. Affine in `v`.
+    fn velocity_constraints<D: Scalar>(
+        &self,
+        t: D,
+        q: &[D; N],
+        v: &[D; N],
+        x: &[D; K],
+        x_dot: &[D; K],
+    ) -> [D; C] {
+        let _ = (t, q, v, x, x_dot);
+        [D::zero(); C]
+    }
+
+    /// Coulomb coefficients of friction row `row` (ignored for other rows).
+    fn friction_coefficients(&self, row: usize) -> Coulomb {
+        let _ = row;
+        Coulomb::default()
+    }
+
+    /// Checks the friction coefficients: finite and 0 ≤ μₖ ≤ μₛ. (μₖ > μₛ would let a stuck contact
+    /// start sliding against the direction static friction resists, an inconsistent mode.)
+    fn validate_constraints(&self) -> crate::Result<()> {
+        check_declaration::<Self, N, K, C>()?;
+        for (i, kind) in Self::KINDS.iter().enumerate() {
+            if let ConstraintKind::Friction { .. } = kind {
+                let Coulomb { kinetic, stiction } = self.friction_coefficients(i);
+                if !(kinetic.is_finite()
+                    && stiction.is_finite()
+                    && 0.0 <= kinetic
+                    && kinetic <= stiction)
+                {
+                    return Err(crate::Error::InvalidFriction {
+                        constraint: Self::NAMES[i],
+                        kinetic,
+                        stiction,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Checks [`Constraints::KINDS`]: each friction row points at a non-friction row.
+pub fn check_declaration<
+    M: Constraints<N, K, C> + ?Sized,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>() -> crate::Result<()> {
+    for (i, kind) in M::KINDS.iter().enumerate() {
+        if let ConstraintKind::Friction { normal } = *kind {
+            if normal >= C || matches!(M::KINDS[normal], ConstraintKind::Friction { .. }) {
+                return Err(crate::Error::InvalidConstraintDeclaration {
+                    constraint: M::NAMES[i],
+                    reason: format!("friction must point at a contact row, got row {normal}"),
+                });
+            }
+        }
+    }
+    Ok(())
+}
