@@ -7,6 +7,29 @@ use syn::{
     Attribute, Block, Ident, Item, ItemMod, ItemStruct, ReturnType, Signature, Type, Visibility,
 };
 
+/// What `lagrange::prelude` exports.
+const LAGRANGE_PRELUDE: &[&str] = &[
+    "planar",
+    "rot_x",
+    "rot_y",
+    "rot_z",
+    "spatial",
+    "vec2",
+    "vec3",
+    "Planar",
+    "Rot3",
+    "Spatial",
+    "Vec2",
+    "Vec3",
+    "Coordinates",
+    "Error",
+    "Integrator",
+    "Mechanism",
+    "Rk4",
+    "State",
+    "mechanism",
+];
+
 /// One `f64` field of the coordinates or parameters struct.
 #[derive(Clone)]
 pub struct Field {
@@ -162,12 +185,35 @@ impl Mechanism {
     }
 
     fn record_use(&mut self, tree: &syn::UseTree) {
+        self.record_use_under(&mut Vec::new(), tree);
+    }
+
+    fn record_use_under(&mut self, prefix: &mut Vec<String>, tree: &syn::UseTree) {
         match tree {
-            syn::UseTree::Path(p) => self.record_use(&p.tree),
+            syn::UseTree::Path(p) => {
+                prefix.push(p.ident.to_string());
+                self.record_use_under(prefix, &p.tree);
+                prefix.pop();
+            }
             syn::UseTree::Name(n) => self.item_names.push(n.ident.clone()),
             syn::UseTree::Rename(r) => self.item_names.push(r.rename.clone()),
+            // `use lagrange::prelude::*;` brings in names we know.
+            syn::UseTree::Glob(g)
+                if prefix
+                    .iter()
+                    .map(String::as_str)
+                    .eq(["lagrange", "prelude"]) =>
+            {
+                let names = LAGRANGE_PRELUDE
+                    .iter()
+                    .map(|n| Ident::new(n, g.star_token.span));
+                self.item_names.extend(names);
+            }
             syn::UseTree::Glob(_) => self.has_glob_import = true,
-            syn::UseTree::Group(g) => g.items.iter().for_each(|t| self.record_use(t)),
+            syn::UseTree::Group(g) => g
+                .items
+                .iter()
+                .for_each(|t| self.record_use_under(prefix, t)),
         }
     }
 

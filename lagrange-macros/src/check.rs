@@ -13,7 +13,7 @@ pub const GEOMETRY_FUNCTIONS: &[&str] = &[
     "vec2", "vec3", "planar", "spatial", "rot_x", "rot_y", "rot_z",
 ];
 /// Single-segment values of Rust's prelude.
-const PRELUDE_VALUES: &[&str] = &["Some", "None", "Ok", "Err", "drop", "self", "Self"];
+const PRELUDE_VALUES: &[&str] = &["Some", "None", "Ok", "Err", "drop"];
 
 /// Dimension of a vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -340,12 +340,24 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
         }
         Kind::Gravity => {
             // `#[gravity] fn down() -> f64`: gravity is a field vector.
-            let dim = vector_dim(expect_return_type(
-                cx,
-                decl,
-                &["Vec2", "Vec3"],
-                "the field vector g",
-            ));
+            let name = expect_return_type(cx, decl, &["Vec2", "Vec3"], "the field vector g");
+            let dim = vector_dim(name.clone());
+            let acts_on_something = model
+                .bodies
+                .iter()
+                .any(|b| b.shape.has_mass() && b.shape.dim() == dim);
+            // `#[gravity] fn down() -> Vec3` when every body moves in the plane: it acts on nothing.
+            if name.is_some() && !acts_on_something {
+                let (field, bodies) = if dim == Dim::Two {
+                    ("Vec2", "the plane")
+                } else {
+                    ("Vec3", "space")
+                };
+                cx.error_spanned_by(
+                    decl.output(),
+                    format!("a `{field}` field acts on bodies in {bodies}, and there are none"),
+                );
+            }
             model.gravities.push((decl, dim));
             Context::Potential
         }
@@ -580,6 +592,10 @@ impl Resolver<'_, '_> {
     fn resolve(&self, cx: &Ctxt, ident: &Ident) -> Option<Name> {
         let name = self.lookup(ident);
         match (self.context, name) {
+            // `fn bob() -> Vec2 { vec2(self.l, 0.0) }`: parameters are named directly.
+            (_, None) if ident == "self" => {
+                cx.error_spanned_by(ident, "declaration functions have no `self`: name parameters directly (`l`, not `self.l`)")
+            }
             (_, None) => {
                 // `vec2(theta.sin(), 0.0) * lenght`: a typo, or something not in scope.
                 if !self.model.mechanism.has_glob_import {

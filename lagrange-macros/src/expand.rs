@@ -39,10 +39,9 @@ pub(crate) fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
         return errors_then(cx, quote!(#module));
     };
     let model = check::check(&cx, &mechanism);
-    match (cx.check(), model) {
-        (Ok(()), Some(model)) => generate(&model),
-        (Err(errors), _) => fallback(&mechanism, errors),
-        (Ok(()), None) => unreachable!("the checks report why there is no model"),
+    match cx.check() {
+        Ok(()) => generate(&model.expect("the checks report why there is no model")),
+        Err(errors) => fallback(&mechanism, model.as_ref(), errors),
     }
 }
 
@@ -110,11 +109,12 @@ fn generate(model: &Model) -> TokenStream {
 fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
     let p = private();
     let n = lit(coords.len());
+    // The user's attributes but their derives: `Coords` derives what it needs itself.
     let attrs = mechanism
         .coords
-        .as_ref()
-        .map(|(s, _)| &s.attrs[..])
-        .unwrap_or_default();
+        .iter()
+        .flat_map(|(s, _)| &s.attrs)
+        .filter(|a| !a.path().is_ident("derive"));
     let vis = mechanism
         .coords
         .as_ref()
@@ -710,7 +710,7 @@ fn mechanism_impl(params: &Ident, n: usize, k: usize) -> TokenStream {
 /// On error: the user's items, stubs for what the rest of their code names (`Coords`, the
 /// parameter struct, `State`, a `Mechanism` impl that is never run), and every error. So one
 /// mistake gives one message, not a cascade of rustc errors about missing items.
-fn fallback(mechanism: &Mechanism, errors: Vec<syn::Error>) -> TokenStream {
+fn fallback(mechanism: &Mechanism, model: Option<&Model>, errors: Vec<syn::Error>) -> TokenStream {
     let p = private();
     let (attrs, vis, ident) = (&mechanism.attrs, &mechanism.vis, &mechanism.ident);
     let other_items = &mechanism.other_items;
@@ -731,8 +731,19 @@ fn fallback(mechanism: &Mechanism, errors: Vec<syn::Error>) -> TokenStream {
         }
         let ident = &s.ident;
         let unreachable = quote!(#p::core::unreachable!("this mechanism failed to compile"));
+        let bodies = model.filter(|m| bodies_are_unique(m)).map(|model| {
+            let structs = bodies_structs(model);
+            quote! {
+                #structs
+                impl #ident {
+                    pub fn bodies(&self, state: &State) -> Bodies { #unreachable }
+                    pub fn body_velocities(&self, state: &State) -> BodyVelocities { #unreachable }
+                }
+            }
+        });
         quote! {
             #s
+            #bodies
             impl #p::Mechanism<#n> for #ident {
                 type Coords = Coords;
                 fn validate(&self) -> #p::Result<()> { #unreachable }
@@ -755,6 +766,16 @@ fn fallback(mechanism: &Mechanism, errors: Vec<syn::Error>) -> TokenStream {
             #errors
         }
     }
+}
+
+/// Whether `Bodies` can be written: at least one body, no name twice.
+fn bodies_are_unique(model: &Model) -> bool {
+    let mut seen = BTreeSet::new();
+    !model.bodies.is_empty()
+        && model
+            .bodies
+            .iter()
+            .all(|b| seen.insert(b.decl.ident().to_string()))
 }
 
 /// Fields with repeated names dropped (the repeat was reported).

@@ -32,4 +32,5 @@ fn main() {
     let sys = DoublePendulum { m1: 1.0, m2: 1.0, l1: 1.0, l2: 1.0 };
     let s = State::at_rest(Coords { theta1: 1.0, theta2: 0.5 });
     let _ = sys.accelerations(&s);
+    let _ = sys.bodies(&s).bob2.x;
 }

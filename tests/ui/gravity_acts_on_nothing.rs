@@ -1,0 +1,25 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod pendulum {
+    pub struct Coords {
+        pub theta: f64,
+    }
+
+    pub struct Pendulum {
+        pub m: f64,
+        pub length: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * length
+    }
+
+    #[gravity]
+    fn down() -> Vec3 {
+        vec3(0.0, 0.0, -9.81)
+    }
+}
+
+fn main() {}

@@ -1,0 +1,22 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod pendulum {
+    use lagrange::prelude::*;
+
+    pub struct Coords {
+        pub theta: f64,
+    }
+
+    pub struct Pendulum {
+        pub m: f64,
+        pub length: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * lenght as f64
+    }
+}
+
+fn main() {}
