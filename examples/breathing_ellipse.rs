@@ -17,6 +17,7 @@ pub mod breathing_ellipse {
         pub phi: f64,
     }
 
+    #[derive(Clone, Copy, Debug, PartialEq)]
     pub struct BreathingEllipse {
         pub m: f64,
         pub a0: f64,
@@ -43,13 +44,21 @@ const SCENE: &str = "bead on a breathing ellipse";
 
 pub fn run(plots: &Path) -> Vec<Check> {
     use breathing_ellipse::{BreathingEllipse, Coords, State};
-    let sys = BreathingEllipse { m: 0.5, a0: 1.0, b0: 0.7, eps: 0.2, omega: 3.0, g: 9.81 };
+    let sys = BreathingEllipse {
+        m: 0.5,
+        a0: 1.0,
+        b0: 0.7,
+        eps: 0.2,
+        omega: 3.0,
+        g: 9.81,
+    };
     let mut s = State::new(0.0, Coords { phi: 1.0 }, Coords { phi: 0.0 });
     let (h, steps) = (1e-3, 6000); // an even number of steps, for Simpson's rule
     let h0 = sys.energy_function(&s).expect("h");
     let e0 = sys.energy(&s).expect("T + V");
     let mut rate = vec![sys.lagrangian_time_derivative(&s).expect("dL/dt")];
-    let (mut h_trace, mut e_trace, mut integral_trace) = (vec![(0.0, h0)], vec![(0.0, e0)], vec![(0.0, h0)]);
+    let (mut h_trace, mut e_trace, mut integral_trace) =
+        (vec![(0.0, h0)], vec![(0.0, e0)], vec![(0.0, h0)]);
     let (mut e_min, mut e_max) = (e0, e0);
     sys.simulate::<Rk4>(&mut s, h, steps, |s| {
         rate.push(sys.lagrangian_time_derivative(s).expect("dL/dt"));
@@ -83,7 +92,13 @@ pub fn run(plots: &Path) -> Vec<Check> {
     // RK4's global error at h = 1e-3 with frequencies ≲ 5/s is ~ (hω)⁴·ωT ≈ 1e-9 relative in the
     // state; Simpson's rule on the same samples errs by O(h⁴) ≈ 1e-12. The change of h is O(1) J,
     // so 1e-7 relative is met with a margin that still catches any missing ∂/∂t term (those are O(1)).
-    vec![Check::new(SCENE, "h(6 s) − h(0) against −∫ ∂L/∂t dt", h_end - h0, predicted_change, 1e-7)]
+    vec![Check::new(
+        SCENE,
+        "h(6 s) − h(0) against −∫ ∂L/∂t dt",
+        h_end - h0,
+        predicted_change,
+        1e-7,
+    )]
 }
 
 /// Composite Simpson rule over equally spaced samples (odd count).

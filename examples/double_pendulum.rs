@@ -16,6 +16,7 @@ pub mod double_pendulum {
         pub theta2: f64,
     }
 
+    #[derive(Clone, Copy, Debug, PartialEq)]
     pub struct DoublePendulum {
         pub m1: f64,
         pub m2: f64,
@@ -58,10 +59,17 @@ pub fn closed_form(p: &double_pendulum::DoublePendulum, q: [f64; 2], v: [f64; 2]
 const SCENE: &str = "double pendulum";
 
 /// Maximum relative energy error of RK4 over `duration` at step `h`, and the trace.
-fn energy_run(sys: &double_pendulum::DoublePendulum, h: f64, duration: f64) -> (f64, Vec<(f64, f64)>) {
+fn energy_run(
+    sys: &double_pendulum::DoublePendulum,
+    h: f64,
+    duration: f64,
+) -> (f64, Vec<(f64, f64)>) {
     use double_pendulum::{Coords, State};
     let half_pi = std::f64::consts::FRAC_PI_2;
-    let mut s = State::at_rest(Coords { theta1: half_pi, theta2: half_pi });
+    let mut s = State::at_rest(Coords {
+        theta1: half_pi,
+        theta2: half_pi,
+    });
     let e0 = sys.energy(&s).expect("energy");
     let scale = sys.m1 * sys.g * sys.l1 + sys.m2 * sys.g * (sys.l1 + sys.l2); // |V| at the bottom
     let mut worst = 0.0f64;
@@ -83,9 +91,25 @@ fn energy_run(sys: &double_pendulum::DoublePendulum, h: f64, duration: f64) -> (
 
 pub fn run(plots: &Path) -> Vec<Check> {
     use double_pendulum::{Coords, DoublePendulum, State};
-    let sys = DoublePendulum { m1: 1.0, m2: 1.0, l1: 1.0, l2: 1.0, g: 9.81 };
+    let sys = DoublePendulum {
+        m1: 1.0,
+        m2: 1.0,
+        l1: 1.0,
+        l2: 1.0,
+        g: 9.81,
+    };
     let (q, v) = ([0.7, -2.1], [1.3, -0.4]);
-    let s = State::new(0.0, Coords { theta1: q[0], theta2: q[1] }, Coords { theta1: v[0], theta2: v[1] });
+    let s = State::new(
+        0.0,
+        Coords {
+            theta1: q[0],
+            theta2: q[1],
+        },
+        Coords {
+            theta1: v[0],
+            theta2: v[1],
+        },
+    );
     let got = sys.accelerations(&s).expect("accelerations");
     let want = closed_form(&sys, q, v);
 
@@ -98,18 +122,45 @@ pub fn run(plots: &Path) -> Vec<Check> {
         "Double pendulum from horizontal: relative energy error of RK4",
         "t",
         "ΔE / |V₀|",
-        &[Series::new("h = 1e-3", trace), Series::new("h = 2e-3", coarse_trace)],
+        &[
+            Series::new("h = 1e-3", trace),
+            Series::new("h = 2e-3", coarse_trace),
+        ],
     );
     vec![
         // Same arithmetic in a different order: agreement to a few ulps of the largest term.
-        Check::new(SCENE, "θ̈₁ against the closed form", got.theta1, want[0], 1e-12),
-        Check::new(SCENE, "θ̈₂ against the closed form", got.theta2, want[1], 1e-12),
+        Check::new(
+            SCENE,
+            "θ̈₁ against the closed form",
+            got.theta1,
+            want[0],
+            1e-12,
+        ),
+        Check::new(
+            SCENE,
+            "θ̈₂ against the closed form",
+            got.theta2,
+            want[1],
+            1e-12,
+        ),
         // RK4's energy error per step is O(h⁵) with a constant set by the fastest motion (the
         // chaotic swings reach |θ̇| ≈ 10/s); over 10⁵ steps it stays below 1e-6 of |V₀|. The ratio of
         // the two runs is 2⁴ = 16 for an order-4 method; chaos makes the two trajectories differ, so
         // only the order of magnitude is asserted: the ratio lies between 2³ and 2⁵.
-        Check::new(SCENE, "max |ΔE|/|V₀| over 10⁵ steps (≤ 1e-6)", fine, 0.0, 1e-6),
-        Check::new(SCENE, "log₂ of energy-error ratio for h → 2h (order 4)", (coarse / fine).log2(), 4.0, 0.25),
+        Check::new(
+            SCENE,
+            "max |ΔE|/|V₀| over 10⁵ steps (≤ 1e-6)",
+            fine,
+            0.0,
+            1e-6,
+        ),
+        Check::new(
+            SCENE,
+            "log₂ of energy-error ratio for h → 2h (order 4)",
+            (coarse / fine).log2(),
+            4.0,
+            0.25,
+        ),
     ]
 }
 

@@ -43,7 +43,12 @@ fn main() {
     println!();
     print!("{}", table(&checks));
     let failed = checks.iter().filter(|c| !c.passed()).count();
-    println!("\n{} checks, {} failed; plots in {}", checks.len(), failed, plots.display());
+    println!(
+        "\n{} checks, {} failed; plots in {}",
+        checks.len(),
+        failed,
+        plots.display()
+    );
     if failed > 0 {
         std::process::exit(1);
     }

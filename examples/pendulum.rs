@@ -16,6 +16,7 @@ pub mod pendulum {
         pub theta: f64,
     }
 
+    #[derive(Clone, Copy, Debug, PartialEq)]
     pub struct Pendulum {
         pub m: f64,
         pub l: f64,
@@ -37,7 +38,11 @@ const SCENE: &str = "large-amplitude pendulum";
 
 pub fn run(plots: &Path) -> Vec<Check> {
     use pendulum::{Coords, Pendulum, State};
-    let sys = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+    let sys = Pendulum {
+        m: 1.0,
+        l: 1.0,
+        g: 9.81,
+    };
     let theta0 = 3.0;
     let k = (theta0 / 2.0_f64).sin();
     let period = 4.0 * elliptic_k(k) * (sys.l / sys.g).sqrt();
@@ -64,16 +69,37 @@ pub fn run(plots: &Path) -> Vec<Check> {
         "t",
         "θ",
         &[
-            Series::new("θ(t)", times.iter().copied().zip(thetas.iter().copied()).collect()),
-            Series::new("small-amplitude θ₀ cos(√(g/L) t)", times.iter().map(|&t| (t, theta0 * (t * (sys.g / sys.l).sqrt()).cos())).collect()),
+            Series::new(
+                "θ(t)",
+                times.iter().copied().zip(thetas.iter().copied()).collect(),
+            ),
+            Series::new(
+                "small-amplitude θ₀ cos(√(g/L) t)",
+                times
+                    .iter()
+                    .map(|&t| (t, theta0 * (t * (sys.g / sys.l).sqrt()).cos()))
+                    .collect(),
+            ),
         ],
     );
     // RK4 with h = 1e-3 near the separatrix (k = 0.997): global phase error ~ T·(h/τ)⁴ with the
     // shortest time scale τ ≈ √(L/g) ≈ 0.32 s gives ~1e-9 relative; the Hermite crossing adds O(h⁴).
     vec![
-        Check::new(SCENE, "period from θ₀ = 3 rad, 4K(k)√(L/g)", crossing * 4.0 / 3.0, period, 1e-8),
+        Check::new(
+            SCENE,
+            "period from θ₀ = 3 rad, 4K(k)√(L/g)",
+            crossing * 4.0 / 3.0,
+            period,
+            1e-8,
+        ),
         // Energy: RK4's relative energy error per period at this step is ~ (h/τ)⁴ ≈ 1e-9.
-        Check::new(SCENE, "energy after one period (conserved)", sys.energy(&s).expect("energy"), e0, 1e-8),
+        Check::new(
+            SCENE,
+            "energy after one period (conserved)",
+            sys.energy(&s).expect("energy"),
+            e0,
+            1e-8,
+        ),
     ]
 }
 

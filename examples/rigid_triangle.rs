@@ -18,6 +18,7 @@ pub mod three_particles {
     }
 
     /// Masses and body-frame offsets (from the pivot) of the three particles.
+    #[derive(Clone, Copy, Debug, PartialEq)]
     pub struct ThreeParticles {
         pub m1: f64,
         pub m2: f64,
@@ -59,6 +60,7 @@ pub mod lamina {
     }
 
     /// Total mass, centre of mass offset (body frame, from the pivot), inertia about the centre.
+    #[derive(Clone, Copy, Debug, PartialEq)]
     pub struct Lamina {
         pub mass: f64,
         pub inertia: f64,
@@ -97,13 +99,34 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let masses = [p.m1, p.m2, p.m3];
     let offsets = [(p.x1, p.y1), (p.x2, p.y2), (p.x3, p.y3)];
     let mass: f64 = masses.iter().sum();
-    let cx = masses.iter().zip(&offsets).map(|(m, o)| m * o.0).sum::<f64>() / mass;
-    let cy = masses.iter().zip(&offsets).map(|(m, o)| m * o.1).sum::<f64>() / mass;
-    let inertia: f64 = masses.iter().zip(&offsets).map(|(m, o)| m * ((o.0 - cx).powi(2) + (o.1 - cy).powi(2))).sum();
-    let body = lamina::Lamina { mass, inertia, cx, cy, g: p.g };
+    let cx = masses
+        .iter()
+        .zip(&offsets)
+        .map(|(m, o)| m * o.0)
+        .sum::<f64>()
+        / mass;
+    let cy = masses
+        .iter()
+        .zip(&offsets)
+        .map(|(m, o)| m * o.1)
+        .sum::<f64>()
+        / mass;
+    let inertia: f64 = masses
+        .iter()
+        .zip(&offsets)
+        .map(|(m, o)| m * ((o.0 - cx).powi(2) + (o.1 - cy).powi(2)))
+        .sum();
+    let body = lamina::Lamina {
+        mass,
+        inertia,
+        cx,
+        cy,
+        g: p.g,
+    };
 
-    let theta0 = 1.2;
-    let exact_acc = -mass * p.g * (cx * theta0.cos() - cy * theta0.sin()) / (inertia + mass * (cx * cx + cy * cy));
+    let theta0: f64 = 1.2;
+    let exact_acc = -mass * p.g * (cx * theta0.cos() - cy * theta0.sin())
+        / (inertia + mass * (cx * cx + cy * cy));
     let mut a = three_particles::State::at_rest(three_particles::Coords { theta: theta0 });
     let mut b = lamina::State::at_rest(lamina::Coords { theta: theta0 });
     let acc_particles = particles.accelerations(&a).expect("accelerations").theta;
@@ -121,15 +144,36 @@ pub fn run(plots: &Path) -> Vec<Check> {
         "Three particles and the equivalent rigid body: θ(t)",
         "t",
         "θ",
-        &[Series::new("three particles", trace_a), Series::new("one planar rigid body", trace_b)],
+        &[
+            Series::new("three particles", trace_a),
+            Series::new("one planar rigid body", trace_b),
+        ],
     );
     vec![
         // Closed form and both declarations: a few dozen flops each, round-off apart.
-        Check::new(SCENE, "θ̈ of three particles against closed form", acc_particles, exact_acc, 1e-13),
-        Check::new(SCENE, "θ̈ of rigid body against closed form", acc_body, exact_acc, 1e-13),
+        Check::new(
+            SCENE,
+            "θ̈ of three particles against closed form",
+            acc_particles,
+            exact_acc,
+            1e-13,
+        ),
+        Check::new(
+            SCENE,
+            "θ̈ of rigid body against closed form",
+            acc_body,
+            exact_acc,
+            1e-13,
+        ),
         // Same ODE, same method and steps, different round-off: a non-chaotic 1-DOF pendulum keeps
         // the difference at the level of accumulated round-off, ~5000·ε·|θ| ≈ 1e-12 (absolute).
-        Check::new(SCENE, "max |θ_particles − θ_body| over 5 s", worst, 0.0, 1e-11),
+        Check::new(
+            SCENE,
+            "max |θ_particles − θ_body| over 5 s",
+            worst,
+            0.0,
+            1e-11,
+        ),
     ]
 }
 

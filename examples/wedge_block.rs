@@ -22,6 +22,7 @@ pub mod wedge_block {
         pub d: f64,
     }
 
+    #[derive(Clone, Copy, Debug, PartialEq)]
     pub struct WedgeBlock {
         pub wedge_mass: f64,
         pub block_mass: f64,
@@ -50,7 +51,13 @@ const SCENE: &str = "wedge and block";
 
 pub fn run(plots: &Path) -> Vec<Check> {
     use wedge_block::{Coords, State, WedgeBlock};
-    let sys = WedgeBlock { wedge_mass: 3.0, block_mass: 1.0, alpha: 0.5, h: 1.0, g: 9.81 };
+    let sys = WedgeBlock {
+        wedge_mass: 3.0,
+        block_mass: 1.0,
+        alpha: 0.5,
+        h: 1.0,
+        g: 9.81,
+    };
     let (big_m, m, a, g) = (sys.wedge_mass, sys.block_mass, sys.alpha, sys.g);
     let den = big_m + m * a.sin().powi(2);
     let x_acc = -m * g * a.sin() * a.cos() / den;
@@ -82,12 +89,36 @@ pub fn run(plots: &Path) -> Vec<Check> {
     // round-off accumulated over 400 steps (≲ 400·ε ≈ 1e-13).
     vec![
         Check::new(SCENE, "wedge acceleration Ẍ", qdd.x, x_acc, 1e-13),
-        Check::new(SCENE, "block acceleration d̈ along incline", qdd.d, d_acc, 1e-13),
-        Check::new(SCENE, format!("wedge position X(t = {t:.1})"), s.q.x, 0.5 * x_acc * t * t, 1e-12),
-        Check::new(SCENE, format!("block distance d(t = {t:.1})"), s.q.d, 0.5 * d_acc * t * t, 1e-12),
+        Check::new(
+            SCENE,
+            "block acceleration d̈ along incline",
+            qdd.d,
+            d_acc,
+            1e-13,
+        ),
+        Check::new(
+            SCENE,
+            format!("wedge position X(t = {t:.1})"),
+            s.q.x,
+            0.5 * x_acc * t * t,
+            1e-12,
+        ),
+        Check::new(
+            SCENE,
+            format!("block distance d(t = {t:.1})"),
+            s.q.d,
+            0.5 * d_acc * t * t,
+            1e-12,
+        ),
         // p_X = ∂L/∂Ẋ is conserved (X is cyclic) and zero from rest: checked as an absolute error
         // against the momentum scale m·ḋ ≈ 2.6, round-off level.
-        Check::new(SCENE, "max |p_X| over the run (conserved, 0)", worst_momentum, 0.0, 1e-12),
+        Check::new(
+            SCENE,
+            "max |p_X| over the run (conserved, 0)",
+            worst_momentum,
+            0.0,
+            1e-12,
+        ),
     ]
 }
 
