@@ -1,0 +1,681 @@
+//! `cargo run --release -p lagrange-bench --bin work-precision [-- --quick] [--out DIR]`
+//!
+//! What accuracy costs: every integrator of `lagrange-core` over a ladder of step sizes (fixed-step
+//! methods) or tolerances (Dopri5), on problems with exact or high-precision reference solutions,
+//! with the `ode_solvers` crate's Dopri5 and Dop853 on hand-written equations of the same problems
+//! as a peer. For each (problem, method, setting) it records the end-point error (max norm over q
+//! and v), the maximum energy error over the run, right-hand-side evaluations (and Jacobian
+//! evaluations of the implicit methods) and the wall time (minimum over repeats after a warm-up run,
+//! which is also the run that tracks the energy). Writes `results.csv`, `report.md` and SVG plots
+//! into `reports/work-precision/` (or `--out DIR`).
+
+mod plot;
+mod problems;
+
+use lagrange_core::integrate::ImplicitStepStats;
+use lagrange_core::{
+    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State, StormerVerlet,
+    Variational,
+};
+use problems::*;
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// One measured run.
+#[derive(Clone, Debug)]
+struct Row {
+    problem: &'static str,
+    method: String,
+    /// "h = …" or "tol = …".
+    setting: String,
+    /// Step size or tolerance, for sorting.
+    setting_value: f64,
+    steps: usize,
+    rhs_evals: usize,
+    jacobian_evals: usize,
+    seconds: f64,
+    end_error: f64,
+    max_energy_error: f64,
+    /// "ok", or why the run failed.
+    status: String,
+}
+
+/// A problem: mechanism, start, end time, reference end state, hand-written accelerations.
+struct Setup<M, const N: usize> {
+    name: &'static str,
+    mechanism: M,
+    start: State<[f64; N]>,
+    t_end: f64,
+    reference: ([f64; N], [f64; N]),
+    rhs: fn(f64, &[f64; N], &[f64; N]) -> [f64; N],
+    /// Fixed-step ladder: numbers of steps.
+    steps: Vec<usize>,
+    /// Tolerance ladder of the adaptive methods.
+    tolerances: Vec<f64>,
+    /// Whether Störmer–Verlet applies (constant mass matrix).
+    verlet: bool,
+    /// Energy error above which a run counts as unstable (relative to 1 + |E₀|).
+    unstable_energy: f64,
+}
+
+struct Progress {
+    done: usize,
+    total: usize,
+    started: Instant,
+}
+
+impl Progress {
+    fn tick(&mut self, what: &str) {
+        self.done += 1;
+        let width = 30;
+        let filled = width * self.done / self.total.max(1);
+        eprint!(
+            "\r[{}{}] {:>3}/{} {:>6.1}s  {:<60}",
+            "#".repeat(filled),
+            " ".repeat(width - filled),
+            self.done,
+            self.total,
+            self.started.elapsed().as_secs_f64(),
+            what
+        );
+        let _ = std::io::stderr().flush();
+    }
+}
+
+fn distance<const N: usize>(q: &[f64; N], v: &[f64; N], r: &([f64; N], [f64; N])) -> f64 {
+    q.iter()
+        .zip(&r.0)
+        .chain(v.iter().zip(&r.1))
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max)
+}
+
+/// What one run returns: end state, evaluations, Jacobian evaluations, max energy error (NaN when
+/// not tracked), or an error message.
+type RunResult<const N: usize> = Result<([f64; N], [f64; N], usize, usize, f64, usize), String>;
+
+/// Runs `run(track_energy)` once tracking the energy (warm-up), then repeats untracked and keeps
+/// the fastest time.
+fn measure<const N: usize>(
+    quick: bool,
+    mut run: impl FnMut(bool) -> RunResult<N>,
+) -> (RunResult<N>, f64) {
+    let t0 = Instant::now();
+    let first = run(true);
+    let once = t0.elapsed().as_secs_f64();
+    if first.is_err() {
+        return (first, once);
+    }
+    let repeats = if quick {
+        1
+    } else if once < 0.05 {
+        7
+    } else if once < 0.5 {
+        3
+    } else {
+        1
+    };
+    let mut best = f64::INFINITY;
+    for _ in 0..repeats {
+        let t = Instant::now();
+        let r = run(false);
+        best = best.min(t.elapsed().as_secs_f64());
+        std::hint::black_box(&r);
+    }
+    (first, best)
+}
+
+enum Fixed {
+    Rk4,
+    Midpoint,
+    Gauss,
+    Variational,
+    Verlet,
+}
+
+impl Fixed {
+    fn name(&self) -> &'static str {
+        match self {
+            Fixed::Rk4 => Rk4::NAME,
+            Fixed::Midpoint => ImplicitMidpoint::NAME,
+            Fixed::Gauss => GaussLegendre2::NAME,
+            Fixed::Variational => Variational::NAME,
+            Fixed::Verlet => StormerVerlet::NAME,
+        }
+    }
+}
+
+/// n steps of a fixed-step method from the start; returns the end state and costs.
+fn run_fixed<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
+    setup: &Setup<M, N>,
+    method: &Fixed,
+    n: usize,
+    track: bool,
+) -> RunResult<N> {
+    let m = &setup.mechanism;
+    let mut s = setup.start;
+    let h = (setup.t_end - s.t) / n as f64;
+    let e0 = m.energy(&s).map_err(|e| e.to_string())?;
+    let mut max_de = if track { 0.0f64 } else { f64::NAN };
+    let (mut rhs, mut jac) = (0usize, 0usize);
+    let add = |st: ImplicitStepStats, rhs: &mut usize, jac: &mut usize| {
+        *rhs += 1;
+        *jac += st.jacobian_evaluations;
+    };
+    for _ in 0..n {
+        let r = match method {
+            Fixed::Rk4 => m.step::<Rk4>(&mut s, h).map(|_| rhs += 4),
+            Fixed::Verlet => m.step::<StormerVerlet>(&mut s, h).map(|_| rhs += 2),
+            Fixed::Midpoint => ImplicitMidpoint::step_with_stats(m, &mut s, h)
+                .map(|st| add(st, &mut rhs, &mut jac)),
+            Fixed::Gauss => {
+                GaussLegendre2::step_with_stats(m, &mut s, h).map(|st| add(st, &mut rhs, &mut jac))
+            }
+            Fixed::Variational => Variational::step_with_stats(m, &mut s, h).map(|st| {
+                // predictor + final momentum rate + momenta; Newton iterations evaluate with Jacobians.
+                rhs += 3;
+                jac += st.iterations + st.velocity_iterations;
+            }),
+        };
+        r.map_err(|e| e.to_string())?;
+        if track {
+            let de = (m.energy(&s).map_err(|e| e.to_string())? - e0).abs();
+            if !(de <= setup.unstable_energy * (1.0 + e0.abs())) {
+                return Err(format!(
+                    "unstable (energy error {de:.2e} at t = {:.3})",
+                    s.t
+                ));
+            }
+            max_de = max_de.max(de);
+        }
+    }
+    Ok((s.q, s.v, rhs, jac, max_de, n))
+}
+
+fn run_dopri5<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
+    setup: &Setup<M, N>,
+    tol: f64,
+    track: bool,
+) -> RunResult<N> {
+    let m = &setup.mechanism;
+    let mut s = setup.start;
+    let e0 = m.energy(&s).map_err(|e| e.to_string())?;
+    let mut max_de = if track { 0.0f64 } else { f64::NAN };
+    let out = Dopri5::new(tol, tol)
+        .integrate(m, &mut s, setup.t_end, &mut [], |o| {
+            if track {
+                if let lagrange_core::integrate::Observation::Step { state, .. } = o {
+                    if let Ok(e) = m.energy(state) {
+                        max_de = max_de.max((e - e0).abs());
+                    }
+                }
+            }
+        })
+        .map_err(|e| e.to_string())?;
+    Ok((
+        s.q,
+        s.v,
+        out.stats.evaluations,
+        0,
+        max_de,
+        out.stats.accepted,
+    ))
+}
+
+/// The peer: `ode_solvers` Dopri5 / Dop853 on y = (q, v) with the hand-written accelerations.
+struct Peer<const N: usize, const N2: usize> {
+    rhs: fn(f64, &[f64; N], &[f64; N]) -> [f64; N],
+}
+
+impl<const N: usize, const N2: usize> ode_solvers::System<f64, ode_solvers::SVector<f64, N2>>
+    for Peer<N, N2>
+{
+    fn system(
+        &self,
+        t: f64,
+        y: &ode_solvers::SVector<f64, N2>,
+        dy: &mut ode_solvers::SVector<f64, N2>,
+    ) {
+        let q: [f64; N] = std::array::from_fn(|i| y[i]);
+        let v: [f64; N] = std::array::from_fn(|i| y[N + i]);
+        let a = (self.rhs)(t, &q, &v);
+        for i in 0..N {
+            dy[i] = v[i];
+            dy[N + i] = a[i];
+        }
+    }
+}
+
+fn run_peer<M: Mechanism<N, Coords = [f64; N]>, const N: usize, const N2: usize>(
+    setup: &Setup<M, N>,
+    dop853: bool,
+    tol: f64,
+    track: bool,
+) -> RunResult<N> {
+    assert_eq!(N2, 2 * N);
+    let y0 = ode_solvers::SVector::<f64, N2>::from_fn(|i, _| {
+        if i < N {
+            setup.start.q[i]
+        } else {
+            setup.start.v[i - N]
+        }
+    });
+    let (t0, t1) = (setup.start.t, setup.t_end);
+    let peer = Peer::<N, N2> { rhs: setup.rhs };
+    // The peer's own default settings (`new`: Hairer's controller constants, at most 100 000 steps).
+    // Dense output only at the end (dx = t1 − t0) when timed; on a grid of 2000 points when
+    // tracking the energy.
+    let dx = if track { (t1 - t0) / 2000.0 } else { t1 - t0 };
+    macro_rules! go {
+        ($solver:ident) => {{
+            let mut solver = ode_solvers::$solver::new(peer, t0, t1, dx, y0, tol, tol);
+            let stats = solver.integrate().map_err(|e| e.to_string())?;
+            let ys = solver.y_out();
+            (stats, ys.iter().cloned().collect::<Vec<_>>())
+        }};
+    }
+    let (stats, ys) = if dop853 { go!(Dop853) } else { go!(Dopri5) };
+    let y = ys.last().ok_or("no output")?;
+    let split = |y: &ode_solvers::SVector<f64, N2>| -> ([f64; N], [f64; N]) {
+        (
+            std::array::from_fn(|i| y[i]),
+            std::array::from_fn(|i| y[N + i]),
+        )
+    };
+    let (q, v) = split(y);
+    let mut max_de = f64::NAN;
+    if track {
+        let m = &setup.mechanism;
+        let e0 = m.energy(&setup.start).map_err(|e| e.to_string())?;
+        max_de = 0.0;
+        for y in &ys {
+            let (q, v) = split(y);
+            if let Ok(e) = m.energy(&State::new(0.0, q, v)) {
+                max_de = max_de.max((e - e0).abs());
+            }
+        }
+    }
+    Ok((
+        q,
+        v,
+        stats.num_eval as usize,
+        0,
+        max_de,
+        stats.accepted_steps as usize,
+    ))
+}
+
+fn record<const N: usize>(
+    rows: &mut Vec<Row>,
+    problem: &'static str,
+    method: &str,
+    setting: String,
+    setting_value: f64,
+    reference: &([f64; N], [f64; N]),
+    (result, seconds): (RunResult<N>, f64),
+) {
+    let row = match result {
+        Ok((q, v, rhs, jac, de, steps)) => Row {
+            problem,
+            method: method.to_string(),
+            setting,
+            setting_value,
+            steps,
+            rhs_evals: rhs,
+            jacobian_evals: jac,
+            seconds,
+            end_error: distance(&q, &v, reference),
+            max_energy_error: de,
+            status: "ok".into(),
+        },
+        Err(e) => Row {
+            problem,
+            method: method.to_string(),
+            setting,
+            setting_value,
+            steps: 0,
+            rhs_evals: 0,
+            jacobian_evals: 0,
+            seconds,
+            end_error: f64::NAN,
+            max_energy_error: f64::NAN,
+            status: e.replace(',', ";"),
+        },
+    };
+    rows.push(row);
+}
+
+fn count_runs<M, const N: usize>(s: &Setup<M, N>) -> usize {
+    let fixed = if s.verlet { 5 } else { 4 };
+    fixed * s.steps.len() + 3 * s.tolerances.len()
+}
+
+fn run_setup<M: Mechanism<N, Coords = [f64; N]>, const N: usize, const N2: usize>(
+    setup: &Setup<M, N>,
+    quick: bool,
+    rows: &mut Vec<Row>,
+    progress: &mut Progress,
+) {
+    let mut methods = vec![
+        Fixed::Rk4,
+        Fixed::Midpoint,
+        Fixed::Gauss,
+        Fixed::Variational,
+    ];
+    if setup.verlet {
+        methods.push(Fixed::Verlet);
+    }
+    for method in &methods {
+        for &n in &setup.steps {
+            progress.tick(&format!("{} / {} / n = {n}", setup.name, method.name()));
+            let h = (setup.t_end - setup.start.t) / n as f64;
+            let r = measure(quick, |track| run_fixed(setup, method, n, track));
+            record(
+                rows,
+                setup.name,
+                method.name(),
+                format!("h = {h:.3e}"),
+                h,
+                &setup.reference,
+                r,
+            );
+        }
+    }
+    for &tol in &setup.tolerances {
+        progress.tick(&format!("{} / Dopri5 / tol = {tol:.0e}", setup.name));
+        let r = measure(quick, |track| run_dopri5(setup, tol, track));
+        record(
+            rows,
+            setup.name,
+            "Dopri5",
+            format!("tol = {tol:.0e}"),
+            tol,
+            &setup.reference,
+            r,
+        );
+        for (dop853, name) in [(false, "ode_solvers Dopri5"), (true, "ode_solvers Dop853")] {
+            progress.tick(&format!("{} / {name} / tol = {tol:.0e}", setup.name));
+            let r = measure(quick, |track| {
+                run_peer::<M, N, N2>(setup, dop853, tol, track)
+            });
+            record(
+                rows,
+                setup.name,
+                name,
+                format!("tol = {tol:.0e}"),
+                tol,
+                &setup.reference,
+                r,
+            );
+        }
+    }
+}
+
+fn ladder(start: usize, count: usize) -> Vec<usize> {
+    (0..count).map(|k| start << k).collect()
+}
+
+fn tolerances(quick: bool) -> Vec<f64> {
+    let exps: Vec<i32> = if quick {
+        vec![4, 7, 10, 13]
+    } else {
+        (3..=13).collect()
+    };
+    exps.into_iter().map(|e| 10f64.powi(-e)).collect()
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let quick = args.iter().any(|a| a == "--quick");
+    let out_dir = args
+        .iter()
+        .position(|a| a == "--out")
+        .and_then(|i| args.get(i + 1))
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from("reports/work-precision"));
+    std::fs::create_dir_all(&out_dir).expect("create output directory");
+    let n_ladder = if quick { 4 } else { 8 };
+
+    // 1. Large-amplitude pendulum over one period 4K(k).
+    let period = 4.0 * elliptic_k(PENDULUM_K);
+    let pendulum = Setup {
+        name: "pendulum k=0.999",
+        mechanism: Pendulum,
+        start: State::new(0.0, [0.0], [2.0 * PENDULUM_K]),
+        t_end: period,
+        reference: pendulum_exact(period),
+        rhs: pendulum_rhs,
+        steps: ladder(200, n_ladder),
+        tolerances: tolerances(quick),
+        verlet: true,
+        unstable_energy: 10.0,
+    };
+    // 2. Kepler e = 0.6 over 5 periods.
+    let kepler = Setup {
+        name: "Kepler e=0.6",
+        mechanism: Kepler,
+        start: kepler_start(),
+        t_end: 10.0 * std::f64::consts::PI,
+        reference: kepler_exact(10.0 * std::f64::consts::PI),
+        rhs: kepler_rhs,
+        steps: ladder(250, n_ladder),
+        tolerances: tolerances(quick),
+        verlet: true,
+        unstable_energy: 10.0,
+    };
+    // 3. Double pendulum, both arms horizontal at rest, to t = 10; reference by two methods.
+    let dp_start = State::new(0.0, [std::f64::consts::FRAC_PI_2; 2], [0.0; 2]);
+    let dp_t = 10.0;
+    let mut ref_a = dp_start;
+    Dopri5::new(1e-14, 1e-14)
+        .integrate(&DoublePendulum, &mut ref_a, dp_t, &mut [], |_| {})
+        .expect("reference");
+    let mut ref_b = dp_start;
+    let n_ref = 1 << 17;
+    for _ in 0..n_ref {
+        DoublePendulum
+            .step::<GaussLegendre2>(&mut ref_b, dp_t / n_ref as f64)
+            .expect("reference");
+    }
+    let reference_agreement = distance(&ref_a.q, &ref_a.v, &(ref_b.q, ref_b.v));
+    let double = Setup {
+        name: "double pendulum",
+        mechanism: DoublePendulum,
+        start: dp_start,
+        t_end: dp_t,
+        reference: (ref_a.q, ref_a.v),
+        rhs: double_pendulum_rhs,
+        steps: ladder(250, n_ladder),
+        tolerances: tolerances(quick),
+        verlet: false,
+        unstable_energy: 10.0,
+    };
+    // 4. FPU chain to t = 10 (hω = 2 at n = 250); reference Dopri5 1e-14, checked by GL2.
+    let fpu_t = 10.0;
+    let mut fpu_ref = fpu_start();
+    Dopri5::new(1e-14, 1e-14)
+        .integrate(&Fpu, &mut fpu_ref, fpu_t, &mut [], |_| {})
+        .expect("reference");
+    let mut fpu_ref_b = fpu_start();
+    for _ in 0..n_ref {
+        Fpu.step::<GaussLegendre2>(&mut fpu_ref_b, fpu_t / n_ref as f64)
+            .expect("reference");
+    }
+    let fpu_agreement = distance(&fpu_ref.q, &fpu_ref.v, &(fpu_ref_b.q, fpu_ref_b.v));
+    let fpu = Setup {
+        name: "FPU chain w=50",
+        mechanism: Fpu,
+        start: fpu_start(),
+        t_end: fpu_t,
+        reference: (fpu_ref.q, fpu_ref.v),
+        rhs: fpu_rhs,
+        steps: ladder(100, n_ladder + 1),
+        tolerances: tolerances(quick),
+        verlet: true,
+        unstable_energy: 1.0,
+    };
+    // 5. Wedge and block until shortly before the block reaches the floor.
+    let wedge_t = 0.9 * wedge_floor_time();
+    let wedge = Setup {
+        name: "wedge and block",
+        mechanism: WedgeBlock,
+        start: State::new(0.0, [0.0, 0.0], [0.0, 0.0]),
+        t_end: wedge_t,
+        reference: wedge_exact(wedge_t),
+        rhs: wedge_rhs,
+        steps: ladder(10, if quick { 3 } else { 5 }),
+        tolerances: tolerances(true),
+        verlet: true,
+        unstable_energy: 10.0,
+    };
+
+    let total = count_runs(&pendulum)
+        + count_runs(&kepler)
+        + count_runs(&double)
+        + count_runs(&fpu)
+        + count_runs(&wedge);
+    let mut progress = Progress {
+        done: 0,
+        total,
+        started: Instant::now(),
+    };
+    let mut rows = Vec::new();
+    run_setup::<_, 1, 2>(&pendulum, quick, &mut rows, &mut progress);
+    run_setup::<_, 2, 4>(&kepler, quick, &mut rows, &mut progress);
+    run_setup::<_, 2, 4>(&double, quick, &mut rows, &mut progress);
+    run_setup::<_, 6, 12>(&fpu, quick, &mut rows, &mut progress);
+    run_setup::<_, 2, 4>(&wedge, quick, &mut rows, &mut progress);
+    eprintln!();
+
+    // Long run: energy error against time on Kepler over 1000 periods.
+    eprintln!("long run: Kepler energy over 1000 periods");
+    let long = plot::kepler_long_run(if quick { 100 } else { 1000 });
+
+    write_csv(&out_dir, &rows);
+    let notes = format!(
+        "Double-pendulum reference: Dopri5 at tol 1e-14 and Gauss–Legendre 2 with 2^17 steps agree to \
+         {reference_agreement:.1e} at t = 10. FPU reference: the same two methods agree to {fpu_agreement:.1e}."
+    );
+    write_markdown(&out_dir, &rows, &notes, quick);
+    for problem in [
+        "pendulum k=0.999",
+        "Kepler e=0.6",
+        "double pendulum",
+        "FPU chain w=50",
+        "wedge and block",
+    ] {
+        plot::work_precision(&out_dir, problem, &rows);
+    }
+    plot::energy_long_run(&out_dir, &long);
+    eprintln!("wrote {}", out_dir.display());
+}
+
+fn write_csv(dir: &std::path::Path, rows: &[Row]) {
+    let mut s = String::from(
+        "problem,method,setting,steps,rhs_evals,jacobian_evals,seconds,end_error,max_energy_error,status\n",
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{},{:.6e},{:.3e},{:.3e},{}",
+            r.problem,
+            r.method,
+            r.setting,
+            r.steps,
+            r.rhs_evals,
+            r.jacobian_evals,
+            r.seconds,
+            r.end_error,
+            r.max_energy_error,
+            r.status
+        );
+    }
+    std::fs::write(dir.join("results.csv"), s).expect("write csv");
+}
+
+/// The cheapest (fastest) run reaching `target` end-point error on `problem`.
+fn cheapest<'a>(rows: &'a [Row], problem: &str, target: f64) -> Option<&'a Row> {
+    rows.iter()
+        .filter(|r| r.problem == problem && r.status == "ok" && r.end_error <= target)
+        .min_by(|a, b| a.seconds.total_cmp(&b.seconds))
+}
+
+fn write_markdown(dir: &std::path::Path, rows: &[Row], notes: &str, quick: bool) {
+    let mut s = String::from("# Work-precision report\n\n");
+    let _ = writeln!(
+        s,
+        "Generated by `cargo run --release -p lagrange-bench --bin work-precision{}`. Errors are max-norm \
+         over (q, v) at the end time; energy errors are max |E − E₀| over the steps of the run; times are the \
+         minimum wall time over repeats after a warm-up. Rows with a status other than `ok` failed (the error is \
+         given).\n",
+        if quick { " -- --quick" } else { "" }
+    );
+    let _ = writeln!(s, "{notes}\n");
+    s.push_str("## Cheapest method per accuracy\n\n| problem | end error ≤ 1e-6 | end error ≤ 1e-10 |\n|---|---|---|\n");
+    let problems: Vec<&str> = {
+        let mut p: Vec<&str> = Vec::new();
+        for r in rows {
+            if !p.contains(&r.problem) {
+                p.push(r.problem);
+            }
+        }
+        p
+    };
+    for p in &problems {
+        let cell = |target| match cheapest(rows, p, target) {
+            Some(r) => format!("{} ({}), {:.2e} s", r.method, r.setting, r.seconds),
+            None => "none reached it".into(),
+        };
+        let _ = writeln!(s, "| {p} | {} | {} |", cell(1e-6), cell(1e-10));
+    }
+    // Our Dopri5 against the peer's at rtol 1e-8 on the double pendulum.
+    let find = |m: &str| {
+        rows.iter().find(|r| {
+            r.problem == "double pendulum"
+                && r.method == m
+                && (r.setting_value - 1e-8).abs() < 1e-20
+        })
+    };
+    if let (Some(a), Some(b)) = (find("Dopri5"), find("ode_solvers Dopri5")) {
+        let _ = writeln!(
+            s,
+            "\nDouble pendulum, tol 1e-8: lagrange Dopri5 {:.3e} s (error {:.2e}, {} evaluations) vs ode_solvers \
+             Dopri5 {:.3e} s (error {:.2e}, {} evaluations): time ratio {:.2}, error ratio {:.2}.\n",
+            a.seconds,
+            a.end_error,
+            a.rhs_evals,
+            b.seconds,
+            b.end_error,
+            b.rhs_evals,
+            a.seconds / b.seconds,
+            a.end_error / b.end_error
+        );
+    }
+    for p in &problems {
+        let _ = writeln!(
+            s,
+            "\n## {p}\n\n![work-precision](./{}.svg)\n",
+            plot::slug(p)
+        );
+        s.push_str("| method | setting | steps | rhs evals | Jacobian evals | time [s] | end error | max energy error | status |\n|---|---|---|---|---|---|---|---|---|\n");
+        for r in rows.iter().filter(|r| r.problem == *p) {
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} | {} | {:.3e} | {:.2e} | {:.2e} | {} |",
+                r.method,
+                r.setting,
+                r.steps,
+                r.rhs_evals,
+                r.jacobian_evals,
+                r.seconds,
+                r.end_error,
+                r.max_energy_error,
+                r.status
+            );
+        }
+    }
+    s.push_str("\n## Long run\n\n![energy](./kepler-energy-long-run.svg)\n");
+    std::fs::write(dir.join("report.md"), s).expect("write markdown");
+}

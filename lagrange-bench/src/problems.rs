@@ -1,0 +1,402 @@
+//! The report's problems as hand-written [`Model`]s (what `#[mechanism]` generates), their
+//! hand-written right-hand sides for the peer solvers, and their exact or reference solutions.
+
+use lagrange_core::dynamics::{self, EquationsOfMotion};
+use lagrange_core::{vec2, Mechanism, Model, Scalar, State};
+use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
+
+macro_rules! mechanism_from_model {
+    ($ty:ty, $n:literal) => {
+        impl Mechanism<$n> for $ty {
+            type Coords = [f64; $n];
+            fn validate(&self) -> lagrange_core::Result<()> {
+                Ok(())
+            }
+            fn equations_of_motion_at<S: Scalar>(
+                &self,
+                t: S,
+                q: &[S; $n],
+                v: &[S; $n],
+            ) -> EquationsOfMotion<S, $n> {
+                dynamics::equations_of_motion(self, t, q, v)
+            }
+            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
+                dynamics::kinetic_energy(self, t, q, v)
+            }
+            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
+                dynamics::potential_energy(self, t, q)
+            }
+            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
+                dynamics::momenta(self, t, q, v)
+            }
+            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
+                dynamics::lagrangian_time_derivative(self, t, q, v)
+            }
+        }
+    };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Jacobi elliptic functions.
+
+/// K(k) = π / (2 AGM(1, √(1 − k²))) (Abramowitz & Stegun 17.6).
+pub fn elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0f64, (1.0 - k * k).sqrt());
+    for _ in 0..60 {
+        let (a1, b1) = (0.5 * (a + b), (a * b).sqrt());
+        a = a1;
+        b = b1;
+    }
+    PI / (2.0 * a)
+}
+
+/// (sn, cn)(u, k) by the descending AGM (Abramowitz & Stegun 16.4).
+pub fn jacobi_sn_cn(u: f64, k: f64) -> (f64, f64) {
+    let mut a = [0.0f64; 32];
+    let mut c = [0.0f64; 32];
+    a[0] = 1.0;
+    let mut b = (1.0 - k * k).sqrt();
+    c[0] = k;
+    let mut n = 0;
+    while c[n].abs() > 1e-16 && n < 30 {
+        a[n + 1] = 0.5 * (a[n] + b);
+        c[n + 1] = 0.5 * (a[n] - b);
+        b = (a[n] * b).sqrt();
+        n += 1;
+    }
+    let mut phi = 2f64.powi(n as i32) * a[n] * u;
+    for j in (1..=n).rev() {
+        phi = 0.5 * (phi + (c[j] / a[j] * phi.sin()).asin());
+    }
+    (phi.sin(), phi.cos())
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1. Large-amplitude pendulum.
+
+/// q̈ = −sin q (unit mass and length, g = 1).
+pub struct Pendulum;
+
+impl Model<1, 2> for Pendulum {
+    type Coords = [f64; 1];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+        [q[0].sin(), -q[0].cos()]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D {
+        x[1]
+    }
+}
+mechanism_from_model!(Pendulum, 1);
+
+/// Modulus of the pendulum problem.
+pub const PENDULUM_K: f64 = 0.999;
+
+/// q(0) = 0, q̇(0) = 2k: q = 2 arcsin(k sn(t, k)), q̇ = 2k cn(t, k).
+pub fn pendulum_exact(t: f64) -> ([f64; 1], [f64; 1]) {
+    let (sn, cn) = jacobi_sn_cn(t, PENDULUM_K);
+    ([2.0 * (PENDULUM_K * sn).asin()], [2.0 * PENDULUM_K * cn])
+}
+
+pub fn pendulum_rhs(_t: f64, q: &[f64; 1], _v: &[f64; 1]) -> [f64; 1] {
+    [-q[0].sin()]
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. Kepler.
+
+/// Kepler problem in Cartesian coordinates, GM = 1: V = −1/r.
+pub struct Kepler;
+
+impl Model<2, 2> for Kepler {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        -(x[0] * x[0] + x[1] * x[1]).sqrt().recip()
+    }
+}
+mechanism_from_model!(Kepler, 2);
+
+pub const KEPLER_E: f64 = 0.6;
+
+/// a = 1, GM = 1 from periapsis: position and velocity at t from Kepler's equation E − e sin E = t.
+pub fn kepler_exact(t: f64) -> ([f64; 2], [f64; 2]) {
+    let e = KEPLER_E;
+    let m = t.rem_euclid(2.0 * PI);
+    let mut big_e = m;
+    for _ in 0..60 {
+        let d = (big_e - e * big_e.sin() - m) / (1.0 - e * big_e.cos());
+        big_e -= d;
+        if d.abs() < 1e-16 {
+            break;
+        }
+    }
+    let (s, c) = big_e.sin_cos();
+    let b = (1.0 - e * e).sqrt();
+    let den = 1.0 - e * c;
+    ([c - e, b * s], [-s / den, b * c / den])
+}
+
+pub fn kepler_start() -> State<[f64; 2]> {
+    let e = KEPLER_E;
+    State::new(0.0, [1.0 - e, 0.0], [0.0, ((1.0 + e) / (1.0 - e)).sqrt()])
+}
+
+pub fn kepler_rhs(_t: f64, q: &[f64; 2], _v: &[f64; 2]) -> [f64; 2] {
+    let r2 = q[0] * q[0] + q[1] * q[1];
+    let r3 = r2 * r2.sqrt();
+    [-q[0] / r3, -q[1] / r3]
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. Double pendulum.
+
+/// m = l = g = 1.
+pub struct DoublePendulum;
+
+impl Model<2, 4> for DoublePendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 4] {
+        [1.0; 4]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 4] {
+        let bob1 = vec2(q[0].sin(), -q[0].cos());
+        let bob2 = bob1 + vec2(q[1].sin(), -q[1].cos());
+        [bob1.x, bob1.y, bob2.x, bob2.y]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 4]) -> D {
+        x[1] + x[3]
+    }
+}
+mechanism_from_model!(DoublePendulum, 2);
+
+/// Closed form of the double pendulum with m₁ = m₂ = l₁ = l₂ = g = 1 (the standard derivation, as
+/// in `lagrange-core/tests/hand_written_model.rs`).
+pub fn double_pendulum_rhs(_t: f64, q: &[f64; 2], v: &[f64; 2]) -> [f64; 2] {
+    let (m1, m2, l1, l2, g) = (1.0, 1.0, 1.0, 1.0, 1.0);
+    let d = q[0] - q[1];
+    let den = m1 + m2 * d.sin().powi(2);
+    let a1 = (m2 * g * q[1].sin() * d.cos()
+        - m2 * d.sin() * (l1 * v[0] * v[0] * d.cos() + l2 * v[1] * v[1])
+        - (m1 + m2) * g * q[0].sin())
+        / (l1 * den);
+    let a2 = ((m1 + m2) * (l1 * v[0] * v[0] * d.sin() - g * q[1].sin() + g * q[0].sin() * d.cos())
+        + m2 * l2 * v[1] * v[1] * d.sin() * d.cos())
+        / (l2 * den);
+    [a1, a2]
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. Fermi–Pasta–Ulam chain.
+
+/// Stiff-spring frequency.
+pub const FPU_OMEGA: f64 = 50.0;
+
+/// Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.5.1: six unit masses between
+/// fixed walls, joined alternately by soft cubic springs (energy (Δq)⁴) and stiff linear springs
+/// (energy ω²/4 (Δq)²), ω = 50: V = ω²/4 Σᵢ (q₂ᵢ₊₁ − q₂ᵢ)² + Σᵢ (q₂ᵢ − q₂ᵢ₋₁)⁴ (0-based, q₋₁ = q₆ = 0).
+pub struct Fpu;
+
+impl Model<6, 6> for Fpu {
+    type Coords = [f64; 6];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 6] {
+        [1.0; 6]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 6]) -> [D; 6] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 6], x: &[D; 6]) -> D {
+        let mut v = D::zero();
+        for i in 0..3 {
+            let d = x[2 * i + 1] - x[2 * i];
+            v += d * d * (FPU_OMEGA * FPU_OMEGA / 4.0);
+        }
+        let soft = |d: D| (d * d) * (d * d);
+        v += soft(x[0]) + soft(x[2] - x[1]) + soft(x[4] - x[3]) + soft(x[5]);
+        v
+    }
+}
+mechanism_from_model!(Fpu, 6);
+
+/// HLW's initial values x₀,₁ = 1, ẋ₀,₁ = 1, x₁,₁ = ω⁻¹, ẋ₁,₁ = 1 (centre and elongation of the first
+/// stiff spring, x₀ = (q₂ + q₁)/√2, x₁ = (q₂ − q₁)/√2 in their 1-based numbering), all else zero.
+pub fn fpu_start() -> State<[f64; 6]> {
+    let w = FPU_OMEGA;
+    State::new(
+        0.0,
+        [
+            (1.0 - 1.0 / w) * FRAC_1_SQRT_2,
+            (1.0 + 1.0 / w) * FRAC_1_SQRT_2,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+        ],
+        [0.0, SQRT_2, 0.0, 0.0, 0.0, 0.0],
+    )
+}
+
+pub fn fpu_rhs(_t: f64, q: &[f64; 6], _v: &[f64; 6]) -> [f64; 6] {
+    let w2 = FPU_OMEGA * FPU_OMEGA;
+    let mut f = [0.0; 6];
+    for i in 0..3 {
+        // ω²/4 (q₂ᵢ₊₁ − q₂ᵢ)²: force ∓ ω²/2 (q₂ᵢ₊₁ − q₂ᵢ).
+        let d = q[2 * i + 1] - q[2 * i];
+        f[2 * i] += 0.5 * w2 * d;
+        f[2 * i + 1] -= 0.5 * w2 * d;
+    }
+    // (Δ)⁴: force ∓ 4Δ³.
+    f[0] -= 4.0 * q[0].powi(3);
+    for (a, b) in [(1, 2), (3, 4)] {
+        let d = q[b] - q[a];
+        f[a] += 4.0 * d.powi(3);
+        f[b] -= 4.0 * d.powi(3);
+    }
+    f[5] += 4.0 * (-q[5]).powi(3);
+    f
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. Wedge and block.
+
+pub const WEDGE_MASS: f64 = 3.0;
+pub const BLOCK_MASS: f64 = 1.0;
+pub const WEDGE_ALPHA: f64 = 0.5;
+pub const WEDGE_HEIGHT: f64 = 1.0;
+pub const WEDGE_G: f64 = 9.81;
+
+/// A wedge of mass M sliding on a frictionless floor (coordinate x) and a block of mass m sliding
+/// down its frictionless face of angle α (coordinate d along the face), from height h.
+pub struct WedgeBlock;
+
+impl Model<2, 4> for WedgeBlock {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 4] {
+        [WEDGE_MASS, WEDGE_MASS, BLOCK_MASS, BLOCK_MASS]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 4] {
+        let (s, c) = WEDGE_ALPHA.sin_cos();
+        [q[0], D::zero(), q[0] + q[1] * c, -(q[1] * s) + WEDGE_HEIGHT]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 4]) -> D {
+        x[3] * (BLOCK_MASS * WEDGE_G)
+    }
+}
+mechanism_from_model!(WedgeBlock, 2);
+
+/// The constant accelerations (ẍ, d̈): [[M + m, m cos α], [m cos α, m]] q̈ = (0, m g sin α).
+pub fn wedge_accelerations() -> [f64; 2] {
+    let (s, c) = WEDGE_ALPHA.sin_cos();
+    let (big, m, g) = (WEDGE_MASS, BLOCK_MASS, WEDGE_G);
+    let den = big + m * s * s;
+    [-m * g * s * c / den, (big + m) * g * s / den]
+}
+
+/// Time at which the block reaches the floor (d = h / sin α) from rest.
+pub fn wedge_floor_time() -> f64 {
+    (2.0 * WEDGE_HEIGHT / WEDGE_ALPHA.sin() / wedge_accelerations()[1]).sqrt()
+}
+
+pub fn wedge_exact(t: f64) -> ([f64; 2], [f64; 2]) {
+    let a = wedge_accelerations();
+    (
+        [0.5 * a[0] * t * t, 0.5 * a[1] * t * t],
+        [a[0] * t, a[1] * t],
+    )
+}
+
+pub fn wedge_rhs(_t: f64, _q: &[f64; 2], _v: &[f64; 2]) -> [f64; 2] {
+    wedge_accelerations()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hand_written_right_hand_sides_match_the_models() {
+        let check = |a: &[f64], b: &[f64]| {
+            for (x, y) in a.iter().zip(b) {
+                assert!((x - y).abs() <= 1e-10 * (1.0 + y.abs()), "{a:?} vs {b:?}");
+            }
+        };
+        check(
+            &Pendulum.accelerations_at(0.0, &[0.7], &[0.3]).unwrap(),
+            &pendulum_rhs(0.0, &[0.7], &[0.3]),
+        );
+        check(
+            &Kepler
+                .accelerations_at(0.0, &[0.7, -0.2], &[0.3, 1.0])
+                .unwrap(),
+            &kepler_rhs(0.0, &[0.7, -0.2], &[0.0; 2]),
+        );
+        let (q, v) = ([1.1, -0.4], [0.5, 2.0]);
+        check(
+            &DoublePendulum.accelerations_at(0.0, &q, &v).unwrap(),
+            &double_pendulum_rhs(0.0, &q, &v),
+        );
+        let q6 = [0.1, 0.3, -0.2, 0.05, 0.4, -0.1];
+        check(
+            &Fpu.accelerations_at(0.0, &q6, &[0.0; 6]).unwrap(),
+            &fpu_rhs(0.0, &q6, &[0.0; 6]),
+        );
+        check(
+            &WedgeBlock
+                .accelerations_at(0.0, &[0.2, 0.3], &[0.1, 0.4])
+                .unwrap(),
+            &wedge_rhs(0.0, &[0.0; 2], &[0.0; 2]),
+        );
+    }
+
+    #[test]
+    fn exact_solutions_start_where_the_problems_start() {
+        let (q, v) = pendulum_exact(0.0);
+        assert!(q[0].abs() < 1e-15 && (v[0] - 2.0 * PENDULUM_K).abs() < 1e-15);
+        // sn has quarter period K: q(K) is the turning point 2 arcsin k.
+        let (q, v) = pendulum_exact(elliptic_k(PENDULUM_K));
+        assert!(
+            (q[0] - 2.0 * PENDULUM_K.asin()).abs() < 1e-9 && v[0].abs() < 1e-7,
+            "{q:?} {v:?}"
+        );
+        let (q, v) = kepler_exact(0.0);
+        let s = kepler_start();
+        assert!((q[0] - s.q[0]).abs() < 1e-15 && (v[1] - s.v[1]).abs() < 1e-14);
+    }
+}
