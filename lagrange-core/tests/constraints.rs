@@ -348,3 +348,737 @@ fn nonlinear_velocity_constraint_is_an_error() {
         "{err}"
     );
 }
+
+// ---------------------------------------------------------------------------------------------
+// Scene 2: the lecture's vertical wheel rolling on a plane (Hand & Finch, Appendix 1A): q = (x, y,
+// φ heading, θ rolling angle), two velocity constraints ẋ = R θ̇ cos φ, ẏ = R θ̇ sin φ.
+
+#[derive(Clone, Copy)]
+struct RollingWheel {
+    m: f64,
+    r: f64,
+}
+
+impl RollingWheel {
+    /// Uniform disk: moment about the axle ½mR², about a diameter ¼mR².
+    fn inertias(&self) -> (f64, f64) {
+        (
+            0.5 * self.m * self.r * self.r,
+            0.25 * self.m * self.r * self.r,
+        )
+    }
+}
+
+impl Model<4, 4> for RollingWheel {
+    type Coords = [f64; 4];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = false;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("r", self.r)])
+    }
+    fn masses(&self) -> [f64; 4] {
+        let (axle, diameter) = self.inertias();
+        [self.m, self.m, diameter, axle]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 4]) -> [D; 4] {
+        // Centre (x, y); heading φ with the diametral moment, rolling angle θ with the axial one.
+        *q
+    }
+}
+
+impl Constraints<4, 4, 2> for RollingWheel {
+    const NAMES: [&'static str; 2] = ["roll_x", "roll_y"];
+    const KINDS: [ConstraintKind; 2] = [ConstraintKind::Velocity, ConstraintKind::Velocity];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 4], _x: &[D; 4]) -> [D; 2] {
+        [D::zero(); 2]
+    }
+    fn velocity_constraints<D: Scalar>(
+        &self,
+        _t: D,
+        q: &[D; 4],
+        v: &[D; 4],
+        _x: &[D; 4],
+        x_dot: &[D; 4],
+    ) -> [D; 2] {
+        let rolling = v[3] * self.r;
+        [
+            x_dot[0] - rolling * q[2].cos(),
+            x_dot[1] - rolling * q[2].sin(),
+        ]
+    }
+}
+constrained_mechanism!(RollingWheel, 4);
+
+/// Free rolling: with the constraint forces λ₁, λ₂ on x, y, the equations are m ẍ = λ₁, m ÿ = λ₂,
+/// I_d φ̈ = 0, I_a θ̈ = −R(λ₁ cos φ + λ₂ sin φ); differentiating the constraints gives
+/// (I_a + mR²) θ̈ = 0 (Greenwood, *Advanced Dynamics*, 2003, §3.4 "rolling disk", vertical case).
+/// So φ = φ₀ + ωt, θ̇ = Ω and the centre moves on a circle of radius RΩ/ω (a line when ω = 0).
+fn wheel_closed_form(
+    w: &RollingWheel,
+    q0: [f64; 4],
+    omega: f64,
+    big_omega: f64,
+    t: f64,
+) -> [f64; 4] {
+    let phi = q0[2] + omega * t;
+    let theta = q0[3] + big_omega * t;
+    if omega == 0.0 {
+        let s = w.r * big_omega * t;
+        [q0[0] + s * q0[2].cos(), q0[1] + s * q0[2].sin(), phi, theta]
+    } else {
+        let rho = w.r * big_omega / omega;
+        [
+            q0[0] + rho * (phi.sin() - q0[2].sin()),
+            q0[1] - rho * (phi.cos() - q0[2].cos()),
+            phi,
+            theta,
+        ]
+    }
+}
+
+fn run_wheel(omega: f64) -> (f64, f64, f64) {
+    let w = RollingWheel { m: 2.0, r: 0.3 };
+    let (big_omega, phi0) = (5.0f64, 0.4f64);
+    let q0 = [0.1, -0.2, phi0, 0.0];
+    let v0 = [
+        w.r * big_omega * phi0.cos(),
+        w.r * big_omega * phi0.sin(),
+        omega,
+        big_omega,
+    ];
+    let mut s = State::new(0.0, q0, v0);
+    let e0 = w.energy(&s).unwrap();
+    let h = 1e-3;
+    let (mut slip, mut worst) = (0.0f64, 0.0f64);
+    for _ in 0..100_000 {
+        w.step::<Rk4>(&mut s, h).unwrap();
+        let [_, _, phi, _] = s.q;
+        let [vx, vy, _, th_dot] = s.v;
+        slip = slip
+            .max((vx - w.r * th_dot * phi.cos()).abs())
+            .max((vy - w.r * th_dot * phi.sin()).abs());
+    }
+    let exact = wheel_closed_form(&w, q0, omega, big_omega, s.t);
+    for k in 0..4 {
+        worst = worst.max((s.q[k] - exact[k]).abs());
+    }
+    let energy = (w.energy(&s).unwrap() - e0).abs() / e0;
+    (slip, worst, energy)
+}
+
+#[test]
+fn rolling_wheel_keeps_no_slip_and_follows_line_and_circle() {
+    for (omega, label) in [(0.0, "straight"), (0.7, "circle")] {
+        let (slip, worst, energy) = run_wheel(omega);
+        println!(
+            "rolling wheel ({label}), 1e5 RK4 steps h = 1e-3: no-slip residual {slip:.2e}, \
+             |q − closed form| {worst:.2e} at t = 100, relative energy change {energy:.2e}"
+        );
+        // Velocities are projected onto A v = 0 after every step: residual at round-off of the
+        // velocities (|v| ~ 5).
+        assert!(slip < 1e-13, "slip {slip}");
+        // θ̇, φ̇ are constant along the exact motion, so RK4 integrates φ and θ exactly and the
+        // centre to O(h⁴ ω⁴) per unit time (≪ 1e-10 over 100 s); what remains is the round-off of
+        // 1e5 additions to θ, which reaches 500 rad: ≲ 1e5·ε·|θ| ≈ 1e-8, measured ~1e-9.
+        assert!(worst < 1e-11 * 500.0, "{label}: {worst}");
+        assert!(energy < 1e-12, "{label}: energy {energy}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scene 3: four-bar linkage under gravity. Crank (length l1) pivoted at O = (0, 0), rocker (l3)
+// pivoted at D = (d, 0), coupler (l2) joining their tips; q = (θ1, θ2, θ3), absolute angles of the
+// three bars; each bar a uniform rod (I = ml²/12 about its centre). Closing the loop: two holonomic
+// constraints, written on the bars' Cartesian coordinates (the coupler's far end equals the
+// rocker's tip).
+
+#[derive(Clone, Copy)]
+struct FourBar {
+    l: [f64; 3],
+    m: [f64; 3],
+    d: f64,
+    g: f64,
+}
+
+impl Model<3, 9> for FourBar {
+    type Coords = [f64; 3];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("d", self.d), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 9] {
+        let i = |k: usize| self.m[k] * self.l[k] * self.l[k] / 12.0;
+        [
+            self.m[0],
+            self.m[0],
+            i(0),
+            self.m[1],
+            self.m[1],
+            i(1),
+            self.m[2],
+            self.m[2],
+            i(2),
+        ]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 3]) -> [D; 9] {
+        let e = |a: D| vec2(a.cos(), a.sin());
+        let tip_a = e(q[0]) * D::from(self.l[0]);
+        let c1 = e(q[0]) * D::from(0.5 * self.l[0]);
+        let c2 = tip_a + e(q[1]) * D::from(0.5 * self.l[1]);
+        let c3 = vec2(D::from(self.d), D::zero()) + e(q[2]) * D::from(0.5 * self.l[2]);
+        [c1.x, c1.y, q[0], c2.x, c2.y, q[1], c3.x, c3.y, q[2]]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 3], x: &[D; 9]) -> D {
+        (x[1] * self.m[0] + x[4] * self.m[1] + x[7] * self.m[2]) * self.g
+    }
+}
+
+impl Constraints<3, 9, 2> for FourBar {
+    const NAMES: [&'static str; 2] = ["joint_b_x", "joint_b_y"];
+    const KINDS: [ConstraintKind; 2] = [ConstraintKind::Holonomic, ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 3], x: &[D; 9]) -> [D; 2] {
+        // End B of the coupler (centre + half length along its angle) = tip of the rocker.
+        let coupler_end =
+            vec2(x[3], x[4]) + vec2(x[5].cos(), x[5].sin()) * D::from(0.5 * self.l[1]);
+        let rocker_tip = vec2(x[6], x[7]) + vec2(x[8].cos(), x[8].sin()) * D::from(0.5 * self.l[2]);
+        [coupler_end.x - rocker_tip.x, coupler_end.y - rocker_tip.y]
+    }
+}
+constrained_mechanism!(FourBar, 3);
+
+#[test]
+fn four_bar_linkage_keeps_energy_and_closure() {
+    // Grashof crank–rocker (s + l = 1 + 3 ≤ p + q = 2 + 3): the crank turns fully, and the
+    // transmission angle stays within [41°, 104°], far from the toggle (singular) positions.
+    let p = FourBar {
+        l: [1.0, 3.0, 2.0],
+        m: [1.0, 2.0, 1.5],
+        d: 3.0,
+        g: 9.81,
+    };
+    // A rough guess; consistent_state closes the loop and removes the inconsistent velocities.
+    let guess = State::new(0.0, [1.0, 0.2, 1.6], [3.0, 0.0, 0.0]);
+    let s0 = consistent_state(&p, &guess).unwrap();
+    let mut s = s0;
+    let e0 = p.energy(&s).unwrap();
+    let h = 1e-3;
+    let (mut closure, mut closure_rate, mut energy) = (0.0f64, 0.0f64, 0.0f64);
+    for _ in 0..100_000 {
+        p.step::<Rk4>(&mut s, h).unwrap();
+        let rows = constraints::constraint_rows(&p, s.t, &s.q, &s.v);
+        for i in 0..2 {
+            closure = closure.max(rows.value[i].abs());
+            closure_rate = closure_rate.max(rows.rate[i].abs());
+        }
+        energy = energy.max((p.energy(&s).unwrap() - e0).abs());
+    }
+    println!(
+        "four-bar, 1e5 RK4 steps h = 1e-3: loop closure |g| ≤ {closure:.2e}, |ġ| ≤ {closure_rate:.2e}, \
+         energy drift {energy:.2e} (E = {e0:.3})"
+    );
+    assert!(
+        closure <= 1e-10 && closure_rate <= 1e-10,
+        "closure {closure} {closure_rate}"
+    );
+    // RK4 energy error per step ~ (hω)⁵·E with ω ≲ 6/s; the projection removes the kinetic energy of
+    // the velocity drift, O(h⁵) per step too: ≲ 1e-7·|E| over 1e5 steps.
+    assert!(energy < 1e-7 * e0.abs().max(1.0), "energy {energy}");
+    // The joint force on the coupler and the rocker are equal and opposite (Newton's third law
+    // through virtual work of a constraint written on both bodies).
+    let f = constraint_forces(&p, &s).unwrap();
+    for i in 0..2 {
+        let on_coupler = f.cartesian[i][3 + i];
+        let on_rocker = f.cartesian[i][6 + i];
+        assert!((on_coupler + on_rocker).abs() < 1e-12 * on_coupler.abs().max(1.0));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scene 1: a particle on the outside of a frictionless sphere (a great circle of it: the motion is
+// planar), started at the top with speed v₀. Unilateral contact |r| − R ≥ 0.
+
+#[derive(Clone, Copy)]
+struct SphereParticle {
+    m: f64,
+    r: f64,
+    g: f64,
+}
+
+impl Model<2, 2> for SphereParticle {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("r", self.r), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m, self.m]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+}
+
+impl Constraints<2, 2, 1> for SphereParticle {
+    const NAMES: [&'static str; 1] = ["surface"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [vec2(x[0], x[1]).norm() - self.r]
+    }
+}
+constrained_mechanism!(SphereParticle, 2);
+
+/// ∫ₐᵇ f by composite 5-point Gauss–Legendre (Abramowitz & Stegun, Table 25.4), exact for
+/// polynomials of degree 9 per panel: for an analytic integrand the error with 400 panels is far
+/// below round-off.
+fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
+    const X: [f64; 5] = [
+        0.0,
+        -0.538_469_310_105_683_1,
+        0.538_469_310_105_683_1,
+        -0.906_179_845_938_664,
+        0.906_179_845_938_664,
+    ];
+    const W: [f64; 5] = [
+        0.568_888_888_888_888_9,
+        0.478_628_670_499_366_5,
+        0.478_628_670_499_366_5,
+        0.236_926_885_056_189_1,
+        0.236_926_885_056_189_1,
+    ];
+    let width = (b - a) / panels as f64;
+    let mut sum = 0.0;
+    for p in 0..panels {
+        let mid = a + (p as f64 + 0.5) * width;
+        for k in 0..5 {
+            sum += W[k] * f(mid + 0.5 * width * X[k]);
+        }
+    }
+    0.5 * width * sum
+}
+
+#[test]
+fn particle_leaves_the_sphere_where_the_normal_force_vanishes() {
+    let p = SphereParticle {
+        m: 0.7,
+        r: 1.5,
+        g: 9.81,
+    };
+    let v0 = 1.2f64;
+    // Energy: v² = v₀² + 2gR(1 − cos θ); radial Newton: m v²/R = m g cos θ − N, so
+    // N = m g (3 cos θ − 2) − m v₀²/R, zero at cos θ* = (2 + v₀²/(gR))/3.
+    let cos_star = (2.0 + v0 * v0 / (p.g * p.r)) / 3.0;
+    let theta_star = cos_star.acos();
+    let speed = |th: f64| (v0 * v0 + 2.0 * p.g * p.r * (1.0 - th.cos())).sqrt();
+    // Release time: t* = ∫₀^θ* R dθ / v(θ) (θ̇ = v/R), a smooth integrand since v ≥ v₀ > 0.
+    let t_star = gauss_legendre(|th| p.r / speed(th), 0.0, theta_star, 400);
+
+    let s0 = State::new(0.0, [0.0, p.r], [v0, 0.0]);
+    let mut stepper = ContactRk4::new(&p, &s0, ContactOptions::default()).unwrap();
+    assert_eq!(stepper.mode().rows, [RowMode::Active]);
+    let mut s = s0;
+    let h = 1e-3;
+    let mut worst_normal = 0.0f64;
+    while stepper.events.is_empty() {
+        stepper.step(&p, &mut s, h).unwrap();
+        if stepper.events.is_empty() {
+            let f = constraint_forces(&p, &s).unwrap();
+            let cos = s.q[1] / p.r;
+            let normal = p.m * p.g * (3.0 * cos - 2.0) - p.m * v0 * v0 / p.r;
+            worst_normal = worst_normal.max((f.multipliers[0] - normal).abs());
+        }
+    }
+    let release = stepper.events[0];
+    assert_eq!(
+        (release.from, release.to),
+        (RowMode::Active, RowMode::Inactive)
+    );
+    let release_error = (release.t - t_star).abs() / t_star;
+    println!(
+        "sphere: release at t = {:.15} vs {t_star:.15} by quadrature (rel. error {release_error:.1e}); \
+         normal force vs closed form ≤ {worst_normal:.1e}",
+        release.t
+    );
+    // Located to 1e-13 relative; the RK4 error of the contact phase (0.5 s, h = 1e-3) dominates.
+    assert!(release_error < 1e-9, "release time error {release_error}");
+    // N from the KKT solve at the RK4 state vs the closed form at the same θ: the closed form uses
+    // the exact energy integral, so they differ by the RK4 energy error (≪ 1e-9·mg).
+    assert!(
+        worst_normal < 1e-9 * p.m * p.g,
+        "normal force {worst_normal}"
+    );
+
+    // After release: free fall from the release state, a parabola (which RK4 integrates exactly,
+    // so only the release-state error remains), staying outside the sphere.
+    let r_star = [p.r * theta_star.sin(), p.r * cos_star];
+    let v_star = [
+        speed(theta_star) * cos_star,
+        -speed(theta_star) * theta_star.sin(),
+    ];
+    let mut worst_parabola = 0.0f64;
+    while s.t < t_star + 0.4 {
+        stepper.step(&p, &mut s, h).unwrap();
+        let tau = s.t - t_star;
+        let x = r_star[0] + v_star[0] * tau;
+        let y = r_star[1] + v_star[1] * tau - 0.5 * p.g * tau * tau;
+        worst_parabola = worst_parabola
+            .max((s.q[0] - x).abs())
+            .max((s.q[1] - y).abs());
+        assert!(s.q[0].hypot(s.q[1]) > p.r);
+    }
+    println!("sphere: parabola after release within {worst_parabola:.1e}");
+    assert!(worst_parabola < 1e-8, "parabola {worst_parabola}");
+    assert_eq!(
+        stepper.events.len(),
+        1,
+        "one mode change: {:?}",
+        stepper.events
+    );
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scene 5: a block (point mass) on a rough fixed ramp through the origin at angle α. Contact
+// c = n·r ≥ 0 with n = (−sin α, cos α); friction on it with slip s = t̂·ṙ, t̂ = (cos α, sin α)
+// (positive up the ramp).
+
+#[derive(Clone, Copy)]
+struct RoughRamp {
+    m: f64,
+    alpha: f64,
+    g: f64,
+    friction: Coulomb,
+}
+
+impl Model<2, 2> for RoughRamp {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("alpha", self.alpha), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m, self.m]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+}
+
+impl Constraints<2, 2, 2> for RoughRamp {
+    const NAMES: [&'static str; 2] = ["ramp", "ramp_friction"];
+    const KINDS: [ConstraintKind; 2] = [
+        ConstraintKind::Unilateral,
+        ConstraintKind::Friction { normal: 0 },
+    ];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 2] {
+        let (s, c) = self.alpha.sin_cos();
+        [x[1] * c - x[0] * s, D::zero()]
+    }
+    fn velocity_constraints<D: Scalar>(
+        &self,
+        _t: D,
+        _q: &[D; 2],
+        _v: &[D; 2],
+        _x: &[D; 2],
+        xd: &[D; 2],
+    ) -> [D; 2] {
+        let (s, c) = self.alpha.sin_cos();
+        [D::zero(), xd[0] * c + xd[1] * s]
+    }
+    fn friction_coefficients(&self, _row: usize) -> Coulomb {
+        self.friction
+    }
+}
+
+/// Distance up the ramp and its rate.
+fn along(p: &RoughRamp, s: &State<[f64; 2]>) -> (f64, f64) {
+    let (sn, cs) = p.alpha.sin_cos();
+    (s.q[0] * cs + s.q[1] * sn, s.v[0] * cs + s.v[1] * sn)
+}
+
+#[test]
+fn block_on_rough_ramp_slides_sticks_or_slides_back_without_chattering() {
+    let g = 9.81;
+    let alpha = 0.5f64; // tan α = 0.546
+    let h = 1e-3;
+    // Sliding down from rest (tan α > μₛ): a = g(sin α − μₖ cos α) down the ramp.
+    let p = RoughRamp {
+        m: 2.0,
+        alpha,
+        g,
+        friction: Coulomb {
+            kinetic: 0.3,
+            stiction: 0.4,
+        },
+    };
+    let mut s = State::at_rest([0.0, 0.0]);
+    let mut stepper = ContactRk4::new(&p, &s, ContactOptions::default()).unwrap();
+    assert_eq!(
+        stepper.mode().rows,
+        [RowMode::Active, RowMode::SlipNegative]
+    );
+    for _ in 0..1000 {
+        stepper.step(&p, &mut s, h).unwrap();
+    }
+    let a = g * (alpha.sin() - 0.3 * alpha.cos());
+    let (d, rate) = along(&p, &s);
+    assert!(
+        (d + 0.5 * a * s.t * s.t).abs() < 1e-12 && (rate + a * s.t).abs() < 1e-12,
+        "{d} {rate}"
+    );
+    let f = constraint_forces(&p, &s).unwrap();
+    let normal = p.m * g * alpha.cos();
+    assert!((f.multipliers[0] - normal).abs() < 1e-12 * normal);
+    assert!(
+        (f.multipliers[1] - 0.3 * normal).abs() < 1e-12 * normal,
+        "friction acts up the ramp"
+    );
+    assert!(stepper.events.is_empty());
+
+    // At rest when tan α ≤ μₛ: no motion, no events.
+    let p = RoughRamp {
+        friction: Coulomb {
+            kinetic: 0.5,
+            stiction: 0.6,
+        },
+        ..p
+    };
+    let mut s = State::at_rest([0.0, 0.0]);
+    let mut stepper = ContactRk4::new(&p, &s, ContactOptions::default()).unwrap();
+    assert_eq!(stepper.mode().rows, [RowMode::Active, RowMode::Stick]);
+    for _ in 0..2000 {
+        stepper.step(&p, &mut s, h).unwrap();
+    }
+    assert!(
+        s.q[0].abs() < 1e-15 && s.q[1].abs() < 1e-15 && stepper.events.is_empty(),
+        "{s:?}"
+    );
+
+    // Started sliding up with speed u: decelerates at g(sin α + μₖ cos α), stops at
+    // t_s = u/(g(sin α + μₖ cos α)) after d_s = u²/(2g(sin α + μₖ cos α)); then sticks if
+    // tan α ≤ μₛ, else slides back at g(sin α − μₖ cos α). Exactly one mode change either way.
+    let u = 2.0;
+    for (friction, sticks) in [
+        (
+            Coulomb {
+                kinetic: 0.5,
+                stiction: 0.6,
+            },
+            true,
+        ),
+        (
+            Coulomb {
+                kinetic: 0.2,
+                stiction: 0.3,
+            },
+            false,
+        ),
+    ] {
+        let p = RoughRamp { friction, ..p };
+        let (sn, cs) = alpha.sin_cos();
+        let mut s = State::new(0.0, [0.0, 0.0], [u * cs, u * sn]);
+        let mut stepper = ContactRk4::new(&p, &s, ContactOptions::default()).unwrap();
+        assert_eq!(
+            stepper.mode().rows,
+            [RowMode::Active, RowMode::SlipPositive]
+        );
+        let up = g * (sn + friction.kinetic * cs);
+        let down = g * (sn - friction.kinetic * cs);
+        let (t_stop, d_stop) = (u / up, u * u / (2.0 * up));
+        let mut worst = 0.0f64;
+        for _ in 0..3000 {
+            stepper.step(&p, &mut s, h).unwrap();
+            let (d, _) = along(&p, &s);
+            let exact = if s.t <= t_stop {
+                u * s.t - 0.5 * up * s.t * s.t
+            } else if sticks {
+                d_stop
+            } else {
+                d_stop - 0.5 * down * (s.t - t_stop).powi(2)
+            };
+            worst = worst.max((d - exact).abs());
+        }
+        let ev = &stepper.events;
+        println!(
+            "ramp (μₛ = {}): {} mode change(s) in 3000 steps, stop at t = {:.15} (exact {t_stop:.15}), |d − exact| ≤ {worst:.1e}",
+            friction.stiction,
+            ev.len(),
+            ev[0].t
+        );
+        assert_eq!(ev.len(), 1, "no chattering: {ev:?}");
+        assert_eq!(
+            ev[0].to,
+            if sticks {
+                RowMode::Stick
+            } else {
+                RowMode::SlipNegative
+            }
+        );
+        assert!(
+            (ev[0].t - t_stop).abs() < 1e-12 * t_stop,
+            "stop time {} vs {t_stop}",
+            ev[0].t
+        );
+        // Piecewise quadratic motion: RK4 is exact on each piece, the event is located to 1e-13.
+        assert!(worst < 1e-11, "{worst}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scene 6: the lecture's wedge and block (Cross, Ph106 Lecture 4, eqs. (27)–(32)), now with friction
+// between them; the wedge slides freely on a frictionless floor. q = (X, bx, by): wedge position
+// and block position; the face passes through (X, h) sloping down at angle α. Contact
+// c = n·(r_b − (X, h)) ≥ 0 with n = (sin α, cos α); slip s = t̂·(ṙ_b − (Ẋ, 0)) with
+// t̂ = (cos α, −sin α) (positive when the block slides down the face).
+
+#[derive(Clone, Copy)]
+struct WedgeBlock {
+    wedge: f64,
+    block: f64,
+    alpha: f64,
+    h: f64,
+    g: f64,
+    friction: Coulomb,
+}
+
+impl Model<3, 4> for WedgeBlock {
+    type Coords = [f64; 3];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[
+            ("wedge", self.wedge),
+            ("block", self.block),
+            ("alpha", self.alpha),
+            ("h", self.h),
+            ("g", self.g),
+        ])
+    }
+    fn masses(&self) -> [f64; 4] {
+        [self.wedge, self.wedge, self.block, self.block]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 3]) -> [D; 4] {
+        [q[0], D::zero(), q[1], q[2]]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 3], x: &[D; 4]) -> D {
+        x[3] * (self.block * self.g)
+    }
+}
+
+impl Constraints<3, 4, 2> for WedgeBlock {
+    const NAMES: [&'static str; 2] = ["face", "face_friction"];
+    const KINDS: [ConstraintKind; 2] = [
+        ConstraintKind::Unilateral,
+        ConstraintKind::Friction { normal: 0 },
+    ];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 3], x: &[D; 4]) -> [D; 2] {
+        let (s, c) = self.alpha.sin_cos();
+        [(x[2] - x[0]) * s + (x[3] - x[1] - self.h) * c, D::zero()]
+    }
+    fn velocity_constraints<D: Scalar>(
+        &self,
+        _t: D,
+        _q: &[D; 3],
+        _v: &[D; 3],
+        _x: &[D; 4],
+        xd: &[D; 4],
+    ) -> [D; 2] {
+        let (s, c) = self.alpha.sin_cos();
+        [D::zero(), (xd[2] - xd[0]) * c - (xd[3] - xd[1]) * s]
+    }
+    fn friction_coefficients(&self, _row: usize) -> Coulomb {
+        self.friction
+    }
+}
+
+#[test]
+fn wedge_and_block_with_friction_match_closed_form() {
+    let p = WedgeBlock {
+        wedge: 3.0,
+        block: 1.0,
+        alpha: 0.5,
+        h: 1.0,
+        g: 9.81,
+        friction: Coulomb {
+            kinetic: 0.2,
+            stiction: 0.3,
+        },
+    };
+    let (m, big_m, mu, g) = (p.block, p.wedge, p.friction.kinetic, p.g);
+    let (sn, cs) = p.alpha.sin_cos();
+    // Closed form while the block slides down the face (derived here; at μ = 0 it reduces to the
+    // textbook frictionless result A = −m g sin α cos α/(M + m sin²α)). With the wedge's
+    // acceleration A (horizontal), the block's acceleration relative to the face a_r (down the
+    // face), normal force N and friction μN up the face on the block (down on the wedge):
+    //   block along n:  m A sin α = N − m g cos α
+    //   block along t̂:  m (A cos α + a_r) = m g sin α − μ N
+    //   wedge, x:        M A = −N (sin α − μ cos α)
+    // ⇒ A = −m g cos α (sin α − μ cos α) / (M + m sin α (sin α − μ cos α)),
+    //   N = m (g cos α + A sin α),  a_r = g (sin α − μ cos α) − A (cos α + μ sin α).
+    let k = sn - mu * cs;
+    let big_a = -m * g * cs * k / (big_m + m * sn * k);
+    let normal = m * (g * cs + big_a * sn);
+    let a_r = g * k - big_a * (cs + mu * sn);
+    let d0 = 0.3;
+    let s0 = State::new(0.0, [0.0, d0 * cs, p.h - d0 * sn], [0.0; 3]);
+    let mut stepper = ContactRk4::new(&p, &s0, ContactOptions::default()).unwrap();
+    assert_eq!(
+        stepper.mode().rows,
+        [RowMode::Active, RowMode::SlipPositive]
+    );
+    let mut s = s0;
+    let mut worst = 0.0f64;
+    for _ in 0..1000 {
+        stepper.step(&p, &mut s, 1e-3).unwrap();
+        let t = s.t;
+        let x_wedge = 0.5 * big_a * t * t;
+        let d = d0 + 0.5 * a_r * t * t;
+        let exact = [x_wedge, x_wedge + d * cs, p.h - d * sn];
+        for i in 0..3 {
+            worst = worst.max((s.q[i] - exact[i]).abs());
+        }
+    }
+    let f = constraint_forces(&p, &s).unwrap();
+    println!(
+        "wedge and block: A = {big_a:.6}, a_r = {a_r:.6}, N = {normal:.6}; |q − closed form| ≤ {worst:.1e}, \
+         λ = {:?}",
+        f.multipliers
+    );
+    // Constant accelerations: RK4 is exact up to round-off.
+    assert!(worst < 1e-12, "{worst}");
+    assert!((f.multipliers[0] - normal).abs() < 1e-12 * normal);
+    assert!((f.multipliers[1] + mu * normal).abs() < 1e-12 * normal);
+    // Newton's third law through the virtual work of the friction row: the tangential forces on
+    // wedge and block along x are opposite.
+    assert!((f.cartesian[1][0] + f.cartesian[1][2]).abs() < 1e-12);
+    assert!(stepper.events.is_empty());
+    // With μₛ ≥ tan α the block sticks and nothing moves (no horizontal external force).
+    let p = WedgeBlock {
+        friction: Coulomb {
+            kinetic: 0.5,
+            stiction: 0.6,
+        },
+        ..p
+    };
+    let mut stepper = ContactRk4::new(&p, &s0, ContactOptions::default()).unwrap();
+    let mut s = s0;
+    for _ in 0..1000 {
+        stepper.step(&p, &mut s, 1e-3).unwrap();
+    }
+    assert!(
+        (0..3).all(|i| (s.q[i] - s0.q[i]).abs() < 1e-14) && stepper.events.is_empty(),
+        "{s:?}"
+    );
+}

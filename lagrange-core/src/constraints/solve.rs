@@ -787,8 +787,12 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
 
 /// Checks a state against the constraints: holonomic |g| and |ġ|, velocity |h|, unilateral c ≥ −tol
 /// (and ċ ≥ −tol where c ≤ tol), each within `tol` (use [`CONSISTENCY_TOLERANCE`]); and that every
-/// velocity and friction row is affine in q̇ (compared at q̇ and at q̇ + (1, …, 1) against its
-/// linearization, to 1e-9 relative).
+/// velocity and friction row is affine in q̇: its second derivative along w = q̇ + (1, …, 1),
+/// d²/ds² h(q, q̇ + s w), must vanish (exactly zero for affine code; allowed 1e-9 relative).
+///
+/// Cost: one first-order dual pass over x along (q̇, 1) for the residuals, and for velocity rows one
+/// more dual pass for J w and one second-order evaluation of h; cheap enough to run before every
+/// step ([`Mechanism::check_constraints`](crate::Mechanism::check_constraints)).
 ///
 /// Errors: [`Error::ConstraintViolation`] listing the violated rows and residuals,
 /// [`Error::NonlinearVelocityConstraint`], invalid friction coefficients.
@@ -800,16 +804,41 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
     tol: f64,
 ) -> Result<()> {
     model.validate_constraints()?;
-    let cr = constraint_rows(model, t, q, v);
+    // x, ẋ and ġ from one dual pass along (q̇, 1).
+    let td = if M::RHEONOMIC {
+        Dual::new(t, 1.0)
+    } else {
+        Dual::from_re(t)
+    };
+    let qd: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
+    let xd = model.cartesian(td, &qd);
+    let x: [f64; K] = std::array::from_fn(|i| xd[i].re);
+    let x_dot: [f64; K] = std::array::from_fn(|i| xd[i].eps);
+    let (mut value, mut rate) = ([0.0; C], [0.0; C]);
+    if has_position::<M, N, K, C>() {
+        let g = model.position_constraints(td, &qd, &xd);
+        for i in 0..C {
+            value[i] = g[i].re;
+            rate[i] = g[i].eps;
+        }
+    }
+    if has_velocity::<M, N, K, C>() {
+        let h = model.velocity_constraints(t, q, v, &x, &x_dot);
+        for i in 0..C {
+            if M::KINDS[i].is_velocity() {
+                value[i] = h[i];
+            }
+        }
+    }
     let mut violated = Vec::new();
     for i in 0..C {
         let r = match M::KINDS[i] {
-            ConstraintKind::Holonomic => cr.value[i].abs().max(cr.rate[i].abs()),
-            ConstraintKind::Velocity => cr.value[i].abs(),
+            ConstraintKind::Holonomic => value[i].abs().max(rate[i].abs()),
+            ConstraintKind::Velocity => value[i].abs(),
             ConstraintKind::Unilateral => {
-                let pen = (-cr.value[i]).max(0.0);
-                if cr.value[i] <= tol {
-                    pen.max((-cr.rate[i]).max(0.0))
+                let pen = (-value[i]).max(0.0);
+                if value[i] <= tol {
+                    pen.max((-rate[i]).max(0.0))
                 } else {
                     pen
                 }
@@ -833,31 +862,30 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
         });
     }
     if has_velocity::<M, N, K, C>() {
-        let zero = [0.0; N];
-        let h0 = constraint_rows(model, t, q, &zero).value;
-        let shifted: [f64; N] = std::array::from_fn(|j| v[j] + 1.0);
-        let h1 = constraint_rows(model, t, q, &shifted).value;
+        // Affine in q̇ ⇔ zero second derivative along any direction w; ẋ(q̇ + s w) = ẋ + s J w.
+        let w: [f64; N] = std::array::from_fn(|j| v[j] + 1.0);
+        let qw: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], w[j]));
+        let jw = model.cartesian(Dual::from_re(t), &qw);
+        let t2 = Dual2::from_re(t);
+        let q2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::from_re(q[j]));
+        let v2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::new(v[j], w[j], 0.0));
+        let x2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::from_re(x[i]));
+        let xd2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::new(x_dot[i], jw[i].eps, 0.0));
+        let h = model.velocity_constraints(t2, &q2, &v2, &x2, &xd2);
         for i in 0..C {
             if !M::KINDS[i].is_velocity() {
                 continue;
             }
-            let row = &cr.rows[i];
-            for (w, hw) in [(v, cr.value[i]), (&shifted, h1[i])] {
-                let linear: f64 = h0[i] + (0..N).map(|j| row[j] * w[j]).sum::<f64>();
-                let size: f64 =
-                    h0[i].abs() + (0..N).map(|j| (row[j] * w[j]).abs()).sum::<f64>() + hw.abs();
-                let deviation = (hw - linear).abs();
-                if !(deviation <= 1e-9 * size.max(1e-300)) && deviation > 0.0 {
-                    return Err(Error::NonlinearVelocityConstraint {
-                        constraint: M::NAMES[i],
-                        t,
-                        configuration: describe_configuration(
-                            &<M::Coords as Coordinates<N>>::NAMES,
-                            q,
-                        ),
-                        deviation,
-                    });
-                }
+            // The quadratic term at s = 1 against the size of the affine part there.
+            let deviation = 0.5 * h[i].v2.abs();
+            let size = h[i].re.abs() + h[i].v1.abs();
+            if !(deviation <= 1e-9 * size) && deviation > 0.0 || !deviation.is_finite() {
+                return Err(Error::NonlinearVelocityConstraint {
+                    constraint: M::NAMES[i],
+                    t,
+                    configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, q),
+                    deviation,
+                });
             }
         }
     }
