@@ -1082,3 +1082,201 @@ fn wedge_and_block_with_friction_match_closed_form() {
         "{s:?}"
     );
 }
+
+// ---------------------------------------------------------------------------------------------
+// Impacts: a particle dropped on a floor y ≥ 0, plastic (e = 0) and with restitution e = 0.5.
+
+#[derive(Clone, Copy)]
+struct Floor {
+    m: f64,
+    g: f64,
+}
+
+impl Model<2, 2> for Floor {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m, self.m]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+}
+
+impl Constraints<2, 2, 1> for Floor {
+    const NAMES: [&'static str; 1] = ["floor"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [x[1]]
+    }
+}
+
+#[test]
+fn contact_is_re_established_by_plastic_or_restitution_impact() {
+    let p = Floor { m: 1.5, g: 9.81 };
+    let (height, u) = (1.0, 0.7);
+    let t_hit = (2.0 * height / p.g).sqrt();
+    let v_hit = p.g * t_hit;
+    let s0 = State::new(0.0, [0.0, height], [u, 0.0]);
+    // Plastic: the vertical velocity is lost at t_hit, then the particle slides on the floor
+    // (frictionless) with λ = m g.
+    let mut stepper = ContactRk4::new(&p, &s0, ContactOptions::default()).unwrap();
+    assert_eq!(stepper.mode().rows, [RowMode::Inactive]);
+    let mut s = s0;
+    for _ in 0..1000 {
+        stepper.step(&p, &mut s, 1e-3).unwrap();
+    }
+    assert_eq!(stepper.events.len(), 1, "{:?}", stepper.events);
+    let contact = stepper.events[0];
+    assert_eq!(
+        (contact.from, contact.to),
+        (RowMode::Inactive, RowMode::Active)
+    );
+    assert!(
+        (contact.t - t_hit).abs() < 1e-12 * t_hit,
+        "{} vs {t_hit}",
+        contact.t
+    );
+    assert!(s.q[1].abs() < 1e-15 && s.v[1].abs() < 1e-15);
+    assert!((s.q[0] - u * s.t).abs() < 1e-12);
+    let f = constraint_forces(&p, &s).unwrap();
+    assert!((f.multipliers[0] - p.m * p.g).abs() < 1e-12);
+
+    // Restitution e: rebounds with e·v, flight times 2 e^k v/g; the contact closes each time.
+    let e = 0.5;
+    let options = ContactOptions {
+        restitution: e,
+        ..ContactOptions::default()
+    };
+    let mut stepper = ContactRk4::new(&p, &s0, options).unwrap();
+    let mut s = s0;
+    let mut expected = vec![t_hit];
+    let mut speed = v_hit;
+    for _ in 0..3 {
+        speed *= e;
+        expected.push(expected.last().unwrap() + 2.0 * speed / p.g);
+    }
+    while s.t < expected[3] + 0.01 {
+        stepper.step(&p, &mut s, 1e-3).unwrap();
+        assert!(s.q[1] > -1e-12, "no penetration: {s:?}");
+    }
+    assert!(stepper.events.len() >= 4);
+    for k in 0..4 {
+        let got = stepper.events[k].t;
+        // Each impact is located to 1e-13; the flight between them is a parabola RK4 integrates
+        // exactly, so the times agree to round-off.
+        assert!(
+            (got - expected[k]).abs() < 1e-11,
+            "impact {k}: {got} vs {}",
+            expected[k]
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// A rheonomic guide: a particle on a horizontal rail that oscillates vertically,
+// y = A sin ωt. The rail's force is λ = m (g − A ω² sin ωt) (Newton in y).
+
+#[derive(Clone, Copy)]
+struct ShakenRail {
+    m: f64,
+    g: f64,
+    amplitude: f64,
+    omega: f64,
+}
+
+impl Model<2, 2> for ShakenRail {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = true;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m, self.m]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+}
+
+impl Constraints<2, 2, 1> for ShakenRail {
+    const NAMES: [&'static str; 1] = ["rail"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [x[1] - (t * self.omega).sin() * self.amplitude]
+    }
+}
+constrained_mechanism!(ShakenRail, 2);
+
+#[test]
+fn rheonomic_guide_gives_time_dependent_force() {
+    let p = ShakenRail {
+        m: 0.5,
+        g: 9.81,
+        amplitude: 0.2,
+        omega: 3.0,
+    };
+    let mut s = State::new(0.0, [0.0, 0.0], [1.0, p.amplitude * p.omega]);
+    for _ in 0..5000 {
+        p.step::<Rk4>(&mut s, 1e-3).unwrap();
+    }
+    let t = s.t;
+    assert!((s.q[1] - p.amplitude * (p.omega * t).sin()).abs() < 1e-14);
+    assert!((s.v[1] - p.amplitude * p.omega * (p.omega * t).cos()).abs() < 1e-13);
+    assert!((s.q[0] - t).abs() < 1e-12);
+    let f = constraint_forces(&p, &s).unwrap();
+    let want = p.m * (p.g - p.amplitude * p.omega * p.omega * (p.omega * t).sin());
+    assert!(
+        (f.multipliers[0] - want).abs() < 1e-12,
+        "{} vs {want}",
+        f.multipliers[0]
+    );
+}
+
+#[test]
+fn constrained_accelerations_differentiate_through_dual_numbers() {
+    // Implicit integrators differentiate q̈(q, v) with dual numbers: compare with central differences.
+    use num_dual::Dual64;
+    let p = FourBar {
+        l: [1.0, 3.0, 2.0],
+        m: [1.0, 2.0, 1.5],
+        d: 3.0,
+        g: 9.81,
+    };
+    let s = consistent_state(&p, &State::new(0.0, [1.0, 0.2, 1.6], [3.0, 0.0, 0.0])).unwrap();
+    for k in 0..3 {
+        let qd: [Dual64; 3] = std::array::from_fn(|j| Dual64::from_re(s.q[j]));
+        let mut qd = qd;
+        qd[k] = qd[k].derivative();
+        let vd: [Dual64; 3] = std::array::from_fn(|j| Dual64::from_re(s.v[j]));
+        let a = constraints::accelerations(&p, Dual64::from_re(0.0), &qd, &vd).unwrap();
+        let eps = 1e-6;
+        let (mut qp, mut qm) = (s.q, s.q);
+        qp[k] += eps;
+        qm[k] -= eps;
+        let ap = constraints::accelerations(&p, 0.0, &qp, &s.v).unwrap();
+        let am = constraints::accelerations(&p, 0.0, &qm, &s.v).unwrap();
+        for i in 0..3 {
+            let fd = (ap[i] - am[i]) / (2.0 * eps);
+            // Central differences: truncation O(eps²)·|q⃛| plus round-off ε|q̈|/eps ≈ 1e-9.
+            assert!(
+                (a[i].eps - fd).abs() < 1e-6 * (1.0 + fd.abs()),
+                "∂q̈{i}/∂q{k}: {} vs {fd}",
+                a[i].eps
+            );
+        }
+    }
+}

@@ -219,7 +219,29 @@ impl<const C: usize> ContactRk4<C> {
             let span = t_end - t;
             let (q1, v1) = substep(model, t, &q, &v, span, &mode)?;
             let phi1 = event_values(model, t_end, &q1, &v1, &mode)?;
-            if !(0..C).any(|i| armed[i] && phi1[i] < 0.0) {
+            // A contact that bounced off (disarmed, separating at the start of the sub-step) can
+            // close again within the same step: it takes part too.
+            let separating: [bool; C] = if (0..C).any(|i| {
+                !armed[i]
+                    && phi1[i] < 0.0
+                    && matches!(
+                        (M::KINDS[i], mode.rows[i]),
+                        (ConstraintKind::Unilateral, RowMode::Inactive)
+                    )
+            }) {
+                let rate = super::constraint_rows(model, t, &q, &v).rate;
+                std::array::from_fn(|i| {
+                    matches!(
+                        (M::KINDS[i], mode.rows[i]),
+                        (ConstraintKind::Unilateral, RowMode::Inactive)
+                    ) && rate[i] > CONSISTENCY_TOLERANCE
+                })
+            } else {
+                [false; C]
+            };
+            let triggered: [bool; C] =
+                std::array::from_fn(|i| (armed[i] || separating[i]) && phi1[i] < 0.0);
+            if !triggered.iter().any(|&b| b) {
                 for i in 0..C {
                     armed[i] |= phi1[i] > 0.0;
                 }
@@ -229,7 +251,7 @@ impl<const C: usize> ContactRk4<C> {
             let phi0 = event_values(model, t, &q, &v, &mode)?;
             let mut first: Option<(f64, usize, [f64; N], [f64; N])> = None;
             for i in 0..C {
-                if armed[i] && phi1[i] < 0.0 {
+                if triggered[i] {
                     let hit =
                         self.locate(model, t, &q, &v, span, &mode, i, phi0[i], phi1[i], (q1, v1))?;
                     if first.is_none_or(|f| hit.0 < f.0) {
@@ -237,7 +259,9 @@ impl<const C: usize> ContactRk4<C> {
                     }
                 }
             }
-            let (tau, row, qe, ve) = first.expect("a triggered row was located");
+            let Some((tau, row, qe, ve)) = first else {
+                break;
+            };
             t += tau;
             (q, v) = (qe, ve);
             let phi_e = event_values(model, t, &q, &v, &mode)?;
@@ -296,11 +320,25 @@ impl<const C: usize> ContactRk4<C> {
         phi_end: f64,
         end: ([f64; N], [f64; N]),
     ) -> Result<(f64, [f64; N], [f64; N])> {
+        let (mut a, mut fa) = (0.0, phi_start);
         if !(phi_start > 0.0) {
-            return Ok((0.0, *q, *v));
+            // The event function starts at zero (a contact that just bounced off): the bracket
+            // starts at the first of span·2⁻ᵏ (k = 40, …, 1) where it is positive.
+            let mut found = false;
+            for k in (1..=40).rev() {
+                let tau = span * 0.5f64.powi(k);
+                let sample = substep(model, t, q, v, tau, mode)?;
+                let f = event_values(model, t + tau, &sample.0, &sample.1, mode)?[row];
+                if f > 0.0 {
+                    (a, fa, found) = (tau, f, true);
+                    break;
+                }
+            }
+            if !found {
+                return Ok((0.0, *q, *v));
+            }
         }
         let tol = self.options.event_tolerance * (t.abs() + span);
-        let (mut a, mut fa) = (0.0, phi_start);
         let (mut b, mut fb, mut sb) = (span, phi_end, end);
         let mut side = 0i8;
         for _ in 0..200 {
