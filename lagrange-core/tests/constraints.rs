@@ -1280,3 +1280,204 @@ fn constrained_accelerations_differentiate_through_dual_numbers() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Cost per step of each constraint kind relative to the same mechanism without it. Printed, never
+// asserted: run with `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`.
+
+/// The same model with its constraints dropped.
+struct Free<T>(T);
+
+macro_rules! free_mechanism {
+    ($inner:ty, $n:literal, $k:literal) => {
+        impl Model<$n, $k> for Free<$inner> {
+            type Coords = [f64; $n];
+            const RHEONOMIC: bool = <$inner as Model<$n, $k>>::RHEONOMIC;
+            const HAS_POTENTIAL: bool = <$inner as Model<$n, $k>>::HAS_POTENTIAL;
+            const HAS_FORCES: bool = false;
+            fn validate(&self) -> lagrange_core::Result<()> {
+                Model::validate(&self.0)
+            }
+            fn masses(&self) -> [f64; $k] {
+                self.0.masses()
+            }
+            fn cartesian<D: Scalar>(&self, t: D, q: &[D; $n]) -> [D; $k] {
+                self.0.cartesian(t, q)
+            }
+            fn potential<D: Scalar>(&self, t: D, q: &[D; $n], x: &[D; $k]) -> D {
+                self.0.potential(t, q, x)
+            }
+        }
+        impl Mechanism<$n> for Free<$inner> {
+            type Coords = [f64; $n];
+            fn validate(&self) -> lagrange_core::Result<()> {
+                Model::validate(self)
+            }
+            fn equations_of_motion_at<S: Scalar>(
+                &self,
+                t: S,
+                q: &[S; $n],
+                v: &[S; $n],
+            ) -> EquationsOfMotion<S, $n> {
+                dynamics::equations_of_motion(self, t, q, v)
+            }
+            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
+                dynamics::kinetic_energy(self, t, q, v)
+            }
+            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
+                dynamics::potential_energy(self, t, q)
+            }
+            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
+                dynamics::momenta(self, t, q, v)
+            }
+            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
+                dynamics::lagrangian_time_derivative(self, t, q, v)
+            }
+        }
+    };
+}
+free_mechanism!(CartesianPendulum, 2, 2);
+free_mechanism!(RollingWheel, 4, 4);
+free_mechanism!(FourBar, 3, 9);
+free_mechanism!(SphereParticle, 2, 2);
+
+/// The rough ramp with its friction row dropped (contact only).
+struct SmoothRamp(RoughRamp);
+impl Model<2, 2> for SmoothRamp {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Model::validate(&self.0)
+    }
+    fn masses(&self) -> [f64; 2] {
+        self.0.masses()
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 2] {
+        self.0.cartesian(t, q)
+    }
+    fn potential<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> D {
+        self.0.potential(t, q, x)
+    }
+}
+impl Constraints<2, 2, 1> for SmoothRamp {
+    const NAMES: [&'static str; 1] = ["ramp"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
+    fn position_constraints<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [self.0.position_constraints(t, q, x)[0]]
+    }
+}
+
+/// Nanoseconds per step: minimum over 7 repeats of `steps` steps, after a warm-up.
+fn time_per_step(steps: usize, mut run: impl FnMut(usize)) -> f64 {
+    run(steps / 10);
+    (0..7)
+        .map(|_| {
+            let start = std::time::Instant::now();
+            run(steps);
+            start.elapsed().as_nanos() as f64 / steps as f64
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn rk4_cost<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(m: &M, s0: State<[f64; N]>) -> f64 {
+    time_per_step(20_000, |n| {
+        let mut s = s0;
+        for _ in 0..n {
+            m.step::<Rk4>(&mut s, 1e-4).unwrap();
+        }
+        std::hint::black_box(s);
+    })
+}
+
+fn contact_cost<
+    M: Constraints<N, K, C, Coords = [f64; N]>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    m: &M,
+    s0: State<[f64; N]>,
+) -> f64 {
+    time_per_step(20_000, |n| {
+        let mut s = s0;
+        let mut stepper = ContactRk4::new(m, &s, ContactOptions::default()).unwrap();
+        for _ in 0..n {
+            stepper.step(m, &mut s, 1e-5).unwrap();
+        }
+        std::hint::black_box(s);
+    })
+}
+
+#[test]
+#[ignore = "timing report, run in release with --ignored --nocapture"]
+fn cost_per_step_of_each_constraint_kind() {
+    let pendulum = CartesianPendulum {
+        m: 1.0,
+        l: 1.0,
+        g: 9.81,
+    };
+    let s = State::new(0.0, [0.6, -0.8], [0.8, 0.6]);
+    let (with, without) = (rk4_cost(&pendulum, s), rk4_cost(&Free(pendulum), s));
+    println!("holonomic (Cartesian pendulum, 1 row, RK4 + projection): {with:.0} ns/step vs {without:.0} free: ×{:.1}", with / without);
+
+    let four_bar = FourBar {
+        l: [1.0, 3.0, 2.0],
+        m: [1.0, 2.0, 1.5],
+        d: 3.0,
+        g: 9.81,
+    };
+    let s = consistent_state(
+        &four_bar,
+        &State::new(0.0, [1.0, 0.2, 1.6], [3.0, 0.0, 0.0]),
+    )
+    .unwrap();
+    let (with, without) = (rk4_cost(&four_bar, s), rk4_cost(&Free(four_bar), s));
+    println!("holonomic (four-bar, 2 rows, RK4 + projection): {with:.0} ns/step vs {without:.0} free: ×{:.1}", with / without);
+
+    let wheel = RollingWheel { m: 2.0, r: 0.3 };
+    let s = State::new(
+        0.0,
+        [0.0, 0.0, 0.4, 0.0],
+        [0.3 * 5.0 * 0.4f64.cos(), 0.3 * 5.0 * 0.4f64.sin(), 0.7, 5.0],
+    );
+    let (with, without) = (rk4_cost(&wheel, s), rk4_cost(&Free(wheel), s));
+    println!("velocity (rolling wheel, 2 rows, RK4 + projection): {with:.0} ns/step vs {without:.0} free: ×{:.1}", with / without);
+
+    let sphere = SphereParticle {
+        m: 1.0,
+        r: 1.0,
+        g: 9.81,
+    };
+    let s = State::new(0.0, [0.0, 1.0], [0.5, 0.0]);
+    let (with, without) = (contact_cost(&sphere, s), rk4_cost(&Free(sphere), s));
+    println!("unilateral in contact (sphere, ContactRk4): {with:.0} ns/step vs {without:.0} free RK4: ×{:.1}", with / without);
+    let s_free = State::new(0.0, [0.0, 2.0], [0.5, 0.0]);
+    let with = contact_cost(&sphere, s_free);
+    println!("unilateral separated (sphere, ContactRk4): {with:.0} ns/step vs {without:.0} free RK4: ×{:.1}", with / without);
+
+    let ramp = RoughRamp {
+        m: 1.0,
+        alpha: 0.5,
+        g: 9.81,
+        friction: Coulomb {
+            kinetic: 0.3,
+            stiction: 0.4,
+        },
+    };
+    let s = State::at_rest([0.0, 0.0]);
+    let (with, without) = (contact_cost(&ramp, s), contact_cost(&SmoothRamp(ramp), s));
+    println!("friction sliding (ramp, ContactRk4): {with:.0} ns/step vs {without:.0} contact only: ×{:.1}", with / without);
+    let sticky = RoughRamp {
+        friction: Coulomb {
+            kinetic: 0.5,
+            stiction: 0.6,
+        },
+        ..ramp
+    };
+    let with = contact_cost(&sticky, s);
+    let smooth_rest = State::new(0.0, [0.0, 0.0], [0.0, 0.0]);
+    let _ = smooth_rest;
+    println!("friction sticking (ramp, ContactRk4): {with:.0} ns/step vs {without:.0} contact only: ×{:.1}", with / without);
+}

@@ -175,9 +175,12 @@ impl<const C: usize> ContactRk4<C> {
         check_state(&<M::Coords as Coordinates<N>>::NAMES, state.t, &q, &v)?;
         check_consistent(model, state.t, &q, &v, CONSISTENCY_TOLERANCE)?;
         if !(options.restitution.is_finite() && (0.0..=1.0).contains(&options.restitution)) {
-            return Err(Error::NonFiniteParameter {
-                name: "restitution",
-                value: options.restitution,
+            return Err(Error::UnsuitableMethod {
+                method: "ContactRk4",
+                reason: format!(
+                    "the coefficient of restitution must be in [0, 1], got {}",
+                    options.restitution
+                ),
             });
         }
         let mode = infer_mode(model, state.t, &q, &v)?;

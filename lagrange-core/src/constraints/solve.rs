@@ -170,6 +170,34 @@ fn rows_and_jacobian<
     (out, jac)
 }
 
+/// Pass 1 alone, on f64: position rows G, their values g and the Jacobian rows of x.
+#[allow(clippy::type_complexity)]
+fn position_rows_and_jacobian<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+) -> ([SVector<f64, N>; C], [f64; C], [SVector<f64, N>; K]) {
+    let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let td = DualSVec::from_re(t);
+    let x1 = model.cartesian(td, &qd);
+    let jac: [SVector<f64, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    let g1 = model.position_constraints(td, &qd, &x1);
+    let mut rows = [SVector::zeros(); C];
+    let mut value = [0.0; C];
+    for i in 0..C {
+        if M::KINDS[i].is_position() {
+            rows[i] = gradient(&g1[i]);
+            value[i] = g1[i].re;
+        }
+    }
+    (rows, value, jac)
+}
+
 /// The constraint rows rᵢ, biases βᵢ, values and rates at (t, q, q̇), for any scalar.
 pub fn constraint_rows<
     M: Constraints<N, K, C>,
@@ -544,9 +572,12 @@ pub fn infer_mode<M: Constraints<N, K, C>, const N: usize, const K: usize, const
     q: &[f64; N],
     v: &[f64; N],
 ) -> Result<Mode<C>> {
+    let mut mode = Mode::all_active::<M, N, K>();
+    if always_active::<M, N, K, C>() {
+        return Ok(mode);
+    }
     let cr = constraint_rows(model, t, q, v);
     let tol = CONSISTENCY_TOLERANCE;
-    let mut mode = Mode::all_active::<M, N, K>();
     for i in 0..C {
         if let ConstraintKind::Unilateral = M::KINDS[i] {
             if !(cr.value[i] <= tol && cr.rate[i] <= tol) {
@@ -743,18 +774,21 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
                 break;
             }
             iterations += 1;
-            let (cr, jac) = rows_and_jacobian(model, t, &qn, v);
-            let delta =
-                least_norm_correction(model, t, &qn, &jac, &cr.rows, &cr.value, &position_rows)?;
+            let (rows, value, jac) = position_rows_and_jacobian(model, t, &qn);
+            let delta = least_norm_correction(model, t, &qn, &jac, &rows, &value, &position_rows)?;
             let trial: [f64; N] = std::array::from_fn(|j| qn[j] + delta[j]);
             let new_residual = position_residual(model, t, &trial, mode);
             if !(new_residual < residual) {
                 break; // round-off floor reached: keep the best iterate
             }
             let stalled = new_residual > 0.25 * residual;
+            let scale = qn.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+            // Newton converges quadratically: after a correction this small the next one would be
+            // ≲ |δ|²·(curvature) — below round-off — so it is not computed.
+            let converged = delta.amax() <= 1e-8 * scale;
             qn = trial;
             residual = new_residual;
-            if stalled && residual < CONSISTENCY_TOLERANCE * 1e-4 {
+            if converged || (stalled && residual < CONSISTENCY_TOLERANCE * 1e-4) {
                 break;
             }
         }
