@@ -58,7 +58,9 @@
 //! velocities jump by an impulse along the contact row (and the other active rows, which stay
 //! satisfied): q̇⁺ = q̇⁻ + M⁻¹Rᵀp with ċ⁺ = −e·ċ⁻, e the [`ContactOptions::restitution`] (Newton's
 //! restitution law; e = 0, the default, is a plastic impact after which the contact is active). The
-//! impulse is frictionless (no tangential impulse). The kinetic energy lost is ½(1 − e²)·(ċ⁻)²/(R M⁻¹ Rᵀ).
+//! impulse is frictionless (no tangential impulse). For a single contact row r the kinetic energy
+//! lost (scleronomic contact) is ½(1 − e²)·(ċ⁻)²/(r M⁻¹ rᵀ): the impulse is p = −(1 + e)ċ⁻/(r M⁻¹ rᵀ)
+//! and ΔT = p ċ⁻ + ½p²·r M⁻¹ rᵀ.
 //!
 //! # Drift
 //!
@@ -74,6 +76,83 @@
 //! Every branch on [`Constraints::KINDS`] is on a constant, so a mechanism with only holonomic rows
 //! carries no velocity-row, contact or friction code after monomorphization, and a mechanism without
 //! constraints does not implement [`Constraints`] at all (no KKT solve).
+
+//! # Example: what a declaration with a `#[constraint]` expands to
+//!
+//! A planar pendulum in Cartesian coordinates: the bob (x, y) is kept at distance L from the pivot
+//! by a holonomic constraint written on the bob's position. The three impls are exactly the shape
+//! the `#[mechanism]` attribute generates; `Mechanism`'s three constraint overrides are what makes
+//! every integrator enforce the constraints.
+//!
+//! ```
+//! use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
+//! use lagrange_core::dynamics::{self, EquationsOfMotion};
+//! use lagrange_core::{vec2, Mechanism, Model, Rk4, Scalar, State};
+//!
+//! struct Pendulum { m: f64, l: f64, g: f64 }
+//!
+//! impl Model<2, 2> for Pendulum {
+//!     type Coords = [f64; 2];
+//!     const RHEONOMIC: bool = false;
+//!     const HAS_POTENTIAL: bool = true;
+//!     const HAS_FORCES: bool = false;
+//!     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+//!     fn masses(&self) -> [f64; 2] { [self.m, self.m] }
+//!     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
+//!     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D { x[1] * (self.m * self.g) }
+//! }
+//!
+//! impl Constraints<2, 2, 1> for Pendulum {
+//!     const NAMES: [&'static str; 1] = ["rod"];
+//!     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+//!     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+//!         [vec2(x[0], x[1]).norm() - self.l]
+//!     }
+//! }
+//!
+//! impl Mechanism<2> for Pendulum {
+//!     type Coords = [f64; 2];
+//!     fn validate(&self) -> lagrange_core::Result<()> { Model::validate(self) }
+//!     fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
+//!         dynamics::equations_of_motion(self, t, q, v)
+//!     }
+//!     fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
+//!         dynamics::kinetic_energy(self, t, q, v)
+//!     }
+//!     fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; 2]) -> S { dynamics::potential_energy(self, t, q) }
+//!     fn momenta_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] { dynamics::momenta(self, t, q, v) }
+//!     fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
+//!         dynamics::lagrangian_time_derivative(self, t, q, v)
+//!     }
+//!     // The three overrides of a constrained mechanism:
+//!     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
+//!         constraints::accelerations(self, t, q, v)
+//!     }
+//!     fn project(&self, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
+//!         let mode = constraints::infer_mode(self, t, q, v)?;
+//!         constraints::project(self, t, q, v, &mode)
+//!     }
+//!     fn check_constraints(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> lagrange_core::Result<()> {
+//!         constraints::check_consistent(self, t, q, v, CONSISTENCY_TOLERANCE)
+//!     }
+//! }
+//!
+//! let p = Pendulum { m: 1.0, l: 2.0, g: 9.81 };
+//! // A guess off the circle is refused by the integrator, and projected on request.
+//! let guess = State::new(0.0, [1.0, -1.5], [1.0, 0.0]);
+//! assert!(p.step::<Rk4>(&mut guess.clone(), 1e-3).is_err());
+//! let mut s = constraints::consistent_state(&p, &guess)?;
+//! for _ in 0..1000 {
+//!     p.step::<Rk4>(&mut s, 1e-3)?;
+//! }
+//! let [x, y] = s.q;
+//! assert!(((x * x + y * y).sqrt() - 2.0).abs() < 1e-14);
+//! // The multiplier of |r| − L is minus the rod tension m(g cos θ + L θ̇²).
+//! let forces = constraints::constraint_forces(&p, &s)?;
+//! let (cos, speed2) = (-y / 2.0, s.v[0] * s.v[0] + s.v[1] * s.v[1]);
+//! assert!((-forces.multipliers[0] - (9.81 * cos + speed2 / 2.0)).abs() < 1e-10);
+//! # Ok::<(), lagrange_core::Error>(())
+//! ```
 
 mod contact;
 mod solve;
@@ -200,7 +279,9 @@ impl<const C: usize> Mode<C> {
 /// [`Mechanism::accelerations_at`](crate::Mechanism::accelerations_at) with [`accelerations`],
 /// [`Mechanism::project`](crate::Mechanism::project) with [`project`] in the [`infer_mode`]d mode, and
 /// [`Mechanism::check_constraints`](crate::Mechanism::check_constraints) with [`check_consistent`],
-/// so every integrator enforces the constraints; see `tests/constraints.rs` for the exact code.
+/// so every integrator that calls the hooks enforces the constraints; the [module example](self)
+/// shows the exact code. Contacts and friction need [`ContactRk4`] for located mode changes (plain
+/// integrators re-infer the mode at every evaluation, so a mode change falls inside a step).
 pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, K> {
     /// Row names, in declaration order.
     const NAMES: [&'static str; C];
