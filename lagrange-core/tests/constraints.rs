@@ -1481,3 +1481,136 @@ fn cost_per_step_of_each_constraint_kind() {
     let _ = smooth_rest;
     println!("friction sticking (ramp, ContactRk4): {with:.0} ns/step vs {without:.0} contact only: ×{:.1}", with / without);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Stick breaking: a bead on a rough horizontal wire (a bilateral contact y = 0), pulled along it by
+// a force k t that grows with time and lifted by a constant force. It sticks until
+// k t_b = μₛ|N|, then slides with m ẍ = k t − μₖ|N|. With a lift of 2 m g the normal force
+// N = m g − lift changes sign, and friction (∝ |N|) must not.
+
+#[derive(Clone, Copy)]
+struct PulledBead {
+    m: f64,
+    g: f64,
+    k: f64,
+    lift: f64,
+    friction: Coulomb,
+}
+
+impl Model<2, 2> for PulledBead {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = true;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[
+            ("m", self.m),
+            ("g", self.g),
+            ("k", self.k),
+            ("lift", self.lift),
+        ])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m, self.m]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+    fn applied_forces<S: Scalar>(
+        &self,
+        t: S,
+        _q: &[S; 2],
+        _v: &[S; 2],
+        _x: &[S; 2],
+        _x_dot: &[S; 2],
+        cartesian_force: &mut [S; 2],
+        _generalized_force: &mut [S; 2],
+    ) {
+        cartesian_force[0] += t * self.k;
+        cartesian_force[1] += S::from(self.lift);
+    }
+}
+
+impl Constraints<2, 2, 2> for PulledBead {
+    const NAMES: [&'static str; 2] = ["wire", "wire_friction"];
+    const KINDS: [ConstraintKind; 2] = [
+        ConstraintKind::Holonomic,
+        ConstraintKind::Friction { normal: 0 },
+    ];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 2] {
+        [x[1], D::zero()]
+    }
+    fn velocity_constraints<D: Scalar>(
+        &self,
+        _t: D,
+        _q: &[D; 2],
+        _v: &[D; 2],
+        _x: &[D; 2],
+        xd: &[D; 2],
+    ) -> [D; 2] {
+        [D::zero(), xd[0]]
+    }
+    fn friction_coefficients(&self, _row: usize) -> Coulomb {
+        self.friction
+    }
+}
+
+#[test]
+fn stick_breaks_when_static_friction_is_exceeded_whatever_the_normal_force_sign() {
+    for lift_factor in [0.0, 2.0] {
+        let (m, g, k) = (1.5, 9.81, 4.0);
+        let friction = Coulomb {
+            kinetic: 0.25,
+            stiction: 0.4,
+        };
+        let p = PulledBead {
+            m,
+            g,
+            k,
+            lift: lift_factor * m * g,
+            friction,
+        };
+        let normal = (m * g - p.lift).abs();
+        let t_b = friction.stiction * normal / k;
+        let mut s = State::at_rest([0.0, 0.0]);
+        let mut stepper = ContactRk4::new(&p, &s, ContactOptions::default()).unwrap();
+        assert_eq!(stepper.mode().rows, [RowMode::Active, RowMode::Stick]);
+        let mut worst = 0.0f64;
+        for _ in 0..3000 {
+            stepper.step(&p, &mut s, 1e-3).unwrap();
+            let t = s.t;
+            // After the break: v = (k/2m)(t² − t_b²) − μₖ|N|(t − t_b)/m, x its integral.
+            let exact = if t <= t_b {
+                0.0
+            } else {
+                let dt = t - t_b;
+                k / (6.0 * m) * (t.powi(3) - t_b.powi(3))
+                    - k / (2.0 * m) * t_b * t_b * dt
+                    - 0.5 * friction.kinetic * normal / m * dt * dt
+            };
+            worst = worst.max((s.q[0] - exact).abs());
+            assert!(s.q[1].abs() < 1e-15);
+        }
+        let ev = &stepper.events;
+        println!(
+            "pulled bead (lift {lift_factor} mg): {} mode change(s), stick breaks at t = {:.15} (exact {t_b:.15}), \
+             |x − exact| ≤ {worst:.1e}",
+            ev.len(),
+            ev[0].t
+        );
+        assert_eq!(ev.len(), 1, "{ev:?}");
+        assert_eq!(
+            (ev[0].from, ev[0].to),
+            (RowMode::Stick, RowMode::SlipPositive)
+        );
+        assert!((ev[0].t - t_b).abs() < 1e-12 * t_b);
+        // Piecewise polynomial motion (x cubic in t) that RK4 integrates exactly: round-off only.
+        assert!(worst < 1e-11, "{worst}");
+        let f = constraint_forces(&p, &s).unwrap();
+        assert!((f.multipliers[0] - (m * g - p.lift)).abs() < 1e-12 * m * g);
+        assert!((f.multipliers[1] + friction.kinetic * normal).abs() < 1e-12 * m * g);
+    }
+}
