@@ -555,6 +555,100 @@ fn newton_without_a_solution_is_an_error() {
     diverges::<Variational>();
 }
 
+// Stiff spring chain and the long runs of the issue.
+
+#[test]
+fn implicit_midpoint_stays_bounded_on_the_stiff_chain_at_large_h_omega() {
+    // FPU chain with ω = 50 (HLW §I.5.1) at h = 0.1, hω = 5: far beyond the stability limits of
+    // the explicit methods (Störmer–Verlet hω < 2, RK4 hω < 2.83), which blow up, while the
+    // A-stable implicit midpoint rule keeps the energy error bounded (it conserves the quadratic
+    // stiff energy exactly for the linear part; the soft quartic springs perturb it by O(h²)).
+    let h = 0.1;
+    let mut s = fpu_start();
+    let e0 = Fpu.energy(&s).unwrap();
+    let mut worst = 0.0f64;
+    for _ in 0..300 {
+        ImplicitMidpoint::step_with_stats(&Fpu, &mut s, h).unwrap();
+        worst = worst.max((Fpu.energy(&s).unwrap() - e0).abs());
+    }
+    eprintln!("FPU, implicit midpoint hω = 5: max energy error {worst:.3e} of E0 = {e0:.3}");
+    assert!(worst < 0.1 * e0, "{worst} vs {e0}");
+    for (name, blew_up) in [
+        ("RK4", explicit_blows_up::<Rk4>(h)),
+        ("Stormer-Verlet", explicit_blows_up::<StormerVerlet>(h)),
+    ] {
+        assert!(blew_up, "{name} should be unstable at hω = 5");
+    }
+}
+
+fn explicit_blows_up<I: Integrator>(h: f64) -> bool {
+    let mut s = fpu_start();
+    let e0 = Fpu.energy(&s).unwrap();
+    for _ in 0..1000 {
+        if Fpu.step::<I>(&mut s, h).is_err() {
+            return true;
+        }
+        if (Fpu.energy(&s).unwrap() - e0).abs() > 100.0 * e0 {
+            return true;
+        }
+    }
+    false
+}
+
+#[test]
+#[ignore = "long run (10⁶ steps per method): cargo test --release -p lagrange-core --test integrators -- --ignored"]
+fn kepler_energy_bounded_over_ten_thousand_periods() {
+    // As the 100-period test, over 10⁴ periods with 100 steps per period.
+    let (periods, per_period) = (10_000, 100);
+    let rk4 = kepler_energy_drift::<Rk4>(periods, per_period);
+    eprintln!("RK4: drift {:.3e}, max {:.3e}", rk4.0, rk4.1);
+    assert!(rk4.0.abs() > 0.5 * rk4.1, "{rk4:?}");
+    for (name, (drift, max)) in [
+        (
+            "implicit midpoint",
+            kepler_energy_drift::<ImplicitMidpoint>(periods, per_period),
+        ),
+        (
+            "Gauss-Legendre 2",
+            kepler_energy_drift::<GaussLegendre2>(periods, per_period),
+        ),
+        (
+            "variational",
+            kepler_energy_drift::<Variational>(periods, per_period),
+        ),
+        (
+            "Stormer-Verlet",
+            kepler_energy_drift::<StormerVerlet>(periods, per_period),
+        ),
+    ] {
+        eprintln!("{name}: drift {drift:.3e}, max {max:.3e}");
+        assert!(
+            drift.abs() < 0.05 * max,
+            "{name}: drift {drift:e}, max {max:e}"
+        );
+    }
+}
+
+#[test]
+#[ignore = "long run (10⁶ steps): cargo test --release -p lagrange-core --test integrators -- --ignored"]
+fn variational_double_pendulum_energy_bounded_over_a_million_steps() {
+    let mut s = State::new(0.0, [1.0, -0.5], [0.0, 0.0]);
+    let e0 = DoublePendulum.energy(&s).unwrap();
+    let (mut ts, mut es) = (Vec::new(), Vec::new());
+    for k in 0..1_000_000 {
+        DoublePendulum.step::<Variational>(&mut s, 0.01).unwrap();
+        if k % 100 == 0 {
+            ts.push(s.t);
+            es.push(DoublePendulum.energy(&s).unwrap() - e0);
+        }
+    }
+    let max = es.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    let drift = slope(&ts, &es) * s.t;
+    eprintln!("variational double pendulum, 10⁶ steps: drift {drift:.3e}, max {max:.3e}");
+    assert!(max < 1e-2, "{max}");
+    assert!(drift.abs() < 0.2 * max, "{drift} vs {max}");
+}
+
 // ---------------------------------------------------------------------------------------------
 // Hand-written models (the pattern of `hand_written_model.rs`: what `#[mechanism]` generates).
 
@@ -748,4 +842,47 @@ pub fn kepler_exact(e: f64, t: f64) -> ([f64; 2], [f64; 2]) {
 /// Initial state of [`kepler_exact`].
 fn kepler_start(e: f64) -> lagrange_core::State<[f64; 2]> {
     lagrange_core::State::new(0.0, [1.0 - e, 0.0], [0.0, ((1.0 + e) / (1.0 - e)).sqrt()])
+}
+
+/// Fermi–Pasta–Ulam chain (Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.5.1):
+/// six unit masses between walls, alternately joined by stiff linear springs (ω²/4 (Δq)², ω = 50)
+/// and soft quartic ones ((Δq)⁴).
+pub struct Fpu;
+
+const FPU_OMEGA: f64 = 50.0;
+
+impl Model<6, 6> for Fpu {
+    type Coords = [f64; 6];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 6] {
+        [1.0; 6]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 6]) -> [D; 6] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 6], x: &[D; 6]) -> D {
+        let mut v = D::zero();
+        for i in 0..3 {
+            let d = x[2 * i + 1] - x[2 * i];
+            v += d * d * (FPU_OMEGA * FPU_OMEGA / 4.0);
+        }
+        let soft = |d: D| (d * d) * (d * d);
+        v + soft(x[0]) + soft(x[2] - x[1]) + soft(x[4] - x[3]) + soft(x[5])
+    }
+}
+mechanism_from_model!(Fpu, 6);
+
+/// HLW's initial values: the first stiff spring stretched by 1/ω and moving, all else at rest.
+fn fpu_start() -> State<[f64; 6]> {
+    let (w, r) = (FPU_OMEGA, std::f64::consts::FRAC_1_SQRT_2);
+    State::new(
+        0.0,
+        [(1.0 - 1.0 / w) * r, (1.0 + 1.0 / w) * r, 0.0, 0.0, 0.0, 0.0],
+        [0.0, 2f64.sqrt(), 0.0, 0.0, 0.0, 0.0],
+    )
 }
