@@ -81,6 +81,8 @@ pub struct Args {
     pub mass: Option<Expr>,
     pub inertia: Option<Inertia>,
     pub on: Option<Ident>,
+    /// The arguments did not parse (already reported): nothing is "missing".
+    pub malformed: bool,
 }
 
 struct Argument {
@@ -124,14 +126,17 @@ pub fn parse_args(cx: &Ctxt, kind: Kind, attr: &Attribute) -> Args {
         mass: None,
         inertia: None,
         on: None,
+        malformed: false,
     };
     let parsed = match &attr.meta {
         syn::Meta::Path(_) => Punctuated::new(),
         syn::Meta::List(list) => {
             match list.parse_args_with(Punctuated::<Argument, Token![,]>::parse_terminated) {
                 Ok(parsed) => parsed,
+                // `#[particle(mass)]`: a malformed argument list.
                 Err(e) => {
                     cx.syn_error(e);
+                    args.malformed = true;
                     return args;
                 }
             }
@@ -139,6 +144,7 @@ pub fn parse_args(cx: &Ctxt, kind: Kind, attr: &Attribute) -> Args {
         // `#[particle = m]`: arguments go in parentheses.
         syn::Meta::NameValue(nv) => {
             cx.error_spanned_by(nv, format!("write `#[{}(name = value)]`", kind.name()));
+            args.malformed = true;
             return args;
         }
     };

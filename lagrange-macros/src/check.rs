@@ -309,6 +309,13 @@ fn check_signature(cx: &Ctxt, decl: &Decl) {
             "declaration functions are not generic: the macro makes them generic over the scalar",
         );
     }
+    // `fn bob() -> Vec2 { return vec2(x, y); }`: the body is spliced into generated code.
+    if let Some(token) = names::first_return(&decl.block) {
+        cx.error_spanned_by(
+            token,
+            "write the value as the function's last expression: `return` is not supported here",
+        );
+    }
     // `async fn`, `const fn`, `unsafe fn`, `extern fn`: a plain function body is expected.
     if let Some(token) = sig
         .asyncness
@@ -395,7 +402,10 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
         _ => expect_return_type(cx, decl, &["f64"], "its magnitude").map(|_| Dim::Two),
     };
     // `#[force] fn drag() -> Vec2`: what does it act on?
-    let Some(on) = &decl.args.on else {
+    let Some(on) = decl.args.on.as_ref().filter(|_| !decl.args.malformed) else {
+        if decl.args.malformed {
+            return None;
+        }
         cx.error_spanned_by(
             &decl.args.attr,
             format!("missing `on = ...`: `#[{}(on = name)]`", kind.name()),
@@ -446,7 +456,7 @@ fn check_masses(cx: &Ctxt, model: &Model) {
     for body in &model.bodies {
         let args = &body.decl.args;
         let name = body.decl.ident();
-        if args.kind == Kind::Point {
+        if args.kind == Kind::Point || args.malformed {
             continue;
         }
         // `#[particle] fn bob() -> Vec2`: a body without a mass.

@@ -166,6 +166,21 @@ fn item_ident(item: &syn::Item) -> Option<&Ident> {
     }
 }
 
+/// The first `return` of a function body (not inside a closure or nested item).
+pub fn first_return(block: &syn::Block) -> Option<syn::token::Return> {
+    struct FirstReturn(Option<syn::token::Return>);
+    impl<'ast> Visit<'ast> for FirstReturn {
+        fn visit_expr_return(&mut self, e: &'ast syn::ExprReturn) {
+            self.0.get_or_insert(e.return_token);
+        }
+        fn visit_expr_closure(&mut self, _: &'ast syn::ExprClosure) {}
+        fn visit_item(&mut self, _: &'ast syn::Item) {}
+    }
+    let mut visitor = FirstReturn(None);
+    visitor.visit_block(block);
+    visitor.0
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
