@@ -18,10 +18,14 @@
 
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::cholesky;
+use crate::linalg::Ldlt;
 use crate::model::{Coordinates, Model};
+use nalgebra::{Const, U1};
 use nalgebra::{SMatrix, SVector};
-use num_dual::{Dual, Dual2, DualSVec};
+use num_dual::{Derivative, Dual, Dual2, DualSVec, HyperDualVec};
+
+/// A hyper-dual number with an N-wide first part and a scalar second part.
+type HyperDualSVec<S, const N: usize, const M: usize> = HyperDualVec<S, Const<N>, Const<M>>;
 
 /// The terms of M q̈ = 𝓕 − b at one state.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -61,7 +65,11 @@ fn cartesian_along_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: us
 ) -> [Dual2<S>; K] {
     let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
     // A scleronomic mechanism never reads t: seeding it would be wasted work.
-    let t2 = if M::RHEONOMIC { Dual2::new(t, S::one(), S::zero()) } else { Dual2::from_re(t) };
+    let t2 = if M::RHEONOMIC {
+        Dual2::new(t, S::one(), S::zero())
+    } else {
+        Dual2::from_re(t)
+    };
     model.cartesian(t2, &q2)
 }
 
@@ -90,6 +98,12 @@ fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
 }
 
 /// M, 𝓕 and b at (t, q, q̇).
+///
+/// A scleronomic mechanism (x independent of t) needs one pass: q seeded as a hyper-dual number
+/// with ε₁ = eⱼ (gradient) and ε₂ = q̇ⱼ (direction of motion) gives x, J (ε₁), ẋ (ε₂) and
+/// ∂ẋ/∂q (ε₁ε₂), so a = (∂ẋ/∂q) q̇ — every trigonometric function of the positions is evaluated
+/// once. A rheonomic one needs ∂ẋ/∂t too, which this pass does not carry; it takes the two passes
+/// described in the module docs.
 pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
     t: S,
@@ -97,29 +111,31 @@ pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: u
     v: &[S; N],
 ) -> EquationsOfMotion<S, N> {
     let masses = model.masses();
-    // Pass 1: Jacobian rows and ∇V.
-    let (x1, qd, td) = cartesian_with_jacobian(model, t, q);
-    let rows: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
-    let mass_matrix = assemble_mass_matrix(M::INERTIAL, &masses, &rows);
-    let mut generalized_forces = if M::HAS_POTENTIAL {
-        -gradient(&model.potential(td, &qd, &x1))
+    let (rows, x, x_dot, accelerations, mut generalized_forces) = if M::RHEONOMIC {
+        two_passes(model, t, q, v)
     } else {
-        SVector::zeros()
+        one_pass(model, t, q, v)
     };
-
-    // Pass 2: ẋ and a.
-    let x2 = cartesian_along_motion(model, t, q, v);
+    let mass_matrix = assemble_mass_matrix(M::INERTIAL, &masses, &rows);
     let mut inertial_terms = SVector::<S, N>::zeros();
     for i in 0..M::INERTIAL {
         if masses[i] != 0.0 {
-            inertial_terms += rows[i] * (x2[i].v2 * masses[i]);
+            inertial_terms += rows[i] * (accelerations[i] * masses[i]);
+        }
+    }
+
+    // A uniform field, by virtual work: 𝓕 += Jᵀ w.
+    if M::HAS_GRAVITY {
+        let weights = model.weights();
+        for i in 0..K {
+            if weights[i] != 0.0 {
+                generalized_forces += rows[i] * S::from(weights[i]);
+            }
         }
     }
 
     // Applied forces, by virtual work: 𝓕 += Jᵀ F + Q.
     if M::HAS_FORCES {
-        let x: [S; K] = std::array::from_fn(|i| x2[i].re);
-        let x_dot: [S; K] = std::array::from_fn(|i| x2[i].v1);
         let mut cartesian_force = [S::zero(); K];
         let mut direct = [S::zero(); N];
         model.applied_forces(t, q, v, &x, &x_dot, &mut cartesian_force, &mut direct);
@@ -130,7 +146,84 @@ pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: u
         }
         generalized_forces += SVector::from(direct);
     }
-    EquationsOfMotion { mass_matrix, generalized_forces, inertial_terms }
+    EquationsOfMotion {
+        mass_matrix,
+        generalized_forces,
+        inertial_terms,
+    }
+}
+
+/// What the passes produce: Jacobian rows, x, ẋ, a (at q̈ = 0) and −∇V.
+type Kinematics<S, const N: usize, const K: usize> =
+    ([SVector<S, N>; K], [S; K], [S; K], [S; K], SVector<S, N>);
+
+/// Scleronomic: one hyper-dual pass (see [`equations_of_motion`]).
+#[inline(always)]
+fn one_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Kinematics<S, N, K> {
+    let qh: [HyperDualSVec<S, N, 1>; N] = std::array::from_fn(|j| {
+        HyperDualSVec::new(
+            q[j],
+            Derivative::derivative_generic(Const::<N>, U1, j),
+            Derivative::some(SMatrix::<S, 1, 1>::new(v[j])),
+            Derivative::none(),
+        )
+    });
+    let th = HyperDualSVec::from_re(t);
+    let xh = model.cartesian(th, &qh);
+    let rows: [SVector<S, N>; K] =
+        std::array::from_fn(|i| xh[i].eps1.0.unwrap_or_else(SVector::zeros));
+    let x = std::array::from_fn(|i| xh[i].re);
+    let x_dot = std::array::from_fn(|i| xh[i].eps2.0.map_or(S::zero(), |d| d[0]));
+    let accelerations = std::array::from_fn(|i| {
+        xh[i].eps1eps2.0.map_or(S::zero(), |h| {
+            let mut a = S::zero();
+            for j in 0..N {
+                a += h[j] * v[j];
+            }
+            a
+        })
+    });
+    // ∇V needs only first derivatives: evaluate V on gradient duals rebuilt from the same pass.
+    let forces = if M::HAS_POTENTIAL {
+        let qd: [DualSVec<S, N>; N] =
+            std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+        let xd: [DualSVec<S, N>; K] =
+            std::array::from_fn(|i| DualSVec::new(x[i], Derivative::some(rows[i])));
+        -gradient(&model.potential(DualSVec::from_re(t), &qd, &xd))
+    } else {
+        SVector::zeros()
+    };
+    (rows, x, x_dot, accelerations, forces)
+}
+
+/// Rheonomic: a gradient pass for J and ∇V, a second-order pass along (q̇, 1) for ẋ and a.
+#[inline(always)]
+fn two_passes<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Kinematics<S, N, K> {
+    let (x1, qd, td) = cartesian_with_jacobian(model, t, q);
+    let rows: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    let forces = if M::HAS_POTENTIAL {
+        -gradient(&model.potential(td, &qd, &x1))
+    } else {
+        SVector::zeros()
+    };
+    let x2 = cartesian_along_motion(model, t, q, v);
+    (
+        rows,
+        std::array::from_fn(|i| x2[i].re),
+        std::array::from_fn(|i| x2[i].v1),
+        std::array::from_fn(|i| x2[i].v2),
+        forces,
+    )
 }
 
 /// q̈ from M q̈ = 𝓕 − b, for any scalar (dual numbers give derivatives of the accelerations).
@@ -152,17 +245,20 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
     q: &[S; N],
 ) -> Result<[S; N]> {
     let real = |q: &[S; N]| -> [f64; N] { std::array::from_fn(|j| q[j].re()) };
-    let l = cholesky(&eom.mass_matrix).map_err(|e| Error::SingularMassMatrix {
+    let factor = Ldlt::new(&eom.mass_matrix).map_err(|e| Error::SingularMassMatrix {
         t: t.re(),
         configuration: describe_configuration(&C::NAMES, &real(q)),
         coordinate: C::NAMES[e.index],
         pivot: e.pivot,
     })?;
-    let qdd = crate::linalg::cholesky_substitute(&l, &(eom.generalized_forces - eom.inertial_terms));
+    let qdd = factor.solve(&(eom.generalized_forces - eom.inertial_terms));
     if qdd.iter().all(|a| a.re().is_finite()) {
         Ok(qdd.into())
     } else {
-        Err(Error::NonFiniteDynamics { t: t.re(), configuration: describe_configuration(&C::NAMES, &real(q)) })
+        Err(Error::NonFiniteDynamics {
+            t: t.re(),
+            configuration: describe_configuration(&C::NAMES, &real(q)),
+        })
     }
 }
 
@@ -174,9 +270,16 @@ pub fn cartesian_velocities<M: Model<N, K>, S: Scalar, const N: usize, const K: 
     v: &[S; N],
 ) -> ([S; K], [S; K]) {
     let qd: [Dual<S>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
-    let td = if M::RHEONOMIC { Dual::new(t, S::one()) } else { Dual::from_re(t) };
+    let td = if M::RHEONOMIC {
+        Dual::new(t, S::one())
+    } else {
+        Dual::from_re(t)
+    };
     let x = model.cartesian(td, &qd);
-    (std::array::from_fn(|i| x[i].re), std::array::from_fn(|i| x[i].eps))
+    (
+        std::array::from_fn(|i| x[i].re),
+        std::array::from_fn(|i| x[i].eps),
+    )
 }
 
 /// T = ½ Σ μᵢ ẋᵢ².
@@ -196,13 +299,27 @@ pub fn kinetic_energy<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>
 }
 
 /// V(q, t).
-pub fn potential_energy<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(model: &M, t: S, q: &[S; N]) -> S {
-    if M::HAS_POTENTIAL {
-        let x = model.cartesian(t, q);
+pub fn potential_energy<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+) -> S {
+    if !M::HAS_POTENTIAL && !M::HAS_GRAVITY {
+        return S::zero();
+    }
+    let x = model.cartesian(t, q);
+    let mut v = if M::HAS_POTENTIAL {
         model.potential(t, q, &x)
     } else {
         S::zero()
+    };
+    if M::HAS_GRAVITY {
+        let weights = model.weights();
+        for i in 0..K {
+            v -= x[i] * weights[i];
+        }
     }
+    v
 }
 
 /// Generalized momenta pₖ = ∂L/∂q̇ₖ = Σᵢ μᵢ ẋᵢ ∂xᵢ/∂qₖ = (Jᵀ diag(μ) ẋ)ₖ.

@@ -40,9 +40,9 @@ where
 {
     const NAMES: [&'static str; N] = {
         const NAMES: [&str; 32] = [
-            "q0", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "q8", "q9", "q10", "q11", "q12", "q13", "q14", "q15",
-            "q16", "q17", "q18", "q19", "q20", "q21", "q22", "q23", "q24", "q25", "q26", "q27", "q28", "q29",
-            "q30", "q31",
+            "q0", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "q8", "q9", "q10", "q11", "q12", "q13",
+            "q14", "q15", "q16", "q17", "q18", "q19", "q20", "q21", "q22", "q23", "q24", "q25",
+            "q26", "q27", "q28", "q29", "q30", "q31",
         ];
         let mut out = ["q"; N];
         let mut i = 0;
@@ -74,7 +74,11 @@ pub struct State<C> {
 impl<C: Default> State<C> {
     /// At rest at `q`, at t = 0.
     pub fn at_rest(q: C) -> Self {
-        State { t: 0.0, q, v: C::default() }
+        State {
+            t: 0.0,
+            q,
+            v: C::default(),
+        }
     }
 }
 
@@ -111,6 +115,17 @@ pub trait Model<const N: usize, const K: usize> {
     /// x(q, t).
     fn cartesian<D: Scalar>(&self, t: D, q: &[D; N]) -> [D; K];
 
+    /// Whether a uniform field (gravity) acts, with Cartesian force [`Model::weights`] on each row.
+    /// A uniform field needs no differentiation: its generalized force is Jᵀw and its potential
+    /// −w·x (for g = (0, −g): V = Σ m g y).
+    const HAS_GRAVITY: bool = false;
+
+    /// The weight μᵢgᵢ of each Cartesian row in the uniform field (0 for rows that are not a
+    /// position component of a massive point or centre of mass).
+    fn weights(&self) -> [f64; K] {
+        [0.0; K]
+    }
+
     /// V(q, t); `x` is [`Model::cartesian`] at the same (q, t), passed so bodies are not recomputed.
     fn potential<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> D {
         let _ = (t, q, x);
@@ -136,10 +151,17 @@ pub trait Model<const N: usize, const K: usize> {
 }
 
 /// Checks that a state is finite; the error names the coordinates.
-pub fn check_state<const N: usize>(names: &[&'static str; N], t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+pub fn check_state<const N: usize>(
+    names: &[&'static str; N],
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> Result<()> {
     if t.is_finite() && q.iter().chain(v).all(|x| x.is_finite()) {
         Ok(())
     } else {
-        Err(Error::NonFiniteState { state: crate::error::describe_state(names, t, q, v) })
+        Err(Error::NonFiniteState {
+            state: crate::error::describe_state(names, t, q, v),
+        })
     }
 }
