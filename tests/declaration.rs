@@ -645,3 +645,74 @@ fn parameters_are_validated() {
     };
     assert!(plate.energy(&s).is_ok());
 }
+
+#[mechanism]
+pub mod mixed_dimensions {
+    pub struct Coords {
+        pub y: f64,
+        pub z: f64,
+    }
+
+    pub struct MixedDimensions {
+        pub m: f64,
+        pub g2: f64,
+        pub g3: f64,
+        pub f0: f64,
+        pub w: f64,
+    }
+
+    /// Moves in the plane.
+    #[particle(mass = m)]
+    fn flat() -> Vec2 {
+        vec2(0.0, y)
+    }
+
+    /// Moves in space.
+    #[particle(mass = m * 2.0)]
+    fn bead() -> Vec3 {
+        vec3(0.0, 0.0, z)
+    }
+
+    #[gravity]
+    fn plane_down() -> Vec2 {
+        vec2(0.0, -g2)
+    }
+
+    #[gravity]
+    fn space_down() -> Vec3 {
+        vec3(0.0, 0.0, -g3)
+    }
+
+    /// A driving force; naming `t` in a force does not make the positions time-dependent.
+    #[force(on = bead)]
+    fn drive() -> Vec3 {
+        vec3(0.0, 0.0, (w * t).cos() * f0)
+    }
+}
+
+#[test]
+fn planar_and_spatial_bodies_mix_and_each_field_acts_on_its_own() {
+    use mixed_dimensions::{Coords, MixedDimensions, State};
+    let p = MixedDimensions {
+        m: 0.5,
+        g2: 9.81,
+        g3: 1.62,
+        f0: 0.7,
+        w: 3.0,
+    };
+    assert!(!<MixedDimensions as Model<2, 5>>::RHEONOMIC);
+    let t = 0.4;
+    let s = State::new(t, Coords { y: 1.0, z: -2.0 }, Coords { y: 0.3, z: 0.1 });
+    let qdd = p.accelerations(&s).unwrap();
+    // ÿ = −g₂; z̈ = −g₃ + f₀ cos(w t) / (2m).
+    assert!(close(qdd.y, -p.g2), "{qdd:?}");
+    assert!(
+        close(qdd.z, -p.g3 + p.f0 * (p.w * t).cos() / (2.0 * p.m)),
+        "{qdd:?}"
+    );
+    // V = m g₂ y + 2m g₃ z.
+    assert!(close(
+        p.potential_energy(&s).unwrap(),
+        p.m * p.g2 * 1.0 + 2.0 * p.m * p.g3 * -2.0
+    ));
+}
