@@ -42,6 +42,7 @@ fn lines(
     x_label: &str,
     y_label: &str,
     series: &[(String, Vec<(f64, f64)>)],
+    markers: bool,
 ) {
     let pts = || {
         series
@@ -88,7 +89,9 @@ fn lines(
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
                 });
-            chart.draw_series(finite.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+            if markers {
+                chart.draw_series(finite.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+            }
         }
         chart
             .configure_series_labels()
@@ -130,6 +133,7 @@ pub fn work_precision(dir: &Path, problem: &str, rows: &[Row]) {
         "log10 wall time [s]",
         "log10 end-point error",
         &series,
+        true,
     );
 }
 
@@ -207,5 +211,6 @@ pub fn energy_long_run(dir: &Path, series: &[(String, Vec<(f64, f64)>)]) {
         "log10 t",
         "log10 |E - E0|",
         &logged,
+        false,
     );
 }
