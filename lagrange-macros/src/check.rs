@@ -78,7 +78,11 @@ pub struct Model<'a> {
     /// Bodies and points in declaration order.
     pub bodies: Vec<Body<'a>>,
     pub potentials: Vec<&'a Decl>,
+    /// Fields that depend on coordinates, time or bodies: part of the potential.
     pub gravities: Vec<(&'a Decl, Dim)>,
+    /// Fields that name only parameters and constants: constant Cartesian weights m g, no
+    /// differentiation needed.
+    pub uniform_gravities: Vec<(&'a Decl, Dim)>,
     pub forces: Vec<Force<'a>>,
     /// Free names of each declared function, by function name.
     pub free_names: HashMap<String, Vec<Ident>>,
@@ -141,6 +145,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
         params,
         potentials: Vec::new(),
         gravities: Vec::new(),
+        uniform_gravities: Vec::new(),
         forces: Vec::new(),
         free_names: HashMap::new(),
         rheonomic: false,
@@ -330,6 +335,7 @@ fn check_signature(cx: &Ctxt, decl: &Decl) {
 
 /// Checks the return type, target and names of one function and records what it uses.
 fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
+    let mut gravity = None;
     let context = match decl.kind() {
         Kind::Particle | Kind::RigidBody | Kind::Point => {
             let index = model
@@ -365,7 +371,7 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
                     format!("a `{field}` field acts on bodies in {bodies}, and there are none"),
                 );
             }
-            model.gravities.push((decl, dim));
+            gravity = Some(dim);
             Context::Potential
         }
         Kind::Force | Kind::Torque | Kind::GeneralizedForce => {
@@ -378,11 +384,18 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
     let free = names::free_names(&decl.block);
     let mut seen = BTreeSet::new();
     // Each name is resolved (and reported) once per function.
+    let mut constant = true;
     for ident in free.iter().filter(|i| seen.insert(i.to_string())) {
         let name = Resolver { model, context }.resolve(cx, ident);
         if name == Some(Name::Time) && context != Context::Force {
             model.rheonomic = true;
         }
+        constant &= matches!(name, Some(Name::Param | Name::Item));
+    }
+    match gravity {
+        Some(dim) if constant => model.uniform_gravities.push((decl, dim)),
+        Some(dim) => model.gravities.push((decl, dim)),
+        None => {}
     }
     model.free_names.insert(decl.ident().to_string(), free);
 }

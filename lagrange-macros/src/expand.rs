@@ -417,6 +417,7 @@ fn model_impl(model: &Model) -> TokenStream {
     let cartesian = cartesian_fn(model);
     let potential = has_potential.then(|| potential_fn(model));
     let forces = has_forces.then(|| applied_forces_fn(model));
+    let weights = (!model.uniform_gravities.is_empty()).then(|| weights_fn(model));
     quote! {
         impl #p::Model<#n, #k> for #params {
             type Coords = Coords;
@@ -429,6 +430,61 @@ fn model_impl(model: &Model) -> TokenStream {
             #cartesian
             #potential
             #forces
+            #weights
+        }
+    }
+}
+
+/// A uniform field as constant Cartesian weights w = μ g on the position rows of every massive body
+/// moving in the field's dimension (V = −w·x, 𝓕 = Jᵀw, computed by `lagrange_core::dynamics`).
+fn weights_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k) = (lit(model.coords.len()), lit(model.rows));
+    let used = model.names_used_by(model.uniform_gravities.iter().map(|(g, _)| *g));
+    let params = model
+        .params
+        .iter()
+        .map(|p| &p.ident)
+        .filter(|p| used.contains(&p.to_string()));
+    let fields = model.uniform_gravities.iter().map(|(decl, dim)| {
+        let ident = format_ident!("__gravity_{}", decl.ident());
+        let g = quote!(::lagrange::__private::geometry);
+        let ty = if *dim == Dim::Two {
+            quote!(#g::Vec2<f64>)
+        } else {
+            quote!(#g::Vec3<f64>)
+        };
+        let block = &decl.block;
+        let components: &[&str] = if *dim == Dim::Two {
+            &["x", "y"]
+        } else {
+            &["x", "y", "z"]
+        };
+        let rows = model
+            .bodies
+            .iter()
+            .filter(|b| b.shape.has_mass() && b.shape.dim() == *dim)
+            .flat_map(|b| {
+                let ident = &ident;
+                components.iter().enumerate().map(move |(i, c)| {
+                    let (r, c) = (lit(b.row + i), format_ident!("{}", c));
+                    quote!(__weights[#r] += #ident.#c * __masses[#r];)
+                })
+            })
+            .collect::<Vec<_>>();
+        quote!(let #ident: #ty = #block; #(#rows)*)
+    });
+    quote! {
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; #k] {
+            #[allow(unused_imports)]
+            use #p::geometry::{vec2, vec3};
+            #( let #params: f64 = self.#params; )*
+            let __masses = <Self as #p::Model<#n, #k>>::masses(self);
+            let mut __weights = [0.0; #k];
+            #(#fields)*
+            __weights
         }
     }
 }

@@ -55,7 +55,14 @@ fn pendulum_is_scleronomic_without_forces() {
         !out.contains("fn applied_forces"),
         "a mechanism without forces has no force pass"
     );
-    assert!(out.contains("fn potential<"), "gravity is a potential");
+    // A constant field is constant Cartesian weights: no potential to differentiate.
+    assert!(out.contains("const HAS_GRAVITY: bool = true;"));
+    assert!(out.contains("fn weights"));
+    assert!(
+        !out.contains("fn potential<"),
+        "a uniform field needs no potential pass"
+    );
+    assert!(out.contains("const HAS_POTENTIAL: bool = false;"));
 }
 
 #[test]
@@ -115,6 +122,26 @@ fn time_in_a_position_is_rheonomic() {
             }
         },
     );
+    assert!(out.contains("const RHEONOMIC: bool = true;"));
+}
+
+#[test]
+fn a_field_that_varies_in_time_is_a_potential() {
+    let out = snapshot(
+        "varying_gravity",
+        quote! {
+            pub mod varying {
+                pub struct Coords { pub y: f64 }
+                pub struct Varying { pub m: f64, pub g: f64, pub w: f64 }
+                #[particle(mass = m)]
+                fn ball() -> Vec2 { vec2(0.0, y) }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g * (w * t).cos()) }
+            }
+        },
+    );
+    assert!(out.contains("fn potential<"));
+    assert!(!out.contains("fn weights"));
     assert!(out.contains("const RHEONOMIC: bool = true;"));
 }
 

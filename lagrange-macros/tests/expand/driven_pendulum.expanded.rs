@@ -110,14 +110,6 @@ pub mod driven {
             Bodies { bob }
         }
         #[inline(always)]
-        fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
-            __x: &[__D; 2],
-        ) -> Bodies<__D> {
-            Bodies {
-                bob: ::lagrange::__private::geometry::vec2(__x[0], __x[1]),
-            }
-        }
-        #[inline(always)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
             __x_dot: &[__D; 2],
         ) -> BodyVelocities<__D> {
@@ -130,7 +122,7 @@ pub mod driven {
         type Coords = Coords;
         const INERTIAL: usize = 2;
         const RHEONOMIC: bool = true;
-        const HAS_POTENTIAL: bool = true;
+        const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
@@ -199,30 +191,20 @@ pub mod driven {
             let __bodies = self.__lagrange_bodies(__t, __q);
             [__bodies.bob.x, __bodies.bob.y]
         }
+        const HAS_GRAVITY: bool = true;
         #[allow(unused_variables, clippy::all)]
-        fn potential<__D: ::lagrange::__private::Scalar>(
-            &self,
-            __t: __D,
-            __q: &[__D; 1],
-            __x: &[__D; 2],
-        ) -> __D {
+        fn weights(&self) -> [f64; 2] {
             #[allow(unused_imports)]
-            use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
-            };
-            #[allow(unused_imports)]
-            use ::lagrange::__private::DualNum as _;
-            let [theta] = *__q;
-            let g = <__D>::from(self.g);
-            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
             let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
-            let mut __potential = <__D>::zero();
-            let __gravity_down: ::lagrange::__private::geometry::Vec2<__D> = {
-                vec2(<__D>::from(0.0), -g)
+            let mut __weights = [0.0; 2];
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<f64> = {
+                vec2(0.0, -g)
             };
-            __potential -= __gravity_down.dot(&bob) * __masses[0];
-            __potential
+            __weights[0] += __gravity_down.x * __masses[0];
+            __weights[1] += __gravity_down.y * __masses[1];
+            __weights
         }
     }
     impl ::lagrange::__private::Mechanism<1> for Driven {

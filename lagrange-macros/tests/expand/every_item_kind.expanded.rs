@@ -353,16 +353,11 @@ pub mod everything {
             use ::lagrange::__private::DualNum as _;
             let [theta, phi] = *__q;
             let k = <__D>::from(self.k);
-            let g = <__D>::from(self.g);
             let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
             let __masses = <Self as ::lagrange::__private::Model<2, 17>>::masses(self);
             let mut __potential = <__D>::zero();
             let __potential_spring: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
             __potential += __potential_spring;
-            let __gravity_down: ::lagrange::__private::geometry::Vec3<__D> = {
-                vec3(<__D>::from(0.0), <__D>::from(0.0), -g)
-            };
-            __potential -= __gravity_down.dot(&top.position) * __masses[3];
             __potential
         }
         #[allow(unused_variables, clippy::all)]
@@ -400,6 +395,22 @@ pub mod everything {
             __cartesian_force[2] += __torque_motor;
             let __generalized_force_damping: __D = { -c * phi_dot };
             __generalized_force[1] += __generalized_force_damping;
+        }
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; 17] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<2, 17>>::masses(self);
+            let mut __weights = [0.0; 17];
+            let __gravity_down: ::lagrange::__private::geometry::Vec3<f64> = {
+                vec3(0.0, 0.0, -g)
+            };
+            __weights[3] += __gravity_down.x * __masses[3];
+            __weights[4] += __gravity_down.y * __masses[4];
+            __weights[5] += __gravity_down.z * __masses[5];
+            __weights
         }
     }
     impl ::lagrange::__private::Mechanism<2> for Everything {

@@ -126,7 +126,7 @@ pub mod pendulum {
         type Coords = Coords;
         const INERTIAL: usize = 2;
         const RHEONOMIC: bool = false;
-        const HAS_POTENTIAL: bool = true;
+        const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = true;
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
@@ -188,31 +188,6 @@ pub mod pendulum {
             [__bodies.bob.x, __bodies.bob.y]
         }
         #[allow(unused_variables, clippy::all)]
-        fn potential<__D: ::lagrange::__private::Scalar>(
-            &self,
-            __t: __D,
-            __q: &[__D; 1],
-            __x: &[__D; 2],
-        ) -> __D {
-            #[allow(unused_imports)]
-            use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
-            };
-            #[allow(unused_imports)]
-            use ::lagrange::__private::DualNum as _;
-            let [theta] = *__q;
-            let g = <__D>::from(self.g);
-            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
-            let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
-            let mut __potential = <__D>::zero();
-            let __gravity_down: ::lagrange::__private::geometry::Vec2<__D> = {
-                vec2(<__D>::from(0.0), -g)
-            };
-            __potential -= __gravity_down.dot(&bob) * __masses[0];
-            __potential
-        }
-        #[allow(unused_variables, clippy::all)]
         fn applied_forces<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,
@@ -242,6 +217,21 @@ pub mod pendulum {
             };
             __cartesian_force[0] += __force_drag.x;
             __cartesian_force[1] += __force_drag.y;
+        }
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; 2] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
+            let mut __weights = [0.0; 2];
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<f64> = {
+                vec2(0.0, -g)
+            };
+            __weights[0] += __gravity_down.x * __masses[0];
+            __weights[1] += __gravity_down.y * __masses[1];
+            __weights
         }
     }
     impl ::lagrange::__private::Mechanism<1> for Pendulum {

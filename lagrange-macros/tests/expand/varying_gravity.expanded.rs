@@ -1,0 +1,278 @@
+pub mod varying {
+    pub struct Varying {
+        pub m: f64,
+        pub g: f64,
+        pub w: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq,
+        ::lagrange::__private::core::default::Default
+    )]
+    pub struct Coords<T = f64> {
+        pub y: T,
+    }
+    impl ::lagrange::__private::Coordinates<1> for Coords<f64> {
+        const NAMES: [&'static str; 1] = ["y"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 1] {
+            [self.y]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 1]) -> Self {
+            Coords { y: values[0] }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 1;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's centre of mass and orientation.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub ball: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, its centre-of-mass velocity.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub ball: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    impl Varying {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                1,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                1,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                1,
+            >>::to_array(&state.v);
+            let (_, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                1,
+                2,
+            >(self, state.t, &q, &v);
+            Self::__lagrange_velocities_from_cartesian(&x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [y] = *__q;
+            let ball: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(<__D>::from(0.0), y)
+            };
+            Bodies { ball }
+        }
+        #[inline(always)]
+        fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x: &[__D; 2],
+        ) -> Bodies<__D> {
+            Bodies {
+                ball: ::lagrange::__private::geometry::vec2(__x[0], __x[1]),
+            }
+        }
+        #[inline(always)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x_dot: &[__D; 2],
+        ) -> BodyVelocities<__D> {
+            BodyVelocities {
+                ball: ::lagrange::__private::geometry::vec2(__x_dot[0], __x_dot[1]),
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<1, 2> for Varying {
+        type Coords = Coords;
+        const INERTIAL: usize = 2;
+        const RHEONOMIC: bool = true;
+        const HAS_POTENTIAL: bool = true;
+        const HAS_FORCES: bool = false;
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            if !self.m.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m",
+                    value: self.m,
+                });
+            }
+            if !self.g.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "g",
+                    value: self.g,
+                });
+            }
+            if !self.w.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "w",
+                    value: self.w,
+                });
+            }
+            let m: f64 = self.m;
+            let g: f64 = self.g;
+            let w: f64 = self.w;
+            let __mass_ball: f64 = m;
+            if !(__mass_ball.is_finite() && __mass_ball > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "ball",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_ball
+                    ),
+                });
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 2] {
+            let m: f64 = self.m;
+            let g: f64 = self.g;
+            let w: f64 = self.w;
+            let __mass_ball: f64 = m;
+            [__mass_ball, __mass_ball]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+        ) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [__bodies.ball.x, __bodies.ball.y]
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn potential<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+            __x: &[__D; 2],
+        ) -> __D {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [y] = *__q;
+            let g = <__D>::from(self.g);
+            let w = <__D>::from(self.w);
+            let t = __t;
+            let Bodies { ball } = Self::__lagrange_bodies_from_cartesian(__x);
+            let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
+            let mut __potential = <__D>::zero();
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(<__D>::from(0.0), -g * (w * t).cos())
+            };
+            __potential -= __gravity_down.dot(&ball) * __masses[0];
+            __potential
+        }
+    }
+    impl ::lagrange::__private::Mechanism<1> for Varying {
+        type Coords = Coords;
+        #[inline]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<1, 2>>::validate(self)
+        }
+        #[inline]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 1> {
+            ::lagrange::__private::dynamics::equations_of_motion::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> [S; 1] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 1],
+            v: &[f64; 1],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+    }
+}
