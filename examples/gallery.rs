@@ -11,12 +11,16 @@ mod atwood;
 mod breathing_ellipse;
 #[path = "double_pendulum.rs"]
 mod double_pendulum;
+#[path = "hoop_bifurcation.rs"]
+mod hoop_bifurcation;
 #[path = "pendulum.rs"]
 mod pendulum;
 #[path = "ramp.rs"]
 mod ramp;
 #[path = "rigid_triangle.rs"]
 mod rigid_triangle;
+#[path = "small_oscillations.rs"]
+mod small_oscillations;
 #[path = "spinning_hoop.rs"]
 mod spinning_hoop;
 #[path = "wedge_block.rs"]
@@ -35,6 +39,8 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     double_pendulum::run,
     rigid_triangle::run,
     atwood::run,
+    hoop_bifurcation::run,
+    small_oscillations::run,
 ];
 
 fn main() {

@@ -10,6 +10,9 @@ mod breathing_ellipse;
 #[path = "../examples/double_pendulum.rs"]
 #[allow(dead_code)]
 mod double_pendulum;
+#[path = "../examples/hoop_bifurcation.rs"]
+#[allow(dead_code)]
+mod hoop_bifurcation;
 #[path = "../examples/pendulum.rs"]
 #[allow(dead_code)]
 mod pendulum;
@@ -19,6 +22,9 @@ mod ramp;
 #[path = "../examples/rigid_triangle.rs"]
 #[allow(dead_code)]
 mod rigid_triangle;
+#[path = "../examples/small_oscillations.rs"]
+#[allow(dead_code)]
+mod small_oscillations;
 #[path = "../examples/spinning_hoop.rs"]
 #[allow(dead_code)]
 mod spinning_hoop;
@@ -75,4 +81,14 @@ fn three_particles_equal_one_rigid_body() {
 #[test]
 fn atwood_machine() {
     assert_scene(atwood::run);
+}
+
+#[test]
+fn hoop_bifurcation_statics() {
+    assert_scene(hoop_bifurcation::run);
+}
+
+#[test]
+fn double_pendulum_normal_modes() {
+    assert_scene(small_oscillations::run);
 }
