@@ -515,7 +515,7 @@ fn check_constant(cx: &Ctxt, model: &Model, expr: &syn::Expr) {
             model,
             context: Context::Mass,
         }
-        .resolve(cx, &ident);
+        .resolve(cx, ident);
     }
 }
 
@@ -619,11 +619,10 @@ impl Resolver<'_, '_> {
             (_, None) if ident == "self" => {
                 cx.error_spanned_by(ident, "declaration functions have no `self`: name parameters directly (`l`, not `self.l`)")
             }
-            (_, None) => {
-                // `vec2(theta.sin(), 0.0) * lenght`: a typo, or something not in scope.
-                if !self.model.mechanism.has_glob_import {
-                    cx.error_spanned_by(ident, self.unknown_message(ident));
-                }
+            // `vec2(theta.sin(), 0.0) * lenght`: a typo, or something not in scope (unless a glob
+            // import may bring it in: then rustc decides).
+            (_, None) if !self.model.mechanism.has_glob_import => {
+                cx.error_spanned_by(ident, self.unknown_message(ident))
             }
             // `fn bob() -> Vec2 { vec2(theta_dot, 0.0) }`.
             (Context::Position(_), Some(Name::CoordVelocity | Name::BodyVelocity)) => cx.error_spanned_by(
