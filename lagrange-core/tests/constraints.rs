@@ -234,6 +234,13 @@ fn inconsistent_initial_state_is_refused_and_can_be_projected() {
     assert!((x / y - 0.6 / -0.9).abs() < 1e-12);
     let mut s = fixed;
     p.step::<Rk4>(&mut s, 1e-3).unwrap();
+    // A constraint no configuration satisfies (|r| = −1): Newton stalls; an error with the residual.
+    let impossible = CartesianPendulum { l: -1.0, ..p };
+    let err = consistent_state(&impossible, &guess).unwrap_err();
+    assert!(
+        matches!(err, Error::ProjectionFailed { residual, .. } if residual > 1.0),
+        "{err}"
+    );
     // A guess at the pivot has no gradient direction to project along: an error, not NaN.
     let bad = State::new(0.0, [0.0, 0.0], [0.0, 0.0]);
     assert!(consistent_state(&p, &bad).is_err());

@@ -73,7 +73,9 @@ pub struct ModeChange {
 ///
 /// The state passed to [`ContactRk4::new`] must satisfy the constraints (use
 /// [`consistent_state`](super::consistent_state) on a guess). The stepper keeps the mode and the
-/// list of mode changes; a failed step leaves both, and the caller's state, unchanged.
+/// list of mode changes; a failed step leaves both, and the caller's state, unchanged. It assumes
+/// the state it steps is the one it produced last: after changing the state by hand, call
+/// [`ContactRk4::reset`].
 #[derive(Clone, Debug)]
 pub struct ContactRk4<const C: usize> {
     mode: Mode<C>,
@@ -191,6 +193,19 @@ impl<const C: usize> ContactRk4<C> {
             options,
             events: Vec::new(),
         })
+    }
+
+    /// Restarts at a new state (one not produced by this stepper): checks it and infers its mode
+    /// as [`ContactRk4::new`] does, keeping the options and the event list.
+    pub fn reset<M: Constraints<N, K, C>, const N: usize, const K: usize>(
+        &mut self,
+        model: &M,
+        state: &State<M::Coords>,
+    ) -> Result<()> {
+        let fresh = Self::new(model, state, self.options)?;
+        self.mode = fresh.mode;
+        self.armed = fresh.armed;
+        Ok(())
     }
 
     /// The current mode.
