@@ -198,6 +198,73 @@ fn position_rows_and_jacobian<
     (rows, value, jac)
 }
 
+/// The rows and their velocity-level values (rates) without the biases β, on f64: for position
+/// rows ġ = G q̇ + ∂g/∂t, for velocity rows h itself, with ẋ = J q̇ + ∂x/∂t. One gradient pass
+/// (plus one first-order pass in t for a rheonomic mechanism), against the two of
+/// [`constraint_rows`]: what the velocity projection needs.
+#[allow(clippy::type_complexity)]
+fn velocity_rows_and_jacobian<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> ([SVector<f64, N>; C], [f64; C], [SVector<f64, N>; K]) {
+    let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let td = DualSVec::from_re(t);
+    let x1 = model.cartesian(td, &qd);
+    let jac: [SVector<f64, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    let vv = SVector::from(*v);
+    let mut rows = [SVector::zeros(); C];
+    let mut rate = [0.0; C];
+    // ∂x/∂t and ∂g/∂t at fixed q.
+    let (x_t, g_t) = if M::RHEONOMIC {
+        let tt = Dual::new(t, 1.0);
+        let qt: [Dual<f64>; N] = std::array::from_fn(|j| Dual::from_re(q[j]));
+        let xt = model.cartesian(tt, &qt);
+        let gt = if has_position::<M, N, K, C>() {
+            let g = model.position_constraints(tt, &qt, &xt);
+            std::array::from_fn(|i| g[i].eps)
+        } else {
+            [0.0; C]
+        };
+        (std::array::from_fn(|i| xt[i].eps), gt)
+    } else {
+        ([0.0; K], [0.0; C])
+    };
+    if has_position::<M, N, K, C>() {
+        let g1 = model.position_constraints(td, &qd, &x1);
+        for i in 0..C {
+            if M::KINDS[i].is_position() {
+                rows[i] = gradient(&g1[i]);
+                rate[i] = rows[i].dot(&vv) + g_t[i];
+            }
+        }
+    }
+    if has_velocity::<M, N, K, C>() {
+        let tv = DualSVec::from_re(t);
+        let qv: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
+        let vs: [DualSVec<f64, N>; N] =
+            std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
+        let xv: [DualSVec<f64, N>; K] = std::array::from_fn(|i| DualSVec::from_re(x1[i].re));
+        let xdv: [DualSVec<f64, N>; K] = std::array::from_fn(|i| {
+            DualVec::new(jac[i].dot(&vv) + x_t[i], Derivative::some(jac[i]))
+        });
+        let h = model.velocity_constraints(tv, &qv, &vs, &xv, &xdv);
+        for i in 0..C {
+            if M::KINDS[i].is_velocity() {
+                rows[i] = gradient(&h[i]);
+                rate[i] = h[i].re;
+            }
+        }
+    }
+    (rows, rate, jac)
+}
+
 /// The constraint rows rᵢ, biases βᵢ, values and rates at (t, q, q̇), for any scalar.
 pub fn constraint_rows<
     M: Constraints<N, K, C>,
@@ -803,8 +870,8 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
     }
     let mut vn = *v;
     if enforced.iter().any(|&b| b) {
-        let (cr, jac) = rows_and_jacobian(model, t, &qn, &vn);
-        let delta = least_norm_correction(model, t, &qn, &jac, &cr.rows, &cr.rate, &enforced)?;
+        let (rows, rate, jac) = velocity_rows_and_jacobian(model, t, &qn, &vn);
+        let delta = least_norm_correction(model, t, &qn, &jac, &rows, &rate, &enforced)?;
         for j in 0..N {
             vn[j] += delta[j];
         }
