@@ -16,6 +16,10 @@ pub enum Kind {
     Force,
     Torque,
     GeneralizedForce,
+    Constraint,
+    VelocityConstraint,
+    Unilateral,
+    Friction,
 }
 
 impl Kind {
@@ -30,6 +34,10 @@ impl Kind {
             Kind::Force => "force",
             Kind::Torque => "torque",
             Kind::GeneralizedForce => "generalized_force",
+            Kind::Constraint => "constraint",
+            Kind::VelocityConstraint => "velocity_constraint",
+            Kind::Unilateral => "unilateral",
+            Kind::Friction => "friction",
         }
     }
 
@@ -44,6 +52,10 @@ impl Kind {
             Kind::Force,
             Kind::Torque,
             Kind::GeneralizedForce,
+            Kind::Constraint,
+            Kind::VelocityConstraint,
+            Kind::Unilateral,
+            Kind::Friction,
         ]
         .into_iter()
         .find(|k| ident == k.name())
@@ -55,8 +67,18 @@ impl Kind {
             Kind::Particle => &["mass"],
             Kind::RigidBody => &["mass", "inertia"],
             Kind::Force | Kind::Torque | Kind::GeneralizedForce => &["on"],
+            Kind::Friction => &["on", "kinetic", "stiction"],
             Kind::Point | Kind::Potential | Kind::Gravity => &[],
+            Kind::Constraint | Kind::VelocityConstraint | Kind::Unilateral => &[],
         }
+    }
+
+    /// Whether the function declares a constraint row.
+    pub fn is_constraint(self) -> bool {
+        matches!(
+            self,
+            Kind::Constraint | Kind::VelocityConstraint | Kind::Unilateral | Kind::Friction
+        )
     }
 
     /// Whether the function's body is a position (a body or a point).
@@ -81,6 +103,9 @@ pub struct Args {
     pub mass: Option<Expr>,
     pub inertia: Option<Inertia>,
     pub on: Option<Ident>,
+    /// Coulomb coefficients of a friction row.
+    pub kinetic: Option<Expr>,
+    pub stiction: Option<Expr>,
     /// The arguments did not parse (already reported): nothing is "missing".
     pub malformed: bool,
 }
@@ -126,6 +151,8 @@ pub fn parse_args(cx: &Ctxt, kind: Kind, attr: &Attribute) -> Args {
         mass: None,
         inertia: None,
         on: None,
+        kinetic: None,
+        stiction: None,
         malformed: false,
     };
     let parsed = match &attr.meta {
@@ -180,6 +207,8 @@ fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
     }
     let repeated = match key.to_string().as_str() {
         "mass" => args.mass.replace(value).is_some(),
+        "kinetic" => args.kinetic.replace(value).is_some(),
+        "stiction" => args.stiction.replace(value).is_some(),
         "inertia" => {
             let inertia = match value {
                 Expr::Array(array) => Inertia::Principal(array),
@@ -196,7 +225,7 @@ fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
             other => {
                 cx.error_spanned_by(
                     other,
-                    "`on =` takes the name of a body, point or coordinate",
+                    "`on =` takes the name of a body, point, coordinate or constraint",
                 );
                 false
             }

@@ -69,6 +69,13 @@ pub struct Force<'a> {
     pub kind: Kind,
 }
 
+/// A constraint row, in declaration order among constraints.
+pub struct ConstraintRow<'a> {
+    pub decl: &'a Decl,
+    /// For a friction row, the index of its contact (normal) row.
+    pub normal: Option<usize>,
+}
+
 /// A checked declaration: what the expansion works from.
 pub struct Model<'a> {
     pub mechanism: &'a Mechanism,
@@ -84,6 +91,8 @@ pub struct Model<'a> {
     /// differentiation needed.
     pub uniform_gravities: Vec<(&'a Decl, Dim)>,
     pub forces: Vec<Force<'a>>,
+    /// Constraint rows, in declaration order.
+    pub constraints: Vec<ConstraintRow<'a>>,
     /// Free names of each declared function, by function name.
     pub free_names: HashMap<String, Vec<Ident>>,
     /// Whether `t` is named in a position, potential or gravity.
@@ -147,6 +156,12 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
         gravities: Vec::new(),
         uniform_gravities: Vec::new(),
         forces: Vec::new(),
+        constraints: mechanism
+            .decls
+            .iter()
+            .filter(|d| d.kind().is_constraint())
+            .map(|decl| ConstraintRow { decl, normal: None })
+            .collect(),
         free_names: HashMap::new(),
         rheonomic: false,
         rows: bodies.iter().map(|b| b.shape.rows()).sum(),
@@ -380,6 +395,30 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
             }
             Context::Force
         }
+        Kind::Constraint | Kind::Unilateral => {
+            // `#[constraint] fn rod() -> Vec2`: a constraint row is one scalar.
+            expect_return_type(
+                cx,
+                decl,
+                &["f64"],
+                "the constraint function, zero when satisfied",
+            );
+            Context::Constraint
+        }
+        Kind::VelocityConstraint => {
+            expect_return_type(
+                cx,
+                decl,
+                &["f64"],
+                "the constraint, zero when satisfied, affine in velocities",
+            );
+            Context::Force
+        }
+        Kind::Friction => {
+            expect_return_type(cx, decl, &["f64"], "the slip velocity");
+            check_friction(cx, model, decl);
+            Context::Force
+        }
     };
     let free = names::free_names(&decl.block);
     let mut seen = BTreeSet::new();
@@ -387,7 +426,11 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
     let mut constant = true;
     for ident in free.iter().filter(|i| seen.insert(i.to_string())) {
         let name = Resolver { model, context }.resolve(cx, ident);
-        if name == Some(Name::Time) && context != Context::Force {
+        let is_force = matches!(
+            decl.kind(),
+            Kind::Force | Kind::Torque | Kind::GeneralizedForce
+        );
+        if name == Some(Name::Time) && !is_force {
             model.rheonomic = true;
         }
         constant &= matches!(name, Some(Name::Param | Name::Item));
@@ -462,6 +505,45 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
         );
     }
     Some(Force { decl, target, kind })
+}
+
+/// A friction row: its contact row and its Coulomb coefficients.
+fn check_friction(cx: &Ctxt, model: &mut Model, decl: &Decl) {
+    let args = &decl.args;
+    if args.malformed {
+        return;
+    }
+    // `#[friction(kinetic = mu)] fn slip() -> f64`: friction acts at a contact.
+    let Some(on) = &args.on else {
+        cx.error_spanned_by(
+            &args.attr,
+            "missing `on = ...`: the constraint whose force is the normal force",
+        );
+        return;
+    };
+    let normal = model
+        .constraints
+        .iter()
+        .position(|c| c.decl.ident() == on && c.decl.kind() != Kind::Friction);
+    match normal {
+        // `#[friction(on = flor)]`: a typo in the contact.
+        None => cx.error_spanned_by(on, format!("`{on}` is not a `#[constraint]`, `#[velocity_constraint]` or `#[unilateral]` of this mechanism")),
+        Some(n) => {
+            let row = model.constraints.iter().position(|c| std::ptr::eq(c.decl, decl)).unwrap();
+            model.constraints[row].normal = Some(n);
+        }
+    }
+    // `#[friction(on = floor)]`: Coulomb's law needs a coefficient.
+    match &args.kinetic {
+        None => cx.error_spanned_by(
+            &args.attr,
+            "missing `kinetic = ...`: the coefficient of sliding friction",
+        ),
+        Some(kinetic) => check_constant(cx, model, kinetic),
+    }
+    if let Some(stiction) = &args.stiction {
+        check_constant(cx, model, stiction);
+    }
 }
 
 /// Masses and inertias: present where needed, constant.
@@ -561,6 +643,8 @@ enum Context {
     Position(usize),
     /// A potential or gravity.
     Potential,
+    /// A holonomic or unilateral constraint.
+    Constraint,
     /// A force, torque or generalized force.
     Force,
     /// A mass or inertia.
@@ -629,6 +713,11 @@ impl Resolver<'_, '_> {
                 ident,
                 format!("positions cannot depend on velocities: `{ident}` is in scope in forces only"),
             ),
+            // `#[constraint] fn rod() -> f64 { x_dot }`.
+            (Context::Constraint, Some(Name::CoordVelocity | Name::BodyVelocity)) => cx.error_spanned_by(
+                ident,
+                format!("a position constraint cannot depend on velocities: `{ident}` is in scope in `#[velocity_constraint]`s, `#[friction]` and forces"),
+            ),
             // `#[potential] fn v() -> f64 { theta_dot * theta_dot }`.
             (Context::Potential, Some(Name::CoordVelocity | Name::BodyVelocity)) => cx.error_spanned_by(
                 ident,
@@ -656,7 +745,7 @@ impl Resolver<'_, '_> {
     fn unknown_message(&self, ident: &Ident) -> String {
         let in_scope = match self.context {
             Context::Position(_) => "a coordinate, parameter, `t`, body or point declared earlier, or item of this module",
-            Context::Potential => "a coordinate, parameter, `t`, body, point, or item of this module",
+            Context::Potential | Context::Constraint => "a coordinate, parameter, `t`, body, point, or item of this module",
             Context::Force => "a coordinate, parameter, `t`, body, point, their `_dot` velocities, or item of this module",
             Context::Mass => "a parameter or an item of this module",
         };

@@ -90,7 +90,14 @@ fn generate(model: &Model) -> TokenStream {
     let bodies = bodies_structs(model);
     let inherent = inherent_impl(model);
     let model_impl = model_impl(model);
-    let mechanism_impl = mechanism_impl(model.params_ident, model.coords.len(), model.rows);
+    let constrained = (!model.constraints.is_empty()).then_some(model.constraints.len());
+    let mechanism_impl = mechanism_impl(
+        model.params_ident,
+        model.coords.len(),
+        model.rows,
+        constrained,
+    );
+    let constraints_impl = constrained.map(|_| constraints_impl(model));
     quote! {
         #(#attrs)*
         #vis mod #ident {
@@ -101,6 +108,7 @@ fn generate(model: &Model) -> TokenStream {
             #inherent
             #model_impl
             #mechanism_impl
+            #constraints_impl
         }
     }
 }
@@ -238,9 +246,11 @@ fn inherent_impl(model: &Model) -> TokenStream {
     let p = private();
     let (params, n, k) = (model.params_ident, lit(model.coords.len()), lit(model.rows));
     let bodies_fn = bodies_fn(model);
-    let from_cartesian =
-        (!model.potentials.is_empty() || !model.gravities.is_empty() || !model.forces.is_empty())
-            .then(|| positions_from_cartesian(model));
+    let from_cartesian = (!model.potentials.is_empty()
+        || !model.gravities.is_empty()
+        || !model.forces.is_empty()
+        || !model.constraints.is_empty())
+    .then(|| positions_from_cartesian(model));
     let velocities_from_cartesian = velocities_from_cartesian(model);
     quote! {
         impl #params {
@@ -730,15 +740,23 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
 }
 
 /// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
-fn mechanism_impl(params: &Ident, n: usize, k: usize) -> TokenStream {
+fn mechanism_impl(params: &Ident, n: usize, k: usize, constrained: Option<usize>) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
+    let overrides = constrained.map(|c| constrained_overrides(n.clone(), k.clone(), lit(c)));
+    let validate_constraints = constrained.map(|c| {
+        let c = lit(c);
+        quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
+    });
     quote! {
         impl #p::Mechanism<#n> for #params {
             type Coords = Coords;
             #[inline]
             fn validate(&self) -> #p::Result<()> {
-                <Self as #p::Model<#n, #k>>::validate(self)
+                <Self as #p::Model<#n, #k>>::validate(self)?;
+                #validate_constraints
+                #p::core::result::Result::Ok(())
             }
+            #overrides
             #[inline]
             fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
                 #p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v)
@@ -758,6 +776,161 @@ fn mechanism_impl(params: &Ident, n: usize, k: usize) -> TokenStream {
             #[inline]
             fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
                 #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
+            }
+        }
+    }
+}
+
+/// The three `Mechanism` hooks that make every integrator enforce the constraints.
+fn constrained_overrides(
+    n: proc_macro2::Literal,
+    k: proc_macro2::Literal,
+    c: proc_macro2::Literal,
+) -> TokenStream {
+    let p = private();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    quote! {
+        #[inline]
+        fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+            #constraints::accelerations::<Self, S, #n, #k, #c>(self, t, q, v)
+        }
+        fn project(&self, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
+            let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;
+            #constraints::project::<Self, #n, #k, #c>(self, t, q, v, &mode)
+        }
+        fn check_constraints(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
+            #constraints::check_consistent::<Self, #n, #k, #c>(self, t, q, v, #constraints::CONSISTENCY_TOLERANCE)
+        }
+    }
+}
+
+/// The `Constraints` impl: one row per constraint item, in declaration order.
+fn constraints_impl(model: &Model) -> TokenStream {
+    let p = private();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    let (params, n, k, c) = (
+        model.params_ident,
+        lit(model.coords.len()),
+        lit(model.rows),
+        lit(model.constraints.len()),
+    );
+    let names = model.constraints.iter().map(|r| r.decl.ident().to_string());
+    let kinds = model
+        .constraints
+        .iter()
+        .map(|r| match (r.decl.kind(), r.normal) {
+            (Kind::Constraint, _) => quote!(#constraints::ConstraintKind::Holonomic),
+            (Kind::Unilateral, _) => quote!(#constraints::ConstraintKind::Unilateral),
+            (Kind::VelocityConstraint, _) => quote!(#constraints::ConstraintKind::Velocity),
+            (_, normal) => {
+                let normal = lit(normal.unwrap_or_default());
+                quote!(#constraints::ConstraintKind::Friction { normal: #normal })
+            }
+        });
+    let is_position = |kind: Kind| matches!(kind, Kind::Constraint | Kind::Unilateral);
+    // `position_constraints` is required; the other two only when a row needs them.
+    let position = constraint_rows_fn(model, true);
+    let velocity = model
+        .constraints
+        .iter()
+        .any(|r| !is_position(r.decl.kind()))
+        .then(|| constraint_rows_fn(model, false));
+    let friction = model
+        .constraints
+        .iter()
+        .any(|r| r.decl.kind() == Kind::Friction)
+        .then(|| friction_fn(model));
+    quote! {
+        impl #constraints::Constraints<#n, #k, #c> for #params {
+            const NAMES: [&'static str; #c] = [#(#names),*];
+            const KINDS: [#constraints::ConstraintKind; #c] = [#(#kinds),*];
+            #position
+            #velocity
+            #friction
+        }
+    }
+}
+
+/// `position_constraints` (g or c per position row, zero elsewhere) or `velocity_constraints`
+/// (h or the slip velocity per velocity row, zero elsewhere).
+fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
+    let p = private();
+    let (n, k, c, d) = (
+        lit(model.coords.len()),
+        lit(model.rows),
+        lit(model.constraints.len()),
+        scalar(),
+    );
+    let prelude = prelude();
+    let rows: Vec<_> = model
+        .constraints
+        .iter()
+        .filter(|r| matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position)
+        .map(|r| r.decl)
+        .collect();
+    let inputs = bind_inputs(
+        model,
+        &model.names_used_by(rows.iter().copied()),
+        quote!(__q),
+    );
+    let bodies = bind_bodies(model);
+    let values = model.constraints.iter().map(|r| {
+        if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position {
+            let block = lift::lift_block(&r.decl.block, &d);
+            quote!({ let __row: __D = #block; __row })
+        } else {
+            quote!(<__D>::zero())
+        }
+    });
+    let signature = if position {
+        quote!(fn position_constraints<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> [__D; #c])
+    } else {
+        quote!(fn velocity_constraints<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], __x: &[__D; #k], __x_dot: &[__D; #k]) -> [__D; #c])
+    };
+    let velocities = (!position).then(|| {
+        let coords = model.coords.iter().map(|c| format_ident!("{}_dot", c.ident));
+        let names = model.bodies.iter().map(|b| b.decl.ident());
+        let body_velocities = model.bodies.iter().map(|b| format_ident!("{}_dot", b.decl.ident()));
+        quote! {
+            let [#(#coords),*] = *__v;
+            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
+        }
+    });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        #signature {
+            #prelude
+            #inputs
+            #bodies
+            #velocities
+            [#(#values),*]
+        }
+    }
+}
+
+/// `friction_coefficients`: μₖ and μₛ (μₛ = μₖ unless given) of each friction row.
+fn friction_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    let params = model.params.iter().map(|p| &p.ident);
+    let arms = model
+        .constraints
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.decl.kind() == Kind::Friction)
+        .map(|(i, r)| {
+            let i = lit(i);
+            let kinetic = r.decl.args.kinetic.as_ref();
+            let stiction = r.decl.args.stiction.as_ref().or(kinetic);
+            quote!(#i => #constraints::Coulomb { kinetic: #kinetic, stiction: #stiction },)
+        });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn friction_coefficients(&self, row: usize) -> #constraints::Coulomb {
+            #( let #params: f64 = self.#params; )*
+            match row {
+                #(#arms)*
+                _ => #constraints::Coulomb::default(),
             }
         }
     }

@@ -184,6 +184,37 @@ fn every_item_kind() {
 }
 
 #[test]
+fn constraints_implement_the_kkt_hooks() {
+    let out = snapshot(
+        "sliding_block",
+        quote! {
+            pub mod sliding_block {
+                pub struct Coords { pub x: f64, pub y: f64 }
+                pub struct SlidingBlock { pub m: f64, pub g: f64, pub mu: f64 }
+                #[particle(mass = m)]
+                fn block() -> Vec2 { vec2(x, y) }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+                #[unilateral]
+                fn floor() -> f64 { block.y }
+                #[friction(on = floor, kinetic = mu)]
+                fn slide() -> f64 { block_dot.x }
+            }
+        },
+    );
+    assert!(out.contains("constraints::Constraints<2, 2, 2>"));
+    assert!(out.contains("ConstraintKind::Friction {\n                normal: 0,"));
+    assert!(
+        out.contains("fn accelerations_at")
+            && out.contains("fn project")
+            && out.contains("fn check_constraints")
+    );
+    // Without constraints, none of it.
+    let free = pretty(expand(TokenStream::new(), pendulum()));
+    assert!(!free.contains("Constraints<") && !free.contains("fn project"));
+}
+
+#[test]
 fn an_error_still_emits_the_items_and_stubs() {
     let out = pretty(expand(
         TokenStream::new(),

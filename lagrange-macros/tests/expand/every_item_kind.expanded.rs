@@ -417,7 +417,8 @@ pub mod everything {
         type Coords = Coords;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            <Self as ::lagrange::__private::Model<2, 17>>::validate(self)
+            <Self as ::lagrange::__private::Model<2, 17>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(

@@ -158,7 +158,8 @@ pub mod free {
         type Coords = Coords;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            <Self as ::lagrange::__private::Model<2, 2>>::validate(self)
+            <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(

@@ -190,7 +190,8 @@ pub mod pendulum {
         type Coords = Coords;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            <Self as ::lagrange::__private::Model<1, 2>>::validate(self)
+            <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
