@@ -37,13 +37,16 @@ use proc_macro::TokenStream;
 /// Items: `#[particle(mass = ..)]` and `#[point]` (return `Vec2`/`Vec3`), `#[rigid_body(mass = ..,
 /// inertia = ..)]` (`Planar`, or `Spatial` with `inertia = [I1, I2, I3]`), `#[potential]` (`f64`),
 /// `#[gravity]` (`Vec2`/`Vec3`), `#[force(on = body)]` (`Vec2`/`Vec3`), `#[torque(on = planar_body)]`
-/// and `#[generalized_force(on = coordinate)]` (`f64`). Bodies name coordinates, parameters, `t`
-/// and earlier bodies; forces also `<coordinate>_dot` and `<body>_dot`. Other items of the module
-/// are kept as written.
+/// and `#[generalized_force(on = coordinate)]` (`f64`); constraint rows `#[constraint]` (g = 0),
+/// `#[unilateral]` (c ≥ 0), `#[velocity_constraint]` (h = 0, affine in velocities) and
+/// `#[friction(on = contact, kinetic = μₖ, stiction = μₛ)]` (the slip velocity), all `f64`. Bodies
+/// name coordinates, parameters, `t` and earlier bodies; potentials and position constraints every
+/// body; forces, velocity constraints and friction also `<coordinate>_dot` and `<body>_dot`. Other
+/// items of the module are kept as written.
 ///
 /// Generated in the module: `Coords<T = f64>`, `DOF`, `State`, `Bodies<T = f64>` and
 /// `BodyVelocities<T = f64>` with `bodies(&state)` and `body_velocities(&state)` on the parameter
-/// struct, and `Model` and `Mechanism` impls for it. See the `lagrange` crate's README, "The
+/// struct, and `Model` and `Mechanism` impls for it (plus `Constraints` when constraints are declared). See the `lagrange` crate's README, "The
 /// declaration"; mistakes are compile errors at the offending tokens, all reported at once.
 #[proc_macro_attribute]
 pub fn mechanism(attr: TokenStream, item: TokenStream) -> TokenStream {
