@@ -20,6 +20,7 @@ pub mod prelude {
 /// What generated code names. Not a public API: it may change in any release.
 #[doc(hidden)]
 pub mod __private {
+    pub use core;
     pub use lagrange_core;
     pub use lagrange_core::dynamics;
     pub use lagrange_core::geometry;
@@ -28,6 +29,5 @@ pub mod __private {
     pub use nalgebra;
     pub use num_dual;
     pub use num_dual::DualNum;
-    pub use core;
     pub use std;
 }

@@ -28,8 +28,20 @@ pub struct Check {
 
 impl Check {
     /// A check of `simulated` against `exact` within relative `tolerance`.
-    pub fn new(scene: &'static str, quantity: impl Into<String>, simulated: f64, exact: f64, tolerance: f64) -> Self {
-        Check { scene, quantity: quantity.into(), simulated, exact, tolerance }
+    pub fn new(
+        scene: &'static str,
+        quantity: impl Into<String>,
+        simulated: f64,
+        exact: f64,
+        tolerance: f64,
+    ) -> Self {
+        Check {
+            scene,
+            quantity: quantity.into(),
+            simulated,
+            exact,
+            tolerance,
+        }
     }
 
     /// |simulated − exact| / |exact| (absolute error when the exact value is 0).
@@ -51,8 +63,18 @@ impl Check {
 /// The results table: scene, quantity, simulated, exact, relative error, tolerance, verdict.
 pub fn table(checks: &[Check]) -> String {
     let mut out = String::new();
-    let w = checks.iter().map(|c| c.quantity.chars().count()).max().unwrap_or(8).max(8);
-    let s = checks.iter().map(|c| c.scene.chars().count()).max().unwrap_or(5).max(5);
+    let w = checks
+        .iter()
+        .map(|c| c.quantity.chars().count())
+        .max()
+        .unwrap_or(8)
+        .max(8);
+    let s = checks
+        .iter()
+        .map(|c| c.scene.chars().count())
+        .max()
+        .unwrap_or(5)
+        .max(5);
     let _ = writeln!(
         out,
         "{:<s$}  {:<w$}  {:>22}  {:>22}  {:>9}  {:>9}  ok",
@@ -78,7 +100,11 @@ pub fn table(checks: &[Check]) -> String {
 pub fn plots_dir() -> PathBuf {
     let dir = std::env::var_os("LAGRANGE_PLOTS")
         .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("plots"));
+        .unwrap_or_else(|| {
+            Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("..")
+                .join("plots")
+        });
     let _ = std::fs::create_dir_all(&dir);
     dir
 }
@@ -128,11 +154,17 @@ pub fn upward_crossing(times: &[f64], values: &[f64], derivatives: &[f64]) -> Op
             // Cubic Hermite p(s), s ∈ [0, 1]; Newton from the secant guess.
             let p = |s: f64| {
                 let (s2, s3) = (s * s, s * s * s);
-                (2.0 * s3 - 3.0 * s2 + 1.0) * y0 + (s3 - 2.0 * s2 + s) * d0 + (-2.0 * s3 + 3.0 * s2) * y1 + (s3 - s2) * d1
+                (2.0 * s3 - 3.0 * s2 + 1.0) * y0
+                    + (s3 - 2.0 * s2 + s) * d0
+                    + (-2.0 * s3 + 3.0 * s2) * y1
+                    + (s3 - s2) * d1
             };
             let dp = |s: f64| {
                 let s2 = s * s;
-                (6.0 * s2 - 6.0 * s) * y0 + (3.0 * s2 - 4.0 * s + 1.0) * d0 + (-6.0 * s2 + 6.0 * s) * y1 + (3.0 * s2 - 2.0 * s) * d1
+                (6.0 * s2 - 6.0 * s) * y0
+                    + (3.0 * s2 - 4.0 * s + 1.0) * d0
+                    + (-6.0 * s2 + 6.0 * s) * y1
+                    + (3.0 * s2 - 2.0 * s) * d1
             };
             let mut s = y0 / (y0 - y1);
             for _ in 0..20 {

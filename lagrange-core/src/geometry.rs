@@ -173,7 +173,9 @@ impl<D: Scalar> Rot3<D> {
     /// The identity rotation.
     pub fn identity() -> Self {
         let (o, z) = (D::one(), D::zero());
-        Rot3 { rows: [[o, z, z], [z, o, z], [z, z, o]] }
+        Rot3 {
+            rows: [[o, z, z], [z, o, z], [z, z, o]],
+        }
     }
     /// Column `k`: the image of the k-th body axis in the world frame.
     #[inline(always)]
@@ -183,7 +185,13 @@ impl<D: Scalar> Rot3<D> {
     /// The transpose (the inverse, for a rotation).
     pub fn transpose(&self) -> Self {
         let r = &self.rows;
-        Rot3 { rows: [[r[0][0], r[1][0], r[2][0]], [r[0][1], r[1][1], r[2][1]], [r[0][2], r[1][2], r[2][2]]] }
+        Rot3 {
+            rows: [
+                [r[0][0], r[1][0], r[2][0]],
+                [r[0][1], r[1][1], r[2][1]],
+                [r[0][2], r[1][2], r[2][2]],
+            ],
+        }
     }
 }
 
@@ -191,21 +199,27 @@ impl<D: Scalar> Rot3<D> {
 pub fn rot_x<D: Scalar>(angle: D) -> Rot3<D> {
     let (s, c) = angle.sin_cos();
     let (o, z) = (D::one(), D::zero());
-    Rot3 { rows: [[o, z, z], [z, c, -s], [z, s, c]] }
+    Rot3 {
+        rows: [[o, z, z], [z, c, -s], [z, s, c]],
+    }
 }
 
 /// Rotation by `angle` about the y axis.
 pub fn rot_y<D: Scalar>(angle: D) -> Rot3<D> {
     let (s, c) = angle.sin_cos();
     let (o, z) = (D::one(), D::zero());
-    Rot3 { rows: [[c, z, s], [z, o, z], [-s, z, c]] }
+    Rot3 {
+        rows: [[c, z, s], [z, o, z], [-s, z, c]],
+    }
 }
 
 /// Rotation by `angle` about the z axis.
 pub fn rot_z<D: Scalar>(angle: D) -> Rot3<D> {
     let (s, c) = angle.sin_cos();
     let (o, z) = (D::one(), D::zero());
-    Rot3 { rows: [[c, -s, z], [s, c, z], [z, z, o]] }
+    Rot3 {
+        rows: [[c, -s, z], [s, c, z], [z, z, o]],
+    }
 }
 
 impl<D: Scalar> Mul for Rot3<D> {
@@ -214,7 +228,9 @@ impl<D: Scalar> Mul for Rot3<D> {
         let mut rows = [[D::zero(); 3]; 3];
         for (i, row) in rows.iter_mut().enumerate() {
             for (j, e) in row.iter_mut().enumerate() {
-                *e = self.rows[i][0] * o.rows[0][j] + self.rows[i][1] * o.rows[1][j] + self.rows[i][2] * o.rows[2][j];
+                *e = self.rows[i][0] * o.rows[0][j]
+                    + self.rows[i][1] * o.rows[1][j]
+                    + self.rows[i][2] * o.rows[2][j];
             }
         }
         Rot3 { rows }

@@ -19,7 +19,13 @@ impl Model<2, 4> for DoublePendulum {
     const HAS_FORCES: bool = false;
 
     fn validate(&self) -> lagrange_core::Result<()> {
-        for (name, value) in [("m1", self.m1), ("m2", self.m2), ("l1", self.l1), ("l2", self.l2), ("g", self.g)] {
+        for (name, value) in [
+            ("m1", self.m1),
+            ("m2", self.m2),
+            ("l1", self.l1),
+            ("l2", self.l2),
+            ("g", self.g),
+        ] {
             if !value.is_finite() {
                 return Err(Error::NonFiniteParameter { name, value });
             }
@@ -45,7 +51,12 @@ impl Mechanism<2> for DoublePendulum {
     fn validate(&self) -> lagrange_core::Result<()> {
         Model::validate(self)
     }
-    fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
+    fn equations_of_motion_at<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; 2],
+        v: &[S; 2],
+    ) -> EquationsOfMotion<S, 2> {
         dynamics::equations_of_motion(self, t, q, v)
     }
     fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
@@ -77,16 +88,29 @@ fn closed_form(p: &DoublePendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
     [a1, a2]
 }
 
-const P: DoublePendulum = DoublePendulum { m1: 1.3, m2: 0.7, l1: 1.1, l2: 0.9, g: 9.81 };
+const P: DoublePendulum = DoublePendulum {
+    m1: 1.3,
+    m2: 0.7,
+    l1: 1.1,
+    l2: 0.9,
+    g: 9.81,
+};
 
 #[test]
 fn accelerations_match_closed_form() {
-    for (q, v) in [([0.3, -1.2], [0.5, 2.0]), ([2.9, 0.1], [-3.0, 0.2]), ([0.0, 0.0], [0.0, 0.0])] {
+    for (q, v) in [
+        ([0.3, -1.2], [0.5, 2.0]),
+        ([2.9, 0.1], [-3.0, 0.2]),
+        ([0.0, 0.0], [0.0, 0.0]),
+    ] {
         let got = P.accelerations_at(0.0, &q, &v).unwrap();
         let want = closed_form(&P, q, v);
         for k in 0..2 {
             // Both are a handful of flops from the same inputs: agreement to a few ulps of the scale.
-            assert!((got[k] - want[k]).abs() <= 1e-12 * (1.0 + want[k].abs()), "{got:?} vs {want:?}");
+            assert!(
+                (got[k] - want[k]).abs() <= 1e-12 * (1.0 + want[k].abs()),
+                "{got:?} vs {want:?}"
+            );
         }
     }
 }
@@ -121,17 +145,33 @@ fn rk4_conserves_energy_to_its_order() {
 fn bad_input_is_an_error_and_leaves_state_alone() {
     let mut s = State::new(0.0, [f64::NAN, 0.0], [0.0, 0.0]);
     let before = s;
-    assert!(matches!(P.step::<Rk4>(&mut s, 1e-3), Err(Error::NonFiniteState { .. })));
+    assert!(matches!(
+        P.step::<Rk4>(&mut s, 1e-3),
+        Err(Error::NonFiniteState { .. })
+    ));
     assert_eq!(format!("{before:?}"), format!("{s:?}"));
     let mut s = State::at_rest([0.1, 0.2]);
     for h in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        assert!(matches!(P.step::<Rk4>(&mut s, h), Err(Error::InvalidStep { .. })));
+        assert!(matches!(
+            P.step::<Rk4>(&mut s, h),
+            Err(Error::InvalidStep { .. })
+        ));
     }
     assert_eq!(s, State::at_rest([0.1, 0.2]));
-    let bad = DoublePendulum { g: f64::INFINITY, ..P };
-    assert!(matches!(bad.accelerations(&s), Err(Error::NonFiniteParameter { name: "g", .. })));
+    let bad = DoublePendulum {
+        g: f64::INFINITY,
+        ..P
+    };
+    assert!(matches!(
+        bad.accelerations(&s),
+        Err(Error::NonFiniteParameter { name: "g", .. })
+    ));
     // Zero lengths make the mass matrix singular: an error naming the configuration, not NaN.
-    let degenerate = DoublePendulum { l1: 0.0, l2: 0.0, ..P };
+    let degenerate = DoublePendulum {
+        l1: 0.0,
+        l2: 0.0,
+        ..P
+    };
     let err = degenerate.accelerations(&s).unwrap_err();
     assert!(matches!(err, Error::SingularMassMatrix { .. }), "{err}");
     assert!(err.to_string().contains("q0 = 0.1"), "{err}");
