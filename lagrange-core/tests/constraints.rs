@@ -1388,29 +1388,37 @@ impl Constraints<2, 2, 1> for SmoothRamp {
     }
 }
 
-/// Nanoseconds per step: minimum over 7 repeats of `steps` steps, after a warm-up.
-fn time_per_step(steps: usize, mut run: impl FnMut(usize)) -> f64 {
-    run(steps / 10);
-    (0..7)
-        .map(|_| {
-            let start = std::time::Instant::now();
-            run(steps);
-            start.elapsed().as_nanos() as f64 / steps as f64
-        })
-        .fold(f64::INFINITY, f64::min)
+/// Nanoseconds per step of two runs, measured alternately (so both see the same machine load):
+/// minimum over 25 repeats of `steps` steps each, after a warm-up.
+fn time_pair(steps: usize, mut a: impl FnMut(usize), mut b: impl FnMut(usize)) -> (f64, f64) {
+    a(steps);
+    b(steps);
+    let mut best = (f64::INFINITY, f64::INFINITY);
+    for _ in 0..25 {
+        let start = std::time::Instant::now();
+        a(steps);
+        best.0 = best.0.min(start.elapsed().as_nanos() as f64 / steps as f64);
+        let start = std::time::Instant::now();
+        b(steps);
+        best.1 = best.1.min(start.elapsed().as_nanos() as f64 / steps as f64);
+    }
+    best
 }
 
-fn rk4_cost<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(m: &M, s0: State<[f64; N]>) -> f64 {
-    time_per_step(20_000, |n| {
+fn rk4_run<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
+    m: &M,
+    s0: State<[f64; N]>,
+) -> impl FnMut(usize) + '_ {
+    move |n| {
         let mut s = s0;
         for _ in 0..n {
             m.step::<Rk4>(&mut s, 1e-4).unwrap();
         }
         std::hint::black_box(s);
-    })
+    }
 }
 
-fn contact_cost<
+fn contact_run<
     M: Constraints<N, K, C, Coords = [f64; N]>,
     const N: usize,
     const K: usize,
@@ -1418,28 +1426,39 @@ fn contact_cost<
 >(
     m: &M,
     s0: State<[f64; N]>,
-) -> f64 {
-    time_per_step(20_000, |n| {
+) -> impl FnMut(usize) + '_ {
+    move |n| {
         let mut s = s0;
         let mut stepper = ContactRk4::new(m, &s, ContactOptions::default()).unwrap();
         for _ in 0..n {
             stepper.step(m, &mut s, 1e-5).unwrap();
         }
         std::hint::black_box(s);
-    })
+    }
 }
 
 #[test]
 #[ignore = "timing report, run in release with --ignored --nocapture"]
 fn cost_per_step_of_each_constraint_kind() {
+    const STEPS: usize = 4000;
+    let report = |label: &str, (with, without): (f64, f64), base: &str| {
+        println!(
+            "{label}: {with:.0} ns/step vs {without:.0} {base}: ×{:.1}",
+            with / without
+        );
+    };
     let pendulum = CartesianPendulum {
         m: 1.0,
         l: 1.0,
         g: 9.81,
     };
     let s = State::new(0.0, [0.6, -0.8], [0.8, 0.6]);
-    let (with, without) = (rk4_cost(&pendulum, s), rk4_cost(&Free(pendulum), s));
-    println!("holonomic (Cartesian pendulum, 1 row, RK4 + projection): {with:.0} ns/step vs {without:.0} free: ×{:.1}", with / without);
+    let free = Free(pendulum);
+    report(
+        "holonomic (Cartesian pendulum, 1 row, RK4 + projection)",
+        time_pair(STEPS, rk4_run(&pendulum, s), rk4_run(&free, s)),
+        "free",
+    );
 
     let four_bar = FourBar {
         l: [1.0, 3.0, 2.0],
@@ -1452,8 +1471,12 @@ fn cost_per_step_of_each_constraint_kind() {
         &State::new(0.0, [1.0, 0.2, 1.6], [3.0, 0.0, 0.0]),
     )
     .unwrap();
-    let (with, without) = (rk4_cost(&four_bar, s), rk4_cost(&Free(four_bar), s));
-    println!("holonomic (four-bar, 2 rows, RK4 + projection): {with:.0} ns/step vs {without:.0} free: ×{:.1}", with / without);
+    let free = Free(four_bar);
+    report(
+        "holonomic (four-bar, 2 rows, RK4 + projection)",
+        time_pair(STEPS, rk4_run(&four_bar, s), rk4_run(&free, s)),
+        "free",
+    );
 
     let wheel = RollingWheel { m: 2.0, r: 0.3 };
     let s = State::new(
@@ -1461,8 +1484,12 @@ fn cost_per_step_of_each_constraint_kind() {
         [0.0, 0.0, 0.4, 0.0],
         [0.3 * 5.0 * 0.4f64.cos(), 0.3 * 5.0 * 0.4f64.sin(), 0.7, 5.0],
     );
-    let (with, without) = (rk4_cost(&wheel, s), rk4_cost(&Free(wheel), s));
-    println!("velocity (rolling wheel, 2 rows, RK4 + projection): {with:.0} ns/step vs {without:.0} free: ×{:.1}", with / without);
+    let free = Free(wheel);
+    report(
+        "velocity (rolling wheel, 2 rows, RK4 + projection)",
+        time_pair(STEPS, rk4_run(&wheel, s), rk4_run(&free, s)),
+        "free",
+    );
 
     let sphere = SphereParticle {
         m: 1.0,
@@ -1470,11 +1497,18 @@ fn cost_per_step_of_each_constraint_kind() {
         g: 9.81,
     };
     let s = State::new(0.0, [0.0, 1.0], [0.5, 0.0]);
-    let (with, without) = (contact_cost(&sphere, s), rk4_cost(&Free(sphere), s));
-    println!("unilateral in contact (sphere, ContactRk4): {with:.0} ns/step vs {without:.0} free RK4: ×{:.1}", with / without);
-    let s_free = State::new(0.0, [0.0, 2.0], [0.5, 0.0]);
-    let with = contact_cost(&sphere, s_free);
-    println!("unilateral separated (sphere, ContactRk4): {with:.0} ns/step vs {without:.0} free RK4: ×{:.1}", with / without);
+    let free = Free(sphere);
+    report(
+        "unilateral in contact (sphere, ContactRk4)",
+        time_pair(STEPS, contact_run(&sphere, s), rk4_run(&free, s)),
+        "free RK4",
+    );
+    let high = State::new(0.0, [0.0, 2.0], [0.5, 0.0]);
+    report(
+        "unilateral separated (sphere, ContactRk4)",
+        time_pair(STEPS, contact_run(&sphere, high), rk4_run(&free, high)),
+        "free RK4",
+    );
 
     let ramp = RoughRamp {
         m: 1.0,
@@ -1486,8 +1520,12 @@ fn cost_per_step_of_each_constraint_kind() {
         },
     };
     let s = State::at_rest([0.0, 0.0]);
-    let (with, without) = (contact_cost(&ramp, s), contact_cost(&SmoothRamp(ramp), s));
-    println!("friction sliding (ramp, ContactRk4): {with:.0} ns/step vs {without:.0} contact only: ×{:.1}", with / without);
+    let smooth = SmoothRamp(ramp);
+    report(
+        "friction sliding (ramp, ContactRk4)",
+        time_pair(STEPS, contact_run(&ramp, s), contact_run(&smooth, s)),
+        "contact only",
+    );
     let sticky = RoughRamp {
         friction: Coulomb {
             kinetic: 0.5,
@@ -1495,10 +1533,11 @@ fn cost_per_step_of_each_constraint_kind() {
         },
         ..ramp
     };
-    let with = contact_cost(&sticky, s);
-    let smooth_rest = State::new(0.0, [0.0, 0.0], [0.0, 0.0]);
-    let _ = smooth_rest;
-    println!("friction sticking (ramp, ContactRk4): {with:.0} ns/step vs {without:.0} contact only: ×{:.1}", with / without);
+    report(
+        "friction sticking (ramp, ContactRk4)",
+        time_pair(STEPS, contact_run(&sticky, s), contact_run(&smooth, s)),
+        "contact only (sliding)",
+    );
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -83,11 +83,14 @@
 //!
 //! # Cost
 //!
-//! Per step, relative to the same mechanism without the constraint (release build, one machine,
-//! noisy to ±20 %; reproduce with `cargo test --release -p lagrange-core --test constraints --
-//! --ignored --nocapture`): holonomic ×3.7–4.9 (four-bar with 2 rows, Cartesian pendulum with 1),
-//! velocity ×5.4–6.0 (rolling wheel, 2 rows), unilateral in contact ×4.9–5.5 and separated ×1.3–1.5
-//! ([`ContactRk4`] against plain RK4 on the free particle), friction ×1.1–1.4 on top of its contact.
+//! Per step, relative to the same mechanism without the constraint (release build, both measured
+//! alternately on one shared machine, minimum of 25 runs, two reports; reproduce with
+//! `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`): holonomic
+//! ×4.1–4.8 (four-bar with 2 rows, Cartesian pendulum with 1, plain RK4 + projection), velocity
+//! ×6.7–7.6 (rolling wheel, 2 rows), unilateral in contact ×5.9–6.0 and separated ×1.3–1.6
+//! ([`ContactRk4`] against plain RK4 on the free particle), friction ×1.1–1.5 on top of its
+//! contact. The free mechanisms here are nearly free (identity x(q) for the particle and the
+//! wheel), which makes the ratios large; the absolute cost is a few hundred ns to a few µs per step.
 //! Where it goes: every evaluation of q̈ adds the rows' dual passes and two small Cholesky
 //! factorisations to the unconstrained work, and each step adds the projection (one or two Newton
 //! corrections and one velocity correction) and the consistency check. The rows' passes re-evaluate
