@@ -177,6 +177,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
         check_function(cx, &mut model, decl);
     }
     check_masses(cx, &model);
+    check_constraint_count(cx, &model);
     check_coordinates_are_used(cx, &model);
     Some(model)
 }
@@ -403,6 +404,7 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
                 &["f64"],
                 "the constraint function, zero when satisfied",
             );
+            check_not_a_comparison(cx, decl);
             Context::Constraint
         }
         Kind::VelocityConstraint => {
@@ -412,6 +414,7 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
                 &["f64"],
                 "the constraint, zero when satisfied, affine in velocities",
             );
+            check_not_a_comparison(cx, decl);
             Context::Force
         }
         Kind::Friction => {
@@ -505,6 +508,46 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
         );
     }
     Some(Force { decl, target, kind })
+}
+
+/// A constraint's value is an expression that vanishes (or is ≥ 0), not a comparison.
+fn check_not_a_comparison(cx: &Ctxt, decl: &Decl) {
+    let Some(syn::Stmt::Expr(syn::Expr::Binary(binary), None)) = decl.block.stmts.last() else {
+        return;
+    };
+    use syn::BinOp::*;
+    // `#[constraint] fn rod() -> f64 { bob.norm() == l }`: write `bob.norm() - l`.
+    if matches!(binary.op, Eq(_) | Ne(_) | Lt(_) | Le(_) | Gt(_) | Ge(_)) {
+        let what = if decl.kind() == Kind::Unilateral {
+            "≥ 0 where the motion is admissible"
+        } else {
+            "zero when satisfied"
+        };
+        cx.error_spanned_by(
+            binary.op,
+            format!("a constraint is a value, {what}: write `a - b`, not a comparison"),
+        );
+    }
+}
+
+/// Bilateral constraint rows beyond the number of coordinates cannot all be independent.
+fn check_constraint_count(cx: &Ctxt, model: &Model) {
+    let bilateral = model
+        .constraints
+        .iter()
+        .filter(|r| matches!(r.decl.kind(), Kind::Constraint | Kind::VelocityConstraint));
+    // Two coordinates and three `#[constraint]`s: at most two of them can be independent.
+    if let Some(extra) = bilateral.clone().nth(model.coords.len()) {
+        let n = model.coords.len();
+        cx.error_spanned_by(
+            extra.decl.ident(),
+            format!(
+                "{} constraints on {n} coordinate{}: at most {n} can be independent",
+                bilateral.count(),
+                if n == 1 { "" } else { "s" }
+            ),
+        );
+    }
 }
 
 /// A friction row: its contact row and its Coulomb coefficients.
