@@ -634,13 +634,16 @@ fn potential_fn(model: &Model) -> TokenStream {
         .gravities
         .iter()
         .map(|(decl, dim)| gravity_terms(model, decl, *dim));
+    // Masses only weigh a field that varies; constant fields are `weights`.
+    let masses = (!model.gravities.is_empty())
+        .then(|| quote!(let __masses = <Self as #p::Model<#n, #k>>::masses(self);));
     quote! {
         #[allow(unused_variables, clippy::all)]
         fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D {
             #prelude
             #inputs
             #bodies
-            let __masses = <Self as #p::Model<#n, #k>>::masses(self);
+            #masses
             let mut __potential = <__D>::zero();
             #(#potentials)*
             #(#gravities)*

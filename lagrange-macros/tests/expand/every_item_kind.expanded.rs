@@ -354,7 +354,6 @@ pub mod everything {
             let [theta, phi] = *__q;
             let k = <__D>::from(self.k);
             let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
-            let __masses = <Self as ::lagrange::__private::Model<2, 17>>::masses(self);
             let mut __potential = <__D>::zero();
             let __potential_spring: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
             __potential += __potential_spring;
