@@ -885,3 +885,55 @@ fn unilateral_contact_with_coulomb_friction() {
     let bad = SlidingBlock { mu: -0.1, ..p };
     assert!(bad.accelerations(&s).is_err());
 }
+
+#[mechanism]
+pub mod driven_guide {
+    pub struct Coords {
+        pub x: f64,
+        pub y: f64,
+    }
+
+    pub struct DrivenGuide {
+        pub m: f64,
+        pub a: f64,
+        pub w: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m)]
+    fn ball() -> Vec2 {
+        vec2(x, y)
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+
+    /// A vertical guide moved as a sin(w t): a rheonomic constraint.
+    #[constraint]
+    fn guide() -> f64 {
+        x - a * (w * t).sin()
+    }
+}
+
+#[test]
+fn rheonomic_constraint_with_t() {
+    use driven_guide::{Coords, DrivenGuide, State};
+    let p = DrivenGuide {
+        m: 1.0,
+        a: 0.2,
+        w: 5.0,
+        g: 9.81,
+    };
+    const { assert!(<DrivenGuide as Model<2, 2>>::RHEONOMIC) };
+    let t = 0.3;
+    let (x, x_dot) = (p.a * (p.w * t).sin(), p.a * p.w * (p.w * t).cos());
+    let s = State::new(t, Coords { x, y: 1.0 }, Coords { x: x_dot, y: -0.5 });
+    // ẍ follows the guide, −a w² sin(w t); ÿ = −g.
+    let a = p.accelerations(&s).unwrap();
+    assert!(
+        close(a.x, -p.a * p.w * p.w * (p.w * t).sin()) && close(a.y, -p.g),
+        "{a:?}"
+    );
+}
