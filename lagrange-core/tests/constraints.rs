@@ -8,6 +8,8 @@
 //! time at most, so trajectories agree with closed forms to ~1e-9 over tens of seconds. Projection
 //! after every step keeps constraint residuals at round-off, independently of h.
 
+#![allow(clippy::needless_range_loop)] // index loops over parallel arrays of q, exact values, events
+
 use lagrange_core::constraints::{
     self, consistent_state, constraint_forces, ConstraintKind, Constraints, ContactOptions,
     ContactRk4, Coulomb, RowMode, CONSISTENCY_TOLERANCE,

@@ -179,6 +179,10 @@
 //! # Ok::<(), lagrange_core::Error>(())
 //! ```
 
+// Index loops run over several fixed-size arrays in parallel (rows, kinds, modes, multipliers), and
+// `!(x > tol)` is deliberate: it also rejects NaN.
+#![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
+
 mod contact;
 mod solve;
 
