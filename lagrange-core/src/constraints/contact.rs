@@ -44,7 +44,9 @@ pub struct ModeChange {
     pub constraint: &'static str,
     /// The row's mode before.
     pub from: RowMode,
-    /// The row's mode after (after any impact and the complementarity checks that follow it).
+    /// The row's mode after (after any impact and the complementarity checks that follow it). A
+    /// contact that bounced off (restitution e > 0) records `Inactive` → `Inactive`; a grazing
+    /// contact whose force would pull records `Inactive` → `Inactive` too.
     pub to: RowMode,
 }
 
