@@ -123,19 +123,21 @@ impl<'a> Model<'a> {
 /// has its two structs (even if other errors were found, so that they are all reported).
 pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     // `#[mechanism] mod m { struct Pendulum {..} ... }` without `struct Coords`.
-    let Some((_, coords)) = &mechanism.coords else {
+    if mechanism.coords.is_none() {
         cx.error_at(
             mechanism.span(),
             "missing `pub struct Coords { ... }`: the generalized coordinates, one `f64` field each",
         );
-        return None;
-    };
+    }
     // `#[mechanism] mod m { struct Coords {..} ... }` without a parameter struct.
-    let Some((params_struct, params)) = &mechanism.params else {
+    if mechanism.params.is_none() {
         cx.error_at(
             mechanism.span(),
             "missing the parameter struct (`pub struct Name { pub m: f64, ... }`): its name is the mechanism's type",
         );
+    }
+    let (Some((_, coords)), Some((params_struct, params))) = (&mechanism.coords, &mechanism.params)
+    else {
         return None;
     };
     // `struct Coords {}`: nothing moves.
