@@ -167,15 +167,16 @@ fn run_fixed<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
     for _ in 0..n {
         let r = match method {
             Fixed::Rk4 => m.step::<Rk4>(&mut s, h).map(|_| rhs += 4),
-            Fixed::Verlet => m.step::<StormerVerlet>(&mut s, h).map(|_| rhs += 2),
+            Fixed::Verlet => m.step::<StormerVerlet>(&mut s, h).map(|_| rhs += 3),
             Fixed::Midpoint => ImplicitMidpoint::step_with_stats(m, &mut s, h)
                 .map(|st| add(st, &mut rhs, &mut jac)),
             Fixed::Gauss => {
                 GaussLegendre2::step_with_stats(m, &mut s, h).map(|st| add(st, &mut rhs, &mut jac))
             }
             Fixed::Variational => Variational::step_with_stats(m, &mut s, h).map(|st| {
-                // predictor + final momentum rate + momenta; Newton iterations evaluate with Jacobians.
-                rhs += 3;
+                // predictor, constraint test, final momentum rate, momenta; Newton iterations
+                // evaluate with Jacobians.
+                rhs += 4;
                 jac += st.iterations + st.velocity_iterations;
             }),
         };

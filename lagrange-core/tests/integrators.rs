@@ -2,6 +2,7 @@
 //! dense output and event location, long-time energy behaviour, and errors that leave the state
 //! alone. Models are written by hand at the end of this file.
 
+use lagrange_core::constraints;
 use lagrange_core::dynamics::{self, EquationsOfMotion};
 use lagrange_core::integrate::{Direction, Dopri5Stepper, Event, Observation, StopReason};
 use lagrange_core::{vec2, Model, Scalar};
@@ -647,6 +648,136 @@ fn variational_double_pendulum_energy_bounded_over_a_million_steps() {
     eprintln!("variational double pendulum, 10⁶ steps: drift {drift:.3e}, max {max:.3e}");
     assert!(max < 1e-2, "{max}");
     assert!(drift.abs() < 0.2 * max, "{drift} vs {max}");
+}
+
+// Constrained mechanisms: the integrators that can, integrate the constrained accelerations and
+// project after every step; the variational integrator and Störmer–Verlet refuse.
+
+/// A pendulum in Cartesian coordinates with the rod |r| = L as a holonomic constraint (the pattern
+/// of `tests/constraints.rs`: the glue a `#[constraint]` declaration generates).
+#[derive(Clone, Copy)]
+struct CartesianPendulum;
+
+impl Model<2, 2> for CartesianPendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1]
+    }
+}
+
+impl constraints::Constraints<2, 2, 1> for CartesianPendulum {
+    const NAMES: [&'static str; 1] = ["rod"];
+    const KINDS: [constraints::ConstraintKind; 1] = [constraints::ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [vec2(x[0], x[1]).norm() - 1.0]
+    }
+}
+
+impl Mechanism<2> for CartesianPendulum {
+    type Coords = [f64; 2];
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn equations_of_motion_at<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; 2],
+        v: &[S; 2],
+    ) -> EquationsOfMotion<S, 2> {
+        dynamics::equations_of_motion(self, t, q, v)
+    }
+    fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
+        dynamics::kinetic_energy(self, t, q, v)
+    }
+    fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; 2]) -> S {
+        dynamics::potential_energy(self, t, q)
+    }
+    fn momenta_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
+        dynamics::momenta(self, t, q, v)
+    }
+    fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
+        dynamics::lagrangian_time_derivative(self, t, q, v)
+    }
+    fn accelerations_at<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; 2],
+        v: &[S; 2],
+    ) -> lagrange_core::Result<[S; 2]> {
+        constraints::accelerations(self, t, q, v)
+    }
+    fn project(&self, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
+        let mode = constraints::infer_mode(self, t, q, v)?;
+        constraints::project(self, t, q, v, &mode)
+    }
+    fn check_constraints(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> lagrange_core::Result<()> {
+        constraints::check_consistent(self, t, q, v, constraints::CONSISTENCY_TOLERANCE)
+    }
+}
+
+#[test]
+fn constrained_pendulum_with_implicit_methods_and_dopri5() {
+    // Released from rest at 2 rad from the bottom: (x, y) = (sin 2, −cos 2). The angle θ = atan2(x, −y)
+    // must follow the angle-form pendulum θ̈ = −sin θ, which reaches θ = 0 after the quarter period
+    // K(sin 1) (see `dopri5_locates_the_pendulum_quarter_period`), and |r| stays 1 (projection after
+    // every step keeps it at round-off).
+    let theta0 = 2.0f64;
+    let quarter = elliptic_k((theta0 / 2.0).sin());
+    let start = State::new(0.0, [theta0.sin(), -theta0.cos()], [0.0, 0.0]);
+    let angle = |s: &State<[f64; 2]>| s.q[0].atan2(-s.q[1]);
+    let radius = |s: &State<[f64; 2]>| (s.q[0] * s.q[0] + s.q[1] * s.q[1]).sqrt();
+    fn run<I: Integrator>(start: State<[f64; 2]>, t_end: f64, n: usize) -> State<[f64; 2]> {
+        let mut s = start;
+        for _ in 0..n {
+            CartesianPendulum
+                .step::<I>(&mut s, t_end / n as f64)
+                .unwrap();
+            assert!(
+                ((s.q[0] * s.q[0] + s.q[1] * s.q[1]).sqrt() - 1.0).abs() < 1e-12,
+                "{s:?}"
+            );
+        }
+        s
+    }
+    // θ(K) = 0 exactly. Global errors: midpoint O(h²) ≈ 0.1·(K/400)² ≈ 3e-6, Gauss O(h⁴) ≲ 1e-9.
+    let s = run::<ImplicitMidpoint>(start, quarter, 400);
+    assert!(angle(&s).abs() < 1e-4, "midpoint θ(K) = {}", angle(&s));
+    let s = run::<GaussLegendre2>(start, quarter, 400);
+    assert!(angle(&s).abs() < 1e-7, "Gauss θ(K) = {}", angle(&s));
+    // Dopri5 with an event at θ = 0 locates the quarter period.
+    let g = |s: &State<[f64; 2]>| s.q[0];
+    let mut events = [Event::new(&g).direction(Direction::Falling).terminal()];
+    let mut s = start;
+    let tol = 1e-10;
+    Dopri5::new(tol, tol)
+        .integrate(&CartesianPendulum, &mut s, 10.0, &mut events, |_| {})
+        .unwrap();
+    assert!((radius(&s) - 1.0).abs() < 1e-9, "{s:?}");
+    assert!((s.t - quarter).abs() < 1e-8, "{} vs {quarter}", s.t);
+    // The variational integrator and Störmer–Verlet refuse, leaving the state alone.
+    for err in [
+        CartesianPendulum
+            .step::<Variational>(&mut State { ..s }, 0.01)
+            .unwrap_err(),
+        CartesianPendulum
+            .step::<StormerVerlet>(&mut State { ..s }, 0.01)
+            .unwrap_err(),
+    ] {
+        assert!(matches!(err, Error::UnsuitableMethod { .. }), "{err}");
+        assert!(err.to_string().contains("constraints"), "{err}");
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -23,6 +23,11 @@
 //!   taken from the dense output. An event function with two roots inside one step shows no sign
 //!   change and is missed: bound `h_max` if that matters.
 //!
+//! - Constraints: the start state must satisfy the mechanism's constraints
+//!   ([`Mechanism::check_constraints`]); every accepted step is projected onto them
+//!   ([`Mechanism::project`], a no-op without constraints). The dense output interpolates the step
+//!   before projection, which moves the end point by about the local error.
+//!
 //! Integration is forward in time only.
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
@@ -542,6 +547,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
     pub fn new(mechanism: &'m M, settings: Dopri5, state: &State<M::Coords>) -> Result<Self> {
         settings.validate()?;
         let (q, v) = mechanism.check(state)?;
+        mechanism.check_constraints(state.t, &q, &v)?;
         let a = mechanism.accelerations_at(state.t, &q, &v)?;
         let mut s = Dopri5Stepper {
             mechanism,
@@ -670,7 +676,18 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                 Ok((q1, v1, a1, err, k)) => {
                     let fac11 = err.powf(expo1);
                     if err <= 1.0 {
-                        // Accepted.
+                        // Accepted. The dense output interpolates the step as computed; the state
+                        // is then projected onto the constraints (a no-op without any: then
+                        // nothing changes and nothing is re-evaluated). If the projection moved it,
+                        // the FSAL acceleration is re-evaluated at the projected state.
+                        let t_new = if last { t_limit } else { self.t + h };
+                        let (mut qp, mut vp, mut ap) = (q1, v1, a1);
+                        self.mechanism.project(t_new, &mut qp, &mut vp)?;
+                        if qp != q1 || vp != v1 {
+                            check_state(&M::Coords::NAMES, t_new, &qp, &vp)?;
+                            self.stats.evaluations += 1;
+                            ap = self.mechanism.accelerations_at(t_new, &qp, &vp)?;
+                        }
                         let fac = (fac11 / self.fac_old.powf(st.beta) / st.safety)
                             .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
                         let mut h_new = h / fac;
@@ -679,10 +696,10 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                         }
                         self.fac_old = err.max(1e-4);
                         self.dense = self.build_dense(h, &q1, &v1, &a1, &k);
-                        self.t = if last { t_limit } else { self.t + h };
-                        self.q = q1;
-                        self.v = v1;
-                        self.a = a1;
+                        self.t = t_new;
+                        self.q = qp;
+                        self.v = vp;
+                        self.a = ap;
                         self.h = h_new;
                         self.stats.accepted += 1;
                         return Ok(());

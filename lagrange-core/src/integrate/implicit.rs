@@ -22,6 +22,11 @@
 //! For a mass matrix that depends on q they remain symmetric but not symplectic: the
 //! [`Variational`](super::Variational) integrator is symplectic for any Lagrangian.
 //!
+//! **Constraints.** As every integrator, a step first checks that the state satisfies the
+//! mechanism's constraints ([`Mechanism::check_constraints`]) and ends by projecting onto them
+//! ([`Mechanism::project`]; a no-op without constraints). Projection is not symplectic: on a
+//! constrained mechanism these methods are projection methods (HLW §IV.4), symmetric only up to it.
+//!
 //! A Newton iteration that does not converge in [`MAX_NEWTON_ITERATIONS`] is
 //! [`Error::NewtonDiverged`]; the caller's state is unchanged on every error.
 
@@ -176,7 +181,9 @@ fn step_state<M: Mechanism<N>, const N: usize, const S: usize>(
 ) -> Result<ImplicitStepStats> {
     check_step(h)?;
     let (q, v) = mechanism.check(state)?;
-    let (q1, v1, stats) = collocation_step(mechanism, tableau, state.t, &q, &v, h)?;
+    mechanism.check_constraints(state.t, &q, &v)?;
+    let (mut q1, mut v1, stats) = collocation_step(mechanism, tableau, state.t, &q, &v, h)?;
+    mechanism.project(state.t + h, &mut q1, &mut v1)?;
     check_state(&M::Coords::NAMES, state.t + h, &q1, &v1)?;
     state.t += h;
     state.q = M::Coords::from_array(q1);

@@ -78,3 +78,41 @@ impl Convergence {
         done
     }
 }
+
+/// Refuses a mechanism whose accelerations are not those of its Lagrangian and generalized forces
+/// alone — one with constraints, whose `accelerations_at` adds constraint forces (KKT system) —
+/// for methods built on the Lagrangian itself (the variational integrator) or on the unconstrained
+/// mass matrix (Störmer–Verlet). The test compares `accelerations` (from
+/// [`Mechanism::accelerations_at`]) with the solve of M q̈ = 𝓕 − b from
+/// [`Mechanism::equations_of_motion_at`] at the same state: identical for an unconstrained mechanism
+/// (up to 1e-10 relative, for hand-optimized `accelerations_at`), different wherever a constraint
+/// force acts.
+pub fn refuse_constrained<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    method: &'static str,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    accelerations: &[f64; N],
+) -> Result<()> {
+    let eom = mechanism.equations_of_motion_at(t, q, v);
+    let free = crate::dynamics::solve_accelerations::<M::Coords, f64, N>(&eom, t, q)?;
+    let scale = accelerations
+        .iter()
+        .chain(&free)
+        .fold(1.0f64, |m, a| m.max(a.abs()));
+    let differs = accelerations
+        .iter()
+        .zip(&free)
+        .any(|(a, b)| (a - b).is_nan() || (a - b).abs() > 1e-10 * scale);
+    if differs {
+        return Err(crate::error::Error::UnsuitableMethod {
+            method,
+            reason: "the mechanism has constraints (its accelerations include constraint forces that its \
+                     Lagrangian does not carry); use RK4, Dopri5, implicit midpoint or Gauss-Legendre, which \
+                     integrate the constrained accelerations and project"
+                .to_string(),
+        });
+    }
+    Ok(())
+}

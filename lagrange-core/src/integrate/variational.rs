@@ -31,8 +31,17 @@
 //! transform at t₁ is inverted exactly (to round-off), the next step's p₀ is this step's p₁ and
 //! the sequence of (q, p) is that of the discrete flow: the step map is symplectic in (q, p) for any
 //! Lagrangian, second order, symmetric. [`Variational::step_momenta`] works on (q, p) directly.
+//!
+//! **Constraints.** The discrete Lagrangian here is that of the coordinates alone: a mechanism with
+//! constraints (whose accelerations carry constraint forces) is refused with
+//! [`Error::UnsuitableMethod`] (the test is one extra evaluation per step, see
+//! [`refuse_constrained`]); a constrained variational integrator
+//! (M&W §3.5, multipliers enforcing g(q₁) = 0) is not implemented. The validated step still calls
+//! [`Mechanism::check_constraints`] and [`Mechanism::project`] like every integrator (no-ops here).
 
-use super::newton::{jacobian_rows, max_norm, Convergence, MAX_NEWTON_ITERATIONS};
+use super::newton::{
+    jacobian_rows, max_norm, refuse_constrained, Convergence, MAX_NEWTON_ITERATIONS,
+};
 use super::Integrator;
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
@@ -185,6 +194,7 @@ impl Variational {
         let p0 = mechanism.momenta_at(t, q, v);
         // Predictor v_m = v₀ + (h/2) q̈(t₀, q₀, v₀), O(h²) from the solution.
         let a0 = mechanism.accelerations_at(t, q, v)?;
+        refuse_constrained(mechanism, Self::NAME, t, q, v, &a0)?;
         let guess: [f64; N] = std::array::from_fn(|j| v[j] + 0.5 * h * a0[j]);
         let (q1, p1, vm, iterations) = Self::step_momenta(mechanism, t, q, &p0, &guess, h)?;
         // v₁ ≈ 2 v_m − v₀ to first order: the Newton start for the inverse Legendre transform.
@@ -209,7 +219,9 @@ impl Variational {
     ) -> Result<VariationalStepStats> {
         check_step(h)?;
         let (q, v) = mechanism.check(state)?;
-        let (q1, v1, stats) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        mechanism.check_constraints(state.t, &q, &v)?;
+        let (mut q1, mut v1, stats) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        mechanism.project(state.t + h, &mut q1, &mut v1)?;
         check_state(&M::Coords::NAMES, state.t + h, &q1, &v1)?;
         state.t += h;
         state.q = M::Coords::from_array(q1);

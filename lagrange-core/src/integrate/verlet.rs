@@ -6,7 +6,8 @@
 //! v_{1/2} = v₀ + (h/2) q̈(t₀, q₀, v₀),   q₁ = q₀ + h v_{1/2},   v₁ = v_{1/2} + (h/2) q̈(t₁, q₁, v_{1/2}).
 //! ```
 //!
-//! Explicit, order 2, symplectic and symmetric for q̈ = −M⁻¹∇V(q) with a **constant** mass matrix M
+//! Explicit, order 2 (three evaluations of the dynamics per step: two with the mass matrix, one for
+//! the constraint test below), symplectic and symmetric for q̈ = −M⁻¹∇V(q) with a **constant** mass matrix M
 //! (then (q, Mv) are canonical and the method is the composition of two symplectic Euler steps).
 //! With forces that depend on the velocity the last evaluation uses v_{1/2} in place of the unknown
 //! v₁ (which keeps the method explicit, but it is then neither symmetric nor symplectic — use
@@ -22,10 +23,17 @@
 //! that moves; one whose M is constant up to round-off (a pendulum in its angle, Cartesian
 //! particles) is accepted. A step that does not move (v = q̈ = 0) cannot see the difference and
 //! is allowed, harmlessly: it is exact for any M.
+//!
+//! **Constraints.** The step works on M q̈ = 𝓕 − b alone, so a mechanism with constraints is refused
+//! too ([`Error::UnsuitableMethod`]), by comparing its accelerations with that solve at the start of
+//! every step (one extra evaluation; see
+//! [`refuse_constrained`]). A constrained Verlet (RATTLE) is not
+//! implemented.
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
+use super::newton::refuse_constrained;
 use super::Integrator;
 use crate::dynamics::solve_accelerations;
 use crate::error::{Error, Result};
@@ -52,6 +60,15 @@ impl StormerVerlet {
     ) -> Result<([f64; N], [f64; N])> {
         let eom0 = mechanism.equations_of_motion_at(t, q, v);
         let a0 = solve_accelerations::<M::Coords, f64, N>(&eom0, t, q)?;
+        // Constraint forces are not part of M q̈ = 𝓕 − b: refuse constrained mechanisms.
+        refuse_constrained(
+            mechanism,
+            Self::NAME,
+            t,
+            q,
+            v,
+            &mechanism.accelerations_at(t, q, v)?,
+        )?;
         let vh: [f64; N] = std::array::from_fn(|i| v[i] + 0.5 * h * a0[i]);
         let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * vh[i]);
         let t1 = t + h;
@@ -88,7 +105,9 @@ impl Integrator for StormerVerlet {
     ) -> Result<()> {
         check_step(h)?;
         let (q, v) = mechanism.check(state)?;
-        let (q1, v1) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        mechanism.check_constraints(state.t, &q, &v)?;
+        let (mut q1, mut v1) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
+        mechanism.project(state.t + h, &mut q1, &mut v1)?;
         check_state(&M::Coords::NAMES, state.t + h, &q1, &v1)?;
         state.t += h;
         state.q = M::Coords::from_array(q1);
