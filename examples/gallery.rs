@@ -9,6 +9,8 @@
 mod atwood;
 #[path = "breathing_ellipse.rs"]
 mod breathing_ellipse;
+#[path = "cartesian_pendulum.rs"]
+mod cartesian_pendulum;
 #[path = "double_pendulum.rs"]
 mod double_pendulum;
 #[path = "hoop_bifurcation.rs"]
@@ -41,6 +43,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     atwood::run,
     hoop_bifurcation::run,
     small_oscillations::run,
+    cartesian_pendulum::run,
 ];
 
 fn main() {

@@ -7,6 +7,9 @@ mod atwood;
 #[path = "../examples/breathing_ellipse.rs"]
 #[allow(dead_code)]
 mod breathing_ellipse;
+#[path = "../examples/cartesian_pendulum.rs"]
+#[allow(dead_code)]
+mod cartesian_pendulum;
 #[path = "../examples/double_pendulum.rs"]
 #[allow(dead_code)]
 mod double_pendulum;
@@ -91,4 +94,9 @@ fn hoop_bifurcation_statics() {
 #[test]
 fn double_pendulum_normal_modes() {
     assert_scene(small_oscillations::run);
+}
+
+#[test]
+fn cartesian_pendulum_with_a_rod_constraint() {
+    assert_scene(cartesian_pendulum::run);
 }
