@@ -23,6 +23,8 @@ mod ramp;
 mod rigid_triangle;
 #[path = "small_oscillations.rs"]
 mod small_oscillations;
+#[path = "sphere_release.rs"]
+mod sphere_release;
 #[path = "spinning_hoop.rs"]
 mod spinning_hoop;
 #[path = "wedge_block.rs"]
@@ -43,6 +45,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     atwood::run,
     hoop_bifurcation::run,
     small_oscillations::run,
+    sphere_release::run,
     cartesian_pendulum::run,
 ];
 

@@ -28,6 +28,9 @@ mod rigid_triangle;
 #[path = "../examples/small_oscillations.rs"]
 #[allow(dead_code)]
 mod small_oscillations;
+#[path = "../examples/sphere_release.rs"]
+#[allow(dead_code)]
+mod sphere_release;
 #[path = "../examples/spinning_hoop.rs"]
 #[allow(dead_code)]
 mod spinning_hoop;
@@ -94,6 +97,11 @@ fn hoop_bifurcation_statics() {
 #[test]
 fn double_pendulum_normal_modes() {
     assert_scene(small_oscillations::run);
+}
+
+#[test]
+fn particle_leaves_a_sphere() {
+    assert_scene(sphere_release::run);
 }
 
 #[test]
