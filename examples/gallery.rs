@@ -21,6 +21,8 @@ mod pendulum;
 mod ramp;
 #[path = "rigid_triangle.rs"]
 mod rigid_triangle;
+#[path = "rolling_wheel.rs"]
+mod rolling_wheel;
 #[path = "small_oscillations.rs"]
 mod small_oscillations;
 #[path = "sphere_release.rs"]
@@ -46,6 +48,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     hoop_bifurcation::run,
     small_oscillations::run,
     sphere_release::run,
+    rolling_wheel::run,
     cartesian_pendulum::run,
 ];
 

@@ -25,6 +25,9 @@ mod ramp;
 #[path = "../examples/rigid_triangle.rs"]
 #[allow(dead_code)]
 mod rigid_triangle;
+#[path = "../examples/rolling_wheel.rs"]
+#[allow(dead_code)]
+mod rolling_wheel;
 #[path = "../examples/small_oscillations.rs"]
 #[allow(dead_code)]
 mod small_oscillations;
@@ -102,6 +105,11 @@ fn double_pendulum_normal_modes() {
 #[test]
 fn particle_leaves_a_sphere() {
     assert_scene(sphere_release::run);
+}
+
+#[test]
+fn wheel_rolls_without_slipping() {
+    assert_scene(rolling_wheel::run);
 }
 
 #[test]
