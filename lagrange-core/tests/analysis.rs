@@ -5,7 +5,7 @@ use lagrange_core::analysis::{
     continuation, equilibrium, linearize, normal_modes, stability, unbalanced_forces,
     EquilibriumOptions, Stability, StabilityMethod,
 };
-use lagrange_core::dynamics::{self, EquationsOfMotion};
+use lagrange_core::impl_mechanism;
 use lagrange_core::{Error, Mechanism, Model, Rk4, Scalar, State};
 use nalgebra::SMatrix;
 use std::f64::consts::PI;
@@ -17,38 +17,6 @@ fn finite(parameters: &[(&'static str, f64)]) -> lagrange_core::Result<()> {
         }
     }
     Ok(())
-}
-
-/// The `Mechanism` glue `#[mechanism]` generates: every method forwards to `dynamics`.
-macro_rules! forward_mechanism {
-    ($ty:ty, $n:literal) => {
-        impl Mechanism<$n> for $ty {
-            type Coords = [f64; $n];
-            fn validate(&self) -> lagrange_core::Result<()> {
-                Model::validate(self)
-            }
-            fn equations_of_motion_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> EquationsOfMotion<S, $n> {
-                dynamics::equations_of_motion(self, t, q, v)
-            }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
-                dynamics::kinetic_energy(self, t, q, v)
-            }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
-                dynamics::potential_energy(self, t, q)
-            }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
-                dynamics::momenta(self, t, q, v)
-            }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
-                dynamics::lagrangian_time_derivative(self, t, q, v)
-            }
-        }
-    };
 }
 
 fn close(got: f64, want: f64, rel: f64) -> bool {
@@ -113,7 +81,7 @@ impl Model<2, 4> for WedgeBlock {
         cartesian_force[0] = S::from(self.force);
     }
 }
-forward_mechanism!(WedgeBlock, 2);
+impl_mechanism!(WedgeBlock, 2, 4);
 
 /// The block alone, described in the frame of a wedge that moves with constant acceleration A:
 /// X(t) = ½At² is prescribed (rheonomic), d is the only coordinate. At rest relative to the wedge
@@ -154,7 +122,7 @@ impl Model<1, 2> for BlockInAcceleratingWedge {
         x[1] * (self.m * self.g)
     }
 }
-forward_mechanism!(BlockInAcceleratingWedge, 1);
+impl_mechanism!(BlockInAcceleratingWedge, 1, 2);
 
 #[test]
 fn wedge_force_that_holds_the_block_by_virtual_work() {
@@ -265,7 +233,7 @@ impl Model<1, 3> for Hoop {
         x[2] * (self.m * self.g)
     }
 }
-forward_mechanism!(Hoop, 1);
+impl_mechanism!(Hoop, 1, 3);
 
 const M_BEAD: f64 = 0.2;
 const R_HOOP: f64 = 0.5;
@@ -463,7 +431,7 @@ impl Model<2, 4> for DoublePendulum {
         (x[1] + x[3]) * (self.m * self.g)
     }
 }
-forward_mechanism!(DoublePendulum, 2);
+impl_mechanism!(DoublePendulum, 2, 4);
 
 const DP: DoublePendulum = DoublePendulum {
     m: 0.7,
@@ -630,7 +598,7 @@ impl Model<CHAIN, CHAIN> for Chain {
         v
     }
 }
-forward_mechanism!(Chain, 10);
+impl_mechanism!(Chain, CHAIN, CHAIN);
 
 #[test]
 fn spring_chain_normal_modes() {
@@ -727,7 +695,7 @@ impl Model<2, 2> for Circulatory {
         generalized_force[1] = -q[0] * self.c - v[1] * self.d - v[0] * self.gyro;
     }
 }
-forward_mechanism!(Circulatory, 2);
+impl_mechanism!(Circulatory, 2, 2);
 
 #[test]
 fn circulatory_forces_are_classified_by_the_linearized_system() {
@@ -863,7 +831,7 @@ impl Model<1, 2> for TorquedPendulum {
         generalized_force[0] = S::from(self.torque);
     }
 }
-forward_mechanism!(TorquedPendulum, 1);
+impl_mechanism!(TorquedPendulum, 1, 2);
 
 #[test]
 fn torqued_pendulum_equilibrium_and_no_equilibrium() {

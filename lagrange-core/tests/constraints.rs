@@ -15,65 +15,8 @@ use lagrange_core::constraints::{
     ContactRk4, Coulomb, RowMode, CONSISTENCY_TOLERANCE,
 };
 use lagrange_core::dynamics::{self, EquationsOfMotion};
+use lagrange_core::impl_mechanism;
 use lagrange_core::{vec2, Error, Mechanism, Model, Rk4, Scalar, State};
-
-/// The `Mechanism` glue a constrained declaration generates: as for an unconstrained one, plus the
-/// three overrides that make every integrator enforce the constraints.
-macro_rules! constrained_mechanism {
-    ($ty:ty, $n:literal) => {
-        impl Mechanism<$n> for $ty {
-            type Coords = [f64; $n];
-            fn validate(&self) -> lagrange_core::Result<()> {
-                Model::validate(self)
-            }
-            fn equations_of_motion_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> EquationsOfMotion<S, $n> {
-                dynamics::equations_of_motion(self, t, q, v)
-            }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
-                dynamics::kinetic_energy(self, t, q, v)
-            }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
-                dynamics::potential_energy(self, t, q)
-            }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
-                dynamics::momenta(self, t, q, v)
-            }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
-                dynamics::lagrangian_time_derivative(self, t, q, v)
-            }
-            fn accelerations_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> lagrange_core::Result<[S; $n]> {
-                constraints::accelerations(self, t, q, v)
-            }
-            fn project(
-                &self,
-                t: f64,
-                q: &mut [f64; $n],
-                v: &mut [f64; $n],
-            ) -> lagrange_core::Result<()> {
-                let mode = constraints::infer_mode(self, t, q, v)?;
-                constraints::project(self, t, q, v, &mode)
-            }
-            fn check_constraints(
-                &self,
-                t: f64,
-                q: &[f64; $n],
-                v: &[f64; $n],
-            ) -> lagrange_core::Result<()> {
-                constraints::check_consistent(self, t, q, v, CONSISTENCY_TOLERANCE)
-            }
-        }
-    };
-}
 
 /// Steps of the long runs (scenes 2–4): the 10⁵ in optimized builds
 /// (`cargo test --release`, ~1 s each); 10⁴ in debug builds, where 10⁵ would take minutes. The
@@ -131,7 +74,7 @@ impl Constraints<2, 2, 1> for CartesianPendulum {
         [vec2(x[0], x[1]).norm() - self.l]
     }
 }
-constrained_mechanism!(CartesianPendulum, 2);
+impl_mechanism!(CartesianPendulum, 2, 2, constraints);
 
 /// RK4 on θ̈ = −(g/L) sin θ: the angle form of the same pendulum.
 fn angle_pendulum_step(p: &CartesianPendulum, th: f64, w: f64, h: f64) -> (f64, f64) {
@@ -428,7 +371,7 @@ impl Constraints<4, 4, 2> for RollingWheel {
         ]
     }
 }
-constrained_mechanism!(RollingWheel, 4);
+impl_mechanism!(RollingWheel, 4, 4, constraints);
 
 /// Free rolling: with the constraint forces λ₁, λ₂ on x, y, the equations are m ẍ = λ₁, m ÿ = λ₂,
 /// I_d φ̈ = 0, I_a θ̈ = −R(λ₁ cos φ + λ₂ sin φ); differentiating the constraints gives
@@ -568,7 +511,7 @@ impl Constraints<3, 9, 2> for FourBar {
         [coupler_end.x - rocker_tip.x, coupler_end.y - rocker_tip.y]
     }
 }
-constrained_mechanism!(FourBar, 3);
+impl_mechanism!(FourBar, 3, 9, constraints);
 
 #[test]
 fn four_bar_linkage_keeps_energy_and_closure() {
@@ -654,7 +597,7 @@ impl Constraints<2, 2, 1> for SphereParticle {
         [vec2(x[0], x[1]).norm() - self.r]
     }
 }
-constrained_mechanism!(SphereParticle, 2);
+impl_mechanism!(SphereParticle, 2, 2, constraints);
 
 /// ∫ₐᵇ f by composite 5-point Gauss–Legendre (Abramowitz & Stegun, Table 25.4), exact for
 /// polynomials of degree 9 per panel: for an analytic integrand the error with 400 panels is far
@@ -1240,7 +1183,7 @@ impl Constraints<2, 2, 1> for ShakenRail {
         [x[1] - (t * self.omega).sin() * self.amplitude]
     }
 }
-constrained_mechanism!(ShakenRail, 2);
+impl_mechanism!(ShakenRail, 2, 2, constraints);
 
 #[test]
 fn rheonomic_guide_gives_time_dependent_force() {

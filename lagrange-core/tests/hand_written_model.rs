@@ -1,7 +1,6 @@
 //! A [`Model`] written by hand (what `#[mechanism]` generates for a double pendulum), checked against
 //! the closed-form equations of motion. This pins the runtime down independently of the macro.
 
-use lagrange_core::dynamics::{self, EquationsOfMotion};
 use lagrange_core::{vec2, Error, Mechanism, Model, Rk4, Scalar, State};
 
 struct DoublePendulum {
@@ -46,32 +45,7 @@ impl Model<2, 4> for DoublePendulum {
     }
 }
 
-impl Mechanism<2> for DoublePendulum {
-    type Coords = [f64; 2];
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Model::validate(self)
-    }
-    fn equations_of_motion_at<S: Scalar>(
-        &self,
-        t: S,
-        q: &[S; 2],
-        v: &[S; 2],
-    ) -> EquationsOfMotion<S, 2> {
-        dynamics::equations_of_motion(self, t, q, v)
-    }
-    fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
-        dynamics::kinetic_energy(self, t, q, v)
-    }
-    fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; 2]) -> S {
-        dynamics::potential_energy(self, t, q)
-    }
-    fn momenta_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
-        dynamics::momenta(self, t, q, v)
-    }
-    fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
-        dynamics::lagrangian_time_derivative(self, t, q, v)
-    }
-}
+lagrange_core::impl_mechanism!(DoublePendulum, 2, 4);
 
 /// Closed form (e.g. Goldstein §1.4 style derivation; as written in myphysicslab's double pendulum).
 fn closed_form(p: &DoublePendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2] {

@@ -1,10 +1,9 @@
 //! Two small hand-written mechanisms for the examples in this module's documentation (what
 //! `#[mechanism]` would generate for them). Not part of the public API.
 
-use crate::dynamics::{self, EquationsOfMotion};
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
-use crate::mechanism::Mechanism;
+use crate::impl_mechanism;
 use crate::model::Model;
 
 fn finite(parameters: &[(&'static str, f64)]) -> Result<()> {
@@ -14,37 +13,6 @@ fn finite(parameters: &[(&'static str, f64)]) -> Result<()> {
         }
     }
     Ok(())
-}
-
-macro_rules! forward_mechanism {
-    ($ty:ty, $n:literal) => {
-        impl Mechanism<$n> for $ty {
-            type Coords = [f64; $n];
-            fn validate(&self) -> Result<()> {
-                Model::validate(self)
-            }
-            fn equations_of_motion_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> EquationsOfMotion<S, $n> {
-                dynamics::equations_of_motion(self, t, q, v)
-            }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
-                dynamics::kinetic_energy(self, t, q, v)
-            }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
-                dynamics::potential_energy(self, t, q)
-            }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
-                dynamics::momenta(self, t, q, v)
-            }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
-                dynamics::lagrangian_time_derivative(self, t, q, v)
-            }
-        }
-    };
 }
 
 /// A plane pendulum: bob of mass `m` on a massless rod of length `l`, angle θ from the downward
@@ -74,7 +42,7 @@ impl Model<1, 2> for Pendulum {
         x[1] * (self.m * self.g)
     }
 }
-forward_mechanism!(Pendulum, 1);
+impl_mechanism!(Pendulum, 1, 2);
 
 /// A bead of mass `m` on a hoop of radius `r` spun about its vertical diameter at the constant rate
 /// `omega`; θ is measured from the bottom. Rheonomic: x = R sin θ cos ωt, y = R sin θ sin ωt,
@@ -112,4 +80,4 @@ impl Model<1, 3> for SpinningHoop {
         x[2] * (self.m * self.g)
     }
 }
-forward_mechanism!(SpinningHoop, 1);
+impl_mechanism!(SpinningHoop, 1, 3);
