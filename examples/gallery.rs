@@ -13,6 +13,8 @@ mod breathing_ellipse;
 mod cartesian_pendulum;
 #[path = "double_pendulum.rs"]
 mod double_pendulum;
+#[path = "four_bar.rs"]
+mod four_bar;
 #[path = "hoop_bifurcation.rs"]
 mod hoop_bifurcation;
 #[path = "pendulum.rs"]
@@ -49,6 +51,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     small_oscillations::run,
     sphere_release::run,
     rolling_wheel::run,
+    four_bar::run,
     cartesian_pendulum::run,
 ];
 

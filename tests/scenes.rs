@@ -13,6 +13,9 @@ mod cartesian_pendulum;
 #[path = "../examples/double_pendulum.rs"]
 #[allow(dead_code)]
 mod double_pendulum;
+#[path = "../examples/four_bar.rs"]
+#[allow(dead_code)]
+mod four_bar;
 #[path = "../examples/hoop_bifurcation.rs"]
 #[allow(dead_code)]
 mod hoop_bifurcation;
@@ -110,6 +113,11 @@ fn particle_leaves_a_sphere() {
 #[test]
 fn wheel_rolls_without_slipping() {
     assert_scene(rolling_wheel::run);
+}
+
+#[test]
+fn four_bar_linkage_closed_loop() {
+    assert_scene(four_bar::run);
 }
 
 #[test]
