@@ -5,7 +5,7 @@
 //! - [`dynamics`]: M q̈ = 𝓕 − b by dual-number automatic differentiation;
 //! - [`linalg`]: small dense solves generic over dual numbers;
 //! - [`mechanism`]: the user-facing [`Mechanism`](mechanism::Mechanism) trait;
-//! - [`integrate`]: integrators;
+//! - [`integrate`]: the integrators, generic over every mechanism;
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`error`]: typed errors; nothing here panics on user input.
 //!

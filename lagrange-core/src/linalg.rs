@@ -7,6 +7,9 @@
 //! usually are. A pivot that is not clearly positive relative to the largest diagonal entry means
 //! the coordinates are locally dependent: that is reported, never turned into NaN.
 
+// `!(pivot > tol)` rather than `pivot <= tol` throughout: the negated form also rejects NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::geometry::Scalar;
 use nalgebra::{SMatrix, SVector};
 
