@@ -25,6 +25,8 @@ mod ramp;
 mod rigid_triangle;
 #[path = "rolling_wheel.rs"]
 mod rolling_wheel;
+#[path = "rough_ramp.rs"]
+mod rough_ramp;
 #[path = "small_oscillations.rs"]
 mod small_oscillations;
 #[path = "sphere_release.rs"]
@@ -53,6 +55,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     rolling_wheel::run,
     four_bar::run,
     cartesian_pendulum::run,
+    rough_ramp::run,
 ];
 
 fn main() {

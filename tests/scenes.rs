@@ -31,6 +31,9 @@ mod rigid_triangle;
 #[path = "../examples/rolling_wheel.rs"]
 #[allow(dead_code)]
 mod rolling_wheel;
+#[path = "../examples/rough_ramp.rs"]
+#[allow(dead_code)]
+mod rough_ramp;
 #[path = "../examples/small_oscillations.rs"]
 #[allow(dead_code)]
 mod small_oscillations;
@@ -123,4 +126,9 @@ fn four_bar_linkage_closed_loop() {
 #[test]
 fn cartesian_pendulum_with_a_rod_constraint() {
     assert_scene(cartesian_pendulum::run);
+}
+
+#[test]
+fn block_on_a_rough_ramp_sticks_or_slides_back() {
+    assert_scene(rough_ramp::run);
 }
