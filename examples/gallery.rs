@@ -27,6 +27,8 @@ mod rigid_triangle;
 mod rolling_wheel;
 #[path = "rough_ramp.rs"]
 mod rough_ramp;
+#[path = "rough_wedge.rs"]
+mod rough_wedge;
 #[path = "small_oscillations.rs"]
 mod small_oscillations;
 #[path = "sphere_release.rs"]
@@ -56,6 +58,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     four_bar::run,
     cartesian_pendulum::run,
     rough_ramp::run,
+    rough_wedge::run,
 ];
 
 fn main() {

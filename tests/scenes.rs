@@ -34,6 +34,9 @@ mod rolling_wheel;
 #[path = "../examples/rough_ramp.rs"]
 #[allow(dead_code)]
 mod rough_ramp;
+#[path = "../examples/rough_wedge.rs"]
+#[allow(dead_code)]
+mod rough_wedge;
 #[path = "../examples/small_oscillations.rs"]
 #[allow(dead_code)]
 mod small_oscillations;
@@ -131,4 +134,9 @@ fn cartesian_pendulum_with_a_rod_constraint() {
 #[test]
 fn block_on_a_rough_ramp_sticks_or_slides_back() {
     assert_scene(rough_ramp::run);
+}
+
+#[test]
+fn wedge_and_block_with_friction() {
+    assert_scene(rough_wedge::run);
 }
