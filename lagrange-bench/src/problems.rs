@@ -1,40 +1,8 @@
 //! The report's problems as hand-written [`Model`]s (what `#[mechanism]` generates), their
 //! hand-written right-hand sides for the peer solvers, and their exact or reference solutions.
 
-use lagrange_core::dynamics::{self, EquationsOfMotion};
 use lagrange_core::{vec2, Mechanism, Model, Scalar, State};
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
-
-macro_rules! mechanism_from_model {
-    ($ty:ty, $n:literal) => {
-        impl Mechanism<$n> for $ty {
-            type Coords = [f64; $n];
-            fn validate(&self) -> lagrange_core::Result<()> {
-                Ok(())
-            }
-            fn equations_of_motion_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> EquationsOfMotion<S, $n> {
-                dynamics::equations_of_motion(self, t, q, v)
-            }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
-                dynamics::kinetic_energy(self, t, q, v)
-            }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
-                dynamics::potential_energy(self, t, q)
-            }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
-                dynamics::momenta(self, t, q, v)
-            }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
-                dynamics::lagrangian_time_derivative(self, t, q, v)
-            }
-        }
-    };
-}
 
 // ---------------------------------------------------------------------------------------------
 // Jacobi elliptic functions.
@@ -95,7 +63,7 @@ impl Model<1, 2> for Pendulum {
         x[1]
     }
 }
-mechanism_from_model!(Pendulum, 1);
+lagrange_core::impl_mechanism!(Pendulum, 1, 2);
 
 /// Modulus of the pendulum problem.
 pub const PENDULUM_K: f64 = 0.999;
@@ -134,7 +102,7 @@ impl Model<2, 2> for Kepler {
         -(x[0] * x[0] + x[1] * x[1]).sqrt().recip()
     }
 }
-mechanism_from_model!(Kepler, 2);
+lagrange_core::impl_mechanism!(Kepler, 2, 2);
 
 pub const KEPLER_E: f64 = 0.6;
 
@@ -193,7 +161,7 @@ impl Model<2, 4> for DoublePendulum {
         x[1] + x[3]
     }
 }
-mechanism_from_model!(DoublePendulum, 2);
+lagrange_core::impl_mechanism!(DoublePendulum, 2, 4);
 
 /// Closed form of the double pendulum with m₁ = m₂ = l₁ = l₂ = g = 1 (the standard derivation, as
 /// in `lagrange-core/tests/hand_written_model.rs`).
@@ -247,7 +215,7 @@ impl Model<6, 6> for Fpu {
         v
     }
 }
-mechanism_from_model!(Fpu, 6);
+lagrange_core::impl_mechanism!(Fpu, 6, 6);
 
 /// HLW's initial values x₀,₁ = 1, ẋ₀,₁ = 1, x₁,₁ = ω⁻¹, ẋ₁,₁ = 1 (centre and elongation of the first
 /// stiff spring, x₀ = (q₂ + q₁)/√2, x₁ = (q₂ − q₁)/√2 in their 1-based numbering), all else zero.
@@ -319,7 +287,7 @@ impl Model<2, 4> for WedgeBlock {
         x[3] * (BLOCK_MASS * WEDGE_G)
     }
 }
-mechanism_from_model!(WedgeBlock, 2);
+lagrange_core::impl_mechanism!(WedgeBlock, 2, 4);
 
 /// The constant accelerations (ẍ, d̈): [[M + m, m cos α], [m cos α, m]] q̈ = (0, m g sin α).
 pub fn wedge_accelerations() -> [f64; 2] {

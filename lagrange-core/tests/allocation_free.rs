@@ -1,7 +1,6 @@
 //! Every integrator step is allocation-free: a counting global allocator records the allocations
 //! made by this thread while stepping, and there must be none.
 
-use lagrange_core::dynamics::{self, EquationsOfMotion};
 use lagrange_core::integrate::{Direction, Dopri5Stepper, Event, Observation};
 use lagrange_core::{
     vec2, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Model, Rk4, Scalar,
@@ -51,37 +50,6 @@ fn allocations(f: impl FnOnce()) -> usize {
     ALLOCATIONS.with(|n| n.get())
 }
 
-macro_rules! mechanism_from_model {
-    ($ty:ty, $n:literal) => {
-        impl Mechanism<$n> for $ty {
-            type Coords = [f64; $n];
-            fn validate(&self) -> lagrange_core::Result<()> {
-                Ok(())
-            }
-            fn equations_of_motion_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> EquationsOfMotion<S, $n> {
-                dynamics::equations_of_motion(self, t, q, v)
-            }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
-                dynamics::kinetic_energy(self, t, q, v)
-            }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
-                dynamics::potential_energy(self, t, q)
-            }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
-                dynamics::momenta(self, t, q, v)
-            }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
-                dynamics::lagrangian_time_derivative(self, t, q, v)
-            }
-        }
-    };
-}
-
 /// Kepler problem, V = −1/r (constant mass matrix: every method applies).
 struct Kepler;
 
@@ -103,7 +71,7 @@ impl Model<2, 2> for Kepler {
         -(x[0] * x[0] + x[1] * x[1]).sqrt().recip()
     }
 }
-mechanism_from_model!(Kepler, 2);
+lagrange_core::impl_mechanism!(Kepler, 2, 2);
 
 /// Double pendulum with joint damping (a q-dependent mass matrix and a non-conservative force).
 struct DampedDoublePendulum;
@@ -141,7 +109,7 @@ impl Model<2, 4> for DampedDoublePendulum {
         generalized_force[1] -= v[1] * 0.1;
     }
 }
-mechanism_from_model!(DampedDoublePendulum, 2);
+lagrange_core::impl_mechanism!(DampedDoublePendulum, 2, 4);
 
 fn steps_without_allocating<I: Integrator, M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
     m: &M,

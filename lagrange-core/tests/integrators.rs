@@ -3,7 +3,6 @@
 //! alone. Models are written by hand at the end of this file.
 
 use lagrange_core::constraints;
-use lagrange_core::dynamics::{self, EquationsOfMotion};
 use lagrange_core::integrate::{Direction, Dopri5Stepper, Event, Observation, StopReason};
 use lagrange_core::{vec2, Model, Scalar};
 use lagrange_core::{
@@ -685,47 +684,7 @@ impl constraints::Constraints<2, 2, 1> for CartesianPendulum {
     }
 }
 
-impl Mechanism<2> for CartesianPendulum {
-    type Coords = [f64; 2];
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Ok(())
-    }
-    fn equations_of_motion_at<S: Scalar>(
-        &self,
-        t: S,
-        q: &[S; 2],
-        v: &[S; 2],
-    ) -> EquationsOfMotion<S, 2> {
-        dynamics::equations_of_motion(self, t, q, v)
-    }
-    fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
-        dynamics::kinetic_energy(self, t, q, v)
-    }
-    fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; 2]) -> S {
-        dynamics::potential_energy(self, t, q)
-    }
-    fn momenta_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
-        dynamics::momenta(self, t, q, v)
-    }
-    fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
-        dynamics::lagrangian_time_derivative(self, t, q, v)
-    }
-    fn accelerations_at<S: Scalar>(
-        &self,
-        t: S,
-        q: &[S; 2],
-        v: &[S; 2],
-    ) -> lagrange_core::Result<[S; 2]> {
-        constraints::accelerations(self, t, q, v)
-    }
-    fn project(&self, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
-        let mode = constraints::infer_mode(self, t, q, v)?;
-        constraints::project(self, t, q, v, &mode)
-    }
-    fn check_constraints(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> lagrange_core::Result<()> {
-        constraints::check_consistent(self, t, q, v, constraints::CONSISTENCY_TOLERANCE)
-    }
-}
+lagrange_core::impl_mechanism!(CartesianPendulum, 2, 2, constraints);
 
 #[test]
 fn constrained_pendulum_with_implicit_methods_and_dopri5() {
@@ -783,39 +742,6 @@ fn constrained_pendulum_with_implicit_methods_and_dopri5() {
 // ---------------------------------------------------------------------------------------------
 // Hand-written models (the pattern of `hand_written_model.rs`: what `#[mechanism]` generates).
 
-/// Implements `Mechanism<N>` for a `Model<N, K>` by forwarding to `lagrange_core::dynamics`, as the
-/// generated glue does.
-macro_rules! mechanism_from_model {
-    ($ty:ty, $n:literal) => {
-        impl Mechanism<$n> for $ty {
-            type Coords = [f64; $n];
-            fn validate(&self) -> lagrange_core::Result<()> {
-                Ok(())
-            }
-            fn equations_of_motion_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> EquationsOfMotion<S, $n> {
-                dynamics::equations_of_motion(self, t, q, v)
-            }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
-                dynamics::kinetic_energy(self, t, q, v)
-            }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
-                dynamics::potential_energy(self, t, q)
-            }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
-                dynamics::momenta(self, t, q, v)
-            }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
-                dynamics::lagrangian_time_derivative(self, t, q, v)
-            }
-        }
-    };
-}
-
 /// Harmonic oscillator q̈ = −q (unit mass, K = 1); with `damping` c > 0 a generalized force −c q̇
 /// (non-conservative), q̈ = −q − c q̇.
 pub struct Oscillator {
@@ -852,7 +778,7 @@ impl Model<1, 1> for Oscillator {
         generalized_force[0] -= v[0] * self.damping;
     }
 }
-mechanism_from_model!(Oscillator, 1);
+lagrange_core::impl_mechanism!(Oscillator, 1, 1);
 
 /// Mathematical pendulum, unit mass and length, g = 1: q̈ = −sin q. Its mass matrix is
 /// sin² + cos² = 1, constant up to round-off.
@@ -877,7 +803,7 @@ impl Model<1, 2> for Pendulum {
         x[1]
     }
 }
-mechanism_from_model!(Pendulum, 1);
+lagrange_core::impl_mechanism!(Pendulum, 1, 2);
 
 /// Kepler problem in Cartesian coordinates, GM = 1, unit mass: V = −1/r.
 pub struct Kepler;
@@ -900,7 +826,7 @@ impl Model<2, 2> for Kepler {
         -(x[0] * x[0] + x[1] * x[1]).sqrt().recip()
     }
 }
-mechanism_from_model!(Kepler, 2);
+lagrange_core::impl_mechanism!(Kepler, 2, 2);
 
 /// Double pendulum, unit masses and lengths, g = 1: a mass matrix that depends on q.
 pub struct DoublePendulum;
@@ -925,7 +851,7 @@ impl Model<2, 4> for DoublePendulum {
         x[1] + x[3]
     }
 }
-mechanism_from_model!(DoublePendulum, 2);
+lagrange_core::impl_mechanism!(DoublePendulum, 2, 4);
 
 /// q̈ = q² (V = −q³/3): from q = 1, q̇ = √(2/3) (zero energy) the solution q = 4/(2 − √(2/3) t)²
 /// blows up at t = √6.
@@ -949,7 +875,7 @@ impl Model<1, 1> for BlowUp {
         -(x[0] * x[0] * x[0]) / 3.0
     }
 }
-mechanism_from_model!(BlowUp, 1);
+lagrange_core::impl_mechanism!(BlowUp, 1, 1);
 
 /// Exact Kepler orbit with a = 1, GM = 1 (period 2π) starting at periapsis of eccentricity e:
 /// q₀ = (1 − e, 0), v₀ = (0, √((1 + e)/(1 − e))). Position and velocity at time t from Kepler's
@@ -1006,7 +932,7 @@ impl Model<6, 6> for Fpu {
         v + soft(x[0]) + soft(x[2] - x[1]) + soft(x[4] - x[3]) + soft(x[5])
     }
 }
-mechanism_from_model!(Fpu, 6);
+lagrange_core::impl_mechanism!(Fpu, 6, 6);
 
 /// HLW's initial values: the first stiff spring stretched by 1/ω and moving, all else at rest.
 fn fpu_start() -> State<[f64; 6]> {
