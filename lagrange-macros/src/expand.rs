@@ -13,6 +13,7 @@ use crate::attr::{Inertia, Kind};
 use crate::check::{self, Body, Dim, Model, Shape};
 use crate::ctxt::{self, Ctxt};
 use crate::lift;
+use crate::optimize;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
@@ -230,6 +231,33 @@ fn bind_inputs(model: &Model, used: &BTreeSet<String>, q: TokenStream) -> TokenS
     }
 }
 
+/// The user's `blocks` rewritten by [`optimize`] (parameter-only subexpressions in `f64`, shared
+/// `sin_cos`) and lifted to `__D`, with the `let`s the rewrites need (placed after the inputs).
+fn optimized_blocks<'d>(
+    model: &Model,
+    blocks: impl IntoIterator<Item = &'d syn::Block>,
+) -> (TokenStream, Vec<syn::Block>) {
+    let d = scalar();
+    let mut blocks: Vec<syn::Block> = blocks.into_iter().cloned().collect();
+    let params: BTreeSet<String> = model.params.iter().map(|p| p.ident.to_string()).collect();
+    let trig: BTreeSet<String> = model
+        .coords
+        .iter()
+        .map(|c| c.ident.to_string())
+        .chain(std::iter::once("t".to_string()))
+        .collect();
+    let lets = optimize::optimize(
+        &mut blocks,
+        &optimize::Scope {
+            params: &params,
+            trig: &trig,
+        },
+        &d,
+    );
+    let blocks = blocks.iter().map(|b| lift::lift_block(b, &d)).collect();
+    (lets, blocks)
+}
+
 /// The Rust type of a body's position on scalar `__D`.
 fn position_type(shape: Shape) -> TokenStream {
     let g = quote!(::lagrange::__private::geometry);
@@ -287,16 +315,14 @@ fn bodies_fn(model: &Model) -> TokenStream {
     let inputs = bind_inputs(model, &used, quote!(__q));
     let names: Vec<&Ident> = model.bodies.iter().map(|b| b.decl.ident()).collect();
     let types = model.bodies.iter().map(|b| position_type(b.shape));
-    let blocks = model
-        .bodies
-        .iter()
-        .map(|b| lift::lift_block(&b.decl.block, &d));
+    let (shared, blocks) = optimized_blocks(model, model.bodies.iter().map(|b| &b.decl.block));
     quote! {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
         fn __lagrange_bodies<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> Bodies<__D> {
             #prelude
             #inputs
+            #shared
             #( let #names: #types = #blocks; )*
             Bodies { #(#names),* }
         }
@@ -536,9 +562,33 @@ fn validate_fn(model: &Model) -> TokenStream {
         };
         quote!(#check_mass #check_inertia)
     });
+    // The common case first, branch-free: x·0 is 0 exactly when x is finite, so one comparison
+    // checks every parameter; masses and moments compare positive. Only a failure (or a spatial
+    // body, whose moments have more to check) goes on to the checks that name the culprit.
+    let fast = (!model.bodies.iter().any(|b| b.shape == Shape::Spatial)).then(|| {
+        let fields = model.params.iter().map(|f| &f.ident);
+        let positive = model.bodies.iter().filter(|b| b.shape.has_mass()).map(|body| {
+            let mass = format_ident!("__mass_{}", body.decl.ident());
+            let inertia = format_ident!("__inertia_{}", body.decl.ident());
+            match body.shape {
+                Shape::Planar => quote!(& (#mass * 0.0 == 0.0) & (#mass > 0.0) & (#inertia * 0.0 == 0.0) & (#inertia > 0.0)),
+                _ => quote!(& (#mass * 0.0 == 0.0) & (#mass > 0.0)),
+            }
+        });
+        let bindings = &bindings;
+        quote! {
+            {
+                #bindings
+                if ((0.0 #( + self.#fields * 0.0 )*) == 0.0) #(#positive)* {
+                    return #p::core::result::Result::Ok(());
+                }
+            }
+        }
+    });
     quote! {
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> #p::Result<()> {
+            #fast
             #(
                 if !self.#params.is_finite() {
                     #err(#p::Error::NonFiniteParameter { name: #strings, value: self.#params });
@@ -625,9 +675,9 @@ fn potential_fn(model: &Model) -> TokenStream {
         .chain(model.gravities.iter().map(|(g, _)| *g));
     let inputs = bind_inputs(model, &model.names_used_by(decls), quote!(__q));
     let bodies = bind_bodies(model);
-    let potentials = model.potentials.iter().map(|decl| {
+    let (shared, blocks) = optimized_blocks(model, model.potentials.iter().map(|d| &d.block));
+    let potentials = model.potentials.iter().zip(blocks).map(|(decl, block)| {
         let ident = format_ident!("__potential_{}", decl.ident());
-        let block = lift::lift_block(&decl.block, &d);
         quote!(let #ident: __D = #block; __potential += #ident;)
     });
     let gravities = model
@@ -642,6 +692,7 @@ fn potential_fn(model: &Model) -> TokenStream {
         fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D {
             #prelude
             #inputs
+            #shared
             #bodies
             #masses
             let mut __potential = <__D>::zero();
@@ -692,8 +743,8 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
         .bodies
         .iter()
         .map(|b| format_ident!("{}_dot", b.decl.ident()));
-    let forces = model.forces.iter().map(|force| {
-        let block = lift::lift_block(&force.decl.block, &d);
+    let (shared, blocks) = optimized_blocks(model, model.forces.iter().map(|f| &f.decl.block));
+    let forces = model.forces.iter().zip(blocks).map(|(force, block)| {
         let ident = format_ident!("__{}_{}", force.kind.name(), force.decl.ident());
         match force.kind {
             Kind::Force => {
@@ -734,6 +785,7 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
         ) {
             #prelude
             #inputs
+            #shared
             let [#(#velocities),*] = *__v;
             #bodies
             let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);

@@ -12,6 +12,7 @@ mod ctxt;
 mod expand;
 mod lift;
 mod names;
+mod optimize;
 
 #[cfg(test)]
 mod expand_tests;

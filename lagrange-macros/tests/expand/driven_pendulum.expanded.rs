@@ -104,8 +104,13 @@ pub mod driven {
             let a = <__D>::from(self.a);
             let w = <__D>::from(self.w);
             let t = __t;
+            let __param_0: __D = <__D>::from({
+                let l: f64 = self.l;
+                -l
+            });
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
             let bob: ::lagrange::__private::geometry::Vec2<__D> = {
-                vec2(a * (w * t).cos() + l * theta.sin(), -l * theta.cos())
+                vec2(a * (w * t).cos() + l * __sin_theta, __param_0 * __cos_theta)
             };
             Bodies { bob }
         }
@@ -126,6 +131,20 @@ pub mod driven {
         const HAS_FORCES: bool = false;
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m: f64 = self.m;
+                let l: f64 = self.l;
+                let a: f64 = self.a;
+                let w: f64 = self.w;
+                let g: f64 = self.g;
+                let __mass_bob: f64 = m;
+                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.a * 0.0 + self.w * 0.0
+                    + self.g * 0.0) == 0.0) & (__mass_bob * 0.0 == 0.0)
+                    & (__mass_bob > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
                     name: "m",

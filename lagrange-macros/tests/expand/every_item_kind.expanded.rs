@@ -113,8 +113,9 @@ pub mod everything {
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let [theta, phi] = *__q;
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
             let bar: ::lagrange::__private::geometry::Planar<__D> = {
-                planar(vec2(theta.sin(), -theta.cos()) * HALF, theta)
+                planar(vec2(__sin_theta, -__cos_theta) * HALF, theta)
             };
             let tip: ::lagrange::__private::geometry::Vec2<__D> = {
                 bar.point(vec2(<__D>::from(0.5), <__D>::from(0.0)))
@@ -380,6 +381,10 @@ pub mod everything {
             let [theta, phi] = *__q;
             let c = <__D>::from(self.c);
             let tau = <__D>::from(self.tau);
+            let __param_0: __D = <__D>::from({
+                let c: f64 = self.c;
+                -c
+            });
             let [theta_dot, phi_dot] = *__v;
             let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
             let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = Self::__lagrange_velocities_from_cartesian(
@@ -392,7 +397,7 @@ pub mod everything {
             __cartesian_force[16] += __force_push.y;
             let __torque_motor: __D = { tau };
             __cartesian_force[2] += __torque_motor;
-            let __generalized_force_damping: __D = { -c * phi_dot };
+            let __generalized_force_damping: __D = { __param_0 * phi_dot };
             __generalized_force[1] += __generalized_force_damping;
         }
         const HAS_GRAVITY: bool = true;

@@ -99,8 +99,9 @@ pub mod pendulum {
             use ::lagrange::__private::DualNum as _;
             let [theta] = *__q;
             let l = <__D>::from(self.l);
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
             let bob: ::lagrange::__private::geometry::Vec2<__D> = {
-                vec2(theta.sin(), -theta.cos()) * l
+                vec2(__sin_theta, -__cos_theta) * l
             };
             Bodies { bob }
         }
@@ -121,6 +122,17 @@ pub mod pendulum {
         const HAS_FORCES: bool = false;
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m: f64 = self.m;
+                let l: f64 = self.l;
+                let g: f64 = self.g;
+                let __mass_bob: f64 = m;
+                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.g * 0.0) == 0.0)
+                    & (__mass_bob * 0.0 == 0.0) & (__mass_bob > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
                     name: "m",

@@ -100,8 +100,9 @@ pub mod pendulum {
             use ::lagrange::__private::DualNum as _;
             let [theta] = *__q;
             let l = <__D>::from(self.l);
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
             let bob: ::lagrange::__private::geometry::Vec2<__D> = {
-                vec2(theta.sin(), -theta.cos()) * l
+                vec2(__sin_theta, -__cos_theta) * l
             };
             Bodies { bob }
         }
@@ -130,6 +131,18 @@ pub mod pendulum {
         const HAS_FORCES: bool = true;
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m: f64 = self.m;
+                let l: f64 = self.l;
+                let g: f64 = self.g;
+                let c: f64 = self.c;
+                let __mass_bob: f64 = m;
+                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.g * 0.0 + self.c * 0.0)
+                    == 0.0) & (__mass_bob * 0.0 == 0.0) & (__mass_bob > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
                     name: "m",
@@ -207,13 +220,17 @@ pub mod pendulum {
             use ::lagrange::__private::DualNum as _;
             let [theta] = *__q;
             let c = <__D>::from(self.c);
+            let __param_0: __D = <__D>::from({
+                let c: f64 = self.c;
+                -c
+            });
             let [theta_dot] = *__v;
             let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
             let BodyVelocities { bob: bob_dot } = Self::__lagrange_velocities_from_cartesian(
                 __x_dot,
             );
             let __force_drag: ::lagrange::__private::geometry::Vec2<__D> = {
-                bob_dot * (-c)
+                bob_dot * (__param_0)
             };
             __cartesian_force[0] += __force_drag.x;
             __cartesian_force[1] += __force_drag.y;

@@ -130,6 +130,17 @@ pub mod sliding_block {
         const HAS_FORCES: bool = false;
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m: f64 = self.m;
+                let g: f64 = self.g;
+                let mu: f64 = self.mu;
+                let __mass_block: f64 = m;
+                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.mu * 0.0) == 0.0)
+                    & (__mass_block * 0.0 == 0.0) & (__mass_block > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
                     name: "m",

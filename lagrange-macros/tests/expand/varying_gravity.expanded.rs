@@ -128,6 +128,17 @@ pub mod varying {
         const HAS_FORCES: bool = false;
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m: f64 = self.m;
+                let g: f64 = self.g;
+                let w: f64 = self.w;
+                let __mass_ball: f64 = m;
+                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.w * 0.0) == 0.0)
+                    & (__mass_ball * 0.0 == 0.0) & (__mass_ball > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
                     name: "m",
