@@ -11,8 +11,6 @@ mod atwood;
 mod breathing_ellipse;
 #[path = "cartesian_pendulum.rs"]
 mod cartesian_pendulum;
-#[path = "double_pendulum.rs"]
-mod double_pendulum;
 #[path = "four_bar.rs"]
 mod four_bar;
 #[path = "hoop_bifurcation.rs"]
@@ -33,10 +31,12 @@ mod rough_wedge;
 mod small_oscillations;
 #[path = "sphere_release.rs"]
 mod sphere_release;
-#[path = "spinning_hoop.rs"]
-mod spinning_hoop;
 #[path = "wedge_block.rs"]
 mod wedge_block;
+
+// These two scenes are loaded once, as the mechanisms the statics scenes analyse.
+use hoop_bifurcation::scene as spinning_hoop;
+use small_oscillations::scene as double_pendulum;
 
 use lagrange_gallery::{plots_dir, table, Check};
 use std::path::Path;

@@ -9,7 +9,7 @@
 
 #[path = "spinning_hoop.rs"]
 #[allow(dead_code)]
-mod scene;
+pub mod scene;
 
 use lagrange::analysis::{continuation, normal_modes, stability, EquilibriumOptions, Stability};
 use lagrange_gallery::plot::{self, Series};

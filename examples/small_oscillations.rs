@@ -5,7 +5,7 @@
 
 #[path = "double_pendulum.rs"]
 #[allow(dead_code)]
-mod scene;
+pub mod scene;
 
 use lagrange::analysis::{equilibrium, normal_modes, EquilibriumOptions};
 use lagrange_gallery::Check;

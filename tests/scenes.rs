@@ -10,9 +10,6 @@ mod breathing_ellipse;
 #[path = "../examples/cartesian_pendulum.rs"]
 #[allow(dead_code)]
 mod cartesian_pendulum;
-#[path = "../examples/double_pendulum.rs"]
-#[allow(dead_code)]
-mod double_pendulum;
 #[path = "../examples/four_bar.rs"]
 #[allow(dead_code)]
 mod four_bar;
@@ -43,12 +40,13 @@ mod small_oscillations;
 #[path = "../examples/sphere_release.rs"]
 #[allow(dead_code)]
 mod sphere_release;
-#[path = "../examples/spinning_hoop.rs"]
-#[allow(dead_code)]
-mod spinning_hoop;
 #[path = "../examples/wedge_block.rs"]
 #[allow(dead_code)]
 mod wedge_block;
+
+// Loaded once, as the mechanisms the statics scenes analyse.
+use hoop_bifurcation::scene as spinning_hoop;
+use small_oscillations::scene as double_pendulum;
 
 use lagrange_gallery::{table, Check};
 use std::path::PathBuf;
