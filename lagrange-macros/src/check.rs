@@ -429,8 +429,10 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
     let mut seen = BTreeSet::new();
     // Each name is resolved (and reported) once per function.
     let mut constant = true;
+    let mut reads_velocity = false;
     for ident in free.iter().filter(|i| seen.insert(i.to_string())) {
         let name = Resolver { model, context }.resolve(cx, ident);
+        reads_velocity |= matches!(name, Some(Name::CoordVelocity | Name::BodyVelocity));
         let is_force = matches!(
             decl.kind(),
             Kind::Force | Kind::Torque | Kind::GeneralizedForce
@@ -439,6 +441,15 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
             model.rheonomic = true;
         }
         constant &= matches!(name, Some(Name::Param | Name::Item));
+    }
+    // `#[velocity_constraint] fn on_line() -> f64 { y - x }`: without a velocity it constrains
+    // positions, which is a `#[constraint]`.
+    if decl.kind() == Kind::VelocityConstraint && !reads_velocity {
+        cx.error_spanned_by(
+            decl.ident(),
+            "a `#[velocity_constraint]` is affine in velocities (`x_dot`, `body_dot`), and this one \
+             names none: a condition on positions alone is a `#[constraint]`",
+        );
     }
     match gravity {
         Some(dim) if constant => model.uniform_gravities.push((decl, dim)),
@@ -519,6 +530,15 @@ fn check_not_a_comparison(cx: &Ctxt, decl: &Decl) {
     };
     use syn::BinOp::*;
     // `#[constraint] fn rod() -> f64 { bob.norm() == l }`: write `bob.norm() - l`.
+    // `#[constraint] fn floor() -> f64 { y >= 0.0 }`: an inequality is a `#[unilateral]` row.
+    if matches!(binary.op, Lt(_) | Le(_) | Gt(_) | Ge(_)) && decl.kind() != Kind::Unilateral {
+        cx.error_spanned_by(
+            binary.op,
+            "an inequality is a `#[unilateral]` constraint, written as a value ≥ 0 where the \
+             motion is admissible (`y`, not `y >= 0.0`)",
+        );
+        return;
+    }
     if matches!(binary.op, Eq(_) | Ne(_) | Lt(_) | Le(_) | Gt(_) | Ge(_)) {
         let what = if decl.kind() == Kind::Unilateral {
             "≥ 0 where the motion is admissible"

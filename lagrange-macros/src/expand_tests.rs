@@ -237,3 +237,54 @@ fn an_error_still_emits_the_items_and_stubs() {
     assert!(out.contains("pub type State"));
     assert!(out.contains("Mechanism<1> for Broken"));
 }
+
+/// A block on a ramp held by a bilateral `#[constraint]`, optionally with friction on it.
+fn block_on_ramp(friction: bool) -> TokenStream {
+    let friction = friction.then(|| {
+        quote! {
+            #[friction(on = surface, kinetic = mu)]
+            fn slip() -> f64 { block_dot.x * alpha.cos() - block_dot.y * alpha.sin() }
+        }
+    });
+    quote! {
+        pub mod ramp {
+            pub struct Coords { pub x: f64, pub y: f64 }
+            pub struct Ramp { pub m: f64, pub alpha: f64, pub mu: f64, pub g: f64 }
+            #[particle(mass = m)]
+            fn block() -> Vec2 { vec2(x, y) }
+            #[constraint]
+            fn surface() -> f64 { block.x * alpha.sin() + block.y * alpha.cos() }
+            #friction
+            #[gravity]
+            fn down() -> Vec2 { vec2(0.0, -g) }
+        }
+    }
+}
+
+#[test]
+fn no_constraints_means_no_constraint_solve() {
+    // The unconstrained pendulum keeps the trait's plain accelerations and no-op hooks.
+    let out = pretty(expand(TokenStream::new(), pendulum()));
+    assert!(!out.contains("Constraints<"), "no Constraints impl:\n{out}");
+    assert!(
+        !out.contains("fn accelerations_at"),
+        "no KKT override:\n{out}"
+    );
+    assert!(!out.contains("fn project"), "no projection hook:\n{out}");
+}
+
+#[test]
+fn a_constraint_brings_the_constrained_solve_and_friction_only_when_declared() {
+    let bilateral = pretty(expand(TokenStream::new(), block_on_ramp(false)));
+    assert!(bilateral.contains("Constraints<2, 2, 1>"));
+    assert!(bilateral.contains("fn accelerations_at"));
+    assert!(bilateral.contains("fn project"));
+    // Without friction, no Coulomb coefficients and no friction row: the runtime's mode inference
+    // (which rows slide or stick) is decided from KINDS at compile time and skipped.
+    assert!(!bilateral.contains("fn friction_coefficients"));
+    assert!(!bilateral.contains("ConstraintKind::Friction"));
+    let rough = pretty(expand(TokenStream::new(), block_on_ramp(true)));
+    assert!(rough.contains("Constraints<2, 2, 2>"));
+    assert!(rough.contains("fn friction_coefficients"));
+    assert!(rough.contains("ConstraintKind::Friction"));
+}
