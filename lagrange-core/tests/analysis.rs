@@ -969,3 +969,469 @@ fn linearization_about_a_moving_state_matches_finite_differences() {
     assert_eq!(b[(0, 0)], 0.0);
     assert_eq!(b[(3, 1)], lin.dqdd_du[(1, 1)]);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Equilibria of constrained mechanisms: q* and the multipliers λ.
+// ---------------------------------------------------------------------------------------------
+
+use lagrange_core::analysis::constrained_equilibrium;
+use lagrange_core::constraints::{self, ConstraintKind, Constraints};
+
+/// A plane pendulum in Cartesian coordinates (x, y): bob of mass m, gravity −g ŷ, the rod as one
+/// holonomic row, either √(x² + y²) − L (`squared: false`) or x² + y² − L² (`squared: true`).
+#[derive(Clone, Copy)]
+struct CartesianPendulum {
+    m: f64,
+    l: f64,
+    g: f64,
+    squared: bool,
+}
+
+impl Model<2, 2> for CartesianPendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("L", self.l), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m; 2]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+}
+
+impl Constraints<2, 2, 1> for CartesianPendulum {
+    const NAMES: [&'static str; 1] = ["rod"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        let r2 = x[0] * x[0] + x[1] * x[1];
+        if self.squared {
+            [r2 - self.l * self.l]
+        } else {
+            [r2.sqrt() - self.l]
+        }
+    }
+}
+impl_mechanism!(CartesianPendulum, 2, 2, constraints);
+
+const L_ROD: f64 = 2.0;
+const M_BOB: f64 = 1.5;
+
+#[test]
+fn cartesian_pendulum_equilibria_and_rod_tension() {
+    let options = EquilibriumOptions::default();
+    for squared in [false, true] {
+        let p = CartesianPendulum {
+            m: M_BOB,
+            l: L_ROD,
+            g: G,
+            squared,
+        };
+        // The multiplier of row g is λ with generalized force λ ∇g (constraints module). The rod
+        // pulls the bob towards the pivot with the tension T: λ ∇g = −T r̂. ∇(|r| − L) = r̂ gives
+        // λ = −T; ∇(|r|² − L²) = 2 r gives λ = −T/(2L). At the bottom T = m g, at the top the rod
+        // is compressed, T = −m g.
+        let per_tension = if squared { -1.0 / (2.0 * L_ROD) } else { -1.0 };
+        // Guesses off the bottom and off the circle (inside and outside it).
+        for guess in [[0.7, -1.2], [-1.1, -2.9], [1.9, -0.4], [-0.2, -0.5]] {
+            let kept = guess;
+            let eq = constrained_equilibrium(&p, 0.0, &guess, &options).unwrap();
+            assert_eq!(guess, kept);
+            // Newton converges quadratically and stops on a step ≤ 1e-12·max(1, |q|) (the error
+            // left is ~ its square) or on a residual at rounding level: q* = (0, −L) to a few
+            // ulps of L = 2.
+            assert!(
+                eq.q[0].abs() < 1e-13 && (eq.q[1] + L_ROD).abs() < 1e-13,
+                "squared {squared}, guess {guess:?}: q* = {:?}",
+                eq.q
+            );
+            // λ from r + Gᵀλ = 0 at q*: m g (≈ 14.7) divided by |∇g| ∈ {1, 4}, to the rounding
+            // of the force balance (a few ulps of m g).
+            let tension = M_BOB * G;
+            assert!(
+                close(eq.multipliers[0], per_tension * tension, 1e-14),
+                "squared {squared}: λ = {} vs {}",
+                eq.multipliers[0],
+                per_tension * tension
+            );
+            assert_eq!(eq.multiplier("rod"), Some(eq.multipliers[0]));
+            assert_eq!(eq.active, [true]);
+            assert!(eq.residual < 1e-13 && eq.constraint_residual < 1e-13);
+            assert!(eq.iterations > 0);
+            // The dynamics runtime agrees: at rest at q* the accelerations vanish and its
+            // multiplier (the KKT solve of M q̈ = 𝓕 − b + Gᵀλ, G q̈ = −β) is the same λ.
+            let forces = constraints::constraint_forces(&p, &State::at_rest(eq.q)).unwrap();
+            assert!(forces.accelerations.iter().all(|a| a.abs() < 1e-12));
+            assert!(close(forces.multipliers[0], eq.multipliers[0], 1e-13));
+            // Stability on the tangent space: V = m g y has no curvature; the stiffness comes
+            // entirely from −λ∇²g, giving ω² = g/L at the bottom (the pendulum's frequency).
+            // Exact derivatives and a 1×1 reduced problem: rounding only.
+            assert_eq!(eq.stability, Stability::Stable);
+            assert_eq!(eq.tangent_eigenvalues.len(), 1);
+            assert!(close(eq.tangent_eigenvalues[0], G / L_ROD, 1e-13));
+        }
+        // The top is an equilibrium too, reached from a guess near it: tension −m g, unstable
+        // with the eigenvalue −g/L.
+        for guess in [[0.3, 1.6], [-0.5, 2.4]] {
+            let top = constrained_equilibrium(&p, 0.0, &guess, &options).unwrap();
+            assert!(
+                top.q[0].abs() < 1e-13 && (top.q[1] - L_ROD).abs() < 1e-13,
+                "squared {squared}, guess {guess:?}: q* = {:?}",
+                top.q
+            );
+            assert!(close(top.multipliers[0], -per_tension * M_BOB * G, 1e-14));
+            assert_eq!(top.stability, Stability::Unstable);
+            assert!(close(top.tangent_eigenvalues[0], -G / L_ROD, 1e-13));
+        }
+    }
+}
+
+/// A bead of mass m on a circular wire of radius R in a vertical plane that spins about the
+/// vertical at ω. Coordinates in the rotating plane, q = (ρ, z): x = (ρ cos ωt, ρ sin ωt, z)
+/// (rheonomic), the wire as the holonomic row |x| − R = 0 written on the Cartesian position.
+/// The same physics as `Hoop` above, which absorbs the wire into the angle θ.
+#[derive(Clone, Copy)]
+struct WireBead {
+    m: f64,
+    r: f64,
+    g: f64,
+    omega: f64,
+}
+
+impl Model<2, 3> for WireBead {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = true;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[
+            ("m", self.m),
+            ("R", self.r),
+            ("g", self.g),
+            ("omega", self.omega),
+        ])
+    }
+    fn masses(&self) -> [f64; 3] {
+        [self.m; 3]
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 3] {
+        let spin = t * self.omega;
+        [q[0] * spin.cos(), q[0] * spin.sin(), q[1]]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 3]) -> D {
+        x[2] * (self.m * self.g)
+    }
+}
+
+impl Constraints<2, 3, 1> for WireBead {
+    const NAMES: [&'static str; 1] = ["wire"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 3]) -> [D; 1] {
+        [(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt() - self.r]
+    }
+}
+impl_mechanism!(WireBead, 2, 3, constraints);
+
+#[test]
+fn bead_on_spinning_wire_equilibrium_and_normal_force() {
+    // In the rotating plane the bead feels gravity (0, −m g), the centrifugal force (m ω² ρ, 0)
+    // (−b at rest: T = ½ m (ρ̇² + ρ² ω² + ż²)) and the wire's force λ ∇g = λ (ρ, z)/R. Balance:
+    // ρ (m ω² + λ/R) = 0 and −m g + λ z/R = 0. Off the axis (ρ ≠ 0): λ = −m ω² R and
+    // z = −g/ω², i.e. cos θ* = g/(ω² R) as for `Hoop`; the wire presses inwards with m ω² R.
+    // Tangent stiffness: K = diag(−m ω², 0), −λ∇²g = m ω² (I − n nᵀ) with n = (sin θ, −cos θ),
+    // along t = (cos θ, sin θ): m ω² sin²θ*, relative to the mass m: ω² − g²/(ω² R²), the
+    // frequency of `hoop_off_bottom_equilibria_above_critical_spin`.
+    let options = EquilibriumOptions::default();
+    let omega = 6.0;
+    let bead = WireBead {
+        m: M_BEAD,
+        r: R_HOOP,
+        g: G,
+        omega,
+    };
+    let cos_star = G / (omega * omega * R_HOOP);
+    let sin_star = (1.0 - cos_star * cos_star).sqrt();
+    let freq2 = omega * omega - G * G / (omega * omega * R_HOOP * R_HOOP);
+    for (t, guess) in [(0.0, [0.3, -0.2]), (0.0, [-0.6, -0.1]), (0.37, [0.4, -0.3])] {
+        let eq = constrained_equilibrium(&bead, t, &guess, &options).unwrap();
+        let rho = guess[0].signum() * R_HOOP * sin_star;
+        // q* to a few ulps of R (quadratic convergence, step test 1e-12).
+        assert!(
+            (eq.q[0] - rho).abs() < 1e-14 && (eq.q[1] + R_HOOP * cos_star).abs() < 1e-14,
+            "t = {t}, guess {guess:?}: q* = {:?} vs ({rho}, {})",
+            eq.q,
+            -R_HOOP * cos_star
+        );
+        // λ = −m ω² R = −3.6: the sum of forces of size ~m ω² R, so a few ulps of that.
+        assert!(
+            close(eq.multipliers[0], -M_BEAD * omega * omega * R_HOOP, 1e-14),
+            "λ = {}",
+            eq.multipliers[0]
+        );
+        // Against the hoop in the angle coordinate: the same configuration.
+        let hoop_eq = equilibrium(&hoop(omega), t, &[guess[0].signum()], &options).unwrap();
+        assert!((R_HOOP * hoop_eq.q[0].sin() - eq.q[0]).abs() < 1e-14);
+        // Stable, ω² − g²/(ω²R²) ≈ 25.3 from a difference of terms of size ω² = 36: 1e-13.
+        assert_eq!(eq.stability, Stability::Stable);
+        assert!(
+            close(eq.tangent_eigenvalues[0], freq2, 1e-13),
+            "ω² = {} vs {freq2}",
+            eq.tangent_eigenvalues[0]
+        );
+    }
+    // On the axis (ρ = 0) the bottom balances with λ = −m g, unstable above the critical spin:
+    // tangent eigenvalue g/R − ω².
+    let bottom = constrained_equilibrium(&bead, 0.0, &[0.0, -0.4], &options).unwrap();
+    assert!(bottom.q[0].abs() < 1e-14 && (bottom.q[1] + R_HOOP).abs() < 1e-14);
+    assert!(close(bottom.multipliers[0], -M_BEAD * G, 1e-14));
+    assert_eq!(bottom.stability, Stability::Unstable);
+    assert!(close(
+        bottom.tangent_eigenvalues[0],
+        G / R_HOOP - omega * omega,
+        1e-13
+    ));
+    // Below the critical spin only the axis equilibria exist; the bottom is stable.
+    let slow = WireBead { omega: 3.0, ..bead };
+    let eq = constrained_equilibrium(&slow, 0.0, &[0.3, -0.2], &options).unwrap();
+    assert!(eq.q[0].abs() < 1e-14 && (eq.q[1] + R_HOOP).abs() < 1e-14);
+    assert_eq!(eq.stability, Stability::Stable);
+    assert!(close(eq.tangent_eigenvalues[0], G / R_HOOP - 9.0, 1e-13));
+}
+
+/// A bob in space (x, y, z) on a sphere of radius L about the origin and in the plane x = 0:
+/// two holonomic rows (a pendulum in the y–z plane). With `redundant`, a third row 2x = 0 repeats
+/// the plane.
+#[derive(Clone, Copy)]
+struct PlanarBob {
+    m: f64,
+    l: f64,
+    g: f64,
+}
+
+impl Model<3, 3> for PlanarBob {
+    type Coords = [f64; 3];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        finite(&[("m", self.m), ("L", self.l), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 3] {
+        [self.m; 3]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 3]) -> [D; 3] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 3], x: &[D; 3]) -> D {
+        x[2] * (self.m * self.g)
+    }
+}
+
+impl Constraints<3, 3, 2> for PlanarBob {
+    const NAMES: [&'static str; 2] = ["sphere", "plane"];
+    const KINDS: [ConstraintKind; 2] = [ConstraintKind::Holonomic; 2];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 3], x: &[D; 3]) -> [D; 2] {
+        [
+            (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt() - self.l,
+            x[0],
+        ]
+    }
+}
+impl_mechanism!(PlanarBob, 3, 3, constraints);
+
+/// `PlanarBob` with the plane declared twice.
+#[derive(Clone, Copy)]
+struct RedundantBob(PlanarBob);
+
+impl Model<3, 3> for RedundantBob {
+    type Coords = [f64; 3];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Model::validate(&self.0)
+    }
+    fn masses(&self) -> [f64; 3] {
+        self.0.masses()
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 3]) -> [D; 3] {
+        self.0.cartesian(t, q)
+    }
+    fn potential<D: Scalar>(&self, t: D, q: &[D; 3], x: &[D; 3]) -> D {
+        self.0.potential(t, q, x)
+    }
+}
+
+impl Constraints<3, 3, 3> for RedundantBob {
+    const NAMES: [&'static str; 3] = ["sphere", "plane", "plane again"];
+    const KINDS: [ConstraintKind; 3] = [ConstraintKind::Holonomic; 3];
+    fn position_constraints<D: Scalar>(&self, t: D, q: &[D; 3], x: &[D; 3]) -> [D; 3] {
+        let [sphere, plane] = self.0.position_constraints(t, q, x);
+        [sphere, plane, plane * 2.0]
+    }
+}
+impl_mechanism!(RedundantBob, 3, 3, constraints);
+
+#[test]
+fn two_rows_and_redundant_rows() {
+    let options = EquilibriumOptions::default();
+    let bob = PlanarBob {
+        m: M_BOB,
+        l: L_ROD,
+        g: G,
+    };
+    // Off the plane and off the sphere: back to the bottom (0, 0, −L); the sphere carries the
+    // weight (λ = −m g, as for the rod), the plane nothing (its normal is horizontal).
+    let eq = constrained_equilibrium(&bob, 0.0, &[0.4, 0.6, -1.5], &options).unwrap();
+    assert!(eq.q[0].abs() < 1e-14 && eq.q[1].abs() < 1e-13 && (eq.q[2] + L_ROD).abs() < 1e-13);
+    assert!(close(eq.multiplier("sphere").unwrap(), -M_BOB * G, 1e-14));
+    assert!(eq.multiplier("plane").unwrap().abs() < 1e-12);
+    // One degree of freedom left, the pendulum in the y–z plane.
+    assert_eq!(eq.tangent_eigenvalues.len(), 1);
+    assert!(close(eq.tangent_eigenvalues[0], G / L_ROD, 1e-13));
+    assert_eq!(eq.stability, Stability::Stable);
+    // The plane twice: the multipliers of the two copies are not determined.
+    let err =
+        constrained_equilibrium(&RedundantBob(bob), 0.0, &[0.4, 0.6, -1.5], &options).unwrap_err();
+    match &err {
+        Error::SingularConstraints { constraints, .. } => {
+            assert!(constraints.contains("`plane`") && constraints.contains("`plane again`"));
+            assert!(!constraints.contains("`sphere`"), "{err}");
+        }
+        other => panic!("expected SingularConstraints, got {other}"),
+    }
+}
+
+/// The Cartesian pendulum on a string: the unilateral row L − |r| ≥ 0 (the string only pulls).
+#[derive(Clone, Copy)]
+struct StringPendulum(CartesianPendulum);
+
+impl Model<2, 2> for StringPendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Model::validate(&self.0)
+    }
+    fn masses(&self) -> [f64; 2] {
+        self.0.masses()
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 2] {
+        self.0.cartesian(t, q)
+    }
+    fn potential<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> D {
+        self.0.potential(t, q, x)
+    }
+}
+
+impl Constraints<2, 2, 1> for StringPendulum {
+    const NAMES: [&'static str; 1] = ["string"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [-(x[0] * x[0] + x[1] * x[1]).sqrt() + self.0.l]
+    }
+}
+impl_mechanism!(StringPendulum, 2, 2, constraints);
+
+/// A particle in the plane whose velocity row ẋ = 0 cannot be used for statics.
+#[derive(Clone, Copy)]
+struct Rail(CartesianPendulum);
+
+impl Model<2, 2> for Rail {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Model::validate(&self.0)
+    }
+    fn masses(&self) -> [f64; 2] {
+        self.0.masses()
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 2] {
+        self.0.cartesian(t, q)
+    }
+    fn potential<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> D {
+        self.0.potential(t, q, x)
+    }
+}
+
+impl Constraints<2, 2, 1> for Rail {
+    const NAMES: [&'static str; 1] = ["no_sideways"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Velocity];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], _x: &[D; 2]) -> [D; 1] {
+        [D::zero()]
+    }
+    fn velocity_constraints<D: Scalar>(
+        &self,
+        _t: D,
+        _q: &[D; 2],
+        v: &[D; 2],
+        _x: &[D; 2],
+        _x_dot: &[D; 2],
+    ) -> [D; 1] {
+        [v[0]]
+    }
+}
+impl_mechanism!(Rail, 2, 2, constraints);
+
+#[test]
+fn unilateral_rows_by_active_set_and_refused_rows() {
+    let options = EquilibriumOptions::default();
+    let p = CartesianPendulum {
+        m: M_BOB,
+        l: L_ROD,
+        g: G,
+        squared: false,
+    };
+    let string = StringPendulum(p);
+    // On the circle (string taut) or beyond it (stretched): the string holds the bob at the
+    // bottom and pulls, λ = +m g ≥ 0 (∇c = −r̂, so λ∇c = −λ r̂ is a pull of λ towards the pivot).
+    for guess in [[0.6, -(L_ROD * L_ROD - 0.36f64).sqrt()], [1.0, -2.5]] {
+        let eq = constrained_equilibrium(&string, 0.0, &guess, &options).unwrap();
+        assert!(eq.q[0].abs() < 1e-13 && (eq.q[1] + L_ROD).abs() < 1e-13);
+        assert!(close(eq.multipliers[0], M_BOB * G, 1e-14));
+        assert_eq!(eq.active, [true]);
+        assert_eq!(eq.stability, Stability::Stable);
+    }
+    // At the top the string would have to push (λ = −m g): released, and a free bob under gravity
+    // has no equilibrium. Slack (inside the circle) from the start: the same.
+    for guess in [[0.0, L_ROD], [0.3, 1.5], [0.2, -0.5]] {
+        let err = constrained_equilibrium(&string, 0.0, &guess, &options).unwrap_err();
+        assert!(
+            matches!(err, Error::EquilibriumNotFound { .. }),
+            "guess {guess:?}: {err}"
+        );
+    }
+    // A velocity row gives no equation for q at rest: refused.
+    let err = constrained_equilibrium(&Rail(p), 0.0, &[0.0, 0.0], &options).unwrap_err();
+    assert!(
+        matches!(err, Error::UnsuitableMethod { ref reason, .. } if reason.contains("no_sideways")),
+        "{err}"
+    );
+    // Non-finite guesses and parameters, and a cap of one iteration.
+    assert!(matches!(
+        constrained_equilibrium(&p, 0.0, &[f64::NAN, -1.0], &options),
+        Err(Error::NonFiniteState { .. })
+    ));
+    let bad = CartesianPendulum { g: f64::NAN, ..p };
+    assert!(matches!(
+        constrained_equilibrium(&bad, 0.0, &[0.1, -1.0], &options),
+        Err(Error::NonFiniteParameter { name: "g", .. })
+    ));
+    let one = EquilibriumOptions {
+        max_iterations: 1,
+        ..options
+    };
+    assert!(matches!(
+        constrained_equilibrium(&p, 0.0, &[0.7, -1.2], &one),
+        Err(Error::EquilibriumNotFound { iterations: 1, .. })
+    ));
+}

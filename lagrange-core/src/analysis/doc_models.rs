@@ -1,4 +1,4 @@
-//! Two small hand-written mechanisms for the examples in this module's documentation (what
+//! Small hand-written mechanisms for the examples in this module's documentation (what
 //! `#[mechanism]` would generate for them). Not part of the public API.
 
 use crate::error::{Error, Result};
@@ -81,3 +81,41 @@ impl Model<1, 3> for SpinningHoop {
     }
 }
 impl_mechanism!(SpinningHoop, 1, 3);
+
+/// A plane pendulum in Cartesian coordinates (x, y) of the bob (mass `m`), the rod written as the
+/// holonomic constraint `rod`: √(x² + y²) − `l` = 0; gravity `g` along −y.
+#[derive(Clone, Copy, Debug)]
+pub struct CartesianPendulum {
+    pub m: f64,
+    pub l: f64,
+    pub g: f64,
+}
+
+impl Model<2, 2> for CartesianPendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> Result<()> {
+        finite(&[("m", self.m), ("l", self.l), ("g", self.g)])
+    }
+    fn masses(&self) -> [f64; 2] {
+        [self.m; 2]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * (self.m * self.g)
+    }
+}
+
+impl crate::constraints::Constraints<2, 2, 1> for CartesianPendulum {
+    const NAMES: [&'static str; 1] = ["rod"];
+    const KINDS: [crate::constraints::ConstraintKind; 1] =
+        [crate::constraints::ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [(x[0] * x[0] + x[1] * x[1]).sqrt() - self.l]
+    }
+}
+impl_mechanism!(CartesianPendulum, 2, 2, constraints);

@@ -36,6 +36,7 @@
 //! | [`linearize`] | ẋ ≈ ẋ₀ + A δx (+ B u) about any state |
 //! | [`normal_modes`] | frequencies and M-normalized shapes from K v = ω² M v |
 //! | [`continuation`] | an equilibrium branch over a parameter |
+//! | [`constrained_equilibrium`] | q* and the constraint forces λ of a mechanism with [`Constraints`](crate::constraints::Constraints), with its stability on the tangent space |
 //!
 //! ```
 //! use lagrange_core::analysis::{equilibrium, normal_modes, stability, EquilibriumOptions, Stability};
@@ -50,6 +51,7 @@
 //! # Ok::<(), lagrange_core::Error>(())
 //! ```
 
+mod constrained;
 mod continuation;
 #[doc(hidden)]
 pub mod doc_models;
@@ -58,6 +60,7 @@ mod linearize;
 mod modes;
 mod stability;
 
+pub use constrained::{constrained_equilibrium, ConstrainedEquilibrium};
 pub use continuation::{continuation, Branch, BranchPoint};
 pub use equilibrium::{equilibrium, unbalanced_forces, Equilibrium, EquilibriumOptions};
 pub use linearize::{linearize, Linearization};
