@@ -22,8 +22,8 @@ pub mod mechanism;
 pub mod model;
 
 pub use analysis::{
-    continuation, equilibrium, linearize, normal_modes, stability, Equilibrium, EquilibriumOptions,
-    Linearization, NormalModes, Stability,
+    constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability,
+    ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization, NormalModes, Stability,
 };
 pub use constraints::{Constraints, ContactRk4};
 pub use error::{Error, Result};
