@@ -30,11 +30,27 @@ const LAGRANGE_PRELUDE: &[&str] = &[
     "mechanism",
 ];
 
-/// One `f64` field of the coordinates or parameters struct.
+/// One `f64` field of the coordinates or parameters struct, or an array `[f64; LEN]` of
+/// coordinates.
 #[derive(Clone)]
 pub struct Field {
     pub attrs: Vec<Attribute>,
     pub ident: Ident,
+    /// For an array coordinate: its length as written (a literal or a module `const`) and its
+    /// value, once resolved.
+    pub array: Option<(syn::Expr, usize)>,
+}
+
+impl Field {
+    /// Generalized coordinates this field holds.
+    pub fn slots(&self) -> usize {
+        self.array.as_ref().map_or(1, |(_, n)| *n)
+    }
+}
+
+/// Total generalized coordinates of a list of fields.
+pub fn slot_count(fields: &[Field]) -> usize {
+    fields.iter().map(Field::slots).sum()
 }
 
 /// A marked function: a body, point, potential, gravity or force.
@@ -106,7 +122,49 @@ impl Mechanism {
         for item in items {
             mechanism.add_item(cx, item);
         }
+        mechanism.resolve_array_lengths(cx);
         Some(mechanism)
+    }
+
+    /// The value of a length written as an integer literal or the name of a module `const` with
+    /// an integer literal value (`const LINKS: usize = 8;`).
+    pub fn constant_length(&self, expr: &syn::Expr) -> Option<usize> {
+        match expr {
+            syn::Expr::Lit(syn::ExprLit {
+                lit: syn::Lit::Int(i),
+                ..
+            }) => i.base10_parse().ok(),
+            syn::Expr::Path(p) => {
+                let name = p.path.get_ident()?;
+                self.other_items.iter().find_map(|item| match item {
+                    Item::Const(c) if c.ident == *name => self.constant_length(&c.expr),
+                    _ => None,
+                })
+            }
+            syn::Expr::Paren(p) => self.constant_length(&p.expr),
+            _ => None,
+        }
+    }
+
+    fn resolve_array_lengths(&mut self, cx: &Ctxt) {
+        let Some((coords_struct, mut fields)) = self.coords.take() else {
+            return;
+        };
+        for field in &mut fields {
+            if let Some((expr, len)) = &mut field.array {
+                match self.constant_length(expr) {
+                    // `theta: [f64; 0]`: nothing moves.
+                    Some(0) => cx.error_spanned_by(&*expr, "an array of coordinates needs at least one element"),
+                    Some(n) => *len = n,
+                    // `theta: [f64; links()]`: the macro needs the length.
+                    None => cx.error_spanned_by(
+                        &*expr,
+                        "the length of an array of coordinates is an integer literal or a `const NAME: usize = <integer>;` of this module",
+                    ),
+                }
+            }
+        }
+        self.coords = Some((coords_struct, fields));
     }
 
     fn add_item(&mut self, cx: &Ctxt, item: Item) {
@@ -142,7 +200,7 @@ impl Mechanism {
             self.other_items.push(Item::Struct(s));
             return;
         }
-        let fields = struct_fields(cx, &s);
+        let fields = struct_fields(cx, &s, s.ident == "Coords");
         if s.ident == "Coords" {
             // Two `struct Coords`: rustc would say so too, but only once here.
             if self.coords.is_some() {
@@ -224,19 +282,31 @@ impl Mechanism {
 }
 
 /// The named fields of the coordinates or parameters struct, each checked to be `f64`.
-fn struct_fields(cx: &Ctxt, s: &ItemStruct) -> Vec<Field> {
+fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
     match &s.fields {
         syn::Fields::Named(named) => named
             .named
             .iter()
             .map(|f| {
-                // `pub l: f32`: everything is f64 (and lifted to dual numbers).
-                if !is_f64(&f.ty) {
-                    cx.error_spanned_by(&f.ty, "fields of a mechanism's structs are `f64`");
-                }
+                let array = match &f.ty {
+                    // `pub theta: [f64; LINKS]`: an array of coordinates.
+                    Type::Array(a) if coords && is_f64(&a.elem) => Some((a.len.clone(), 0)),
+                    // `pub l: f32`: everything is f64 (and lifted to dual numbers).
+                    ty if !is_f64(ty) => {
+                        let message = if coords {
+                            "coordinates are `f64` or arrays `[f64; LEN]`"
+                        } else {
+                            "fields of a mechanism's structs are `f64`"
+                        };
+                        cx.error_spanned_by(ty, message);
+                        None
+                    }
+                    _ => None,
+                };
                 Field {
                     attrs: f.attrs.clone(),
                     ident: f.ident.clone().unwrap(),
+                    array,
                 }
             })
             .collect(),

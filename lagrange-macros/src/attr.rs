@@ -64,11 +64,13 @@ impl Kind {
     /// The arguments this kind accepts.
     fn allowed_arguments(self) -> &'static [&'static str] {
         match self {
-            Kind::Particle => &["mass"],
-            Kind::RigidBody => &["mass", "inertia"],
-            Kind::Force | Kind::Torque | Kind::GeneralizedForce => &["on"],
+            Kind::Particle => &["mass", "count"],
+            Kind::RigidBody => &["mass", "inertia", "count"],
+            Kind::Point => &["count"],
+            Kind::Force => &["on", "count"],
+            Kind::Torque | Kind::GeneralizedForce => &["on"],
             Kind::Friction => &["on", "kinetic", "stiction"],
-            Kind::Point | Kind::Potential | Kind::Gravity => &[],
+            Kind::Potential | Kind::Gravity => &[],
             Kind::Constraint | Kind::VelocityConstraint | Kind::Unilateral => &[],
         }
     }
@@ -106,6 +108,8 @@ pub struct Args {
     /// Coulomb coefficients of a friction row.
     pub kinetic: Option<Expr>,
     pub stiction: Option<Expr>,
+    /// A family: the number of members (`count = LINKS`), each a function of its index.
+    pub count: Option<Expr>,
     /// The arguments did not parse (already reported): nothing is "missing".
     pub malformed: bool,
 }
@@ -153,6 +157,7 @@ pub fn parse_args(cx: &Ctxt, kind: Kind, attr: &Attribute) -> Args {
         on: None,
         kinetic: None,
         stiction: None,
+        count: None,
         malformed: false,
     };
     let parsed = match &attr.meta {
@@ -209,6 +214,7 @@ fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
         "mass" => args.mass.replace(value).is_some(),
         "kinetic" => args.kinetic.replace(value).is_some(),
         "stiction" => args.stiction.replace(value).is_some(),
+        "count" => args.count.replace(value).is_some(),
         "inertia" => {
             let inertia = match value {
                 Expr::Array(array) => Inertia::Principal(array),

@@ -59,14 +59,29 @@ pub struct Body<'a> {
     pub decl: &'a Decl,
     pub shape: Shape,
     pub row: usize,
+    /// A family (`count = N`): the number of members, member k at rows `row + k * shape.rows()`.
+    pub count: Option<usize>,
+}
+
+impl Body<'_> {
+    /// Members: 1, or the family's count.
+    pub fn members(&self) -> usize {
+        self.count.unwrap_or(1)
+    }
+    /// Rows of x the body (all its members) occupies.
+    pub fn rows(&self) -> usize {
+        self.shape.rows() * self.members()
+    }
 }
 
 /// A force, torque or generalized force and what it acts on.
 pub struct Force<'a> {
     pub decl: &'a Decl,
-    /// Index into `bodies` (force, torque) or `coords` (generalized force).
+    /// Index into `bodies` (force, torque) or the coordinate's slot (generalized force).
     pub target: usize,
     pub kind: Kind,
+    /// A family of forces, one on each member of a family of bodies.
+    pub count: Option<usize>,
 }
 
 /// A constraint row, in declaration order among constraints.
@@ -104,6 +119,11 @@ pub struct Model<'a> {
 }
 
 impl<'a> Model<'a> {
+    /// Degrees of freedom: every element of every coordinate.
+    pub fn dof(&self) -> usize {
+        crate::ast::slot_count(self.coords)
+    }
+
     /// The free names of a group of functions.
     pub fn names_used_by<'d>(&self, decls: impl IntoIterator<Item = &'d Decl>) -> BTreeSet<String> {
         decls
@@ -166,11 +186,11 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
             .collect(),
         free_names: HashMap::new(),
         rheonomic: false,
-        rows: bodies.iter().map(|b| b.shape.rows()).sum(),
+        rows: bodies.iter().map(|b| b.rows()).sum(),
         inertial_rows: bodies
             .iter()
             .filter(|b| b.shape.has_mass())
-            .map(|b| b.shape.rows())
+            .map(|b| b.rows())
             .sum(),
         bodies,
     };
@@ -179,6 +199,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
         check_function(cx, &mut model, decl);
     }
     check_masses(cx, &model);
+    check_indices(cx, &model);
     check_constraint_count(cx, &model);
     check_coordinates_are_used(cx, &model);
     Some(model)
@@ -194,16 +215,50 @@ fn lay_out_bodies<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Vec<Body<'a>> {
             decl,
             shape: body_shape(cx, decl),
             row: 0,
+            count: family_count(cx, mechanism, decl),
         })
         .collect();
     let mut row = 0;
     for massive in [true, false] {
         for body in bodies.iter_mut().filter(|b| b.shape.has_mass() == massive) {
             body.row = row;
-            row += body.shape.rows();
+            row += body.rows();
         }
     }
     bodies
+}
+
+/// The number of members of a family (`count = LINKS`), reporting a length the macro cannot read.
+fn family_count(cx: &Ctxt, mechanism: &Mechanism, decl: &Decl) -> Option<usize> {
+    let expr = decl.args.count.as_ref()?;
+    match mechanism.constant_length(expr) {
+        // `#[particle(mass = m, count = 0)]`: a family has members.
+        Some(0) => {
+            cx.error_spanned_by(expr, "a family needs at least one member");
+            None
+        }
+        Some(n) => Some(n),
+        // `count = links()`: the macro lays out rows, so it needs the number.
+        None => {
+            cx.error_spanned_by(
+                expr,
+                "`count` is an integer literal or a `const NAME: usize = <integer>;` of this module",
+            );
+            None
+        }
+    }
+}
+
+/// The index of a family member: the one `usize` argument of its function.
+pub fn family_index(decl: &Decl) -> Option<&Ident> {
+    decl.args.count.as_ref()?;
+    match decl.sig.inputs.first()? {
+        syn::FnArg::Typed(t) => match &*t.pat {
+            syn::Pat::Ident(p) => Some(&p.ident),
+            _ => None,
+        },
+        _ => None,
+    }
 }
 
 /// The last segment of a return type, if it is a plain name (`Vec2`, `lagrange::Vec2`).
@@ -318,8 +373,23 @@ fn check_duplicates(cx: &Ctxt, mechanism: &Mechanism, coords: &[Field], params: 
 /// A marked function takes no arguments, no generics, and is a plain `fn`.
 fn check_signature(cx: &Ctxt, decl: &Decl) {
     let sig = &decl.sig;
-    // `fn bob(theta: f64) -> Vec2`: coordinates, parameters and `t` are in scope by name.
-    if !sig.inputs.is_empty() {
+    if decl.args.count.is_some() {
+        // `#[particle(mass = m, count = N)] fn bob() -> Vec2`: a member is a function of its index.
+        let is_index = |arg: &syn::FnArg| {
+            matches!(arg, syn::FnArg::Typed(t)
+                if matches!(&*t.pat, syn::Pat::Ident(p) if p.by_ref.is_none() && p.mutability.is_none() && p.subpat.is_none())
+                && matches!(&*t.ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("usize")))
+        };
+        if sig.inputs.len() != 1 || !sig.inputs.first().is_some_and(is_index) {
+            let message = "a family's function takes its member's index: `fn name(i: usize)`";
+            if sig.inputs.is_empty() {
+                cx.error_spanned_by(&sig.ident, message);
+            } else {
+                cx.error_spanned_by(&sig.inputs, message);
+            }
+        }
+    } else if !sig.inputs.is_empty() {
+        // `fn bob(theta: f64) -> Vec2`: coordinates, parameters and `t` are in scope by name.
         cx.error_spanned_by(
             &sig.inputs,
             "declaration functions take no arguments: coordinates, parameters and `t` are in scope by name",
@@ -425,7 +495,11 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
             Context::Force
         }
     };
-    let free = names::free_names(&decl.block);
+    let index = family_index(decl);
+    let free: Vec<Ident> = names::free_names(&decl.block)
+        .into_iter()
+        .filter(|i| Some(i) != index)
+        .collect();
     let mut seen = BTreeSet::new();
     // Each name is resolved (and reported) once per function.
     let mut constant = true;
@@ -485,7 +559,19 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
         return None;
     };
     let target = match kind {
-        Kind::GeneralizedForce => model.coords.iter().position(|c| c.ident == *on),
+        Kind::GeneralizedForce => {
+            let field = model.coords.iter().position(|c| c.ident == *on);
+            // `#[generalized_force(on = theta)]` with `theta: [f64; N]`: one element is meant.
+            if let Some(f) = field.filter(|&f| model.coords[f].array.is_some()) {
+                cx.error_spanned_by(
+                    on,
+                    format!("`{on}` is an array of coordinates: a generalized force acts on a scalar coordinate"),
+                );
+                let _ = f;
+                return None;
+            }
+            field.map(|f| crate::ast::slot_count(&model.coords[..f]))
+        }
         _ => model.bodies.iter().position(|b| b.decl.ident() == on),
     };
     let Some(target) = target else {
@@ -520,7 +606,126 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
             ),
         );
     }
-    Some(Force { decl, target, kind })
+    let count = family_count(cx, model.mechanism, decl);
+    if kind != Kind::GeneralizedForce {
+        let members = model.bodies[target].count;
+        match (members, count) {
+            (Some(n), Some(m)) if n != m => {
+                // `#[force(on = bob, count = 4)]` on a family of 8: one force per member.
+                cx.error_spanned_by(
+                    decl.args.count.as_ref(),
+                    format!("mismatched family length: `{on}` has {n} members, this family of forces has {m}"),
+                );
+            }
+            (Some(n), None) if kind == Kind::Force && !decl.args.malformed => cx.error_spanned_by(
+                on,
+                format!("`{on}` is a family of {n}: the force on it is a family too, `#[force(on = {on}, count = {n})] fn {}(i: usize)`", decl.ident()),
+            ),
+            (Some(_), _) if kind == Kind::Torque => cx.error_spanned_by(
+                on,
+                format!("`{on}` is a family: torques on families are not supported"),
+            ),
+            (None, Some(_)) => cx.error_spanned_by(
+                decl.args.count.as_ref(),
+                format!("`{on}` is a single body: a family of forces acts on a family of bodies"),
+            ),
+            _ => {}
+        }
+    }
+    Some(Force {
+        decl,
+        target,
+        kind,
+        count,
+    })
+}
+
+/// Indexing an array coordinate or a family: a literal index must be in range, and a family's own
+/// index must not run past an array shorter than the family.
+fn check_indices(cx: &Ctxt, model: &Model) {
+    let mut lengths: HashMap<String, usize> = HashMap::new();
+    for c in model.coords {
+        if let Some((_, n)) = c.array {
+            lengths.insert(c.ident.to_string(), n);
+            lengths.insert(format!("{}_dot", c.ident), n);
+        }
+    }
+    for b in &model.bodies {
+        if let Some(n) = b.count {
+            lengths.insert(b.decl.ident().to_string(), n);
+            lengths.insert(format!("{}_dot", b.decl.ident()), n);
+        }
+    }
+    if lengths.is_empty() {
+        return;
+    }
+    for decl in &model.mechanism.decls {
+        let members = decl
+            .args
+            .count
+            .as_ref()
+            .and_then(|c| model.mechanism.constant_length(c));
+        let family = family_index(decl).zip(members);
+        let mut visitor = Indices {
+            cx,
+            lengths: &lengths,
+            family,
+            family_name: decl.ident(),
+        };
+        syn::visit::Visit::visit_block(&mut visitor, &decl.block);
+    }
+}
+
+struct Indices<'c, 'l> {
+    cx: &'c Ctxt,
+    lengths: &'l HashMap<String, usize>,
+    /// This function's family index and member count.
+    family: Option<(&'l Ident, usize)>,
+    family_name: &'l Ident,
+}
+
+impl<'ast> syn::visit::Visit<'ast> for Indices<'_, '_> {
+    fn visit_expr_index(&mut self, e: &'ast syn::ExprIndex) {
+        let base = match &*e.expr {
+            syn::Expr::Path(p) => p.path.get_ident(),
+            _ => None,
+        };
+        if let Some((name, &len)) = base.and_then(|b| self.lengths.get_key_value(&b.to_string())) {
+            match &*e.index {
+                // `theta[8]` with `theta: [f64; 8]`.
+                syn::Expr::Lit(syn::ExprLit {
+                    lit: syn::Lit::Int(i),
+                    ..
+                }) => {
+                    if let Ok(k) = i.base10_parse::<usize>() {
+                        if k >= len {
+                            self.cx.error_spanned_by(
+                                i,
+                                format!("index {k} is out of range: `{name}` has {len} elements"),
+                            );
+                        }
+                    }
+                }
+                // `theta[i]` in a family of 9 with `theta: [f64; 8]`.
+                syn::Expr::Path(p) => {
+                    if let Some((index, members)) = self.family {
+                        if p.path.is_ident(index) && members > len {
+                            self.cx.error_spanned_by(
+                                &e.index,
+                                format!(
+                                    "mismatched family length: `{}` has {members} members but `{name}` has {len} elements, so `{name}[{index}]` is out of range",
+                                    self.family_name
+                                ),
+                            );
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        syn::visit::visit_expr_index(self, e);
+    }
+    fn visit_item(&mut self, _: &'ast syn::Item) {}
 }
 
 /// A constraint's value is an expression that vanishes (or is ≥ 0), not a comparison.
@@ -559,8 +764,8 @@ fn check_constraint_count(cx: &Ctxt, model: &Model) {
         .iter()
         .filter(|r| matches!(r.decl.kind(), Kind::Constraint | Kind::VelocityConstraint));
     // Two coordinates and three `#[constraint]`s: at most two of them can be independent.
-    if let Some(extra) = bilateral.clone().nth(model.coords.len()) {
-        let n = model.coords.len();
+    if let Some(extra) = bilateral.clone().nth(model.dof()) {
+        let n = model.dof();
         cx.error_spanned_by(
             extra.decl.ident(),
             format!(
@@ -789,6 +994,9 @@ impl Resolver<'_, '_> {
                 format!("potentials cannot depend on velocities: `{ident}` is in scope in forces only (write a `#[force]` or `#[generalized_force]`)"),
             ),
             // `fn bob1() -> Vec2 { bob2 + ... }` where `bob2` comes later (or is `bob1` itself).
+            // A family member names earlier members of its own family: `bob[i - 1]`.
+            (Context::Position(me), Some(Name::Body(b)))
+                if b == me && self.model.bodies[me].count.is_some() => {}
             (Context::Position(me), Some(Name::Body(b))) if b >= me => {
                 let this = self.model.bodies[me].decl.ident();
                 let message = if b == me {

@@ -92,12 +92,7 @@ fn generate(model: &Model) -> TokenStream {
     let inherent = inherent_impl(model);
     let model_impl = model_impl(model);
     let constrained = (!model.constraints.is_empty()).then_some(model.constraints.len());
-    let mechanism_impl = mechanism_impl(
-        model.params_ident,
-        model.coords.len(),
-        model.rows,
-        constrained,
-    );
+    let mechanism_impl = mechanism_impl(model.params_ident, model.dof(), model.rows, constrained);
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     quote! {
         #(#attrs)*
@@ -117,7 +112,7 @@ fn generate(model: &Model) -> TokenStream {
 /// `Coords<T = f64>`, its `Coordinates` impl, `DOF` and `State`.
 fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
     let p = private();
-    let n = lit(coords.len());
+    let n = lit(crate::ast::slot_count(coords));
     // The user's attributes but their derives: `Coords` derives what it needs itself.
     let attrs = mechanism
         .coords
@@ -131,24 +126,71 @@ fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
         .unwrap_or(syn::Visibility::Inherited);
     let field_attrs = coords.iter().map(|f| &f.attrs);
     let names: Vec<&Ident> = coords.iter().map(|f| &f.ident).collect();
-    let strings = names.iter().map(|n| n.to_string());
-    let indices = (0..coords.len()).map(lit);
+    let types = coords.iter().map(|f| match &f.array {
+        Some((len, _)) => quote!([T; #len]),
+        None => quote!(T),
+    });
+    // Names, flattened values and the values' fields, element by element for arrays.
+    let mut strings = Vec::new();
+    let mut flat = Vec::new();
+    let mut rebuilt = Vec::new();
+    let mut slot = 0;
+    for field in coords {
+        let name = &field.ident;
+        match &field.array {
+            Some((_, len)) => {
+                let slots: Vec<_> = (slot..slot + len).map(lit).collect();
+                strings.extend((0..*len).map(|k| format!("{name}[{k}]")));
+                flat.extend((0..*len).map(|k| {
+                    let k = lit(k);
+                    quote!(self.#name[#k])
+                }));
+                rebuilt.push(quote!(#name: [#(values[#slots]),*]));
+                slot += len;
+            }
+            None => {
+                let s = lit(slot);
+                strings.push(name.to_string());
+                flat.push(quote!(self.#name));
+                rebuilt.push(quote!(#name: values[#s]));
+                slot += 1;
+            }
+        }
+    }
+    // `Default` is derived for scalar fields; arrays longer than 32 have no `Default`, so it is
+    // written out when there are arrays.
+    let has_arrays = coords.iter().any(|f| f.array.is_some());
+    let default_derive = (!has_arrays).then(|| quote!(, #p::core::default::Default));
+    let default_impl = has_arrays.then(|| {
+        let values = coords.iter().map(|f| match &f.array {
+            Some(_) => quote!(#p::core::array::from_fn(|_| T::default())),
+            None => quote!(T::default()),
+        });
+        quote! {
+            impl<T: #p::core::default::Default> #p::core::default::Default for Coords<T> {
+                fn default() -> Self {
+                    Coords { #(#names: #values),* }
+                }
+            }
+        }
+    });
     quote! {
         #(#attrs)*
-        #[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq, #p::core::default::Default)]
+        #[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq #default_derive)]
         #vis struct Coords<T = f64> {
-            #( #(#field_attrs)* pub #names: T, )*
+            #( #(#field_attrs)* pub #names: #types, )*
         }
+        #default_impl
 
         impl #p::Coordinates<#n> for Coords<f64> {
             const NAMES: [&'static str; #n] = [#(#strings),*];
             #[inline(always)]
             fn to_array(&self) -> [f64; #n] {
-                [#(self.#names),*]
+                [#(#flat),*]
             }
             #[inline(always)]
             fn from_array(values: [f64; #n]) -> Self {
-                Coords { #(#names: values[#indices]),* }
+                Coords { #(#rebuilt),* }
             }
         }
 
@@ -191,8 +233,20 @@ fn bodies_structs(model: &Model) -> TokenStream {
                 .collect()
         })
         .collect();
-    let (positions, velocities): (Vec<_>, Vec<_>) =
-        model.bodies.iter().map(|b| body_types(b.shape)).unzip();
+    let (positions, velocities): (Vec<_>, Vec<_>) = model
+        .bodies
+        .iter()
+        .map(|b| {
+            let (position, velocity) = body_types(b.shape);
+            match b.count {
+                Some(n) => {
+                    let n = lit(n);
+                    (quote!([#position; #n]), quote!([#velocity; #n]))
+                }
+                None => (position, velocity),
+            }
+        })
+        .unzip();
     let derive = quote!(#[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq)]);
     quote! {
         /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
@@ -214,10 +268,33 @@ fn bodies_structs(model: &Model) -> TokenStream {
     }
 }
 
+/// `let [theta1, theta2] = *__q;` (names with `suffix`), or for array coordinates
+/// `let x = __q[0]; let theta = [__q[1], __q[2]];`.
+fn bind_coordinates(model: &Model, q: &TokenStream, suffix: &str) -> TokenStream {
+    let name = |c: &Field| format_ident!("{}{}", c.ident, suffix);
+    if model.coords.iter().all(|c| c.array.is_none()) {
+        let names = model.coords.iter().map(name);
+        return quote!(let [#(#names),*] = *#q;);
+    }
+    let mut out = TokenStream::new();
+    let mut slot = 0;
+    for c in model.coords {
+        let ident = name(c);
+        let slots: Vec<_> = (slot..slot + c.slots()).map(lit).collect();
+        if c.array.is_some() {
+            out.extend(quote!(let #ident = [#(#q[#slots]),*];));
+        } else {
+            out.extend(quote!(let #ident = #(#q[#slots])*;));
+        }
+        slot += c.slots();
+    }
+    out
+}
+
 /// `let theta1 = …; let l1 = <__D>::from(self.l1); let t = __t;` for the names `used`.
 fn bind_inputs(model: &Model, used: &BTreeSet<String>, q: TokenStream) -> TokenStream {
     let d = scalar();
-    let coords = model.coords.iter().map(|c| &c.ident);
+    let coords = bind_coordinates(model, &q, "");
     let params = model
         .params
         .iter()
@@ -225,7 +302,7 @@ fn bind_inputs(model: &Model, used: &BTreeSet<String>, q: TokenStream) -> TokenS
         .filter(|p| used.contains(&p.to_string()));
     let time = used.contains("t").then(|| quote!(let t = __t;));
     quote! {
-        let [#(#coords),*] = *#q;
+        #coords
         #( let #params = <#d>::from(self.#params); )*
         #time
     }
@@ -243,14 +320,22 @@ fn optimized_blocks<'d>(
     let trig: BTreeSet<String> = model
         .coords
         .iter()
+        .filter(|c| c.array.is_none())
         .map(|c| c.ident.to_string())
         .chain(std::iter::once("t".to_string()))
+        .collect();
+    let arrays: BTreeSet<String> = model
+        .coords
+        .iter()
+        .filter(|c| c.array.is_some())
+        .map(|c| c.ident.to_string())
         .collect();
     let lets = optimize::optimize(
         &mut blocks,
         &optimize::Scope {
             params: &params,
             trig: &trig,
+            arrays: &arrays,
         },
         &d,
     );
@@ -272,7 +357,7 @@ fn position_type(shape: Shape) -> TokenStream {
 /// The inherent impl: `bodies`, `body_velocities`, and the private generic body functions.
 fn inherent_impl(model: &Model) -> TokenStream {
     let p = private();
-    let (params, n, k) = (model.params_ident, lit(model.coords.len()), lit(model.rows));
+    let (params, n, k) = (model.params_ident, lit(model.dof()), lit(model.rows));
     let bodies_fn = bodies_fn(model);
     let from_cartesian = (!model.potentials.is_empty()
         || !model.gravities.is_empty()
@@ -309,13 +394,37 @@ fn inherent_impl(model: &Model) -> TokenStream {
 /// The user's position functions as `let` bindings in declaration order, on any scalar.
 fn bodies_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, d) = (lit(model.coords.len()), scalar());
+    let n = lit(model.dof());
     let prelude = prelude();
     let used = model.names_used_by(model.bodies.iter().map(|b| b.decl));
     let inputs = bind_inputs(model, &used, quote!(__q));
     let names: Vec<&Ident> = model.bodies.iter().map(|b| b.decl.ident()).collect();
-    let types = model.bodies.iter().map(|b| position_type(b.shape));
     let (shared, blocks) = optimized_blocks(model, model.bodies.iter().map(|b| &b.decl.block));
+    let values: Vec<TokenStream> = model
+        .bodies
+        .iter()
+        .zip(blocks)
+        .map(|(b, block)| {
+            let ty = position_type(b.shape);
+            let name = b.decl.ident();
+            match (b.count, check::family_index(b.decl)) {
+                // A family: member i is the block with the index bound, earlier members readable.
+                (Some(n), Some(index)) => {
+                    let n = lit(n);
+                    let zero = zero_position(b.shape);
+                    quote!(let #name: [#ty; #n] = {
+                        let mut #name: [#ty; #n] = #p::core::array::from_fn(|_| #zero);
+                        for #index in 0..#n {
+                            let __member: #ty = #block;
+                            #name[#index] = __member;
+                        }
+                        #name
+                    };)
+                }
+                _ => quote!(let #name: #ty = #block;),
+            }
+        })
+        .collect();
     quote! {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -323,9 +432,23 @@ fn bodies_fn(model: &Model) -> TokenStream {
             #prelude
             #inputs
             #shared
-            #( let #names: #types = #blocks; )*
+            #(#values)*
             Bodies { #(#names),* }
         }
+    }
+}
+
+/// A position of `shape` at the origin, on `__D` (the start of a family being filled in).
+fn zero_position(shape: Shape) -> TokenStream {
+    let g = quote!(::lagrange::__private::geometry);
+    let z = quote!(<__D>::zero());
+    match shape {
+        Shape::Planar => quote!(#g::planar(#g::vec2(#z, #z), #z)),
+        Shape::Spatial => {
+            quote!(#g::spatial(#g::vec3(#z, #z, #z), #g::Rot3 { rows: [[#z, #z, #z], [#z, #z, #z], [#z, #z, #z]] }))
+        }
+        _ if shape.dim() == Dim::Two => quote!(#g::vec2(#z, #z)),
+        _ => quote!(#g::vec3(#z, #z, #z)),
     }
 }
 
@@ -337,8 +460,20 @@ fn row(x: &TokenStream, i: usize) -> TokenStream {
 
 /// A body rebuilt from its rows of x (or ẋ, for velocities).
 fn unflatten(body: &Body, x: &TokenStream, velocity: bool) -> TokenStream {
+    match body.count {
+        Some(n) => {
+            let members =
+                (0..n).map(|k| unflatten_at(body, body.row + k * body.shape.rows(), x, velocity));
+            quote!([#(#members),*])
+        }
+        None => unflatten_at(body, body.row, x, velocity),
+    }
+}
+
+/// One body (or family member) whose first row is `first`.
+fn unflatten_at(body: &Body, first: usize, x: &TokenStream, velocity: bool) -> TokenStream {
     let g = quote!(::lagrange::__private::geometry);
-    let r = |i: usize| row(x, body.row + i);
+    let r = |i: usize| row(x, first + i);
     let (r0, r1, r2) = (r(0), r(1), r(2));
     match body.shape {
         Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => quote!(#g::vec2(#r0, #r1)),
@@ -356,8 +491,20 @@ fn unflatten(body: &Body, x: &TokenStream, velocity: bool) -> TokenStream {
     }
 }
 
-/// The rows of x a body occupies, read from its position `b`.
+/// The rows of x a body (every member of a family) occupies, read from its position `b`.
 fn flatten(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
+    match body.count {
+        Some(n) => (0..n)
+            .flat_map(|k| {
+                let k = lit(k);
+                flatten_one(body, &quote!(#b[#k]))
+            })
+            .collect(),
+        None => flatten_one(body, b),
+    }
+}
+
+fn flatten_one(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
     match body.shape {
         Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => vec![quote!(#b.x), quote!(#b.y)],
         Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => {
@@ -441,7 +588,7 @@ fn model_impl(model: &Model) -> TokenStream {
     let p = private();
     let (params, n, k, inertial) = (
         model.params_ident,
-        lit(model.coords.len()),
+        lit(model.dof()),
         lit(model.rows),
         lit(model.inertial_rows),
     );
@@ -475,7 +622,7 @@ fn model_impl(model: &Model) -> TokenStream {
 /// moving in the field's dimension (V = −w·x, 𝓕 = Jᵀw, computed by `lagrange_core::dynamics`).
 fn weights_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, k) = (lit(model.coords.len()), lit(model.rows));
+    let (n, k) = (lit(model.dof()), lit(model.rows));
     let used = model.names_used_by(model.uniform_gravities.iter().map(|(g, _)| *g));
     let params = model
         .params
@@ -502,9 +649,12 @@ fn weights_fn(model: &Model) -> TokenStream {
             .filter(|b| b.shape.has_mass() && b.shape.dim() == *dim)
             .flat_map(|b| {
                 let ident = &ident;
-                components.iter().enumerate().map(move |(i, c)| {
-                    let (r, c) = (lit(b.row + i), format_ident!("{}", c));
-                    quote!(__weights[#r] += #ident.#c * __masses[#r];)
+                (0..b.members()).flat_map(move |member| {
+                    let first = b.row + member * b.shape.rows();
+                    components.iter().enumerate().map(move |(i, c)| {
+                        let (r, c) = (lit(first + i), format_ident!("{}", c));
+                        quote!(__weights[#r] += #ident.#c * __masses[#r];)
+                    })
                 })
             })
             .collect::<Vec<_>>();
@@ -608,25 +758,26 @@ fn masses_fn(model: &Model) -> TokenStream {
     for body in &model.bodies {
         let mass = format_ident!("__mass_{}", body.decl.ident());
         let inertia = format_ident!("__inertia_{}", body.decl.ident());
-        let r = body.row;
-        match body.shape {
-            Shape::Point(_) => {}
-            Shape::Particle(dim) => {
-                let d = if dim == Dim::Two { 2 } else { 3 };
-                (0..d).for_each(|i| rows[r + i] = quote!(#mass));
-            }
-            Shape::Planar => {
-                rows[r] = quote!(#mass);
-                rows[r + 1] = quote!(#mass);
-                rows[r + 2] = quote!(#inertia);
-            }
-            Shape::Spatial => {
-                (0..3).for_each(|i| rows[r + i] = quote!(#mass));
-                // Column k carries J_k = (I₁ + I₂ + I₃)/2 − I_k (see lagrange_core::model).
-                for col in 0..3usize {
-                    let j =
-                        quote!(((#inertia[0] + #inertia[1] + #inertia[2]) * 0.5 - #inertia[#col]));
-                    (0..3).for_each(|i| rows[r + 3 + 3 * col + i] = j.clone());
+        for member in 0..body.members() {
+            let r = body.row + member * body.shape.rows();
+            match body.shape {
+                Shape::Point(_) => {}
+                Shape::Particle(dim) => {
+                    let d = if dim == Dim::Two { 2 } else { 3 };
+                    (0..d).for_each(|i| rows[r + i] = quote!(#mass));
+                }
+                Shape::Planar => {
+                    rows[r] = quote!(#mass);
+                    rows[r + 1] = quote!(#mass);
+                    rows[r + 2] = quote!(#inertia);
+                }
+                Shape::Spatial => {
+                    (0..3).for_each(|i| rows[r + i] = quote!(#mass));
+                    // Column k carries J_k = (I₁ + I₂ + I₃)/2 − I_k (see lagrange_core::model).
+                    for col in 0..3usize {
+                        let j = quote!(((#inertia[0] + #inertia[1] + #inertia[2]) * 0.5 - #inertia[#col]));
+                        (0..3).for_each(|i| rows[r + 3 + 3 * col + i] = j.clone());
+                    }
                 }
             }
         }
@@ -642,7 +793,7 @@ fn masses_fn(model: &Model) -> TokenStream {
 
 fn cartesian_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, k) = (lit(model.coords.len()), lit(model.rows));
+    let (n, k) = (lit(model.dof()), lit(model.rows));
     let mut by_row: Vec<&Body> = model.bodies.iter().collect();
     by_row.sort_by_key(|b| b.row);
     let rows = by_row.iter().flat_map(|b| {
@@ -666,7 +817,7 @@ fn bind_bodies(model: &Model) -> TokenStream {
 
 fn potential_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, k, d) = (lit(model.coords.len()), lit(model.rows), scalar());
+    let (n, k) = (lit(model.dof()), lit(model.rows));
     let prelude = prelude();
     let decls = model
         .potentials
@@ -713,30 +864,38 @@ fn gravity_terms(model: &Model, decl: &crate::ast::Decl, dim: Dim) -> TokenStrea
         .bodies
         .iter()
         .filter(|b| b.shape.has_mass() && b.shape.dim() == dim)
-        .map(|b| {
-            let (name, row) = (b.decl.ident(), lit(b.row));
-            let centre = match b.shape {
-                Shape::Planar | Shape::Spatial => quote!(#name.position),
-                _ => quote!(#name),
-            };
-            quote!(__potential -= #ident.dot(&#centre) * __masses[#row];)
+        .flat_map(|b| {
+            let ident = &ident;
+            (0..b.members()).map(move |member| {
+                let name = b.decl.ident();
+                let row = lit(b.row + member * b.shape.rows());
+                let body = match b.count {
+                    Some(_) => {
+                        let k = lit(member);
+                        quote!(#name[#k])
+                    }
+                    None => quote!(#name),
+                };
+                let centre = match b.shape {
+                    Shape::Planar | Shape::Spatial => quote!(#body.position),
+                    _ => body,
+                };
+                quote!(__potential -= #ident.dot(&#centre) * __masses[#row];)
+            })
         });
     quote!(let #ident: #ty = #block; #(#terms)*)
 }
 
 fn applied_forces_fn(model: &Model) -> TokenStream {
     let p = private();
-    let (n, k, d) = (lit(model.coords.len()), lit(model.rows), scalar());
+    let (n, k) = (lit(model.dof()), lit(model.rows));
     let prelude = prelude();
     let inputs = bind_inputs(
         model,
         &model.names_used_by(model.forces.iter().map(|f| f.decl)),
         quote!(__q),
     );
-    let velocities = model
-        .coords
-        .iter()
-        .map(|c| format_ident!("{}_dot", c.ident));
+    let velocities = bind_coordinates(model, &quote!(__v), "_dot");
     let bodies = bind_bodies(model);
     let names = model.bodies.iter().map(|b| b.decl.ident());
     let body_velocities = model
@@ -755,11 +914,21 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
                 } else {
                     &["x", "y", "z"]
                 };
-                let adds = components.iter().enumerate().map(|(i, c)| {
-                    let (r, c) = (lit(body.row + i), format_ident!("{}", c));
-                    quote!(__cartesian_force[#r] += #ident.#c;)
-                });
-                quote!(let #ident: #ty = #block; #(#adds)*)
+                if let (Some(n), Some(index)) = (force.count, check::family_index(force.decl)) {
+                    // One force per member: member i's rows start at row + i · rows.
+                    let (first, stride, n) = (lit(body.row), lit(body.shape.rows()), lit(n));
+                    let adds = components.iter().enumerate().map(|(i, c)| {
+                        let (i, c) = (lit(i), format_ident!("{}", c));
+                        quote!(__cartesian_force[#first + #index * #stride + #i] += #ident.#c;)
+                    });
+                    quote!(for #index in 0..#n { let #ident: #ty = #block; #(#adds)* })
+                } else {
+                    let adds = components.iter().enumerate().map(|(i, c)| {
+                        let (r, c) = (lit(body.row + i), format_ident!("{}", c));
+                        quote!(__cartesian_force[#r] += #ident.#c;)
+                    });
+                    quote!(let #ident: #ty = #block; #(#adds)*)
+                }
             }
             Kind::Torque => {
                 let r = lit(model.bodies[force.target].row + 2);
@@ -786,7 +955,7 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
             #prelude
             #inputs
             #shared
-            let [#(#velocities),*] = *__v;
+            #velocities
             #bodies
             let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
             #(#forces)*
@@ -865,7 +1034,7 @@ fn constraints_impl(model: &Model) -> TokenStream {
     let constraints = quote!(#p::lagrange_core::constraints);
     let (params, n, k, c) = (
         model.params_ident,
-        lit(model.coords.len()),
+        lit(model.dof()),
         lit(model.rows),
         lit(model.constraints.len()),
     );
@@ -911,7 +1080,7 @@ fn constraints_impl(model: &Model) -> TokenStream {
 fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
     let p = private();
     let (n, k, c, d) = (
-        lit(model.coords.len()),
+        lit(model.dof()),
         lit(model.rows),
         lit(model.constraints.len()),
         scalar(),
@@ -943,11 +1112,11 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
         quote!(fn velocity_constraints<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], __x: &[__D; #k], __x_dot: &[__D; #k]) -> [__D; #c])
     };
     let velocities = (!position).then(|| {
-        let coords = model.coords.iter().map(|c| format_ident!("{}_dot", c.ident));
+        let coords = bind_coordinates(model, &quote!(__v), "_dot");
         let names = model.bodies.iter().map(|b| b.decl.ident());
         let body_velocities = model.bodies.iter().map(|b| format_ident!("{}_dot", b.decl.ident()));
         quote! {
-            let [#(#coords),*] = *__v;
+            #coords
             let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
         }
     });
@@ -1005,7 +1174,7 @@ fn fallback(mechanism: &Mechanism, model: Option<&Model>, errors: Vec<syn::Error
             .map(|(_, f)| &f[..])
             .unwrap_or_default(),
     );
-    let n = lit(coords.len());
+    let n = lit(crate::ast::slot_count(&coords));
     let coords_items = coords_items(mechanism, &coords);
     let params = mechanism.params.as_ref().map(|(s, _)| {
         let mut s = s.clone();

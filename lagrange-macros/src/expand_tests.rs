@@ -288,3 +288,32 @@ fn a_constraint_brings_the_constrained_solve_and_friction_only_when_declared() {
     assert!(rough.contains("fn friction_coefficients"));
     assert!(rough.contains("ConstraintKind::Friction"));
 }
+
+#[test]
+fn array_coordinates_and_a_family_of_bodies() {
+    let out = snapshot(
+        "chain",
+        quote! {
+            pub mod chain {
+                pub const LINKS: usize = 3;
+                pub struct Coords { pub theta: [f64; LINKS] }
+                pub struct Chain { pub m: f64, pub l: f64, pub g: f64 }
+                #[particle(mass = m, count = LINKS)]
+                fn bob(i: usize) -> Vec2 {
+                    let link = vec2(theta[i].sin(), -theta[i].cos()) * l;
+                    if i == 0 { link } else { bob[i - 1] + link }
+                }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+            }
+        },
+    );
+    assert!(out.contains("pub theta: [T; LINKS]"));
+    assert!(
+        out.contains(r#"const NAMES: [&'static str; 3] = ["theta[0]", "theta[1]", "theta[2]"];"#)
+    );
+    assert!(out.contains("impl ::lagrange::__private::Model<3, 6> for Chain"));
+    // One sin_cos per element, shared by every member's sin and cos.
+    assert!(out.contains("theta.map(|__x| __x.sin_cos())"));
+    assert!(!out.contains(".sin()"));
+}

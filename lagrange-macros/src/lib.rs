@@ -45,6 +45,46 @@ use proc_macro::TokenStream;
 /// body; forces, velocity constraints and friction also `<coordinate>_dot` and `<body>_dot`. Other
 /// items of the module are kept as written.
 ///
+/// **Arrays and families.** A coordinate may be an array, `pub theta: [f64; LINKS]`, its length an
+/// integer literal or a `const LINKS: usize = 8;` of the module; in every function `theta` is then
+/// an array (`theta[i]`, and `theta_dot[i]` in forces), and `Coords { theta: [..] }` holds it as
+/// written (messages name elements `theta[3]`). A body or point written once for many members is a
+/// *family*: `count = N` in its attribute and the member's index as the function's one argument.
+/// The function is evaluated for `i = 0, 1, …, N − 1` in order, and may read earlier members of its
+/// own family (`bob[i - 1]`); everywhere else the family is an array of positions (`bob[k]`,
+/// `bob_dot[k]`), in `Bodies` too. A force on a family is a family of the same length, one force
+/// per member:
+///
+/// ```text
+/// #[mechanism]
+/// pub mod chain {
+///     pub const LINKS: usize = 8;
+///     pub struct Coords { pub theta: [f64; LINKS] }
+///     pub struct Chain { pub m: f64, pub l: f64, pub g: f64, pub c: f64 }
+///
+///     #[particle(mass = m, count = LINKS)]
+///     fn bob(i: usize) -> Vec2 {
+///         let link = vec2(theta[i].sin(), -theta[i].cos()) * l;
+///         if i == 0 { link } else { bob[i - 1] + link }
+///     }
+///
+///     #[force(on = bob, count = LINKS)]
+///     fn drag(i: usize) -> Vec2 { bob_dot[i] * (-c) }
+///
+///     #[gravity]
+///     fn down() -> Vec2 { vec2(0.0, -g) }
+/// }
+/// ```
+///
+/// Compile errors: a literal index past an array or family (`theta[8]` of 8), a family indexing an
+/// array with its own index when it has more members than the array has elements, a family of
+/// forces whose length differs from its bodies'. Torques and generalized forces act on single
+/// bodies and scalar coordinates.
+///
+/// **What the expansion does for speed.** Subexpressions that name only parameters (`alpha.sin()`,
+/// `l1 * l2`) are evaluated once in `f64` and lifted, since their derivatives vanish; `sin` and
+/// `cos` of the same coordinate (or array element) share one `sin_cos`.
+///
 /// Generated in the module: `Coords<T = f64>`, `DOF`, `State`, `Bodies<T = f64>` and
 /// `BodyVelocities<T = f64>` with `bodies(&state)` and `body_velocities(&state)` on the parameter
 /// struct, and `Model` and `Mechanism` impls for it (plus `Constraints` when constraints are declared). See the `lagrange` crate's README, "The

@@ -36,6 +36,8 @@ pub struct Scope<'a> {
     /// Names whose `sin`/`cos` may share one `sin_cos` (coordinates, `t`), bound before the
     /// generated `let`s.
     pub trig: &'a BTreeSet<String>,
+    /// Array coordinates: `theta[k].sin()` and `theta[k].cos()` share one `sin_cos` per element.
+    pub arrays: &'a BTreeSet<String>,
 }
 
 /// Rewrites `blocks` in place; returns the `let`s to place after the inputs are bound and before
@@ -47,6 +49,7 @@ pub fn optimize(blocks: &mut [syn::Block], scope: &Scope, scalar: &TokenStream) 
     }
     let params: BTreeSet<String> = scope.params.difference(&bound.0).cloned().collect();
     let trig: BTreeSet<String> = scope.trig.difference(&bound.0).cloned().collect();
+    let arrays: BTreeSet<String> = scope.arrays.difference(&bound.0).cloned().collect();
 
     let mut hoister = Hoister {
         params: &params,
@@ -59,6 +62,7 @@ pub fn optimize(blocks: &mut [syn::Block], scope: &Scope, scalar: &TokenStream) 
 
     let mut calls = TrigCalls {
         names: &trig,
+        arrays: &arrays,
         seen: BTreeMap::new(),
     };
     for block in blocks.iter() {
@@ -70,7 +74,10 @@ pub fn optimize(blocks: &mut [syn::Block], scope: &Scope, scalar: &TokenStream) 
         .filter(|(_, (sin, cos))| *sin && *cos)
         .map(|(name, _)| name)
         .collect();
-    let mut sharer = TrigShare { names: &shared };
+    let mut sharer = TrigShare {
+        names: &shared,
+        arrays: &arrays,
+    };
     for block in blocks.iter_mut() {
         sharer.visit_block_mut(block);
     }
@@ -81,6 +88,10 @@ pub fn optimize(blocks: &mut [syn::Block], scope: &Scope, scalar: &TokenStream) 
     });
     let sincos = shared.iter().map(|name| {
         let name = Ident::new(name, Span::call_site());
+        if arrays.contains(&name.to_string()) {
+            let table = format_ident!("__sin_cos_{}", name);
+            return quote!(let #table = #name.map(|__x| __x.sin_cos()););
+        }
         let (s, c) = (
             format_ident!("__sin_{}", name),
             format_ident!("__cos_{}", name),
@@ -176,27 +187,39 @@ impl VisitMut for Hoister<'_> {
     fn visit_item_mut(&mut self, _: &mut syn::Item) {}
 }
 
-/// `name.sin()` / `name.cos()` (no arguments) with `name` in `names`: `(name, method)`.
-fn trig_call<'e>(expr: &'e Expr, names: &BTreeSet<String>) -> Option<(String, &'e Ident)> {
+/// `name.sin()` / `name.cos()` (no arguments) with `name` in `names`, or `array[k].sin()` with
+/// `array` in `arrays`: `(name, method, k)`.
+fn trig_call<'e>(
+    expr: &'e Expr,
+    names: &BTreeSet<String>,
+    arrays: &BTreeSet<String>,
+) -> Option<(String, &'e Ident, Option<&'e Expr>)> {
     let Expr::MethodCall(m) = expr else {
         return None;
     };
     if !m.args.is_empty() || m.turbofish.is_some() || !(m.method == "sin" || m.method == "cos") {
         return None;
     }
+    if let Expr::Index(index) = &*m.receiver {
+        let name = single_ident(&index.expr)?.to_string();
+        return arrays
+            .contains(&name)
+            .then_some((name, &m.method, Some(&*index.index)));
+    }
     let name = single_ident(&m.receiver)?.to_string();
-    names.contains(&name).then_some((name, &m.method))
+    names.contains(&name).then_some((name, &m.method, None))
 }
 
 struct TrigCalls<'a> {
     names: &'a BTreeSet<String>,
+    arrays: &'a BTreeSet<String>,
     /// Per name: whether `sin`, `cos` are called.
     seen: BTreeMap<String, (bool, bool)>,
 }
 
 impl<'ast> Visit<'ast> for TrigCalls<'_> {
     fn visit_expr(&mut self, expr: &'ast Expr) {
-        if let Some((name, method)) = trig_call(expr, self.names) {
+        if let Some((name, method, _)) = trig_call(expr, self.names, self.arrays) {
             let entry = self.seen.entry(name).or_default();
             if method == "sin" {
                 entry.0 = true;
@@ -210,14 +233,33 @@ impl<'ast> Visit<'ast> for TrigCalls<'_> {
 }
 
 struct TrigShare<'a> {
+    /// Names whose `sin` and `cos` are both called.
     names: &'a BTreeSet<String>,
+    arrays: &'a BTreeSet<String>,
 }
 
 impl VisitMut for TrigShare<'_> {
     fn visit_expr_mut(&mut self, expr: &mut Expr) {
-        if let Some((name, method)) = trig_call(expr, self.names) {
-            let ident = format_ident!("__{}_{}", method, name);
-            *expr = syn::parse_quote!(#ident);
+        let replacement = match trig_call(expr, self.names, self.arrays) {
+            Some((name, method, Some(index))) => {
+                let table = format_ident!("__sin_cos_{}", name);
+                let half = if method == "sin" {
+                    quote!(0)
+                } else {
+                    quote!(1)
+                };
+                let mut index = index.clone();
+                self.visit_expr_mut(&mut index);
+                Some(syn::parse_quote!(#table[#index].#half))
+            }
+            Some((name, method, None)) => {
+                let ident = format_ident!("__{}_{}", method, name);
+                Some(syn::parse_quote!(#ident))
+            }
+            None => None,
+        };
+        if let Some(replacement) = replacement {
+            *expr = replacement;
             return;
         }
         visit_mut::visit_expr_mut(self, expr);
@@ -246,6 +288,7 @@ mod tests {
             &Scope {
                 params: &params,
                 trig: &trig,
+                arrays: &BTreeSet::new(),
             },
             &quote!(__D),
         );
@@ -281,6 +324,7 @@ mod tests {
             &Scope {
                 params: &params,
                 trig: &trig,
+                arrays: &BTreeSet::new(),
             },
             &quote!(__D),
         );

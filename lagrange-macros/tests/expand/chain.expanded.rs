@@ -1,0 +1,308 @@
+pub mod chain {
+    pub const LINKS: usize = 3;
+    pub struct Chain {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    pub struct Coords<T = f64> {
+        pub theta: [T; LINKS],
+    }
+    impl<
+        T: ::lagrange::__private::core::default::Default,
+    > ::lagrange::__private::core::default::Default for Coords<T> {
+        fn default() -> Self {
+            Coords {
+                theta: ::lagrange::__private::core::array::from_fn(|_| T::default()),
+            }
+        }
+    }
+    impl ::lagrange::__private::Coordinates<3> for Coords<f64> {
+        const NAMES: [&'static str; 3] = ["theta[0]", "theta[1]", "theta[2]"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 3] {
+            [self.theta[0], self.theta[1], self.theta[2]]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 3]) -> Self {
+            Coords {
+                theta: [values[0], values[1], values[2]],
+            }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 3;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's centre of mass and orientation.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub bob: [::lagrange::__private::geometry::Vec2<T>; 3],
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, its centre-of-mass velocity.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub bob: [::lagrange::__private::geometry::Vec2<T>; 3],
+    }
+    impl Chain {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                3,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                3,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                3,
+            >>::to_array(&state.v);
+            let (_, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                3,
+                6,
+            >(self, state.t, &q, &v);
+            Self::__lagrange_velocities_from_cartesian(&x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 3],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let theta = [__q[0], __q[1], __q[2]];
+            let l = <__D>::from(self.l);
+            let __sin_cos_theta = theta.map(|__x| __x.sin_cos());
+            let bob: [::lagrange::__private::geometry::Vec2<__D>; 3] = {
+                let mut bob: [::lagrange::__private::geometry::Vec2<__D>; 3] = ::lagrange::__private::core::array::from_fn(|
+                    _|
+                ::lagrange::__private::geometry::vec2(<__D>::zero(), <__D>::zero()));
+                for i in 0..3 {
+                    let __member: ::lagrange::__private::geometry::Vec2<__D> = {
+                        let link = vec2(__sin_cos_theta[i].0, -__sin_cos_theta[i].1) * l;
+                        if i == 0 { link } else { bob[i - 1] + link }
+                    };
+                    bob[i] = __member;
+                }
+                bob
+            };
+            Bodies { bob }
+        }
+        #[inline(always)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x_dot: &[__D; 6],
+        ) -> BodyVelocities<__D> {
+            BodyVelocities {
+                bob: [
+                    ::lagrange::__private::geometry::vec2(__x_dot[0], __x_dot[1]),
+                    ::lagrange::__private::geometry::vec2(__x_dot[2], __x_dot[3]),
+                    ::lagrange::__private::geometry::vec2(__x_dot[4], __x_dot[5]),
+                ],
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<3, 6> for Chain {
+        type Coords = Coords;
+        const INERTIAL: usize = 6;
+        const RHEONOMIC: bool = false;
+        const HAS_POTENTIAL: bool = false;
+        const HAS_FORCES: bool = false;
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m: f64 = self.m;
+                let l: f64 = self.l;
+                let g: f64 = self.g;
+                let __mass_bob: f64 = m;
+                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.g * 0.0) == 0.0)
+                    & (__mass_bob * 0.0 == 0.0) & (__mass_bob > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
+            if !self.m.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m",
+                    value: self.m,
+                });
+            }
+            if !self.l.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "l",
+                    value: self.l,
+                });
+            }
+            if !self.g.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "g",
+                    value: self.g,
+                });
+            }
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let __mass_bob: f64 = m;
+            if !(__mass_bob.is_finite() && __mass_bob > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "bob",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_bob
+                    ),
+                });
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 6] {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let __mass_bob: f64 = m;
+            [__mass_bob, __mass_bob, __mass_bob, __mass_bob, __mass_bob, __mass_bob]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 3],
+        ) -> [__D; 6] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [
+                __bodies.bob[0].x,
+                __bodies.bob[0].y,
+                __bodies.bob[1].x,
+                __bodies.bob[1].y,
+                __bodies.bob[2].x,
+                __bodies.bob[2].y,
+            ]
+        }
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; 6] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<3, 6>>::masses(self);
+            let mut __weights = [0.0; 6];
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<f64> = {
+                vec2(0.0, -g)
+            };
+            __weights[0] += __gravity_down.x * __masses[0];
+            __weights[1] += __gravity_down.y * __masses[1];
+            __weights[2] += __gravity_down.x * __masses[2];
+            __weights[3] += __gravity_down.y * __masses[3];
+            __weights[4] += __gravity_down.x * __masses[4];
+            __weights[5] += __gravity_down.y * __masses[5];
+            __weights
+        }
+    }
+    impl ::lagrange::__private::Mechanism<3> for Chain {
+        type Coords = Coords;
+        #[inline]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 3> {
+            ::lagrange::__private::dynamics::equations_of_motion::<
+                Self,
+                S,
+                3,
+                6,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                3,
+                6,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 3],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                3,
+                6,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> [S; 3] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 3, 6>(self, t, q, v)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 3],
+            v: &[f64; 3],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                3,
+                6,
+            >(self, t, q, v)
+        }
+    }
+}
