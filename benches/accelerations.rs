@@ -1,4 +1,5 @@
-//! `accelerations` of generated mechanisms against hand-written closed forms, in one run.
+//! `accelerations` of generated mechanisms against hand-written closed forms, in one run: the simple
+//! pendulum, the double pendulum, the wedge and block, and the pendulum on a cart.
 //!
 //! ```text
 //! cargo bench --bench accelerations
@@ -17,6 +18,135 @@ mod wedge_block_scene;
 use criterion::{criterion_group, Criterion};
 use lagrange::prelude::*;
 use std::hint::black_box;
+
+#[mechanism]
+pub mod pendulum {
+    pub struct Coords {
+        pub theta: f64,
+    }
+
+    pub struct Pendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * l
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[mechanism]
+pub mod cart_pendulum {
+    /// x: the cart's position on its rail; theta: the pendulum's angle from the downward vertical.
+    pub struct Coords {
+        pub x: f64,
+        pub theta: f64,
+    }
+
+    pub struct CartPendulum {
+        pub cart_mass: f64,
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = cart_mass)]
+    fn cart() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        cart + vec2(theta.sin(), -theta.cos()) * l
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+/// The simple pendulum by hand: θ̈ = −(g/l) sin θ.
+fn pendulum_closed_form(p: &pendulum::Pendulum, q: [f64; 1]) -> [f64; 1] {
+    [-p.g / p.l * q[0].sin()]
+}
+
+/// The pendulum on a cart by hand (cart mass M, bob m on a massless rod l; e.g. Tedrake,
+/// *Underactuated Robotics*, ch. 3, with no applied force):
+/// ẍ = m s (l θ̇² + g c) / (M + m s²),  θ̈ = −(m l θ̇² s c + (M + m) g s) / (l (M + m s²)).
+fn cart_pendulum_closed_form(
+    p: &cart_pendulum::CartPendulum,
+    q: [f64; 2],
+    v: [f64; 2],
+) -> [f64; 2] {
+    let (s, c) = q[1].sin_cos();
+    let (big_m, m, l, g) = (p.cart_mass, p.m, p.l, p.g);
+    let den = big_m + m * s * s;
+    [
+        m * s * (l * v[1] * v[1] + g * c) / den,
+        -(m * l * v[1] * v[1] * s * c + (big_m + m) * g * s) / (l * den),
+    ]
+}
+
+fn simple_pendulum(c: &mut Criterion) {
+    use pendulum::{Coords, Pendulum, State};
+    let sys = Pendulum {
+        m: 1.0,
+        l: 0.8,
+        g: 9.81,
+    };
+    let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
+    let generated = sys.accelerations(&s).unwrap().theta;
+    assert!((generated - pendulum_closed_form(&sys, [0.7])[0]).abs() < 1e-12);
+    let mut group = c.benchmark_group("pendulum");
+    group.bench_function("hand_written", |b| {
+        b.iter(|| pendulum_closed_form(black_box(&sys), black_box([0.7])))
+    });
+    group.bench_function("generated", |b| {
+        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+    });
+    group.finish();
+}
+
+fn pendulum_on_cart(c: &mut Criterion) {
+    use cart_pendulum::{CartPendulum, Coords, State};
+    let sys = CartPendulum {
+        cart_mass: 2.0,
+        m: 1.0,
+        l: 0.8,
+        g: 9.81,
+    };
+    let (q, v) = ([0.1, 0.7], [-0.3, 1.1]);
+    let s = State::new(
+        0.0,
+        Coords {
+            x: q[0],
+            theta: q[1],
+        },
+        Coords {
+            x: v[0],
+            theta: v[1],
+        },
+    );
+    let generated = sys.accelerations(&s).unwrap();
+    let hand = cart_pendulum_closed_form(&sys, q, v);
+    assert!((generated.x - hand[0]).abs() < 1e-12 && (generated.theta - hand[1]).abs() < 1e-12);
+    let mut group = c.benchmark_group("cart_pendulum");
+    group.bench_function("hand_written", |b| {
+        b.iter(|| cart_pendulum_closed_form(black_box(&sys), black_box(q), black_box(v)))
+    });
+    group.bench_function("generated", |b| {
+        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+    });
+    group.finish();
+}
 
 fn double_pendulum(c: &mut Criterion) {
     use double_pendulum_scene::double_pendulum::{Coords, DoublePendulum, State};
@@ -84,7 +214,13 @@ fn wedge_block(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, double_pendulum, wedge_block);
+criterion_group!(
+    benches,
+    simple_pendulum,
+    double_pendulum,
+    wedge_block,
+    pendulum_on_cart
+);
 
 /// Mean time of one benchmark from criterion's estimates of this run, in ns.
 fn mean_ns(group: &str, bench: &str) -> Option<f64> {
@@ -106,7 +242,12 @@ fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
     println!("\nratio generated / hand-written (mean time, same run):");
-    for group in ["double_pendulum", "wedge_block"] {
+    for group in [
+        "pendulum",
+        "double_pendulum",
+        "wedge_block",
+        "cart_pendulum",
+    ] {
         match (mean_ns(group, "generated"), mean_ns(group, "hand_written")) {
             (Some(g), Some(h)) => println!("  {group:<16} {g:8.1} ns / {h:8.1} ns = {:.2}×", g / h),
             _ => println!("  {group:<16} (no estimates: run without --test to measure)"),
