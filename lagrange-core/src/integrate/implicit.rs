@@ -1,31 +1,59 @@
 //! Implicit midpoint and the 2-stage Gauss–Legendre method: Gauss collocation methods (Hairer,
 //! Nørsett & Wanner, *Solving ODEs I*, §II.7, Table 7.4; Hairer, Lubich & Wanner, *Geometric
-//! Numerical Integration*, §II.1.3) on the first-order system y = (q, v), y' = (v, q̈(t, q, v)).
-//!
-//! With s stages, coefficients (aᵢⱼ, bᵢ, cᵢ) and stage velocities Vᵢ as the unknowns (the stage
-//! positions are eliminated: Qᵢ = q₀ + h Σⱼ aᵢⱼ Vⱼ), the stage equations are
+//! Numerical Integration* (HLW), §II.1.3) on the canonical equations in y = (q, p), p = ∂L/∂q̇:
 //!
 //! ```text
-//! Rᵢ(V) = Vᵢ − v₀ − h Σⱼ aᵢⱼ q̈(t₀ + cⱼh, Qⱼ, Vⱼ) = 0,
-//! ∂Rᵢ/∂Vₖ = δᵢₖ I − h² Σⱼ aᵢⱼ aⱼₖ ∂q̈/∂q|ⱼ − h aᵢₖ ∂q̈/∂v|ₖ,
+//! q̇ = v(t, q, p),     ṗ = G(t, q, v) = ∂L/∂q + F_nc     (v(t, q, p) solves ∂L/∂q̇(t, q, v) = p),
 //! ```
 //!
-//! an (s·N)-dimensional system solved by Newton's method with the exact Jacobians ∂q̈/∂q, ∂q̈/∂v from
-//! gradient dual numbers (re-evaluated at every iterate), starting from the predictor
-//! Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀). Then q₁ = q₀ + h Σ bⱼ Vⱼ and, since h Σⱼ aᵢⱼ q̈ⱼ = Vᵢ − v₀ at the solution, v₁ = v₀ + Σᵢ dᵢ (Vᵢ − v₀)
-//! with dᵀ = bᵀA⁻¹ (no extra evaluation).
+//! with ∂L/∂q from a gradient dual pass of T over q at fixed v and the generalized forces of the
+//! equations of motion (which contain −∇V and the non-conservative forces F_nc; see
+//! [`momentum_rate`](super::momentum_rate)).
 //!
-//! **Geometric properties.** Both methods are symmetric (time-reversible) and conserve every
-//! quadratic invariant of y' = f(y) (HLW §IV.2.1). They are symplectic for the canonical
-//! variables (q, p); applied to (q, v) they are symplectic exactly when p = M v is a linear change of
-//! variables, i.e. the mass matrix is constant (Cartesian particles, the stiff spring chain, Kepler).
-//! For a mass matrix that depends on q they remain symmetric but not symplectic: the
-//! [`Variational`](super::Variational) integrator is symplectic for any Lagrangian.
+//! **Stage equations.** With s stages, coefficients (aᵢⱼ, bᵢ, cᵢ), stage values (Qᵢ, Pᵢ) and the
+//! stage velocities Vᵢ = v(tᵢ, Qᵢ, Pᵢ), the collocation equations Qᵢ = q₀ + h Σⱼ aᵢⱼ Vⱼ,
+//! Pᵢ = p₀ + h Σⱼ aᵢⱼ G(tⱼ, Qⱼ, Vⱼ) are solved with the Vᵢ as the unknowns: Qᵢ is then explicit and
+//! Pᵢ = ∂L/∂q̇(tᵢ, Qᵢ, Vᵢ), so no inverse Legendre transform is needed inside the iteration:
+//!
+//! ```text
+//! Rᵢ(V) = p(tᵢ, Qᵢ, Vᵢ) − p₀ − h Σⱼ aᵢⱼ G(tⱼ, Qⱼ, Vⱼ) = 0,     Qᵢ = q₀ + h Σⱼ aᵢⱼ Vⱼ,
+//! ∂Rᵢ/∂Vₖ = δᵢₖ ∂p/∂v|ᵢ + h aᵢₖ ∂p/∂q|ᵢ − h² Σⱼ aᵢⱼ aⱼₖ ∂G/∂q|ⱼ − h aᵢₖ ∂G/∂v|ₖ,
+//! ```
+//!
+//! an (s·N)-dimensional system solved by Newton's method with exact Jacobians from gradient dual
+//! numbers (nested inside G, whose ∂T/∂q is itself a gradient; re-evaluated at every iterate),
+//! starting from the predictor Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀). Then q₁ = q₀ + h Σ bⱼ Vⱼ,
+//! p₁ = p₀ + h Σ bⱼ G(tⱼ, Qⱼ, Vⱼ). This is exactly the Gauss method applied to the system in (q, p)
+//! (given its stage values, Vᵢ := v(tᵢ, Qᵢ, Pᵢ) solves R = 0, and conversely).
+//!
+//! **State.** [`ImplicitMidpoint`] and [`GaussLegendre2`] implement [`Integrator`] on the (q, v)
+//! [`State`] as the [`Variational`](super::Variational) integrator does: p₀ = ∂L/∂q̇(t₀, q₀, v₀)
+//! before the step, and after it v₁ solves ∂L/∂q̇(t₁, q₁, v₁) = p₁ by Newton's method with the exact
+//! Jacobian M (one iteration for a Lagrangian quadratic in q̇, v₁ = M⁻¹(p₁ − p(t₁, q₁, 0)); a second
+//! confirms it). The Legendre transform is inverted to round-off, so the next step starts from this
+//! step's p₁: the sequence of (q, p) is that of the Gauss method.
+//!
+//! **Geometric properties.** Gauss collocation methods are symplectic for Hamiltonian systems
+//! (HLW Theorem VI.4.2, via the conservation of quadratic invariants, §IV.2.1) and symmetric. Applied
+//! to the canonical equations, the step map (q₀, p₀) ↦ (q₁, p₁) is therefore symplectic for any
+//! Lagrangian without non-conservative forces — also when the mass matrix depends on q (the double
+//! pendulum), where the same method applied to (q, q̇) would not be (p = M(q) q̇ is then a nonlinear
+//! change of variables, and Gauss methods are not invariant under those). Implicit midpoint on
+//! (q, p) coincides with the midpoint [`Variational`](super::Variational) integrator (both are
+//! p(t_m, Q, V) = p₀ + (h/2) G(t_m, Q, V), q₁ = q₀ + hV, p₁ = p₀ + h G with Q = q₀ + (h/2) V),
+//! including its treatment of forcing, the midpoint quadrature of the discrete Lagrange–d'Alembert
+//! principle (Marsden & West, *Discrete mechanics and variational integrators*, Acta Numerica 10
+//! (2001), §3.2). Both methods are A-stable and conserve every quadratic invariant of the system in
+//! (q, p) (HLW §IV.2.1), e.g. angular momentum.
 //!
 //! **Constraints.** As every integrator, a step first checks that the state satisfies the
 //! mechanism's constraints ([`Mechanism::check_constraints`]) and ends by projecting onto them
-//! ([`Mechanism::project`]; a no-op without constraints). Projection is not symplectic: on a
-//! constrained mechanism these methods are projection methods (HLW §IV.4), symmetric only up to it.
+//! ([`Mechanism::project`]; a no-op without constraints). When the mechanism's accelerations carry
+//! constraint forces at the start of the step (the test of
+//! [`refuse_constrained`](super::refuse_constrained): one plain evaluation), G includes the
+//! generalized constraint force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the constrained accelerations, at every
+//! stage. Projection is not symplectic: on a constrained mechanism these methods are projection
+//! methods (HLW §IV.4), symmetric only up to it.
 //!
 //! A Newton iteration that does not converge in [`MAX_NEWTON_ITERATIONS`] is
 //! [`Error::NewtonDiverged`]; the caller's state is unchanged on every error.
@@ -33,7 +61,8 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
-use super::newton::{acceleration_jacobians, max_norm, Convergence, MAX_NEWTON_ITERATIONS};
+use super::canonical::{field_jacobians, velocities_from_momenta, FieldJacobians};
+use super::newton::{constraint_forces_act, max_norm, Convergence, MAX_NEWTON_ITERATIONS};
 use super::Integrator;
 use crate::error::{Error, Result};
 use crate::linalg::lu_solve_blocks;
@@ -76,8 +105,12 @@ const GAUSS2: Tableau<2> = Tableau {
 pub struct ImplicitStepStats {
     /// Newton iterations.
     pub iterations: usize,
-    /// Evaluations of the accelerations with their Jacobians (each is two dual-number passes).
+    /// Evaluations of the canonical vector field (p, ṗ) with their Jacobians (each is two passes
+    /// with gradient dual numbers, nested inside ṗ).
     pub jacobian_evaluations: usize,
+    /// Newton iterations of the velocity recovery ∂L/∂v(t₁, q₁, v₁) = p₁ (each one dual pass of the
+    /// momenta).
+    pub velocity_iterations: usize,
 }
 
 #[allow(clippy::type_complexity)]
@@ -91,55 +124,61 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
 ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
     let v0 = SVector::<f64, N>::from(*v);
     let q0 = SVector::<f64, N>::from(*q);
+    let p0 = SVector::<f64, N>::from(mechanism.momenta_at(t, q, v));
     // Predictor Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀), O(h²) from the solution: one plain evaluation that
-    // saves about one Newton iteration (each costing S evaluations with Jacobians).
-    let a0 = SVector::<f64, N>::from(mechanism.accelerations_at(t, q, v)?);
-    let stages_init: [SVector<f64, N>; S] = std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h));
-    let mut stages = stages_init;
+    // saves about one Newton iteration (each costing S evaluations with Jacobians). The same q̈
+    // tells whether constraint forces act (one more plain evaluation).
+    let a = mechanism.accelerations_at(t, q, v)?;
+    let constrained = constraint_forces_act(mechanism, t, q, v, &a)?;
+    let a0 = SVector::<f64, N>::from(a);
+    let mut stages: [SVector<f64, N>; S] = std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h));
     let mut conv = Convergence::new();
     let mut stats = ImplicitStepStats::default();
     let mut residual_norm = f64::NAN;
+    let zero = SMatrix::<f64, N, N>::zeros();
     for _ in 0..MAX_NEWTON_ITERATIONS {
         stats.iterations += 1;
-        let mut acc = [SVector::<f64, N>::zeros(); S];
-        let mut jq = [SMatrix::<f64, N, N>::zeros(); S];
-        let mut jv = [SMatrix::<f64, N, N>::zeros(); S];
+        let mut field: [FieldJacobians<N>; S] = std::array::from_fn(|_| FieldJacobians {
+            p: SVector::zeros(),
+            rate: SVector::zeros(),
+            p_q: zero,
+            p_v: zero,
+            rate_q: zero,
+            rate_v: zero,
+        });
         for j in 0..S {
             let mut qj = q0;
             for k in 0..S {
                 qj += stages[k] * (h * tableau.a[j][k]);
             }
-            let (a, aq, av) = acceleration_jacobians(
+            field[j] = field_jacobians(
                 mechanism,
                 t + tableau.c[j] * h,
                 &qj.into(),
                 &stages[j].into(),
+                constrained,
             )?;
             stats.jacobian_evaluations += 1;
-            acc[j] = a.into();
-            jq[j] = aq;
-            jv[j] = av;
         }
         let mut residual = [SVector::<f64, N>::zeros(); S];
-        let mut jac = [[SMatrix::<f64, N, N>::zeros(); S]; S];
+        let mut jac = [[zero; S]; S];
         residual_norm = 0.0;
         for i in 0..S {
-            let mut r = stages[i] - v0;
+            let mut r = field[i].p - p0;
             for j in 0..S {
-                r -= acc[j] * (h * tableau.a[i][j]);
+                r -= field[j].rate * (h * tableau.a[i][j]);
             }
             residual_norm = residual_norm.max(max_norm(&r));
             residual[i] = r;
             for k in 0..S {
-                let mut block = if i == k {
-                    SMatrix::identity()
-                } else {
-                    SMatrix::zeros()
-                };
-                for j in 0..S {
-                    block -= jq[j] * (h * h * tableau.a[i][j] * tableau.a[j][k]);
+                let mut block = field[i].p_q * (h * tableau.a[i][k]);
+                if i == k {
+                    block += field[i].p_v;
                 }
-                block -= jv[k] * (h * tableau.a[i][k]);
+                for j in 0..S {
+                    block -= field[j].rate_q * (h * h * tableau.a[i][j] * tableau.a[j][k]);
+                }
+                block -= field[k].rate_v * (h * tableau.a[i][k]);
                 jac[i][k] = block;
             }
         }
@@ -157,13 +196,31 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
             scale = scale.max(max_norm(&stages[i]));
         }
         if conv.converged(increment, scale) {
+            // q₁ = q₀ + h Σ bⱼ Vⱼ and p₁ = p₀ + h Σ bⱼ ṗⱼ, with ṗⱼ carried from the last evaluation
+            // to the final iterate by its Jacobians (first order in the last increment, which is at
+            // the round-off floor: no extra evaluation).
             let mut q1 = q0;
-            let mut v1 = v0;
-            for i in 0..S {
-                q1 += stages[i] * (h * tableau.b[i]);
-                v1 += (stages[i] - v0) * tableau.d[i];
+            let mut p1 = p0;
+            for j in 0..S {
+                q1 += stages[j] * (h * tableau.b[j]);
+                let mut dq = SVector::<f64, N>::zeros();
+                for k in 0..S {
+                    dq += delta[k] * (h * tableau.a[j][k]);
+                }
+                let rate = field[j].rate - field[j].rate_q * dq - field[j].rate_v * delta[j];
+                p1 += rate * (h * tableau.b[j]);
             }
-            return Ok((q1.into(), v1.into(), stats));
+            // v₁ from p₁ (inverse Legendre transform at t₁), starting from the collocation
+            // polynomial's end velocity v₀ + Σ dᵢ (Vᵢ − v₀), dᵀ = bᵀA⁻¹, which is exact when p = M v
+            // with M constant.
+            let mut guess = v0;
+            for i in 0..S {
+                guess += (stages[i] - v0) * tableau.d[i];
+            }
+            let (v1, velocity_iterations) =
+                velocities_from_momenta(mechanism, t + h, &q1.into(), &p1.into(), &guess.into())?;
+            stats.velocity_iterations = velocity_iterations;
+            return Ok((q1.into(), v1, stats));
         }
     }
     Err(Error::NewtonDiverged {
@@ -191,14 +248,16 @@ fn step_state<M: Mechanism<N>, const N: usize, const S: usize>(
     Ok(stats)
 }
 
-/// The implicit midpoint rule y₁ = y₀ + h f(t₀ + h/2, (y₀ + y₁)/2): order 2, symmetric, A-stable,
-/// conserves quadratic invariants (see the [module docs](self) for when it is symplectic).
-/// Per step: N unknowns, each Newton iteration one evaluation of q̈ with its Jacobians.
+/// The implicit midpoint rule y₁ = y₀ + h f(t₀ + h/2, (y₀ + y₁)/2) on y = (q, p): order 2,
+/// symmetric, A-stable, symplectic for any Lagrangian, conserves quadratic invariants (see the
+/// [module docs](self)). Per step: N unknowns, each Newton iteration one evaluation of (p, ṗ) with
+/// their Jacobians.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ImplicitMidpoint;
 
 impl ImplicitMidpoint {
-    /// One step on raw arrays, no validation: (q₁, v₁) and the Newton cost.
+    /// One step on raw (q, v) arrays through the Legendre transform at both ends, no validation:
+    /// (q₁, v₁) and the Newton cost.
     #[allow(clippy::type_complexity)]
     pub fn step_arrays<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
@@ -232,14 +291,15 @@ impl Integrator for ImplicitMidpoint {
     }
 }
 
-/// The 2-stage Gauss–Legendre method: order 4, symmetric, A-stable, conserves quadratic invariants
-/// (see the [module docs](self) for when it is symplectic). Per step: 2N unknowns, each Newton
-/// iteration two evaluations of q̈ with their Jacobians.
+/// The 2-stage Gauss–Legendre method on y = (q, p): order 4, symmetric, A-stable, symplectic for
+/// any Lagrangian, conserves quadratic invariants (see the [module docs](self)). Per step: 2N
+/// unknowns, each Newton iteration two evaluations of (p, ṗ) with their Jacobians.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct GaussLegendre2;
 
 impl GaussLegendre2 {
-    /// One step on raw arrays, no validation: (q₁, v₁) and the Newton cost.
+    /// One step on raw (q, v) arrays through the Legendre transform at both ends, no validation:
+    /// (q₁, v₁) and the Newton cost.
     #[allow(clippy::type_complexity)]
     pub fn step_arrays<M: Mechanism<N>, const N: usize>(
         mechanism: &M,

@@ -4,10 +4,19 @@
 //! |---|---|---|---|---|
 //! | [`Rk4`] | 4 | fixed | 4 | none (energy drifts) |
 //! | [`Dopri5`] | 5(4) | adaptive, dense output, events | 6 (FSAL) | none |
-//! | [`ImplicitMidpoint`] | 2 | fixed | Newton: 1 with Jacobians per iteration | symmetric; symplectic for constant M |
-//! | [`GaussLegendre2`] | 4 | fixed | Newton: 2 with Jacobians per iteration | symmetric; symplectic for constant M |
+//! | [`ImplicitMidpoint`] | 2 | fixed | Newton: 1 evaluation of (p, ṗ) with Jacobians per iteration | symmetric; symplectic in (q, p) for any Lagrangian |
+//! | [`GaussLegendre2`] | 4 | fixed | Newton: 2 evaluations of (p, ṗ) with Jacobians per iteration | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations | symplectic in (q, p) for any Lagrangian; refuses constraints |
 //! | [`StormerVerlet`] | 2 | fixed | 3 (2 with M, 1 constraint test) | symplectic; refuses a non-constant mass matrix and constraints |
+//!
+//! Implicit midpoint, Gauss–Legendre and the variational integrator integrate the canonical
+//! equations in (q, p), p = ∂L/∂q̇ (converting at both ends of a step, so the public state stays
+//! (q, q̇)): their step maps (q₀, p₀) ↦ (q₁, p₁) are symplectic for any Lagrangian without
+//! non-conservative forces, whatever the mass matrix (Hairer, Lubich & Wanner, *Geometric Numerical
+//! Integration*, Theorem VI.4.2; Marsden & West, Acta Numerica 10 (2001), §1.2). Störmer–Verlet is
+//! symplectic where it applies (constant mass matrix). A test measures ΦᵀΩΦ − Ω for the step maps
+//! on the double pendulum. With non-conservative forces, or with a projection onto constraints,
+//! the maps are not symplectic.
 //!
 //! Every step is allocation-free (a test counts allocations) and leaves the caller's state
 //! unchanged on error. On a mechanism with constraints, RK4, Dopri5, implicit midpoint and
@@ -16,6 +25,7 @@
 //! the variational integrator and Störmer–Verlet, built on the unconstrained Lagrangian, refuse
 //! constrained mechanisms with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
 
+mod canonical;
 pub mod dopri5;
 pub mod implicit;
 mod newton;

@@ -39,6 +39,8 @@
 //! (M&W §3.5, multipliers enforcing g(q₁) = 0) is not implemented. The validated step still calls
 //! [`Mechanism::check_constraints`] and [`Mechanism::project`] like every integrator (no-ops here).
 
+use super::canonical;
+pub use super::canonical::momentum_rate;
 use super::newton::{
     jacobian_rows, max_norm, refuse_constrained, Convergence, MAX_NEWTON_ITERATIONS,
 };
@@ -54,24 +56,6 @@ use num_dual::DualSVec;
 /// The midpoint variational integrator (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Variational;
-
-/// G = ∂T/∂q + 𝓕 = ∂L/∂q + F_nc at (t, q, v), for any scalar: the right-hand side of ṗ = G.
-pub fn momentum_rate<M: Mechanism<N>, S: Scalar, const N: usize>(
-    mechanism: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> [S; N] {
-    let td = DualSVec::<S, N>::from_re(t);
-    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
-    let vd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]));
-    let kinetic = mechanism.kinetic_energy_at(td, &qd, &vd);
-    let forces = mechanism.equations_of_motion_at(t, q, v).generalized_forces;
-    match kinetic.eps.0 {
-        Some(grad) => std::array::from_fn(|k| grad[k] + forces[k]),
-        None => forces.into(),
-    }
-}
 
 /// R(v_m) of the module docs, for any scalar.
 #[inline]
@@ -153,33 +137,7 @@ impl Variational {
         p: &[f64; N],
         guess: &[f64; N],
     ) -> Result<([f64; N], usize)> {
-        let td = DualSVec::<f64, N>::from_re(t);
-        let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
-        let mut v = SVector::<f64, N>::from(*guess);
-        let mut conv = Convergence::new();
-        let mut residual_norm = f64::NAN;
-        for it in 1..=MAX_NEWTON_ITERATIONS {
-            let vd: [DualSVec<f64, N>; N] =
-                std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
-            let pv = mechanism.momenta_at(td, &qd, &vd);
-            let r = SVector::<f64, N>::from_fn(|i, _| pv[i].re - p[i]);
-            residual_norm = max_norm(&r);
-            if !residual_norm.is_finite() {
-                break;
-            }
-            let Some(delta) = lu_solve(&jacobian_rows(&pv), &r) else {
-                break;
-            };
-            v -= delta;
-            if conv.converged(max_norm(&delta), max_norm(&v)) {
-                return Ok((v.into(), it));
-            }
-        }
-        Err(Error::NewtonDiverged {
-            t,
-            iterations: MAX_NEWTON_ITERATIONS,
-            residual: residual_norm,
-        })
+        canonical::velocities_from_momenta(mechanism, t, q, p, guess)
     }
 
     /// One step on (q, v) arrays through the Legendre transform at both ends. No validation.

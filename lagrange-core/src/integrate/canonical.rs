@@ -1,0 +1,155 @@
+//! The canonical (Hamiltonian) equations of a mechanism, written with the Lagrangian's own
+//! functions, shared by the methods that live on (q, p): implicit midpoint, Gauss–Legendre and the
+//! variational integrator.
+//!
+//! With p = ∂L/∂q̇(t, q, q̇) and v(t, q, p) its inverse (the velocities with ∂L/∂q̇(t, q, v) = p),
+//! the equations of motion with non-conservative generalized forces F_nc are
+//!
+//! ```text
+//! q̇ = v(t, q, p),     ṗ = G(t, q, v) := ∂L/∂q(t, q, v) + F_nc(t, q, v)     at v = v(t, q, p)
+//! ```
+//!
+//! (the Euler–Lagrange equations d/dt ∂L/∂q̇ = ∂L/∂q + F_nc, first order in (q, p); without F_nc
+//! this is Hamilton's system for H = p·v − L, Arnold, *Mathematical Methods of Classical
+//! Mechanics*, §15). Because L = T − V and the generalized forces 𝓕 of the equations of motion
+//! already contain −∇V, G = ∂T/∂q + 𝓕 = ∂(T − V)/∂q + (𝓕 + ∇V): the gradient of T by one gradient
+//! dual pass over q at fixed q̇, plus 𝓕 — the potential and the non-conservative part need not be
+//! separated ([`momentum_rate`]).
+
+use super::newton::{jacobian_rows, max_norm, Convergence, MAX_NEWTON_ITERATIONS};
+use crate::error::{Error, Result};
+use crate::geometry::Scalar;
+use crate::linalg::lu_solve;
+use crate::mechanism::Mechanism;
+use nalgebra::{SMatrix, SVector};
+use num_dual::DualSVec;
+
+/// G = ∂T/∂q + 𝓕 = ∂L/∂q + F_nc at (t, q, v), for any scalar: the right-hand side of ṗ = G.
+pub fn momentum_rate<M: Mechanism<N>, S: Scalar, const N: usize>(
+    mechanism: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> [S; N] {
+    let td = DualSVec::<S, N>::from_re(t);
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let vd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]));
+    let kinetic = mechanism.kinetic_energy_at(td, &qd, &vd);
+    let forces = mechanism.equations_of_motion_at(t, q, v).generalized_forces;
+    match kinetic.eps.0 {
+        Some(grad) => std::array::from_fn(|k| grad[k] + forces[k]),
+        None => forces.into(),
+    }
+}
+
+/// (p, ṗ) at (t, q, v), for any scalar: p = ∂L/∂q̇ and ṗ = [`momentum_rate`], plus, when
+/// `constrained`, the generalized constraint force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the mechanism's
+/// (constrained) [`accelerations`](Mechanism::accelerations_at): for a mechanism with constraints,
+/// ṗ = d/dt ∂L/∂q̇ along its motion is ∂L/∂q + F_nc + Jᵀλ.
+#[inline]
+pub fn canonical_field<M: Mechanism<N>, S: Scalar, const N: usize>(
+    mechanism: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    constrained: bool,
+) -> Result<([S; N], [S; N])> {
+    let p = mechanism.momenta_at(t, q, v);
+    let mut rate = momentum_rate(mechanism, t, q, v);
+    if constrained {
+        let eom = mechanism.equations_of_motion_at(t, q, v);
+        let a = mechanism.accelerations_at(t, q, v)?;
+        for (i, r) in rate.iter_mut().enumerate() {
+            let mut ma = S::zero();
+            for (j, aj) in a.iter().enumerate() {
+                ma += eom.mass_matrix[(i, j)] * *aj;
+            }
+            *r += ma - (eom.generalized_forces[i] - eom.inertial_terms[i]);
+        }
+    }
+    Ok((p, rate))
+}
+
+/// [`canonical_field`] at a real point with its exact Jacobians, from two passes with gradient dual
+/// numbers (seeded on q, then on v; ∂T/∂q inside ṗ nests them: exact second derivatives of T).
+pub struct FieldJacobians<const N: usize> {
+    /// p = ∂L/∂q̇.
+    pub p: SVector<f64, N>,
+    /// ṗ.
+    pub rate: SVector<f64, N>,
+    /// ∂p/∂q.
+    pub p_q: SMatrix<f64, N, N>,
+    /// ∂p/∂v = M.
+    pub p_v: SMatrix<f64, N, N>,
+    /// ∂ṗ/∂q.
+    pub rate_q: SMatrix<f64, N, N>,
+    /// ∂ṗ/∂v.
+    pub rate_v: SMatrix<f64, N, N>,
+}
+
+/// See [`FieldJacobians`].
+pub fn field_jacobians<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    constrained: bool,
+) -> Result<FieldJacobians<N>> {
+    let td = DualSVec::<f64, N>::from_re(t);
+    let plain_q: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
+    let plain_v: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]));
+    let seeded_q: [DualSVec<f64, N>; N] =
+        std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let seeded_v: [DualSVec<f64, N>; N] =
+        std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
+    let (p_by_q, rate_by_q) = canonical_field(mechanism, td, &seeded_q, &plain_v, constrained)?;
+    let (p_by_v, rate_by_v) = canonical_field(mechanism, td, &plain_q, &seeded_v, constrained)?;
+    Ok(FieldJacobians {
+        p: SVector::from_fn(|i, _| p_by_q[i].re),
+        rate: SVector::from_fn(|i, _| rate_by_q[i].re),
+        p_q: jacobian_rows(&p_by_q),
+        p_v: jacobian_rows(&p_by_v),
+        rate_q: jacobian_rows(&rate_by_q),
+        rate_v: jacobian_rows(&rate_by_v),
+    })
+}
+
+/// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method with
+/// the exact Jacobian ∂p/∂v = M from dual numbers, from `guess`. Returns v and the iterations. For a
+/// Lagrangian quadratic in v (every [`Model`](crate::Model)), p = p(t, q, 0) + M v is affine in v and
+/// the first iteration gives v = M⁻¹(p − p(t, q, 0)) to round-off; the second confirms it.
+pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+    p: &[f64; N],
+    guess: &[f64; N],
+) -> Result<([f64; N], usize)> {
+    let td = DualSVec::<f64, N>::from_re(t);
+    let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
+    let mut v = SVector::<f64, N>::from(*guess);
+    let mut conv = Convergence::new();
+    let mut residual_norm = f64::NAN;
+    for it in 1..=MAX_NEWTON_ITERATIONS {
+        let vd: [DualSVec<f64, N>; N] =
+            std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
+        let pv = mechanism.momenta_at(td, &qd, &vd);
+        let r = SVector::<f64, N>::from_fn(|i, _| pv[i].re - p[i]);
+        residual_norm = max_norm(&r);
+        if !residual_norm.is_finite() {
+            break;
+        }
+        let Some(delta) = lu_solve(&jacobian_rows(&pv), &r) else {
+            break;
+        };
+        v -= delta;
+        if conv.converged(max_norm(&delta), max_norm(&v)) {
+            return Ok((v.into(), it));
+        }
+    }
+    Err(Error::NewtonDiverged {
+        t,
+        iterations: MAX_NEWTON_ITERATIONS,
+        residual: residual_norm,
+    })
+}
