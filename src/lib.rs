@@ -1,10 +1,4 @@
-//! # lagrange
-//!
-//! Declare a mechanism the way it is written on paper — generalized coordinates, where each body is
-//! as a function of them and of time, and what acts on it — and get typed, fast equations of motion
-//! at compile time.
-//!
-//! See the README for the declaration syntax and a complete example.
+#![doc = include_str!("../README.md")]
 
 pub use lagrange_core::*;
 pub use lagrange_macros::mechanism;
