@@ -106,7 +106,7 @@ pub fn plots_dir() -> PathBuf {
                 .join("plots")
         });
     let _ = std::fs::create_dir_all(&dir);
-    dir
+    dir.canonicalize().unwrap_or(dir)
 }
 
 /// Runs one scene as its own program: prints its table, exits non-zero if a check fails.
