@@ -73,6 +73,8 @@ pub fn lines(
         .configure_mesh()
         .x_desc(x_label)
         .y_desc(y_label)
+        .x_label_formatter(&|v| tick(*v, x0.abs().max(x1.abs())))
+        .y_label_formatter(&|v| tick(*v, y0.abs().max(y1.abs())))
         .draw()
         .map_err(|e| err(&e))?;
     for (i, s) in series.iter().enumerate() {
@@ -99,4 +101,20 @@ pub fn lines(
         .map_err(|e| err(&e))?;
     root.present().map_err(|e| err(&e))?;
     Ok(())
+}
+
+/// A tick label: plain for magnitudes a person reads at a glance, scientific for tiny or huge ones
+/// (energy errors of 1e-9 would otherwise all print as "0.0").
+fn tick(value: f64, magnitude: f64) -> String {
+    // A tick at zero computed as a difference of bounds is round-off: print it as 0.
+    let value = if value.abs() < 1e-9 * magnitude {
+        0.0
+    } else {
+        value
+    };
+    if magnitude != 0.0 && !(1e-2..1e5).contains(&magnitude) {
+        format!("{value:.1e}")
+    } else {
+        format!("{value:.2}")
+    }
 }
