@@ -155,6 +155,10 @@ fn mean_ns(group: &str, bench: &str) -> Option<f64> {
 fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
+    // A smoke run (`-- --test`) measures nothing: earlier runs' estimates would be stale.
+    if std::env::args().any(|a| a == "--test") {
+        return;
+    }
     println!("\npendulum accelerations, mean ns per call and increment over bare (same run):");
     let Some(base) = mean_ns("pendulum_effects", VARIANTS[0]) else {
         println!("  (no estimates: run without --test to measure)");

@@ -1,0 +1,414 @@
+//! Driver for callgrind: `lagrange-callgrind MODE CALLS` runs `accelerations` of one mechanism
+//! (generated, or `hw_*` for the hand-written closed form) CALLS times. See count.sh.
+
+use lagrange::prelude::*;
+use std::hint::black_box;
+
+#[mechanism]
+pub mod pendulum {
+    pub struct Coords {
+        pub theta: f64,
+    }
+    pub struct Pendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * l
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[mechanism]
+pub mod double_pendulum {
+    pub struct Coords {
+        pub theta1: f64,
+        pub theta2: f64,
+    }
+    pub struct DoublePendulum {
+        pub m1: f64,
+        pub m2: f64,
+        pub l1: f64,
+        pub l2: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m1)]
+    fn bob1() -> Vec2 {
+        vec2(theta1.sin(), -theta1.cos()) * l1
+    }
+    #[particle(mass = m2)]
+    fn bob2() -> Vec2 {
+        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[mechanism]
+pub mod wedge_block {
+    pub struct Coords {
+        pub x: f64,
+        pub d: f64,
+    }
+    pub struct WedgeBlock {
+        pub wedge_mass: f64,
+        pub block_mass: f64,
+        pub alpha: f64,
+        pub h: f64,
+        pub g: f64,
+    }
+    #[particle(mass = wedge_mass)]
+    fn wedge() -> Vec2 {
+        vec2(x, 0.0)
+    }
+    #[particle(mass = block_mass)]
+    fn block() -> Vec2 {
+        vec2(x + d * alpha.cos(), h - d * alpha.sin())
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[mechanism]
+pub mod cart_pendulum {
+    pub struct Coords {
+        pub x: f64,
+        pub theta: f64,
+    }
+    pub struct CartPendulum {
+        pub cart_mass: f64,
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = cart_mass)]
+    fn cart() -> Vec2 {
+        vec2(x, 0.0)
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        cart + vec2(theta.sin(), -theta.cos()) * l
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+fn hw_pendulum(p: &pendulum::Pendulum, q: [f64; 1], _v: [f64; 1]) -> [f64; 1] {
+    [-p.g / p.l * q[0].sin()]
+}
+fn hw_double(p: &double_pendulum::DoublePendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
+    let double_pendulum::DoublePendulum { m1, m2, l1, l2, g } = *p;
+    let d = q[0] - q[1];
+    let den = m1 + m2 * d.sin().powi(2);
+    let a1 = (m2 * g * q[1].sin() * d.cos()
+        - m2 * d.sin() * (l1 * v[0] * v[0] * d.cos() + l2 * v[1] * v[1])
+        - (m1 + m2) * g * q[0].sin())
+        / (l1 * den);
+    let a2 = ((m1 + m2) * (l1 * v[0] * v[0] * d.sin() - g * q[1].sin() + g * q[0].sin() * d.cos())
+        + m2 * l2 * v[1] * v[1] * d.sin() * d.cos())
+        / (l2 * den);
+    [a1, a2]
+}
+fn hw_wedge(p: &wedge_block::WedgeBlock) -> [f64; 2] {
+    let (s, c) = p.alpha.sin_cos();
+    let den = p.wedge_mass + p.block_mass * s * s;
+    [
+        -p.block_mass * p.g * s * c / den,
+        (p.wedge_mass + p.block_mass) * p.g * s / den,
+    ]
+}
+fn hw_cart(p: &cart_pendulum::CartPendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
+    let (s, c) = q[1].sin_cos();
+    let (mc, m, l, g) = (p.cart_mass, p.m, p.l, p.g);
+    let den = mc + m * s * s;
+    let xdd = (m * s * (l * v[1] * v[1] + g * c)) / den;
+    let tdd = -(m * l * v[1] * v[1] * s * c + (mc + m) * g * s) / (l * den);
+    [xdd, tdd]
+}
+
+#[mechanism]
+pub mod chain32 {
+    pub const LINKS: usize = 32;
+    pub struct Coords {
+        pub theta: [f64; LINKS],
+    }
+    pub struct Chain {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m, count = LINKS)]
+    fn bob(i: usize) -> Vec2 {
+        let link = vec2(theta[i].sin(), -theta[i].cos()) * l;
+        if i == 0 {
+            link
+        } else {
+            bob[i - 1] + link
+        }
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[mechanism]
+pub mod drag {
+    pub struct Coords {
+        pub theta: f64,
+    }
+    pub struct Drag {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+        pub c: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * l
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+    #[force(on = bob)]
+    fn air() -> Vec2 {
+        bob_dot * (-c)
+    }
+}
+
+#[mechanism]
+pub mod driven {
+    pub struct Coords {
+        pub theta: f64,
+    }
+    pub struct Driven {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+        pub a: f64,
+        pub w: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(a * (w * t).cos() + l * theta.sin(), -l * theta.cos())
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+fn main() {
+    let which = std::env::args().nth(1).unwrap();
+    let n: usize = std::env::args()
+        .nth(2)
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(1000);
+    let mut acc = 0.0;
+    match which.as_str() {
+        "pendulum" => {
+            use pendulum::*;
+            let sys = Pendulum {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
+            }
+        }
+        "double_pendulum" => {
+            use double_pendulum::*;
+            let sys = DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            };
+            let s = State::new(
+                0.0,
+                Coords {
+                    theta1: 0.7,
+                    theta2: -1.2,
+                },
+                Coords {
+                    theta1: 1.1,
+                    theta2: -0.4,
+                },
+            );
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
+            }
+        }
+        "wedge_block" => {
+            use wedge_block::*;
+            let sys = WedgeBlock {
+                wedge_mass: 3.0,
+                block_mass: 1.0,
+                alpha: 0.5,
+                h: 1.0,
+                g: 9.81,
+            };
+            let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
+            }
+        }
+        "cart_pendulum" => {
+            use cart_pendulum::*;
+            let sys = CartPendulum {
+                cart_mass: 2.0,
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            let s = State::new(
+                0.0,
+                Coords { x: 0.1, theta: 0.7 },
+                Coords {
+                    x: -0.3,
+                    theta: 1.1,
+                },
+            );
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
+            }
+        }
+        "hw_pendulum" => {
+            let sys = pendulum::Pendulum {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            for _ in 0..n {
+                acc += hw_pendulum(black_box(&sys), black_box([0.7]), black_box([1.1]))[0];
+            }
+        }
+        "hw_double_pendulum" => {
+            let sys = double_pendulum::DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            };
+            for _ in 0..n {
+                acc += hw_double(
+                    black_box(&sys),
+                    black_box([0.7, -1.2]),
+                    black_box([1.1, -0.4]),
+                )[0];
+            }
+        }
+        "hw_wedge_block" => {
+            let sys = wedge_block::WedgeBlock {
+                wedge_mass: 3.0,
+                block_mass: 1.0,
+                alpha: 0.5,
+                h: 1.0,
+                g: 9.81,
+            };
+            for _ in 0..n {
+                acc += hw_wedge(black_box(&sys))[0];
+            }
+        }
+        "hw_cart_pendulum" => {
+            let sys = cart_pendulum::CartPendulum {
+                cart_mass: 2.0,
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            for _ in 0..n {
+                acc += hw_cart(
+                    black_box(&sys),
+                    black_box([0.1, 0.7]),
+                    black_box([-0.3, 1.1]),
+                )[0];
+            }
+        }
+        "check" => {
+            use cart_pendulum::*;
+            let sys = CartPendulum {
+                cart_mass: 2.0,
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            let s = State::new(
+                0.0,
+                Coords { x: 0.1, theta: 0.7 },
+                Coords {
+                    x: -0.3,
+                    theta: 1.1,
+                },
+            );
+            let a = sys.accelerations(&s).unwrap();
+            println!("{:?} {:?}", a, hw_cart(&sys, [0.1, 0.7], [-0.3, 1.1]));
+        }
+        "chain32" => {
+            use chain32::*;
+            let sys = Chain {
+                m: 1.0,
+                l: 0.5,
+                g: 9.81,
+            };
+            let s = State::new(
+                0.0,
+                Coords {
+                    theta: std::array::from_fn(|j| 0.3 + 0.7 * ((j as f64) * 0.9).sin()),
+                },
+                Coords {
+                    theta: std::array::from_fn(|j| 0.5 * ((j as f64) * 1.3).cos()),
+                },
+            );
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta[0];
+            }
+        }
+        "drag" => {
+            use drag::*;
+            let sys = Drag {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+                c: 0.3,
+            };
+            let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
+            }
+        }
+        "driven" => {
+            use driven::*;
+            let sys = Driven {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+                a: 0.1,
+                w: 2.0,
+            };
+            let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
+            }
+        }
+        "none" => {}
+        _ => panic!(),
+    }
+    println!("{acc}");
+}
