@@ -54,14 +54,6 @@ pub enum Error {
         reason: String,
     },
 
-    /// An explicit method has become unstable (the solution grew without bound at this step size).
-    #[error("{method} became unstable at t = {t} with h = {h}: the step is too large for the fastest mode")]
-    Unstable {
-        method: &'static str,
-        t: f64,
-        h: f64,
-    },
-
     /// The search for an equilibrium (all generalized forces balanced at rest) did not converge:
     /// too many iterations, or the line search stalled at a point that is not a root.
     #[error("no equilibrium found at t = {t} after {iterations} iterations: residual {residual:e} at {configuration}")]
