@@ -54,6 +54,25 @@ pub enum Error {
         reason: String,
     },
 
+    /// A setting of an integrator is out of its range (a negative tolerance, a safety factor above
+    /// one, …).
+    #[error("{method}: setting `{setting}` = {value} is invalid: it must be {requirement}")]
+    InvalidSetting {
+        method: &'static str,
+        setting: &'static str,
+        value: f64,
+        requirement: &'static str,
+    },
+
+    /// An adaptive method needed a step too small to advance time in floating point (a
+    /// singularity of the solution, or a tolerance below round-off).
+    #[error("{method}: step size underflow at t = {t} (h = {h:e}): the solution is singular there or the tolerance is below round-off")]
+    StepSizeUnderflow {
+        method: &'static str,
+        t: f64,
+        h: f64,
+    },
+
     /// The search for an equilibrium (all generalized forces balanced at rest) did not converge:
     /// too many iterations, or the line search stalled at a point that is not a root.
     #[error("no equilibrium found at t = {t} after {iterations} iterations: residual {residual:e} at {configuration}")]

@@ -351,44 +351,58 @@ impl Dopri5 {
         }
     }
 
-    /// Checks the settings. Tolerances must be finite and non-negative, not both zero; reported
-    /// as [`Error::NonFiniteParameter`] naming the setting. Steps as [`Error::InvalidStep`].
+    /// Checks the settings: tolerances finite, non-negative and not both zero, step-control
+    /// factors in their ranges ([`Error::InvalidSetting`] naming the setting), the initial step
+    /// positive and finite ([`Error::InvalidStep`]).
     pub fn validate(&self) -> Result<()> {
+        let invalid = |setting, value, requirement| {
+            Err(Error::InvalidSetting {
+                method: "Dopri5",
+                setting,
+                value,
+                requirement,
+            })
+        };
         for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
             if !(value.is_finite() && value >= 0.0) {
-                return Err(Error::NonFiniteParameter { name, value });
+                return invalid(name, value, "finite and non-negative");
             }
         }
         if self.rtol == 0.0 && self.atol == 0.0 {
-            return Err(Error::NonFiniteParameter {
-                name: "rtol",
-                value: 0.0,
-            });
+            return invalid("rtol", 0.0, "positive when atol is zero");
         }
-        for (name, value, ok) in [
+        for (name, value, ok, requirement) in [
             (
                 "safety",
                 self.safety,
                 self.safety > 0.0 && self.safety <= 1.0,
+                "in (0, 1]",
             ),
             (
                 "fac_min",
                 self.fac_min,
                 self.fac_min > 0.0 && self.fac_min <= 1.0,
+                "in (0, 1]",
             ),
             (
                 "fac_max",
                 self.fac_max,
                 self.fac_max >= 1.0 && self.fac_max.is_finite(),
+                "finite and at least 1",
             ),
-            ("beta", self.beta, (0.0..0.2).contains(&self.beta)),
+            (
+                "beta",
+                self.beta,
+                (0.0..0.2).contains(&self.beta),
+                "in [0, 0.2)",
+            ),
         ] {
             if !ok {
-                return Err(Error::NonFiniteParameter { name, value });
+                return invalid(name, value, requirement);
             }
         }
         if !(self.h_max > 0.0) {
-            return Err(Error::InvalidStep { h: self.h_max });
+            return invalid("h_max", self.h_max, "positive");
         }
         if let Some(h) = self.h_init {
             crate::mechanism::check_step(h)?;
@@ -651,7 +665,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
     /// Takes one accepted step, not past `t_limit` (> current time), rejecting and shrinking as
     /// needed. A stage that fails (singular mass matrix, non-finite dynamics) counts as a rejection
     /// with the step cut by `fac_min`; when the step can no longer shrink (0.1·h below round-off of t)
-    /// the last failure is returned ([`Error::InvalidStep`] if steps were rejected only for
+    /// the last failure is returned ([`Error::StepSizeUnderflow`] if steps were rejected only for
     /// accuracy). On error the accepted state is unchanged.
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
         if !(t_limit > self.t) || !t_limit.is_finite() {
@@ -670,7 +684,11 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                 h = t_limit - self.t;
             }
             if !(self.t + 0.1 * h > self.t) {
-                return Err(last_error.unwrap_or(Error::InvalidStep { h }));
+                return Err(last_error.unwrap_or(Error::StepSizeUnderflow {
+                    method: "Dopri5",
+                    t: self.t,
+                    h,
+                }));
             }
             match self.attempt(h) {
                 Ok((q1, v1, a1, err, k)) => {
