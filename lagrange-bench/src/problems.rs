@@ -1,7 +1,7 @@
 //! The report's problems as hand-written [`Model`]s (what `#[mechanism]` generates), their
 //! hand-written right-hand sides for the peer solvers, and their exact or reference solutions.
 
-use lagrange_core::{vec2, Mechanism, Model, Scalar, State};
+use lagrange_core::{vec2, Model, Scalar, State};
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
 
 // ---------------------------------------------------------------------------------------------
