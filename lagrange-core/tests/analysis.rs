@@ -5,6 +5,9 @@ use lagrange_core::analysis::{
     continuation, equilibrium, linearize, normal_modes, stability, unbalanced_forces,
     EquilibriumOptions, Stability, StabilityMethod,
 };
+#[macro_use]
+mod support;
+
 use lagrange_core::impl_mechanism;
 use lagrange_core::{Error, Mechanism, Model, Rk4, Scalar, State};
 use nalgebra::SMatrix;
@@ -1249,24 +1252,7 @@ impl_mechanism!(PlanarBob, 3, 3, constraints);
 #[derive(Clone, Copy)]
 struct RedundantBob(PlanarBob);
 
-impl Model<3, 3> for RedundantBob {
-    type Coords = [f64; 3];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Model::validate(&self.0)
-    }
-    fn masses(&self) -> [f64; 3] {
-        self.0.masses()
-    }
-    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 3]) -> [D; 3] {
-        self.0.cartesian(t, q)
-    }
-    fn potential<D: Scalar>(&self, t: D, q: &[D; 3], x: &[D; 3]) -> D {
-        self.0.potential(t, q, x)
-    }
-}
+delegate_model!(RedundantBob, PlanarBob, 3, 3);
 
 impl Constraints<3, 3, 3> for RedundantBob {
     const NAMES: [&'static str; 3] = ["sphere", "plane", "plane again"];
@@ -1312,24 +1298,7 @@ fn two_rows_and_redundant_rows() {
 #[derive(Clone, Copy)]
 struct StringPendulum(CartesianPendulum);
 
-impl Model<2, 2> for StringPendulum {
-    type Coords = [f64; 2];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Model::validate(&self.0)
-    }
-    fn masses(&self) -> [f64; 2] {
-        self.0.masses()
-    }
-    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 2] {
-        self.0.cartesian(t, q)
-    }
-    fn potential<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> D {
-        self.0.potential(t, q, x)
-    }
-}
+delegate_model!(StringPendulum, CartesianPendulum, 2, 2);
 
 impl Constraints<2, 2, 1> for StringPendulum {
     const NAMES: [&'static str; 1] = ["string"];
@@ -1344,24 +1313,7 @@ impl_mechanism!(StringPendulum, 2, 2, constraints);
 #[derive(Clone, Copy)]
 struct Rail(CartesianPendulum);
 
-impl Model<2, 2> for Rail {
-    type Coords = [f64; 2];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Model::validate(&self.0)
-    }
-    fn masses(&self) -> [f64; 2] {
-        self.0.masses()
-    }
-    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 2] {
-        self.0.cartesian(t, q)
-    }
-    fn potential<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> D {
-        self.0.potential(t, q, x)
-    }
-}
+delegate_model!(Rail, CartesianPendulum, 2, 2);
 
 impl Constraints<2, 2, 1> for Rail {
     const NAMES: [&'static str; 1] = ["no_sideways"];

@@ -14,7 +14,9 @@ use lagrange_core::constraints::{
     self, consistent_state, constraint_forces, ConstraintKind, Constraints, ContactOptions,
     ContactRk4, Coulomb, RowMode, CONSISTENCY_TOLERANCE,
 };
-use lagrange_core::dynamics::{self, EquationsOfMotion};
+#[macro_use]
+mod support;
+
 use lagrange_core::impl_mechanism;
 use lagrange_core::{vec2, Error, Mechanism, Model, Rk4, Scalar, State};
 
@@ -195,24 +197,7 @@ fn inconsistent_initial_state_is_refused_and_can_be_projected() {
 // Redundant constraints: the same rod twice.
 
 struct DoubleRod(CartesianPendulum);
-impl Model<2, 2> for DoubleRod {
-    type Coords = [f64; 2];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Model::validate(&self.0)
-    }
-    fn masses(&self) -> [f64; 2] {
-        self.0.masses()
-    }
-    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 2] {
-        self.0.cartesian(t, q)
-    }
-    fn potential<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> D {
-        self.0.potential(t, q, x)
-    }
-}
+delegate_model!(DoubleRod, CartesianPendulum, 2, 2);
 impl Constraints<2, 2, 3> for DoubleRod {
     const NAMES: [&'static str; 3] = ["rod", "floor_guide", "second_rod"];
     const KINDS: [ConstraintKind; 3] = [
@@ -1254,50 +1239,8 @@ struct Free<T>(T);
 
 macro_rules! free_mechanism {
     ($inner:ty, $n:literal, $k:literal) => {
-        impl Model<$n, $k> for Free<$inner> {
-            type Coords = [f64; $n];
-            const RHEONOMIC: bool = <$inner as Model<$n, $k>>::RHEONOMIC;
-            const HAS_POTENTIAL: bool = <$inner as Model<$n, $k>>::HAS_POTENTIAL;
-            const HAS_FORCES: bool = false;
-            fn validate(&self) -> lagrange_core::Result<()> {
-                Model::validate(&self.0)
-            }
-            fn masses(&self) -> [f64; $k] {
-                self.0.masses()
-            }
-            fn cartesian<D: Scalar>(&self, t: D, q: &[D; $n]) -> [D; $k] {
-                self.0.cartesian(t, q)
-            }
-            fn potential<D: Scalar>(&self, t: D, q: &[D; $n], x: &[D; $k]) -> D {
-                self.0.potential(t, q, x)
-            }
-        }
-        impl Mechanism<$n> for Free<$inner> {
-            type Coords = [f64; $n];
-            fn validate(&self) -> lagrange_core::Result<()> {
-                Model::validate(self)
-            }
-            fn equations_of_motion_at<S: Scalar>(
-                &self,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> EquationsOfMotion<S, $n> {
-                dynamics::equations_of_motion(self, t, q, v)
-            }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> S {
-                dynamics::kinetic_energy(self, t, q, v)
-            }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; $n]) -> S {
-                dynamics::potential_energy(self, t, q)
-            }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; $n], v: &[S; $n]) -> [S; $n] {
-                dynamics::momenta(self, t, q, v)
-            }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> f64 {
-                dynamics::lagrangian_time_derivative(self, t, q, v)
-            }
-        }
+        delegate_model!(Free<$inner>, $inner, $n, $k);
+        impl_mechanism!(Free<$inner>, $n, $k);
     };
 }
 free_mechanism!(CartesianPendulum, 2, 2);
@@ -1307,24 +1250,7 @@ free_mechanism!(SphereParticle, 2, 2);
 
 /// The rough ramp with its friction row dropped (contact only).
 struct SmoothRamp(RoughRamp);
-impl Model<2, 2> for SmoothRamp {
-    type Coords = [f64; 2];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Model::validate(&self.0)
-    }
-    fn masses(&self) -> [f64; 2] {
-        self.0.masses()
-    }
-    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 2]) -> [D; 2] {
-        self.0.cartesian(t, q)
-    }
-    fn potential<D: Scalar>(&self, t: D, q: &[D; 2], x: &[D; 2]) -> D {
-        self.0.potential(t, q, x)
-    }
-}
+delegate_model!(SmoothRamp, RoughRamp, 2, 2);
 impl Constraints<2, 2, 1> for SmoothRamp {
     const NAMES: [&'static str; 1] = ["ramp"];
     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
