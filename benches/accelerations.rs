@@ -6,7 +6,12 @@
 //! ```
 //!
 //! After criterion's own report this prints, per mechanism, the ratio of the generated code's mean
-//! time to the hand-written closed form's (the baseline), from the same run's estimates.
+//! time to the hand-written closed form's (the baseline), from the same run's estimates; and an
+//! interleaved ratio that is steadier on a shared machine: 41 rounds, each timing a batch of calls of
+//! one side and then the same number of calls of the other (the order alternating from round to
+//! round), reported as the median of the per-round ratios with its interquartile range. A drift of the
+//! machine's speed between criterion's two measurements (seconds apart) moves the first figure; within
+//! a round (milliseconds) it hits both sides alike.
 
 #[path = "../examples/double_pendulum.rs"]
 #[allow(dead_code)]
@@ -18,6 +23,53 @@ mod wedge_block_scene;
 use criterion::{criterion_group, Criterion};
 use lagrange::prelude::*;
 use std::hint::black_box;
+use std::sync::Mutex;
+use std::time::Instant;
+
+/// Interleaved ratios measured so far: (group, first quartile, median, third quartile).
+static INTERLEAVED: Mutex<Vec<(&'static str, [f64; 3])>> = Mutex::new(Vec::new());
+
+/// Whether this is a smoke run (`-- --test`): nothing is timed.
+fn smoke_run() -> bool {
+    std::env::args().any(|a| a == "--test")
+}
+
+/// The interleaved ratio generated / hand-written (see the module docs), recorded for the summary.
+fn interleave(group: &'static str, mut hand_written: impl FnMut(), mut generated: impl FnMut()) {
+    if smoke_run() {
+        return;
+    }
+    const ROUNDS: usize = 41;
+    let batch = |f: &mut dyn FnMut(), calls: u64| {
+        let start = Instant::now();
+        for _ in 0..calls {
+            f();
+        }
+        start.elapsed().as_secs_f64()
+    };
+    // Calls per batch: about 2 ms of the hand-written side.
+    let probe = batch(&mut hand_written, 10_000).max(1e-6);
+    let calls = ((2e-3 / probe) * 10_000.0).clamp(1_000.0, 1e7) as u64;
+    let mut ratios: Vec<f64> = (0..ROUNDS)
+        .map(|round| {
+            let (h, g) = if round % 2 == 0 {
+                let h = batch(&mut hand_written, calls);
+                (h, batch(&mut generated, calls))
+            } else {
+                let g = batch(&mut generated, calls);
+                (batch(&mut hand_written, calls), g)
+            };
+            g / h
+        })
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    let quartiles = [
+        ratios[ROUNDS / 4],
+        ratios[ROUNDS / 2],
+        ratios[3 * ROUNDS / 4],
+    ];
+    INTERLEAVED.lock().unwrap().push((group, quartiles));
+}
 
 #[mechanism]
 pub mod pendulum {
@@ -113,6 +165,15 @@ fn simple_pendulum(c: &mut Criterion) {
         b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
+    interleave(
+        "pendulum",
+        || {
+            black_box(pendulum_closed_form(black_box(&sys), black_box([0.7])));
+        },
+        || {
+            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        },
+    );
 }
 
 fn pendulum_on_cart(c: &mut Criterion) {
@@ -146,6 +207,19 @@ fn pendulum_on_cart(c: &mut Criterion) {
         b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
+    interleave(
+        "cart_pendulum",
+        || {
+            black_box(cart_pendulum_closed_form(
+                black_box(&sys),
+                black_box(q),
+                black_box(v),
+            ));
+        },
+        || {
+            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        },
+    );
 }
 
 fn double_pendulum(c: &mut Criterion) {
@@ -182,6 +256,19 @@ fn double_pendulum(c: &mut Criterion) {
         b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
+    interleave(
+        "double_pendulum",
+        || {
+            black_box(double_pendulum_scene::closed_form(
+                black_box(&sys),
+                black_box([0.7, -1.2]),
+                black_box([1.1, -0.4]),
+            ));
+        },
+        || {
+            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        },
+    );
 }
 
 /// The wedge and block by hand: the closed-form constant accelerations (Ẍ, d̈) from the parameters.
@@ -212,6 +299,15 @@ fn wedge_block(c: &mut Criterion) {
         b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
+    interleave(
+        "wedge_block",
+        || {
+            black_box(wedge_block_closed_form(black_box(&sys)));
+        },
+        || {
+            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        },
+    );
 }
 
 criterion_group!(
@@ -242,7 +338,7 @@ fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
     // A smoke run (`-- --test`) measures nothing: earlier runs' estimates would be stale.
-    if std::env::args().any(|a| a == "--test") {
+    if smoke_run() {
         return;
     }
     println!("\nratio generated / hand-written (mean time, same run):");
@@ -256,5 +352,9 @@ fn main() {
             (Some(g), Some(h)) => println!("  {group:<16} {g:8.1} ns / {h:8.1} ns = {:.2}×", g / h),
             _ => println!("  {group:<16} (no estimates: run without --test to measure)"),
         }
+    }
+    println!("\ninterleaved ratio generated / hand-written (median of 41 rounds [quartiles]):");
+    for (group, [low, median, high]) in INTERLEAVED.lock().unwrap().iter() {
+        println!("  {group:<16} {median:.2}×  [{low:.2}, {high:.2}]");
     }
 }

@@ -18,7 +18,7 @@
 
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::Ldlt;
+use crate::linalg::{solve_spd, NotPositiveDefinite};
 use crate::model::{Coordinates, Model};
 use nalgebra::{Const, U1};
 use nalgebra::{SMatrix, SVector};
@@ -73,25 +73,39 @@ fn cartesian_along_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: us
     model.cartesian(t2, &q2)
 }
 
-/// M(q, t) = Jᵀ diag(μ) J, from its Jacobian rows by full-square rank-one updates.
+/// M(q, t) = Σᵢ μᵢ Jᵢᵀ Jᵢ over the rows that carry mass and depend on q, by rank-one updates of
+/// the lower triangle, mirrored at the end.
 #[inline(always)]
 fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
     inertial: usize,
     masses: &[f64; K],
-    rows: &[SVector<S, N>; K],
+    rows: &[Option<SVector<S, N>>; K],
 ) -> SMatrix<S, N, N> {
-    let mut mass_matrix = SMatrix::<S, N, N>::zeros();
+    let mut mass_matrix: Option<SMatrix<S, N, N>> = None;
     for i in 0..inertial {
-        let mu = masses[i];
-        if mu == 0.0 {
-            continue;
-        }
-        let g = &rows[i];
+        let Some(row) = &rows[i] else { continue };
+        let weighted = row * S::from(masses[i]);
+        let mut update = SMatrix::<S, N, N>::zeros();
         for c in 0..N {
-            let gc = g[c] * mu;
-            for r in 0..N {
-                mass_matrix[(r, c)] += g[r] * gc;
+            for r in c..N {
+                update[(r, c)] = row[r] * weighted[c];
             }
+        }
+        match &mut mass_matrix {
+            Some(sum) => {
+                for c in 0..N {
+                    for r in c..N {
+                        sum[(r, c)] += update[(r, c)];
+                    }
+                }
+            }
+            None => mass_matrix = Some(update),
+        }
+    }
+    let mut mass_matrix = mass_matrix.unwrap_or_else(SMatrix::zeros);
+    for c in 0..N {
+        for r in (c + 1)..N {
+            mass_matrix[(c, r)] = mass_matrix[(r, c)];
         }
     }
     mass_matrix
@@ -104,6 +118,12 @@ fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
 /// ∂ẋ/∂q (ε₁ε₂), so a = (∂ẋ/∂q) q̇ — every trigonometric function of the positions is evaluated
 /// once. A rheonomic one needs ∂ẋ/∂t too, which this pass does not carry; it takes the two passes
 /// described in the module docs.
+///
+/// Sums run over the terms that exist: a row of x that does not depend on q (the wedge's height)
+/// has no Jacobian row, a row that is linear in q (a slider) has no `a`, and num-dual records both
+/// as absent derivatives, known when this function is compiled for a mechanism — so they cost
+/// nothing rather than additions of zeros.
+#[inline(always)]
 pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
     t: S,
@@ -111,25 +131,29 @@ pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: u
     v: &[S; N],
 ) -> EquationsOfMotion<S, N> {
     let masses = model.masses();
-    let (rows, x, x_dot, accelerations, mut generalized_forces) = if M::RHEONOMIC {
+    let kinematics = if M::RHEONOMIC {
         two_passes(model, t, q, v)
     } else {
         one_pass(model, t, q, v)
     };
-    let mass_matrix = assemble_mass_matrix(M::INERTIAL, &masses, &rows);
-    let mut inertial_terms = SVector::<S, N>::zeros();
+    let rows = &kinematics.rows;
+
+    let mass_matrix = assemble_mass_matrix(M::INERTIAL, &masses, rows);
+    // b = Σᵢ μᵢ aᵢ Jᵢᵀ.
+    let mut inertial_terms: Option<SVector<S, N>> = None;
     for i in 0..M::INERTIAL {
-        if masses[i] != 0.0 {
-            inertial_terms += rows[i] * (accelerations[i] * masses[i]);
+        if let (Some(row), Some(a)) = (&rows[i], kinematics.accelerations[i]) {
+            accumulate(&mut inertial_terms, row * (a * masses[i]));
         }
     }
 
+    let mut generalized_forces = kinematics.potential_forces;
     // A uniform field, by virtual work: 𝓕 += Jᵀ w.
     if M::HAS_GRAVITY {
         let weights = model.weights();
         for i in 0..K {
-            if weights[i] != 0.0 {
-                generalized_forces += rows[i] * S::from(weights[i]);
+            if let Some(row) = &rows[i] {
+                accumulate(&mut generalized_forces, row * S::from(weights[i]));
             }
         }
     }
@@ -138,24 +162,50 @@ pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: u
     if M::HAS_FORCES {
         let mut cartesian_force = [S::zero(); K];
         let mut direct = [S::zero(); N];
-        model.applied_forces(t, q, v, &x, &x_dot, &mut cartesian_force, &mut direct);
+        model.applied_forces(
+            t,
+            q,
+            v,
+            &kinematics.x,
+            &kinematics.x_dot,
+            &mut cartesian_force,
+            &mut direct,
+        );
         for i in 0..K {
-            if cartesian_force[i] != 0.0 {
-                generalized_forces += rows[i] * cartesian_force[i];
+            if let Some(row) = &rows[i] {
+                if cartesian_force[i] != 0.0 {
+                    accumulate(&mut generalized_forces, row * cartesian_force[i]);
+                }
             }
         }
-        generalized_forces += SVector::from(direct);
+        accumulate(&mut generalized_forces, SVector::from(direct));
     }
     EquationsOfMotion {
         mass_matrix,
-        generalized_forces,
-        inertial_terms,
+        generalized_forces: generalized_forces.unwrap_or_else(SVector::zeros),
+        inertial_terms: inertial_terms.unwrap_or_else(SVector::zeros),
     }
 }
 
-/// What the passes produce: Jacobian rows, x, ẋ, a (at q̈ = 0) and −∇V.
-type Kinematics<S, const N: usize, const K: usize> =
-    ([SVector<S, N>; K], [S; K], [S; K], [S; K], SVector<S, N>);
+/// `sum += term`, where an absent sum is an exact zero (so the first term is not added to zeros).
+#[inline(always)]
+fn accumulate<S: Scalar, const N: usize>(sum: &mut Option<SVector<S, N>>, term: SVector<S, N>) {
+    match sum {
+        Some(s) => *s += term,
+        None => *sum = Some(term),
+    }
+}
+
+/// What the passes produce, row by row of x: the Jacobian row (`None` where the row does not
+/// depend on q), the value, the velocity, the acceleration at q̈ = 0 (`None` where it vanishes
+/// identically); and −∇V (`None` without a potential).
+struct Kinematics<S: Scalar, const N: usize, const K: usize> {
+    rows: [Option<SVector<S, N>>; K],
+    x: [S; K],
+    x_dot: [S; K],
+    accelerations: [Option<S>; K],
+    potential_forces: Option<SVector<S, N>>,
+}
 
 /// Scleronomic: one hyper-dual pass (see [`equations_of_motion`]).
 #[inline(always)]
@@ -175,30 +225,36 @@ fn one_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     });
     let th = HyperDualSVec::from_re(t);
     let xh = model.cartesian(th, &qh);
-    let rows: [SVector<S, N>; K] =
-        std::array::from_fn(|i| xh[i].eps1.0.unwrap_or_else(SVector::zeros));
+    let rows: [Option<SVector<S, N>>; K] = std::array::from_fn(|i| xh[i].eps1.0);
     let x = std::array::from_fn(|i| xh[i].re);
     let x_dot = std::array::from_fn(|i| xh[i].eps2.0.map_or(S::zero(), |d| d[0]));
+    // a = (∂ẋ/∂q) q̇.
     let accelerations = std::array::from_fn(|i| {
-        xh[i].eps1eps2.0.map_or(S::zero(), |h| {
-            let mut a = S::zero();
-            for j in 0..N {
+        xh[i].eps1eps2.0.map(|h| {
+            let mut a = h[0] * v[0];
+            for j in 1..N {
                 a += h[j] * v[j];
             }
             a
         })
     });
     // ∇V needs only first derivatives: evaluate V on gradient duals rebuilt from the same pass.
-    let forces = if M::HAS_POTENTIAL {
+    let potential_forces = if M::HAS_POTENTIAL {
         let qd: [DualSVec<S, N>; N] =
             std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
         let xd: [DualSVec<S, N>; K] =
-            std::array::from_fn(|i| DualSVec::new(x[i], Derivative::some(rows[i])));
-        -gradient(&model.potential(DualSVec::from_re(t), &qd, &xd))
+            std::array::from_fn(|i| DualSVec::new(x[i], Derivative::new(rows[i])));
+        Some(-gradient(&model.potential(DualSVec::from_re(t), &qd, &xd)))
     } else {
-        SVector::zeros()
+        None
     };
-    (rows, x, x_dot, accelerations, forces)
+    Kinematics {
+        rows,
+        x,
+        x_dot,
+        accelerations,
+        potential_forces,
+    }
 }
 
 /// Rheonomic: a gradient pass for J and ∇V, a second-order pass along (q̇, 1) for ẋ and a.
@@ -210,20 +266,19 @@ fn two_passes<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     v: &[S; N],
 ) -> Kinematics<S, N, K> {
     let (x1, qd, td) = cartesian_with_jacobian(model, t, q);
-    let rows: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
-    let forces = if M::HAS_POTENTIAL {
-        -gradient(&model.potential(td, &qd, &x1))
+    let potential_forces = if M::HAS_POTENTIAL {
+        Some(-gradient(&model.potential(td, &qd, &x1)))
     } else {
-        SVector::zeros()
+        None
     };
     let x2 = cartesian_along_motion(model, t, q, v);
-    (
-        rows,
-        std::array::from_fn(|i| x2[i].re),
-        std::array::from_fn(|i| x2[i].v1),
-        std::array::from_fn(|i| x2[i].v2),
-        forces,
-    )
+    Kinematics {
+        rows: std::array::from_fn(|i| x1[i].eps.0),
+        x: std::array::from_fn(|i| x2[i].re),
+        x_dot: std::array::from_fn(|i| x2[i].v1),
+        accelerations: std::array::from_fn(|i| Some(x2[i].v2)),
+        potential_forces,
+    }
 }
 
 /// q̈ from M q̈ = 𝓕 − b, for any scalar (dual numbers give derivatives of the accelerations).
@@ -239,26 +294,50 @@ pub fn accelerations_generic<M: Model<N, K>, S: Scalar, const N: usize, const K:
 }
 
 /// Solves M q̈ = 𝓕 − b, naming the configuration when M is singular.
+#[inline(always)]
 pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
     eom: &EquationsOfMotion<S, N>,
     t: S,
     q: &[S; N],
 ) -> Result<[S; N]> {
-    let real = |q: &[S; N]| -> [f64; N] { std::array::from_fn(|j| q[j].re()) };
-    let factor = Ldlt::new(&eom.mass_matrix).map_err(|e| Error::SingularMassMatrix {
-        t: t.re(),
-        configuration: describe_configuration(&C::NAMES, &real(q)),
-        coordinate: C::NAMES[e.index],
-        pivot: e.pivot,
-    })?;
-    let qdd = factor.solve(&(eom.generalized_forces - eom.inertial_terms));
-    if qdd.iter().all(|a| a.re().is_finite()) {
+    let rhs = eom.generalized_forces - eom.inertial_terms;
+    let qdd = match solve_spd(&eom.mass_matrix, &rhs) {
+        Ok(qdd) => qdd,
+        Err(e) => return Err(singular_mass_matrix::<C, S, N>(e, t, q)),
+    };
+    // Branch-free on the common path: a·0 is 0 exactly when a is finite.
+    let mut zero = 0.0;
+    for a in qdd.iter() {
+        zero += a.re() * 0.0;
+    }
+    if zero == 0.0 {
         Ok(qdd.into())
     } else {
-        Err(Error::NonFiniteDynamics {
-            t: t.re(),
-            configuration: describe_configuration(&C::NAMES, &real(q)),
-        })
+        Err(non_finite_dynamics::<C, S, N>(t, q))
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn singular_mass_matrix<C: Coordinates<N>, S: Scalar, const N: usize>(
+    e: NotPositiveDefinite,
+    t: S,
+    q: &[S; N],
+) -> Error {
+    Error::SingularMassMatrix {
+        t: t.re(),
+        configuration: describe_configuration(&C::NAMES, &q.map(|q| q.re())),
+        coordinate: C::NAMES[e.index],
+        pivot: e.pivot,
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn non_finite_dynamics<C: Coordinates<N>, S: Scalar, const N: usize>(t: S, q: &[S; N]) -> Error {
+    Error::NonFiniteDynamics {
+        t: t.re(),
+        configuration: describe_configuration(&C::NAMES, &q.map(|q| q.re())),
     }
 }
 
@@ -348,7 +427,7 @@ pub fn mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     q: &[S; N],
 ) -> SMatrix<S, N, N> {
     let (x1, _, _) = cartesian_with_jacobian(model, t, q);
-    let rows: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    let rows: [Option<SVector<S, N>>; K] = std::array::from_fn(|i| x1[i].eps.0);
     assemble_mass_matrix(M::INERTIAL, &model.masses(), &rows)
 }
 

@@ -188,6 +188,68 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
     }
 }
 
+/// Solves M x = b for symmetric positive definite M: the solve on the hot path of `accelerations`.
+///
+/// The same pivots and the same test as [`Ldlt`] (the first pivot that is not clearly positive is
+/// reported), but one or two coordinates — most mechanisms people write down — take the closed
+/// form with a single division instead of a factorisation with one division per pivot in series:
+///
+/// ```text
+/// N = 2:  d₀ = M₀₀,  det = M₀₀M₁₁ − M₁₀²,  d₁ = det / d₀,   x = [M₁₁b₀ − M₁₀b₁, M₀₀b₁ − M₁₀b₀] / det
+/// ```
+///
+/// (d₁ > tol ⇔ det > tol·d₀ since d₀ > 0, so the second test needs no division either.)
+///
+/// ```
+/// use lagrange_core::linalg::solve_spd;
+/// use nalgebra::{matrix, vector};
+/// let m = matrix![4.0, 2.0; 2.0, 3.0];
+/// let x = solve_spd(&m, &vector![2.0, 1.0]).unwrap();
+/// assert!(((m * x) - vector![2.0, 1.0]).norm() < 1e-15);
+/// assert_eq!(solve_spd(&matrix![1.0, 2.0; 2.0, 4.0], &vector![1.0, 1.0]).unwrap_err().index, 1);
+/// ```
+#[inline(always)]
+pub fn solve_spd<S: Scalar, const N: usize>(
+    m: &SMatrix<S, N, N>,
+    b: &SVector<S, N>,
+) -> Result<SVector<S, N>, NotPositiveDefinite> {
+    if N == 1 {
+        let d0 = m[(0, 0)];
+        if !(d0.re() > SINGULAR_PIVOT * d0.re().abs()) {
+            return Err(NotPositiveDefinite {
+                index: 0,
+                pivot: d0.re(),
+            });
+        }
+        let mut x = *b;
+        x[0] = b[0] / d0;
+        return Ok(x);
+    }
+    if N == 2 {
+        let (m00, m10, m11) = (m[(0, 0)], m[(1, 0)], m[(1, 1)]);
+        let tol = SINGULAR_PIVOT * m00.re().abs().max(m11.re().abs());
+        if !(m00.re() > tol) {
+            return Err(NotPositiveDefinite {
+                index: 0,
+                pivot: m00.re(),
+            });
+        }
+        let det = m00 * m11 - m10 * m10;
+        if !(det.re() > tol * m00.re()) {
+            return Err(NotPositiveDefinite {
+                index: 1,
+                pivot: det.re() / m00.re(),
+            });
+        }
+        let inv_det = det.recip();
+        let mut x = *b;
+        x[0] = (m11 * b[0] - m10 * b[1]) * inv_det;
+        x[1] = (m00 * b[1] - m10 * b[0]) * inv_det;
+        return Ok(x);
+    }
+    Ok(Ldlt::new(m)?.solve(b))
+}
+
 /// Solves A x = b for a general square A by LU with partial pivoting; `None` when a pivot vanishes
 /// (|pivot| ≤ `SINGULAR_PIVOT`·max|Aᵢⱼ|). Used by Newton iterations of implicit methods, whose
 /// Jacobians are not symmetric.
@@ -361,6 +423,47 @@ mod tests {
                 .index,
             0
         );
+    }
+
+    #[test]
+    fn closed_form_small_solves_agree_with_ldlt() {
+        // The closed forms for N ≤ 2 against the factorisation: same solution to round-off (both
+        // backward stable for SPD 2×2; the condition number here is ≈ 20), same failing pivot.
+        let m2 = matrix![3.0, 2.9; 2.9, 3.0];
+        let b2 = vector![1.0, -2.0];
+        let x2 = solve_spd(&m2, &b2).unwrap();
+        assert!((x2 - Ldlt::new(&m2).unwrap().solve(&b2)).norm() < 1e-13 * x2.norm());
+        let m1 = matrix![0.25];
+        assert_eq!(solve_spd(&m1, &vector![1.0]).unwrap()[0], 4.0);
+        for bad in [
+            matrix![1.0, 2.0; 2.0, 4.0],
+            matrix![f64::NAN, 0.0; 0.0, 1.0],
+            matrix![1.0, 0.0; 0.0, f64::NAN],
+            matrix![-1.0, 0.0; 0.0, 1.0],
+            matrix![1.0, 0.0; 0.0, 1e-14],
+        ] {
+            let ours = solve_spd(&bad, &b2).unwrap_err();
+            let reference = Ldlt::new(&bad).unwrap_err();
+            assert_eq!(ours.index, reference.index, "{bad}");
+        }
+        assert_eq!(
+            solve_spd(&matrix![0.0], &vector![1.0]).unwrap_err().index,
+            0
+        );
+        assert_eq!(
+            solve_spd(&matrix![f64::NAN], &vector![1.0])
+                .unwrap_err()
+                .index,
+            0
+        );
+        // Through dual numbers: d/ds of M(s)⁻¹ b agrees with the factorisation.
+        let s = Dual64::from_re(0.5).derivative();
+        let m = matrix![s + 2.0, Dual64::from(1.0); Dual64::from(1.0), s * 3.0];
+        let b = vector![Dual64::from(1.0), Dual64::from(2.0)];
+        let (x, y) = (solve_spd(&m, &b).unwrap(), Ldlt::new(&m).unwrap().solve(&b));
+        for k in 0..2 {
+            assert!((x[k].re - y[k].re).abs() < 1e-15 && (x[k].eps - y[k].eps).abs() < 1e-14);
+        }
     }
 
     #[test]
