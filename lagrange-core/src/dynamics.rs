@@ -85,21 +85,23 @@ fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
     for i in 0..inertial {
         let Some(row) = &rows[i] else { continue };
         let weighted = row * S::from(masses[i]);
-        let mut update = SMatrix::<S, N, N>::zeros();
-        for c in 0..N {
-            for r in c..N {
-                update[(r, c)] = row[r] * weighted[c];
-            }
-        }
         match &mut mass_matrix {
             Some(sum) => {
                 for c in 0..N {
                     for r in c..N {
-                        sum[(r, c)] += update[(r, c)];
+                        sum[(r, c)] += row[r] * weighted[c];
                     }
                 }
             }
-            None => mass_matrix = Some(update),
+            None => {
+                let mut first = SMatrix::<S, N, N>::zeros();
+                for c in 0..N {
+                    for r in c..N {
+                        first[(r, c)] = row[r] * weighted[c];
+                    }
+                }
+                mass_matrix = Some(first);
+            }
         }
     }
     let mut mass_matrix = mass_matrix.unwrap_or_else(SMatrix::zeros);
@@ -123,7 +125,7 @@ fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
 /// has no Jacobian row, a row that is linear in q (a slider) has no `a`, and num-dual records both
 /// as absent derivatives, known when this function is compiled for a mechanism — so they cost
 /// nothing rather than additions of zeros.
-#[inline(always)]
+#[inline]
 pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
     t: S,
