@@ -9,7 +9,7 @@ count() {
   valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bin" "$1" "$2" 2>&1 |
     grep -o 'refs: *[0-9,]*' | tr -d ', ' | cut -d: -f2
 }
-for m in ${MODES:-pendulum hw_pendulum double_pendulum hw_double_pendulum wedge_block hw_wedge_block cart_pendulum hw_cart_pendulum}; do
+for m in ${MODES:-pendulum hw_pendulum double_pendulum hw_double_pendulum wedge_block hw_wedge_block assembled_wedge_block cart_pendulum hw_cart_pendulum}; do
   a=$(count "$m" 1000)
   b=$(count "$m" 3000)
   echo "$m $(( (b - a) / 2000 ))"

@@ -128,6 +128,16 @@ fn hw_wedge(p: &wedge_block::WedgeBlock) -> [f64; 2] {
         (p.wedge_mass + p.block_mass) * p.g * s / den,
     ]
 }
+/// The wedge by the generated code's method, written out by hand in f64 (rows [1, 0], [1, c],
+/// [0, −s]; M = JᵀμJ; 𝓕 = Jᵀw; 2×2 solve; no checks): see benches/accelerations.rs.
+fn assembled_wedge(p: &wedge_block::WedgeBlock) -> [f64; 2] {
+    let (s, c) = p.alpha.sin_cos();
+    let (big_m, m) = (p.wedge_mass, p.block_mass);
+    let (m00, m10, m11) = (big_m + m, m * c, m * (c * c + s * s));
+    let (f0, f1) = (0.0, m * p.g * s);
+    let inv_det = 1.0 / (m00 * m11 - m10 * m10);
+    [(m11 * f0 - m10 * f1) * inv_det, (m00 * f1 - m10 * f0) * inv_det]
+}
 fn hw_cart(p: &cart_pendulum::CartPendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
     let (s, c) = q[1].sin_cos();
     let (mc, m, l, g) = (p.cart_mass, p.m, p.l, p.g);
@@ -324,6 +334,18 @@ fn main() {
             };
             for _ in 0..n {
                 acc += hw_wedge(black_box(&sys))[0];
+            }
+        }
+        "assembled_wedge_block" => {
+            let sys = wedge_block::WedgeBlock {
+                wedge_mass: 3.0,
+                block_mass: 1.0,
+                alpha: 0.5,
+                h: 1.0,
+                g: 9.81,
+            };
+            for _ in 0..n {
+                acc += assembled_wedge(black_box(&sys))[0];
             }
         }
         "hw_cart_pendulum" => {
