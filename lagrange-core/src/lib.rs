@@ -1,10 +1,10 @@
 //! The runtime of `lagrange`: the numerical work behind every `#[mechanism]`.
 //!
 //! - [`model`]: what a declaration compiles to (Cartesian coordinates x(q, t) with masses) and the
-//!   [`State`](model::State) a mechanism is simulated in;
+//!   [`State`] a mechanism is simulated in;
 //! - [`dynamics`]: M q̈ = 𝓕 − b by dual-number automatic differentiation;
 //! - [`linalg`]: small dense solves generic over dual numbers;
-//! - [`mechanism`]: the user-facing [`Mechanism`](mechanism::Mechanism) trait;
+//! - [`mechanism`]: the user-facing [`Mechanism`] trait;
 //! - [`integrate`]: the integrators, generic over every mechanism;
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`error`]: typed errors; nothing here panics on user input.

@@ -1,8 +1,8 @@
 //! The `#[mechanism]` attribute of `lagrange`. Use it through the `lagrange` crate, which documents
 //! the declaration; this crate only turns a declaration into code:
 //!
-//! parse ([`ast`], [`attr`]) → check, collecting every error ([`check`], [`ctxt`]) → expand
-//! ([`expand`]). On error the user's items are still emitted, with stubs for what the rest of their
+//! parse (modules `ast`, `attr`) → check, collecting every error (`check`, `ctxt`) → expand
+//! (`expand`). On error the user's items are still emitted, with stubs for what the rest of their
 //! code names, so one mistake gives one message.
 
 mod ast;
