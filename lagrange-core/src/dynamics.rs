@@ -25,7 +25,8 @@ use nalgebra::{SMatrix, SVector};
 use num_dual::{Derivative, Dual, Dual2, DualSVec, HyperDualVec};
 
 /// A hyper-dual number with an N-wide first part and a scalar second part.
-type HyperDualSVec<S, const N: usize, const M: usize> = HyperDualVec<S, Const<N>, Const<M>>;
+pub(crate) type HyperDualSVec<S, const N: usize, const M: usize> =
+    HyperDualVec<S, Const<N>, Const<M>>;
 
 /// The terms of M q̈ = 𝓕 − b at one state.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -132,12 +133,43 @@ pub fn equations_of_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: u
     q: &[S; N],
     v: &[S; N],
 ) -> EquationsOfMotion<S, N> {
-    let masses = model.masses();
     let kinematics = if M::RHEONOMIC {
         two_passes(model, t, q, v)
     } else {
-        one_pass(model, t, q, v)
+        kinematics_of_pass(model, &motion_pass(model, t, q, v), t, q, v)
     };
+    assemble(model, &kinematics, t, q, v)
+}
+
+/// [`equations_of_motion`] of a scleronomic mechanism from a [`MotionPass`] already made, so a
+/// caller that also evaluates constraints on the same seeds (the constrained solve) pays for one
+/// evaluation of x(q).
+#[inline]
+pub(crate) fn equations_of_motion_from_pass<
+    M: Model<N, K>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+>(
+    model: &M,
+    pass: &MotionPass<S, N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> EquationsOfMotion<S, N> {
+    assemble(model, &kinematics_of_pass(model, pass, t, q, v), t, q, v)
+}
+
+/// M, 𝓕 and b from the kinematics of either pass.
+#[inline(always)]
+fn assemble<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    kinematics: &Kinematics<S, N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> EquationsOfMotion<S, N> {
+    let masses = model.masses();
     let rows = &kinematics.rows;
 
     let mass_matrix = assemble_mass_matrix(M::INERTIAL, &masses, rows);
@@ -209,14 +241,39 @@ struct Kinematics<S: Scalar, const N: usize, const K: usize> {
     potential_forces: Option<SVector<S, N>>,
 }
 
-/// Scleronomic: one hyper-dual pass (see [`equations_of_motion`]).
+/// One evaluation of x(q) for a scleronomic mechanism, on hyper-dual numbers: q seeded with
+/// ε₁ = eⱼ (gradient) and ε₂ = q̇ⱼ (direction of motion), so each row carries xᵢ, its Jacobian row
+/// (ε₁), ẋᵢ (ε₂) and ∂ẋᵢ/∂q (ε₁ε₂, see [`along_motion`]). The equations of motion and, in the
+/// constrained solve, the constraint rows are read off the same pass.
+pub(crate) struct MotionPass<S: Scalar, const N: usize, const K: usize> {
+    /// x(q) on the seeds.
+    pub x: [HyperDualSVec<S, N, 1>; K],
+}
+
+/// d²/ds² f(q + s q̇)|₀ = (∂ḟ/∂q) q̇ of a value f computed on the seeds of a [`MotionPass`]
+/// (`None` when f is at most linear in q: the mixed part was never formed).
 #[inline(always)]
-fn one_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+pub(crate) fn along_motion<S: Scalar, const N: usize>(
+    f: &HyperDualSVec<S, N, 1>,
+    v: &[S; N],
+) -> Option<S> {
+    f.eps1eps2.0.map(|h| {
+        let mut a = h[0] * v[0];
+        for j in 1..N {
+            a += h[j] * v[j];
+        }
+        a
+    })
+}
+
+/// The hyper-dual pass of a scleronomic mechanism (see [`equations_of_motion`]).
+#[inline(always)]
+pub(crate) fn motion_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
     t: S,
     q: &[S; N],
     v: &[S; N],
-) -> Kinematics<S, N, K> {
+) -> MotionPass<S, N, K> {
     let qh: [HyperDualSVec<S, N, 1>; N] = std::array::from_fn(|j| {
         HyperDualSVec::new(
             q[j],
@@ -225,21 +282,25 @@ fn one_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
             Derivative::none(),
         )
     });
-    let th = HyperDualSVec::from_re(t);
-    let xh = model.cartesian(th, &qh);
+    MotionPass {
+        x: model.cartesian(HyperDualSVec::from_re(t), &qh),
+    }
+}
+
+/// J, x, ẋ, a = (∂ẋ/∂q) q̇ and −∇V from a [`MotionPass`].
+#[inline(always)]
+fn kinematics_of_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    pass: &MotionPass<S, N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Kinematics<S, N, K> {
+    let xh = &pass.x;
     let rows: [Option<SVector<S, N>>; K] = std::array::from_fn(|i| xh[i].eps1.0);
     let x = std::array::from_fn(|i| xh[i].re);
     let x_dot = std::array::from_fn(|i| xh[i].eps2.0.map_or(S::zero(), |d| d[0]));
-    // a = (∂ẋ/∂q) q̇.
-    let accelerations = std::array::from_fn(|i| {
-        xh[i].eps1eps2.0.map(|h| {
-            let mut a = h[0] * v[0];
-            for j in 1..N {
-                a += h[j] * v[j];
-            }
-            a
-        })
-    });
+    let accelerations = std::array::from_fn(|i| along_motion(&xh[i], v));
     // ∇V needs only first derivatives: evaluate V on gradient duals rebuilt from the same pass.
     let potential_forces = if M::HAS_POTENTIAL {
         let qd: [DualSVec<S, N>; N] =

@@ -83,10 +83,10 @@ fn always_active<M: Constraints<N, K, C>, const N: usize, const K: usize, const 
 
 /// The rows and the Jacobian rows of x (for the mass matrix), at (t, q, q̇).
 ///
-/// Passes: (1) q seeded as a gradient dual: x, J and G; (2) (q, t) along (q̇, 1) as a second-order
-/// dual: ẋ, the q̈ = 0 accelerations of x, ġ and β of position rows; (3) velocity rows along the same
-/// motion as a first-order dual (h and its β) and (4) with q̇ seeded as a gradient dual (A), ẋ's
-/// gradient in q̇ being J.
+/// Two evaluations of x: (1) q seeded as a gradient dual: x, J and G; (2) (q, t) along (q̇, 1) as
+/// a second-order dual: ẋ, the q̈ = 0 accelerations of x, ġ and β of position rows. Velocity rows
+/// then take two first-order passes of their own ([`velocity_rows`]). Where the hyper-dual pass of
+/// the equations of motion is at hand, [`rows_from_pass`] builds the same duals from it instead.
 #[allow(clippy::type_complexity)]
 fn rows_and_jacobian<
     M: Constraints<N, K, C>,
@@ -100,74 +100,149 @@ fn rows_and_jacobian<
     q: &[S; N],
     v: &[S; N],
 ) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
+    let td = DualSVec::from_re(t);
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let x1 = model.cartesian(td, &qd);
+    let t2 = if M::RHEONOMIC {
+        Dual2::new(t, S::one(), S::zero())
+    } else {
+        Dual2::from_re(t)
+    };
+    let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
+    let x2 = model.cartesian(t2, &q2);
+    rows_on(model, t, q, v, (td, &qd, &x1), (t2, &q2, &x2))
+}
+
+/// [`rows_and_jacobian`] of a scleronomic mechanism from the hyper-dual pass of its equations of
+/// motion: x as a gradient dual is (re, ε₁) of the pass, and x along the motion is (re, ε₂, a) with
+/// a = (∂ẋ/∂q) q̇ from ε₁ε₂ — the same numbers the two evaluations of [`rows_and_jacobian`] would
+/// give, without evaluating x(q) again.
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+pub(crate) fn rows_from_pass<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    pass: &dynamics::MotionPass<S, N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
+    let td = DualSVec::from_re(t);
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let x1: [DualSVec<S, N>; K] =
+        std::array::from_fn(|i| DualSVec::new(pass.x[i].re, Derivative::new(pass.x[i].eps1.0)));
+    let t2 = Dual2::from_re(t);
+    let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
+    let x2: [Dual2<S>; K] = std::array::from_fn(|i| {
+        Dual2::new(
+            pass.x[i].re,
+            pass.x[i].eps2.0.map_or(S::zero(), |d| d[0]),
+            dynamics::along_motion(&pass.x[i], v).unwrap_or(S::zero()),
+        )
+    });
+    rows_on(model, t, q, v, (td, &qd, &x1), (t2, &q2, &x2))
+}
+
+/// The rows from x as a gradient dual (J, G) and x along the motion (ẋ, a; ġ, β of position
+/// rows), then the velocity rows ([`velocity_rows`]).
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+fn rows_on<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    (td, qd, x1): (DualSVec<S, N>, &[DualSVec<S, N>; N], &[DualSVec<S, N>; K]),
+    (t2, q2, x2): (Dual2<S>, &[Dual2<S>; N], &[Dual2<S>; K]),
+) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
     let mut out = ConstraintRows {
         rows: [SVector::zeros(); C],
         bias: [S::zero(); C],
         value: [S::zero(); C],
         rate: [S::zero(); C],
     };
-    // Pass 1.
-    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
-    let td = DualSVec::from_re(t);
-    let x1 = model.cartesian(td, &qd);
     let jac: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
     if has_position::<M, N, K, C>() {
-        let g1 = model.position_constraints(td, &qd, &x1);
+        let g1 = model.position_constraints(td, qd, x1);
+        let g2 = model.position_constraints(t2, q2, x2);
         for i in 0..C {
             if M::KINDS[i].is_position() {
                 out.rows[i] = gradient(&g1[i]);
                 out.value[i] = g1[i].re;
-            }
-        }
-    }
-    // Pass 2.
-    let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
-    let t2 = if M::RHEONOMIC {
-        Dual2::new(t, S::one(), S::zero())
-    } else {
-        Dual2::from_re(t)
-    };
-    let x2 = model.cartesian(t2, &q2);
-    if has_position::<M, N, K, C>() {
-        let g2 = model.position_constraints(t2, &q2, &x2);
-        for i in 0..C {
-            if M::KINDS[i].is_position() {
                 out.rate[i] = g2[i].v1;
                 out.bias[i] = g2[i].v2;
             }
         }
     }
-    if has_velocity::<M, N, K, C>() {
-        // Pass 3: h(q + s q̇, q̇, t + s): value and β.
-        let tq = if M::RHEONOMIC {
-            Dual::new(t, S::one())
-        } else {
-            Dual::from_re(t)
-        };
-        let qq: [Dual<S>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
-        let vq: [Dual<S>; N] = std::array::from_fn(|j| Dual::from_re(v[j]));
-        let xq: [Dual<S>; K] = std::array::from_fn(|i| Dual::new(x2[i].re, x2[i].v1));
-        let xdq: [Dual<S>; K] = std::array::from_fn(|i| Dual::new(x2[i].v1, x2[i].v2));
-        let h = model.velocity_constraints(tq, &qq, &vq, &xq, &xdq);
-        // Pass 4: A = ∂h/∂q̇, with ∂ẋ/∂q̇ = J.
-        let tv = DualSVec::from_re(t);
-        let qv: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
-        let vv: [DualSVec<S, N>; N] =
-            std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
-        let xv: [DualSVec<S, N>; K] = std::array::from_fn(|i| DualSVec::from_re(x2[i].re));
-        let xdv: [DualSVec<S, N>; K] =
-            std::array::from_fn(|i| DualVec::new(x2[i].v1, Derivative::some(jac[i])));
-        let hv = model.velocity_constraints(tv, &qv, &vv, &xv, &xdv);
-        for i in 0..C {
-            if M::KINDS[i].is_velocity() {
-                out.value[i] = h[i].re;
-                out.rate[i] = h[i].re;
-                out.bias[i] = h[i].eps;
-                out.rows[i] = gradient(&hv[i]);
-            }
+    let motion = CartesianMotion {
+        x: std::array::from_fn(|i| x2[i].re),
+        x_dot: std::array::from_fn(|i| x2[i].v1),
+        x_accel: std::array::from_fn(|i| x2[i].v2),
+    };
+    velocity_rows(model, t, q, v, &motion, &jac, &mut out);
+    (out, jac)
+}
+
+/// x, ẋ and the q̈ = 0 accelerations of x at one state: what velocity rows are evaluated on.
+struct CartesianMotion<S: Scalar, const K: usize> {
+    x: [S; K],
+    x_dot: [S; K],
+    x_accel: [S; K],
+}
+
+/// The velocity rows h(q, q̇, t) into `out`: (3) along the motion as a first-order dual (value and
+/// β), with x and ẋ advanced along it by ẋ and the q̈ = 0 accelerations; (4) with q̇ seeded as a
+/// gradient dual (A), ẋ's gradient in q̇ being J.
+fn velocity_rows<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    motion: &CartesianMotion<S, K>,
+    jac: &[SVector<S, N>; K],
+    out: &mut ConstraintRows<S, N, C>,
+) {
+    if !has_velocity::<M, N, K, C>() {
+        return;
+    }
+    // Pass 3: h(q + s q̇, q̇, t + s): value and β.
+    let tq = if M::RHEONOMIC {
+        Dual::new(t, S::one())
+    } else {
+        Dual::from_re(t)
+    };
+    let qq: [Dual<S>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
+    let vq: [Dual<S>; N] = std::array::from_fn(|j| Dual::from_re(v[j]));
+    let xq: [Dual<S>; K] = std::array::from_fn(|i| Dual::new(motion.x[i], motion.x_dot[i]));
+    let xdq: [Dual<S>; K] = std::array::from_fn(|i| Dual::new(motion.x_dot[i], motion.x_accel[i]));
+    let h = model.velocity_constraints(tq, &qq, &vq, &xq, &xdq);
+    // Pass 4: A = ∂h/∂q̇, with ∂ẋ/∂q̇ = J.
+    let tv = DualSVec::from_re(t);
+    let qv: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
+    let vv: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
+    let xv: [DualSVec<S, N>; K] = std::array::from_fn(|i| DualSVec::from_re(motion.x[i]));
+    let xdv: [DualSVec<S, N>; K] =
+        std::array::from_fn(|i| DualVec::new(motion.x_dot[i], Derivative::some(jac[i])));
+    let hv = model.velocity_constraints(tv, &qv, &vv, &xv, &xdv);
+    for i in 0..C {
+        if M::KINDS[i].is_velocity() {
+            out.value[i] = h[i].re;
+            out.rate[i] = h[i].re;
+            out.bias[i] = h[i].eps;
+            out.rows[i] = gradient(&hv[i]);
         }
     }
-    (out, jac)
 }
 
 /// Pass 1 alone, on f64: position rows G, their values g and the Jacobian rows of x.
@@ -449,7 +524,12 @@ pub fn accelerations_in_mode<
     v: &[S; N],
     mode: &Mode<C>,
 ) -> Result<ConstrainedAccelerations<S, N, C>> {
-    let eom = dynamics::equations_of_motion(model, t, q, v);
+    // A scleronomic mechanism evaluates x(q) once, for M, 𝓕, b and the constraint rows alike.
+    let pass = (!M::RHEONOMIC).then(|| dynamics::motion_pass(model, t, q, v));
+    let eom = match &pass {
+        Some(pass) => dynamics::equations_of_motion_from_pass(model, pass, t, q, v),
+        None => dynamics::equations_of_motion(model, t, q, v),
+    };
     let l = cholesky(&eom.mass_matrix).map_err(|e| singular_mass::<M, S, N, K, C>(e, t, q))?;
     let u = cholesky_substitute(&l, &(eom.generalized_forces - eom.inertial_terms));
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
@@ -462,7 +542,10 @@ pub fn accelerations_in_mode<
     if !enforced.iter().any(|&e| e) {
         return finish::<M, S, N, K, C>(u, multipliers, t, q);
     }
-    let cr = constraint_rows(model, t, q, v);
+    let cr = match &pass {
+        Some(pass) => rows_from_pass(model, pass, t, q, v).0,
+        None => constraint_rows(model, t, q, v),
+    };
     let y: [SVector<S, N>; C] = std::array::from_fn(|i| {
         if enforced[i] || sliding[i] {
             cholesky_substitute(&l, &cr.rows[i])

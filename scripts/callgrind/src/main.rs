@@ -4,6 +4,14 @@
 use lagrange::prelude::*;
 use std::hint::black_box;
 
+// Constrained mechanisms, from the gallery's scenes.
+#[path = "../../../examples/four_bar.rs"]
+#[allow(dead_code)]
+mod four_bar_scene;
+#[path = "../../../examples/cartesian_pendulum.rs"]
+#[allow(dead_code)]
+mod cartesian_pendulum_scene;
+
 #[mechanism]
 pub mod pendulum {
     pub struct Coords {
@@ -322,6 +330,59 @@ fn main() {
                     black_box([0.7, -1.2]),
                     black_box([1.1, -0.4]),
                 )[0];
+            }
+        }
+        "four_bar" => {
+            use four_bar_scene::four_bar::*;
+            let sys = FourBar {
+                l1: 1.0,
+                l2: 3.0,
+                l3: 2.0,
+                m1: 1.0,
+                m2: 2.0,
+                m3: 1.5,
+                d: 3.0,
+                g: 9.81,
+            };
+            let guess = State::new(
+                0.0,
+                Coords {
+                    theta1: 1.0,
+                    theta2: 0.2,
+                    theta3: 1.6,
+                },
+                Coords {
+                    theta1: 3.0,
+                    theta2: 0.0,
+                    theta3: 0.0,
+                },
+            );
+            let s = lagrange::constraints::consistent_state(&sys, &guess).unwrap();
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
+            }
+        }
+        "cartesian_pendulum" => {
+            use cartesian_pendulum_scene::cartesian_pendulum::*;
+            let sys = CartesianPendulum {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            let (th, w) = (0.7f64, 1.1f64);
+            let s = State::new(
+                0.0,
+                Coords {
+                    x: 0.8 * th.sin(),
+                    y: -0.8 * th.cos(),
+                },
+                Coords {
+                    x: 0.8 * w * th.cos(),
+                    y: 0.8 * w * th.sin(),
+                },
+            );
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
             }
         }
         "hw_wedge_block" | "assembled_wedge_block" => {
