@@ -90,7 +90,9 @@ const LONG_RUN: usize = if cfg!(debug_assertions) {
     100_000
 };
 
-pub fn run(plots: &Path) -> Vec<Check> {
+/// The linkage of this scene (the crank–rocker of the module docs) and its consistent starting
+/// state, shared with the benchmarks.
+pub fn linkage() -> (four_bar::FourBar, four_bar::State) {
     use four_bar::{Coords, FourBar, State};
     let sys = FourBar {
         l1: 1.0,
@@ -117,7 +119,12 @@ pub fn run(plots: &Path) -> Vec<Check> {
             theta3: 0.0,
         },
     );
-    let mut s = consistent_state(&sys, &guess).expect("consistent initial state");
+    let s = consistent_state(&sys, &guess).expect("consistent initial state");
+    (sys, s)
+}
+
+pub fn run(plots: &Path) -> Vec<Check> {
+    let (sys, mut s) = linkage();
     let e0 = sys.energy(&s).expect("energy");
     let h = 1e-3;
     let (mut closure, mut closure_rate, mut energy) = (0.0f64, 0.0f64, 0.0f64);

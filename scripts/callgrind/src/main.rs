@@ -333,31 +333,7 @@ fn main() {
             }
         }
         "four_bar" => {
-            use four_bar_scene::four_bar::*;
-            let sys = FourBar {
-                l1: 1.0,
-                l2: 3.0,
-                l3: 2.0,
-                m1: 1.0,
-                m2: 2.0,
-                m3: 1.5,
-                d: 3.0,
-                g: 9.81,
-            };
-            let guess = State::new(
-                0.0,
-                Coords {
-                    theta1: 1.0,
-                    theta2: 0.2,
-                    theta3: 1.6,
-                },
-                Coords {
-                    theta1: 3.0,
-                    theta2: 0.0,
-                    theta3: 0.0,
-                },
-            );
-            let s = lagrange::constraints::consistent_state(&sys, &guess).unwrap();
+            let (sys, s) = four_bar_scene::linkage();
             for _ in 0..n {
                 acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
             }
