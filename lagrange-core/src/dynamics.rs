@@ -564,10 +564,10 @@ mod tests {
         // By hand: M = [[M + m, m c], [m c, m]], 𝓕 = (0, m g sin α), b = 0 (every row linear).
         let m = p.block_mass;
         let want = [[p.wedge_mass + m, m * c], [m * c, m * (c * c + s * s)]];
-        for r in 0..2 {
-            for k in 0..2 {
+        for (r, row) in want.iter().enumerate() {
+            for (k, entry) in row.iter().enumerate() {
                 // A few roundings of O(1) terms.
-                assert!((eom.mass_matrix[(r, k)] - want[r][k]).abs() < 1e-15);
+                assert!((eom.mass_matrix[(r, k)] - entry).abs() < 1e-15);
             }
         }
         assert_eq!(eom.mass_matrix[(0, 1)], eom.mass_matrix[(1, 0)]);
