@@ -82,30 +82,25 @@ fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
     masses: &[f64; K],
     rows: &[Option<SVector<S, N>>; K],
 ) -> SMatrix<S, N, N> {
-    let mut mass_matrix: Option<SMatrix<S, N, N>> = None;
-    for i in 0..inertial {
-        let Some(row) = &rows[i] else { continue };
-        let weighted = row * S::from(masses[i]);
-        match &mut mass_matrix {
-            Some(sum) => {
-                for c in 0..N {
-                    for r in c..N {
-                        sum[(r, c)] += row[r] * weighted[c];
-                    }
+    let mut mass_matrix = SMatrix::<S, N, N>::zeros();
+    // Written for the compiler, measured with scripts/callgrind: over the constant range 0..K (not
+    // 0..inertial), from a zero matrix, LLVM unrolls this loop for small mechanisms, where otherwise
+    // a pendulum's rows stay in memory and are looped over — pendulum 286 → 241 instructions per
+    // `accelerations`, drag 315 → 272 — at a price for long chains (N = 32: 578k → 612k; starting
+    // from the first row instead of zeros keeps the chain at 578k but the pendulum at 277).
+    for i in 0..K {
+        if i >= inertial {
+            break;
+        }
+        if let Some(row) = &rows[i] {
+            let weighted = row * S::from(masses[i]);
+            for c in 0..N {
+                for r in c..N {
+                    mass_matrix[(r, c)] += row[r] * weighted[c];
                 }
-            }
-            None => {
-                let mut first = SMatrix::<S, N, N>::zeros();
-                for c in 0..N {
-                    for r in c..N {
-                        first[(r, c)] = row[r] * weighted[c];
-                    }
-                }
-                mass_matrix = Some(first);
             }
         }
     }
-    let mut mass_matrix = mass_matrix.unwrap_or_else(SMatrix::zeros);
     for c in 0..N {
         for r in (c + 1)..N {
             mass_matrix[(c, r)] = mass_matrix[(r, c)];
