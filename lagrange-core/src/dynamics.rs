@@ -375,9 +375,10 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
     }
 }
 
+/// The error for a mass matrix that is singular at (t, q), naming the configuration and the pivot.
 #[cold]
 #[inline(never)]
-fn singular_mass_matrix<C: Coordinates<N>, S: Scalar, const N: usize>(
+pub(crate) fn singular_mass_matrix<C: Coordinates<N>, S: Scalar, const N: usize>(
     e: NotPositiveDefinite,
     t: S,
     q: &[S; N],
@@ -390,9 +391,13 @@ fn singular_mass_matrix<C: Coordinates<N>, S: Scalar, const N: usize>(
     }
 }
 
+/// The error for equations of motion that came out non-finite at (t, q).
 #[cold]
 #[inline(never)]
-fn non_finite_dynamics<C: Coordinates<N>, S: Scalar, const N: usize>(t: S, q: &[S; N]) -> Error {
+pub(crate) fn non_finite_dynamics<C: Coordinates<N>, S: Scalar, const N: usize>(
+    t: S,
+    q: &[S; N],
+) -> Error {
     Error::NonFiniteDynamics {
         t: t.re(),
         configuration: describe_configuration(&C::NAMES, &q.map(|q| q.re())),

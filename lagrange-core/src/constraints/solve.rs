@@ -360,25 +360,6 @@ fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
     std::array::from_fn(|j| q[j].re())
 }
 
-fn singular_mass<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    e: NotPositiveDefinite,
-    t: S,
-    q: &[S; N],
-) -> Error {
-    Error::SingularMassMatrix {
-        t: t.re(),
-        configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, &real(q)),
-        coordinate: <M::Coords as Coordinates<N>>::NAMES[e.index],
-        pivot: e.pivot,
-    }
-}
-
 /// The error for a singular Schur matrix S = R M⁻¹ Rᵀ whose Cholesky factorisation stopped at row
 /// p: row p is (numerically) a combination of earlier rows k, S[p, ·] ≈ Σ cₖ S[k, ·] with
 /// S₁₁ c = S[0..p, p]. The rows with a coefficient that matters are named with p.
@@ -530,7 +511,8 @@ pub fn accelerations_in_mode<
         Some(pass) => dynamics::equations_of_motion_from_pass(model, pass, t, q, v),
         None => dynamics::equations_of_motion(model, t, q, v),
     };
-    let l = cholesky(&eom.mass_matrix).map_err(|e| singular_mass::<M, S, N, K, C>(e, t, q))?;
+    let l = cholesky(&eom.mass_matrix)
+        .map_err(|e| dynamics::singular_mass_matrix::<M::Coords, S, N>(e, t, q))?;
     let u = cholesky_substitute(&l, &(eom.generalized_forces - eom.inertial_terms));
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
     // A sliding row acts when its contact is enforced.
@@ -681,10 +663,7 @@ fn finish<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, co
             multipliers,
         })
     } else {
-        Err(Error::NonFiniteDynamics {
-            t: t.re(),
-            configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, &real(q)),
-        })
+        Err(dynamics::non_finite_dynamics::<M::Coords, S, N>(t, q))
     }
 }
 
@@ -858,7 +837,8 @@ fn least_norm_correction<
     use_row: &[bool; C],
 ) -> Result<SVector<f64, N>> {
     let mass = mass_from_jacobian(model, jac);
-    let l = cholesky(&mass).map_err(|e| singular_mass::<M, f64, N, K, C>(e, t, q))?;
+    let l = cholesky(&mass)
+        .map_err(|e| dynamics::singular_mass_matrix::<M::Coords, f64, N>(e, t, q))?;
     let y: [SVector<f64, N>; C] = std::array::from_fn(|i| {
         if use_row[i] {
             cholesky_substitute(&l, &rows[i])
