@@ -10,9 +10,11 @@ mod attr;
 mod check;
 mod ctxt;
 mod expand;
+mod expand_tree;
 mod lift;
 mod names;
 mod optimize;
+mod structure;
 
 #[cfg(test)]
 mod expand_tests;
