@@ -102,7 +102,11 @@ awk -F'\t' -v load="$load" '
     print ""
     print "uptime:" load
   }' build/results.tsv
-failed=$(awk -F'\t' '!/^#/ && $5 == "FAIL" { printf "%s %s N=%s; ", $1, $2, $3 }' build/results.tsv)
+echo
+echo "Conditioning (numpy, double; the error is against numpy's solve in absolute angles):"
+echo
+.venv/bin/python conditioning.py
+failed=$(awk -F'\t' '!/^#/ && $5 == "FAIL" { printf "%s%s %s N=%s", sep, $1, $2, $3; sep = "; " }' build/results.tsv)
 echo
 if [ -n "$failed" ]; then
   echo "checks missed (timed all the same): $failed"
