@@ -49,14 +49,28 @@ pub enum Seed {
     Time,
 }
 
-/// A mechanism whose Cartesian rows form a tree of translations, xᵢ = x_p(i) + dᵢ(q_S(i), t), with
-/// at most `W` seeds per row (see the [module docs](self)). Parents come before their children.
-pub trait Tree<const N: usize, const K: usize, const W: usize>: Model<N, K> {
-    /// The row each row is translated from (`None` for a root). `PARENT[i] < i`.
-    const PARENT: [Option<usize>; K];
-    /// What each of a row's `W` seeds stands for; the rows of one body share their seeds.
-    const SEEDS: [[Seed; W]; K];
-    /// dᵢ for every row, each body's expression evaluated on its own seeds ([`seed`], [`time`]).
+/// A body of a [`Tree`]: a point whose 2 or 3 rows of x are translated from its parent's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Body<const W: usize> {
+    /// Its first row of x.
+    pub row: usize,
+    /// Its rows: 2 in the plane, 3 in space.
+    pub dim: usize,
+    /// The body it is translated from (an earlier one), if any.
+    pub parent: Option<usize>,
+    /// What each of its `W` seeds stands for.
+    pub seeds: [Seed; W],
+}
+
+/// A mechanism whose bodies form a tree of translations, x_b = x_p(b) + d_b(q_S(b), t), with at most
+/// `W` seeds per body and `B` bodies (see the [module docs](self)). Parents come before their
+/// children, in the list and in x.
+pub trait Tree<const N: usize, const K: usize, const W: usize, const B: usize>:
+    Model<N, K>
+{
+    /// The bodies, in declaration order.
+    const BODIES: [Body<W>; B];
+    /// d for every row of x, each body's expression evaluated on its own seeds ([`seed`], [`time`]).
     fn displacements<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [Seeded<S, W>; K];
 }
 
@@ -80,23 +94,16 @@ pub fn time<S: Scalar, const W: usize>(t: S, slot: Option<usize>) -> Seeded<S, W
     }
 }
 
-/// One row's own terms: value dᵢ, velocity ḋᵢ, acceleration αᵢ at q̈ = 0, and Dᵢ on its seeds.
-struct Own<S: Scalar, const W: usize> {
-    value: S,
-    velocity: S,
-    acceleration: Option<S>,
-    jacobian: Option<SVector<S, W>>,
-}
-
+/// αᵢ = (∂ḋᵢ/∂(q_S, t)) · (q̇_S, 1): the mixed part of a row's displacement along the direction of
+/// motion (zero when the row is at most linear in its seeds).
 #[inline(always)]
-fn own<S: Scalar, const N: usize, const W: usize>(
+fn own_acceleration<S: Scalar, const N: usize, const W: usize>(
     d: &Seeded<S, W>,
     seeds: &[Seed; W],
     v: &[S; N],
-) -> Own<S, W> {
-    // αᵢ = (∂ḋᵢ/∂(q_S, t)) · (q̇_S, 1): the mixed part along the direction of motion.
-    let acceleration = d.eps1eps2.0.map(|h| {
-        let mut a = S::zero();
+) -> S {
+    let mut a = S::zero();
+    if let Some(h) = &d.eps1eps2.0 {
         for (j, seed) in seeds.iter().enumerate() {
             match seed {
                 Seed::Coordinate(c) => a += h[j] * v[*c],
@@ -104,24 +111,19 @@ fn own<S: Scalar, const N: usize, const W: usize>(
                 Seed::Unused => {}
             }
         }
-        a
-    });
-    Own {
-        value: d.re,
-        velocity: d.eps2.0.map_or(S::zero(), |e| e[0]),
-        acceleration,
-        jacobian: d.eps1.0,
     }
+    a
 }
 
 /// M, 𝓕 and b at (t, q, q̇) of a [`Tree`] (see the [module docs](self)).
 #[inline]
 pub fn equations_of_motion<
-    M: Tree<N, K, W>,
+    M: Tree<N, K, W, B>,
     S: Scalar,
     const N: usize,
     const K: usize,
     const W: usize,
+    const B: usize,
 >(
     model: &M,
     t: S,
@@ -130,28 +132,30 @@ pub fn equations_of_motion<
 ) -> EquationsOfMotion<S, N> {
     let d = model.displacements(t, q, v);
     let masses = model.masses();
-    let own: [Own<S, W>; K] = std::array::from_fn(|i| own(&d[i], &M::SEEDS[i], v));
 
-    // Forward sweep, root to leaf: xᵢ, ẋᵢ and Aᵢ = A_p(i) + αᵢ.
+    // Forward sweep, root to leaf: xᵢ, ẋᵢ and Aᵢ = A_p(i) + αᵢ, row by row of each body.
     let mut x = [S::zero(); K];
     let mut x_dot = [S::zero(); K];
     let mut acceleration = [S::zero(); K];
-    for i in 0..K {
-        let (mut xi, mut vi, mut ai) = (own[i].value, own[i].velocity, S::zero());
-        if let Some(a) = own[i].acceleration {
-            ai = a;
+    for body in &M::BODIES {
+        for k in 0..body.dim {
+            let i = body.row + k;
+            let mut xi = d[i].re;
+            let mut vi = d[i].eps2.0.map_or(S::zero(), |e| e[0]);
+            let mut ai = own_acceleration(&d[i], &body.seeds, v);
+            if let Some(p) = body.parent {
+                let ip = M::BODIES[p].row + k;
+                xi += x[ip];
+                vi += x_dot[ip];
+                ai += acceleration[ip];
+            }
+            x[i] = xi;
+            x_dot[i] = vi;
+            acceleration[i] = ai;
         }
-        if let Some(p) = M::PARENT[i] {
-            xi += x[p];
-            vi += x_dot[p];
-            ai += acceleration[p];
-        }
-        x[i] = xi;
-        x_dot[i] = vi;
-        acceleration[i] = ai;
     }
 
-    // Cartesian forces on each row: weights of a uniform field and applied forces.
+    // Cartesian forces on each row: weights of a uniform field and applied forces; μᵢAᵢ.
     let mut force = [S::zero(); K];
     if M::HAS_GRAVITY {
         let weights = model.weights();
@@ -159,97 +163,123 @@ pub fn equations_of_motion<
             force[i] = S::from(weights[i]);
         }
     }
-    let mut direct = [S::zero(); N];
+    let mut generalized_forces = SVector::<S, N>::zeros();
     if M::HAS_FORCES {
         let mut applied = [S::zero(); K];
+        let mut direct = [S::zero(); N];
         model.applied_forces(t, q, v, &x, &x_dot, &mut applied, &mut direct);
         for i in 0..K {
             force[i] += applied[i];
         }
-    }
-
-    // Backward sweep, leaf to root: Σ over the rows below each row of Fᵢ, μᵢAᵢ and μᵢ (composite
-    // masses).
-    let mut inertia = [S::zero(); K];
-    let mut composite = masses;
-    for i in 0..K {
-        inertia[i] = acceleration[i] * masses[i];
-    }
-    for i in (0..K).rev() {
-        if let Some(p) = M::PARENT[i] {
-            let (f, b, c) = (force[i], inertia[i], composite[i]);
-            force[p] += f;
-            inertia[p] += b;
-            composite[p] += c;
-        }
-    }
-
-    // 𝓕 = Σₐ Dₐᵀ (Σ below a Fᵢ) + Q − ∇V and b = Σₐ Dₐᵀ (Σ below a μᵢAᵢ), scattered by the seeds.
-    let mut generalized_forces = SVector::<S, N>::from(direct);
-    let mut inertial_terms = SVector::<S, N>::zeros();
-    for a in 0..K {
-        if let Some(da) = &own[a].jacobian {
-            for (j, seed) in M::SEEDS[a].iter().enumerate() {
-                if let Seed::Coordinate(c) = seed {
-                    generalized_forces[*c] += da[j] * force[a];
-                    inertial_terms[*c] += da[j] * inertia[a];
-                }
-            }
-        }
+        generalized_forces = SVector::from(direct);
     }
     if M::HAS_POTENTIAL {
-        generalized_forces -= potential_gradient(model, t, q, &own, &x);
+        generalized_forces -= potential_gradient(model, t, q, &d, &x);
+    }
+    let mut inertia = acceleration;
+    for i in 0..K {
+        inertia[i] *= masses[i];
+    }
+
+    // Backward sweep, leaf to root: each body's subtree sums of Fᵢ and μᵢAᵢ (row by row) and of
+    // the masses (C_b); a body's sums are complete when it is reached.
+    let mut composite = [0.0; B];
+    let mut inertial_terms = SVector::<S, N>::zeros();
+    for b in (0..B).rev() {
+        let body = &M::BODIES[b];
+        composite[b] += masses[body.row];
+        for k in 0..body.dim {
+            let i = body.row + k;
+            if let Some(db) = &d[i].eps1.0 {
+                for (j, seed) in body.seeds.iter().enumerate() {
+                    if let Seed::Coordinate(c) = *seed {
+                        generalized_forces[c] += db[j] * force[i];
+                        inertial_terms[c] += db[j] * inertia[i];
+                    }
+                }
+            }
+            if let Some(p) = body.parent {
+                let ip = M::BODIES[p].row + k;
+                let (f, b) = (force[i], inertia[i]);
+                force[ip] += f;
+                inertia[ip] += b;
+            }
+        }
+        if let Some(p) = body.parent {
+            composite[p] += composite[b];
+        }
     }
 
     EquationsOfMotion {
-        mass_matrix: mass_matrix::<M, S, N, K, W>(&own, &composite),
+        mass_matrix: mass_matrix::<M, S, N, K, W, B>(&d, &composite),
         generalized_forces,
         inertial_terms,
     }
 }
 
-/// M = Σ_b Σ_{a ancestor of b or b} C_b (Dₐᵀ D_b + D_bᵀ Dₐ) (once for a = b): every row walks up
-/// through its ancestors. The lower triangle is summed and mirrored (exactly symmetric).
+/// M = Σ_b C_b (D_bᵀ D_b + Σ_{a above b} (Dₐᵀ D_b + D_bᵀ Dₐ)): every body walks up through its
+/// ancestors, one dot product over its rows per pair of seeds. The lower triangle is summed and
+/// mirrored (exactly symmetric).
 #[inline(always)]
-fn mass_matrix<M: Tree<N, K, W>, S: Scalar, const N: usize, const K: usize, const W: usize>(
-    own: &[Own<S, W>; K],
-    composite: &[f64; K],
+fn mass_matrix<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+>(
+    d: &[Seeded<S, W>; K],
+    composite: &[f64; B],
 ) -> SMatrix<S, N, N> {
+    // D of each body, row by row (zero where a row does not depend on the seeds).
+    let jacobian: [[SVector<S, W>; 3]; B] = std::array::from_fn(|b| {
+        let body = &M::BODIES[b];
+        std::array::from_fn(|k| match k < body.dim {
+            true => d[body.row + k].eps1.0.unwrap_or_else(SVector::zeros),
+            false => SVector::zeros(),
+        })
+    });
     let mut m = SMatrix::<S, N, N>::zeros();
-    for b in 0..K {
-        let Some(db) = &own[b].jacobian else { continue };
+    for b in 0..B {
         if composite[b] == 0.0 {
             continue;
         }
-        let weighted = db * S::from(composite[b]);
-        // a = b: C_b D_bᵀ D_b.
-        for (r, row_seed) in M::SEEDS[b].iter().enumerate() {
-            let Seed::Coordinate(cr) = *row_seed else { continue };
-            for (s, col_seed) in M::SEEDS[b].iter().enumerate() {
-                let Seed::Coordinate(cs) = *col_seed else { continue };
+        let body = &M::BODIES[b];
+        let weight = S::from(composite[b]);
+        let db = &jacobian[b];
+        // Σ over the body's rows of Dₐ[r] D_b[s].
+        let dot = |da: &[SVector<S, W>; 3], r: usize, s: usize| {
+            let mut sum = da[0][r] * db[0][s];
+            for k in 1..body.dim {
+                sum += da[k][r] * db[k][s];
+            }
+            sum * weight
+        };
+        for (s, seed_s) in body.seeds.iter().enumerate() {
+            let Seed::Coordinate(cs) = *seed_s else { continue };
+            // a = b: C_b D_bᵀ D_b, lower triangle.
+            for (r, seed_r) in body.seeds.iter().enumerate() {
+                let Seed::Coordinate(cr) = *seed_r else { continue };
                 if cr >= cs {
-                    m[(cr, cs)] += db[r] * weighted[s];
+                    m[(cr, cs)] += dot(db, r, s);
                 }
             }
-        }
-        // a strictly above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ).
-        let mut ancestor = M::PARENT[b];
-        while let Some(a) = ancestor {
-            if let Some(da) = &own[a].jacobian {
-                for (r, a_seed) in M::SEEDS[a].iter().enumerate() {
-                    let Seed::Coordinate(ca) = *a_seed else { continue };
-                    for (s, b_seed) in M::SEEDS[b].iter().enumerate() {
-                        let Seed::Coordinate(cb) = *b_seed else { continue };
-                        let term = da[r] * weighted[s];
-                        if ca == cb {
-                            m[(ca, ca)] += term + term;
-                        } else {
-                            m[(ca.max(cb), ca.min(cb))] += term;
-                        }
+            // a above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ).
+            let mut ancestor = body.parent;
+            while let Some(a) = ancestor {
+                let above = &M::BODIES[a];
+                for (r, seed_r) in above.seeds.iter().enumerate() {
+                    let Seed::Coordinate(cr) = *seed_r else { continue };
+                    let term = dot(&jacobian[a], r, s);
+                    if cr == cs {
+                        m[(cr, cr)] += term + term;
+                    } else {
+                        m[(cr.max(cs), cr.min(cs))] += term;
                     }
                 }
+                ancestor = above.parent;
             }
-            ancestor = M::PARENT[a];
         }
     }
     for c in 0..N {
@@ -262,27 +292,37 @@ fn mass_matrix<M: Tree<N, K, W>, S: Scalar, const N: usize, const K: usize, cons
 
 /// ∇V, with V evaluated on gradient duals whose rows are assembled along the tree (Jᵢ = J_p(i) + Dᵢ).
 #[inline(always)]
-fn potential_gradient<M: Tree<N, K, W>, S: Scalar, const N: usize, const K: usize, const W: usize>(
+fn potential_gradient<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+>(
     model: &M,
     t: S,
     q: &[S; N],
-    own: &[Own<S, W>; K],
+    d: &[Seeded<S, W>; K],
     x: &[S; K],
 ) -> SVector<S, N> {
     let mut rows: [SVector<S, N>; K] = [SVector::zeros(); K];
-    for i in 0..K {
-        let mut row = match M::PARENT[i] {
-            Some(p) => rows[p],
-            None => SVector::zeros(),
-        };
-        if let Some(d) = &own[i].jacobian {
-            for (j, seed) in M::SEEDS[i].iter().enumerate() {
-                if let Seed::Coordinate(c) = seed {
-                    row[*c] += d[j];
+    for body in &M::BODIES {
+        for k in 0..body.dim {
+            let i = body.row + k;
+            let mut row = match body.parent {
+                Some(p) => rows[M::BODIES[p].row + k],
+                None => SVector::zeros(),
+            };
+            if let Some(di) = &d[i].eps1.0 {
+                for (j, seed) in body.seeds.iter().enumerate() {
+                    if let Seed::Coordinate(c) = seed {
+                        row[*c] += di[j];
+                    }
                 }
             }
+            rows[i] = row;
         }
-        rows[i] = row;
     }
     let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
     let xd: [DualSVec<S, N>; K] =
@@ -307,8 +347,6 @@ mod tests {
         k: f64,
         c: f64,
     }
-
-    const NONE: Seed = Seed::Unused;
 
     impl Model<3, 6> for Branchy {
         type Coords = [f64; 3];
@@ -352,19 +390,30 @@ mod tests {
         }
     }
 
-    impl Tree<3, 6, 2> for Branchy {
-        const PARENT: [Option<usize>; 6] = [None, None, Some(0), Some(1), Some(2), Some(3)];
-        const SEEDS: [[Seed; 2]; 6] = [
-            [Seed::Coordinate(0), Seed::Time],
-            [Seed::Time, NONE],
-            [Seed::Coordinate(1), Seed::Coordinate(2)],
-            [Seed::Coordinate(1), Seed::Coordinate(2)],
-            [Seed::Coordinate(0), NONE],
-            [Seed::Coordinate(0), NONE],
+    impl Tree<3, 6, 2, 3> for Branchy {
+        const BODIES: [Body<2>; 3] = [
+            Body {
+                row: 0,
+                dim: 2,
+                parent: None,
+                seeds: [Seed::Coordinate(0), Seed::Time],
+            },
+            Body {
+                row: 2,
+                dim: 2,
+                parent: Some(0),
+                seeds: [Seed::Coordinate(1), Seed::Coordinate(2)],
+            },
+            Body {
+                row: 4,
+                dim: 2,
+                parent: Some(1),
+                seeds: [Seed::Coordinate(0), Seed::Unused],
+            },
         ];
         fn displacements<S: Scalar>(&self, t: S, q: &[S; 3], v: &[S; 3]) -> [Seeded<S, 2>; 6] {
             let (q0, t0) = (seed(q[0], v[0], 0), time(t, Some(1)));
-            let a = vec2(q0 + t0.sin(), time::<S, 2>(t, Some(0)).cos() * 0.3);
+            let a = vec2(q0 + t0.sin(), t0.cos() * 0.3);
             let (q1, q2) = (seed::<S, 2>(q[1], v[1], 0), seed(q[2], v[2], 1));
             let b = vec2(q1.sin(), -q1.cos()) * (q2 + 1.0);
             let q0 = seed::<S, 2>(q[0], v[0], 0);
@@ -377,7 +426,7 @@ mod tests {
     fn the_tree_sums_equal_the_dense_assembly() {
         let model = Branchy { k: 3.0, c: 0.4 };
         let (t, q, v) = (0.7, [0.3, -1.1, 0.4], [0.9, -0.2, 1.3]);
-        let tree = equations_of_motion::<_, f64, 3, 6, 2>(&model, t, &q, &v);
+        let tree = equations_of_motion::<_, f64, 3, 6, 2, 3>(&model, t, &q, &v);
         let dense = dynamics::equations_of_motion(&model, t, &q, &v);
         // Both sum the same products in a different order: a few ulps of entries of order 1–30.
         let close = |a: f64, b: f64| (a - b).abs() <= 1e-13 * (1.0 + b.abs());

@@ -99,7 +99,7 @@ fn generate(model: &Model) -> TokenStream {
         model.dof(),
         model.rows,
         constrained,
-        tree.map(|tree| tree.width),
+        tree.map(|tree| (tree.width, tree.bodies.len())),
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     quote! {
@@ -978,14 +978,14 @@ fn mechanism_impl(
     n: usize,
     k: usize,
     constrained: Option<usize>,
-    tree_width: Option<usize>,
+    tree: Option<(usize, usize)>,
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
     // A tree of translations is assembled from each body's own seeds; anything else densely.
-    let equations_of_motion = match tree_width {
-        Some(w) => {
-            let w = lit(w);
-            quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w>(self, t, q, v))
+    let equations_of_motion = match tree {
+        Some((w, b)) => {
+            let (w, b) = (lit(w), lit(b));
+            quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
         }
         None => quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v)),
     };

@@ -20,8 +20,7 @@ pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
         .map(|(body, own)| displacement_fn(model, body.decl.ident(), body.shape, own));
 
     let mut rows = vec![quote!(); model.rows];
-    let mut parents = vec![quote!(#p::core::option::Option::None); model.rows];
-    let mut seeds = vec![quote!(); model.rows];
+    let mut bodies = Vec::new();
     let mut calls = Vec::new();
     for (body, own) in model.bodies.iter().zip(&tree.bodies) {
         let name = body.decl.ident();
@@ -38,24 +37,29 @@ pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
             false => quote!(#p::tree::time(__t, #p::core::option::Option::None)),
         };
         calls.push(quote!(let #name = self.#function(#time, #(#slots),*);));
-        let row_seeds = row_seeds(own, tree.width);
-        for (c, component) in components(body.shape.dim()).into_iter().enumerate() {
+        let components = components(body.shape.dim());
+        for (c, component) in components.iter().enumerate() {
             rows[body.row + c] = quote!(#name.#component);
-            seeds[body.row + c] = quote!([#(#row_seeds),*]);
-            if let Some(parent) = own.parent {
-                let row = lit(model.bodies[parent].row + c);
-                parents[body.row + c] = quote!(#p::core::option::Option::Some(#row));
-            }
         }
+        let (row, dim) = (lit(body.row), lit(components.len()));
+        let parent = match own.parent {
+            Some(parent) => {
+                let parent = lit(parent);
+                quote!(#p::core::option::Option::Some(#parent))
+            }
+            None => quote!(#p::core::option::Option::None),
+        };
+        let seeds = row_seeds(own, tree.width);
+        bodies.push(quote!(#p::tree::Body { row: #row, dim: #dim, parent: #parent, seeds: [#(#seeds),*] }));
     }
+    let b = lit(bodies.len());
     quote! {
         impl #params {
             #(#functions)*
         }
 
-        impl #p::tree::Tree<#n, #k, #w> for #params {
-            const PARENT: [#p::core::option::Option<usize>; #k] = [#(#parents),*];
-            const SEEDS: [[#p::tree::Seed; #w]; #k] = [#(#seeds),*];
+        impl #p::tree::Tree<#n, #k, #w, #b> for #params {
+            const BODIES: [#p::tree::Body<#w>; #b] = [#(#bodies),*];
             #[inline(always)]
             #[allow(unused_variables, clippy::all)]
             fn displacements<S: #p::Scalar>(&self, __t: S, __q: &[S; #n], __v: &[S; #n]) -> [#p::tree::Seeded<S, #w>; #k] {

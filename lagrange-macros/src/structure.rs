@@ -9,7 +9,8 @@
 //! — an earlier body plus a displacement that names no body, or a position that names no body at all
 //! — the mechanism is a tree of translations, and its equations of motion are assembled by
 //! `lagrange_core::tree` with dual numbers seeded only on each body's own coordinates. Anything else
-//! (rigid bodies, families, constraints, a body named inside a product) keeps the dense assembly.
+//! (rigid bodies, families, constraints, a body named inside a product), and a tree whose widest
+//! body needs every coordinate anyway, keeps the dense assembly.
 
 use crate::check::{Body, Model, Shape};
 use crate::names;
@@ -53,7 +54,9 @@ pub fn tree(model: &Model) -> Option<Tree> {
         .map(|(index, body)| tree_body(model, index, body))
         .collect::<Option<Vec<_>>>()?;
     let width = bodies.iter().map(TreeBody::seeds).max().unwrap_or(0).max(1);
-    Some(Tree { bodies, width })
+    // Seeds as wide as the dense pass's save nothing, and the dense pass is the shorter code
+    // (BENCHMARKS.md §1: a pendulum, a wedge).
+    (width < model.dof()).then_some(Tree { bodies, width })
 }
 
 /// One body: a point or particle, not a family, whose function is `parent + displacement` or names

@@ -11,6 +11,10 @@ mod four_bar_scene;
 #[path = "../../../examples/cartesian_pendulum.rs"]
 #[allow(dead_code)]
 mod cartesian_pendulum_scene;
+// The N-link chains declared link by link, as in the chain benchmark.
+#[path = "../../../benches/chains/mod.rs"]
+#[allow(dead_code)]
+mod chains;
 
 #[mechanism]
 pub mod pendulum {
@@ -127,6 +131,34 @@ fn hw_double(p: &double_pendulum::DoublePendulum, q: [f64; 2], v: [f64; 2]) -> [
         + m2 * l2 * v[1] * v[1] * d.sin() * d.cos())
         / (l2 * den);
     [a1, a2]
+}
+/// The N-link chain's closed form, as in the chain benchmark: M_jk = m l² (N − max(j,k))
+/// cos(θⱼ − θₖ), one sin_cos per link, the same LDLᵀ.
+fn hw_chain<const N: usize>(m: f64, l: f64, g: f64, q: &[f64; N], v: &[f64; N]) -> [f64; N] {
+    let sc: [(f64, f64); N] = std::array::from_fn(|j| q[j].sin_cos());
+    let mut mass = nalgebra::SMatrix::<f64, N, N>::zeros();
+    let mut force = nalgebra::SVector::<f64, N>::zeros();
+    for j in 0..N {
+        let (sj, cj) = sc[j];
+        force[j] = -m * g * l * (N - j) as f64 * sj;
+        for k in 0..N {
+            let (sk, ck) = sc[k];
+            let w = m * l * l * (N - j.max(k)) as f64;
+            mass[(j, k)] = w * (cj * ck + sj * sk);
+            force[j] -= w * (sj * ck - cj * sk) * v[k] * v[k];
+        }
+    }
+    lagrange::linalg::Ldlt::new(&mass)
+        .expect("positive definite")
+        .solve(&force)
+        .into()
+}
+/// θⱼ and θ̇ⱼ spread over the links, as in the chain benchmark.
+fn chain_state<const N: usize>() -> ([f64; N], [f64; N]) {
+    (
+        std::array::from_fn(|j| 0.3 + 0.7 * ((j as f64) * 0.9).sin()),
+        std::array::from_fn(|j| 0.5 * ((j as f64) * 1.3).cos()),
+    )
 }
 fn hw_wedge(p: &wedge_block::WedgeBlock) -> [f64; 2] {
     let (s, c) = p.alpha.sin_cos();
@@ -432,6 +464,25 @@ fn main() {
             );
             for _ in 0..n {
                 acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta[0];
+            }
+        }
+        "chain32_links" => {
+            use chains::chain32::*;
+            let sys = Chain32 {
+                m: 1.0,
+                l: 0.5,
+                g: 9.81,
+            };
+            let (q, v) = chain_state::<32>();
+            let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+            for _ in 0..n {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta0;
+            }
+        }
+        "hw_chain32" => {
+            let (q, v) = chain_state::<32>();
+            for _ in 0..n {
+                acc += hw_chain::<32>(1.0, 0.5, 9.81, black_box(&q), black_box(&v))[0];
             }
         }
         "drag" => {
