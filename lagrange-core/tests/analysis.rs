@@ -1418,7 +1418,14 @@ fn equilibrium_options_are_validated() {
         g: G,
         squared: false,
     };
-    for value in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -1e-12, 1.0, 1e300] {
+    for value in [
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        -1e-12,
+        1.0,
+        1e300,
+    ] {
         for (name, options) in [
             (
                 "residual_tolerance",
@@ -1435,7 +1442,8 @@ fn equilibrium_options_are_validated() {
                 },
             ),
         ] {
-            let is_invalid = |e: &Error| matches!(e, Error::InvalidSetting { setting, .. } if *setting == name);
+            let is_invalid =
+                |e: &Error| matches!(e, Error::InvalidSetting { setting, .. } if *setting == name);
             let err = equilibrium(&DP, 0.0, &[0.4, 0.1], &options).unwrap_err();
             assert!(is_invalid(&err), "{name} = {value}: {err}");
             let err = constrained_equilibrium(&p, 0.0, &[0.7, -1.2], &options).unwrap_err();

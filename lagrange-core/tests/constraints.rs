@@ -1611,10 +1611,7 @@ fn contact_stepper_refuses_a_state_that_violates_the_constraints() {
     let inside = State::new(0.0, [0.0, 0.5], [0.5, 0.0]);
     let mut s = inside;
     let err = stepper.step(&sphere, &mut s, 1e-3).unwrap_err();
-    assert!(
-        matches!(err, Error::ConstraintViolation { .. }),
-        "{err}"
-    );
+    assert!(matches!(err, Error::ConstraintViolation { .. }), "{err}");
     assert_eq!(s, inside);
     assert!(stepper.events.is_empty());
 }
@@ -1629,20 +1626,72 @@ fn contact_options_are_validated() {
     let top = State::new(0.0, [0.0, 1.0], [0.5, 0.0]);
     let defaults = ContactOptions::default();
     let bad = [
-        ("restitution", ContactOptions { restitution: f64::NAN, ..defaults }),
-        ("restitution", ContactOptions { restitution: -0.1, ..defaults }),
-        ("restitution", ContactOptions { restitution: 1.5, ..defaults }),
-        ("event_tolerance", ContactOptions { event_tolerance: f64::NAN, ..defaults }),
-        ("event_tolerance", ContactOptions { event_tolerance: 0.0, ..defaults }),
-        ("event_tolerance", ContactOptions { event_tolerance: -1.0, ..defaults }),
-        ("event_tolerance", ContactOptions { event_tolerance: f64::INFINITY, ..defaults }),
-        ("event_tolerance", ContactOptions { event_tolerance: 1.0, ..defaults }),
-        ("max_events_per_step", ContactOptions { max_events_per_step: 0, ..defaults }),
+        (
+            "restitution",
+            ContactOptions {
+                restitution: f64::NAN,
+                ..defaults
+            },
+        ),
+        (
+            "restitution",
+            ContactOptions {
+                restitution: -0.1,
+                ..defaults
+            },
+        ),
+        (
+            "restitution",
+            ContactOptions {
+                restitution: 1.5,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: f64::NAN,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: 0.0,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: -1.0,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: f64::INFINITY,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: 1.0,
+                ..defaults
+            },
+        ),
+        (
+            "max_events_per_step",
+            ContactOptions {
+                max_events_per_step: 0,
+                ..defaults
+            },
+        ),
     ];
     for (name, options) in bad {
-        let is_invalid = |r: lagrange_core::Result<()>| {
-            matches!(r, Err(Error::InvalidSetting { setting, .. }) if setting == name)
-        };
+        let is_invalid = |r: lagrange_core::Result<()>| matches!(r, Err(Error::InvalidSetting { setting, .. }) if setting == name);
         assert!(
             is_invalid(ContactRk4::new(&sphere, &top, options).map(|_| ())),
             "{options:?}"
@@ -1651,7 +1700,10 @@ fn contact_options_are_validated() {
         let mut stepper = ContactRk4::new(&sphere, &top, defaults).unwrap();
         stepper.options = options;
         let mut s = top;
-        assert!(is_invalid(stepper.step(&sphere, &mut s, 1e-3)), "{options:?}");
+        assert!(
+            is_invalid(stepper.step(&sphere, &mut s, 1e-3)),
+            "{options:?}"
+        );
         assert_eq!(s, top);
     }
 }

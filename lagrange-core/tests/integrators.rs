@@ -667,7 +667,7 @@ fn dopri5_blow_up_is_an_error_and_leaves_the_state_alone() {
     ));
     assert!(matches!(
         Dopri5::default().integrate(&BlowUp, &mut s, -1.0, &mut [], |_| {}),
-        Err(Error::InvalidStep { .. })
+        Err(Error::InvalidEndTime { .. })
     ));
     assert_eq!(s, start);
 }
@@ -1201,7 +1201,8 @@ fn dopri5_end_time_before_the_start_is_named_as_such() {
         );
         assert_eq!(s, start);
     }
-    let mut stepper = Dopri5Stepper::new(&Oscillator { damping: 0.0 }, Dopri5::default(), &start).unwrap();
+    let mut stepper =
+        Dopri5Stepper::new(&Oscillator { damping: 0.0 }, Dopri5::default(), &start).unwrap();
     assert!(matches!(
         stepper.step(1.0),
         Err(Error::InvalidEndTime { t_end, .. }) if t_end == 1.0
