@@ -1183,6 +1183,23 @@ pub(crate) fn forces_in_mode<
             }
         }
     }
+    // A row without force (not enforced, or λ = 0 exactly) applies none, even where its gradient is
+    // not finite (a separated contact at an overflowing or degenerate configuration): 0, not 0·NaN.
+    let mut generalized = generalized;
+    for i in 0..C {
+        if sol.multipliers[i] == 0.0 {
+            generalized[i] = [0.0; N];
+            cartesian[i] = [0.0; K];
+        }
+    }
+    if !generalized
+        .iter()
+        .flatten()
+        .chain(cartesian.iter().flatten())
+        .all(|x| x.is_finite())
+    {
+        return Err(dynamics::non_finite_dynamics::<M::Coords, f64, N>(t, q));
+    }
     Ok(ConstraintForces {
         mode: *mode,
         accelerations: sol.accelerations,
