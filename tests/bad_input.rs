@@ -159,6 +159,9 @@ const BAD: [f64; 8] = [
     5e-324,
 ];
 
+/// A parameter of a mechanism: its name and where it lives in the parameter struct.
+type Parameter<P> = (&'static str, fn(&mut P) -> &mut f64);
+
 /// What one case did.
 enum Outcome {
     /// A typed error; whether the caller's state changed.
@@ -412,7 +415,7 @@ fn constrained_cases<M, const N: usize, const K: usize, const C: usize>(
 /// options, calling `cases` with (description, mechanism, state, settings).
 fn matrix<P: Copy + Debug, C: Coordinates<N>, const N: usize>(
     name: &str,
-    params: &[(&str, fn(&mut P) -> &mut f64)],
+    params: &[Parameter<P>],
     base: P,
     state: State<C>,
     mut cases: impl FnMut(&dyn Fn() -> String, &P, &State<C>, &Settings),
@@ -518,7 +521,7 @@ fn bad_input_matrix() {
                 theta2: 0.1,
             },
         );
-        let params: [(&str, fn(&mut DoublePendulum) -> &mut f64); 5] = [
+        let params: [Parameter<DoublePendulum>; 5] = [
             ("m1", |p| &mut p.m1),
             ("m2", |p| &mut p.m2),
             ("l1", |p| &mut p.l1),
@@ -542,7 +545,7 @@ fn bad_input_matrix() {
         };
         // On the circle, moving along it.
         let good = State::new(0.5, Coords { x: 0.6, y: -0.8 }, Coords { x: 0.8, y: 0.6 });
-        let params: [(&str, fn(&mut CartesianPendulum) -> &mut f64); 3] = [
+        let params: [Parameter<CartesianPendulum>; 3] = [
             ("m", |p| &mut p.m),
             ("l", |p| &mut p.l),
             ("g", |p| &mut p.g),
@@ -564,7 +567,7 @@ fn bad_input_matrix() {
         };
         // On top of the sphere, in contact, sliding off.
         let good = State::new(0.5, Coords { x: 0.0, y: 1.0 }, Coords { x: 0.5, y: 0.0 });
-        let params: [(&str, fn(&mut Sphere) -> &mut f64); 3] = [
+        let params: [Parameter<Sphere>; 3] = [
             ("m", |p| &mut p.m),
             ("r", |p| &mut p.r),
             ("g", |p| &mut p.g),
@@ -596,7 +599,7 @@ fn bad_input_matrix() {
                 y: -0.5 * sin,
             },
         );
-        let params: [(&str, fn(&mut RoughRamp) -> &mut f64); 5] = [
+        let params: [Parameter<RoughRamp>; 5] = [
             ("m", |p| &mut p.m),
             ("alpha", |p| &mut p.alpha),
             ("g", |p| &mut p.g),

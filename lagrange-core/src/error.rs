@@ -76,8 +76,9 @@ pub enum Error {
         reason: String,
     },
 
-    /// A setting of an integrator is out of its range (a negative tolerance, a safety factor above
-    /// one, …).
+    /// A setting of an integrator or of an options struct is out of its range (a negative
+    /// tolerance, a safety factor above one, a restitution above one, …): see `Dopri5::validate`,
+    /// `EquilibriumOptions::validate`, `ContactOptions::validate`.
     #[error("{method}: setting `{setting}` = {value} is invalid: it must be {requirement}")]
     InvalidSetting {
         method: &'static str,

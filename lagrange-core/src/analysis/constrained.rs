@@ -534,7 +534,8 @@ where
 /// and tolerance as [`stability`](super::stability()), see [`MARGINAL_TOLERANCE`]). For an enforced
 /// unilateral row this treats the contact as held, which is the linear behaviour while λ > 0.
 ///
-/// Errors: non-finite parameters or guess; invalid constraint declarations;
+/// Errors: invalid options ([`EquilibriumOptions::validate`]); non-finite parameters or guess;
+/// invalid constraint declarations;
 /// [`Error::UnsuitableMethod`] for a mechanism with velocity rows; [`Error::NonFiniteDynamics`] at
 /// the guess; [`Error::SingularConstraints`] when the enforced rows are dependent at the guess or
 /// at the solution (redundant constraints: the multipliers are then not determined), naming them;
@@ -712,13 +713,11 @@ where
         for k in 0..j {
             d -= l[(j, k)] * l[(j, k)];
         }
-        if !(d > 0.0) || j + 1 == n {
-            (index, pivot) = (j, d);
-            if !(d > 0.0) {
-                break;
-            }
+        (index, pivot) = (j, d);
+        if d.is_nan() || d <= 0.0 {
+            break;
         }
-        l[(j, j)] = d.max(0.0).sqrt();
+        l[(j, j)] = d.sqrt();
         for i in j + 1..n {
             let mut v = mz[(i, j)];
             for k in 0..j {
