@@ -182,3 +182,35 @@ fn singular_mass_matrix_names_the_configuration() {
     let a = SYS.accelerations(&near).unwrap();
     assert!(a.theta.is_finite() && a.phi.is_finite());
 }
+
+#[test]
+fn huge_velocity_is_an_error_for_the_energies_as_for_the_accelerations() {
+    // φ̇ = 1e300: T = ½ m l² (θ̇² + sin²θ φ̇²) and the centripetal term of b overflow to ∞.
+    let fast = State::new(
+        0.0,
+        Coords {
+            theta: 0.5,
+            phi: 0.1,
+        },
+        Coords {
+            theta: 0.2,
+            phi: 1e300,
+        },
+    );
+    assert!(matches!(
+        SYS.accelerations(&fast),
+        Err(Error::NonFiniteDynamics { .. })
+    ));
+    for (what, result) in [
+        ("energy", SYS.energy(&fast)),
+        ("kinetic energy", SYS.kinetic_energy(&fast)),
+        ("energy function", SYS.energy_function(&fast)),
+    ] {
+        assert!(
+            matches!(result, Err(Error::NonFiniteDynamics { .. })),
+            "{what}: {result:?}"
+        );
+    }
+    // The potential energy does not depend on the velocities: finite.
+    assert!(SYS.potential_energy(&fast).unwrap().is_finite());
+}

@@ -23,6 +23,16 @@ pub enum Error {
     #[error("step size must be positive and finite, got {h}")]
     InvalidStep { h: f64 },
 
+    /// The step size is positive but so small against the time that t + h == t in floating point
+    /// (for example a subnormal h at t = 1): the step would not advance time.
+    #[error("step size h = {h:e} does not advance t = {t} (t + h == t in floating point)")]
+    StepDoesNotAdvance { t: f64, h: f64 },
+
+    /// The end time of an integration is NaN, infinite or before the state's time (integration is
+    /// forward in time only).
+    #[error("end time {t_end} is not a finite time after the state's time t = {t}")]
+    InvalidEndTime { t: f64, t_end: f64 },
+
     /// The mass matrix M(q, t) is singular (or not positive definite) at this configuration, so
     /// the accelerations are not determined — for example spherical coordinates at a pole.
     #[error("mass matrix is singular at t = {t}, {configuration} (pivot {pivot:e} of coordinate `{coordinate}`)")]
@@ -46,6 +56,18 @@ pub enum Error {
         residual: f64,
     },
 
+    /// The Newton iteration of an implicit step broke down before it could converge: its matrix is
+    /// not finite or singular, or its residual is not finite. Usually a step far too large for the
+    /// mechanism's time scales (h² overflowing, stages far from the solution); `reason` says which.
+    #[error("{method}: Newton iteration broke down at iteration {iteration} of the step from t = {t} with h = {h:e}: {reason}")]
+    NewtonBreakdown {
+        method: &'static str,
+        t: f64,
+        h: f64,
+        iteration: usize,
+        reason: String,
+    },
+
     /// The method refuses this mechanism (for example Störmer–Verlet on a mass matrix that depends
     /// on the configuration).
     #[error("{method} cannot integrate this mechanism: {reason}")]
@@ -54,8 +76,9 @@ pub enum Error {
         reason: String,
     },
 
-    /// A setting of an integrator is out of its range (a negative tolerance, a safety factor above
-    /// one, …).
+    /// A setting of an integrator or of an options struct is out of its range (a negative
+    /// tolerance, a safety factor above one, a restitution above one, …): see `Dopri5::validate`,
+    /// `EquilibriumOptions::validate`, `ContactOptions::validate`.
     #[error("{method}: setting `{setting}` = {value} is invalid: it must be {requirement}")]
     InvalidSetting {
         method: &'static str,

@@ -1,7 +1,7 @@
 //! [`Mechanism`]: what every generated mechanism offers its user.
 
 use crate::dynamics::EquationsOfMotion;
-use crate::error::{Error, Result};
+use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::integrate::Integrator;
 use crate::model::{check_state, Coordinates, State};
@@ -72,68 +72,117 @@ pub trait Mechanism<const N: usize>: Sized {
     ///
     /// Errors: non-finite parameters or state, a singular mass matrix (the error names the
     /// configuration), non-finite dynamics.
+    ///
+    /// A mechanism with constraints also refuses what its integrators refuse about the declaration
+    /// itself (invalid friction coefficients, a velocity row that is not linear in q̇), but
+    /// evaluates states off the constraints (see [`Mechanism::check_constraints`]).
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
+        match self.check_constraints(state.t, &q, &v) {
+            Ok(()) | Err(Error::ConstraintViolation { .. }) => {}
+            Err(e) => return Err(e),
+        }
         self.accelerations_at(state.t, &q, &v)
             .map(Self::Coords::from_array)
+            .map_err(|e| diagnose(self, state.t, &q, &v, e))
     }
 
     /// M(q, t): the mass matrix, row and column k for coordinate k in declaration order.
+    ///
+    /// Errors: non-finite parameters or state, a mass matrix that is not finite here
+    /// ([`Error::NonFiniteDynamics`]).
     fn mass_matrix(&self, state: &State<Self::Coords>) -> Result<SMatrix<f64, N, N>> {
         let (q, v) = self.check(state)?;
-        Ok(self.equations_of_motion_at(state.t, &q, &v).mass_matrix)
+        let m = self.equations_of_motion_at(state.t, &q, &v).mass_matrix;
+        finite_or_error::<Self::Coords, N>(m.iter(), state.t, &q, None)?;
+        Ok(m)
     }
 
     /// 𝓕: the generalized forces (potentials, applied and direct forces), by name.
+    ///
+    /// Errors: non-finite parameters or state, forces that are not finite here
+    /// ([`Error::NonFiniteDynamics`]).
     fn generalized_forces(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
-        Ok(Self::Coords::from_array(
-            self.equations_of_motion_at(state.t, &q, &v)
-                .generalized_forces
-                .into(),
-        ))
+        let f: [f64; N] = self
+            .equations_of_motion_at(state.t, &q, &v)
+            .generalized_forces
+            .into();
+        finite_or_error::<Self::Coords, N>(f.iter(), state.t, &q, Some(&v))?;
+        Ok(Self::Coords::from_array(f))
     }
 
     /// T: kinetic energy.
+    ///
+    /// Errors: non-finite parameters or state, a kinetic energy that overflows
+    /// ([`Error::NonFiniteDynamics`], as [`accelerations`](Self::accelerations) reports for a state
+    /// whose inertial terms overflow).
     fn kinetic_energy(&self, state: &State<Self::Coords>) -> Result<f64> {
         let (q, v) = self.check(state)?;
-        Ok(self.kinetic_energy_at(state.t, &q, &v))
+        let kinetic = self.kinetic_energy_at(state.t, &q, &v);
+        finite_or_error::<Self::Coords, N>([kinetic].iter(), state.t, &q, Some(&v))?;
+        Ok(kinetic)
     }
 
     /// V: potential energy.
+    ///
+    /// Errors: non-finite parameters or state, a potential that is not finite here
+    /// ([`Error::NonFiniteDynamics`]).
     fn potential_energy(&self, state: &State<Self::Coords>) -> Result<f64> {
         let (q, _) = self.check(state)?;
-        Ok(self.potential_energy_at(state.t, &q))
+        let potential = self.potential_energy_at(state.t, &q);
+        finite_or_error::<Self::Coords, N>([potential].iter(), state.t, &q, None)?;
+        Ok(potential)
     }
 
     /// T + V. Conserved when nothing depends on time and no non-conservative force acts.
+    ///
+    /// Errors: as [`kinetic_energy`](Self::kinetic_energy) and
+    /// [`potential_energy`](Self::potential_energy); a sum that overflows is
+    /// [`Error::NonFiniteDynamics`] too.
     fn energy(&self, state: &State<Self::Coords>) -> Result<f64> {
         let (q, v) = self.check(state)?;
-        Ok(self.kinetic_energy_at(state.t, &q, &v) + self.potential_energy_at(state.t, &q))
+        let energy =
+            self.kinetic_energy_at(state.t, &q, &v) + self.potential_energy_at(state.t, &q);
+        finite_or_error::<Self::Coords, N>([energy].iter(), state.t, &q, Some(&v))?;
+        Ok(energy)
     }
 
     /// p = ∂L/∂q̇, by name.
+    ///
+    /// Errors: non-finite parameters or state, momenta that overflow
+    /// ([`Error::NonFiniteDynamics`]).
     fn momenta(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
-        Ok(Self::Coords::from_array(self.momenta_at(state.t, &q, &v)))
+        let p = self.momenta_at(state.t, &q, &v);
+        finite_or_error::<Self::Coords, N>(p.iter(), state.t, &q, Some(&v))?;
+        Ok(Self::Coords::from_array(p))
     }
 
     /// The energy function (Jacobi integral) h = Σ pₖ q̇ₖ − L. Conserved when L does not depend on
     /// t explicitly, even where T + V is not (a bead on a spinning hoop); in general
     /// dh/dt = −∂L/∂t + (power of non-conservative forces).
+    ///
+    /// Errors: as [`energy`](Self::energy).
     fn energy_function(&self, state: &State<Self::Coords>) -> Result<f64> {
         let (q, v) = self.check(state)?;
         let p = self.momenta_at(state.t, &q, &v);
         let pv: f64 = p.iter().zip(&v).map(|(p, v)| p * v).sum();
         let lagrangian =
             self.kinetic_energy_at(state.t, &q, &v) - self.potential_energy_at(state.t, &q);
-        Ok(pv - lagrangian)
+        let h = pv - lagrangian;
+        finite_or_error::<Self::Coords, N>([h].iter(), state.t, &q, Some(&v))?;
+        Ok(h)
     }
 
     /// ∂L/∂t at the state (zero for a scleronomic mechanism).
+    ///
+    /// Errors: as [`energy`](Self::energy).
     fn lagrangian_time_derivative(&self, state: &State<Self::Coords>) -> Result<f64> {
         let (q, v) = self.check(state)?;
-        Ok(self.lagrangian_time_derivative_at(state.t, &q, &v))
+        let rate = self.lagrangian_time_derivative_at(state.t, &q, &v);
+        finite_or_error::<Self::Coords, N>([rate].iter(), state.t, &q, Some(&v))?;
+        Ok(rate)
     }
 
     /// Advances `state` by one step of size `h` with integrator `I` (for example
@@ -159,12 +208,84 @@ pub trait Mechanism<const N: usize>: Sized {
     }
 }
 
+/// `Ok` when every value is finite, otherwise [`Error::NonFiniteDynamics`] at (t, q), naming the
+/// velocities too when they were an input (a huge velocity overflows T while q is harmless).
+#[inline]
+fn finite_or_error<'a, C: crate::model::Coordinates<N>, const N: usize>(
+    values: impl Iterator<Item = &'a f64>,
+    t: f64,
+    q: &[f64; N],
+    v: Option<&[f64; N]>,
+) -> Result<()> {
+    let mut zero = 0.0;
+    for x in values {
+        zero += x * 0.0;
+    }
+    if zero == 0.0 {
+        Ok(())
+    } else {
+        Err(non_finite_at::<C, N>(t, q, v))
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn non_finite_at<C: crate::model::Coordinates<N>, const N: usize>(
+    t: f64,
+    q: &[f64; N],
+    v: Option<&[f64; N]>,
+) -> Error {
+    let mut configuration = describe_configuration(&C::NAMES, q);
+    if let Some(v) = v {
+        configuration = format!(
+            "{configuration}, velocities ({})",
+            describe_configuration(&C::NAMES, v)
+        );
+    }
+    Error::NonFiniteDynamics { t, configuration }
+}
+
+/// Re-examines an error of the accelerations at (t, q, q̇) for its real cause: a mass matrix
+/// reported singular because one of its entries overflowed (a coordinate of 1e300 in a mass
+/// matrix that grows like its square, or the stage of a step that blew up) is
+/// [`Error::NonFiniteDynamics`] at that state, not a singular matrix with a meaningless pivot. Other
+/// errors pass unchanged. Only called on the error path.
+#[cold]
+#[inline(never)]
+pub fn diagnose<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    error: Error,
+) -> Error {
+    if let Error::SingularMassMatrix { .. } = error {
+        let m = mechanism.equations_of_motion_at(t, q, v).mass_matrix;
+        if !m.iter().all(|x| x.is_finite()) {
+            return non_finite_at::<M::Coords, N>(t, q, Some(v));
+        }
+    }
+    error
+}
+
 /// Checks a step size.
 pub fn check_step(h: f64) -> Result<()> {
     if h.is_finite() && h > 0.0 {
         Ok(())
     } else {
         Err(Error::InvalidStep { h })
+    }
+}
+
+/// Checks a step size from time `t`: positive and finite ([`Error::InvalidStep`]), and large enough
+/// that t + h ≠ t in floating point ([`Error::StepDoesNotAdvance`]; a subnormal h at t = 1, say).
+/// A non-finite `t` passes here and is refused by the state check that follows.
+pub fn check_step_at(t: f64, h: f64) -> Result<()> {
+    check_step(h)?;
+    if t + h == t {
+        Err(Error::StepDoesNotAdvance { t, h })
+    } else {
+        Ok(())
     }
 }
 

@@ -1386,3 +1386,120 @@ fn unilateral_rows_by_active_set_and_refused_rows() {
         Err(Error::EquilibriumNotFound { iterations: 1, .. })
     ));
 }
+
+#[test]
+fn enforced_row_without_gradient_is_singular_constraints_not_a_panic() {
+    // x² + y² − L² has zero gradient at the pivot: the row cannot be enforced there (as
+    // `consistent_state` and the accelerations report).
+    let p = CartesianPendulum {
+        m: M_BOB,
+        l: L_ROD,
+        g: G,
+        squared: true,
+    };
+    let err =
+        constrained_equilibrium(&p, 0.0, &[0.0, 0.0], &EquilibriumOptions::default()).unwrap_err();
+    assert!(
+        matches!(err, Error::SingularConstraints { ref constraints, .. } if constraints.contains("`rod`")),
+        "{err}"
+    );
+    assert!(matches!(
+        constraints::accelerations(&p, 0.0, &[0.0, 0.0], &[0.0, 0.0]),
+        Err(Error::SingularConstraints { .. })
+    ));
+}
+
+#[test]
+fn equilibrium_options_are_validated() {
+    let defaults = EquilibriumOptions::default();
+    let p = CartesianPendulum {
+        m: M_BOB,
+        l: L_ROD,
+        g: G,
+        squared: false,
+    };
+    for value in [
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        -1e-12,
+        1.0,
+        1e300,
+    ] {
+        for (name, options) in [
+            (
+                "residual_tolerance",
+                EquilibriumOptions {
+                    residual_tolerance: value,
+                    ..defaults
+                },
+            ),
+            (
+                "step_tolerance",
+                EquilibriumOptions {
+                    step_tolerance: value,
+                    ..defaults
+                },
+            ),
+        ] {
+            let is_invalid =
+                |e: &Error| matches!(e, Error::InvalidSetting { setting, .. } if *setting == name);
+            let err = equilibrium(&DP, 0.0, &[0.4, 0.1], &options).unwrap_err();
+            assert!(is_invalid(&err), "{name} = {value}: {err}");
+            let err = constrained_equilibrium(&p, 0.0, &[0.7, -1.2], &options).unwrap_err();
+            assert!(is_invalid(&err), "{name} = {value}: {err}");
+            let branch = continuation(|_| DP, &[1.0], 0.0, &[0.4, 0.1], &options);
+            assert!(branch.points.is_empty());
+            assert!(matches!(&branch.stopped, Some((_, e)) if is_invalid(e)));
+        }
+    }
+}
+
+/// A bead on a vertical rail x = 0 whose mass sits in x only: the rail leaves it the y direction,
+/// which carries no mass (M = diag(m, 0)); a spring k y²/2 gives it an equilibrium at y = 0.
+#[derive(Clone, Copy)]
+struct MasslessAlongRail;
+
+impl Model<2, 2> for MasslessAlongRail {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 0.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * x[1] * 0.5
+    }
+}
+
+impl Constraints<2, 2, 1> for MasslessAlongRail {
+    const NAMES: [&'static str; 1] = ["rail"];
+    const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [x[0]]
+    }
+}
+impl_mechanism!(MasslessAlongRail, 2, 2, constraints);
+
+#[test]
+fn singular_mass_on_the_tangent_space_names_the_coordinate_without_mass() {
+    let err = constrained_equilibrium(
+        &MasslessAlongRail,
+        0.0,
+        &[0.1, 0.2],
+        &EquilibriumOptions::default(),
+    )
+    .unwrap_err();
+    // M = diag(1, 0): the factorisation stops at q1 with pivot 0.
+    assert!(
+        matches!(err, Error::SingularMassMatrix { coordinate: "q1", pivot, .. } if pivot == 0.0),
+        "{err}"
+    );
+}

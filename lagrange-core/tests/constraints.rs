@@ -1543,3 +1543,236 @@ fn stick_breaks_when_static_friction_is_exceeded_whatever_the_normal_force_sign(
         assert!((f.multipliers[1] + friction.kinetic * normal).abs() < 1e-12 * m * g);
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Bad input to the constrained entry points: typed errors, the caller's state left alone.
+
+impl_mechanism!(NotLinear, 2, 2, constraints);
+
+#[test]
+fn nonlinear_velocity_constraint_is_refused_by_every_entry_point() {
+    let p = NotLinear(CartesianPendulum {
+        m: 1.0,
+        l: 1.0,
+        g: 0.0,
+    });
+    // On the constraint (|v| = 1) and off it: the row is refused either way, as a declaration
+    // error, before any question of consistency.
+    for v in [[1.0, 0.0], [0.3, 0.2]] {
+        let state = State::new(0.0, [0.0, 0.0], v);
+        let is_nonlinear = |r: lagrange_core::Result<()>| {
+            matches!(
+                r,
+                Err(Error::NonlinearVelocityConstraint {
+                    constraint: "speed_limit",
+                    ..
+                })
+            )
+        };
+        assert!(is_nonlinear(p.accelerations(&state).map(|_| ())), "{v:?}");
+        assert!(is_nonlinear(constraint_forces(&p, &state).map(|_| ())));
+        assert!(is_nonlinear(consistent_state(&p, &state).map(|_| ())));
+        let mut s = state;
+        assert!(is_nonlinear(p.step::<Rk4>(&mut s, 1e-3)));
+        assert_eq!(s, state);
+    }
+}
+
+#[test]
+fn contact_stepper_refuses_a_state_that_violates_the_constraints() {
+    // A bob at twice the rod length, as the plain steppers see it.
+    let rod = CartesianPendulum {
+        m: 1.0,
+        l: 1.0,
+        g: 9.81,
+    };
+    let good = State::new(0.0, [0.6, -0.8], [0.8, 0.6]);
+    let mut stepper = ContactRk4::new(&rod, &good, ContactOptions::default()).unwrap();
+    let stretched = State::new(0.0, [1.2, -1.6], [0.8, 0.6]);
+    let mut s = stretched;
+    assert!(matches!(
+        rod.step::<Rk4>(&mut s, 1e-3),
+        Err(Error::ConstraintViolation { .. })
+    ));
+    let err = stepper.step(&rod, &mut s, 1e-3).unwrap_err();
+    assert!(
+        matches!(err, Error::ConstraintViolation { ref residuals, .. } if residuals.contains("`rod`")),
+        "{err}"
+    );
+    assert_eq!(s, stretched);
+    // A particle half a radius inside the sphere.
+    let sphere = SphereParticle {
+        m: 1.0,
+        r: 1.0,
+        g: 9.81,
+    };
+    let top = State::new(0.0, [0.0, 1.0], [0.5, 0.0]);
+    let mut stepper = ContactRk4::new(&sphere, &top, ContactOptions::default()).unwrap();
+    let inside = State::new(0.0, [0.0, 0.5], [0.5, 0.0]);
+    let mut s = inside;
+    let err = stepper.step(&sphere, &mut s, 1e-3).unwrap_err();
+    assert!(matches!(err, Error::ConstraintViolation { .. }), "{err}");
+    assert_eq!(s, inside);
+    assert!(stepper.events.is_empty());
+}
+
+#[test]
+fn contact_options_are_validated() {
+    let sphere = SphereParticle {
+        m: 1.0,
+        r: 1.0,
+        g: 9.81,
+    };
+    let top = State::new(0.0, [0.0, 1.0], [0.5, 0.0]);
+    let defaults = ContactOptions::default();
+    let bad = [
+        (
+            "restitution",
+            ContactOptions {
+                restitution: f64::NAN,
+                ..defaults
+            },
+        ),
+        (
+            "restitution",
+            ContactOptions {
+                restitution: -0.1,
+                ..defaults
+            },
+        ),
+        (
+            "restitution",
+            ContactOptions {
+                restitution: 1.5,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: f64::NAN,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: 0.0,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: -1.0,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: f64::INFINITY,
+                ..defaults
+            },
+        ),
+        (
+            "event_tolerance",
+            ContactOptions {
+                event_tolerance: 1.0,
+                ..defaults
+            },
+        ),
+        (
+            "max_events_per_step",
+            ContactOptions {
+                max_events_per_step: 0,
+                ..defaults
+            },
+        ),
+    ];
+    for (name, options) in bad {
+        let is_invalid = |r: lagrange_core::Result<()>| matches!(r, Err(Error::InvalidSetting { setting, .. }) if setting == name);
+        assert!(
+            is_invalid(ContactRk4::new(&sphere, &top, options).map(|_| ())),
+            "{options:?}"
+        );
+        // Options changed after construction are checked by the step too.
+        let mut stepper = ContactRk4::new(&sphere, &top, defaults).unwrap();
+        stepper.options = options;
+        let mut s = top;
+        assert!(
+            is_invalid(stepper.step(&sphere, &mut s, 1e-3)),
+            "{options:?}"
+        );
+        assert_eq!(s, top);
+    }
+}
+
+#[test]
+fn contact_step_that_does_not_advance_time_is_refused() {
+    let sphere = SphereParticle {
+        m: 1.0,
+        r: 1.0,
+        g: 9.81,
+    };
+    let top = State::new(1.0, [0.0, 1.0], [0.5, 0.0]);
+    let mut stepper = ContactRk4::new(&sphere, &top, ContactOptions::default()).unwrap();
+    let mut s = top;
+    // 5e-324 is the smallest subnormal: 1 + 5e-324 == 1.
+    let err = stepper.step(&sphere, &mut s, 5e-324).unwrap_err();
+    assert!(
+        matches!(err, Error::StepDoesNotAdvance { t, h } if t == 1.0 && h == 5e-324),
+        "{err}"
+    );
+    assert_eq!(s, top);
+}
+
+/// A block on a bilateral horizontal wire whose friction row measures the slip as ẋ + ẏ, so the
+/// friction force has a component along the normal row (r M⁻¹ Sᵀ ≠ 0). With μₖ = 2, sliding with
+/// s > 0 under gravity, the normal force must satisfy λ (1 − 2 sₙ)/m = g with sₙ = sign(λ): for
+/// sₙ = +1 that gives λ = −m g < 0, for sₙ = −1 λ = m g/3 > 0. Neither sign is consistent: the
+/// contact forces are indeterminate (Painlevé's paradox in its simplest form).
+struct SkewSlip(PulledBead);
+delegate_model!(SkewSlip, PulledBead, 2, 2);
+impl Constraints<2, 2, 2> for SkewSlip {
+    const NAMES: [&'static str; 2] = ["wire", "skew_friction"];
+    const KINDS: [ConstraintKind; 2] = [
+        ConstraintKind::Holonomic,
+        ConstraintKind::Friction { normal: 0 },
+    ];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 2] {
+        [x[1], D::zero()]
+    }
+    fn velocity_constraints<D: Scalar>(
+        &self,
+        _t: D,
+        _q: &[D; 2],
+        _v: &[D; 2],
+        _x: &[D; 2],
+        xd: &[D; 2],
+    ) -> [D; 2] {
+        [D::zero(), xd[0] + xd[1]]
+    }
+    fn friction_coefficients(&self, _row: usize) -> Coulomb {
+        Coulomb {
+            kinetic: 2.0,
+            stiction: 2.0,
+        }
+    }
+}
+
+#[test]
+fn friction_sign_iteration_without_a_consistent_sign_is_an_error() {
+    let p = SkewSlip(PulledBead {
+        m: 1.5,
+        g: 9.81,
+        k: 0.0,
+        lift: 0.0,
+        friction: Coulomb::default(),
+    });
+    let err = constraints::accelerations(&p, 0.0, &[0.0, 0.0], &[1.0, 0.0]).unwrap_err();
+    assert!(
+        matches!(err, Error::FrictionIndeterminate { ref constraints, .. } if constraints.contains("`skew_friction`")),
+        "{err}"
+    );
+}

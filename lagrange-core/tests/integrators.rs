@@ -667,7 +667,7 @@ fn dopri5_blow_up_is_an_error_and_leaves_the_state_alone() {
     ));
     assert!(matches!(
         Dopri5::default().integrate(&BlowUp, &mut s, -1.0, &mut [], |_| {}),
-        Err(Error::InvalidStep { .. })
+        Err(Error::InvalidEndTime { .. })
     ));
     assert_eq!(s, start);
 }
@@ -1079,4 +1079,132 @@ fn fpu_start() -> State<[f64; 6]> {
         [(1.0 - 1.0 / w) * r, (1.0 + 1.0 / w) * r, 0.0, 0.0, 0.0, 0.0],
         [0.0, 2f64.sqrt(), 0.0, 0.0, 0.0, 0.0],
     )
+}
+
+// Errors that name their cause.
+
+/// A particle in polar coordinates (r, φ) under gravity: M = diag(1, r²), which overflows to ∞ for
+/// r ≳ 1e154.
+pub struct Polar;
+
+impl Model<2, 2> for Polar {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        let p = vec2(q[1].cos(), q[1].sin()) * q[0];
+        [p.x, p.y]
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * 9.81
+    }
+}
+lagrange_core::impl_mechanism!(Polar, 2, 2);
+
+#[test]
+fn step_that_does_not_advance_time_is_refused() {
+    fn refused<I: Integrator>() {
+        let start = State::new(1.0, [0.3], [0.1]);
+        let mut s = start;
+        // 5e-324 is the smallest subnormal: 1 + 5e-324 == 1.
+        let err = Pendulum.step::<I>(&mut s, 5e-324).unwrap_err();
+        assert!(
+            matches!(err, Error::StepDoesNotAdvance { t, h } if t == 1.0 && h == 5e-324),
+            "{}: {err}",
+            I::NAME
+        );
+        assert_eq!(s, start);
+        // At t = 0 the same step does advance time.
+        let mut s = State::new(0.0, [0.3], [0.1]);
+        Pendulum.step::<I>(&mut s, 5e-324).unwrap();
+        assert_eq!(s.t, 5e-324);
+    }
+    refused::<Rk4>();
+    refused::<ImplicitMidpoint>();
+    refused::<GaussLegendre2>();
+    refused::<Variational>();
+    refused::<StormerVerlet>();
+}
+
+#[test]
+fn dopri5_tolerance_below_round_off_is_a_step_size_underflow() {
+    // At t = 1 a step below ~1e-16 no longer advances time, long before an error estimate against
+    // tolerances of 1e-300 can be met: the controller must run out of step size, at a finite
+    // configuration where the dynamics are fine.
+    let start = State::new(1.0, [1.0], [0.0]);
+    let mut s = start;
+    let err = Dopri5::new(1e-300, 1e-300)
+        .integrate(&Oscillator { damping: 0.0 }, &mut s, 2.0, &mut [], |_| {})
+        .unwrap_err();
+    assert!(
+        matches!(err, Error::StepSizeUnderflow { t, .. } if t == 1.0),
+        "{err}"
+    );
+    assert_eq!(s, start);
+}
+
+#[test]
+fn implicit_step_far_too_large_names_the_breakdown_and_the_step() {
+    fn breaks_down<I: Integrator>() {
+        for start in [State::new(0.0, [0.3], [0.0]), State::new(0.0, [0.3], [0.2])] {
+            let mut s = start;
+            let err = Pendulum.step::<I>(&mut s, 1e300).unwrap_err();
+            assert!(
+                matches!(err, Error::NewtonBreakdown { h, .. } if h == 1e300),
+                "{}: {err}",
+                I::NAME
+            );
+            assert_eq!(s, start);
+        }
+    }
+    breaks_down::<ImplicitMidpoint>();
+    breaks_down::<GaussLegendre2>();
+    breaks_down::<Variational>();
+}
+
+#[test]
+fn overflowing_mass_matrix_is_non_finite_dynamics_not_a_singular_one() {
+    // r = 1e300: M = diag(1, ∞). Not a singular mass matrix with "pivot 1".
+    let err = Polar
+        .accelerations(&State::new(0.0, [1e300, 0.3], [0.0, 0.0]))
+        .unwrap_err();
+    assert!(matches!(err, Error::NonFiniteDynamics { .. }), "{err}");
+    // RK4 with h = 1e300: the second stage sits at r ≈ 2.5e299.
+    let start = State::new(0.0, [1.0, 0.3], [0.5, 0.2]);
+    let mut s = start;
+    let err = Polar.step::<Rk4>(&mut s, 1e300).unwrap_err();
+    assert!(
+        matches!(err, Error::NonFiniteDynamics { t, .. } if t == 5e299),
+        "{err}"
+    );
+    assert_eq!(s, start);
+}
+
+#[test]
+fn dopri5_end_time_before_the_start_is_named_as_such() {
+    let start = State::new(1.0, [1.0], [0.0]);
+    for t_end in [0.5, f64::NAN, f64::INFINITY] {
+        let mut s = start;
+        let err = Dopri5::default()
+            .integrate(&Oscillator { damping: 0.0 }, &mut s, t_end, &mut [], |_| {})
+            .unwrap_err();
+        assert!(
+            matches!(err, Error::InvalidEndTime { t, t_end: end } if t == 1.0 && end.to_bits() == t_end.to_bits()),
+            "{err}"
+        );
+        assert_eq!(s, start);
+    }
+    let mut stepper =
+        Dopri5Stepper::new(&Oscillator { damping: 0.0 }, Dopri5::default(), &start).unwrap();
+    assert!(matches!(
+        stepper.step(1.0),
+        Err(Error::InvalidEndTime { t_end, .. }) if t_end == 1.0
+    ));
 }

@@ -265,12 +265,16 @@ where
             // Row p is (numerically) Σ cₖ·row k over the earlier rows, with S₁₁ c = S[0..p, p]
             // (S₁₁ is positive definite: the factorisation got past it). Name the rows that take
             // part, with a coefficient that matters, as `constraints::solve` does for the KKT solve.
-            let c = s
-                .view((0, 0), (p, p))
-                .into_owned()
-                .lu()
-                .solve(&s.view((0, p), (p, 1)).into_owned())
-                .unwrap_or_else(|| DMatrix::from_element(p, 1, 1.0));
+            // (The first row has no earlier rows: it depends on none, its gradient vanishes.)
+            let c = if p == 0 {
+                DMatrix::zeros(0, 1)
+            } else {
+                s.view((0, 0), (p, p))
+                    .into_owned()
+                    .lu()
+                    .solve(&s.view((0, p), (p, 1)).into_owned())
+                    .unwrap_or_else(|| DMatrix::from_element(p, 1, 1.0))
+            };
             let weight = |k: usize| c[k].abs() * s[(k, k)].sqrt();
             let largest = (0..p).map(weight).fold(0.0f64, f64::max);
             let mut names: Vec<String> = (0..p)
@@ -530,7 +534,8 @@ where
 /// and tolerance as [`stability`](super::stability()), see [`MARGINAL_TOLERANCE`]). For an enforced
 /// unilateral row this treats the contact as held, which is the linear behaviour while λ > 0.
 ///
-/// Errors: non-finite parameters or guess; invalid constraint declarations;
+/// Errors: invalid options ([`EquilibriumOptions::validate`]); non-finite parameters or guess;
+/// invalid constraint declarations;
 /// [`Error::UnsuitableMethod`] for a mechanism with velocity rows; [`Error::NonFiniteDynamics`] at
 /// the guess; [`Error::SingularConstraints`] when the enforced rows are dependent at the guess or
 /// at the solution (redundant constraints: the multipliers are then not determined), naming them;
@@ -564,6 +569,7 @@ pub fn constrained_equilibrium<M, const N: usize, const K: usize, const C: usize
 where
     M: Constraints<N, K, C> + Mechanism<N>,
 {
+    options.validate()?;
     let q0 = check_configuration(mechanism, t, q_guess)?;
     mechanism.validate_constraints()?;
     if let Some(i) = (0..C).find(|&i| M::KINDS[i] == ConstraintKind::Velocity) {
@@ -673,6 +679,65 @@ fn symmetric_eigen(m: DMatrix<f64>) -> Option<(Vec<f64>, DMatrix<f64>)> {
     Some((values, vectors))
 }
 
+/// Why ZᵀMZ (the mass matrix on the tangent space of the enforced rows) has no Cholesky factor. When
+/// M itself is singular or not finite, the error of M's own factorisation: the coordinate it stops
+/// at and its pivot. Otherwise (M positive definite, ZᵀMZ singular only by rounding) the first
+/// failing pivot of ZᵀMZ, named by the coordinate that dominates that tangent direction.
+#[cold]
+fn tangent_mass_error<M, const N: usize, const K: usize, const C: usize>(
+    mz: &DMatrix<f64>,
+    z: &DMatrix<f64>,
+    kkt: &Kkt<N>,
+    t: f64,
+    q: &[f64; N],
+) -> Error
+where
+    M: Constraints<N, K, C> + Mechanism<N>,
+{
+    let names = <M as Mechanism<N>>::Coords::NAMES;
+    if !kkt.rest.mass_matrix.iter().all(|x| x.is_finite()) {
+        return Error::NonFiniteDynamics {
+            t,
+            configuration: describe::<M, N>(q),
+        };
+    }
+    if let Err(e) = super::mass_cholesky::<M, N>(&kkt.rest.mass_matrix, t, q) {
+        return e;
+    }
+    // Unpivoted Cholesky of ZᵀMZ by hand, to find where it breaks down.
+    let n = mz.nrows();
+    let mut l = DMatrix::<f64>::zeros(n, n);
+    let (mut index, mut pivot) = (0, f64::NAN);
+    for j in 0..n {
+        let mut d = mz[(j, j)];
+        for k in 0..j {
+            d -= l[(j, k)] * l[(j, k)];
+        }
+        (index, pivot) = (j, d);
+        if d.is_nan() || d <= 0.0 {
+            break;
+        }
+        l[(j, j)] = d.sqrt();
+        for i in j + 1..n {
+            let mut v = mz[(i, j)];
+            for k in 0..j {
+                v -= l[(i, k)] * l[(j, k)];
+            }
+            l[(i, j)] = v / l[(j, j)];
+        }
+    }
+    let direction = z.column(index);
+    let coordinate = (0..N)
+        .max_by(|&a, &b| direction[a].abs().total_cmp(&direction[b].abs()))
+        .unwrap_or(0);
+    Error::SingularMassMatrix {
+        t,
+        configuration: describe::<M, N>(q),
+        coordinate: names[coordinate.min(N.saturating_sub(1))],
+        pivot,
+    }
+}
+
 /// The tangent-space stability analysis of the module docs.
 fn tangent_stability<M, const N: usize, const K: usize, const C: usize>(
     mechanism: &M,
@@ -709,12 +774,10 @@ where
     }
     let k_l = kkt.rest.stiffness - curvature;
     let mz = z.transpose() * dm(&kkt.rest.mass_matrix) * &z;
-    let chol = mz.cholesky().ok_or_else(|| Error::SingularMassMatrix {
-        t,
-        configuration: describe::<M, N>(q),
-        coordinate: <M as Mechanism<N>>::Coords::NAMES[0],
-        pivot: 0.0,
-    })?;
+    let chol = match mz.clone().cholesky() {
+        Some(chol) => chol,
+        None => return Err(tangent_mass_error::<M, N, K, C>(&mz, &z, kkt, t, q)),
+    };
     let l_inv = chol
         .l()
         .solve_lower_triangular(&DMatrix::identity(N - m, N - m))

@@ -33,6 +33,37 @@ pub struct EquilibriumOptions {
     pub step_tolerance: f64,
 }
 
+impl EquilibriumOptions {
+    /// Checks the tolerances ([`Error::InvalidSetting`] naming the first one out of range): each
+    /// finite and in [0, 1). Both are relative, so a tolerance of 1 or more would accept a residual
+    /// as large as the forces it is measured against, or a Newton step as large as q itself: a
+    /// point that is not an equilibrium. (Zero is allowed: then only an exactly zero residual or
+    /// step ends the iteration, or `max_iterations` does.)
+    ///
+    /// ```
+    /// use lagrange_core::analysis::EquilibriumOptions;
+    /// assert!(EquilibriumOptions::default().validate().is_ok());
+    /// let loose = EquilibriumOptions { residual_tolerance: f64::INFINITY, ..Default::default() };
+    /// assert!(loose.validate().is_err());
+    /// ```
+    pub fn validate(&self) -> Result<()> {
+        for (setting, value) in [
+            ("residual_tolerance", self.residual_tolerance),
+            ("step_tolerance", self.step_tolerance),
+        ] {
+            if !(0.0..1.0).contains(&value) {
+                return Err(Error::InvalidSetting {
+                    method: "equilibrium",
+                    setting,
+                    value,
+                    requirement: "finite and in [0, 1)",
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
 impl Default for EquilibriumOptions {
     /// 100 iterations; residual tolerance 1e-14 (some tens of ulps of the terms it is measured
     /// against: an early exit when the residual is at rounding level); step tolerance 1e-12 (the
@@ -126,7 +157,8 @@ const MIN_STEP: f64 = 1e-12;
 /// steepest-descent direction −Jᵀr is used instead. Which equilibrium is found depends on the
 /// guess — minima and maxima of V alike; classify it with [`stability`](super::stability()).
 ///
-/// Errors: non-finite parameters or guess; [`Error::NonFiniteDynamics`] when the forces are not
+/// Errors: invalid options ([`EquilibriumOptions::validate`]); non-finite parameters or guess;
+/// [`Error::NonFiniteDynamics`] when the forces are not
 /// finite at the guess; [`Error::EquilibriumNotFound`] (naming the last iterate and its residual)
 /// when the iteration does not converge in `options.max_iterations`, the line search stalls (a
 /// local minimum of ½‖r‖² that is not a root, or a singular Jacobian with Jᵀr = 0), or the
@@ -148,6 +180,7 @@ pub fn equilibrium<M: Mechanism<N>, const N: usize>(
     q_guess: &M::Coords,
     options: &EquilibriumOptions,
 ) -> Result<Equilibrium<M::Coords, N>> {
+    options.validate()?;
     let mut q = SVector::<f64, N>::from(check_configuration(mechanism, t, q_guess)?);
     let not_found =
         |iterations: usize, residual: f64, q: &SVector<f64, N>| Error::EquilibriumNotFound {

@@ -6,7 +6,7 @@ use super::{
     CONSISTENCY_TOLERANCE,
 };
 use crate::error::{Error, Result};
-use crate::mechanism::check_step;
+use crate::mechanism::check_step_at;
 use crate::model::{check_state, Coordinates, State};
 
 /// Options of [`ContactRk4`].
@@ -21,6 +21,45 @@ pub struct ContactOptions {
     /// Mode changes allowed within one step before the step fails with
     /// [`Error::TooManyEvents`] (a Zeno sequence of impacts, or an inconsistent friction mode).
     pub max_events_per_step: usize,
+}
+
+impl ContactOptions {
+    /// Checks the options ([`Error::InvalidSetting`] naming the first one out of range): the
+    /// restitution in [0, 1], the event tolerance positive and below 1 (it is relative to the step,
+    /// so 1 or more would place events anywhere in it), at least one event per step.
+    ///
+    /// ```
+    /// use lagrange_core::constraints::ContactOptions;
+    /// assert!(ContactOptions::default().validate().is_ok());
+    /// let loose = ContactOptions { event_tolerance: f64::INFINITY, ..Default::default() };
+    /// assert!(loose.validate().is_err());
+    /// ```
+    // `!(x > 0)`-style tests are deliberate: they also reject NaN.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+    pub fn validate(&self) -> Result<()> {
+        let invalid = |setting, value, requirement| {
+            Err(Error::InvalidSetting {
+                method: "ContactRk4",
+                setting,
+                value,
+                requirement,
+            })
+        };
+        if !(0.0..=1.0).contains(&self.restitution) {
+            return invalid("restitution", self.restitution, "in [0, 1]");
+        }
+        if !(self.event_tolerance > 0.0 && self.event_tolerance < 1.0) {
+            return invalid(
+                "event_tolerance",
+                self.event_tolerance,
+                "positive and below 1",
+            );
+        }
+        if self.max_events_per_step == 0 {
+            return invalid("max_events_per_step", 0.0, "at least 1");
+        }
+        Ok(())
+    }
 }
 
 impl Default for ContactOptions {
@@ -166,27 +205,20 @@ fn event_values<M: Constraints<N, K, C>, const N: usize, const K: usize, const C
 impl<const C: usize> ContactRk4<C> {
     /// A stepper starting at `state`, whose mode is inferred by complementarity ([`infer_mode`]).
     ///
-    /// Errors: invalid parameters or friction coefficients, a state that violates the constraints
-    /// beyond [`CONSISTENCY_TOLERANCE`] ([`Error::ConstraintViolation`]; project it first with
+    /// Errors: invalid options ([`ContactOptions::validate`]), invalid parameters or friction
+    /// coefficients, a state that violates the constraints beyond [`CONSISTENCY_TOLERANCE`]
+    /// ([`Error::ConstraintViolation`]; project it first with
     /// [`consistent_state`](super::consistent_state)), a velocity row that is not linear in q̇.
     pub fn new<M: Constraints<N, K, C>, const N: usize, const K: usize>(
         model: &M,
         state: &State<M::Coords>,
         options: ContactOptions,
     ) -> Result<Self> {
+        options.validate()?;
         model.validate()?;
         let (q, v) = (state.q.to_array(), state.v.to_array());
         check_state(&<M::Coords as Coordinates<N>>::NAMES, state.t, &q, &v)?;
         check_consistent(model, state.t, &q, &v, CONSISTENCY_TOLERANCE)?;
-        if !(options.restitution.is_finite() && (0.0..=1.0).contains(&options.restitution)) {
-            return Err(Error::UnsuitableMethod {
-                method: "ContactRk4",
-                reason: format!(
-                    "the coefficient of restitution must be in [0, 1], got {}",
-                    options.restitution
-                ),
-            });
-        }
         let mode = infer_mode(model, state.t, &q, &v)?;
         let phi = event_values(model, state.t, &q, &v, &mode)?;
         Ok(ContactRk4 {
@@ -217,18 +249,26 @@ impl<const C: usize> ContactRk4<C> {
 
     /// Advances `state` by exactly `h`, switching modes at located events. On error the state, the
     /// mode and the event list are unchanged.
+    ///
+    /// Errors, before anything is computed: an invalid step or one that does not advance time
+    /// ([`Error::StepDoesNotAdvance`]), invalid [`options`](Self::options), invalid parameters, a
+    /// state that violates the constraints ([`Error::ConstraintViolation`], as for the plain
+    /// integrators).
     pub fn step<M: Constraints<N, K, C>, const N: usize, const K: usize>(
         &mut self,
         model: &M,
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<()> {
-        check_step(h)?;
+        check_step_at(state.t, h)?;
+        self.options.validate()?;
         model.validate()?;
-        model.validate_constraints()?;
         let names = &<M::Coords as Coordinates<N>>::NAMES;
         let (mut q, mut v) = (state.q.to_array(), state.v.to_array());
         check_state(names, state.t, &q, &v)?;
+        // Like every integrator: a state that violates the constraints is refused, not projected
+        // (this also checks the friction coefficients and that velocity rows are linear).
+        check_consistent(model, state.t, &q, &v, CONSISTENCY_TOLERANCE)?;
         let t0 = state.t;
         let t_end = t0 + h;
         let mut t = t0;

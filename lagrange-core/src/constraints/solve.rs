@@ -15,6 +15,11 @@ use num_dual::{Derivative, Dual, Dual2, DualSVec, DualVec};
 /// slip velocity as zero. States produced by [`project`] are at round-off, far below it.
 pub const CONSISTENCY_TOLERANCE: f64 = 1e-8;
 
+/// Solves with sliding friction tried before the signs of the bilateral normal forces are declared
+/// inconsistent ([`Error::FrictionIndeterminate`]): two decide one normal row, the rest allow for
+/// a flip of a second row.
+const SIGN_ATTEMPTS: usize = 4;
+
 /// Iterations of the Newton projection of positions before giving up.
 const MAX_PROJECTION_ITERATIONS: usize = 12;
 
@@ -584,7 +589,22 @@ pub fn accelerations_in_mode<
         }
     });
     let mut columns = [SVector::<S, N>::zeros(); C];
-    for _attempt in 0..3 {
+    let indeterminate = || Error::FrictionIndeterminate {
+        t: t.re(),
+        configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, &real(q)),
+        constraints: (0..C)
+            .filter(|&j| sliding[j])
+            .map(|j| format!("`{}`", M::NAMES[j]))
+            .collect::<Vec<_>>()
+            .join(", "),
+    };
+    // Each attempt solves with the current signs and flips those the solution contradicts. With
+    // one bilateral normal row two attempts decide: if both signs contradict themselves, no normal
+    // force is consistent with sliding friction (Painlevé's inconsistent case). Several normal rows
+    // get a few more attempts; signs still inconsistent after them are the same error, never a
+    // solution computed with a sign its own normal force contradicts.
+    let mut consistent = false;
+    for _attempt in 0..SIGN_ATTEMPTS {
         for k in 0..C {
             if enforced[k] {
                 columns[k] = y[k];
@@ -608,16 +628,8 @@ pub fn accelerations_in_mode<
                 a[(i, i)] = S::from(filler);
             }
         }
-        lambda = lu_solve_generic(&a, &rhs).ok_or_else(|| Error::FrictionIndeterminate {
-            t: t.re(),
-            configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, &real(q)),
-            constraints: (0..C)
-                .filter(|&j| sliding[j])
-                .map(|j| format!("`{}`", M::NAMES[j]))
-                .collect::<Vec<_>>()
-                .join(", "),
-        })?;
-        let mut consistent = true;
+        lambda = lu_solve_generic(&a, &rhs).ok_or_else(indeterminate)?;
+        consistent = true;
         for n in 0..C {
             if enforced[n]
                 && !matches!(M::KINDS[n], ConstraintKind::Unilateral)
@@ -630,6 +642,9 @@ pub fn accelerations_in_mode<
         if consistent {
             break;
         }
+    }
+    if !consistent {
+        return Err(indeterminate());
     }
     let mut qdd = u;
     for k in 0..C {
@@ -958,8 +973,9 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
 /// more dual pass for J w and one second-order evaluation of h; cheap enough to run before every
 /// step ([`Mechanism::check_constraints`](crate::Mechanism::check_constraints)).
 ///
-/// Errors: [`Error::ConstraintViolation`] listing the violated rows and residuals,
-/// [`Error::NonlinearVelocityConstraint`], invalid friction coefficients.
+/// Errors, in this order: invalid friction coefficients, [`Error::NonlinearVelocityConstraint`]
+/// (a property of the declaration, reported whether or not the state satisfies the rows),
+/// [`Error::ConstraintViolation`] listing the violated rows and residuals.
 pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
     model: &M,
     t: f64,
@@ -994,6 +1010,35 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
             }
         }
     }
+    // The declaration first: a velocity row that is not affine in q̇ is refused whatever the state.
+    if has_velocity::<M, N, K, C>() {
+        // Affine in q̇ ⇔ zero second derivative along any direction w; ẋ(q̇ + s w) = ẋ + s J w.
+        let w: [f64; N] = std::array::from_fn(|j| v[j] + 1.0);
+        let qw: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], w[j]));
+        let jw = model.cartesian(Dual::from_re(t), &qw);
+        let t2 = Dual2::from_re(t);
+        let q2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::from_re(q[j]));
+        let v2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::new(v[j], w[j], 0.0));
+        let x2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::from_re(x[i]));
+        let xd2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::new(x_dot[i], jw[i].eps, 0.0));
+        let h = model.velocity_constraints(t2, &q2, &v2, &x2, &xd2);
+        for i in 0..C {
+            if !M::KINDS[i].is_velocity() {
+                continue;
+            }
+            // The quadratic term at s = 1 against the size of the affine part there.
+            let deviation = 0.5 * h[i].v2.abs();
+            let size = h[i].re.abs() + h[i].v1.abs();
+            if !(deviation <= 1e-9 * size) && deviation > 0.0 || !deviation.is_finite() {
+                return Err(Error::NonlinearVelocityConstraint {
+                    constraint: M::NAMES[i],
+                    t,
+                    configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, q),
+                    deviation,
+                });
+            }
+        }
+    }
     let mut violated = Vec::new();
     for i in 0..C {
         let r = match M::KINDS[i] {
@@ -1025,34 +1070,6 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
                 .join(", "),
         });
     }
-    if has_velocity::<M, N, K, C>() {
-        // Affine in q̇ ⇔ zero second derivative along any direction w; ẋ(q̇ + s w) = ẋ + s J w.
-        let w: [f64; N] = std::array::from_fn(|j| v[j] + 1.0);
-        let qw: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], w[j]));
-        let jw = model.cartesian(Dual::from_re(t), &qw);
-        let t2 = Dual2::from_re(t);
-        let q2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::from_re(q[j]));
-        let v2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::new(v[j], w[j], 0.0));
-        let x2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::from_re(x[i]));
-        let xd2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::new(x_dot[i], jw[i].eps, 0.0));
-        let h = model.velocity_constraints(t2, &q2, &v2, &x2, &xd2);
-        for i in 0..C {
-            if !M::KINDS[i].is_velocity() {
-                continue;
-            }
-            // The quadratic term at s = 1 against the size of the affine part there.
-            let deviation = 0.5 * h[i].v2.abs();
-            let size = h[i].re.abs() + h[i].v1.abs();
-            if !(deviation <= 1e-9 * size) && deviation > 0.0 || !deviation.is_finite() {
-                return Err(Error::NonlinearVelocityConstraint {
-                    constraint: M::NAMES[i],
-                    t,
-                    configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, q),
-                    deviation,
-                });
-            }
-        }
-    }
     Ok(())
 }
 
@@ -1068,9 +1085,14 @@ pub fn consistent_state<M: Constraints<N, K, C>, const N: usize, const K: usize,
     guess: &State<M::Coords>,
 ) -> Result<State<M::Coords>> {
     model.validate()?;
-    model.validate_constraints()?;
     let (mut q, mut v) = (guess.q.to_array(), guess.v.to_array());
     crate::model::check_state(&<M::Coords as Coordinates<N>>::NAMES, guess.t, &q, &v)?;
+    // The declaration is checked before projecting (friction coefficients, velocity rows linear
+    // in q̇); the guess itself may violate the rows.
+    match check_consistent(model, guess.t, &q, &v, CONSISTENCY_TOLERANCE) {
+        Ok(()) | Err(Error::ConstraintViolation { .. }) => {}
+        Err(e) => return Err(e),
+    }
     let cr = constraint_rows(model, guess.t, &q, &v);
     let mut mode = Mode::all_active::<M, N, K>();
     for i in 0..C {
@@ -1105,6 +1127,12 @@ pub fn constraint_forces<
     let (q, v) = (state.q.to_array(), state.v.to_array());
     crate::model::check_state(&<M::Coords as Coordinates<N>>::NAMES, state.t, &q, &v)?;
     let t = state.t;
+    // Refuse what the integrators refuse about the declaration (friction coefficients, velocity
+    // rows not linear in q̇), but compute forces at states off the constraints too.
+    match check_consistent(model, t, &q, &v, CONSISTENCY_TOLERANCE) {
+        Ok(()) | Err(Error::ConstraintViolation { .. }) => {}
+        Err(e) => return Err(e),
+    }
     let mode = infer_mode(model, t, &q, &v)?;
     forces_in_mode(model, t, &q, &v, &mode)
 }
@@ -1154,6 +1182,23 @@ pub(crate) fn forces_in_mode<
                 cartesian[i] = std::array::from_fn(|k| sol.multipliers[i] * d[k]);
             }
         }
+    }
+    // A row without force (not enforced, or λ = 0 exactly) applies none, even where its gradient is
+    // not finite (a separated contact at an overflowing or degenerate configuration): 0, not 0·NaN.
+    let mut generalized = generalized;
+    for i in 0..C {
+        if sol.multipliers[i] == 0.0 {
+            generalized[i] = [0.0; N];
+            cartesian[i] = [0.0; K];
+        }
+    }
+    if !generalized
+        .iter()
+        .flatten()
+        .chain(cartesian.iter().flatten())
+        .all(|x| x.is_finite())
+    {
+        return Err(dynamics::non_finite_dynamics::<M::Coords, f64, N>(t, q));
     }
     Ok(ConstraintForces {
         mode: *mode,

@@ -17,10 +17,11 @@
 //! separated ([`momentum_rate`]).
 
 use super::newton::{jacobian_rows, max_norm, Convergence, MAX_NEWTON_ITERATIONS};
-use crate::error::{Error, Result};
+use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::linalg::lu_solve;
 use crate::mechanism::Mechanism;
+use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
 
@@ -137,10 +138,31 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
         let r = SVector::<f64, N>::from_fn(|i, _| pv[i].re - p[i]);
         residual_norm = max_norm(&r);
         if !residual_norm.is_finite() {
-            break;
+            // The momenta are not finite at (t, q, v): name the state.
+            return Err(Error::NonFiniteDynamics {
+                t,
+                configuration: format!(
+                    "{}, velocities ({})",
+                    describe_configuration(&M::Coords::NAMES, q),
+                    describe_configuration(&M::Coords::NAMES, &v.into())
+                ),
+            });
         }
-        let Some(delta) = lu_solve(&jacobian_rows(&pv), &r) else {
-            break;
+        let jac = jacobian_rows(&pv);
+        let Some(delta) = lu_solve(&jac, &r) else {
+            // ∂p/∂v is the mass matrix: name its singular pivot (or its overflow).
+            return Err(match crate::linalg::cholesky(&jac) {
+                Err(e) if jac.iter().all(|x| x.is_finite()) => Error::SingularMassMatrix {
+                    t,
+                    configuration: describe_configuration(&M::Coords::NAMES, q),
+                    coordinate: M::Coords::NAMES[e.index],
+                    pivot: e.pivot,
+                },
+                _ => Error::NonFiniteDynamics {
+                    t,
+                    configuration: describe_configuration(&M::Coords::NAMES, q),
+                },
+            });
         };
         v -= delta;
         if conv.converged(max_norm(&delta), max_norm(&v)) {

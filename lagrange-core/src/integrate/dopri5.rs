@@ -34,7 +34,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
 use crate::error::{Error, Result};
-use crate::mechanism::Mechanism;
+use crate::mechanism::{diagnose, Mechanism};
 use crate::model::{check_state, Coordinates, State};
 
 // Nodes and coefficients: HNW I, Table 5.2 (DOPRI5).
@@ -352,8 +352,8 @@ impl Dopri5 {
     }
 
     /// Checks the settings: tolerances finite, non-negative and not both zero, step-control
-    /// factors in their ranges ([`Error::InvalidSetting`] naming the setting), the initial step
-    /// positive and finite ([`Error::InvalidStep`]).
+    /// factors in their ranges, `max_steps` at least 1 ([`Error::InvalidSetting`] naming the
+    /// setting), the initial step positive and finite ([`Error::InvalidStep`]).
     pub fn validate(&self) -> Result<()> {
         let invalid = |setting, value, requirement| {
             Err(Error::InvalidSetting {
@@ -404,6 +404,9 @@ impl Dopri5 {
         if !(self.h_max > 0.0) {
             return invalid("h_max", self.h_max, "positive");
         }
+        if self.max_steps == 0 {
+            return invalid("max_steps", 0.0, "at least 1");
+        }
         if let Some(h) = self.h_init {
             crate::mechanism::check_step(h)?;
         }
@@ -423,7 +426,7 @@ impl Dopri5 {
         mut observer: impl FnMut(Observation<'_, M::Coords, N>),
     ) -> Result<Dopri5Outcome<M::Coords>> {
         if !(t_end.is_finite() && t_end >= state.t) {
-            return Err(Error::InvalidStep { h: t_end - state.t });
+            return Err(Error::InvalidEndTime { t: state.t, t_end });
         }
         let mut stepper = Dopri5Stepper::new(mechanism, *self, state)?;
         for ev in events.iter_mut() {
@@ -539,6 +542,17 @@ pub struct Dopri5Stepper<'m, M: Mechanism<N>, const N: usize> {
     stats: Dopri5Stats,
 }
 
+/// e/sc of the error norm, with 0/0 = 0 (an exact component with a zero scale, possible when
+/// atol = 0) and e/0 = ∞ otherwise.
+#[inline(always)]
+fn ratio(e: f64, scale: f64) -> f64 {
+    if e == 0.0 {
+        0.0
+    } else {
+        e / scale
+    }
+}
+
 #[inline(always)]
 fn combo<const N: usize, const S: usize>(
     y: &[f64; N],
@@ -562,7 +576,9 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         settings.validate()?;
         let (q, v) = mechanism.check(state)?;
         mechanism.check_constraints(state.t, &q, &v)?;
-        let a = mechanism.accelerations_at(state.t, &q, &v)?;
+        let a = mechanism
+            .accelerations_at(state.t, &q, &v)
+            .map_err(|e| diagnose(mechanism, state.t, &q, &v, e))?;
         let mut s = Dopri5Stepper {
             mechanism,
             settings,
@@ -669,8 +685,9 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
     /// accuracy). On error the accepted state is unchanged.
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
         if !(t_limit > self.t) || !t_limit.is_finite() {
-            return Err(Error::InvalidStep {
-                h: t_limit - self.t,
+            return Err(Error::InvalidEndTime {
+                t: self.t,
+                t_end: t_limit,
             });
         }
         let st = self.settings;
@@ -704,7 +721,10 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                         if qp != q1 || vp != v1 {
                             check_state(&M::Coords::NAMES, t_new, &qp, &vp)?;
                             self.stats.evaluations += 1;
-                            ap = self.mechanism.accelerations_at(t_new, &qp, &vp)?;
+                            ap = self
+                                .mechanism
+                                .accelerations_at(t_new, &qp, &vp)
+                                .map_err(|e| diagnose(self.mechanism, t_new, &qp, &vp, e))?;
                         }
                         let fac = (fac11 / self.fac_old.powf(st.beta) / st.safety)
                             .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
@@ -744,28 +764,36 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         // accelerations kaⱼ.
         let (q2, v2) = (combo(q, h, [A21], [&kq1]), combo(v, h, [A21], [&ka1]));
         self.stats.evaluations += 1;
-        let ka2 = m.accelerations_at(t + C2 * h, &q2, &v2)?;
+        let ka2 = m
+            .accelerations_at(t + C2 * h, &q2, &v2)
+            .map_err(|e| diagnose(m, t + C2 * h, &q2, &v2, e))?;
         let kq2 = v2;
         let (q3, v3) = (
             combo(q, h, [A31, A32], [&kq1, &kq2]),
             combo(v, h, [A31, A32], [&ka1, &ka2]),
         );
         self.stats.evaluations += 1;
-        let ka3 = m.accelerations_at(t + C3 * h, &q3, &v3)?;
+        let ka3 = m
+            .accelerations_at(t + C3 * h, &q3, &v3)
+            .map_err(|e| diagnose(m, t + C3 * h, &q3, &v3, e))?;
         let kq3 = v3;
         let (q4, v4) = (
             combo(q, h, [A41, A42, A43], [&kq1, &kq2, &kq3]),
             combo(v, h, [A41, A42, A43], [&ka1, &ka2, &ka3]),
         );
         self.stats.evaluations += 1;
-        let ka4 = m.accelerations_at(t + C4 * h, &q4, &v4)?;
+        let ka4 = m
+            .accelerations_at(t + C4 * h, &q4, &v4)
+            .map_err(|e| diagnose(m, t + C4 * h, &q4, &v4, e))?;
         let kq4 = v4;
         let (q5, v5) = (
             combo(q, h, [A51, A52, A53, A54], [&kq1, &kq2, &kq3, &kq4]),
             combo(v, h, [A51, A52, A53, A54], [&ka1, &ka2, &ka3, &ka4]),
         );
         self.stats.evaluations += 1;
-        let ka5 = m.accelerations_at(t + C5 * h, &q5, &v5)?;
+        let ka5 = m
+            .accelerations_at(t + C5 * h, &q5, &v5)
+            .map_err(|e| diagnose(m, t + C5 * h, &q5, &v5, e))?;
         let kq5 = v5;
         let (q6, v6) = (
             combo(
@@ -782,7 +810,9 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             ),
         );
         self.stats.evaluations += 1;
-        let ka6 = m.accelerations_at(t + h, &q6, &v6)?;
+        let ka6 = m
+            .accelerations_at(t + h, &q6, &v6)
+            .map_err(|e| diagnose(m, t + h, &q6, &v6, e))?;
         let kq6 = v6;
         let q1 = combo(
             q,
@@ -798,7 +828,9 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         );
         check_state(&M::Coords::NAMES, t + h, &q1, &v1)?;
         self.stats.evaluations += 1;
-        let ka7 = m.accelerations_at(t + h, &q1, &v1)?;
+        let ka7 = m
+            .accelerations_at(t + h, &q1, &v1)
+            .map_err(|e| diagnose(m, t + h, &q1, &v1, e))?;
         let kq7 = v1;
         let st = &self.settings;
         let mut sum = 0.0;
@@ -819,10 +851,13 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                     + E7 * ka7[i]);
             let sq = st.atol + st.rtol * q[i].abs().max(q1[i].abs());
             let sv = st.atol + st.rtol * v[i].abs().max(v1[i].abs());
-            sum += (eq / sq).powi(2) + (ev / sv).powi(2);
+            sum += ratio(eq, sq).powi(2) + ratio(ev, sv).powi(2);
         }
+        // Every stage is finite here (checked above), so an infinite error norm is an error far
+        // above a tolerance near the bottom of the floating-point range (rtol = atol = 1e-300):
+        // a rejection like any other, which ends in a step-size underflow if it persists.
         let err = (sum / (2 * N) as f64).sqrt();
-        if !err.is_finite() {
+        if err.is_nan() {
             return Err(Error::NonFiniteDynamics {
                 t: t + h,
                 configuration: crate::error::describe_configuration(&M::Coords::NAMES, &q1),

@@ -66,12 +66,14 @@ use super::newton::{constraint_forces_act, max_norm, Convergence, MAX_NEWTON_ITE
 use super::Integrator;
 use crate::error::{Error, Result};
 use crate::linalg::lu_solve_blocks;
-use crate::mechanism::{check_step, Mechanism};
+use crate::mechanism::{check_step_at, Mechanism};
 use crate::model::{check_state, Coordinates, State};
 use nalgebra::{SMatrix, SVector};
 
 /// An s-stage Gauss collocation tableau with d = bᵀA⁻¹.
 struct Tableau<const S: usize> {
+    /// The method's name, for errors.
+    name: &'static str,
     a: [[f64; S]; S],
     b: [f64; S],
     c: [f64; S],
@@ -80,6 +82,7 @@ struct Tableau<const S: usize> {
 
 /// Implicit midpoint: a = ½, b = 1, c = ½ (the 1-stage Gauss method), so d = 2.
 const MIDPOINT: Tableau<1> = Tableau {
+    name: "implicit midpoint",
     a: [[0.5]],
     b: [1.0],
     c: [0.5],
@@ -94,6 +97,7 @@ const R3: f64 = 1.732_050_807_568_877_2;
 /// 2-stage Gauss–Legendre (HNW I, Table 7.4): c = ½ ∓ √3/6, A = [[¼, ¼ − √3/6], [¼ + √3/6, ¼]],
 /// b = (½, ½). A⁻¹ = [[3, 2√3 − 3], [−2√3 − 3, 3]] (det A = 1/12), so d = bᵀA⁻¹ = (−√3, √3).
 const GAUSS2: Tableau<2> = Tableau {
+    name: "Gauss-Legendre 2",
     a: [[0.25, 0.25 - R36], [0.25 + R36, 0.25]],
     b: [0.5, 0.5],
     c: [0.5 - R36, 0.5 + R36],
@@ -182,11 +186,29 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
                 jac[i][k] = block;
             }
         }
+        let breakdown = |reason: &str| Error::NewtonBreakdown {
+            method: tableau.name,
+            t,
+            h,
+            iteration: stats.iterations,
+            reason: reason.to_string(),
+        };
         if !residual_norm.is_finite() {
-            break;
+            return Err(breakdown(
+                "the collocation residual is not finite (the stages left the region where the \
+                 equations of motion are finite; reduce h)",
+            ));
         }
         let Some(delta) = lu_solve_blocks(&jac, &residual) else {
-            break;
+            let finite = jac
+                .iter()
+                .flatten()
+                .all(|b| b.iter().all(|x| x.is_finite()));
+            return Err(breakdown(if finite {
+                "the Newton matrix is singular"
+            } else {
+                "the Newton matrix is not finite (h is too large for this mechanism)"
+            }));
         };
         let mut increment = 0.0f64;
         let mut scale = 0.0f64;
@@ -236,7 +258,7 @@ fn step_state<M: Mechanism<N>, const N: usize, const S: usize>(
     state: &mut State<M::Coords>,
     h: f64,
 ) -> Result<ImplicitStepStats> {
-    check_step(h)?;
+    check_step_at(state.t, h)?;
     let (q, v) = mechanism.check(state)?;
     mechanism.check_constraints(state.t, &q, &v)?;
     let (mut q1, mut v1, stats) = collocation_step(mechanism, tableau, state.t, &q, &v, h)?;

@@ -3,7 +3,7 @@
 
 use super::Integrator;
 use crate::error::Result;
-use crate::mechanism::{check_step, Mechanism};
+use crate::mechanism::{check_step_at, diagnose, Mechanism};
 use crate::model::{Coordinates, State};
 
 /// Fixed-step classical Runge–Kutta of order 4: four evaluations of the accelerations per step,
@@ -17,7 +17,9 @@ fn axpy<const N: usize>(y: &[f64; N], a: f64, x: &[f64; N]) -> [f64; N] {
 }
 
 impl Rk4 {
-    /// One RK4 step on raw arrays: returns (q, v) at t + h. No validation.
+    /// One RK4 step on raw arrays: returns (q, v) at t + h. No validation. A stage whose mass
+    /// matrix overflowed (a step that blew up) is [`Error::NonFiniteDynamics`](crate::Error::NonFiniteDynamics)
+    /// at that stage, not a singular mass matrix (see [`diagnose`]).
     #[inline]
     pub fn step_arrays<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
@@ -27,13 +29,21 @@ impl Rk4 {
         h: f64,
     ) -> Result<([f64; N], [f64; N])> {
         let half = 0.5 * h;
-        let a1 = mechanism.accelerations_at(t, q, v)?;
+        let a1 = mechanism
+            .accelerations_at(t, q, v)
+            .map_err(|e| diagnose(mechanism, t, q, v, e))?;
         let (q2, v2) = (axpy(q, half, v), axpy(v, half, &a1));
-        let a2 = mechanism.accelerations_at(t + half, &q2, &v2)?;
+        let a2 = mechanism
+            .accelerations_at(t + half, &q2, &v2)
+            .map_err(|e| diagnose(mechanism, t + half, &q2, &v2, e))?;
         let (q3, v3) = (axpy(q, half, &v2), axpy(v, half, &a2));
-        let a3 = mechanism.accelerations_at(t + half, &q3, &v3)?;
+        let a3 = mechanism
+            .accelerations_at(t + half, &q3, &v3)
+            .map_err(|e| diagnose(mechanism, t + half, &q3, &v3, e))?;
         let (q4, v4) = (axpy(q, h, &v3), axpy(v, h, &a3));
-        let a4 = mechanism.accelerations_at(t + h, &q4, &v4)?;
+        let a4 = mechanism
+            .accelerations_at(t + h, &q4, &v4)
+            .map_err(|e| diagnose(mechanism, t + h, &q4, &v4, e))?;
         let w = h / 6.0;
         let q_new = std::array::from_fn(|i| q[i] + w * (v[i] + 2.0 * (v2[i] + v3[i]) + v4[i]));
         let v_new = std::array::from_fn(|i| v[i] + w * (a1[i] + 2.0 * (a2[i] + a3[i]) + a4[i]));
@@ -49,7 +59,7 @@ impl Integrator for Rk4 {
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<()> {
-        check_step(h)?;
+        check_step_at(state.t, h)?;
         let (q, v) = mechanism.check(state)?;
         mechanism.check_constraints(state.t, &q, &v)?;
         let (mut q_new, mut v_new) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;

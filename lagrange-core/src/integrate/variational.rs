@@ -48,7 +48,7 @@ use super::Integrator;
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
 use crate::linalg::lu_solve;
-use crate::mechanism::{check_step, Mechanism};
+use crate::mechanism::{check_step_at, Mechanism};
 use crate::model::{check_state, Coordinates, State};
 use nalgebra::SVector;
 use num_dual::DualSVec;
@@ -105,11 +105,26 @@ impl Variational {
             let r = residual(mechanism, tm, q0, p0, &seeded, h);
             let value = SVector::<f64, N>::from_fn(|i, _| r[i].re);
             residual_norm = max_norm(&value);
+            let breakdown = |reason: &str| Error::NewtonBreakdown {
+                method: Self::NAME,
+                t,
+                h,
+                iteration: it,
+                reason: reason.to_string(),
+            };
             if !residual_norm.is_finite() {
-                break;
+                return Err(breakdown(
+                    "the discrete Euler-Lagrange residual is not finite (the midpoint left the \
+                     region where the equations of motion are finite; reduce h)",
+                ));
             }
-            let Some(delta) = lu_solve(&jacobian_rows(&r), &value) else {
-                break;
+            let jac = jacobian_rows(&r);
+            let Some(delta) = lu_solve(&jac, &value) else {
+                return Err(breakdown(if jac.iter().all(|x| x.is_finite()) {
+                    "the Newton matrix is singular"
+                } else {
+                    "the Newton matrix is not finite (h is too large for this mechanism)"
+                }));
             };
             vm -= delta;
             if conv.converged(max_norm(&delta), max_norm(&vm)) {
@@ -175,7 +190,7 @@ impl Variational {
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<VariationalStepStats> {
-        check_step(h)?;
+        check_step_at(state.t, h)?;
         let (q, v) = mechanism.check(state)?;
         mechanism.check_constraints(state.t, &q, &v)?;
         let (mut q1, mut v1, stats) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;

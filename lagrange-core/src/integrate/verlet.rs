@@ -37,7 +37,7 @@ use super::newton::refuse_constrained;
 use super::Integrator;
 use crate::dynamics::solve_accelerations;
 use crate::error::{Error, Result};
-use crate::mechanism::{check_step, Mechanism};
+use crate::mechanism::{check_step_at, Mechanism};
 use crate::model::{check_state, Coordinates, State};
 
 /// Relative change of the mass matrix over one step above which [`StormerVerlet`] refuses the
@@ -73,6 +73,14 @@ impl StormerVerlet {
         let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * vh[i]);
         let t1 = t + h;
         let eom1 = mechanism.equations_of_motion_at(t1, &q1, &vh);
+        // A step that blew up (M overflowing at q₁) is non-finite dynamics there, not a mass matrix
+        // that "changed by NaN".
+        if !eom1.mass_matrix.iter().all(|x| x.is_finite()) {
+            return Err(Error::NonFiniteDynamics {
+                t: t1,
+                configuration: crate::error::describe_configuration(&M::Coords::NAMES, &q1),
+            });
+        }
         let scale = eom0.mass_matrix.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         let change = (eom1.mass_matrix - eom0.mass_matrix)
             .iter()
@@ -103,7 +111,7 @@ impl Integrator for StormerVerlet {
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<()> {
-        check_step(h)?;
+        check_step_at(state.t, h)?;
         let (q, v) = mechanism.check(state)?;
         mechanism.check_constraints(state.t, &q, &v)?;
         let (mut q1, mut v1) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
