@@ -361,6 +361,10 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
     let rhs = eom.generalized_forces - eom.inertial_terms;
     let qdd = match solve_spd(&eom.mass_matrix, &rhs) {
         Ok(qdd) => qdd,
+        // A mass matrix that overflowed is not singular: say what happened.
+        Err(_) if eom.mass_matrix.iter().any(|m| !m.re().is_finite()) => {
+            return Err(non_finite_dynamics::<C, S, N>(t, q))
+        }
         Err(e) => return Err(singular_mass_matrix::<C, S, N>(e, t, q)),
     };
     // Branch-free on the common path: a·0 is 0 exactly when a is finite.

@@ -3,8 +3,9 @@
 //! - [`model`]: what a declaration compiles to (Cartesian coordinates x(q, t) with masses) and the
 //!   [`State`] a mechanism is simulated in;
 //! - [`dynamics`]: M q̈ = 𝓕 − b by dual-number automatic differentiation;
+//! - [`tree`]: the same for bodies that form a tree of translations, seeded body by body;
 //! - [`linalg`]: small dense solves generic over dual numbers;
-//! - [`mechanism`]: the user-facing [`Mechanism`] trait;
+//! - [`mechanism`]: the user-facing [`Mechanism`] trait, and [`Validated`] for parameters checked once;
 //! - [`integrate`]: the integrators, generic over every mechanism;
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`error`]: typed errors; nothing here panics on user input.
@@ -21,6 +22,7 @@ pub mod linalg;
 pub mod mechanism;
 pub mod model;
 pub mod tree;
+pub mod validated;
 
 pub use analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability,
@@ -35,4 +37,5 @@ pub use integrate::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, StormerVerlet, Variational,
 };
 pub use mechanism::Mechanism;
+pub use validated::Validated;
 pub use model::{Coordinates, Model, State};

@@ -60,6 +60,13 @@ pub trait Mechanism<const N: usize>: Sized {
         Ok(())
     }
 
+    /// Checks the parameters once and returns a handle whose calls check only the state (see
+    /// [`Validated`](crate::validated::Validated)): the form for a simulation, where parameters do
+    /// not change.
+    fn validated(self) -> Result<crate::validated::Validated<Self>> {
+        crate::validated::validate(self)
+    }
+
     /// Checks parameters and state; what every user-facing call does first.
     fn check(&self, state: &State<Self::Coords>) -> Result<([f64; N], [f64; N])> {
         self.validate()?;

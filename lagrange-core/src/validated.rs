@@ -1,0 +1,131 @@
+//! [`Validated`]: a mechanism whose parameters were checked once, so the calls of a simulation
+//! check only what changes — the state.
+
+use crate::dynamics::EquationsOfMotion;
+use crate::error::Result;
+use crate::geometry::Scalar;
+use crate::mechanism::Mechanism;
+
+/// A mechanism whose parameters (finite, masses and inertias positive, constraint declarations
+/// well formed) were checked when it was made. Parameters do not change during a simulation, so
+/// every call through the handle skips that check and validates only its state; results are the
+/// same as the mechanism's own, bit for bit.
+///
+/// The handle owns a copy of the parameters and gives them out read-only ([`Validated::get`]), so
+/// they cannot become invalid after the check. Every integrator and analysis that takes a
+/// [`Mechanism`] takes the handle.
+///
+/// ```
+/// use lagrange_core::{impl_mechanism, vec2, Mechanism, Model, Rk4, Scalar, State};
+///
+/// /// A pendulum of mass `m` on a unit rod, written by hand (`#[mechanism]` writes the same).
+/// struct Pendulum { m: f64 }
+///
+/// impl Model<1, 2> for Pendulum {
+///     type Coords = [f64; 1];
+///     const RHEONOMIC: bool = false;
+///     const HAS_POTENTIAL: bool = true;
+///     const HAS_FORCES: bool = false;
+///     fn validate(&self) -> lagrange_core::Result<()> {
+///         match self.m > 0.0 {
+///             true => Ok(()),
+///             false => Err(lagrange_core::Error::InvalidInertia {
+///                 body: "bob",
+///                 reason: format!("mass must be positive, got {}", self.m),
+///             }),
+///         }
+///     }
+///     fn masses(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+///         vec2(q[0].sin(), -q[0].cos()).to_array()
+///     }
+///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * (9.81 * self.m) }
+/// }
+/// impl_mechanism!(Pendulum, 1, 2);
+///
+/// # fn main() -> lagrange_core::Result<()> {
+/// let sys = Pendulum { m: 1.0 }.validated()?;
+/// let mut s = State::at_rest([0.5]);
+/// sys.step::<Rk4>(&mut s, 1e-3)?;
+/// assert!(sys.accelerations(&s)?[0] < 0.0);
+///
+/// // Invalid parameters are refused once, up front.
+/// assert!(Pendulum { m: -1.0 }.validated().is_err());
+/// # Ok(())
+/// # }
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Validated<M>(M);
+
+impl<M> Validated<M> {
+    /// The parameters.
+    pub fn get(&self) -> &M {
+        &self.0
+    }
+
+    /// The parameters, to change them (and check them again with
+    /// [`Mechanism::validated`]).
+    pub fn into_inner(self) -> M {
+        self.0
+    }
+}
+
+impl<M> std::ops::Deref for Validated<M> {
+    type Target = M;
+    fn deref(&self) -> &M {
+        &self.0
+    }
+}
+
+/// Checks `mechanism`'s parameters and wraps it.
+pub(crate) fn validate<M: Mechanism<N>, const N: usize>(mechanism: M) -> Result<Validated<M>> {
+    mechanism.validate()?;
+    Ok(Validated(mechanism))
+}
+
+impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
+    type Coords = M::Coords;
+
+    /// Checked when the handle was made.
+    #[inline(always)]
+    fn validate(&self) -> Result<()> {
+        Ok(())
+    }
+    #[inline(always)]
+    fn equations_of_motion_at<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> EquationsOfMotion<S, N> {
+        self.0.equations_of_motion_at(t, q, v)
+    }
+    #[inline(always)]
+    fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> S {
+        self.0.kinetic_energy_at(t, q, v)
+    }
+    #[inline(always)]
+    fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; N]) -> S {
+        self.0.potential_energy_at(t, q)
+    }
+    #[inline(always)]
+    fn momenta_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [S; N] {
+        self.0.momenta_at(t, q, v)
+    }
+    #[inline(always)]
+    fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> f64 {
+        self.0.lagrangian_time_derivative_at(t, q, v)
+    }
+    #[inline(always)]
+    fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
+        self.0.accelerations_at(t, q, v)
+    }
+    #[inline(always)]
+    fn project(&self, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {
+        self.0.project(t, q, v)
+    }
+    #[inline(always)]
+    fn check_constraints(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+        self.0.check_constraints(t, q, v)
+    }
+}
