@@ -11,7 +11,9 @@
 //! one side and then the same number of calls of the other (the order alternating from round to
 //! round), reported as the median of the per-round ratios with its interquartile range. A drift of the
 //! machine's speed between criterion's two measurements (seconds apart) moves the first figure; within
-//! a round (milliseconds) it hits both sides alike.
+//! a round (milliseconds) it hits both sides alike. "validated once" is the same call through
+//! `sys.validated()`, the handle a simulation uses: parameters checked when it was made, the state
+//! on every call.
 
 #[path = "../examples/double_pendulum.rs"]
 #[allow(dead_code)]
@@ -20,56 +22,13 @@ mod double_pendulum_scene;
 #[allow(dead_code)]
 mod wedge_block_scene;
 
+#[allow(dead_code)]
+mod common;
+
+use common::{interleave, mean_ns, print_interleaved, smoke_run};
 use criterion::{criterion_group, Criterion};
 use lagrange::prelude::*;
 use std::hint::black_box;
-use std::sync::Mutex;
-use std::time::Instant;
-
-/// Interleaved ratios measured so far: (group, first quartile, median, third quartile).
-static INTERLEAVED: Mutex<Vec<(&'static str, [f64; 3])>> = Mutex::new(Vec::new());
-
-/// Whether this is a smoke run (`-- --test`): nothing is timed.
-fn smoke_run() -> bool {
-    std::env::args().any(|a| a == "--test")
-}
-
-/// The interleaved ratio generated / hand-written (see the module docs), recorded for the summary.
-fn interleave(group: &'static str, mut hand_written: impl FnMut(), mut generated: impl FnMut()) {
-    if smoke_run() {
-        return;
-    }
-    const ROUNDS: usize = 41;
-    let batch = |f: &mut dyn FnMut(), calls: u64| {
-        let start = Instant::now();
-        for _ in 0..calls {
-            f();
-        }
-        start.elapsed().as_secs_f64()
-    };
-    // Calls per batch: about 2 ms of the hand-written side.
-    let probe = batch(&mut hand_written, 10_000).max(1e-6);
-    let calls = ((2e-3 / probe) * 10_000.0).clamp(1_000.0, 1e7) as u64;
-    let mut ratios: Vec<f64> = (0..ROUNDS)
-        .map(|round| {
-            let (h, g) = if round % 2 == 0 {
-                let h = batch(&mut hand_written, calls);
-                (h, batch(&mut generated, calls))
-            } else {
-                let g = batch(&mut generated, calls);
-                (batch(&mut hand_written, calls), g)
-            };
-            g / h
-        })
-        .collect();
-    ratios.sort_by(f64::total_cmp);
-    let quartiles = [
-        ratios[ROUNDS / 4],
-        ratios[ROUNDS / 2],
-        ratios[3 * ROUNDS / 4],
-    ];
-    INTERLEAVED.lock().unwrap().push((group, quartiles));
-}
 
 #[mechanism]
 pub mod pendulum {
@@ -149,11 +108,15 @@ fn cart_pendulum_closed_form(
 
 fn simple_pendulum(c: &mut Criterion) {
     use pendulum::{Coords, Pendulum, State};
-    let sys = Pendulum {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = Pendulum {
         m: 1.0,
         l: 0.8,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
     let generated = sys.accelerations(&s).unwrap().theta;
     assert!((generated - pendulum_closed_form(&sys, [0.7])[0]).abs() < 1e-12);
@@ -165,25 +128,29 @@ fn simple_pendulum(c: &mut Criterion) {
         b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
-    interleave(
-        "pendulum",
-        || {
-            black_box(pendulum_closed_form(black_box(&sys), black_box([0.7])));
-        },
-        || {
-            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
-        },
-    );
+    let closed_form = || {
+        black_box(pendulum_closed_form(black_box(&sys), black_box([0.7])));
+    };
+    interleave("pendulum", closed_form, || {
+        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
 }
 
 fn pendulum_on_cart(c: &mut Criterion) {
     use cart_pendulum::{CartPendulum, Coords, State};
-    let sys = CartPendulum {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = CartPendulum {
         cart_mass: 2.0,
         m: 1.0,
         l: 0.8,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let (q, v) = ([0.1, 0.7], [-0.3, 1.1]);
     let s = State::new(
         0.0,
@@ -207,30 +174,34 @@ fn pendulum_on_cart(c: &mut Criterion) {
         b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
-    interleave(
-        "cart_pendulum",
-        || {
-            black_box(cart_pendulum_closed_form(
-                black_box(&sys),
-                black_box(q),
-                black_box(v),
-            ));
-        },
-        || {
-            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
-        },
-    );
+    let closed_form = || {
+        black_box(cart_pendulum_closed_form(
+            black_box(&sys),
+            black_box(q),
+            black_box(v),
+        ));
+    };
+    interleave("cart_pendulum", closed_form, || {
+        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
 }
 
 fn double_pendulum(c: &mut Criterion) {
     use double_pendulum_scene::double_pendulum::{Coords, DoublePendulum, State};
-    let sys = DoublePendulum {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = DoublePendulum {
         m1: 1.0,
         m2: 1.3,
         l1: 1.0,
         l2: 0.8,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let s = State::new(
         0.0,
         Coords {
@@ -256,19 +227,19 @@ fn double_pendulum(c: &mut Criterion) {
         b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
-    interleave(
-        "double_pendulum",
-        || {
-            black_box(double_pendulum_scene::closed_form(
-                black_box(&sys),
-                black_box([0.7, -1.2]),
-                black_box([1.1, -0.4]),
-            ));
-        },
-        || {
-            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
-        },
-    );
+    let closed_form = || {
+        black_box(double_pendulum_scene::closed_form(
+            black_box(&sys),
+            black_box([0.7, -1.2]),
+            black_box([1.1, -0.4]),
+        ));
+    };
+    interleave("double_pendulum", closed_form, || {
+        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
 }
 
 /// The wedge and block by hand: the closed-form constant accelerations (Ẍ, d̈) from the parameters.
@@ -304,13 +275,17 @@ fn wedge_block_assembled(p: &wedge_block_scene::wedge_block::WedgeBlock) -> [f64
 
 fn wedge_block(c: &mut Criterion) {
     use wedge_block_scene::wedge_block::{Coords, State, WedgeBlock};
-    let sys = WedgeBlock {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = WedgeBlock {
         wedge_mass: 3.0,
         block_mass: 1.0,
         alpha: 0.5,
         h: 1.0,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
     let mut group = c.benchmark_group("wedge_block");
     group.bench_function("hand_written", |b| {
@@ -339,6 +314,9 @@ fn wedge_block(c: &mut Criterion) {
     interleave("wedge_block", closed_form, || {
         black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
     });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
     interleave("  unchecked", closed_form, || {
         black_box(
             black_box(&sys)
@@ -358,22 +336,6 @@ criterion_group!(
     wedge_block,
     pendulum_on_cart
 );
-
-/// Mean time of one benchmark from criterion's estimates of this run, in ns.
-fn mean_ns(group: &str, bench: &str) -> Option<f64> {
-    let dir = std::env::var_os("CARGO_TARGET_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let path = dir
-        .join("criterion")
-        .join(group)
-        .join(bench)
-        .join("new")
-        .join("estimates.json");
-    let text = std::fs::read_to_string(path).ok()?;
-    let json: serde_json::Value = serde_json::from_str(&text).ok()?;
-    json["mean"]["point_estimate"].as_f64()
-}
 
 fn main() {
     benches();
@@ -402,10 +364,5 @@ fn main() {
             println!("    {variant:<20} {g:8.1} ns / {h:8.1} ns = {:.2}×", g / h);
         }
     }
-    println!(
-        "\ninterleaved ratio to the hand-written closed form (median of 41 rounds [quartiles]):"
-    );
-    for (group, [low, median, high]) in INTERLEAVED.lock().unwrap().iter() {
-        println!("  {group:<18} {median:.2}×  [{low:.2}, {high:.2}]");
-    }
+    print_interleaved("ratio to the hand-written closed form");
 }

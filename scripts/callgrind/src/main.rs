@@ -153,6 +153,55 @@ fn hw_chain<const N: usize>(m: f64, l: f64, g: f64, q: &[f64; N], v: &[f64; N]) 
         .solve(&force)
         .into()
 }
+/// `calls` calls of the link-by-link chain of `links` links (1, 2, 4, …, 64).
+fn chain_links(links: &str, calls: usize) -> f64 {
+    macro_rules! run {
+        ($module:ident, $ty:ident, $n:literal) => {{
+            use chains::$module::*;
+            let sys = $ty { m: 1.0, l: 0.5, g: 9.81 };
+            let (q, v) = chain_state::<$n>();
+            let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+            let mut acc = 0.0;
+            for _ in 0..calls {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().to_array()[0];
+            }
+            acc
+        }};
+    }
+    match links {
+        "1" => run!(chain1, Chain1, 1),
+        "2" => run!(chain2, Chain2, 2),
+        "4" => run!(chain4, Chain4, 4),
+        "8" => run!(chain8, Chain8, 8),
+        "16" => run!(chain16, Chain16, 16),
+        "32" => run!(chain32, Chain32, 32),
+        "64" => run!(chain64, Chain64, 64),
+        other => panic!("no chain of {other} links"),
+    }
+}
+/// `calls` calls of the closed form of the chain of `links` links.
+fn hw_chain_runs(links: &str, calls: usize) -> f64 {
+    macro_rules! run {
+        ($n:literal) => {{
+            let (q, v) = chain_state::<$n>();
+            let mut acc = 0.0;
+            for _ in 0..calls {
+                acc += hw_chain::<$n>(1.0, 0.5, 9.81, black_box(&q), black_box(&v))[0];
+            }
+            acc
+        }};
+    }
+    match links {
+        "1" => run!(1),
+        "2" => run!(2),
+        "4" => run!(4),
+        "8" => run!(8),
+        "16" => run!(16),
+        "32" => run!(32),
+        "64" => run!(64),
+        other => panic!("no chain of {other} links"),
+    }
+}
 /// θⱼ and θ̇ⱼ spread over the links, as in the chain benchmark.
 fn chain_state<const N: usize>() -> ([f64; N], [f64; N]) {
     (
@@ -466,24 +515,11 @@ fn main() {
                 acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta[0];
             }
         }
-        "chain32_links" => {
-            use chains::chain32::*;
-            let sys = Chain32 {
-                m: 1.0,
-                l: 0.5,
-                g: 9.81,
-            };
-            let (q, v) = chain_state::<32>();
-            let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta0;
-            }
+        mode if mode.starts_with("chain") && mode.ends_with("_links") => {
+            acc += chain_links(&mode["chain".len()..mode.len() - "_links".len()], n);
         }
-        "hw_chain32" => {
-            let (q, v) = chain_state::<32>();
-            for _ in 0..n {
-                acc += hw_chain::<32>(1.0, 0.5, 9.81, black_box(&q), black_box(&v))[0];
-            }
+        mode if mode.starts_with("hw_chain") => {
+            acc += hw_chain_runs(&mode["hw_chain".len()..], n);
         }
         "drag" => {
             use drag::*;
