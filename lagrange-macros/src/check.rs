@@ -6,6 +6,7 @@ use crate::attr::{Inertia, Kind};
 use crate::ctxt::Ctxt;
 use crate::names;
 use std::collections::{BTreeSet, HashMap};
+use syn::ext::IdentExt;
 use syn::{Ident, Type};
 
 /// Functions of the geometry module, in scope in every function body.
@@ -951,9 +952,10 @@ impl Resolver<'_, '_> {
             Some(Name::Time)
         } else if let Some(b) = model.bodies.iter().position(|b| b.decl.ident() == &name) {
             Some(Name::Body(b))
-        } else if velocity_of.is_some_and(|v| model.coords.iter().any(|c| c.ident == v)) {
+        // `r#type_dot` is not an identifier: the velocity of `r#type` is `type_dot`.
+        } else if velocity_of.is_some_and(|v| model.coords.iter().any(|c| c.ident.unraw() == v)) {
             Some(Name::CoordVelocity)
-        } else if velocity_of.is_some_and(|v| model.bodies.iter().any(|b| b.decl.ident() == v)) {
+        } else if velocity_of.is_some_and(|v| model.bodies.iter().any(|b| b.decl.ident().unraw() == v)) {
             Some(Name::BodyVelocity)
         } else if model.mechanism.item_names.iter().any(|i| *i == name)
             || GEOMETRY_FUNCTIONS.contains(&name.as_str())

@@ -271,7 +271,11 @@ pub(crate) fn bodies_structs(model: &Model) -> TokenStream {
 /// `let [theta1, theta2] = *__q;` (names with `suffix`), or for array coordinates
 /// `let x = __q[0]; let theta = [__q[1], __q[2]];`.
 fn bind_coordinates(model: &Model, q: &TokenStream, suffix: &str) -> TokenStream {
-    let name = |c: &Field| format_ident!("{}{}", c.ident, suffix);
+    // `format_ident!` drops the `r#` of a raw identifier: `r#type` is bound as itself.
+    let name = |c: &Field| match suffix {
+        "" => c.ident.clone(),
+        _ => format_ident!("{}{}", c.ident, suffix),
+    };
     if model.coords.iter().all(|c| c.array.is_none()) {
         let names = model.coords.iter().map(name);
         return quote!(let [#(#names),*] = *#q;);
