@@ -877,12 +877,8 @@ fn check_coordinates_are_used(cx: &Ctxt, model: &Model) {
     let mut depends: Vec<BTreeSet<usize>> = Vec::new();
     for body in &model.bodies {
         let mut coords = BTreeSet::new();
-        for ident in model
-            .free_names
-            .get(&body.decl.ident().to_string())
-            .into_iter()
-            .flatten()
-        {
+        // What the position's value depends on: `let _unused = y;` does not move the body.
+        for ident in &names::value_names(&body.decl.block) {
             if let Some(j) = model.coords.iter().position(|c| c.ident == *ident) {
                 coords.insert(j);
             } else if let Some(b) = model.bodies.iter().position(|b| b.decl.ident() == ident) {
