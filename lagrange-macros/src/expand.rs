@@ -110,7 +110,7 @@ fn generate(model: &Model) -> TokenStream {
 }
 
 /// `Coords<T = f64>`, its `Coordinates` impl, `DOF` and `State`.
-pub(crate) fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
+fn coords_items(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
     let p = private();
     let n = lit(crate::ast::slot_count(coords));
     // The user's attributes but their derives: `Coords` derives what it needs itself.

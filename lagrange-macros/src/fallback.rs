@@ -6,7 +6,7 @@
 use crate::ast::{Field, Mechanism};
 use crate::check::Model;
 use crate::ctxt;
-use crate::expand::{bodies_structs, coords_items};
+use crate::expand::bodies_structs;
 use proc_macro2::TokenStream;
 use quote::quote;
 use std::collections::BTreeSet;
@@ -31,12 +31,14 @@ pub(crate) fn fallback(mechanism: &Mechanism, model: Option<&Model>, errors: Vec
             .unwrap_or_default(),
     );
     let n = lit(crate::ast::slot_count(&coords));
-    let coords_items = coords_items(mechanism, &coords);
+    let coords_items = coords_stub(mechanism, &coords);
     let params = mechanism.params.as_ref().map(|(s, _)| {
         let mut s = s.clone();
+        s.attrs.retain(|a| !is_cfg(a));
         if let syn::Fields::Named(named) = &mut s.fields {
             let mut seen = BTreeSet::new();
             named.named = named.named.clone().into_iter().filter(|f| seen.insert(f.ident.clone())).collect();
+            named.named.iter_mut().for_each(|f| f.attrs.retain(|a| !is_cfg(a)));
         }
         let ident = &s.ident;
         let unreachable = quote!(#p::core::unreachable!("this mechanism failed to compile"));
@@ -95,4 +97,68 @@ fn dedup(fields: &[Field]) -> Vec<Field> {
         .filter(|f| seen.insert(f.ident.to_string()))
         .cloned()
         .collect()
+}
+
+/// `#[cfg]` and `#[cfg_attr]` (reported where the macro cannot honour them: not re-emitted, so that
+/// rustc does not remove a field the stubs name).
+fn is_cfg(attr: &syn::Attribute) -> bool {
+    attr.path().is_ident("cfg") || attr.path().is_ident("cfg_attr")
+}
+
+/// `Coords<T = f64>` with the fields as written, its `Coordinates` impl (never run), `DOF` and
+/// `State`: what code outside the module names. An array whose length the macro could not read
+/// keeps the length as written, so the user's own uses of it type-check as they would have.
+fn coords_stub(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
+    let p = quote!(::lagrange::__private);
+    let n = lit(crate::ast::slot_count(coords));
+    let attrs = mechanism
+        .coords
+        .iter()
+        .flat_map(|(s, _)| &s.attrs)
+        .filter(|a| !a.path().is_ident("derive") && !is_cfg(a));
+    let vis = mechanism
+        .coords
+        .as_ref()
+        .map(|(s, _)| s.vis.clone())
+        .unwrap_or(syn::Visibility::Inherited);
+    let field_attrs = coords
+        .iter()
+        .map(|f| f.attrs.iter().filter(|a| !is_cfg(a)).collect::<Vec<_>>());
+    let names: Vec<_> = coords.iter().map(|f| &f.ident).collect();
+    let types = coords.iter().map(|f| match &f.array {
+        Some((len, _)) => quote!([T; #len]),
+        None => quote!(T),
+    });
+    let defaults = coords.iter().map(|f| match &f.array {
+        Some(_) => quote!(#p::core::array::from_fn(|_| T::default())),
+        None => quote!(T::default()),
+    });
+    let unreachable = quote!(#p::core::unreachable!("this mechanism failed to compile"));
+    // `struct Coords {}` (reported): `T` is still used.
+    let marker = coords.is_empty().then(|| {
+        quote!(#[doc(hidden)] pub __scalar: #p::core::marker::PhantomData<T>,)
+    });
+    let marker_default = coords
+        .is_empty()
+        .then(|| quote!(__scalar: #p::core::marker::PhantomData,));
+    quote! {
+        #(#attrs)*
+        #[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq)]
+        #vis struct Coords<T = f64> {
+            #( #(#field_attrs)* pub #names: #types, )*
+            #marker
+        }
+        impl<T: #p::core::default::Default> #p::core::default::Default for Coords<T> {
+            fn default() -> Self {
+                Coords { #(#names: #defaults,)* #marker_default }
+            }
+        }
+        impl #p::Coordinates<#n> for Coords<f64> {
+            const NAMES: [&'static str; #n] = [""; #n];
+            fn to_array(&self) -> [f64; #n] { #unreachable }
+            fn from_array(values: [f64; #n]) -> Self { #unreachable }
+        }
+        pub const DOF: usize = #n;
+        pub type State = #p::State<Coords>;
+    }
 }

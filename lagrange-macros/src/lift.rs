@@ -26,6 +26,7 @@ fn is_float_literal(expr: &Expr) -> bool {
         }) => true,
         Expr::Unary(u) if matches!(u.op, syn::UnOp::Neg(_)) => is_float_literal(&u.expr),
         Expr::Paren(p) => is_float_literal(&p.expr),
+        Expr::Group(g) => is_float_literal(&g.expr),
         _ => false,
     }
 }

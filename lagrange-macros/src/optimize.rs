@@ -125,7 +125,7 @@ impl<'ast> Visit<'ast> for Bound {
 
 /// A single-segment path's identifier.
 fn single_ident(expr: &Expr) -> Option<&Ident> {
-    match expr {
+    match crate::ast::ungroup(expr) {
         Expr::Path(p) if p.qself.is_none() && p.attrs.is_empty() => p.path.get_ident(),
         _ => None,
     }
@@ -147,6 +147,7 @@ fn parameter_only(expr: &Expr, params: &BTreeSet<String>, used: &mut BTreeSet<St
             _ => false,
         },
         Expr::Paren(p) => parameter_only(&p.expr, params, used),
+        Expr::Group(g) => parameter_only(&g.expr, params, used),
         Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => parameter_only(&u.expr, params, used),
         Expr::Binary(b)
             if matches!(
@@ -210,7 +211,7 @@ fn trig_call<'e>(
     if !m.args.is_empty() || m.turbofish.is_some() || !(m.method == "sin" || m.method == "cos") {
         return None;
     }
-    if let Expr::Index(index) = &*m.receiver {
+    if let Expr::Index(index) = crate::ast::ungroup(&m.receiver) {
         let name = single_ident(&index.expr)?.to_string();
         return arrays
             .contains(&name)

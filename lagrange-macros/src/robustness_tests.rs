@@ -228,3 +228,31 @@ fn seeds_are_accepted() {
         accepted(seed);
     }
 }
+
+/// `tokens` in an invisible group, as a `macro_rules!` fragment (`$n:literal`, `$n:expr`) arrives.
+fn invisible(tokens: TokenStream) -> proc_macro2::Group {
+    proc_macro2::Group::new(proc_macro2::Delimiter::None, tokens)
+}
+
+#[test]
+fn invisible_groups_are_looked_through() {
+    let n = invisible(quote!(3));
+    let len = invisible(quote!(LINKS));
+    let on = invisible(quote!(bob));
+    let ty = invisible(quote!(Vec2));
+    let index = invisible(quote!(i - 1));
+    accepted(quote! {
+        pub mod chain {
+            pub const LINKS: usize = #n;
+            pub struct Coords { pub theta: [f64; #len] }
+            pub struct Chain { pub m: f64, pub l: f64, pub c: f64 }
+            #[particle(mass = m, count = #n)]
+            fn bob(i: usize) -> #ty {
+                let link = vec2(theta[i].sin(), -theta[i].cos()) * l;
+                if i == 0 { link } else { bob[#index] + link }
+            }
+            #[force(on = #on, count = #len)]
+            fn drag(i: usize) -> Vec2 { bob_dot[i] * (-c) }
+        }
+    });
+}
