@@ -20,6 +20,7 @@ pub mod integrate;
 pub mod linalg;
 pub mod mechanism;
 pub mod model;
+pub mod scalar_ext;
 
 pub use analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability,
