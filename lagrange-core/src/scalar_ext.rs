@@ -89,7 +89,7 @@ impl<D: Scalar> ScalarExt for D {}
 #[cfg(test)]
 mod tests {
     use super::ScalarExt;
-    use num_dual::{Dual64, DualNum};
+    use num_dual::Dual64;
 
     #[test]
     fn branches_carry_their_derivatives() {

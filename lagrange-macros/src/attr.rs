@@ -233,6 +233,8 @@ fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
                     other,
                     "`on =` takes the name of a body, point, coordinate or constraint",
                 );
+                // Reported: the target is not "missing" as well.
+                args.malformed = true;
                 false
             }
         },

@@ -960,8 +960,10 @@ fn check_coordinates_are_used(cx: &Ctxt, model: &Model) {
     let used: BTreeSet<usize> = depends.into_iter().flatten().collect();
     for (j, coord) in model.coords.iter().enumerate() {
         let repeated = model.coords[..j].iter().any(|c| c.ident == coord.ident);
+        // An array whose length was reported has no elements to depend on.
+        let unread = matches!(coord.array, Some((_, 0)));
         // `Coords { x, y }` where no body's position names `y`: its mass-matrix row is zero.
-        if !used.contains(&j) && !repeated {
+        if !used.contains(&j) && !repeated && !unread {
             cx.error_spanned_by(
                 &coord.ident,
                 format!(

@@ -174,9 +174,9 @@ impl VisitMut for Lifter<'_> {
                 // `x * 2`: an integer literal beside a scalar is the scalar.
                 let (left_int, right_int) = (is_int_literal(&b.left), is_int_literal(&b.right));
                 if left_int && !is_integer(&b.right, self.integers) {
-                    b.left = Box::new(self.lift_integer(&b.left));
+                    *b.left = self.lift_integer(&b.left);
                 } else if right_int && !is_integer(&b.left, self.integers) {
-                    b.right = Box::new(self.lift_integer(&b.right));
+                    *b.right = self.lift_integer(&b.right);
                 }
                 if is_integer(&b.left, self.integers) && is_integer(&b.right, self.integers) {
                     return;

@@ -32,6 +32,10 @@ pub fn free_names_of_expr(expr: &Expr) -> Vec<Ident> {
 /// names to every local it names, so mutation is followed; nested blocks count whole.
 pub fn value_names(block: &syn::Block) -> Vec<Ident> {
     use std::collections::HashMap;
+    // A `return` (reported) leaves the value anywhere: every name counts.
+    if first_return(block).is_some() {
+        return free_names(block);
+    }
     let mut locals: HashMap<String, Vec<Ident>> = HashMap::new();
     // The free names of `names`, with each local replaced by what it depends on.
     let resolve = |locals: &HashMap<String, Vec<Ident>>, names: Vec<Ident>| -> Vec<Ident> {
