@@ -21,6 +21,7 @@ pub mod linalg;
 pub mod mechanism;
 pub mod model;
 pub mod scalar_ext;
+pub mod tree;
 
 pub use analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability,

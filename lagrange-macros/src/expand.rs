@@ -56,22 +56,22 @@ fn errors_then(cx: Ctxt, item: TokenStream) -> TokenStream {
 }
 
 /// An unsuffixed integer literal (`3`, not `3usize`).
-fn lit(n: usize) -> proc_macro2::Literal {
+pub(crate) fn lit(n: usize) -> proc_macro2::Literal {
     proc_macro2::Literal::usize_unsuffixed(n)
 }
 
 /// `::lagrange::__private`.
-fn private() -> TokenStream {
+pub(crate) fn private() -> TokenStream {
     quote!(::lagrange::__private)
 }
 
 /// The scalar type parameter of generated generic functions.
-fn scalar() -> TokenStream {
+pub(crate) fn scalar() -> TokenStream {
     quote!(__D)
 }
 
 /// The geometry functions and types, and num-dual's methods, inside a generated function.
-fn prelude() -> TokenStream {
+pub(crate) fn prelude() -> TokenStream {
     let p = private();
     quote! {
         #[allow(unused_imports)]
@@ -92,7 +92,15 @@ fn generate(model: &Model) -> TokenStream {
     let inherent = inherent_impl(model);
     let model_impl = model_impl(model);
     let constrained = (!model.constraints.is_empty()).then_some(model.constraints.len());
-    let mechanism_impl = mechanism_impl(model.params_ident, model.dof(), model.rows, constrained);
+    let tree = crate::structure::tree(model);
+    let tree_items = tree.as_ref().map(|tree| crate::expand_tree::tree_items(model, tree));
+    let mechanism_impl = mechanism_impl(
+        model.params_ident,
+        model.dof(),
+        model.rows,
+        constrained,
+        tree.map(|tree| tree.width),
+    );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     quote! {
         #(#attrs)*
@@ -103,6 +111,7 @@ fn generate(model: &Model) -> TokenStream {
             #bodies
             #inherent
             #model_impl
+            #tree_items
             #mechanism_impl
             #constraints_impl
         }
@@ -314,7 +323,7 @@ fn bind_inputs(model: &Model, used: &BTreeSet<String>, q: TokenStream) -> TokenS
 
 /// The user's `blocks` rewritten by [`optimize`] (parameter-only subexpressions in `f64`, shared
 /// `sin_cos`) and lifted to `__D`, with the `let`s the rewrites need (placed after the inputs).
-fn optimized_blocks<'d>(
+pub(crate) fn optimized_blocks<'d>(
     model: &Model,
     blocks: impl IntoIterator<Item = &'d syn::Block>,
 ) -> (TokenStream, Vec<syn::Block>) {
@@ -348,7 +357,7 @@ fn optimized_blocks<'d>(
 }
 
 /// The Rust type of a body's position on scalar `__D`.
-fn position_type(shape: Shape) -> TokenStream {
+pub(crate) fn position_type(shape: Shape) -> TokenStream {
     let g = quote!(::lagrange::__private::geometry);
     match shape.dim() {
         _ if shape == Shape::Planar => quote!(#g::Planar<__D>),
@@ -968,8 +977,22 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
 }
 
 /// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
-fn mechanism_impl(params: &Ident, n: usize, k: usize, constrained: Option<usize>) -> TokenStream {
+fn mechanism_impl(
+    params: &Ident,
+    n: usize,
+    k: usize,
+    constrained: Option<usize>,
+    tree_width: Option<usize>,
+) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
+    // A tree of translations is assembled from each body's own seeds; anything else densely.
+    let equations_of_motion = match tree_width {
+        Some(w) => {
+            let w = lit(w);
+            quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w>(self, t, q, v))
+        }
+        None => quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v)),
+    };
     let overrides = constrained.map(|c| constrained_overrides(n.clone(), k.clone(), lit(c)));
     let validate_constraints = constrained.map(|c| {
         let c = lit(c);
@@ -987,7 +1010,7 @@ fn mechanism_impl(params: &Ident, n: usize, k: usize, constrained: Option<usize>
             #overrides
             #[inline]
             fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
-                #p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v)
+                #equations_of_motion
             }
             #[inline]
             fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S {

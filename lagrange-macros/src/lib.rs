@@ -11,9 +11,11 @@ mod check;
 mod ctxt;
 mod expand;
 mod fallback;
+mod expand_tree;
 mod lift;
 mod names;
 mod optimize;
+mod structure;
 
 #[cfg(test)]
 mod expand_tests;

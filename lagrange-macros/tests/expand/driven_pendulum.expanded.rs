@@ -226,6 +226,67 @@ pub mod driven {
             __weights
         }
     }
+    impl Driven {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_bob<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            theta: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let l = <__D>::from(self.l);
+            let a = <__D>::from(self.a);
+            let w = <__D>::from(self.w);
+            let t = __t;
+            let __param_0: __D = <__D>::from({
+                let l: f64 = self.l;
+                -l
+            });
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
+            { vec2(a * (w * t).cos() + l * __sin_theta, __param_0 * __cos_theta) }
+        }
+    }
+    impl ::lagrange::__private::tree::Tree<1, 2, 2> for Driven {
+        const PARENT: [::lagrange::__private::core::option::Option<usize>; 2] = [
+            ::lagrange::__private::core::option::Option::None,
+            ::lagrange::__private::core::option::Option::None,
+        ];
+        const SEEDS: [[::lagrange::__private::tree::Seed; 2]; 2] = [
+            [
+                ::lagrange::__private::tree::Seed::Coordinate(0),
+                ::lagrange::__private::tree::Seed::Time,
+            ],
+            [
+                ::lagrange::__private::tree::Seed::Coordinate(0),
+                ::lagrange::__private::tree::Seed::Time,
+            ],
+        ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn displacements<S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: S,
+            __q: &[S; 1],
+            __v: &[S; 1],
+        ) -> [::lagrange::__private::tree::Seeded<S, 2>; 2] {
+            let bob = self
+                .__lagrange_displacement_bob(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::Some(1),
+                    ),
+                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
+                );
+            [bob.x, bob.y]
+        }
+    }
     impl ::lagrange::__private::Mechanism<1> for Driven {
         type Coords = Coords;
         #[inline]
@@ -240,10 +301,11 @@ pub mod driven {
             q: &[S; 1],
             v: &[S; 1],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 1> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
+            ::lagrange::__private::tree::equations_of_motion::<
                 Self,
                 S,
                 1,
+                2,
                 2,
             >(self, t, q, v)
         }

@@ -163,6 +163,60 @@ pub mod free {
             [__bodies.ball.x, __bodies.ball.y]
         }
     }
+    impl Free {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_ball<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            x: __D,
+            y: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            { vec2(x, y) }
+        }
+    }
+    impl ::lagrange::__private::tree::Tree<2, 2, 2> for Free {
+        const PARENT: [::lagrange::__private::core::option::Option<usize>; 2] = [
+            ::lagrange::__private::core::option::Option::None,
+            ::lagrange::__private::core::option::Option::None,
+        ];
+        const SEEDS: [[::lagrange::__private::tree::Seed; 2]; 2] = [
+            [
+                ::lagrange::__private::tree::Seed::Coordinate(0),
+                ::lagrange::__private::tree::Seed::Coordinate(1),
+            ],
+            [
+                ::lagrange::__private::tree::Seed::Coordinate(0),
+                ::lagrange::__private::tree::Seed::Coordinate(1),
+            ],
+        ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn displacements<S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+        ) -> [::lagrange::__private::tree::Seeded<S, 2>; 2] {
+            let ball = self
+                .__lagrange_displacement_ball(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
+                    ::lagrange::__private::tree::seed(__q[1], __v[1], 1),
+                );
+            [ball.x, ball.y]
+        }
+    }
     impl ::lagrange::__private::Mechanism<2> for Free {
         type Coords = Coords;
         #[inline]
@@ -177,9 +231,10 @@ pub mod free {
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
+            ::lagrange::__private::tree::equations_of_motion::<
                 Self,
                 S,
+                2,
                 2,
                 2,
             >(self, t, q, v)

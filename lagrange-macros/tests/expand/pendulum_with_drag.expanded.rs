@@ -251,6 +251,54 @@ pub mod pendulum {
             __weights
         }
     }
+    impl Pendulum {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_bob<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            theta: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let l = <__D>::from(self.l);
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
+            { vec2(__sin_theta, -__cos_theta) * l }
+        }
+    }
+    impl ::lagrange::__private::tree::Tree<1, 2, 1> for Pendulum {
+        const PARENT: [::lagrange::__private::core::option::Option<usize>; 2] = [
+            ::lagrange::__private::core::option::Option::None,
+            ::lagrange::__private::core::option::Option::None,
+        ];
+        const SEEDS: [[::lagrange::__private::tree::Seed; 1]; 2] = [
+            [::lagrange::__private::tree::Seed::Coordinate(0)],
+            [::lagrange::__private::tree::Seed::Coordinate(0)],
+        ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn displacements<S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: S,
+            __q: &[S; 1],
+            __v: &[S; 1],
+        ) -> [::lagrange::__private::tree::Seeded<S, 1>; 2] {
+            let bob = self
+                .__lagrange_displacement_bob(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
+                );
+            [bob.x, bob.y]
+        }
+    }
     impl ::lagrange::__private::Mechanism<1> for Pendulum {
         type Coords = Coords;
         #[inline]
@@ -265,11 +313,12 @@ pub mod pendulum {
             q: &[S; 1],
             v: &[S; 1],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 1> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
+            ::lagrange::__private::tree::equations_of_motion::<
                 Self,
                 S,
                 1,
                 2,
+                1,
             >(self, t, q, v)
         }
         #[inline]

@@ -216,6 +216,52 @@ pub mod varying {
             __potential
         }
     }
+    impl Varying {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_ball<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            y: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            { vec2(<__D>::from(0.0), y) }
+        }
+    }
+    impl ::lagrange::__private::tree::Tree<1, 2, 1> for Varying {
+        const PARENT: [::lagrange::__private::core::option::Option<usize>; 2] = [
+            ::lagrange::__private::core::option::Option::None,
+            ::lagrange::__private::core::option::Option::None,
+        ];
+        const SEEDS: [[::lagrange::__private::tree::Seed; 1]; 2] = [
+            [::lagrange::__private::tree::Seed::Coordinate(0)],
+            [::lagrange::__private::tree::Seed::Coordinate(0)],
+        ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn displacements<S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: S,
+            __q: &[S; 1],
+            __v: &[S; 1],
+        ) -> [::lagrange::__private::tree::Seeded<S, 1>; 2] {
+            let ball = self
+                .__lagrange_displacement_ball(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
+                );
+            [ball.x, ball.y]
+        }
+    }
     impl ::lagrange::__private::Mechanism<1> for Varying {
         type Coords = Coords;
         #[inline]
@@ -230,11 +276,12 @@ pub mod varying {
             q: &[S; 1],
             v: &[S; 1],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 1> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
+            ::lagrange::__private::tree::equations_of_motion::<
                 Self,
                 S,
                 1,
                 2,
+                1,
             >(self, t, q, v)
         }
         #[inline]
