@@ -166,6 +166,8 @@ fn every_item_kind() {
                 fn spring() -> f64 { k * phi.powf(2.0) * 0.5 }
                 #[gravity]
                 fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+                #[gravity]
+                fn plane_down() -> Vec2 { vec2(0.0, -g) }
                 #[force(on = tip)]
                 fn push() -> Vec2 { vec2(c, 0.0) }
                 #[torque(on = bar)]
