@@ -1,5 +1,7 @@
 //! `accelerations` of generated mechanisms against hand-written closed forms, in one run: the simple
-//! pendulum, the double pendulum, the wedge and block, and the pendulum on a cart.
+//! pendulum, the double pendulum, the wedge and block, and the pendulum on a cart; and two
+//! constrained mechanisms (the four-bar, the Cartesian pendulum) against their KKT systems written
+//! out by hand (`common/constrained.rs`).
 //!
 //! ```text
 //! cargo bench --bench accelerations
@@ -21,6 +23,12 @@ mod double_pendulum_scene;
 #[path = "../examples/wedge_block.rs"]
 #[allow(dead_code)]
 mod wedge_block_scene;
+#[path = "../examples/four_bar.rs"]
+#[allow(dead_code)]
+mod four_bar_scene;
+#[path = "../examples/cartesian_pendulum.rs"]
+#[allow(dead_code)]
+mod cartesian_pendulum_scene;
 
 #[allow(dead_code)]
 mod common;
@@ -329,12 +337,106 @@ fn wedge_block(c: &mut Criterion) {
     });
 }
 
+/// The four-bar of the gallery at its consistent start, against its KKT system by hand.
+fn four_bar(c: &mut Criterion) {
+    use common::constrained;
+    let (params, s) = four_bar_scene::linkage();
+    let checked = params.validated().unwrap();
+    let sys = checked.get();
+    let hand = constrained::FourBar {
+        l: [sys.l1, sys.l2, sys.l3],
+        m: [sys.m1, sys.m2, sys.m3],
+        d: sys.d,
+        g: sys.g,
+    };
+    let (q, v) = (s.q.to_array(), s.v.to_array());
+    let generated = sys.accelerations(&s).unwrap().to_array();
+    let by_hand = constrained::four_bar(&hand, q, v);
+    // Two solves of the same KKT system: a few ulps of the condition number times |q̈| ≈ 10.
+    for j in 0..3 {
+        assert!((generated[j] - by_hand[j]).abs() < 1e-10, "{generated:?} vs {by_hand:?}");
+    }
+    let mut group = c.benchmark_group("four_bar");
+    group.bench_function("hand_written", |b| {
+        b.iter(|| constrained::four_bar(black_box(&hand), black_box(q), black_box(v)))
+    });
+    group.bench_function("generated", |b| {
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
+    });
+    group.finish();
+    let kkt = || {
+        black_box(constrained::four_bar(black_box(&hand), black_box(q), black_box(v)));
+    };
+    interleave("four_bar (KKT)", kkt, || {
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", kkt, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
+}
+
+/// The Cartesian pendulum, against its KKT system by hand.
+fn cartesian_pendulum(c: &mut Criterion) {
+    use cartesian_pendulum_scene::cartesian_pendulum::{CartesianPendulum, Coords, State};
+    use common::constrained;
+    let checked = CartesianPendulum {
+        m: 1.0,
+        l: 0.8,
+        g: 9.81,
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
+    let hand = constrained::CartesianPendulum {
+        m: sys.m,
+        l: sys.l,
+        g: sys.g,
+    };
+    let (th, w) = (0.7f64, 1.1f64);
+    let (q, v) = (
+        [sys.l * th.sin(), -sys.l * th.cos()],
+        [sys.l * w * th.cos(), sys.l * w * th.sin()],
+    );
+    let s = State::new(
+        0.0,
+        Coords { x: q[0], y: q[1] },
+        Coords { x: v[0], y: v[1] },
+    );
+    let generated = sys.accelerations(&s).unwrap();
+    let by_hand = constrained::cartesian_pendulum(&hand, q, v);
+    // The same formula rounded differently: a few ulps of |q̈| ≈ 10.
+    assert!((generated.x - by_hand[0]).abs() < 1e-12 && (generated.y - by_hand[1]).abs() < 1e-12);
+    let mut group = c.benchmark_group("cartesian_pendulum");
+    group.bench_function("hand_written", |b| {
+        b.iter(|| constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v)))
+    });
+    group.bench_function("generated", |b| {
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
+    });
+    group.finish();
+    let kkt = || {
+        black_box(constrained::cartesian_pendulum(
+            black_box(&hand),
+            black_box(q),
+            black_box(v),
+        ));
+    };
+    interleave("cartesian_pendulum (KKT)", kkt, || {
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", kkt, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
+}
+
 criterion_group!(
     benches,
     simple_pendulum,
     double_pendulum,
     wedge_block,
-    pendulum_on_cart
+    pendulum_on_cart,
+    four_bar,
+    cartesian_pendulum
 );
 
 fn main() {
@@ -350,6 +452,8 @@ fn main() {
         "double_pendulum",
         "wedge_block",
         "cart_pendulum",
+        "four_bar",
+        "cartesian_pendulum",
     ] {
         match (mean_ns(group, "generated"), mean_ns(group, "hand_written")) {
             (Some(g), Some(h)) => println!("  {group:<16} {g:8.1} ns / {h:8.1} ns = {:.2}×", g / h),

@@ -1,6 +1,8 @@
 //! What every benchmark's summary needs: criterion's estimates of this run, the interleaved ratio,
 //! and the machine's load beside the figures.
 
+pub mod constrained;
+
 use std::sync::Mutex;
 use std::time::Instant;
 
