@@ -1049,6 +1049,9 @@ fn constrained_overrides(
             let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;
             #constraints::project::<Self, #n, #k, #c>(self, t, q, v, &mode)
         }
+        fn check_declaration_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
+            #constraints::check_velocity_rows_affine::<Self, #n, #k, #c>(self, t, q, v)
+        }
         fn check_constraints(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
             #constraints::check_consistent::<Self, #n, #k, #c>(self, t, q, v, #constraints::CONSISTENCY_TOLERANCE)
         }

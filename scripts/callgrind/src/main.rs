@@ -11,6 +11,10 @@ mod four_bar_scene;
 #[path = "../../../examples/cartesian_pendulum.rs"]
 #[allow(dead_code)]
 mod cartesian_pendulum_scene;
+// The constrained mechanisms' KKT systems written out by hand, as in the accelerations benchmark.
+#[path = "../../../benches/common/constrained.rs"]
+#[allow(dead_code)]
+mod constrained;
 // The N-link chains declared link by link, as in the chain benchmark.
 #[path = "../../../benches/chains/mod.rs"]
 #[allow(dead_code)]
@@ -417,6 +421,32 @@ fn main() {
             let (sys, s) = four_bar_scene::linkage();
             for _ in 0..n {
                 acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
+            }
+        }
+        "hw_four_bar" => {
+            let (sys, s) = four_bar_scene::linkage();
+            let hand = constrained::FourBar {
+                l: [sys.l1, sys.l2, sys.l3],
+                m: [sys.m1, sys.m2, sys.m3],
+                d: sys.d,
+                g: sys.g,
+            };
+            let (q, v) = (s.q.to_array(), s.v.to_array());
+            for _ in 0..n {
+                acc += constrained::four_bar(black_box(&hand), black_box(q), black_box(v))[0];
+            }
+        }
+        "hw_cartesian_pendulum" => {
+            let hand = constrained::CartesianPendulum {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            let (th, w) = (0.7f64, 1.1f64);
+            let q = [0.8 * th.sin(), -0.8 * th.cos()];
+            let v = [0.8 * w * th.cos(), 0.8 * w * th.sin()];
+            for _ in 0..n {
+                acc += constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))[0];
             }
         }
         "cartesian_pendulum" => {
