@@ -318,6 +318,13 @@ fn array_coordinates_and_a_family_of_bodies() {
     // One sin_cos per element, shared by every member's sin and cos.
     assert!(out.contains("theta.map(|__x| __x.sin_cos())"));
     assert!(!out.contains(".sin()"));
+    // Read member by member, the family is a tree: link k is link k − 1 plus its own rod, seeded on
+    // theta[k] alone through one shared function of the member's index.
+    let squashed: String = out.split_whitespace().collect();
+    assert!(squashed.contains("tree::Tree<3,6,1,3>forChain"));
+    assert!(squashed.contains("fn__lagrange_displacement_bob_0<__D:::lagrange::__private::Scalar>(&self,i:usize,__t:__D,__theta_at_i:__D,)"));
+    assert!(squashed.contains("parent:::lagrange::__private::core::option::Option::Some(1)"));
+    assert!(squashed.contains("tree::seed(__q[2],__v[2],0)"));
 }
 
 #[test]

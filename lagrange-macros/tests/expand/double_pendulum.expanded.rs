@@ -306,7 +306,7 @@ pub mod double_pendulum {
             __q: &[S; 2],
             __v: &[S; 2],
         ) -> [::lagrange::__private::tree::Seeded<S, 1>; 4] {
-            let bob1 = self
+            let __body_0 = self
                 .__lagrange_displacement_bob1(
                     ::lagrange::__private::tree::time(
                         __t,
@@ -314,7 +314,7 @@ pub mod double_pendulum {
                     ),
                     ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
                 );
-            let bob2 = self
+            let __body_1 = self
                 .__lagrange_displacement_bob2(
                     ::lagrange::__private::tree::time(
                         __t,
@@ -322,7 +322,7 @@ pub mod double_pendulum {
                     ),
                     ::lagrange::__private::tree::seed(__q[1], __v[1], 0),
                 );
-            [bob1.x, bob1.y, bob2.x, bob2.y]
+            [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
         }
     }
     impl ::lagrange::__private::Mechanism<2> for DoublePendulum {
