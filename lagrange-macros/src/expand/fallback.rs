@@ -3,10 +3,10 @@
 //! them, each use of `Coords`, `State` or the parameter struct outside the module would add a rustc
 //! error of its own.
 
+use super::bodies::bodies_structs;
 use crate::ast::{Field, Mechanism};
 use crate::check::Model;
 use crate::ctxt;
-use crate::expand::bodies_structs;
 use proc_macro2::TokenStream;
 use quote::quote;
 use std::collections::BTreeSet;
