@@ -127,20 +127,20 @@ fn simple_pendulum(c: &mut Criterion) {
     let sys = checked.get();
     let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
     let generated = sys.accelerations(&s).unwrap().theta;
-    assert!((generated - pendulum_closed_form(&sys, [0.7])[0]).abs() < 1e-12);
+    assert!((generated - pendulum_closed_form(sys, [0.7])[0]).abs() < 1e-12);
     let mut group = c.benchmark_group("pendulum");
     group.bench_function("hand_written", |b| {
-        b.iter(|| pendulum_closed_form(black_box(&sys), black_box([0.7])))
+        b.iter(|| pendulum_closed_form(black_box(sys), black_box([0.7])))
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
     let closed_form = || {
-        black_box(pendulum_closed_form(black_box(&sys), black_box([0.7])));
+        black_box(pendulum_closed_form(black_box(sys), black_box([0.7])));
     };
     interleave("pendulum", closed_form, || {
-        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
     });
     interleave("  validated once", closed_form, || {
         black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
@@ -172,25 +172,25 @@ fn pendulum_on_cart(c: &mut Criterion) {
         },
     );
     let generated = sys.accelerations(&s).unwrap();
-    let hand = cart_pendulum_closed_form(&sys, q, v);
+    let hand = cart_pendulum_closed_form(sys, q, v);
     assert!((generated.x - hand[0]).abs() < 1e-12 && (generated.theta - hand[1]).abs() < 1e-12);
     let mut group = c.benchmark_group("cart_pendulum");
     group.bench_function("hand_written", |b| {
-        b.iter(|| cart_pendulum_closed_form(black_box(&sys), black_box(q), black_box(v)))
+        b.iter(|| cart_pendulum_closed_form(black_box(sys), black_box(q), black_box(v)))
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
     let closed_form = || {
         black_box(cart_pendulum_closed_form(
-            black_box(&sys),
+            black_box(sys),
             black_box(q),
             black_box(v),
         ));
     };
     interleave("cart_pendulum", closed_form, || {
-        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
     });
     interleave("  validated once", closed_form, || {
         black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
@@ -225,25 +225,25 @@ fn double_pendulum(c: &mut Criterion) {
     group.bench_function("hand_written", |b| {
         b.iter(|| {
             double_pendulum_scene::closed_form(
-                black_box(&sys),
+                black_box(sys),
                 black_box([0.7, -1.2]),
                 black_box([1.1, -0.4]),
             )
         })
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
     let closed_form = || {
         black_box(double_pendulum_scene::closed_form(
-            black_box(&sys),
+            black_box(sys),
             black_box([0.7, -1.2]),
             black_box([1.1, -0.4]),
         ));
     };
     interleave("double_pendulum", closed_form, || {
-        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
     });
     interleave("  validated once", closed_form, || {
         black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
@@ -297,43 +297,43 @@ fn wedge_block(c: &mut Criterion) {
     let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
     let mut group = c.benchmark_group("wedge_block");
     group.bench_function("hand_written", |b| {
-        b.iter(|| wedge_block_closed_form(black_box(&sys)))
+        b.iter(|| wedge_block_closed_form(black_box(sys)))
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     // Without the parameter and state checks (what integrators call between their once-a-step
     // checks), and the method by hand: where the ratio above comes from.
     let (q, v) = ([0.1, 0.2], [-0.3, 0.5]);
     group.bench_function("generated_unchecked", |b| {
         b.iter(|| {
-            black_box(&sys)
+            black_box(sys)
                 .accelerations_at(0.0, black_box(&q), black_box(&v))
                 .unwrap()
         })
     });
     group.bench_function("hand_assembled", |b| {
-        b.iter(|| wedge_block_assembled(black_box(&sys)))
+        b.iter(|| wedge_block_assembled(black_box(sys)))
     });
     group.finish();
     let closed_form = || {
-        black_box(wedge_block_closed_form(black_box(&sys)));
+        black_box(wedge_block_closed_form(black_box(sys)));
     };
     interleave("wedge_block", closed_form, || {
-        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
     });
     interleave("  validated once", closed_form, || {
         black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
     });
     interleave("  unchecked", closed_form, || {
         black_box(
-            black_box(&sys)
+            black_box(sys)
                 .accelerations_at(0.0, black_box(&q), black_box(&v))
                 .unwrap(),
         );
     });
     interleave("  hand-assembled", closed_form, || {
-        black_box(wedge_block_assembled(black_box(&sys)));
+        black_box(wedge_block_assembled(black_box(sys)));
     });
 }
 
