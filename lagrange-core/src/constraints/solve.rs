@@ -1065,15 +1065,7 @@ pub fn check_velocity_rows_affine<
     if !has_velocity::<M, N, K, C>() {
         return Ok(());
     }
-    let td = if M::RHEONOMIC {
-        Dual::new(t, 1.0)
-    } else {
-        Dual::from_re(t)
-    };
-    let qd: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
-    let xd = model.cartesian(td, &qd);
-    let x: [f64; K] = std::array::from_fn(|i| xd[i].re);
-    let x_dot: [f64; K] = std::array::from_fn(|i| xd[i].eps);
+    let (x, x_dot) = dynamics::cartesian_velocities(model, t, q, v);
     velocity_rows_affine_at(model, t, q, v, &x, &x_dot)
 }
 
