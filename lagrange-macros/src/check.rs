@@ -568,7 +568,9 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
             &["Vec2", "Vec3"],
             "the force vector",
         ))),
-        // `#[torque(on = bar)] fn motor() -> Vec2`: a planar torque is a scalar.
+        // `#[torque(on = bar)] fn motor() -> Vec2`: a planar torque is a scalar, a spatial one a
+        // vector; which one the body decides, below.
+        Kind::Torque => None,
         _ => expect_return_type(cx, decl, &["f64"], "its magnitude").map(|_| Dim::Two),
     };
     // `#[force] fn drag() -> Vec2`: what does it act on?
@@ -608,12 +610,23 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
         cx.error_spanned_by(on, format!("`{on}` is not a {what} of this mechanism"));
         return None;
     };
-    if kind == Kind::Torque && model.bodies[target].shape != Shape::Planar {
-        // `#[torque(on = bob)]` on a particle: only a planar rigid body has an angle to twist.
-        cx.error_spanned_by(
-            on,
-            format!("`{on}` is not a planar rigid body: a torque acts on a `Planar` body's angle"),
-        );
+    if kind == Kind::Torque {
+        match model.bodies[target].shape {
+            // `#[torque(on = bar)] fn motor() -> Vec2` on a planar body: the torque about the plane's
+            // normal is a scalar.
+            Shape::Planar => {
+                expect_return_type(cx, decl, &["f64"], "its magnitude about the plane's normal");
+            }
+            // `#[torque(on = top)] fn drive() -> f64` on a spatial body: the torque is a vector.
+            Shape::Spatial => {
+                expect_return_type(cx, decl, &["Vec3"], "the torque vector, in the world frame");
+            }
+            // `#[torque(on = bob)]` on a particle: only a rigid body has an orientation to twist.
+            _ => cx.error_spanned_by(
+                on,
+                format!("`{on}` is not a rigid body: a torque acts on a `Planar` or `Spatial` body"),
+            ),
+        }
     }
     if kind == Kind::Force && dim != Some(model.bodies[target].shape.dim()) {
         // `#[force(on = bob3d)] fn push() -> Vec2`: the force has the dimension of its body.

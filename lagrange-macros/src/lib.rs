@@ -40,8 +40,9 @@ use proc_macro::TokenStream;
 ///
 /// Items: `#[particle(mass = ..)]` and `#[point]` (return `Vec2`/`Vec3`), `#[rigid_body(mass = ..,
 /// inertia = ..)]` (`Planar`, or `Spatial` with `inertia = [I1, I2, I3]`), `#[potential]` (`f64`),
-/// `#[gravity]` (`Vec2`/`Vec3`), `#[force(on = body)]` (`Vec2`/`Vec3`), `#[torque(on = planar_body)]`
-/// and `#[generalized_force(on = coordinate)]` (`f64`); constraint rows `#[constraint]` (g = 0),
+/// `#[gravity]` (`Vec2`/`Vec3`), `#[force(on = body)]` (`Vec2`/`Vec3`), `#[torque(on = rigid_body)]`
+/// (`f64` on a planar body, `Vec3` on a spatial one) and `#[generalized_force(on = coordinate)]`
+/// (`f64`); constraint rows `#[constraint]` (g = 0),
 /// `#[unilateral]` (c ≥ 0), `#[velocity_constraint]` (h = 0, affine in velocities) and
 /// `#[friction(on = contact, kinetic = μₖ, stiction = μₛ)]` (the slip velocity), all `f64`. Bodies
 /// name coordinates, parameters, `t` and earlier bodies; potentials and position constraints every

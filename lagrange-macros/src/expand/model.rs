@@ -372,9 +372,28 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
                     quote!(let #ident: #ty = #block; #(#adds)*)
                 }
             }
-            Kind::Torque => {
+            // A planar body's angle row carries the torque itself.
+            Kind::Torque if model.bodies[force.target].shape == Shape::Planar => {
                 let r = lit(model.bodies[force.target].row + 2);
                 quote!(let #ident: __D = #block; __cartesian_force[#r] += #ident;)
+            }
+            // A spatial body's torque τ acts on the columns rₖ of its rotation R as the Cartesian
+            // forces Fₖ = ½ τ × rₖ: with δrₖ = δφ × rₖ and Σₖ rₖrₖᵀ = I, Σₖ Fₖ·δrₖ = τ·δφ, the
+            // virtual work of the torque.
+            Kind::Torque => {
+                let first = model.bodies[force.target].row + 3;
+                let g = quote!(#p::geometry);
+                let adds = (0..3).map(|k| {
+                    let rows: Vec<_> = (0..3).map(|i| lit(first + 3 * k + i)).collect();
+                    let (r0, r1, r2) = (&rows[0], &rows[1], &rows[2]);
+                    quote! {
+                        let __f = #ident.cross(&#g::vec3(__x[#r0], __x[#r1], __x[#r2])) * <__D>::from(0.5);
+                        __cartesian_force[#r0] += __f.x;
+                        __cartesian_force[#r1] += __f.y;
+                        __cartesian_force[#r2] += __f.z;
+                    }
+                });
+                quote!(let #ident: #g::Vec3<__D> = #block; #(#adds)*)
             }
             _ => {
                 let j = lit(force.target);

@@ -357,6 +357,67 @@ fn main() {
                 acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
             }
         }
+        // One RK4 step (h = 10⁻³) per call: `sys.step::<Rk4>` on the parameters, through a
+        // validated handle, and a hand-written RK4 on the closed form.
+        "rk4_double_pendulum" | "rk4_validated_double_pendulum" => {
+            use double_pendulum::*;
+            let params = DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            };
+            let mut s = State::new(
+                0.0,
+                Coords {
+                    theta1: 0.7,
+                    theta2: -1.2,
+                },
+                Coords {
+                    theta1: 1.1,
+                    theta2: -0.4,
+                },
+            );
+            if which.starts_with("rk4_validated") {
+                let sys = params.validated().unwrap();
+                for _ in 0..n {
+                    black_box(&sys).step::<Rk4>(&mut s, 1e-3).unwrap();
+                }
+            } else {
+                for _ in 0..n {
+                    black_box(&params).step::<Rk4>(&mut s, 1e-3).unwrap();
+                }
+            }
+            acc += s.q.theta1;
+        }
+        "hw_rk4_double_pendulum" => {
+            let sys = double_pendulum::DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            };
+            let (mut q, mut v) = ([0.7, -1.2], [1.1, -0.4]);
+            let h = 1e-3;
+            let axpy = |x: [f64; 2], a: f64, y: [f64; 2]| [x[0] + a * y[0], x[1] + a * y[1]];
+            for _ in 0..n {
+                let f = |q, v| hw_double(black_box(&sys), q, v);
+                let a1 = f(q, v);
+                let (q2, v2) = (axpy(q, 0.5 * h, v), axpy(v, 0.5 * h, a1));
+                let a2 = f(q2, v2);
+                let (q3, v3) = (axpy(q, 0.5 * h, v2), axpy(v, 0.5 * h, a2));
+                let a3 = f(q3, v3);
+                let (q4, v4) = (axpy(q, h, v3), axpy(v, h, a3));
+                let a4 = f(q4, v4);
+                for j in 0..2 {
+                    q[j] += h / 6.0 * (v[j] + 2.0 * v2[j] + 2.0 * v3[j] + v4[j]);
+                    v[j] += h / 6.0 * (a1[j] + 2.0 * a2[j] + 2.0 * a3[j] + a4[j]);
+                }
+            }
+            acc += q[0];
+        }
         "wedge_block" => {
             use wedge_block::*;
             let sys = WedgeBlock {
