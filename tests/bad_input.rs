@@ -12,8 +12,9 @@ use lagrange::analysis::{
 use lagrange::constraints::{
     consistent_state, constraint_forces, Constraints, ContactOptions, ContactRk4,
 };
+use lagrange::model::Model;
 use lagrange::prelude::*;
-use lagrange::{Dopri5, GaussLegendre2, ImplicitMidpoint, Model, StormerVerlet, Variational};
+use lagrange::{Dopri5, GaussLegendre2, ImplicitMidpoint, StormerVerlet, Variational};
 use std::fmt::Debug;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Mutex;

@@ -5,8 +5,8 @@
 //! both are accurate to a few ulps of the largest intermediate term, so they must agree to 1e-12
 //! relative to the scale of the terms (which are O(10) here).
 
+use lagrange::model::Model;
 use lagrange::prelude::*;
-use lagrange::Model;
 
 /// |a − b| ≤ 1e-12 · (1 + |b|): see the module docs.
 fn close(a: f64, b: f64) -> bool {
