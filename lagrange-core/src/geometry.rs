@@ -294,6 +294,100 @@ impl<D: Scalar> Spatial<D> {
     }
 }
 
+/// Conversions to and from [`nalgebra`]'s types, for `f64` values (the output of a simulation,
+/// or an input built with nalgebra).
+///
+/// ```
+/// use lagrange_core::geometry::{rot_z, vec2, vec3, Rot3, Vec2, Vec3};
+/// use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
+///
+/// let v: Vector2<f64> = vec2(1.0, 2.0).into();
+/// assert_eq!(v, Vector2::new(1.0, 2.0));
+/// assert_eq!(Vec3::from(Vector3::new(1.0, 2.0, 3.0)), vec3(1.0, 2.0, 3.0));
+///
+/// // A rotation acts the same way on either side.
+/// let r = rot_z(0.4_f64);
+/// let m: Matrix3<f64> = r.into();
+/// let x = r * vec3(1.0, 0.0, 0.5);
+/// assert_eq!(Vec3::from(m * Vector3::new(1.0, 0.0, 0.5)), x);
+///
+/// // nalgebra's Rotation3 is a checked rotation: a Rot3 converts only if it is one.
+/// let rot: Rotation3<f64> = r.to_rotation3().expect("rot_z is a rotation");
+/// assert_eq!(Rot3::from(rot), r);
+/// let shear = Rot3 { rows: [[1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] };
+/// assert!(shear.to_rotation3().is_none());
+/// # let _: Vec2<f64> = Vector2::new(0.0, 0.0).into();
+/// ```
+mod nalgebra_interop {
+    use super::{vec2, vec3, Rot3, Vec2, Vec3};
+    use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
+
+    impl From<Vec2<f64>> for Vector2<f64> {
+        fn from(v: Vec2<f64>) -> Self {
+            Vector2::new(v.x, v.y)
+        }
+    }
+
+    impl From<Vector2<f64>> for Vec2<f64> {
+        fn from(v: Vector2<f64>) -> Self {
+            vec2(v.x, v.y)
+        }
+    }
+
+    impl From<Vec3<f64>> for Vector3<f64> {
+        fn from(v: Vec3<f64>) -> Self {
+            Vector3::new(v.x, v.y, v.z)
+        }
+    }
+
+    impl From<Vector3<f64>> for Vec3<f64> {
+        fn from(v: Vector3<f64>) -> Self {
+            vec3(v.x, v.y, v.z)
+        }
+    }
+
+    impl From<Rot3<f64>> for Matrix3<f64> {
+        fn from(r: Rot3<f64>) -> Self {
+            let m = &r.rows;
+            Matrix3::new(
+                m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2],
+            )
+        }
+    }
+
+    impl From<Matrix3<f64>> for Rot3<f64> {
+        fn from(m: Matrix3<f64>) -> Self {
+            Rot3 {
+                rows: [
+                    [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
+                    [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
+                    [m[(2, 0)], m[(2, 1)], m[(2, 2)]],
+                ],
+            }
+        }
+    }
+
+    impl From<Rotation3<f64>> for Rot3<f64> {
+        fn from(r: Rotation3<f64>) -> Self {
+            Rot3::from(*r.matrix())
+        }
+    }
+
+    impl Rot3<f64> {
+        /// This matrix as nalgebra's [`Rotation3`], if it is a rotation: RᵀR = I to within 1e-12
+        /// in every entry and det R > 0. `None` otherwise (a `Rot3` may hold any 3×3 matrix, and
+        /// `Rotation3` promises orthogonality to every user of it, so there is no unchecked `From`).
+        pub fn to_rotation3(&self) -> Option<Rotation3<f64>> {
+            let m = Matrix3::from(*self);
+            if !m.iter().all(|e| e.is_finite()) {
+                return None;
+            }
+            let orthogonal = (m.transpose() * m - Matrix3::identity()).amax() <= 1e-12;
+            (orthogonal && m.determinant() > 0.0).then(|| Rotation3::from_matrix_unchecked(m))
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -318,5 +412,68 @@ mod tests {
         let b = planar(vec2(1.0f64, 2.0), std::f64::consts::FRAC_PI_2);
         let p = b.point(vec2(1.0, 0.0));
         assert!((p.x - 1.0).abs() < 1e-15 && (p.y - 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn nalgebra_vectors_round_trip_component_by_component() {
+        use nalgebra::{Vector2, Vector3};
+        let v = vec2(1.5f64, -2.25);
+        let n: Vector2<f64> = v.into();
+        assert_eq!((n.x, n.y), (1.5, -2.25));
+        assert_eq!(Vec2::from(n), v);
+        let w = vec3(0.1f64, -0.2, 0.3);
+        let n: Vector3<f64> = w.into();
+        assert_eq!((n.x, n.y, n.z), (0.1, -0.2, 0.3));
+        assert_eq!(Vec3::from(n), w);
+        // Arithmetic agrees on both sides.
+        let u = vec3(-1.0f64, 4.0, 2.0);
+        assert_eq!(
+            Vec3::from(Vector3::from(w).cross(&Vector3::from(u))),
+            w.cross(&u)
+        );
+    }
+
+    #[test]
+    fn nalgebra_matrices_keep_rows_and_columns() {
+        use nalgebra::{Matrix3, Rotation3, Vector3};
+        let r = Rot3 {
+            rows: [[1.0f64, 2.0, 3.0], [4.0, 5.0, 6.0], [7.0, 8.0, 9.0]],
+        };
+        let m: Matrix3<f64> = r.into();
+        // Row 0, column 2 on both sides (a transposed conversion would give 7).
+        assert_eq!(m[(0, 2)], 3.0);
+        assert_eq!(Rot3::from(m), r);
+        let x = vec3(0.5f64, -1.0, 2.0);
+        assert_eq!(Vec3::from(m * Vector3::from(x)), r * x);
+        // nalgebra's rotation about z by a maps x to (cos a, sin a, 0), as rot_z does.
+        let a = 0.7f64;
+        let nz = Rotation3::from_axis_angle(&Vector3::z_axis(), a);
+        let ours = Rot3::from(nz);
+        let mine = rot_z(a);
+        for i in 0..3 {
+            for j in 0..3 {
+                assert!((ours.rows[i][j] - mine.rows[i][j]).abs() < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn only_rotations_become_rotation3() {
+        let r = rot_z(0.3f64) * rot_x(-1.1) * rot_y(0.7);
+        let rot = r
+            .to_rotation3()
+            .expect("a product of rotations is a rotation");
+        assert_eq!(Rot3::from(rot), r);
+        let reflection = Rot3 {
+            rows: [[-1.0f64, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        };
+        assert!(reflection.to_rotation3().is_none(), "det = -1");
+        let scaled = Rot3 {
+            rows: [[2.0f64, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        };
+        assert!(scaled.to_rotation3().is_none(), "not orthogonal");
+        let mut nan = Rot3::<f64>::identity();
+        nan.rows[1][1] = f64::NAN;
+        assert!(nan.to_rotation3().is_none(), "NaN entries");
     }
 }
