@@ -14,6 +14,35 @@
 //! let bob: Vec2<f64> = vec2(theta.sin(), -theta.cos()) * l;
 //! assert!((bob.norm() - l).abs() < 1e-15);
 //! ```
+//!
+//! # nalgebra
+//!
+//! `f64` vectors and matrices convert to and from [`nalgebra`]'s types with `From`/`Into`:
+//! [`Vec2`] ↔ `Vector2`, [`Vec3`] ↔ `Vector3`, [`Rot3`] ↔ `Matrix3`, and `Rotation3` → [`Rot3`].
+//! The way back to `Rotation3` is checked ([`Rot3::to_rotation3`]), since a `Rot3` may hold any
+//! 3×3 matrix.
+//!
+//! ```
+//! use lagrange_core::geometry::{rot_z, vec2, vec3, Rot3, Vec2, Vec3};
+//! use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
+//!
+//! let v: Vector2<f64> = vec2(1.0, 2.0).into();
+//! assert_eq!(v, Vector2::new(1.0, 2.0));
+//! assert_eq!(Vec3::from(Vector3::new(1.0, 2.0, 3.0)), vec3(1.0, 2.0, 3.0));
+//!
+//! // A rotation acts the same way on either side.
+//! let r = rot_z(0.4_f64);
+//! let m: Matrix3<f64> = r.into();
+//! let x = r * vec3(1.0, 0.0, 0.5);
+//! assert_eq!(Vec3::from(m * Vector3::new(1.0, 0.0, 0.5)), x);
+//!
+//! // nalgebra's Rotation3 is a checked rotation: a Rot3 converts only if it is one.
+//! let rot: Rotation3<f64> = r.to_rotation3().expect("rot_z is a rotation");
+//! assert_eq!(Rot3::from(rot), r);
+//! let shear = Rot3 { rows: [[1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] };
+//! assert!(shear.to_rotation3().is_none());
+//! assert_eq!(Vec2::from(v), vec2(1.0, 2.0));
+//! ```
 
 use num_dual::DualNum;
 use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
@@ -26,15 +55,20 @@ impl<T: DualNum<Primitive = f64> + Copy> Scalar for T {}
 /// A vector in the plane.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Vec2<D> {
+    /// Component along the x axis (horizontal, to the right, in the gallery's scenes).
     pub x: D,
+    /// Component along the y axis (vertical, upwards, in the gallery's scenes).
     pub y: D,
 }
 
 /// A vector in space.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Vec3<D> {
+    /// Component along the x axis.
     pub x: D,
+    /// Component along the y axis.
     pub y: D,
+    /// Component along the z axis (x, y, z right-handed: x × y = z).
     pub z: D,
 }
 
@@ -253,7 +287,10 @@ impl<D: Scalar> Mul<Vec3<D>> for Rot3<D> {
 /// Where a planar rigid body is: its centre of mass and its angle (counter-clockwise).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Planar<D> {
+    /// The centre of mass in the world frame (the point the moment of inertia is taken about).
     pub position: Vec2<D>,
+    /// The body's orientation: the angle in radians, counter-clockwise, from the world x axis to
+    /// the body's x axis (0 when the body frame is the world frame).
     pub angle: D,
 }
 
@@ -275,7 +312,10 @@ impl<D: Scalar> Planar<D> {
 /// Where a spatial rigid body is: its centre of mass and its orientation (body frame → world frame).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spatial<D> {
+    /// The centre of mass in the world frame.
     pub position: Vec3<D>,
+    /// The rotation from the body frame to the world frame: column k is the body's k-th principal
+    /// axis in world coordinates (the axes the principal moments `inertia = [I1, I2, I3]` refer to).
     pub rotation: Rot3<D>,
 }
 
@@ -294,30 +334,7 @@ impl<D: Scalar> Spatial<D> {
     }
 }
 
-/// Conversions to and from [`nalgebra`]'s types, for `f64` values (the output of a simulation,
-/// or an input built with nalgebra).
-///
-/// ```
-/// use lagrange_core::geometry::{rot_z, vec2, vec3, Rot3, Vec2, Vec3};
-/// use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
-///
-/// let v: Vector2<f64> = vec2(1.0, 2.0).into();
-/// assert_eq!(v, Vector2::new(1.0, 2.0));
-/// assert_eq!(Vec3::from(Vector3::new(1.0, 2.0, 3.0)), vec3(1.0, 2.0, 3.0));
-///
-/// // A rotation acts the same way on either side.
-/// let r = rot_z(0.4_f64);
-/// let m: Matrix3<f64> = r.into();
-/// let x = r * vec3(1.0, 0.0, 0.5);
-/// assert_eq!(Vec3::from(m * Vector3::new(1.0, 0.0, 0.5)), x);
-///
-/// // nalgebra's Rotation3 is a checked rotation: a Rot3 converts only if it is one.
-/// let rot: Rotation3<f64> = r.to_rotation3().expect("rot_z is a rotation");
-/// assert_eq!(Rot3::from(rot), r);
-/// let shear = Rot3 { rows: [[1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] };
-/// assert!(shear.to_rotation3().is_none());
-/// # let _: Vec2<f64> = Vector2::new(0.0, 0.0).into();
-/// ```
+// Conversions to and from nalgebra's types, for f64 values (see the module docs).
 mod nalgebra_interop {
     use super::{vec2, vec3, Rot3, Vec2, Vec3};
     use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
