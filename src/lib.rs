@@ -2,11 +2,12 @@
 //!
 //! ## The crate root
 //!
-//! The root exports, by name, what a user of a declared mechanism calls: the [`mechanism`]
-//! attribute, the [`Mechanism`] trait with its [`State`] and [`Coordinates`], [`Validated`], the
-//! errors, the integrators, the geometry a declaration is written in, the analysis entry points with
-//! their options and results, and the constraint tools ([`Constraints`], [`ContactRk4`],
-//! [`consistent_state`], [`constraint_forces`]). Everything else — the low-level [`model::Model`]
+//! The root exports, by name, what a user of a declared mechanism calls: the
+//! [`mechanism`](macro@mechanism) attribute, the [`Mechanism`] trait with its [`State`] and
+//! [`Coordinates`], [`Validated`], the errors, the integrators, the geometry a declaration is
+//! written in, the analysis entry points with their options and results, and the constraint tools
+//! ([`Constraints`], [`ContactRk4`], [`consistent_state`], [`consistent_state_holding`],
+//! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
 //! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
 //! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
 //! [`constraints`], [`geometry`], [`error`].
@@ -50,8 +51,8 @@ pub use lagrange_core::analysis::{
     NormalModes, Stability, StabilityAnalysis,
 };
 pub use lagrange_core::constraints::{
-    consistent_state, constraint_forces, ConstraintForces, Constraints, ContactOptions, ContactRk4,
-    ModeChange, RowMode,
+    consistent_state, consistent_state_holding, constraint_forces, ConstraintForces, Constraints,
+    ContactOptions, ContactRk4, ModeChange, RowMode,
 };
 pub use lagrange_core::error::{Error, Result};
 pub use lagrange_core::geometry::{

@@ -195,6 +195,35 @@ pub enum Error {
     /// More mode changes (contacts, releases, stick/slip switches) within one step than allowed.
     #[error("{events} mode changes within one step at t = {t} (Zeno behaviour or an inconsistent contact mode)")]
     TooManyEvents { t: f64, events: usize },
+
+    /// A coordinate named to be held (by
+    /// [`consistent_state_holding`](crate::constraints::consistent_state_holding)) is not one of
+    /// the mechanism's coordinates.
+    #[error("no coordinate named `{name}` to hold; the coordinates are {known}")]
+    UnknownCoordinate {
+        /// The name given.
+        name: String,
+        /// The mechanism's coordinates, in declaration order.
+        known: String,
+    },
+
+    /// Holding the named coordinates (or velocities) leaves fewer free ones than there are
+    /// constraint rows to satisfy with them, so the constraints cannot be solved for the rest.
+    #[error(
+        "holding {held} leaves {free} free {what} for {rows} constraint rows: hold at most {max}"
+    )]
+    TooFewFreeCoordinates {
+        /// `"coordinates"` (position rows) or `"velocities"` (velocity-level rows).
+        what: &'static str,
+        /// The held names.
+        held: String,
+        /// How many are left free.
+        free: usize,
+        /// How many constraint rows they must satisfy.
+        rows: usize,
+        /// The most that can be held.
+        max: usize,
+    },
 }
 
 /// Shorthand for results of this crate.
