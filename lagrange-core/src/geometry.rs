@@ -5,14 +5,24 @@
 //! terms, and nested duals for the exact Jacobians of implicit integrators. [`Scalar`] is the one bound
 //! all of them satisfy; [`Vec2`], [`Vec3`] and [`Rot3`] are generic over it.
 //!
-//! Arithmetic reads like the paper, with one Rust-imposed rule: a vector times a scalar is written
-//! `v * s`, not `s * v` (a foreign scalar type cannot be the left operand of our vector).
+//! Arithmetic reads like the paper: a scalar multiplies a vector from either side, `v * s` or
+//! `s * v`, on `f64` and on every dual number (the left product is part of [`Scalar`]).
 //!
 //! ```
-//! use lagrange_core::geometry::{vec2, Vec2};
+//! use lagrange_core::geometry::{vec2, vec3, Scalar, Vec2};
 //! let (l, theta) = (2.0_f64, 0.3_f64);
 //! let bob: Vec2<f64> = vec2(theta.sin(), -theta.cos()) * l;
 //! assert!((bob.norm() - l).abs() < 1e-15);
+//! assert_eq!(l * vec2(theta.sin(), -theta.cos()), bob);
+//! assert_eq!(0.5 * vec3(2.0, 4.0, 6.0), vec3(1.0, 2.0, 3.0));
+//!
+//! // In code generic over the scalar, as a declaration's functions are:
+//! fn tip<D: Scalar>(l: D, theta: D) -> Vec2<D> {
+//!     l * vec2(theta.sin(), -theta.cos())
+//! }
+//! let d = tip(num_dual::Dual64::from(l), num_dual::Dual64::new(theta, 1.0));
+//! assert_eq!(d.x.re, bob.x);
+//! assert!((d.x.eps - l * theta.cos()).abs() < 1e-15); // d/dθ (l sin θ)
 //! ```
 //!
 //! # nalgebra
@@ -44,13 +54,99 @@
 //! assert_eq!(Vec2::from(v), vec2(1.0, 2.0));
 //! ```
 
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim, U1};
 use num_dual::DualNum;
 use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
 /// A real number or a dual number over `f64`: what positions, potentials and the dynamics are
 /// generic over.
-pub trait Scalar: DualNum<Primitive = f64> + Copy {}
-impl<T: DualNum<Primitive = f64> + Copy> Scalar for T {}
+///
+/// Besides the arithmetic of [`DualNum`], a scalar multiplies a vector from the left (`s * v`,
+/// the same as `v * s`): that is part of the bound, so it also holds in code generic over the
+/// scalar, such as every function of a `#[mechanism]` declaration. `f64` and every number type of
+/// `num-dual` (nested to any depth) are scalars.
+pub trait Scalar:
+    DualNum<Primitive = f64>
+    + Copy
+    + Mul<Vec2<Self>, Output = Vec2<Self>>
+    + Mul<Vec3<Self>, Output = Vec3<Self>>
+{
+}
+impl<T> Scalar for T where
+    T: DualNum<Primitive = f64>
+        + Copy
+        + Mul<Vec2<T>, Output = Vec2<T>>
+        + Mul<Vec3<T>, Output = Vec3<T>>
+{
+}
+
+/// `s * v` for a scalar type `S` of `num-dual`: Rust's orphan rules allow it type family by type
+/// family (a generic `impl<D> Mul<Vec2<D>> for D` is not allowed, `D` being foreign).
+macro_rules! scalar_times_vector {
+    ([$($g:tt)*] $S:ty $(, $($w:tt)+)?) => {
+        /// Scalar times vector (`s * v`, the same as `v * s`).
+        impl<$($g)*> Mul<Vec2<$S>> for $S
+        where
+            $S: DualNum<Primitive = f64> + Copy,
+            $($($w)+)?
+        {
+            type Output = Vec2<$S>;
+            #[inline(always)]
+            fn mul(self, v: Vec2<$S>) -> Vec2<$S> {
+                vec2(v.x * self, v.y * self)
+            }
+        }
+        /// Scalar times vector (`s * v`, the same as `v * s`).
+        impl<$($g)*> Mul<Vec3<$S>> for $S
+        where
+            $S: DualNum<Primitive = f64> + Copy,
+            $($($w)+)?
+        {
+            type Output = Vec3<$S>;
+            #[inline(always)]
+            fn mul(self, v: Vec3<$S>) -> Vec3<$S> {
+                vec3(v.x * self, v.y * self, v.z * self)
+            }
+        }
+    };
+}
+scalar_times_vector!([T] num_dual::Dual<T>);
+scalar_times_vector!([T] num_dual::Dual2<T>);
+scalar_times_vector!([T] num_dual::Dual3<T>);
+scalar_times_vector!([T] num_dual::HyperDual<T>);
+scalar_times_vector!([T] num_dual::HyperHyperDual<T>);
+scalar_times_vector!([T] num_dual::Real<T>);
+scalar_times_vector!(
+    [T: nalgebra::Scalar, D: Dim] num_dual::DualVec<T, D>,
+    DefaultAllocator: Allocator<D>
+);
+scalar_times_vector!(
+    [T: nalgebra::Scalar, D: Dim] num_dual::Dual2Vec<T, D>,
+    DefaultAllocator: Allocator<U1, D> + Allocator<D, D>
+);
+scalar_times_vector!(
+    [T: nalgebra::Scalar, M: Dim, N: Dim] num_dual::HyperDualVec<T, M, N>,
+    DefaultAllocator: Allocator<M> + Allocator<M, N> + Allocator<U1, N>
+);
+
+/// A plain number times a vector of any scalar type (`2.0 * v`, the same as `v * 2.0`).
+impl<D: DualNum<Primitive = f64> + Copy> Mul<Vec2<D>> for f64 {
+    type Output = Vec2<D>;
+    #[inline(always)]
+    fn mul(self, v: Vec2<D>) -> Vec2<D> {
+        vec2(v.x * self, v.y * self)
+    }
+}
+
+/// A plain number times a vector of any scalar type (`2.0 * v`, the same as `v * 2.0`).
+impl<D: DualNum<Primitive = f64> + Copy> Mul<Vec3<D>> for f64 {
+    type Output = Vec3<D>;
+    #[inline(always)]
+    fn mul(self, v: Vec3<D>) -> Vec3<D> {
+        vec3(v.x * self, v.y * self, v.z * self)
+    }
+}
 
 /// A vector in the plane.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
