@@ -1,5 +1,7 @@
 //! `accelerations` of generated mechanisms against hand-written closed forms, in one run: the simple
-//! pendulum, the double pendulum, the wedge and block, and the pendulum on a cart.
+//! pendulum, the double pendulum, the wedge and block, and the pendulum on a cart; and two
+//! constrained mechanisms (the four-bar, the Cartesian pendulum) against their KKT systems written
+//! out by hand (`common/constrained.rs`).
 //!
 //! ```text
 //! cargo bench --bench accelerations
@@ -11,7 +13,9 @@
 //! one side and then the same number of calls of the other (the order alternating from round to
 //! round), reported as the median of the per-round ratios with its interquartile range. A drift of the
 //! machine's speed between criterion's two measurements (seconds apart) moves the first figure; within
-//! a round (milliseconds) it hits both sides alike.
+//! a round (milliseconds) it hits both sides alike. "validated once" is the same call through
+//! `sys.validated()`, the handle a simulation uses: parameters checked when it was made, the state
+//! on every call.
 
 #[path = "../examples/double_pendulum.rs"]
 #[allow(dead_code)]
@@ -19,57 +23,20 @@ mod double_pendulum_scene;
 #[path = "../examples/wedge_block.rs"]
 #[allow(dead_code)]
 mod wedge_block_scene;
+#[path = "../examples/four_bar.rs"]
+#[allow(dead_code)]
+mod four_bar_scene;
+#[path = "../examples/cartesian_pendulum.rs"]
+#[allow(dead_code)]
+mod cartesian_pendulum_scene;
 
+#[allow(dead_code)]
+mod common;
+
+use common::{interleave, mean_ns, print_interleaved, smoke_run};
 use criterion::{criterion_group, Criterion};
 use lagrange::prelude::*;
 use std::hint::black_box;
-use std::sync::Mutex;
-use std::time::Instant;
-
-/// Interleaved ratios measured so far: (group, first quartile, median, third quartile).
-static INTERLEAVED: Mutex<Vec<(&'static str, [f64; 3])>> = Mutex::new(Vec::new());
-
-/// Whether this is a smoke run (`-- --test`): nothing is timed.
-fn smoke_run() -> bool {
-    std::env::args().any(|a| a == "--test")
-}
-
-/// The interleaved ratio generated / hand-written (see the module docs), recorded for the summary.
-fn interleave(group: &'static str, mut hand_written: impl FnMut(), mut generated: impl FnMut()) {
-    if smoke_run() {
-        return;
-    }
-    const ROUNDS: usize = 41;
-    let batch = |f: &mut dyn FnMut(), calls: u64| {
-        let start = Instant::now();
-        for _ in 0..calls {
-            f();
-        }
-        start.elapsed().as_secs_f64()
-    };
-    // Calls per batch: about 2 ms of the hand-written side.
-    let probe = batch(&mut hand_written, 10_000).max(1e-6);
-    let calls = ((2e-3 / probe) * 10_000.0).clamp(1_000.0, 1e7) as u64;
-    let mut ratios: Vec<f64> = (0..ROUNDS)
-        .map(|round| {
-            let (h, g) = if round % 2 == 0 {
-                let h = batch(&mut hand_written, calls);
-                (h, batch(&mut generated, calls))
-            } else {
-                let g = batch(&mut generated, calls);
-                (batch(&mut hand_written, calls), g)
-            };
-            g / h
-        })
-        .collect();
-    ratios.sort_by(f64::total_cmp);
-    let quartiles = [
-        ratios[ROUNDS / 4],
-        ratios[ROUNDS / 2],
-        ratios[3 * ROUNDS / 4],
-    ];
-    INTERLEAVED.lock().unwrap().push((group, quartiles));
-}
 
 #[mechanism]
 pub mod pendulum {
@@ -149,41 +116,49 @@ fn cart_pendulum_closed_form(
 
 fn simple_pendulum(c: &mut Criterion) {
     use pendulum::{Coords, Pendulum, State};
-    let sys = Pendulum {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = Pendulum {
         m: 1.0,
         l: 0.8,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
     let generated = sys.accelerations(&s).unwrap().theta;
-    assert!((generated - pendulum_closed_form(&sys, [0.7])[0]).abs() < 1e-12);
+    assert!((generated - pendulum_closed_form(sys, [0.7])[0]).abs() < 1e-12);
     let mut group = c.benchmark_group("pendulum");
     group.bench_function("hand_written", |b| {
-        b.iter(|| pendulum_closed_form(black_box(&sys), black_box([0.7])))
+        b.iter(|| pendulum_closed_form(black_box(sys), black_box([0.7])))
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
-    interleave(
-        "pendulum",
-        || {
-            black_box(pendulum_closed_form(black_box(&sys), black_box([0.7])));
-        },
-        || {
-            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
-        },
-    );
+    let closed_form = || {
+        black_box(pendulum_closed_form(black_box(sys), black_box([0.7])));
+    };
+    interleave("pendulum", closed_form, || {
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
 }
 
 fn pendulum_on_cart(c: &mut Criterion) {
     use cart_pendulum::{CartPendulum, Coords, State};
-    let sys = CartPendulum {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = CartPendulum {
         cart_mass: 2.0,
         m: 1.0,
         l: 0.8,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let (q, v) = ([0.1, 0.7], [-0.3, 1.1]);
     let s = State::new(
         0.0,
@@ -197,40 +172,44 @@ fn pendulum_on_cart(c: &mut Criterion) {
         },
     );
     let generated = sys.accelerations(&s).unwrap();
-    let hand = cart_pendulum_closed_form(&sys, q, v);
+    let hand = cart_pendulum_closed_form(sys, q, v);
     assert!((generated.x - hand[0]).abs() < 1e-12 && (generated.theta - hand[1]).abs() < 1e-12);
     let mut group = c.benchmark_group("cart_pendulum");
     group.bench_function("hand_written", |b| {
-        b.iter(|| cart_pendulum_closed_form(black_box(&sys), black_box(q), black_box(v)))
+        b.iter(|| cart_pendulum_closed_form(black_box(sys), black_box(q), black_box(v)))
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
-    interleave(
-        "cart_pendulum",
-        || {
-            black_box(cart_pendulum_closed_form(
-                black_box(&sys),
-                black_box(q),
-                black_box(v),
-            ));
-        },
-        || {
-            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
-        },
-    );
+    let closed_form = || {
+        black_box(cart_pendulum_closed_form(
+            black_box(sys),
+            black_box(q),
+            black_box(v),
+        ));
+    };
+    interleave("cart_pendulum", closed_form, || {
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
 }
 
 fn double_pendulum(c: &mut Criterion) {
     use double_pendulum_scene::double_pendulum::{Coords, DoublePendulum, State};
-    let sys = DoublePendulum {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = DoublePendulum {
         m1: 1.0,
         m2: 1.3,
         l1: 1.0,
         l2: 0.8,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let s = State::new(
         0.0,
         Coords {
@@ -246,29 +225,29 @@ fn double_pendulum(c: &mut Criterion) {
     group.bench_function("hand_written", |b| {
         b.iter(|| {
             double_pendulum_scene::closed_form(
-                black_box(&sys),
+                black_box(sys),
                 black_box([0.7, -1.2]),
                 black_box([1.1, -0.4]),
             )
         })
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     group.finish();
-    interleave(
-        "double_pendulum",
-        || {
-            black_box(double_pendulum_scene::closed_form(
-                black_box(&sys),
-                black_box([0.7, -1.2]),
-                black_box([1.1, -0.4]),
-            ));
-        },
-        || {
-            black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
-        },
-    );
+    let closed_form = || {
+        black_box(double_pendulum_scene::closed_form(
+            black_box(sys),
+            black_box([0.7, -1.2]),
+            black_box([1.1, -0.4]),
+        ));
+    };
+    interleave("double_pendulum", closed_form, || {
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
 }
 
 /// The wedge and block by hand: the closed-form constant accelerations (Ẍ, d̈) from the parameters.
@@ -304,50 +283,149 @@ fn wedge_block_assembled(p: &wedge_block_scene::wedge_block::WedgeBlock) -> [f64
 
 fn wedge_block(c: &mut Criterion) {
     use wedge_block_scene::wedge_block::{Coords, State, WedgeBlock};
-    let sys = WedgeBlock {
+    // The same parameters checked once: the handle a simulation uses.
+    let checked = WedgeBlock {
         wedge_mass: 3.0,
         block_mass: 1.0,
         alpha: 0.5,
         h: 1.0,
         g: 9.81,
-    };
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
     let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
     let mut group = c.benchmark_group("wedge_block");
     group.bench_function("hand_written", |b| {
-        b.iter(|| wedge_block_closed_form(black_box(&sys)))
+        b.iter(|| wedge_block_closed_form(black_box(sys)))
     });
     group.bench_function("generated", |b| {
-        b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
     });
     // Without the parameter and state checks (what integrators call between their once-a-step
     // checks), and the method by hand: where the ratio above comes from.
     let (q, v) = ([0.1, 0.2], [-0.3, 0.5]);
     group.bench_function("generated_unchecked", |b| {
         b.iter(|| {
-            black_box(&sys)
+            black_box(sys)
                 .accelerations_at(0.0, black_box(&q), black_box(&v))
                 .unwrap()
         })
     });
     group.bench_function("hand_assembled", |b| {
-        b.iter(|| wedge_block_assembled(black_box(&sys)))
+        b.iter(|| wedge_block_assembled(black_box(sys)))
     });
     group.finish();
     let closed_form = || {
-        black_box(wedge_block_closed_form(black_box(&sys)));
+        black_box(wedge_block_closed_form(black_box(sys)));
     };
     interleave("wedge_block", closed_form, || {
-        black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", closed_form, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
     });
     interleave("  unchecked", closed_form, || {
         black_box(
-            black_box(&sys)
+            black_box(sys)
                 .accelerations_at(0.0, black_box(&q), black_box(&v))
                 .unwrap(),
         );
     });
     interleave("  hand-assembled", closed_form, || {
-        black_box(wedge_block_assembled(black_box(&sys)));
+        black_box(wedge_block_assembled(black_box(sys)));
+    });
+}
+
+/// The four-bar of the gallery at its consistent start, against its KKT system by hand.
+fn four_bar(c: &mut Criterion) {
+    use common::constrained;
+    let (params, s) = four_bar_scene::linkage();
+    let checked = params.validated().unwrap();
+    let sys = checked.get();
+    let hand = constrained::FourBar {
+        l: [sys.l1, sys.l2, sys.l3],
+        m: [sys.m1, sys.m2, sys.m3],
+        d: sys.d,
+        g: sys.g,
+    };
+    let (q, v) = (s.q.to_array(), s.v.to_array());
+    let generated = sys.accelerations(&s).unwrap().to_array();
+    let by_hand = constrained::four_bar(&hand, q, v);
+    // Two solves of the same KKT system: a few ulps of the condition number times |q̈| ≈ 10.
+    for j in 0..3 {
+        assert!((generated[j] - by_hand[j]).abs() < 1e-10, "{generated:?} vs {by_hand:?}");
+    }
+    let mut group = c.benchmark_group("four_bar");
+    group.bench_function("hand_written", |b| {
+        b.iter(|| constrained::four_bar(black_box(&hand), black_box(q), black_box(v)))
+    });
+    group.bench_function("generated", |b| {
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
+    });
+    group.finish();
+    let kkt = || {
+        black_box(constrained::four_bar(black_box(&hand), black_box(q), black_box(v)));
+    };
+    interleave("four_bar (KKT)", kkt, || {
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", kkt, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    });
+}
+
+/// The Cartesian pendulum, against its KKT system by hand.
+fn cartesian_pendulum(c: &mut Criterion) {
+    use cartesian_pendulum_scene::cartesian_pendulum::{CartesianPendulum, Coords, State};
+    use common::constrained;
+    let checked = CartesianPendulum {
+        m: 1.0,
+        l: 0.8,
+        g: 9.81,
+    }
+    .validated()
+    .unwrap();
+    let sys = checked.get();
+    let hand = constrained::CartesianPendulum {
+        m: sys.m,
+        l: sys.l,
+        g: sys.g,
+    };
+    let (th, w) = (0.7f64, 1.1f64);
+    let (q, v) = (
+        [sys.l * th.sin(), -sys.l * th.cos()],
+        [sys.l * w * th.cos(), sys.l * w * th.sin()],
+    );
+    let s = State::new(
+        0.0,
+        Coords { x: q[0], y: q[1] },
+        Coords { x: v[0], y: v[1] },
+    );
+    let generated = sys.accelerations(&s).unwrap();
+    let by_hand = constrained::cartesian_pendulum(&hand, q, v);
+    // The same formula rounded differently: a few ulps of |q̈| ≈ 10.
+    assert!((generated.x - by_hand[0]).abs() < 1e-12 && (generated.y - by_hand[1]).abs() < 1e-12);
+    let mut group = c.benchmark_group("cartesian_pendulum");
+    group.bench_function("hand_written", |b| {
+        b.iter(|| constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v)))
+    });
+    group.bench_function("generated", |b| {
+        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
+    });
+    group.finish();
+    let kkt = || {
+        black_box(constrained::cartesian_pendulum(
+            black_box(&hand),
+            black_box(q),
+            black_box(v),
+        ));
+    };
+    interleave("cartesian_pendulum (KKT)", kkt, || {
+        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
+    });
+    interleave("  validated once", kkt, || {
+        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
     });
 }
 
@@ -356,24 +434,10 @@ criterion_group!(
     simple_pendulum,
     double_pendulum,
     wedge_block,
-    pendulum_on_cart
+    pendulum_on_cart,
+    four_bar,
+    cartesian_pendulum
 );
-
-/// Mean time of one benchmark from criterion's estimates of this run, in ns.
-fn mean_ns(group: &str, bench: &str) -> Option<f64> {
-    let dir = std::env::var_os("CARGO_TARGET_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let path = dir
-        .join("criterion")
-        .join(group)
-        .join(bench)
-        .join("new")
-        .join("estimates.json");
-    let text = std::fs::read_to_string(path).ok()?;
-    let json: serde_json::Value = serde_json::from_str(&text).ok()?;
-    json["mean"]["point_estimate"].as_f64()
-}
 
 fn main() {
     benches();
@@ -388,6 +452,8 @@ fn main() {
         "double_pendulum",
         "wedge_block",
         "cart_pendulum",
+        "four_bar",
+        "cartesian_pendulum",
     ] {
         match (mean_ns(group, "generated"), mean_ns(group, "hand_written")) {
             (Some(g), Some(h)) => println!("  {group:<16} {g:8.1} ns / {h:8.1} ns = {:.2}×", g / h),
@@ -402,10 +468,5 @@ fn main() {
             println!("    {variant:<20} {g:8.1} ns / {h:8.1} ns = {:.2}×", g / h);
         }
     }
-    println!(
-        "\ninterleaved ratio to the hand-written closed form (median of 41 rounds [quartiles]):"
-    );
-    for (group, [low, median, high]) in INTERLEAVED.lock().unwrap().iter() {
-        println!("  {group:<18} {median:.2}×  [{low:.2}, {high:.2}]");
-    }
+    print_interleaved("ratio to the hand-written closed form");
 }

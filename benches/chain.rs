@@ -1,4 +1,4 @@
-//! `accelerations` of an N-link planar pendulum (equal links, gravity) for N = 1, 2, 4, 8, 16, 32:
+//! `accelerations` of an N-link planar pendulum (equal links, gravity) for N = 1, 2, 4, 8, 16, 32, 64:
 //! the generated code against a hand-written O(N²) closed form (M_jk = m l² (N − max(j,k))
 //! cos(θⱼ − θₖ), solved with the same LDLᵀ), in one run.
 //!
@@ -12,13 +12,17 @@
 #[allow(dead_code)]
 mod chains;
 
+#[allow(dead_code)]
+mod common;
+
+use common::{interleave, load_average, mean_ns, print_interleaved};
 use criterion::{criterion_group, Criterion};
 use lagrange::linalg::Ldlt;
 use lagrange::prelude::*;
 use nalgebra::{SMatrix, SVector};
 use std::hint::black_box;
 
-const SIZES: [usize; 6] = [1, 2, 4, 8, 16, 32];
+const SIZES: [usize; 7] = [1, 2, 4, 8, 16, 32, 64];
 
 /// The chain by hand: M q̈ = −∂V/∂q − (velocity products), O(N²) entries, one sin_cos per link.
 fn closed_form<const N: usize>(m: f64, l: f64, g: f64, q: &[f64; N], v: &[f64; N]) -> [f64; N] {
@@ -79,6 +83,15 @@ macro_rules! chain_bench {
                 b.iter(|| black_box(&sys).accelerations(black_box(&s)).unwrap())
             });
             group.finish();
+            interleave(
+                concat!("N = ", $n),
+                || {
+                    black_box(closed_form::<$n>(m, l, g, black_box(&q), black_box(&v)));
+                },
+                || {
+                    black_box(black_box(&sys).accelerations(black_box(&s)).unwrap());
+                },
+            );
         }
     };
 }
@@ -89,24 +102,9 @@ chain_bench!(chain4, chain4, Chain4, 4);
 chain_bench!(chain8, chain8, Chain8, 8);
 chain_bench!(chain16, chain16, Chain16, 16);
 chain_bench!(chain32, chain32, Chain32, 32);
+chain_bench!(chain64, chain64, Chain64, 64);
 
-criterion_group!(benches, chain1, chain2, chain4, chain8, chain16, chain32);
-
-/// Mean time of one benchmark from criterion's estimates of this run, in ns.
-fn mean_ns(group: &str, bench: &str) -> Option<f64> {
-    let dir = std::env::var_os("CARGO_TARGET_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let path = dir
-        .join("criterion")
-        .join(group)
-        .join(bench)
-        .join("new")
-        .join("estimates.json");
-    let text = std::fs::read_to_string(path).ok()?;
-    let json: serde_json::Value = serde_json::from_str(&text).ok()?;
-    json["mean"]["point_estimate"].as_f64()
-}
+criterion_group!(benches, chain1, chain2, chain4, chain8, chain16, chain32, chain64);
 
 fn main() {
     benches();
@@ -115,7 +113,10 @@ fn main() {
     if std::env::args().any(|a| a == "--test") {
         return;
     }
-    println!("\nN-link pendulum, mean ns per accelerations call (same run):");
+    println!(
+        "\nN-link pendulum, mean ns per accelerations call (same run; load average {}):",
+        load_average()
+    );
     println!(
         "  {:>3} {:>10} {:>10} {:>7} {:>9} {:>9}",
         "N", "generated", "by hand", "ratio", "exp gen", "exp hand"
@@ -157,4 +158,14 @@ fn main() {
             (g32 / g8).ln() / 4f64.ln()
         );
     }
+    if let (Some(h8), Some(h32)) = (
+        mean_ns("chain_8", "hand_written"),
+        mean_ns("chain_32", "hand_written"),
+    ) {
+        println!(
+            "  exponent 8 → 32 (by hand):   {:.2}",
+            (h32 / h8).ln() / 4f64.ln()
+        );
+    }
+    print_interleaved("generated / hand-written");
 }

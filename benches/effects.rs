@@ -7,6 +7,10 @@
 //! cargo bench --bench effects
 //! ```
 
+#[allow(dead_code)]
+mod common;
+
+use common::mean_ns;
 use criterion::{criterion_group, Criterion};
 use lagrange::prelude::*;
 use std::hint::black_box;
@@ -135,22 +139,6 @@ fn effects(c: &mut Criterion) {
 }
 
 criterion_group!(benches, effects);
-
-/// Mean time of one benchmark from criterion's estimates of this run, in ns.
-fn mean_ns(group: &str, bench: &str) -> Option<f64> {
-    let dir = std::env::var_os("CARGO_TARGET_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let path = dir
-        .join("criterion")
-        .join(group)
-        .join(bench)
-        .join("new")
-        .join("estimates.json");
-    let text = std::fs::read_to_string(path).ok()?;
-    let json: serde_json::Value = serde_json::from_str(&text).ok()?;
-    json["mean"]["point_estimate"].as_f64()
-}
 
 fn main() {
     benches();

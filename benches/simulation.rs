@@ -12,6 +12,10 @@
 #[allow(dead_code)]
 mod double_pendulum_scene;
 
+#[allow(dead_code)]
+mod common;
+
+use common::{interleave, load_average, mean_ns, print_interleaved};
 use criterion::{criterion_group, Criterion};
 use double_pendulum_scene::double_pendulum::{Coords, DoublePendulum, State};
 use lagrange::prelude::*;
@@ -44,7 +48,7 @@ fn hand_written_run(
     (q, v)
 }
 
-fn generated_run(sys: &DoublePendulum, mut s: State) -> State {
+fn generated_run<M: Mechanism<2, Coords = Coords>>(sys: &M, mut s: State) -> State {
     for _ in 0..STEPS {
         sys.step::<Rk4>(&mut s, H).unwrap();
     }
@@ -82,26 +86,24 @@ fn simulation(c: &mut Criterion) {
     group.bench_function("generated", |b| {
         b.iter(|| generated_run(black_box(&sys), black_box(s)))
     });
+    // The handle a simulation uses: parameters checked once, the state every step.
+    let checked = sys.validated().unwrap();
+    group.bench_function("generated_validated", |b| {
+        b.iter(|| generated_run(black_box(&checked), black_box(s)))
+    });
     group.finish();
+    let hand = || {
+        black_box(hand_written_run(black_box(&sys), black_box(q), black_box(v)));
+    };
+    interleave("generated", hand, || {
+        black_box(generated_run(black_box(&sys), black_box(s)));
+    });
+    interleave("  validated once", hand, || {
+        black_box(generated_run(black_box(&checked), black_box(s)));
+    });
 }
 
 criterion_group!(benches, simulation);
-
-/// Mean time of one benchmark from criterion's estimates of this run, in ns.
-fn mean_ns(group: &str, bench: &str) -> Option<f64> {
-    let dir = std::env::var_os("CARGO_TARGET_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let path = dir
-        .join("criterion")
-        .join(group)
-        .join(bench)
-        .join("new")
-        .join("estimates.json");
-    let text = std::fs::read_to_string(path).ok()?;
-    let json: serde_json::Value = serde_json::from_str(&text).ok()?;
-    json["mean"]["point_estimate"].as_f64()
-}
 
 fn main() {
     benches();
@@ -118,12 +120,21 @@ fn main() {
                 "\n10⁶ RK4 steps of the double pendulum (scaled from 10⁴-step runs, same run):"
             );
             println!(
-                "  generated {:.3} s, hand-written {:.3} s, ratio {:.2}×",
+                "  generated {:.3} s, hand-written {:.3} s, ratio {:.2}× (load average {})",
                 g * scale,
                 h * scale,
-                g / h
+                g / h,
+                load_average()
             );
+            if let Some(gv) = mean_ns(group, "generated_validated") {
+                println!(
+                    "  validated once {:.3} s, ratio {:.2}×",
+                    gv * scale,
+                    gv / h
+                );
+            }
         }
         _ => println!("\n(no estimates: run without --test to measure)"),
     }
+    print_interleaved("10⁴ RK4 steps, generated / hand-written");
 }

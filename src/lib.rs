@@ -10,7 +10,7 @@
 //! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
 //! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
 //! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
-//! [`constraints`], [`geometry`], [`error`].
+//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`].
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
 //!
@@ -66,8 +66,8 @@ pub use lagrange_core::model::{Coordinates, State};
 pub use lagrange_core::validated::Validated;
 
 pub use lagrange_core::{
-    analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model, tree,
-    validated,
+    analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model,
+    scalar_ext, tree, validated,
 };
 
 /// Everything a declaration and its user need: `use lagrange::prelude::*;`.
@@ -86,6 +86,7 @@ pub mod __private {
     pub use lagrange_core::dynamics;
     pub use lagrange_core::geometry;
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
+    pub use lagrange_core::scalar_ext::ScalarExt;
     pub use lagrange_core::tree;
     pub use lagrange_core::{Error, Mechanism, Result, Scalar};
     pub use nalgebra;

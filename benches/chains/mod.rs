@@ -481,3 +481,404 @@ pub mod chain32 {
         vec2(0.0, -g)
     }
 }
+
+#[mechanism]
+pub mod chain64 {
+    pub struct Coords {
+        pub theta0: f64,
+        pub theta1: f64,
+        pub theta2: f64,
+        pub theta3: f64,
+        pub theta4: f64,
+        pub theta5: f64,
+        pub theta6: f64,
+        pub theta7: f64,
+        pub theta8: f64,
+        pub theta9: f64,
+        pub theta10: f64,
+        pub theta11: f64,
+        pub theta12: f64,
+        pub theta13: f64,
+        pub theta14: f64,
+        pub theta15: f64,
+        pub theta16: f64,
+        pub theta17: f64,
+        pub theta18: f64,
+        pub theta19: f64,
+        pub theta20: f64,
+        pub theta21: f64,
+        pub theta22: f64,
+        pub theta23: f64,
+        pub theta24: f64,
+        pub theta25: f64,
+        pub theta26: f64,
+        pub theta27: f64,
+        pub theta28: f64,
+        pub theta29: f64,
+        pub theta30: f64,
+        pub theta31: f64,
+        pub theta32: f64,
+        pub theta33: f64,
+        pub theta34: f64,
+        pub theta35: f64,
+        pub theta36: f64,
+        pub theta37: f64,
+        pub theta38: f64,
+        pub theta39: f64,
+        pub theta40: f64,
+        pub theta41: f64,
+        pub theta42: f64,
+        pub theta43: f64,
+        pub theta44: f64,
+        pub theta45: f64,
+        pub theta46: f64,
+        pub theta47: f64,
+        pub theta48: f64,
+        pub theta49: f64,
+        pub theta50: f64,
+        pub theta51: f64,
+        pub theta52: f64,
+        pub theta53: f64,
+        pub theta54: f64,
+        pub theta55: f64,
+        pub theta56: f64,
+        pub theta57: f64,
+        pub theta58: f64,
+        pub theta59: f64,
+        pub theta60: f64,
+        pub theta61: f64,
+        pub theta62: f64,
+        pub theta63: f64,
+    }
+
+    pub struct Chain64 {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob0() -> Vec2 {
+        vec2(theta0.sin(), -theta0.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob1() -> Vec2 {
+        bob0 + vec2(theta1.sin(), -theta1.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob2() -> Vec2 {
+        bob1 + vec2(theta2.sin(), -theta2.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob3() -> Vec2 {
+        bob2 + vec2(theta3.sin(), -theta3.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob4() -> Vec2 {
+        bob3 + vec2(theta4.sin(), -theta4.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob5() -> Vec2 {
+        bob4 + vec2(theta5.sin(), -theta5.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob6() -> Vec2 {
+        bob5 + vec2(theta6.sin(), -theta6.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob7() -> Vec2 {
+        bob6 + vec2(theta7.sin(), -theta7.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob8() -> Vec2 {
+        bob7 + vec2(theta8.sin(), -theta8.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob9() -> Vec2 {
+        bob8 + vec2(theta9.sin(), -theta9.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob10() -> Vec2 {
+        bob9 + vec2(theta10.sin(), -theta10.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob11() -> Vec2 {
+        bob10 + vec2(theta11.sin(), -theta11.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob12() -> Vec2 {
+        bob11 + vec2(theta12.sin(), -theta12.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob13() -> Vec2 {
+        bob12 + vec2(theta13.sin(), -theta13.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob14() -> Vec2 {
+        bob13 + vec2(theta14.sin(), -theta14.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob15() -> Vec2 {
+        bob14 + vec2(theta15.sin(), -theta15.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob16() -> Vec2 {
+        bob15 + vec2(theta16.sin(), -theta16.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob17() -> Vec2 {
+        bob16 + vec2(theta17.sin(), -theta17.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob18() -> Vec2 {
+        bob17 + vec2(theta18.sin(), -theta18.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob19() -> Vec2 {
+        bob18 + vec2(theta19.sin(), -theta19.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob20() -> Vec2 {
+        bob19 + vec2(theta20.sin(), -theta20.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob21() -> Vec2 {
+        bob20 + vec2(theta21.sin(), -theta21.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob22() -> Vec2 {
+        bob21 + vec2(theta22.sin(), -theta22.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob23() -> Vec2 {
+        bob22 + vec2(theta23.sin(), -theta23.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob24() -> Vec2 {
+        bob23 + vec2(theta24.sin(), -theta24.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob25() -> Vec2 {
+        bob24 + vec2(theta25.sin(), -theta25.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob26() -> Vec2 {
+        bob25 + vec2(theta26.sin(), -theta26.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob27() -> Vec2 {
+        bob26 + vec2(theta27.sin(), -theta27.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob28() -> Vec2 {
+        bob27 + vec2(theta28.sin(), -theta28.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob29() -> Vec2 {
+        bob28 + vec2(theta29.sin(), -theta29.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob30() -> Vec2 {
+        bob29 + vec2(theta30.sin(), -theta30.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob31() -> Vec2 {
+        bob30 + vec2(theta31.sin(), -theta31.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob32() -> Vec2 {
+        bob31 + vec2(theta32.sin(), -theta32.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob33() -> Vec2 {
+        bob32 + vec2(theta33.sin(), -theta33.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob34() -> Vec2 {
+        bob33 + vec2(theta34.sin(), -theta34.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob35() -> Vec2 {
+        bob34 + vec2(theta35.sin(), -theta35.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob36() -> Vec2 {
+        bob35 + vec2(theta36.sin(), -theta36.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob37() -> Vec2 {
+        bob36 + vec2(theta37.sin(), -theta37.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob38() -> Vec2 {
+        bob37 + vec2(theta38.sin(), -theta38.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob39() -> Vec2 {
+        bob38 + vec2(theta39.sin(), -theta39.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob40() -> Vec2 {
+        bob39 + vec2(theta40.sin(), -theta40.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob41() -> Vec2 {
+        bob40 + vec2(theta41.sin(), -theta41.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob42() -> Vec2 {
+        bob41 + vec2(theta42.sin(), -theta42.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob43() -> Vec2 {
+        bob42 + vec2(theta43.sin(), -theta43.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob44() -> Vec2 {
+        bob43 + vec2(theta44.sin(), -theta44.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob45() -> Vec2 {
+        bob44 + vec2(theta45.sin(), -theta45.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob46() -> Vec2 {
+        bob45 + vec2(theta46.sin(), -theta46.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob47() -> Vec2 {
+        bob46 + vec2(theta47.sin(), -theta47.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob48() -> Vec2 {
+        bob47 + vec2(theta48.sin(), -theta48.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob49() -> Vec2 {
+        bob48 + vec2(theta49.sin(), -theta49.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob50() -> Vec2 {
+        bob49 + vec2(theta50.sin(), -theta50.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob51() -> Vec2 {
+        bob50 + vec2(theta51.sin(), -theta51.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob52() -> Vec2 {
+        bob51 + vec2(theta52.sin(), -theta52.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob53() -> Vec2 {
+        bob52 + vec2(theta53.sin(), -theta53.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob54() -> Vec2 {
+        bob53 + vec2(theta54.sin(), -theta54.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob55() -> Vec2 {
+        bob54 + vec2(theta55.sin(), -theta55.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob56() -> Vec2 {
+        bob55 + vec2(theta56.sin(), -theta56.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob57() -> Vec2 {
+        bob56 + vec2(theta57.sin(), -theta57.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob58() -> Vec2 {
+        bob57 + vec2(theta58.sin(), -theta58.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob59() -> Vec2 {
+        bob58 + vec2(theta59.sin(), -theta59.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob60() -> Vec2 {
+        bob59 + vec2(theta60.sin(), -theta60.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob61() -> Vec2 {
+        bob60 + vec2(theta61.sin(), -theta61.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob62() -> Vec2 {
+        bob61 + vec2(theta62.sin(), -theta62.cos()) * l
+    }
+
+    #[particle(mass = m)]
+    fn bob63() -> Vec2 {
+        bob62 + vec2(theta63.sin(), -theta63.cos()) * l
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}

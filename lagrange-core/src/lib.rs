@@ -22,6 +22,7 @@ pub mod integrate;
 pub mod linalg;
 pub mod mechanism;
 pub mod model;
+pub mod scalar_ext;
 pub mod tree;
 pub mod validated;
 

@@ -67,6 +67,16 @@ pub trait Mechanism<const N: usize>: Sized {
         crate::validated::validate(self)
     }
 
+    /// Hook for mechanisms with constraints: checks what the declaration promises but only a state
+    /// can show — that every velocity row is affine in q̇ (see
+    /// [`crate::constraints::check_velocity_rows_affine`]) — so every entry point refuses the same
+    /// declarations. The default accepts.
+    #[inline]
+    fn check_declaration_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+        let _ = (t, q, v);
+        Ok(())
+    }
+
     /// Checks parameters and state; what every user-facing call does first.
     fn check(&self, state: &State<Self::Coords>) -> Result<([f64; N], [f64; N])> {
         self.validate()?;
@@ -85,10 +95,7 @@ pub trait Mechanism<const N: usize>: Sized {
     /// evaluates states off the constraints (see [`Mechanism::check_constraints`]).
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
-        match self.check_constraints(state.t, &q, &v) {
-            Ok(()) | Err(Error::ConstraintViolation { .. }) => {}
-            Err(e) => return Err(e),
-        }
+        self.check_declaration_at(state.t, &q, &v)?;
         self.accelerations_at(state.t, &q, &v)
             .map(Self::Coords::from_array)
             .map_err(|e| diagnose(self, state.t, &q, &v, e))
@@ -342,6 +349,9 @@ macro_rules! impl_mechanism {
             fn project(&self, t: f64, q: &mut [f64; $n], v: &mut [f64; $n]) -> $crate::Result<()> {
                 let mode = $crate::constraints::infer_mode(self, t, q, v)?;
                 $crate::constraints::project(self, t, q, v, &mode)
+            }
+            fn check_declaration_at(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> $crate::Result<()> {
+                $crate::constraints::check_velocity_rows_affine(self, t, q, v)
             }
             fn check_constraints(&self, t: f64, q: &[f64; $n], v: &[f64; $n]) -> $crate::Result<()> {
                 $crate::constraints::check_consistent(

@@ -138,7 +138,11 @@ pub fn equations_of_motion<
     let mut x_dot = [S::zero(); K];
     let mut acceleration = [S::zero(); K];
     for body in &M::BODIES {
-        for k in 0..body.dim {
+        // Over the constant range 0..3 (unrolled by the compiler), not 0..dim.
+        for k in 0..3 {
+            if k >= body.dim {
+                break;
+            }
             let i = body.row + k;
             let mut xi = d[i].re;
             let mut vi = d[i].eps2.0.map_or(S::zero(), |e| e[0]);
@@ -188,7 +192,10 @@ pub fn equations_of_motion<
     for b in (0..B).rev() {
         let body = &M::BODIES[b];
         composite[b] += masses[body.row];
-        for k in 0..body.dim {
+        for k in 0..3 {
+            if k >= body.dim {
+                break;
+            }
             let i = body.row + k;
             if let Some(db) = &d[i].eps1.0 {
                 for (j, seed) in body.seeds.iter().enumerate() {
@@ -218,8 +225,8 @@ pub fn equations_of_motion<
 }
 
 /// M = Σ_b C_b (D_bᵀ D_b + Σ_{a above b} (Dₐᵀ D_b + D_bᵀ Dₐ)): every body walks up through its
-/// ancestors, one dot product over its rows per pair of seeds. The lower triangle is summed and
-/// mirrored (exactly symmetric).
+/// ancestors, one dot product over its rows per pair of seeds. Mirrored entries receive the same
+/// terms in the same order, so M is exactly symmetric.
 #[inline(always)]
 fn mass_matrix<
     M: Tree<N, K, W, B>,
@@ -258,33 +265,24 @@ fn mass_matrix<
         };
         for (s, seed_s) in body.seeds.iter().enumerate() {
             let Seed::Coordinate(cs) = *seed_s else { continue };
-            // a = b: C_b D_bᵀ D_b, lower triangle.
+            // a = b: C_b D_bᵀ D_b, every entry (the (r, s) and (s, r) products are equal).
             for (r, seed_r) in body.seeds.iter().enumerate() {
                 let Seed::Coordinate(cr) = *seed_r else { continue };
-                if cr >= cs {
-                    m[(cr, cs)] += dot(db, r, s);
-                }
+                m[(cr, cs)] += dot(db, r, s);
             }
-            // a above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ).
+            // a above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ), the same term into both mirrored entries (twice
+            // into a diagonal one).
             let mut ancestor = body.parent;
             while let Some(a) = ancestor {
                 let above = &M::BODIES[a];
                 for (r, seed_r) in above.seeds.iter().enumerate() {
                     let Seed::Coordinate(cr) = *seed_r else { continue };
                     let term = dot(&jacobian[a], r, s);
-                    if cr == cs {
-                        m[(cr, cr)] += term + term;
-                    } else {
-                        m[(cr.max(cs), cr.min(cs))] += term;
-                    }
+                    m[(cr, cs)] += term;
+                    m[(cs, cr)] += term;
                 }
                 ancestor = above.parent;
             }
-        }
-    }
-    for c in 0..N {
-        for r in (c + 1)..N {
-            m[(c, r)] = m[(r, c)];
         }
     }
     m

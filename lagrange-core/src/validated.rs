@@ -125,6 +125,10 @@ impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
         self.0.project(t, q, v)
     }
     #[inline(always)]
+    fn check_declaration_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+        self.0.check_declaration_at(t, q, v)
+    }
+    #[inline(always)]
     fn check_constraints(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
         self.0.check_constraints(t, q, v)
     }

@@ -127,8 +127,19 @@ impl Mechanism {
     }
 
     /// The value of a length written as an integer literal or the name of a module `const` with
-    /// an integer literal value (`const LINKS: usize = 8;`).
+    /// an integer literal value (`const LINKS: usize = 8;`), or integer arithmetic of those
+    /// (`2 * LINKS + 1`; `None` on overflow or division by zero).
     pub fn constant_length(&self, expr: &syn::Expr) -> Option<usize> {
+        self.length_within(expr, 0)
+    }
+
+    /// [`Mechanism::constant_length`], following at most 16 `const`s deep (`const A: usize = B;
+    /// const B: usize = A;` has no value).
+    fn length_within(&self, expr: &syn::Expr, depth: usize) -> Option<usize> {
+        if depth > 16 {
+            return None;
+        }
+        let length = |e: &syn::Expr| self.length_within(e, depth + 1);
         match expr {
             syn::Expr::Lit(syn::ExprLit {
                 lit: syn::Lit::Int(i),
@@ -137,11 +148,22 @@ impl Mechanism {
             syn::Expr::Path(p) => {
                 let name = p.path.get_ident()?;
                 self.other_items.iter().find_map(|item| match item {
-                    Item::Const(c) if c.ident == *name => self.constant_length(&c.expr),
+                    Item::Const(c) if c.ident == *name => length(&c.expr),
                     _ => None,
                 })
             }
-            syn::Expr::Paren(p) => self.constant_length(&p.expr),
+            syn::Expr::Paren(p) => length(&p.expr),
+            syn::Expr::Group(g) => length(&g.expr),
+            syn::Expr::Binary(b) => {
+                let (l, r) = (length(&b.left)?, length(&b.right)?);
+                match b.op {
+                    syn::BinOp::Add(_) => l.checked_add(r),
+                    syn::BinOp::Sub(_) => l.checked_sub(r),
+                    syn::BinOp::Mul(_) => l.checked_mul(r),
+                    syn::BinOp::Div(_) => l.checked_div(r),
+                    _ => None,
+                }
+            }
             _ => None,
         }
     }
@@ -172,6 +194,7 @@ impl Mechanism {
             Item::Struct(s) => self.add_struct(cx, s),
             Item::Fn(f) => match attr::split_kind(cx, &f.attrs) {
                 (Some((kind, kind_attr)), attrs) => {
+                    reject_cfg(cx, &attrs, "a declaration function");
                     let args = attr::parse_args(cx, kind, &kind_attr);
                     self.decls.push(Decl {
                         args,
@@ -192,7 +215,37 @@ impl Mechanism {
         }
     }
 
-    fn add_struct(&mut self, cx: &Ctxt, s: ItemStruct) {
+    fn add_struct(&mut self, cx: &Ctxt, mut s: ItemStruct) {
+        // `pub struct Coordinates { .. }`: the coordinates struct has one name.
+        let lower = s.ident.to_string().to_lowercase();
+        if s.ident != "Coords"
+            && self.coords.is_none()
+            && matches!(s.fields, syn::Fields::Named(_))
+            && (lower.starts_with("coord") || lower.starts_with("generalizedcoord"))
+        {
+            cx.error_spanned_by(
+                &s.ident,
+                format!("the generalized coordinates are `pub struct Coords {{ .. }}`: rename `{}` to `Coords`", s.ident),
+            );
+            s.ident = Ident::new("Coords", s.ident.span());
+        }
+        // `pub struct Pendulum<T> { pub m: T }`: the macro chooses the scalar.
+        if matches!(s.fields, syn::Fields::Named(_))
+            && (!s.generics.params.is_empty() || s.generics.where_clause.is_some())
+        {
+            cx.error_spanned_by(
+                &s.generics,
+                format!("`{}` is not generic: its fields are `f64`, and the macro makes the generated code generic over the scalar", s.ident),
+            );
+            // Its fields typed by a parameter are read as `f64`, not reported again.
+            let params: Vec<Ident> = s.generics.type_params().map(|p| p.ident.clone()).collect();
+            for field in s.fields.iter_mut() {
+                if matches!(&field.ty, Type::Path(p) if p.path.get_ident().is_some_and(|i| params.contains(i))) {
+                    field.ty = syn::parse_quote!(f64);
+                }
+            }
+            s.generics = syn::Generics::default();
+        }
         // Unit and tuple structs (markers, newtypes) are ordinary items; the parameter struct has
         // named fields.
         if s.ident != "Coords" && !matches!(s.fields, syn::Fields::Named(_)) {
@@ -201,6 +254,7 @@ impl Mechanism {
             return;
         }
         let fields = struct_fields(cx, &s, s.ident == "Coords");
+        reject_cfg(cx, &s.attrs, &format!("`{}`", s.ident));
         if s.ident == "Coords" {
             // Two `struct Coords`: rustc would say so too, but only once here.
             if self.coords.is_some() {
@@ -288,7 +342,8 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
             .named
             .iter()
             .map(|f| {
-                let array = match &f.ty {
+                reject_cfg(cx, &f.attrs, if coords { "a coordinate" } else { "a parameter" });
+                let array = match ungroup_type(&f.ty) {
                     // `pub theta: [f64; LINKS]`: an array of coordinates.
                     Type::Array(a) if coords && is_f64(&a.elem) => Some((a.len.clone(), 0)),
                     // `pub l: f32`: everything is f64 (and lifted to dual numbers).
@@ -325,6 +380,41 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
     }
 }
 
+/// `#[cfg(..)]` and `#[cfg_attr(..)]` where the macro cannot honour them. `#[mechanism]` runs before
+/// `cfg` is evaluated inside the module, so it would lay out a body, row or coordinate that rustc
+/// then removes (or keep one the user meant to remove); it is reported instead.
+fn reject_cfg(cx: &Ctxt, attrs: &[Attribute], what: &str) {
+    for attr in attrs {
+        if attr.path().is_ident("cfg") || attr.path().is_ident("cfg_attr") {
+            cx.error_spanned_by(
+                attr,
+                format!(
+                    "`#[{}]` on {what} is not supported: `#[mechanism]` lays out the mechanism before `cfg` is evaluated; declare each configuration as its own mechanism, or put `#[cfg]` on the whole module",
+                    attr.path().get_ident().map(|i| i.to_string()).unwrap_or_default()
+                ),
+            );
+        }
+    }
+}
+
 fn is_f64(ty: &Type) -> bool {
-    matches!(ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
+    matches!(ungroup_type(ty), Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
+}
+
+/// `expr` without the invisible groups around it. A `macro_rules!` fragment (`$n:expr`,
+/// `$n:literal`) arrives wrapped in a `Delimiter::None` group, which syn keeps as `Expr::Group`:
+/// wherever the macro reads an expression's shape it looks through them.
+pub fn ungroup(mut expr: &syn::Expr) -> &syn::Expr {
+    while let syn::Expr::Group(g) = expr {
+        expr = &g.expr;
+    }
+    expr
+}
+
+/// `ty` without the invisible groups around it (a `$t:ty` fragment).
+pub fn ungroup_type(mut ty: &Type) -> &Type {
+    while let Type::Group(g) = ty {
+        ty = &g.elem;
+    }
+    ty
 }

@@ -216,13 +216,13 @@ fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
         "stiction" => args.stiction.replace(value).is_some(),
         "count" => args.count.replace(value).is_some(),
         "inertia" => {
-            let inertia = match value {
+            let inertia = match crate::ast::ungroup(&value).clone() {
                 Expr::Array(array) => Inertia::Principal(array),
                 other => Inertia::Moment(other),
             };
             args.inertia.replace(inertia).is_some()
         }
-        _ => match value {
+        _ => match crate::ast::ungroup(&value).clone() {
             Expr::Path(p) if p.path.get_ident().is_some() => args
                 .on
                 .replace(p.path.get_ident().unwrap().clone())
@@ -233,6 +233,8 @@ fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
                     other,
                     "`on =` takes the name of a body, point, coordinate or constraint",
                 );
+                // Reported: the target is not "missing" as well.
+                args.malformed = true;
                 false
             }
         },

@@ -6,6 +6,7 @@ use crate::attr::{Inertia, Kind};
 use crate::ctxt::Ctxt;
 use crate::names;
 use std::collections::{BTreeSet, HashMap};
+use syn::ext::IdentExt;
 use syn::{Ident, Type};
 
 /// Functions of the geometry module, in scope in every function body.
@@ -142,6 +143,14 @@ impl<'a> Model<'a> {
 /// Checks `mechanism`, reporting every problem into `cx`. Returns the model when the declaration
 /// has its two structs (even if other errors were found, so that they are all reported).
 pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
+    // `#[mechanism] mod m {}`: one message for both structs.
+    if mechanism.coords.is_none() && mechanism.params.is_none() {
+        cx.error_at(
+            mechanism.span(),
+            "a mechanism declares `pub struct Coords { ... }` (the generalized coordinates) and a parameter struct (`pub struct Name { pub m: f64, ... }`: its name is the mechanism's type)",
+        );
+        return None;
+    }
     // `#[mechanism] mod m { struct Pendulum {..} ... }` without `struct Coords`.
     if mechanism.coords.is_none() {
         cx.error_at(
@@ -150,7 +159,17 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
         );
     }
     // `#[mechanism] mod m { struct Coords {..} ... }` without a parameter struct.
-    if mechanism.params.is_none() {
+    // `pub struct Pendulum(f64, f64);`: there is a parameter struct, but its fields have no names.
+    let tuple = mechanism.other_items.iter().find_map(|item| match item {
+        syn::Item::Struct(s) if matches!(&s.fields, syn::Fields::Unnamed(u) if !u.unnamed.is_empty()) => Some(s),
+        _ => None,
+    });
+    if let (None, Some(s)) = (&mechanism.params, tuple) {
+        cx.error_spanned_by(
+            &s.fields,
+            format!("the parameter struct has named fields: `pub struct {} {{ pub m: f64, ... }}`", s.ident),
+        );
+    } else if mechanism.params.is_none() {
         cx.error_at(
             mechanism.span(),
             "missing the parameter struct (`pub struct Name { pub m: f64, ... }`): its name is the mechanism's type",
@@ -160,8 +179,12 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     else {
         return None;
     };
-    // `struct Coords {}`: nothing moves.
-    if coords.is_empty() {
+    // `struct Coords {}`: nothing moves. (`struct Coords(f64);` was reported as such.)
+    let tuple = matches!(
+        mechanism.coords.as_ref().map(|(s, _)| &s.fields),
+        Some(syn::Fields::Unnamed(_))
+    );
+    if coords.is_empty() && !tuple {
         cx.error_spanned_by(
             &mechanism.coords.as_ref().unwrap().0.ident,
             "`Coords` needs at least one coordinate",
@@ -198,6 +221,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
         check_signature(cx, decl);
         check_function(cx, &mut model, decl);
     }
+    check_gravity_covers_every_body(cx, &model);
     check_masses(cx, &model);
     check_indices(cx, &model);
     check_constraint_count(cx, &model);
@@ -263,7 +287,7 @@ pub fn family_index(decl: &Decl) -> Option<&Ident> {
 
 /// The last segment of a return type, if it is a plain name (`Vec2`, `lagrange::Vec2`).
 fn return_type_name(decl: &Decl) -> Option<String> {
-    match decl.output()? {
+    match crate::ast::ungroup_type(decl.output()?) {
         Type::Path(p) if p.qself.is_none() => {
             let last = p.path.segments.last()?;
             last.arguments.is_none().then(|| last.ident.to_string())
@@ -378,7 +402,7 @@ fn check_signature(cx: &Ctxt, decl: &Decl) {
         let is_index = |arg: &syn::FnArg| {
             matches!(arg, syn::FnArg::Typed(t)
                 if matches!(&*t.pat, syn::Pat::Ident(p) if p.by_ref.is_none() && p.mutability.is_none() && p.subpat.is_none())
-                && matches!(&*t.ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("usize")))
+                && matches!(crate::ast::ungroup_type(&t.ty), Type::Path(p) if p.qself.is_none() && p.path.is_ident("usize")))
         };
         if sig.inputs.len() != 1 || !sig.inputs.first().is_some_and(is_index) {
             let message = "a family's function takes its member's index: `fn name(i: usize)`";
@@ -645,7 +669,9 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
 fn check_indices(cx: &Ctxt, model: &Model) {
     let mut lengths: HashMap<String, usize> = HashMap::new();
     for c in model.coords {
-        if let Some((_, n)) = c.array {
+        // A length the macro could not read (0) was reported: nothing to check against.
+        if let Some((_, n)) = c.array.as_ref().filter(|(_, n)| *n > 0) {
+            let n = *n;
             lengths.insert(c.ident.to_string(), n);
             lengths.insert(format!("{}_dot", c.ident), n);
         }
@@ -686,12 +712,12 @@ struct Indices<'c, 'l> {
 
 impl<'ast> syn::visit::Visit<'ast> for Indices<'_, '_> {
     fn visit_expr_index(&mut self, e: &'ast syn::ExprIndex) {
-        let base = match &*e.expr {
+        let base = match crate::ast::ungroup(&e.expr) {
             syn::Expr::Path(p) => p.path.get_ident(),
             _ => None,
         };
         if let Some((name, &len)) = base.and_then(|b| self.lengths.get_key_value(&b.to_string())) {
-            match &*e.index {
+            match crate::ast::ungroup(&e.index) {
                 // `theta[8]` with `theta: [f64; 8]`.
                 syn::Expr::Lit(syn::ExprLit {
                     lit: syn::Lit::Int(i),
@@ -730,7 +756,10 @@ impl<'ast> syn::visit::Visit<'ast> for Indices<'_, '_> {
 
 /// A constraint's value is an expression that vanishes (or is ≥ 0), not a comparison.
 fn check_not_a_comparison(cx: &Ctxt, decl: &Decl) {
-    let Some(syn::Stmt::Expr(syn::Expr::Binary(binary), None)) = decl.block.stmts.last() else {
+    let Some(syn::Stmt::Expr(last, None)) = decl.block.stmts.last() else {
+        return;
+    };
+    let syn::Expr::Binary(binary) = crate::ast::ungroup(last) else {
         return;
     };
     use syn::BinOp::*;
@@ -816,6 +845,48 @@ fn check_friction(cx: &Ctxt, model: &mut Model, decl: &Decl) {
     }
 }
 
+/// With gravity, every massive body moves in the dimension of some field: a `Vec3` particle under
+/// a `Vec2` field alone would silently feel no gravity.
+fn check_gravity_covers_every_body(cx: &Ctxt, model: &Model) {
+    let fields: Vec<(&Decl, Dim)> = model
+        .gravities
+        .iter()
+        .chain(&model.uniform_gravities)
+        .copied()
+        .collect();
+    // Fields that act on nothing were reported at the field.
+    let acting: Vec<&(&Decl, Dim)> = fields
+        .iter()
+        .filter(|(_, dim)| {
+            model
+                .bodies
+                .iter()
+                .any(|b| b.shape.has_mass() && b.shape.dim() == *dim)
+        })
+        .collect();
+    let Some((field, dim)) = acting.first() else {
+        return;
+    };
+    for body in &model.bodies {
+        if !body.shape.has_mass() || acting.iter().any(|(_, d)| *d == body.shape.dim()) {
+            continue;
+        }
+        // `#[gravity] fn down() -> Vec2` and `#[particle(..)] fn bead() -> Vec3`.
+        let (moves, field_type, other) = match dim {
+            Dim::Two => ("space", "Vec2", "Vec3"),
+            Dim::Three => ("the plane", "Vec3", "Vec2"),
+        };
+        cx.error_spanned_by(
+            body.decl.output(),
+            format!(
+                "`{}` moves in {moves}, but the gravity `{}` is a `{field_type}` field and would not act on it: declare a `#[gravity] fn ..() -> {other}` field for it too, or give it the field's dimension",
+                body.decl.ident(),
+                field.ident()
+            ),
+        );
+    }
+}
+
 /// Masses and inertias: present where needed, constant.
 fn check_masses(cx: &Ctxt, model: &Model) {
     for body in &model.bodies {
@@ -876,12 +947,8 @@ fn check_coordinates_are_used(cx: &Ctxt, model: &Model) {
     let mut depends: Vec<BTreeSet<usize>> = Vec::new();
     for body in &model.bodies {
         let mut coords = BTreeSet::new();
-        for ident in model
-            .free_names
-            .get(&body.decl.ident().to_string())
-            .into_iter()
-            .flatten()
-        {
+        // What the position's value depends on: `let _unused = y;` does not move the body.
+        for ident in &names::value_names(&body.decl.block) {
             if let Some(j) = model.coords.iter().position(|c| c.ident == *ident) {
                 coords.insert(j);
             } else if let Some(b) = model.bodies.iter().position(|b| b.decl.ident() == ident) {
@@ -893,8 +960,10 @@ fn check_coordinates_are_used(cx: &Ctxt, model: &Model) {
     let used: BTreeSet<usize> = depends.into_iter().flatten().collect();
     for (j, coord) in model.coords.iter().enumerate() {
         let repeated = model.coords[..j].iter().any(|c| c.ident == coord.ident);
+        // An array whose length was reported has no elements to depend on.
+        let unread = matches!(coord.array, Some((_, 0)));
         // `Coords { x, y }` where no body's position names `y`: its mass-matrix row is zero.
-        if !used.contains(&j) && !repeated {
+        if !used.contains(&j) && !repeated && !unread {
             cx.error_spanned_by(
                 &coord.ident,
                 format!(
@@ -951,9 +1020,10 @@ impl Resolver<'_, '_> {
             Some(Name::Time)
         } else if let Some(b) = model.bodies.iter().position(|b| b.decl.ident() == &name) {
             Some(Name::Body(b))
-        } else if velocity_of.is_some_and(|v| model.coords.iter().any(|c| c.ident == v)) {
+        // `r#type_dot` is not an identifier: the velocity of `r#type` is `type_dot`.
+        } else if velocity_of.is_some_and(|v| model.coords.iter().any(|c| c.ident.unraw() == v)) {
             Some(Name::CoordVelocity)
-        } else if velocity_of.is_some_and(|v| model.bodies.iter().any(|b| b.decl.ident() == v)) {
+        } else if velocity_of.is_some_and(|v| model.bodies.iter().any(|b| b.decl.ident().unraw() == v)) {
             Some(Name::BodyVelocity)
         } else if model.mechanism.item_names.iter().any(|i| *i == name)
             || GEOMETRY_FUNCTIONS.contains(&name.as_str())

@@ -166,6 +166,8 @@ fn every_item_kind() {
                 fn spring() -> f64 { k * phi.powf(2.0) * 0.5 }
                 #[gravity]
                 fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+                #[gravity]
+                fn plane_down() -> Vec2 { vec2(0.0, -g) }
                 #[force(on = tip)]
                 fn push() -> Vec2 { vec2(c, 0.0) }
                 #[torque(on = bar)]
@@ -316,4 +318,47 @@ fn array_coordinates_and_a_family_of_bodies() {
     // One sin_cos per element, shared by every member's sin and cos.
     assert!(out.contains("theta.map(|__x| __x.sin_cos())"));
     assert!(!out.contains(".sin()"));
+    // Read member by member, the family is a tree: link k is link k − 1 plus its own rod, seeded on
+    // theta[k] alone through one shared function of the member's index.
+    let squashed: String = out.split_whitespace().collect();
+    assert!(squashed.contains("tree::Tree<3,6,1,3>forChain"));
+    assert!(squashed.contains("fn__lagrange_displacement_bob_0<__D:::lagrange::__private::Scalar>(&self,i:usize,__t:__D,__theta_at_i:__D,)"));
+    assert!(squashed.contains("parent:::lagrange::__private::core::option::Option::Some(1)"));
+    assert!(squashed.contains("tree::seed(__q[2],__v[2],0)"));
+}
+
+#[test]
+fn a_body_translated_from_another_is_seeded_on_its_own_angle() {
+    let out = snapshot(
+        "double_pendulum",
+        quote! {
+            pub mod double_pendulum {
+                pub struct Coords { pub theta1: f64, pub theta2: f64 }
+                pub struct DoublePendulum { pub m1: f64, pub m2: f64, pub l1: f64, pub l2: f64, pub g: f64 }
+                #[particle(mass = m1)]
+                fn bob1() -> Vec2 { vec2(theta1.sin(), -theta1.cos()) * l1 }
+                #[particle(mass = m2)]
+                fn bob2() -> Vec2 { bob1 + vec2(theta2.sin(), -theta2.cos()) * l2 }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+            }
+        },
+    );
+    // Compared without whitespace: the pretty-printer breaks lines where it likes.
+    let out: String = out.split_whitespace().collect();
+    // Two coordinates, four rows, seeds one wide, two bodies: bob2 is bob1 plus its own arm.
+    assert!(out.contains("Tree<2,4,1,2>forDoublePendulum"));
+    assert!(out.contains("tree::equations_of_motion::<Self,S,2,4,1,2,>"));
+    assert!(out.contains("parent:::lagrange::__private::core::option::Option::Some(0)"));
+    // The arm alone, seeded on theta2 only: bob1 is not evaluated again on the seeds.
+    assert!(out.contains("fn__lagrange_displacement_bob2<__D:::lagrange::__private::Scalar>(&self,__t:__D,theta2:__D,)"));
+    assert!(out.contains("tree::seed(__q[1],__v[1],0)"));
+}
+
+#[test]
+fn a_pendulum_keeps_the_dense_pass() {
+    // One coordinate: seeds cannot be narrower than the dense pass's.
+    let out = snapshot("pendulum", pendulum());
+    assert!(!out.contains("tree::Tree<"));
+    assert!(out.contains("dynamics::equations_of_motion::<"));
 }

@@ -2,7 +2,7 @@
 //! the declaration; this crate only turns a declaration into code:
 //!
 //! parse (modules `ast`, `attr`) → check, collecting every error (`check`, `ctxt`) → expand
-//! (`expand`). On error the user's items are still emitted, with stubs for what the rest of their
+//! (`expand`). On error (`expand::fallback`) the user's items are still emitted, with stubs for what the rest of their
 //! code names, so one mistake gives one message.
 
 mod ast;
@@ -10,7 +10,6 @@ mod attr;
 mod check;
 mod ctxt;
 mod expand;
-mod expand_tree;
 mod lift;
 mod names;
 mod optimize;
@@ -18,6 +17,8 @@ mod structure;
 
 #[cfg(test)]
 mod expand_tests;
+#[cfg(test)]
+mod robustness_tests;
 
 use proc_macro::TokenStream;
 

@@ -26,6 +26,64 @@ pub fn free_names_of_expr(expr: &Expr) -> Vec<Ident> {
     visitor.free
 }
 
+/// The free names the *value* of `block` depends on: like [`free_names`], but a top-level `let`
+/// counts only through the uses of what it binds. `let _unused = theta; vec2(x, 0.0)` depends on
+/// `x` alone. A statement that is not a `let` (`acc += theta[k];`, a loop, `v.push(x);`) passes its
+/// names to every local it names, so mutation is followed; nested blocks count whole.
+pub fn value_names(block: &syn::Block) -> Vec<Ident> {
+    use std::collections::HashMap;
+    // A `return` (reported) leaves the value anywhere: every name counts.
+    if first_return(block).is_some() {
+        return free_names(block);
+    }
+    let mut locals: HashMap<String, Vec<Ident>> = HashMap::new();
+    // The free names of `names`, with each local replaced by what it depends on.
+    let resolve = |locals: &HashMap<String, Vec<Ident>>, names: Vec<Ident>| -> Vec<Ident> {
+        names
+            .into_iter()
+            .flat_map(|i| match locals.get(&i.to_string()) {
+                Some(deps) => deps.clone(),
+                None => vec![i],
+            })
+            .collect()
+    };
+    let last = block.stmts.len().saturating_sub(1);
+    let mut value = Vec::new();
+    for (k, stmt) in block.stmts.iter().enumerate() {
+        match stmt {
+            syn::Stmt::Local(local) => {
+                let mut names = Vec::new();
+                if let Some(init) = &local.init {
+                    names.extend(free_names_of_expr(&init.expr));
+                    if let Some((_, diverge)) = &init.diverge {
+                        names.extend(free_names_of_expr(diverge));
+                    }
+                }
+                let deps = resolve(&locals, names);
+                let mut bindings = Bindings(Vec::new());
+                bindings.visit_pat(&local.pat);
+                for name in bindings.0 {
+                    locals.insert(name, deps.clone());
+                }
+            }
+            syn::Stmt::Expr(expr, None) if k == last => {
+                value = resolve(&locals, free_names_of_expr(expr));
+            }
+            syn::Stmt::Expr(expr, _) => {
+                let names = free_names_of_expr(expr);
+                let deps = resolve(&locals, names.clone());
+                for name in names {
+                    if let Some(local) = locals.get_mut(&name.to_string()) {
+                        local.extend(deps.iter().cloned());
+                    }
+                }
+            }
+            syn::Stmt::Item(_) | syn::Stmt::Macro(_) => {}
+        }
+    }
+    value
+}
+
 struct FreeNames {
     scopes: Vec<HashSet<String>>,
     free: Vec<Ident>,
@@ -201,5 +259,26 @@ mod tests {
         assert_eq!(names("{ if let Some(y) = z { y } else { y } }"), ["z", "y"]);
         assert_eq!(names("{ match w { (p, q) => p + q + r } }"), ["w", "r"]);
         assert_eq!(names("{ std::f64::consts::PI * x.powf(e) }"), ["x", "e"]);
+    }
+
+    fn value(src: &str) -> Vec<String> {
+        value_names(&syn::parse_str(src).unwrap())
+            .iter()
+            .map(|i| i.to_string())
+            .collect()
+    }
+
+    #[test]
+    fn unused_lets_do_not_reach_the_value() {
+        assert_eq!(value("{ let _unused = theta; vec2(x, 0.0) }"), ["vec2", "x"]);
+        assert_eq!(value("{ let _ = theta; x }"), ["x"]);
+        // Through a chain of locals, shadowing, and mutation by a later statement.
+        assert_eq!(value("{ let a = theta; let b = a * l; b }"), ["theta", "l"]);
+        assert_eq!(value("{ let a = theta; let a = x; a }"), ["x"]);
+        assert_eq!(
+            value("{ let mut acc = 0.0; for k in 0..2 { acc += phi[k]; } acc }"),
+            ["phi"]
+        );
+        assert_eq!(value("{ let f = |s| s * theta; f(x) }"), ["theta", "x"]);
     }
 }

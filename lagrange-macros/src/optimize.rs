@@ -82,12 +82,12 @@ pub fn optimize(blocks: &mut [syn::Block], scope: &Scope, scalar: &TokenStream) 
         sharer.visit_block_mut(block);
     }
 
-    let hoisted = hoister.hoisted.iter().map(|(ident, expr, used)| {
-        let used = used.iter().map(|n| Ident::new(n, Span::call_site()));
-        quote!(let #ident: #scalar = <#scalar>::from({ #( let #used: f64 = self.#used; )* #expr });)
+    let hoisted = hoister.hoisted.iter().map(|(name, expr, used)| {
+        let used = used.iter().map(|n| ident(n));
+        quote!(let #name: #scalar = <#scalar>::from({ #( let #used: f64 = self.#used; )* #expr });)
     });
     let sincos = shared.iter().map(|name| {
-        let name = Ident::new(name, Span::call_site());
+        let name = ident(name);
         if arrays.contains(&name.to_string()) {
             let table = format_ident!("__sin_cos_{}", name);
             return quote!(let #table = #name.map(|__x| __x.sin_cos()););
@@ -99,6 +99,16 @@ pub fn optimize(blocks: &mut [syn::Block], scope: &Scope, scalar: &TokenStream) 
         quote!(let (#s, #c) = #name.sin_cos();)
     });
     quote!(#(#hoisted)* #(#sincos)*)
+}
+
+/// The identifier a name was read from: `r#type` (a raw identifier, as `Ident::to_string` writes
+/// it) becomes a raw identifier again. `format_ident!` drops the `r#` of an `Ident` argument, so
+/// `__sin_{}` of it is `__sin_type`.
+fn ident(name: &str) -> Ident {
+    match name.strip_prefix("r#") {
+        Some(raw) => Ident::new_raw(raw, Span::call_site()),
+        None => Ident::new(name, Span::call_site()),
+    }
 }
 
 /// Names bound by patterns inside the bodies.
@@ -115,7 +125,7 @@ impl<'ast> Visit<'ast> for Bound {
 
 /// A single-segment path's identifier.
 fn single_ident(expr: &Expr) -> Option<&Ident> {
-    match expr {
+    match crate::ast::ungroup(expr) {
         Expr::Path(p) if p.qself.is_none() && p.attrs.is_empty() => p.path.get_ident(),
         _ => None,
     }
@@ -137,6 +147,7 @@ fn parameter_only(expr: &Expr, params: &BTreeSet<String>, used: &mut BTreeSet<St
             _ => false,
         },
         Expr::Paren(p) => parameter_only(&p.expr, params, used),
+        Expr::Group(g) => parameter_only(&g.expr, params, used),
         Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => parameter_only(&u.expr, params, used),
         Expr::Binary(b)
             if matches!(
@@ -200,7 +211,7 @@ fn trig_call<'e>(
     if !m.args.is_empty() || m.turbofish.is_some() || !(m.method == "sin" || m.method == "cos") {
         return None;
     }
-    if let Expr::Index(index) = &*m.receiver {
+    if let Expr::Index(index) = crate::ast::ungroup(&m.receiver) {
         let name = single_ident(&index.expr)?.to_string();
         return arrays
             .contains(&name)
@@ -242,7 +253,7 @@ impl VisitMut for TrigShare<'_> {
     fn visit_expr_mut(&mut self, expr: &mut Expr) {
         let replacement = match trig_call(expr, self.names, self.arrays) {
             Some((name, method, Some(index))) => {
-                let table = format_ident!("__sin_cos_{}", name);
+                let table = format_ident!("__sin_cos_{}", ident(&name));
                 let half = if method == "sin" {
                     quote!(0)
                 } else {
@@ -253,7 +264,7 @@ impl VisitMut for TrigShare<'_> {
                 Some(syn::parse_quote!(#table[#index].#half))
             }
             Some((name, method, None)) => {
-                let ident = format_ident!("__{}_{}", method, name);
+                let ident = format_ident!("__{}_{}", method, ident(&name));
                 Some(syn::parse_quote!(#ident))
             }
             None => None,

@@ -1047,34 +1047,7 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
         }
     }
     // The declaration first: a velocity row that is not affine in q̇ is refused whatever the state.
-    if has_velocity::<M, N, K, C>() {
-        // Affine in q̇ ⇔ zero second derivative along any direction w; ẋ(q̇ + s w) = ẋ + s J w.
-        let w: [f64; N] = std::array::from_fn(|j| v[j] + 1.0);
-        let qw: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], w[j]));
-        let jw = model.cartesian(Dual::from_re(t), &qw);
-        let t2 = Dual2::from_re(t);
-        let q2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::from_re(q[j]));
-        let v2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::new(v[j], w[j], 0.0));
-        let x2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::from_re(x[i]));
-        let xd2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::new(x_dot[i], jw[i].eps, 0.0));
-        let h = model.velocity_constraints(t2, &q2, &v2, &x2, &xd2);
-        for i in 0..C {
-            if !M::KINDS[i].is_velocity() {
-                continue;
-            }
-            // The quadratic term at s = 1 against the size of the affine part there.
-            let deviation = 0.5 * h[i].v2.abs();
-            let size = h[i].re.abs() + h[i].v1.abs();
-            if !(deviation <= 1e-9 * size) && deviation > 0.0 || !deviation.is_finite() {
-                return Err(Error::NonlinearVelocityConstraint {
-                    constraint: M::NAMES[i],
-                    t,
-                    configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, q),
-                    deviation,
-                });
-            }
-        }
-    }
+    velocity_rows_affine_at(model, t, q, v, &x, &x_dot)?;
     let mut violated = Vec::new();
     for i in 0..C {
         let r = match M::KINDS[i] {
@@ -1105,6 +1078,75 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
                 .collect::<Vec<_>>()
                 .join(", "),
         });
+    }
+    Ok(())
+}
+
+/// Checks that every velocity row is affine in q̇ at (t, q, q̇) — what the declaration promises and
+/// the solve relies on — as every entry point does, whatever the state's consistency. A mechanism
+/// without velocity rows has nothing to check.
+///
+/// Errors: [`Error::NonlinearVelocityConstraint`], naming the row and its quadratic part.
+pub fn check_velocity_rows_affine<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> Result<()> {
+    if !has_velocity::<M, N, K, C>() {
+        return Ok(());
+    }
+    let (x, x_dot) = dynamics::cartesian_velocities(model, t, q, v);
+    velocity_rows_affine_at(model, t, q, v, &x, &x_dot)
+}
+
+/// [`check_velocity_rows_affine`] with x and ẋ at the state already evaluated.
+fn velocity_rows_affine_at<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    x: &[f64; K],
+    x_dot: &[f64; K],
+) -> Result<()> {
+    if !has_velocity::<M, N, K, C>() {
+        return Ok(());
+    }
+    // Affine in q̇ ⇔ zero second derivative along any direction w; ẋ(q̇ + s w) = ẋ + s J w.
+    let w: [f64; N] = std::array::from_fn(|j| v[j] + 1.0);
+    let qw: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], w[j]));
+    let jw = model.cartesian(Dual::from_re(t), &qw);
+    let t2 = Dual2::from_re(t);
+    let q2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::from_re(q[j]));
+    let v2: [Dual2<f64>; N] = std::array::from_fn(|j| Dual2::new(v[j], w[j], 0.0));
+    let x2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::from_re(x[i]));
+    let xd2: [Dual2<f64>; K] = std::array::from_fn(|i| Dual2::new(x_dot[i], jw[i].eps, 0.0));
+    let h = model.velocity_constraints(t2, &q2, &v2, &x2, &xd2);
+    for i in 0..C {
+        if !M::KINDS[i].is_velocity() {
+            continue;
+        }
+        // The quadratic term at s = 1 against the size of the affine part there.
+        let deviation = 0.5 * h[i].v2.abs();
+        let size = h[i].re.abs() + h[i].v1.abs();
+        if !(deviation <= 1e-9 * size) && deviation > 0.0 || !deviation.is_finite() {
+            return Err(Error::NonlinearVelocityConstraint {
+                constraint: M::NAMES[i],
+                t,
+                configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, q),
+                deviation,
+            });
+        }
     }
     Ok(())
 }

@@ -234,6 +234,89 @@ pub mod chain {
             __weights
         }
     }
+    impl Chain {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_bob_0<__D: ::lagrange::__private::Scalar>(
+            &self,
+            i: usize,
+            __t: __D,
+            __theta_at_i: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let l = <__D>::from(self.l);
+            let (__sin___theta_at_i, __cos___theta_at_i) = __theta_at_i.sin_cos();
+            {
+                let link = vec2(__sin___theta_at_i, -__cos___theta_at_i) * l;
+                { link }
+            }
+        }
+    }
+    impl ::lagrange::__private::tree::Tree<3, 6, 1, 3> for Chain {
+        const BODIES: [::lagrange::__private::tree::Body<1>; 3] = [
+            ::lagrange::__private::tree::Body {
+                row: 0,
+                dim: 2,
+                parent: ::lagrange::__private::core::option::Option::None,
+                seeds: [::lagrange::__private::tree::Seed::Coordinate(0)],
+            },
+            ::lagrange::__private::tree::Body {
+                row: 2,
+                dim: 2,
+                parent: ::lagrange::__private::core::option::Option::Some(0),
+                seeds: [::lagrange::__private::tree::Seed::Coordinate(1)],
+            },
+            ::lagrange::__private::tree::Body {
+                row: 4,
+                dim: 2,
+                parent: ::lagrange::__private::core::option::Option::Some(1),
+                seeds: [::lagrange::__private::tree::Seed::Coordinate(2)],
+            },
+        ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn displacements<S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: S,
+            __q: &[S; 3],
+            __v: &[S; 3],
+        ) -> [::lagrange::__private::tree::Seeded<S, 1>; 6] {
+            let __body_0 = self
+                .__lagrange_displacement_bob_0(
+                    0,
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
+                );
+            let __body_1 = self
+                .__lagrange_displacement_bob_0(
+                    1,
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[1], __v[1], 0),
+                );
+            let __body_2 = self
+                .__lagrange_displacement_bob_0(
+                    2,
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[2], __v[2], 0),
+                );
+            [__body_0.x, __body_0.y, __body_1.x, __body_1.y, __body_2.x, __body_2.y]
+        }
+    }
     impl ::lagrange::__private::Mechanism<3> for Chain {
         type Coords = Coords;
         #[inline]
@@ -248,11 +331,13 @@ pub mod chain {
             q: &[S; 3],
             v: &[S; 3],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 3> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
+            ::lagrange::__private::tree::equations_of_motion::<
                 Self,
                 S,
                 3,
                 6,
+                1,
+                3,
             >(self, t, q, v)
         }
         #[inline]

@@ -414,6 +414,11 @@ pub mod everything {
             __weights[3] += __gravity_down.x * __masses[3];
             __weights[4] += __gravity_down.y * __masses[4];
             __weights[5] += __gravity_down.z * __masses[5];
+            let __gravity_plane_down: ::lagrange::__private::geometry::Vec2<f64> = {
+                vec2(0.0, -g)
+            };
+            __weights[0] += __gravity_plane_down.x * __masses[0];
+            __weights[1] += __gravity_plane_down.y * __masses[1];
             __weights
         }
     }

@@ -252,6 +252,19 @@ pub mod sliding_block {
                 2,
             >(self, t, q, v, &mode)
         }
+        fn check_declaration_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::lagrange_core::constraints::check_velocity_rows_affine::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, t, q, v)
+        }
         fn check_constraints(
             &self,
             t: f64,

@@ -11,6 +11,10 @@ mod four_bar_scene;
 #[path = "../../../examples/cartesian_pendulum.rs"]
 #[allow(dead_code)]
 mod cartesian_pendulum_scene;
+// The constrained mechanisms' KKT systems written out by hand, as in the accelerations benchmark.
+#[path = "../../../benches/common/constrained.rs"]
+#[allow(dead_code)]
+mod constrained;
 // The N-link chains declared link by link, as in the chain benchmark.
 #[path = "../../../benches/chains/mod.rs"]
 #[allow(dead_code)]
@@ -152,6 +156,55 @@ fn hw_chain<const N: usize>(m: f64, l: f64, g: f64, q: &[f64; N], v: &[f64; N]) 
         .expect("positive definite")
         .solve(&force)
         .into()
+}
+/// `calls` calls of the link-by-link chain of `links` links (1, 2, 4, …, 64).
+fn chain_links(links: &str, calls: usize) -> f64 {
+    macro_rules! run {
+        ($module:ident, $ty:ident, $n:literal) => {{
+            use chains::$module::*;
+            let sys = $ty { m: 1.0, l: 0.5, g: 9.81 };
+            let (q, v) = chain_state::<$n>();
+            let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+            let mut acc = 0.0;
+            for _ in 0..calls {
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().to_array()[0];
+            }
+            acc
+        }};
+    }
+    match links {
+        "1" => run!(chain1, Chain1, 1),
+        "2" => run!(chain2, Chain2, 2),
+        "4" => run!(chain4, Chain4, 4),
+        "8" => run!(chain8, Chain8, 8),
+        "16" => run!(chain16, Chain16, 16),
+        "32" => run!(chain32, Chain32, 32),
+        "64" => run!(chain64, Chain64, 64),
+        other => panic!("no chain of {other} links"),
+    }
+}
+/// `calls` calls of the closed form of the chain of `links` links.
+fn hw_chain_runs(links: &str, calls: usize) -> f64 {
+    macro_rules! run {
+        ($n:literal) => {{
+            let (q, v) = chain_state::<$n>();
+            let mut acc = 0.0;
+            for _ in 0..calls {
+                acc += hw_chain::<$n>(1.0, 0.5, 9.81, black_box(&q), black_box(&v))[0];
+            }
+            acc
+        }};
+    }
+    match links {
+        "1" => run!(1),
+        "2" => run!(2),
+        "4" => run!(4),
+        "8" => run!(8),
+        "16" => run!(16),
+        "32" => run!(32),
+        "64" => run!(64),
+        other => panic!("no chain of {other} links"),
+    }
 }
 /// θⱼ and θ̇ⱼ spread over the links, as in the chain benchmark.
 fn chain_state<const N: usize>() -> ([f64; N], [f64; N]) {
@@ -370,6 +423,32 @@ fn main() {
                 acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
             }
         }
+        "hw_four_bar" => {
+            let (sys, s) = four_bar_scene::linkage();
+            let hand = constrained::FourBar {
+                l: [sys.l1, sys.l2, sys.l3],
+                m: [sys.m1, sys.m2, sys.m3],
+                d: sys.d,
+                g: sys.g,
+            };
+            let (q, v) = (s.q.to_array(), s.v.to_array());
+            for _ in 0..n {
+                acc += constrained::four_bar(black_box(&hand), black_box(q), black_box(v))[0];
+            }
+        }
+        "hw_cartesian_pendulum" => {
+            let hand = constrained::CartesianPendulum {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            let (th, w) = (0.7f64, 1.1f64);
+            let q = [0.8 * th.sin(), -0.8 * th.cos()];
+            let v = [0.8 * w * th.cos(), 0.8 * w * th.sin()];
+            for _ in 0..n {
+                acc += constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))[0];
+            }
+        }
         "cartesian_pendulum" => {
             use cartesian_pendulum_scene::cartesian_pendulum::*;
             let sys = CartesianPendulum {
@@ -466,24 +545,11 @@ fn main() {
                 acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta[0];
             }
         }
-        "chain32_links" => {
-            use chains::chain32::*;
-            let sys = Chain32 {
-                m: 1.0,
-                l: 0.5,
-                g: 9.81,
-            };
-            let (q, v) = chain_state::<32>();
-            let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta0;
-            }
+        mode if mode.starts_with("chain") && mode.ends_with("_links") => {
+            acc += chain_links(&mode["chain".len()..mode.len() - "_links".len()], n);
         }
-        "hw_chain32" => {
-            let (q, v) = chain_state::<32>();
-            for _ in 0..n {
-                acc += hw_chain::<32>(1.0, 0.5, 9.81, black_box(&q), black_box(&v))[0];
-            }
+        mode if mode.starts_with("hw_chain") => {
+            acc += hw_chain_runs(&mode["hw_chain".len()..], n);
         }
         "drag" => {
             use drag::*;

@@ -1,47 +1,54 @@
-//! Expansion of a tree of translations (see [`crate::structure`]): one generic function per body
-//! evaluating its own displacement, and the `Tree` impl that seeds each body on its own coordinates.
+//! Expansion of a tree of translations (see [`crate::structure`]): one generic function per distinct
+//! displacement, and the `Tree` impl that seeds each body (or family member) on its own coordinates.
 
-use crate::check::{Dim, Model};
-use crate::expand::{lit, optimized_blocks, position_type, prelude, private, scalar};
-use crate::structure::{Tree, TreeBody};
+use crate::check::{family_index, Dim, Model};
+use crate::expand::{lit, position_type, prelude, private, scalar};
+use crate::optimize;
+use crate::structure::{Displacement, Tree, TreeBody};
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
 
-/// The displacement functions and `impl Tree<N, K, W>`.
+/// The displacement functions and `impl Tree<N, K, W, B>`.
 pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
     let p = private();
     let params = model.params_ident;
     let (n, k, w) = (lit(model.dof()), lit(model.rows), lit(tree.width));
-    let functions = model
-        .bodies
+    let functions = tree
+        .functions
         .iter()
-        .zip(&tree.bodies)
-        .map(|(body, own)| displacement_fn(model, body.decl.ident(), body.shape, own));
+        .enumerate()
+        .map(|(f, displacement)| displacement_fn(model, f, displacement));
 
     let mut rows = vec![quote!(); model.rows];
     let mut bodies = Vec::new();
     let mut calls = Vec::new();
-    for (body, own) in model.bodies.iter().zip(&tree.bodies) {
-        let name = body.decl.ident();
-        let function = displacement_name(name);
-        let slots = own.coordinates.iter().enumerate().map(|(j, (_, c))| {
+    for (b, own) in tree.bodies.iter().enumerate() {
+        let body = &model.bodies[own.body];
+        let local = format_ident!("__body_{}", b);
+        let function = function_name(model, own.function, &tree.functions[own.function]);
+        let member = own.member.map(|m| {
+            let m = lit(m);
+            quote!(#m,)
+        });
+        let slots = own.slots.iter().enumerate().map(|(j, c)| {
             let (c, j) = (lit(*c), lit(j));
             quote!(#p::tree::seed(__q[#c], __v[#c], #j))
         });
         let time = match own.names_time {
             true => {
-                let j = lit(own.coordinates.len());
+                let j = lit(own.slots.len());
                 quote!(#p::tree::time(__t, #p::core::option::Option::Some(#j)))
             }
             false => quote!(#p::tree::time(__t, #p::core::option::Option::None)),
         };
-        calls.push(quote!(let #name = self.#function(#time, #(#slots),*);));
+        calls.push(quote!(let #local = self.#function(#member #time, #(#slots),*);));
         let components = components(body.shape.dim());
+        let first = body.row + own.member.unwrap_or(0) * components.len();
         for (c, component) in components.iter().enumerate() {
-            rows[body.row + c] = quote!(#name.#component);
+            rows[first + c] = quote!(#local.#component);
         }
-        let (row, dim) = (lit(body.row), lit(components.len()));
+        let (row, dim) = (lit(first), lit(components.len()));
         let parent = match own.parent {
             Some(parent) => {
                 let parent = lit(parent);
@@ -70,8 +77,17 @@ pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
     }
 }
 
-fn displacement_name(body: &Ident) -> Ident {
-    format_ident!("__lagrange_displacement_{}", body)
+/// `__lagrange_displacement_bob2`, or `__lagrange_displacement_bob_1` for a body with several
+/// (the branches of a family).
+fn function_name(model: &Model, f: usize, displacement: &Displacement) -> Ident {
+    let body = model.bodies[displacement.body].decl.ident();
+    let name = body.to_string();
+    let name = name.trim_start_matches("r#");
+    if model.bodies[displacement.body].count.is_some() {
+        format_ident!("__lagrange_displacement_{}_{}", name, f)
+    } else {
+        format_ident!("__lagrange_displacement_{}", name)
+    }
 }
 
 fn components(dim: Dim) -> Vec<Ident> {
@@ -86,9 +102,9 @@ fn components(dim: Dim) -> Vec<Ident> {
 fn row_seeds(own: &TreeBody, width: usize) -> Vec<TokenStream> {
     let seed = quote!(::lagrange::__private::tree::Seed);
     let mut out: Vec<TokenStream> = own
-        .coordinates
+        .slots
         .iter()
-        .map(|(_, c)| {
+        .map(|c| {
             let c = lit(*c);
             quote!(#seed::Coordinate(#c))
         })
@@ -101,17 +117,14 @@ fn row_seeds(own: &TreeBody, width: usize) -> Vec<TokenStream> {
 }
 
 /// `fn __lagrange_displacement_bob2<__D>(&self, __t: __D, theta2: __D) -> Vec2<__D>`: the body's
-/// own part, on any scalar, with its coordinates as arguments.
-fn displacement_fn(
-    model: &Model,
-    body: &Ident,
-    shape: crate::check::Shape,
-    own: &TreeBody,
-) -> TokenStream {
+/// own part, on any scalar, with its coordinates (or the array elements it reads) as arguments; a
+/// family's function takes the member's index first.
+fn displacement_fn(model: &Model, f: usize, displacement: &Displacement) -> TokenStream {
     let (p, d) = (private(), scalar());
-    let name = displacement_name(body);
+    let body = &model.bodies[displacement.body];
+    let name = function_name(model, f, displacement);
     let prelude = prelude();
-    let used: BTreeSet<String> = crate::names::free_names(&own.displacement)
+    let used: BTreeSet<String> = crate::names::free_names(&displacement.block)
         .iter()
         .map(Ident::to_string)
         .collect();
@@ -121,14 +134,31 @@ fn displacement_fn(
         .map(|p| &p.ident)
         .filter(|p| used.contains(&p.to_string()));
     let time = used.contains("t").then(|| quote!(let t = __t;));
-    let coordinates = own.coordinates.iter().map(|(c, _)| c);
-    let (shared, blocks) = optimized_blocks(model, std::iter::once(&own.displacement));
-    let block = &blocks[0];
-    let ty = position_type(shape);
+    let index = family_index(body.decl).map(|i| quote!(#i: usize,));
+    let arguments = &displacement.arguments;
+    // Parameter-only subexpressions in f64, sin and cos of an argument shared (see `optimize`).
+    let mut blocks = [displacement.block.clone()];
+    let param_names: BTreeSet<String> = model.params.iter().map(|p| p.ident.to_string()).collect();
+    let trig: BTreeSet<String> = arguments
+        .iter()
+        .map(Ident::to_string)
+        .chain(std::iter::once("t".to_string()))
+        .collect();
+    let shared = optimize::optimize(
+        &mut blocks,
+        &optimize::Scope {
+            params: &param_names,
+            trig: &trig,
+            arrays: &BTreeSet::new(),
+        },
+        &d,
+    );
+    let block = crate::lift::lift_block(&blocks[0], &d);
+    let ty = position_type(body.shape);
     quote! {
         #[inline(always)]
         #[allow(unused_variables, non_snake_case, clippy::all)]
-        fn #name<#d: #p::Scalar>(&self, __t: #d, #(#coordinates: #d),*) -> #ty {
+        fn #name<#d: #p::Scalar>(&self, #index __t: #d, #(#arguments: #d),*) -> #ty {
             #prelude
             #( let #params = <#d>::from(self.#params); )*
             #time

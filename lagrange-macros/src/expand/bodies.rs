@@ -1,0 +1,282 @@
+//! `Bodies<T = f64>`, `BodyVelocities<T = f64>` and the inherent impl of the parameter struct:
+//! `bodies`, `body_velocities`, the generic `__lagrange_bodies`, and the conversions between bodies
+//! and rows of x (flatten, unflatten).
+
+use super::{bind_inputs, lit, optimized_blocks, position_type, prelude, private};
+use crate::check::{self, Body, Dim, Model, Shape};
+use proc_macro2::{Ident, TokenStream};
+use quote::quote;
+
+/// The type of a body's position and velocity in `Bodies<T>` / `BodyVelocities<T>`.
+fn body_types(shape: Shape) -> (TokenStream, TokenStream) {
+    let g = quote!(::lagrange::__private::geometry);
+    match shape {
+        Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => {
+            (quote!(#g::Vec2<T>), quote!(#g::Vec2<T>))
+        }
+        Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => {
+            (quote!(#g::Vec3<T>), quote!(#g::Vec3<T>))
+        }
+        Shape::Planar => (quote!(#g::Planar<T>), quote!(#g::Planar<T>)),
+        Shape::Spatial => (quote!(#g::Spatial<T>), quote!(#g::Vec3<T>)),
+    }
+}
+
+pub(super) fn bodies_structs(model: &Model) -> TokenStream {
+    let p = private();
+    let names: Vec<&Ident> = model.bodies.iter().map(|b| b.decl.ident()).collect();
+    let docs: Vec<Vec<&syn::Attribute>> = model
+        .bodies
+        .iter()
+        .map(|b| {
+            b.decl
+                .attrs
+                .iter()
+                .filter(|a| a.path().is_ident("doc"))
+                .collect()
+        })
+        .collect();
+    let (positions, velocities): (Vec<_>, Vec<_>) = model
+        .bodies
+        .iter()
+        .map(|b| {
+            let (position, velocity) = body_types(b.shape);
+            match b.count {
+                Some(n) => {
+                    let n = lit(n);
+                    (quote!([#position; #n]), quote!([#velocity; #n]))
+                }
+                None => (position, velocity),
+            }
+        })
+        .unzip();
+    let derive = quote!(#[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq)]);
+    quote! {
+        /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+        /// body's centre of mass and orientation.
+        #derive
+        #[allow(dead_code)]
+        pub struct Bodies<T = f64> {
+            #( #(#docs)* pub #names: #positions, )*
+        }
+
+        /// The velocity of every body and point, by name: a particle or point's velocity; for a
+        /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+        /// spatial body, its centre-of-mass velocity.
+        #derive
+        #[allow(dead_code)]
+        pub struct BodyVelocities<T = f64> {
+            #( #(#docs)* pub #names: #velocities, )*
+        }
+    }
+}
+
+/// The inherent impl: `bodies`, `body_velocities`, and the private generic body functions.
+pub(super) fn inherent_impl(model: &Model) -> TokenStream {
+    let p = private();
+    let (params, n, k) = (model.params_ident, lit(model.dof()), lit(model.rows));
+    let bodies_fn = bodies_fn(model);
+    let from_cartesian = (!model.potentials.is_empty()
+        || !model.gravities.is_empty()
+        || !model.forces.is_empty()
+        || !model.constraints.is_empty())
+    .then(|| positions_from_cartesian(model));
+    let velocities_from_cartesian = velocities_from_cartesian(model);
+    quote! {
+        impl #params {
+            /// Every body and point at `state`, by name.
+            #[allow(dead_code)]
+            pub fn bodies(&self, state: &State) -> Bodies {
+                let q = <Coords as #p::Coordinates<#n>>::to_array(&state.q);
+                self.__lagrange_bodies(state.t, &q)
+            }
+
+            /// The velocity of every body and point at `state`, by name (one forward-mode pass
+            /// along (q̇, 1)).
+            #[allow(dead_code)]
+            pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+                let q = <Coords as #p::Coordinates<#n>>::to_array(&state.q);
+                let v = <Coords as #p::Coordinates<#n>>::to_array(&state.v);
+                let (_, x_dot) = #p::dynamics::cartesian_velocities::<Self, f64, #n, #k>(self, state.t, &q, &v);
+                Self::__lagrange_velocities_from_cartesian(&x_dot)
+            }
+
+            #bodies_fn
+            #from_cartesian
+            #velocities_from_cartesian
+        }
+    }
+}
+
+/// The user's position functions as `let` bindings in declaration order, on any scalar.
+fn bodies_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let n = lit(model.dof());
+    let prelude = prelude();
+    let used = model.names_used_by(model.bodies.iter().map(|b| b.decl));
+    let inputs = bind_inputs(model, &used, quote!(__q));
+    let names: Vec<&Ident> = model.bodies.iter().map(|b| b.decl.ident()).collect();
+    let (shared, blocks) = optimized_blocks(model, model.bodies.iter().map(|b| &b.decl.block));
+    let values: Vec<TokenStream> = model
+        .bodies
+        .iter()
+        .zip(blocks)
+        .map(|(b, block)| {
+            let ty = position_type(b.shape);
+            let name = b.decl.ident();
+            match (b.count, check::family_index(b.decl)) {
+                // A family: member i is the block with the index bound, earlier members readable.
+                (Some(n), Some(index)) => {
+                    let n = lit(n);
+                    let zero = zero_position(b.shape);
+                    quote!(let #name: [#ty; #n] = {
+                        let mut #name: [#ty; #n] = #p::core::array::from_fn(|_| #zero);
+                        for #index in 0..#n {
+                            let __member: #ty = #block;
+                            #name[#index] = __member;
+                        }
+                        #name
+                    };)
+                }
+                _ => quote!(let #name: #ty = #block;),
+            }
+        })
+        .collect();
+    quote! {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> Bodies<__D> {
+            #prelude
+            #inputs
+            #shared
+            #(#values)*
+            Bodies { #(#names),* }
+        }
+    }
+}
+
+/// A position of `shape` at the origin, on `__D` (the start of a family being filled in).
+fn zero_position(shape: Shape) -> TokenStream {
+    let g = quote!(::lagrange::__private::geometry);
+    let z = quote!(<__D>::zero());
+    match shape {
+        Shape::Planar => quote!(#g::planar(#g::vec2(#z, #z), #z)),
+        Shape::Spatial => {
+            quote!(#g::spatial(#g::vec3(#z, #z, #z), #g::Rot3 { rows: [[#z, #z, #z], [#z, #z, #z], [#z, #z, #z]] }))
+        }
+        _ if shape.dim() == Dim::Two => quote!(#g::vec2(#z, #z)),
+        _ => quote!(#g::vec3(#z, #z, #z)),
+    }
+}
+
+/// `x[i]` as tokens.
+fn row(x: &TokenStream, i: usize) -> TokenStream {
+    let i = lit(i);
+    quote!(#x[#i])
+}
+
+/// A body rebuilt from its rows of x (or ẋ, for velocities).
+fn unflatten(body: &Body, x: &TokenStream, velocity: bool) -> TokenStream {
+    match body.count {
+        Some(n) => {
+            let members =
+                (0..n).map(|k| unflatten_at(body, body.row + k * body.shape.rows(), x, velocity));
+            quote!([#(#members),*])
+        }
+        None => unflatten_at(body, body.row, x, velocity),
+    }
+}
+
+/// One body (or family member) whose first row is `first`.
+fn unflatten_at(body: &Body, first: usize, x: &TokenStream, velocity: bool) -> TokenStream {
+    let g = quote!(::lagrange::__private::geometry);
+    let r = |i: usize| row(x, first + i);
+    let (r0, r1, r2) = (r(0), r(1), r(2));
+    match body.shape {
+        Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => quote!(#g::vec2(#r0, #r1)),
+        Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => quote!(#g::vec3(#r0, #r1, #r2)),
+        Shape::Planar => quote!(#g::planar(#g::vec2(#r0, #r1), #r2)),
+        Shape::Spatial if velocity => quote!(#g::vec3(#r0, #r1, #r2)),
+        Shape::Spatial => {
+            // Column k of the rotation occupies rows 3 + 3k .. 6 + 3k: rows[r][k] = x[3 + 3k + r].
+            let rows = (0..3).map(|i| {
+                let entries = (0..3).map(|k| r(3 + 3 * k + i));
+                quote!([#(#entries),*])
+            });
+            quote!(#g::spatial(#g::vec3(#r0, #r1, #r2), #g::Rot3 { rows: [#(#rows),*] }))
+        }
+    }
+}
+
+/// The rows of x a body (every member of a family) occupies, read from its position `b`.
+pub(super) fn flatten(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
+    match body.count {
+        Some(n) => (0..n)
+            .flat_map(|k| {
+                let k = lit(k);
+                flatten_one(body, &quote!(#b[#k]))
+            })
+            .collect(),
+        None => flatten_one(body, b),
+    }
+}
+
+fn flatten_one(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
+    match body.shape {
+        Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => vec![quote!(#b.x), quote!(#b.y)],
+        Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => {
+            vec![quote!(#b.x), quote!(#b.y), quote!(#b.z)]
+        }
+        Shape::Planar => vec![
+            quote!(#b.position.x),
+            quote!(#b.position.y),
+            quote!(#b.angle),
+        ],
+        Shape::Spatial => {
+            let mut rows = vec![
+                quote!(#b.position.x),
+                quote!(#b.position.y),
+                quote!(#b.position.z),
+            ];
+            for k in 0..3usize {
+                rows.extend((0..3).map(|r| {
+                    let (r, k) = (lit(r), lit(k));
+                    quote!(#b.rotation.rows[#r][#k])
+                }));
+            }
+            rows
+        }
+    }
+}
+
+fn positions_from_cartesian(model: &Model) -> TokenStream {
+    let p = private();
+    let k = lit(model.rows);
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let values = model
+        .bodies
+        .iter()
+        .map(|b| unflatten(b, &quote!(__x), false));
+    quote! {
+        #[inline(always)]
+        fn __lagrange_bodies_from_cartesian<__D: #p::Scalar>(__x: &[__D; #k]) -> Bodies<__D> {
+            Bodies { #(#names: #values),* }
+        }
+    }
+}
+
+fn velocities_from_cartesian(model: &Model) -> TokenStream {
+    let p = private();
+    let k = lit(model.rows);
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let values = model
+        .bodies
+        .iter()
+        .map(|b| unflatten(b, &quote!(__x_dot), true));
+    quote! {
+        #[inline(always)]
+        fn __lagrange_velocities_from_cartesian<__D: #p::Scalar>(__x_dot: &[__D; #k]) -> BodyVelocities<__D> {
+            BodyVelocities { #(#names: #values),* }
+        }
+    }
+}

@@ -1,0 +1,140 @@
+//! The `Constraints` impl: names and kinds, the position and velocity rows, friction coefficients.
+
+use super::{bind_bodies, bind_coordinates, bind_inputs, lit, prelude, private, scalar};
+use crate::attr::Kind;
+use crate::check::Model;
+use crate::lift;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+/// The `Constraints` impl: one row per constraint item, in declaration order.
+pub(super) fn constraints_impl(model: &Model) -> TokenStream {
+    let p = private();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    let (params, n, k, c) = (
+        model.params_ident,
+        lit(model.dof()),
+        lit(model.rows),
+        lit(model.constraints.len()),
+    );
+    let names = model.constraints.iter().map(|r| r.decl.ident().to_string());
+    let kinds = model
+        .constraints
+        .iter()
+        .map(|r| match (r.decl.kind(), r.normal) {
+            (Kind::Constraint, _) => quote!(#constraints::ConstraintKind::Holonomic),
+            (Kind::Unilateral, _) => quote!(#constraints::ConstraintKind::Unilateral),
+            (Kind::VelocityConstraint, _) => quote!(#constraints::ConstraintKind::Velocity),
+            (_, normal) => {
+                let normal = lit(normal.unwrap_or_default());
+                quote!(#constraints::ConstraintKind::Friction { normal: #normal })
+            }
+        });
+    let is_position = |kind: Kind| matches!(kind, Kind::Constraint | Kind::Unilateral);
+    // `position_constraints` is required; the other two only when a row needs them.
+    let position = constraint_rows_fn(model, true);
+    let velocity = model
+        .constraints
+        .iter()
+        .any(|r| !is_position(r.decl.kind()))
+        .then(|| constraint_rows_fn(model, false));
+    let friction = model
+        .constraints
+        .iter()
+        .any(|r| r.decl.kind() == Kind::Friction)
+        .then(|| friction_fn(model));
+    quote! {
+        impl #constraints::Constraints<#n, #k, #c> for #params {
+            const NAMES: [&'static str; #c] = [#(#names),*];
+            const KINDS: [#constraints::ConstraintKind; #c] = [#(#kinds),*];
+            #position
+            #velocity
+            #friction
+        }
+    }
+}
+
+/// `position_constraints` (g or c per position row, zero elsewhere) or `velocity_constraints`
+/// (h or the slip velocity per velocity row, zero elsewhere).
+fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
+    let p = private();
+    let (n, k, c, d) = (
+        lit(model.dof()),
+        lit(model.rows),
+        lit(model.constraints.len()),
+        scalar(),
+    );
+    let prelude = prelude();
+    let rows: Vec<_> = model
+        .constraints
+        .iter()
+        .filter(|r| matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position)
+        .map(|r| r.decl)
+        .collect();
+    let inputs = bind_inputs(
+        model,
+        &model.names_used_by(rows.iter().copied()),
+        quote!(__q),
+    );
+    let bodies = bind_bodies(model);
+    let values = model.constraints.iter().map(|r| {
+        if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position {
+            let block = lift::lift_block(&r.decl.block, &d);
+            quote!({ let __row: __D = #block; __row })
+        } else {
+            quote!(<__D>::zero())
+        }
+    });
+    let signature = if position {
+        quote!(fn position_constraints<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> [__D; #c])
+    } else {
+        quote!(fn velocity_constraints<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], __x: &[__D; #k], __x_dot: &[__D; #k]) -> [__D; #c])
+    };
+    let velocities = (!position).then(|| {
+        let coords = bind_coordinates(model, &quote!(__v), "_dot");
+        let names = model.bodies.iter().map(|b| b.decl.ident());
+        let body_velocities = model.bodies.iter().map(|b| format_ident!("{}_dot", b.decl.ident()));
+        quote! {
+            #coords
+            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
+        }
+    });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        #signature {
+            #prelude
+            #inputs
+            #bodies
+            #velocities
+            [#(#values),*]
+        }
+    }
+}
+
+/// `friction_coefficients`: μₖ and μₛ (μₛ = μₖ unless given) of each friction row.
+fn friction_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    let params = model.params.iter().map(|p| &p.ident);
+    let arms = model
+        .constraints
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.decl.kind() == Kind::Friction)
+        .map(|(i, r)| {
+            let i = lit(i);
+            let kinetic = r.decl.args.kinetic.as_ref();
+            let stiction = r.decl.args.stiction.as_ref().or(kinetic);
+            quote!(#i => #constraints::Coulomb { kinetic: #kinetic, stiction: #stiction },)
+        });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn friction_coefficients(&self, row: usize) -> #constraints::Coulomb {
+            #( let #params: f64 = self.#params; )*
+            match row {
+                #(#arms)*
+                _ => #constraints::Coulomb::default(),
+            }
+        }
+    }
+}

@@ -1,0 +1,87 @@
+//! The `Mechanism` impl, and the hooks it overrides when the mechanism is constrained.
+
+use super::{lit, private};
+use proc_macro2::{Ident, TokenStream};
+use quote::quote;
+
+/// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
+pub(super) fn mechanism_impl(
+    params: &Ident,
+    n: usize,
+    k: usize,
+    constrained: Option<usize>,
+    tree: Option<(usize, usize)>,
+) -> TokenStream {
+    let (p, n, k) = (private(), lit(n), lit(k));
+    // A tree of translations is assembled from each body's own seeds; anything else densely.
+    let equations_of_motion = match tree {
+        Some((w, b)) => {
+            let (w, b) = (lit(w), lit(b));
+            quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
+        }
+        None => quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v)),
+    };
+    let overrides = constrained.map(|c| constrained_overrides(n.clone(), k.clone(), lit(c)));
+    let validate_constraints = constrained.map(|c| {
+        let c = lit(c);
+        quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
+    });
+    quote! {
+        impl #p::Mechanism<#n> for #params {
+            type Coords = Coords;
+            #[inline]
+            fn validate(&self) -> #p::Result<()> {
+                <Self as #p::Model<#n, #k>>::validate(self)?;
+                #validate_constraints
+                #p::core::result::Result::Ok(())
+            }
+            #overrides
+            #[inline]
+            fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
+                #equations_of_motion
+            }
+            #[inline]
+            fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S {
+                #p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)
+            }
+            #[inline]
+            fn potential_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> S {
+                #p::dynamics::potential_energy::<Self, S, #n, #k>(self, t, q)
+            }
+            #[inline]
+            fn momenta_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
+                #p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)
+            }
+            #[inline]
+            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
+                #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
+            }
+        }
+    }
+}
+
+/// The three `Mechanism` hooks that make every integrator enforce the constraints.
+fn constrained_overrides(
+    n: proc_macro2::Literal,
+    k: proc_macro2::Literal,
+    c: proc_macro2::Literal,
+) -> TokenStream {
+    let p = private();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    quote! {
+        #[inline]
+        fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+            #constraints::accelerations::<Self, S, #n, #k, #c>(self, t, q, v)
+        }
+        fn project(&self, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
+            let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;
+            #constraints::project::<Self, #n, #k, #c>(self, t, q, v, &mode)
+        }
+        fn check_declaration_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
+            #constraints::check_velocity_rows_affine::<Self, #n, #k, #c>(self, t, q, v)
+        }
+        fn check_constraints(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
+            #constraints::check_consistent::<Self, #n, #k, #c>(self, t, q, v, #constraints::CONSISTENCY_TOLERANCE)
+        }
+    }
+}

@@ -1,0 +1,235 @@
+//! Expansion: the checked model into the module a user gets (see the README's "The declaration").
+//!
+//! Generated code names only `::lagrange::__private::…` paths. Per declaration it writes:
+//! `Coords<T = f64>` and its `Coordinates` impl, `DOF`, `State`, `Bodies<T = f64>` (each body and
+//! point's position: `Vec2`/`Vec3`/`Planar`/`Spatial`), `BodyVelocities<T = f64>` (a particle or
+//! point's velocity vector; a planar body's centre-of-mass velocity and angular velocity as a
+//! `Planar`; a spatial body's centre-of-mass velocity `Vec3`), inherent `bodies` and
+//! `body_velocities`, and the `Model` and `Mechanism` impls. `potential` and `applied_forces` are
+//! only written when something is declared for them.
+//!
+//! One file per artifact: [`coords`] writes `Coords`, its `Coordinates` impl, `DOF` and `State`;
+//! [`bodies`] `Bodies`, `BodyVelocities` and the inherent impl; [`model`] the `Model` impl;
+//! [`mechanism`] the `Mechanism` impl; [`constraints`] the `Constraints` impl; [`tree`] the
+//! `Tree` impl of a tree of translations; [`fallback`] the stubs written after a failed check.
+//! This file holds the entry [`expand`], the whole module ([`generate`]) and the helpers the
+//! others share.
+
+mod bodies;
+mod constraints;
+mod coords;
+mod fallback;
+mod mechanism;
+mod model;
+mod tree;
+
+use bodies::{bodies_structs, inherent_impl};
+use constraints::constraints_impl;
+use coords::coords_items;
+use mechanism::mechanism_impl;
+use model::model_impl;
+
+use crate::ast::{Field, Mechanism};
+use crate::check::{self, Dim, Model, Shape};
+use crate::ctxt::{self, Ctxt};
+use crate::lift;
+use crate::optimize;
+use proc_macro2::{Span, TokenStream};
+use quote::{format_ident, quote};
+use std::collections::BTreeSet;
+
+/// The `#[mechanism]` attribute: `attr` are its arguments, `item` the module.
+pub(crate) fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
+    let cx = Ctxt::new();
+    // `#[mechanism(fast)]`: the attribute takes no arguments.
+    if !attr.is_empty() {
+        cx.error_spanned_by(&attr, "`#[mechanism]` takes no arguments");
+    }
+    let module: syn::ItemMod = match syn::parse2(item.clone()) {
+        Ok(module) => module,
+        // `#[mechanism] struct S;`: the declaration is a module.
+        Err(_) => {
+            cx.error_at(
+                Span::call_site(),
+                "#[mechanism] goes on an inline module: `pub mod name { ... }`",
+            );
+            return errors_then(cx, item);
+        }
+    };
+    let Some(mechanism) = Mechanism::from_module(&cx, module.clone()) else {
+        return errors_then(cx, quote!(#module));
+    };
+    let model = check::check(&cx, &mechanism);
+    match cx.check() {
+        Ok(()) => generate(&model.expect("the checks report why there is no model")),
+        Err(errors) => fallback::fallback(&mechanism, model.as_ref(), errors),
+    }
+}
+
+fn errors_then(cx: Ctxt, item: TokenStream) -> TokenStream {
+    let errors = cx
+        .check()
+        .err()
+        .map(ctxt::to_compile_errors)
+        .unwrap_or_default();
+    quote!(#errors #item)
+}
+
+/// An unsuffixed integer literal (`3`, not `3usize`).
+pub(crate) fn lit(n: usize) -> proc_macro2::Literal {
+    proc_macro2::Literal::usize_unsuffixed(n)
+}
+
+/// `::lagrange::__private`.
+pub(crate) fn private() -> TokenStream {
+    quote!(::lagrange::__private)
+}
+
+/// The scalar type parameter of generated generic functions.
+pub(crate) fn scalar() -> TokenStream {
+    quote!(__D)
+}
+
+/// The geometry functions and types, and num-dual's methods, inside a generated function.
+pub(crate) fn prelude() -> TokenStream {
+    let p = private();
+    quote! {
+        #[allow(unused_imports)]
+        use #p::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
+        #[allow(unused_imports)]
+        use #p::DualNum as _;
+    }
+}
+
+/// The whole module for a declaration that passed every check.
+fn generate(model: &Model) -> TokenStream {
+    let mechanism = model.mechanism;
+    let (attrs, vis, ident) = (&mechanism.attrs, &mechanism.vis, &mechanism.ident);
+    let other_items = &mechanism.other_items;
+    let params_struct = &mechanism.params.as_ref().unwrap().0;
+    let coords = coords_items(mechanism, model.coords);
+    let bodies = bodies_structs(model);
+    let inherent = inherent_impl(model);
+    let model_impl = model_impl(model);
+    let constrained = (!model.constraints.is_empty()).then_some(model.constraints.len());
+    let tree = crate::structure::tree(model);
+    let tree_items = tree.as_ref().map(|tree| tree::tree_items(model, tree));
+    let mechanism_impl = mechanism_impl(
+        model.params_ident,
+        model.dof(),
+        model.rows,
+        constrained,
+        tree.map(|tree| (tree.width, tree.bodies.len())),
+    );
+    let constraints_impl = constrained.map(|_| constraints_impl(model));
+    quote! {
+        #(#attrs)*
+        #vis mod #ident {
+            #(#other_items)*
+            #params_struct
+            #coords
+            #bodies
+            #inherent
+            #model_impl
+            #tree_items
+            #mechanism_impl
+            #constraints_impl
+        }
+    }
+}
+
+/// `let [theta1, theta2] = *__q;` (names with `suffix`), or for array coordinates
+/// `let x = __q[0]; let theta = [__q[1], __q[2]];`.
+fn bind_coordinates(model: &Model, q: &TokenStream, suffix: &str) -> TokenStream {
+    // `format_ident!` drops the `r#` of a raw identifier: `r#type` is bound as itself.
+    let name = |c: &Field| match suffix {
+        "" => c.ident.clone(),
+        _ => format_ident!("{}{}", c.ident, suffix),
+    };
+    if model.coords.iter().all(|c| c.array.is_none()) {
+        let names = model.coords.iter().map(name);
+        return quote!(let [#(#names),*] = *#q;);
+    }
+    let mut out = TokenStream::new();
+    let mut slot = 0;
+    for c in model.coords {
+        let ident = name(c);
+        let slots: Vec<_> = (slot..slot + c.slots()).map(lit).collect();
+        if c.array.is_some() {
+            out.extend(quote!(let #ident = [#(#q[#slots]),*];));
+        } else {
+            out.extend(quote!(let #ident = #(#q[#slots])*;));
+        }
+        slot += c.slots();
+    }
+    out
+}
+
+/// `let theta1 = …; let l1 = <__D>::from(self.l1); let t = __t;` for the names `used`.
+fn bind_inputs(model: &Model, used: &BTreeSet<String>, q: TokenStream) -> TokenStream {
+    let d = scalar();
+    let coords = bind_coordinates(model, &q, "");
+    let params = model
+        .params
+        .iter()
+        .map(|p| &p.ident)
+        .filter(|p| used.contains(&p.to_string()));
+    let time = used.contains("t").then(|| quote!(let t = __t;));
+    quote! {
+        #coords
+        #( let #params = <#d>::from(self.#params); )*
+        #time
+    }
+}
+
+/// The user's `blocks` rewritten by [`optimize`] (parameter-only subexpressions in `f64`, shared
+/// `sin_cos`) and lifted to `__D`, with the `let`s the rewrites need (placed after the inputs).
+pub(crate) fn optimized_blocks<'d>(
+    model: &Model,
+    blocks: impl IntoIterator<Item = &'d syn::Block>,
+) -> (TokenStream, Vec<syn::Block>) {
+    let d = scalar();
+    let mut blocks: Vec<syn::Block> = blocks.into_iter().cloned().collect();
+    let params: BTreeSet<String> = model.params.iter().map(|p| p.ident.to_string()).collect();
+    let trig: BTreeSet<String> = model
+        .coords
+        .iter()
+        .filter(|c| c.array.is_none())
+        .map(|c| c.ident.to_string())
+        .chain(std::iter::once("t".to_string()))
+        .collect();
+    let arrays: BTreeSet<String> = model
+        .coords
+        .iter()
+        .filter(|c| c.array.is_some())
+        .map(|c| c.ident.to_string())
+        .collect();
+    let lets = optimize::optimize(
+        &mut blocks,
+        &optimize::Scope {
+            params: &params,
+            trig: &trig,
+            arrays: &arrays,
+        },
+        &d,
+    );
+    let blocks = blocks.iter().map(|b| lift::lift_block(b, &d)).collect();
+    (lets, blocks)
+}
+
+/// The Rust type of a body's position on scalar `__D`.
+pub(crate) fn position_type(shape: Shape) -> TokenStream {
+    let g = quote!(::lagrange::__private::geometry);
+    match shape.dim() {
+        _ if shape == Shape::Planar => quote!(#g::Planar<__D>),
+        _ if shape == Shape::Spatial => quote!(#g::Spatial<__D>),
+        Dim::Two => quote!(#g::Vec2<__D>),
+        Dim::Three => quote!(#g::Vec3<__D>),
+    }
+}
+
+/// `let Bodies { bob1, .. } = …;` from x.
+fn bind_bodies(model: &Model) -> TokenStream {
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    quote!(let Bodies { #(#names),* } = Self::__lagrange_bodies_from_cartesian(__x);)
+}

@@ -1,0 +1,406 @@
+//! The `Model` impl: masses, `validate`, `cartesian`, the weights of uniform fields, the potential
+//! and the applied forces.
+
+use super::bodies::flatten;
+use super::{
+    bind_bodies, bind_coordinates, bind_inputs, lit, optimized_blocks, position_type, prelude,
+    private, scalar,
+};
+use crate::attr::{Inertia, Kind};
+use crate::check::{self, Body, Dim, Model, Shape};
+use crate::lift;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+/// Parameters bound as `f64`, then each body's mass and inertia: shared by `validate` and `masses`.
+fn mass_bindings(model: &Model) -> TokenStream {
+    let params = model.params.iter().map(|p| &p.ident);
+    let mut out = quote!(#( let #params: f64 = self.#params; )*);
+    for body in model.bodies.iter().filter(|b| b.shape.has_mass()) {
+        let args = &body.decl.args;
+        let mass = args.mass.as_ref().unwrap();
+        let mass_ident = format_ident!("__mass_{}", body.decl.ident());
+        let inertia_ident = format_ident!("__inertia_{}", body.decl.ident());
+        out.extend(quote!(let #mass_ident: f64 = #mass;));
+        match &args.inertia {
+            Some(Inertia::Moment(i)) => out.extend(quote!(let #inertia_ident: f64 = #i;)),
+            Some(Inertia::Principal(i)) => out.extend(quote!(let #inertia_ident: [f64; 3] = #i;)),
+            None => {}
+        }
+    }
+    out
+}
+
+/// The `Model` impl.
+pub(super) fn model_impl(model: &Model) -> TokenStream {
+    let p = private();
+    let (params, n, k, inertial) = (
+        model.params_ident,
+        lit(model.dof()),
+        lit(model.rows),
+        lit(model.inertial_rows),
+    );
+    let rheonomic = model.rheonomic;
+    let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
+    let has_forces = !model.forces.is_empty();
+    let validate = validate_fn(model);
+    let masses = masses_fn(model);
+    let cartesian = cartesian_fn(model);
+    let potential = has_potential.then(|| potential_fn(model));
+    let forces = has_forces.then(|| applied_forces_fn(model));
+    let weights = (!model.uniform_gravities.is_empty()).then(|| weights_fn(model));
+    quote! {
+        impl #p::Model<#n, #k> for #params {
+            type Coords = Coords;
+            const INERTIAL: usize = #inertial;
+            const RHEONOMIC: bool = #rheonomic;
+            const HAS_POTENTIAL: bool = #has_potential;
+            const HAS_FORCES: bool = #has_forces;
+            #validate
+            #masses
+            #cartesian
+            #potential
+            #forces
+            #weights
+        }
+    }
+}
+
+/// A uniform field as constant Cartesian weights w = μ g on the position rows of every massive body
+/// moving in the field's dimension (V = −w·x, 𝓕 = Jᵀw, computed by `lagrange_core::dynamics`).
+fn weights_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k) = (lit(model.dof()), lit(model.rows));
+    let used = model.names_used_by(model.uniform_gravities.iter().map(|(g, _)| *g));
+    let params = model
+        .params
+        .iter()
+        .map(|p| &p.ident)
+        .filter(|p| used.contains(&p.to_string()));
+    let fields = model.uniform_gravities.iter().map(|(decl, dim)| {
+        let ident = format_ident!("__gravity_{}", decl.ident());
+        let g = quote!(::lagrange::__private::geometry);
+        let ty = if *dim == Dim::Two {
+            quote!(#g::Vec2<f64>)
+        } else {
+            quote!(#g::Vec3<f64>)
+        };
+        let block = &decl.block;
+        let components: &[&str] = if *dim == Dim::Two {
+            &["x", "y"]
+        } else {
+            &["x", "y", "z"]
+        };
+        let rows = model
+            .bodies
+            .iter()
+            .filter(|b| b.shape.has_mass() && b.shape.dim() == *dim)
+            .flat_map(|b| {
+                let ident = &ident;
+                (0..b.members()).flat_map(move |member| {
+                    let first = b.row + member * b.shape.rows();
+                    components.iter().enumerate().map(move |(i, c)| {
+                        let (r, c) = (lit(first + i), format_ident!("{}", c));
+                        quote!(__weights[#r] += #ident.#c * __masses[#r];)
+                    })
+                })
+            })
+            .collect::<Vec<_>>();
+        quote!(let #ident: #ty = #block; #(#rows)*)
+    });
+    quote! {
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; #k] {
+            #[allow(unused_imports)]
+            use #p::geometry::{vec2, vec3};
+            #( let #params: f64 = self.#params; )*
+            let __masses = <Self as #p::Model<#n, #k>>::masses(self);
+            let mut __weights = [0.0; #k];
+            #(#fields)*
+            __weights
+        }
+    }
+}
+
+fn validate_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let params = model.params.iter().map(|f| &f.ident);
+    let strings = model.params.iter().map(|f| f.ident.to_string());
+    let bindings = mass_bindings(model);
+    let err = quote!(return #p::core::result::Result::Err);
+    let bodies = model.bodies.iter().filter(|b| b.shape.has_mass()).map(|body| {
+        let name = body.decl.ident().to_string();
+        let mass = format_ident!("__mass_{}", body.decl.ident());
+        let inertia = format_ident!("__inertia_{}", body.decl.ident());
+        let check_mass = quote! {
+            if !(#mass.is_finite() && #mass > 0.0) {
+                #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("mass must be positive and finite, got {}", #mass) });
+            }
+        };
+        let check_inertia = match body.shape {
+            Shape::Planar => quote! {
+                if !(#inertia.is_finite() && #inertia > 0.0) {
+                    #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("moment of inertia must be positive and finite, got {}", #inertia) });
+                }
+            },
+            Shape::Spatial => quote! {
+                let __sum: f64 = #inertia[0] + #inertia[1] + #inertia[2];
+                for (__k, __moment) in #inertia.into_iter().enumerate() {
+                    if !(__moment.is_finite() && __moment > 0.0) {
+                        #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("principal moment I{} must be positive and finite, got {}", __k + 1, __moment) });
+                    }
+                    // I_k ≤ I_i + I_j (equality for a flat body), up to rounding.
+                    if __moment > __sum - __moment + 1e-12 * __sum {
+                        #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("principal moments {:?} violate the triangle inequality: I{} exceeds the sum of the other two", #inertia, __k + 1) });
+                    }
+                }
+            },
+            _ => quote!(),
+        };
+        quote!(#check_mass #check_inertia)
+    });
+    // The common case first, branch-free: x·0 is 0 exactly when x is finite, so one comparison
+    // checks every parameter; masses and moments compare positive. Only a failure (or a spatial
+    // body, whose moments have more to check) goes on to the checks that name the culprit.
+    let fast = (!model.bodies.iter().any(|b| b.shape == Shape::Spatial)).then(|| {
+        let fields = model.params.iter().map(|f| &f.ident);
+        let positive = model.bodies.iter().filter(|b| b.shape.has_mass()).map(|body| {
+            let mass = format_ident!("__mass_{}", body.decl.ident());
+            let inertia = format_ident!("__inertia_{}", body.decl.ident());
+            match body.shape {
+                Shape::Planar => quote!(& (#mass * 0.0 == 0.0) & (#mass > 0.0) & (#inertia * 0.0 == 0.0) & (#inertia > 0.0)),
+                _ => quote!(& (#mass * 0.0 == 0.0) & (#mass > 0.0)),
+            }
+        });
+        let bindings = &bindings;
+        quote! {
+            {
+                #bindings
+                if ((0.0 #( + self.#fields * 0.0 )*) == 0.0) #(#positive)* {
+                    return #p::core::result::Result::Ok(());
+                }
+            }
+        }
+    });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> #p::Result<()> {
+            #fast
+            #(
+                if !self.#params.is_finite() {
+                    #err(#p::Error::NonFiniteParameter { name: #strings, value: self.#params });
+                }
+            )*
+            #bindings
+            #(#bodies)*
+            #p::core::result::Result::Ok(())
+        }
+    }
+}
+
+fn masses_fn(model: &Model) -> TokenStream {
+    let k = lit(model.rows);
+    let bindings = mass_bindings(model);
+    let mut rows = vec![quote!(0.0); model.rows];
+    for body in &model.bodies {
+        let mass = format_ident!("__mass_{}", body.decl.ident());
+        let inertia = format_ident!("__inertia_{}", body.decl.ident());
+        for member in 0..body.members() {
+            let r = body.row + member * body.shape.rows();
+            match body.shape {
+                Shape::Point(_) => {}
+                Shape::Particle(dim) => {
+                    let d = if dim == Dim::Two { 2 } else { 3 };
+                    (0..d).for_each(|i| rows[r + i] = quote!(#mass));
+                }
+                Shape::Planar => {
+                    rows[r] = quote!(#mass);
+                    rows[r + 1] = quote!(#mass);
+                    rows[r + 2] = quote!(#inertia);
+                }
+                Shape::Spatial => {
+                    (0..3).for_each(|i| rows[r + i] = quote!(#mass));
+                    // Column k carries J_k = (I₁ + I₂ + I₃)/2 − I_k (see lagrange_core::model).
+                    for col in 0..3usize {
+                        let j = quote!(((#inertia[0] + #inertia[1] + #inertia[2]) * 0.5 - #inertia[#col]));
+                        (0..3).for_each(|i| rows[r + 3 + 3 * col + i] = j.clone());
+                    }
+                }
+            }
+        }
+    }
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; #k] {
+            #bindings
+            [#(#rows),*]
+        }
+    }
+}
+
+fn cartesian_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k) = (lit(model.dof()), lit(model.rows));
+    let mut by_row: Vec<&Body> = model.bodies.iter().collect();
+    by_row.sort_by_key(|b| b.row);
+    let rows = by_row.iter().flat_map(|b| {
+        let name = b.decl.ident();
+        flatten(b, &quote!(__bodies.#name))
+    });
+    quote! {
+        #[inline(always)]
+        fn cartesian<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> [__D; #k] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [#(#rows),*]
+        }
+    }
+}
+
+fn potential_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k) = (lit(model.dof()), lit(model.rows));
+    let prelude = prelude();
+    let decls = model
+        .potentials
+        .iter()
+        .copied()
+        .chain(model.gravities.iter().map(|(g, _)| *g));
+    let inputs = bind_inputs(model, &model.names_used_by(decls), quote!(__q));
+    let bodies = bind_bodies(model);
+    let (shared, blocks) = optimized_blocks(model, model.potentials.iter().map(|d| &d.block));
+    let potentials = model.potentials.iter().zip(blocks).map(|(decl, block)| {
+        let ident = format_ident!("__potential_{}", decl.ident());
+        quote!(let #ident: __D = #block; __potential += #ident;)
+    });
+    let gravities = model
+        .gravities
+        .iter()
+        .map(|(decl, dim)| gravity_terms(model, decl, *dim));
+    // Masses only weigh a field that varies; constant fields are `weights`.
+    let masses = (!model.gravities.is_empty())
+        .then(|| quote!(let __masses = <Self as #p::Model<#n, #k>>::masses(self);));
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D {
+            #prelude
+            #inputs
+            #shared
+            #bodies
+            #masses
+            let mut __potential = <__D>::zero();
+            #(#potentials)*
+            #(#gravities)*
+            __potential
+        }
+    }
+}
+
+/// V −= m g·r for every massive body whose position has the field's dimension.
+fn gravity_terms(model: &Model, decl: &crate::ast::Decl, dim: Dim) -> TokenStream {
+    let d = scalar();
+    let ident = format_ident!("__gravity_{}", decl.ident());
+    let ty = position_type(Shape::Point(dim));
+    let block = lift::lift_block(&decl.block, &d);
+    let terms = model
+        .bodies
+        .iter()
+        .filter(|b| b.shape.has_mass() && b.shape.dim() == dim)
+        .flat_map(|b| {
+            let ident = &ident;
+            (0..b.members()).map(move |member| {
+                let name = b.decl.ident();
+                let row = lit(b.row + member * b.shape.rows());
+                let body = match b.count {
+                    Some(_) => {
+                        let k = lit(member);
+                        quote!(#name[#k])
+                    }
+                    None => quote!(#name),
+                };
+                let centre = match b.shape {
+                    Shape::Planar | Shape::Spatial => quote!(#body.position),
+                    _ => body,
+                };
+                quote!(__potential -= #ident.dot(&#centre) * __masses[#row];)
+            })
+        });
+    quote!(let #ident: #ty = #block; #(#terms)*)
+}
+
+fn applied_forces_fn(model: &Model) -> TokenStream {
+    let p = private();
+    let (n, k) = (lit(model.dof()), lit(model.rows));
+    let prelude = prelude();
+    let inputs = bind_inputs(
+        model,
+        &model.names_used_by(model.forces.iter().map(|f| f.decl)),
+        quote!(__q),
+    );
+    let velocities = bind_coordinates(model, &quote!(__v), "_dot");
+    let bodies = bind_bodies(model);
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let body_velocities = model
+        .bodies
+        .iter()
+        .map(|b| format_ident!("{}_dot", b.decl.ident()));
+    let (shared, blocks) = optimized_blocks(model, model.forces.iter().map(|f| &f.decl.block));
+    let forces = model.forces.iter().zip(blocks).map(|(force, block)| {
+        let ident = format_ident!("__{}_{}", force.kind.name(), force.decl.ident());
+        match force.kind {
+            Kind::Force => {
+                let body = &model.bodies[force.target];
+                let ty = position_type(Shape::Point(body.shape.dim()));
+                let components: &[&str] = if body.shape.dim() == Dim::Two {
+                    &["x", "y"]
+                } else {
+                    &["x", "y", "z"]
+                };
+                if let (Some(n), Some(index)) = (force.count, check::family_index(force.decl)) {
+                    // One force per member: member i's rows start at row + i · rows.
+                    let (first, stride, n) = (lit(body.row), lit(body.shape.rows()), lit(n));
+                    let adds = components.iter().enumerate().map(|(i, c)| {
+                        let (i, c) = (lit(i), format_ident!("{}", c));
+                        quote!(__cartesian_force[#first + #index * #stride + #i] += #ident.#c;)
+                    });
+                    quote!(for #index in 0..#n { let #ident: #ty = #block; #(#adds)* })
+                } else {
+                    let adds = components.iter().enumerate().map(|(i, c)| {
+                        let (r, c) = (lit(body.row + i), format_ident!("{}", c));
+                        quote!(__cartesian_force[#r] += #ident.#c;)
+                    });
+                    quote!(let #ident: #ty = #block; #(#adds)*)
+                }
+            }
+            Kind::Torque => {
+                let r = lit(model.bodies[force.target].row + 2);
+                quote!(let #ident: __D = #block; __cartesian_force[#r] += #ident;)
+            }
+            _ => {
+                let j = lit(force.target);
+                quote!(let #ident: __D = #block; __generalized_force[#j] += #ident;)
+            }
+        }
+    });
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn applied_forces<__D: #p::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; #n],
+            __v: &[__D; #n],
+            __x: &[__D; #k],
+            __x_dot: &[__D; #k],
+            __cartesian_force: &mut [__D; #k],
+            __generalized_force: &mut [__D; #n],
+        ) {
+            #prelude
+            #inputs
+            #shared
+            #velocities
+            #bodies
+            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
+            #(#forces)*
+        }
+    }
+}

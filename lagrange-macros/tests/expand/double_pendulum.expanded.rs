@@ -1,0 +1,401 @@
+pub mod double_pendulum {
+    pub struct DoublePendulum {
+        pub m1: f64,
+        pub m2: f64,
+        pub l1: f64,
+        pub l2: f64,
+        pub g: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq,
+        ::lagrange::__private::core::default::Default
+    )]
+    pub struct Coords<T = f64> {
+        pub theta1: T,
+        pub theta2: T,
+    }
+    impl ::lagrange::__private::Coordinates<2> for Coords<f64> {
+        const NAMES: [&'static str; 2] = ["theta1", "theta2"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 2] {
+            [self.theta1, self.theta2]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 2]) -> Self {
+            Coords {
+                theta1: values[0],
+                theta2: values[1],
+            }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 2;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's centre of mass and orientation.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub bob1: ::lagrange::__private::geometry::Vec2<T>,
+        pub bob2: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, its centre-of-mass velocity.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub bob1: ::lagrange::__private::geometry::Vec2<T>,
+        pub bob2: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    impl DoublePendulum {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.v);
+            let (_, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                2,
+                4,
+            >(self, state.t, &q, &v);
+            Self::__lagrange_velocities_from_cartesian(&x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta1, theta2] = *__q;
+            let l1 = <__D>::from(self.l1);
+            let l2 = <__D>::from(self.l2);
+            let (__sin_theta1, __cos_theta1) = theta1.sin_cos();
+            let (__sin_theta2, __cos_theta2) = theta2.sin_cos();
+            let bob1: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(__sin_theta1, -__cos_theta1) * l1
+            };
+            let bob2: ::lagrange::__private::geometry::Vec2<__D> = {
+                bob1 + vec2(__sin_theta2, -__cos_theta2) * l2
+            };
+            Bodies { bob1, bob2 }
+        }
+        #[inline(always)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x_dot: &[__D; 4],
+        ) -> BodyVelocities<__D> {
+            BodyVelocities {
+                bob1: ::lagrange::__private::geometry::vec2(__x_dot[0], __x_dot[1]),
+                bob2: ::lagrange::__private::geometry::vec2(__x_dot[2], __x_dot[3]),
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<2, 4> for DoublePendulum {
+        type Coords = Coords;
+        const INERTIAL: usize = 4;
+        const RHEONOMIC: bool = false;
+        const HAS_POTENTIAL: bool = false;
+        const HAS_FORCES: bool = false;
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m1: f64 = self.m1;
+                let m2: f64 = self.m2;
+                let l1: f64 = self.l1;
+                let l2: f64 = self.l2;
+                let g: f64 = self.g;
+                let __mass_bob1: f64 = m1;
+                let __mass_bob2: f64 = m2;
+                if ((0.0 + self.m1 * 0.0 + self.m2 * 0.0 + self.l1 * 0.0 + self.l2 * 0.0
+                    + self.g * 0.0) == 0.0) & (__mass_bob1 * 0.0 == 0.0)
+                    & (__mass_bob1 > 0.0) & (__mass_bob2 * 0.0 == 0.0)
+                    & (__mass_bob2 > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
+            if !self.m1.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m1",
+                    value: self.m1,
+                });
+            }
+            if !self.m2.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m2",
+                    value: self.m2,
+                });
+            }
+            if !self.l1.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "l1",
+                    value: self.l1,
+                });
+            }
+            if !self.l2.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "l2",
+                    value: self.l2,
+                });
+            }
+            if !self.g.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "g",
+                    value: self.g,
+                });
+            }
+            let m1: f64 = self.m1;
+            let m2: f64 = self.m2;
+            let l1: f64 = self.l1;
+            let l2: f64 = self.l2;
+            let g: f64 = self.g;
+            let __mass_bob1: f64 = m1;
+            let __mass_bob2: f64 = m2;
+            if !(__mass_bob1.is_finite() && __mass_bob1 > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "bob1",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_bob1
+                    ),
+                });
+            }
+            if !(__mass_bob2.is_finite() && __mass_bob2 > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "bob2",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_bob2
+                    ),
+                });
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 4] {
+            let m1: f64 = self.m1;
+            let m2: f64 = self.m2;
+            let l1: f64 = self.l1;
+            let l2: f64 = self.l2;
+            let g: f64 = self.g;
+            let __mass_bob1: f64 = m1;
+            let __mass_bob2: f64 = m2;
+            [__mass_bob1, __mass_bob1, __mass_bob2, __mass_bob2]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> [__D; 4] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [__bodies.bob1.x, __bodies.bob1.y, __bodies.bob2.x, __bodies.bob2.y]
+        }
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; 4] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<2, 4>>::masses(self);
+            let mut __weights = [0.0; 4];
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<f64> = {
+                vec2(0.0, -g)
+            };
+            __weights[0] += __gravity_down.x * __masses[0];
+            __weights[1] += __gravity_down.y * __masses[1];
+            __weights[2] += __gravity_down.x * __masses[2];
+            __weights[3] += __gravity_down.y * __masses[3];
+            __weights
+        }
+    }
+    impl DoublePendulum {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_bob1<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            theta1: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let l1 = <__D>::from(self.l1);
+            let (__sin_theta1, __cos_theta1) = theta1.sin_cos();
+            { vec2(__sin_theta1, -__cos_theta1) * l1 }
+        }
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_bob2<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            theta2: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let l2 = <__D>::from(self.l2);
+            let (__sin_theta2, __cos_theta2) = theta2.sin_cos();
+            { vec2(__sin_theta2, -__cos_theta2) * l2 }
+        }
+    }
+    impl ::lagrange::__private::tree::Tree<2, 4, 1, 2> for DoublePendulum {
+        const BODIES: [::lagrange::__private::tree::Body<1>; 2] = [
+            ::lagrange::__private::tree::Body {
+                row: 0,
+                dim: 2,
+                parent: ::lagrange::__private::core::option::Option::None,
+                seeds: [::lagrange::__private::tree::Seed::Coordinate(0)],
+            },
+            ::lagrange::__private::tree::Body {
+                row: 2,
+                dim: 2,
+                parent: ::lagrange::__private::core::option::Option::Some(0),
+                seeds: [::lagrange::__private::tree::Seed::Coordinate(1)],
+            },
+        ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn displacements<S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+        ) -> [::lagrange::__private::tree::Seeded<S, 1>; 4] {
+            let __body_0 = self
+                .__lagrange_displacement_bob1(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
+                );
+            let __body_1 = self
+                .__lagrange_displacement_bob2(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[1], __v[1], 0),
+                );
+            [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
+        }
+    }
+    impl ::lagrange::__private::Mechanism<2> for DoublePendulum {
+        type Coords = Coords;
+        #[inline]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            ::lagrange::__private::tree::equations_of_motion::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                2,
+                4,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                2,
+                4,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 4>(self, t, q, v)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                2,
+                4,
+            >(self, t, q, v)
+        }
+    }
+}

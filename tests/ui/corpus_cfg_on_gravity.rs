@@ -1,0 +1,26 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod m {
+    pub struct Coords {
+        pub x: f64,
+    }
+
+    pub struct P {
+        pub m: f64,
+        pub k: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[cfg(test)]
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -9.81)
+    }
+}
+
+fn main() {}

@@ -1,0 +1,20 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod m {
+    pub struct Coords {
+        pub x: f64,
+    }
+
+    #[cfg(not(test))]
+    pub struct P {
+        pub m: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, 0.0)
+    }
+}
+
+fn main() {}

@@ -1,0 +1,25 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod m {
+    pub struct Coords {
+        pub x: f64,
+    }
+
+    pub struct P {
+        pub m: f64,
+        pub k: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[particle(mass = m, count = 0)]
+    fn beads(i: usize) -> Vec2 {
+        vec2(x, i as f64)
+    }
+}
+
+fn main() {}

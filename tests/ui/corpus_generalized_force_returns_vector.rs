@@ -1,0 +1,25 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod m {
+    pub struct Coords {
+        pub x: f64,
+    }
+
+    pub struct P {
+        pub m: f64,
+        pub k: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[generalized_force(on = x)]
+    fn push() -> Vec2 {
+        vec2(k, 0.0)
+    }
+}
+
+fn main() {}

@@ -1,0 +1,30 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod m {
+    pub struct Coords {
+        pub x: f64,
+    }
+
+    pub struct P {
+        pub m: f64,
+        pub k: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[particle(mass = m, count = 2)]
+    fn beads(i: usize) -> Vec2 {
+        vec2(x, i as f64)
+    }
+
+    #[potential]
+    fn spring() -> f64 {
+        k * beads[2].x
+    }
+}
+
+fn main() {}

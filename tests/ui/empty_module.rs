@@ -1,0 +1,6 @@
+use lagrange::mechanism;
+
+#[mechanism]
+pub mod nothing {}
+
+fn main() {}
