@@ -1,7 +1,74 @@
 #![doc = include_str!("../README.md")]
+//!
+//! ## The crate root
+//!
+//! The root exports, by name, what a user of a declared mechanism calls: the
+//! [`mechanism`](macro@mechanism) attribute, the [`Mechanism`] trait with its [`State`] and
+//! [`Coordinates`], [`Validated`], the errors, the integrators, the geometry a declaration is
+//! written in, the analysis entry points with their options and results, and the constraint tools
+//! ([`Constraints`], [`ContactRk4`], [`consistent_state`], [`consistent_state_holding`],
+//! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
+//! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
+//! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
+//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`].
+//!
+//! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
+//!
+//! ```
+//! use lagrange::*;
+//!
+//! #[mechanism]
+//! pub mod pendulum {
+//!     pub struct Coords {
+//!         pub theta: f64,
+//!     }
+//!     pub struct Pendulum {
+//!         pub m: f64,
+//!         pub l: f64,
+//!         pub g: f64,
+//!     }
+//!     #[particle(mass = m)]
+//!     fn bob() -> Vec2 {
+//!         vec2(theta.sin(), -theta.cos()) * l
+//!     }
+//!     #[gravity]
+//!     fn down() -> Vec2 {
+//!         vec2(0.0, -g)
+//!     }
+//! }
+//!
+//! let p = pendulum::Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+//! assert!(p.validate().is_ok());
+//! let bad = pendulum::Pendulum { m: f64::NAN, l: 1.0, g: 9.81 };
+//! assert!(matches!(bad.validate(), Err(Error::NonFiniteParameter { name: "m", .. })));
+//! ```
 
-pub use lagrange_core::*;
 pub use lagrange_macros::mechanism;
+
+pub use lagrange_core::analysis::{
+    constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability, Branch,
+    BranchPoint, ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization,
+    NormalModes, Stability, StabilityAnalysis,
+};
+pub use lagrange_core::constraints::{
+    consistent_state, consistent_state_holding, constraint_forces, ConstraintForces, Constraints,
+    ContactOptions, ContactRk4, ModeChange, RowMode,
+};
+pub use lagrange_core::error::{Error, Result};
+pub use lagrange_core::geometry::{
+    planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
+};
+pub use lagrange_core::integrate::{
+    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, StormerVerlet, Variational,
+};
+pub use lagrange_core::mechanism::Mechanism;
+pub use lagrange_core::model::{Coordinates, State};
+pub use lagrange_core::validated::Validated;
+
+pub use lagrange_core::{
+    analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model,
+    scalar_ext, tree, validated,
+};
 
 /// Everything a declaration and its user need: `use lagrange::prelude::*;`.
 pub mod prelude {

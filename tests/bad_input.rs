@@ -10,10 +10,12 @@ use lagrange::analysis::{
     EquilibriumOptions,
 };
 use lagrange::constraints::{
-    consistent_state, constraint_forces, Constraints, ContactOptions, ContactRk4,
+    consistent_state, consistent_state_holding, constraint_forces, Constraints, ContactOptions,
+    ContactRk4,
 };
+use lagrange::model::Model;
 use lagrange::prelude::*;
-use lagrange::{Dopri5, GaussLegendre2, ImplicitMidpoint, Model, StormerVerlet, Variational};
+use lagrange::{Dopri5, GaussLegendre2, ImplicitMidpoint, StormerVerlet, Variational};
 use std::fmt::Debug;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Mutex;
@@ -374,6 +376,12 @@ fn constrained_cases<M, const N: usize, const K: usize, const C: usize>(
     tally.run(
         || label("consistent_state"),
         || pure(consistent_state(sys, s)),
+    );
+    // Holding the first coordinate and its velocity (the crank of a linkage).
+    let first = [<M as Model<N, K>>::Coords::NAMES[0]];
+    tally.run(
+        || label("consistent_state_holding"),
+        || pure(consistent_state_holding(sys, s, &first, &first)),
     );
     tally.run(
         || label("constraint_forces"),

@@ -5,8 +5,8 @@
 //! both are accurate to a few ulps of the largest intermediate term, so they must agree to 1e-12
 //! relative to the scale of the terms (which are O(10) here).
 
+use lagrange::model::Model;
 use lagrange::prelude::*;
-use lagrange::Model;
 
 /// |a − b| ≤ 1e-12 · (1 + |b|): see the module docs.
 fn close(a: f64, b: f64) -> bool {
@@ -936,4 +936,82 @@ fn rheonomic_constraint_with_t() {
         close(a.x, -p.a * p.w * p.w * (p.w * t).sin()) && close(a.y, -p.g),
         "{a:?}"
     );
+}
+
+/// The double pendulum with every vector scaled from the left: a parameter (`l1 * v`), a float
+/// literal times a parameter (`0.5 * l2 * v`, lifted like any literal), a scalar computed in the
+/// function, and in space (`l1 * vec3(..)`).
+#[mechanism]
+pub mod left_scalars {
+    pub struct Coords {
+        pub theta1: f64,
+        pub theta2: f64,
+    }
+
+    pub struct LeftScalars {
+        pub m1: f64,
+        pub m2: f64,
+        pub l1: f64,
+        pub l2: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m1)]
+    fn bob1() -> Vec2 {
+        l1 * vec2(theta1.sin(), -theta1.cos())
+    }
+
+    #[particle(mass = m2)]
+    fn bob2() -> Vec2 {
+        let half = 0.5 * l2;
+        bob1 + 2.0 * half * vec2(theta2.sin(), -theta2.cos())
+    }
+
+    #[point]
+    fn shadow() -> Vec3 {
+        l1 * vec3(theta1.sin(), 0.0, -theta1.cos())
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        g * vec2(0.0, -1.0)
+    }
+}
+
+#[test]
+fn scalars_multiply_vectors_from_the_left_in_declarations() {
+    let left = left_scalars::LeftScalars {
+        m1: 1.3,
+        m2: 0.7,
+        l1: 1.1,
+        l2: 0.9,
+        g: 9.81,
+    };
+    let right = double_pendulum::DoublePendulum {
+        m1: left.m1,
+        m2: left.m2,
+        l1: left.l1,
+        l2: left.l2,
+        g: left.g,
+    };
+    let (q, v) = ([0.4, -1.2], [0.3, 2.1]);
+    let sl = left_scalars::State::new(
+        0.0,
+        left_scalars::Coords::from_array(q),
+        left_scalars::Coords::from_array(v),
+    );
+    let sr = double_pendulum::State::new(
+        0.0,
+        double_pendulum::Coords::from_array(q),
+        double_pendulum::Coords::from_array(v),
+    );
+    let (al, ar) = (
+        left.accelerations(&sl).unwrap().to_array(),
+        right.accelerations(&sr).unwrap().to_array(),
+    );
+    for k in 0..2 {
+        assert!(close(al[k], ar[k]), "{al:?} vs {ar:?}");
+    }
+    let shadow = left.bodies(&sl).shadow;
+    assert!(close(shadow.x, left.l1 * q[0].sin()) && close(shadow.z, -left.l1 * q[0].cos()));
 }

@@ -3,7 +3,7 @@
 //! closed forms need.
 //!
 //! Every scene file in `examples/` exposes `pub fn run(plots: &Path) -> Vec<Check>`; the scene's own
-//! `main`, the `gallery` example and the `scenes` test all call it, so what the gallery prints is
+//! `main`, the `gallery` binary of this crate and the `scenes` test all call it, so what the gallery prints is
 //! exactly what the tests assert.
 
 use std::fmt::Write as _;

@@ -5,11 +5,14 @@ use std::path::Path;
 
 /// One named line.
 pub struct Series {
+    /// The legend entry.
     pub label: String,
+    /// The line's points (x, y), drawn in this order.
     pub points: Vec<(f64, f64)>,
 }
 
 impl Series {
+    /// A line named `label` through `points`.
     pub fn new(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
         Series {
             label: label.into(),

@@ -12,6 +12,8 @@
 mod plot;
 mod problems;
 
+use clap::Parser;
+use indicatif::{ProgressBar, ProgressStyle};
 use lagrange_core::integrate::ImplicitStepStats;
 use lagrange_core::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State, StormerVerlet,
@@ -19,7 +21,6 @@ use lagrange_core::{
 };
 use problems::*;
 use std::fmt::Write as _;
-use std::io::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -60,27 +61,44 @@ struct Setup<M, const N: usize> {
     unstable_energy: f64,
 }
 
-struct Progress {
-    done: usize,
-    total: usize,
-    started: Instant,
+/// The command line.
+#[derive(Parser, Debug)]
+#[command(
+    name = "work-precision",
+    about = "Every integrator of lagrange-core over a ladder of step sizes and tolerances on five \
+             problems, with ode_solvers as a peer: results.csv, report.md and SVG plots."
+)]
+struct Args {
+    /// A shorter ladder and one timing repeat: a smoke run in seconds, not a report.
+    #[arg(long)]
+    quick: bool,
+    /// Where the CSV, markdown and SVG files are written.
+    #[arg(long, value_name = "DIR", default_value = "reports/work-precision")]
+    out: PathBuf,
 }
 
+/// The progress line on stderr (drawn only when stderr is a terminal).
+struct Progress(ProgressBar);
+
 impl Progress {
-    fn tick(&mut self, what: &str) {
-        self.done += 1;
-        let width = 30;
-        let filled = width * self.done / self.total.max(1);
-        eprint!(
-            "\r[{}{}] {:>3}/{} {:>6.1}s  {:<60}",
-            "#".repeat(filled),
-            " ".repeat(width - filled),
-            self.done,
-            self.total,
-            self.started.elapsed().as_secs_f64(),
-            what
+    fn new(total: usize) -> Self {
+        let bar = ProgressBar::new(total as u64);
+        bar.set_style(
+            ProgressStyle::with_template("[{bar:30}] {pos:>3}/{len} {elapsed:>4}  {wide_msg}")
+                .expect("a valid progress template")
+                .progress_chars("#> "),
         );
-        let _ = std::io::stderr().flush();
+        Progress(bar)
+    }
+
+    /// One more run started, described by `what`.
+    fn tick(&mut self, what: &str) {
+        self.0.set_message(what.to_string());
+        self.0.inc(1);
+    }
+
+    fn finish(&self) {
+        self.0.finish();
     }
 }
 
@@ -455,14 +473,8 @@ fn tolerances(quick: bool) -> Vec<f64> {
 }
 
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let quick = args.iter().any(|a| a == "--quick");
-    let out_dir = args
-        .iter()
-        .position(|a| a == "--out")
-        .and_then(|i| args.get(i + 1))
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from("reports/work-precision"));
+    let Args { quick, out } = Args::parse();
+    let out_dir = out;
     std::fs::create_dir_all(&out_dir).expect("create output directory");
     let n_ladder = if quick { 4 } else { 8 };
 
@@ -564,18 +576,14 @@ fn main() {
         + count_runs(&double)
         + count_runs(&fpu)
         + count_runs(&wedge);
-    let mut progress = Progress {
-        done: 0,
-        total,
-        started: Instant::now(),
-    };
+    let mut progress = Progress::new(total);
     let mut rows = Vec::new();
     run_setup::<_, 1, 2>(&pendulum, quick, &mut rows, &mut progress);
     run_setup::<_, 2, 4>(&kepler, quick, &mut rows, &mut progress);
     run_setup::<_, 2, 4>(&double, quick, &mut rows, &mut progress);
     run_setup::<_, 6, 12>(&fpu, quick, &mut rows, &mut progress);
     run_setup::<_, 2, 4>(&wedge, quick, &mut rows, &mut progress);
-    eprintln!();
+    progress.finish();
 
     // Long run: energy error against time on Kepler over 1000 periods.
     eprintln!("long run: Kepler energy over 1000 periods");
@@ -600,27 +608,39 @@ fn main() {
     eprintln!("wrote {}", out_dir.display());
 }
 
+/// `results.csv`: one record per run. Fields are quoted where they need it (a failed run's status
+/// is an error message, which may hold commas and quotes).
 fn write_csv(dir: &std::path::Path, rows: &[Row]) {
-    let mut s = String::from(
-        "problem,method,setting,steps,rhs_evals,jacobian_evals,seconds,end_error,max_energy_error,status\n",
-    );
+    let mut w = csv::Writer::from_path(dir.join("results.csv")).expect("create results.csv");
+    w.write_record([
+        "problem",
+        "method",
+        "setting",
+        "steps",
+        "rhs_evals",
+        "jacobian_evals",
+        "seconds",
+        "end_error",
+        "max_energy_error",
+        "status",
+    ])
+    .expect("write csv");
     for r in rows {
-        let _ = writeln!(
-            s,
-            "{},{},{},{},{},{},{:.6e},{:.3e},{:.3e},{}",
-            r.problem,
-            r.method,
-            r.setting,
-            r.steps,
-            r.rhs_evals,
-            r.jacobian_evals,
-            r.seconds,
-            r.end_error,
-            r.max_energy_error,
-            r.status
-        );
+        w.write_record([
+            r.problem.to_string(),
+            r.method.clone(),
+            r.setting.clone(),
+            r.steps.to_string(),
+            r.rhs_evals.to_string(),
+            r.jacobian_evals.to_string(),
+            format!("{:.6e}", r.seconds),
+            format!("{:.3e}", r.end_error),
+            format!("{:.3e}", r.max_energy_error),
+            r.status.clone(),
+        ])
+        .expect("write csv");
     }
-    std::fs::write(dir.join("results.csv"), s).expect("write csv");
+    w.flush().expect("write csv");
 }
 
 /// The cheapest (fastest) run reaching `target` end-point error on `problem`.
@@ -718,4 +738,53 @@ fn write_markdown(dir: &std::path::Path, rows: &[Row], notes: &str, quick: bool)
     }
     s.push_str("\n## Long run\n\n![energy](./kepler-energy-long-run.svg)\n");
     std::fs::write(dir.join("report.md"), s).expect("write markdown");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn command_line() {
+        Args::command().debug_assert();
+        let a = Args::try_parse_from(["work-precision"]).unwrap();
+        assert!(!a.quick);
+        assert_eq!(a.out, PathBuf::from("reports/work-precision"));
+        let a = Args::try_parse_from(["work-precision", "--quick", "--out", "/tmp/x"]).unwrap();
+        assert!(a.quick);
+        assert_eq!(a.out, PathBuf::from("/tmp/x"));
+        assert!(Args::try_parse_from(["work-precision", "--out"]).is_err());
+        assert!(Args::try_parse_from(["work-precision", "--fast"]).is_err());
+    }
+
+    #[test]
+    fn csv_fields_with_commas_and_quotes_round_trip() {
+        let row = |status: &str| Row {
+            problem: "Kepler e=0.6",
+            method: "Dopri5".into(),
+            setting: "tol = 1e-6".into(),
+            setting_value: 1e-6,
+            steps: 12,
+            rhs_evals: 80,
+            jacobian_evals: 0,
+            seconds: 1.5e-4,
+            end_error: 2.5e-7,
+            max_energy_error: f64::NAN,
+            status: status.into(),
+        };
+        let failed = "step size underflow at t = 1, h = 1e-300: \"singular\"";
+        let dir = std::env::temp_dir().join(format!("lagrange-bench-csv-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        write_csv(&dir, &[row("ok"), row(failed)]);
+        let mut reader = csv::Reader::from_path(dir.join("results.csv")).unwrap();
+        assert_eq!(reader.headers().unwrap().len(), 10);
+        let records: Vec<csv::StringRecord> = reader.records().map(|r| r.unwrap()).collect();
+        assert_eq!(records.len(), 2);
+        assert_eq!(&records[0][9], "ok");
+        assert_eq!(&records[1][9], failed);
+        assert_eq!(&records[1][2], "tol = 1e-6");
+        assert_eq!(records[1][7].parse::<f64>().unwrap(), 2.5e-7);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

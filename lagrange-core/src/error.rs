@@ -8,51 +8,89 @@
 pub enum Error {
     /// A parameter of the mechanism is NaN or infinite.
     #[error("parameter `{name}` is not finite ({value})")]
-    NonFiniteParameter { name: &'static str, value: f64 },
+    NonFiniteParameter {
+        /// The parameter, by its declared name.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
 
     /// A mass or moment of inertia is not positive, or an inertia tensor violates the triangle
     /// inequality (I₁ + I₂ ≥ I₃ and permutations).
     #[error("body `{body}`: {reason}")]
-    InvalidInertia { body: &'static str, reason: String },
+    InvalidInertia {
+        /// The body, by its declared name.
+        body: &'static str,
+        /// Which mass or moment is wrong, and how.
+        reason: String,
+    },
 
     /// The time, a coordinate or a velocity of the state is NaN or infinite.
     #[error("state is not finite: {state}")]
-    NonFiniteState { state: String },
+    NonFiniteState {
+        /// The state, coordinate by coordinate.
+        state: String,
+    },
 
     /// The step size is zero, negative, NaN or infinite.
     #[error("step size must be positive and finite, got {h}")]
-    InvalidStep { h: f64 },
+    InvalidStep {
+        /// The step size given.
+        h: f64,
+    },
 
     /// The step size is positive but so small against the time that t + h == t in floating point
     /// (for example a subnormal h at t = 1): the step would not advance time.
     #[error("step size h = {h:e} does not advance t = {t} (t + h == t in floating point)")]
-    StepDoesNotAdvance { t: f64, h: f64 },
+    StepDoesNotAdvance {
+        /// The state's time.
+        t: f64,
+        /// The step size given.
+        h: f64,
+    },
 
     /// The end time of an integration is NaN, infinite or before the state's time (integration is
     /// forward in time only).
     #[error("end time {t_end} is not a finite time after the state's time t = {t}")]
-    InvalidEndTime { t: f64, t_end: f64 },
+    InvalidEndTime {
+        /// The state's time.
+        t: f64,
+        /// The end time given.
+        t_end: f64,
+    },
 
     /// The mass matrix M(q, t) is singular (or not positive definite) at this configuration, so
     /// the accelerations are not determined — for example spherical coordinates at a pole.
     #[error("mass matrix is singular at t = {t}, {configuration} (pivot {pivot:e} of coordinate `{coordinate}`)")]
     SingularMassMatrix {
+        /// The time at which it happened.
         t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
         configuration: String,
+        /// The coordinate whose Cholesky pivot vanished.
         coordinate: &'static str,
+        /// That pivot's value.
         pivot: f64,
     },
 
     /// The equations of motion produced a NaN or an infinity (for example a position function
     /// that divides by zero at this configuration).
     #[error("equations of motion are not finite at t = {t}, {configuration}")]
-    NonFiniteDynamics { t: f64, configuration: String },
+    NonFiniteDynamics {
+        /// The time at which it happened.
+        t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
+        configuration: String,
+    },
 
     /// A Newton iteration of an implicit method did not converge.
     #[error("Newton iteration did not converge in {iterations} iterations at t = {t} (residual {residual:e})")]
     NewtonDiverged {
+        /// The time at the start of the step.
         t: f64,
+        /// Iterations done.
         iterations: usize,
+        /// The largest residual left.
         residual: f64,
     },
 
@@ -61,10 +99,15 @@ pub enum Error {
     /// mechanism's time scales (h² overflowing, stages far from the solution); `reason` says which.
     #[error("{method}: Newton iteration broke down at iteration {iteration} of the step from t = {t} with h = {h:e}: {reason}")]
     NewtonBreakdown {
+        /// The method or options struct that reports it.
         method: &'static str,
+        /// The time at the start of the step.
         t: f64,
+        /// The step size.
         h: f64,
+        /// The Newton iteration at which it broke down (from 1).
         iteration: usize,
+        /// What broke down: a non-finite or singular matrix, or a non-finite residual.
         reason: String,
     },
 
@@ -72,7 +115,9 @@ pub enum Error {
     /// on the configuration).
     #[error("{method} cannot integrate this mechanism: {reason}")]
     UnsuitableMethod {
+        /// The method or options struct that reports it.
         method: &'static str,
+        /// What about the mechanism the method cannot handle.
         reason: String,
     },
 
@@ -81,9 +126,13 @@ pub enum Error {
     /// `EquilibriumOptions::validate`, `ContactOptions::validate`.
     #[error("{method}: setting `{setting}` = {value} is invalid: it must be {requirement}")]
     InvalidSetting {
+        /// The method or options struct that reports it.
         method: &'static str,
+        /// The setting, by its field name.
         setting: &'static str,
+        /// Its value.
         value: f64,
+        /// What it must satisfy, in words.
         requirement: &'static str,
     },
 
@@ -91,8 +140,11 @@ pub enum Error {
     /// singularity of the solution, or a tolerance below round-off).
     #[error("{method}: step size underflow at t = {t} (h = {h:e}): the solution is singular there or the tolerance is below round-off")]
     StepSizeUnderflow {
+        /// The method or options struct that reports it.
         method: &'static str,
+        /// The time reached.
         t: f64,
+        /// The step size that no longer advances time.
         h: f64,
     },
 
@@ -100,9 +152,13 @@ pub enum Error {
     /// too many iterations, or the line search stalled at a point that is not a root.
     #[error("no equilibrium found at t = {t} after {iterations} iterations: residual {residual:e} at {configuration}")]
     EquilibriumNotFound {
+        /// The time the equilibrium is sought at.
         t: f64,
+        /// Iterations done.
         iterations: usize,
+        /// The largest unbalanced generalized force left.
         residual: f64,
+        /// The last iterate, coordinate by coordinate.
         configuration: String,
     },
 
@@ -112,8 +168,11 @@ pub enum Error {
         "not an equilibrium at t = {t}, {configuration}: unbalanced generalized force {residual:e}"
     )]
     NotAnEquilibrium {
+        /// The time the equilibrium is claimed at.
         t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
         configuration: String,
+        /// The largest unbalanced generalized force.
         residual: f64,
     },
 
@@ -121,30 +180,45 @@ pub enum Error {
     /// circulatory forces).
     #[error("no normal modes at t = {t}, {configuration}: {reason}")]
     NoNormalModes {
+        /// The time of the configuration.
         t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
         configuration: String,
+        /// Why, in words.
         reason: String,
     },
 
     /// An eigenvalue iteration did not converge.
     #[error("eigenvalue iteration did not converge at t = {t}, {configuration}")]
-    EigenvalueFailure { t: f64, configuration: String },
+    EigenvalueFailure {
+        /// The time of the configuration.
+        t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
+        configuration: String,
+    },
 
     /// The constraints enforced at this configuration are redundant or contradictory: the matrix
     /// G M⁻¹ Gᵀ of their rows is singular. Names the rows involved.
     #[error("constraints {constraints} are redundant or contradictory at t = {t}, {configuration} (pivot {pivot:e})")]
     SingularConstraints {
+        /// The time at which it happened.
         t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
         configuration: String,
+        /// The constraint rows involved, by their declared names.
         constraints: String,
+        /// The vanishing pivot of the rows' matrix.
         pivot: f64,
     },
 
     /// A state violates the constraints beyond tolerance (and projection was not asked for).
     #[error("state violates the constraints at t = {t}: {residuals} (largest {residual:e}); make it consistent with `consistent_state` first")]
     ConstraintViolation {
+        /// The time at which it happened.
         t: f64,
+        /// The largest residual among the violated rows.
         residual: f64,
+        /// Each violated row with its residual ("`rod` off by 1e-3").
         residuals: String,
     },
 
@@ -152,18 +226,26 @@ pub enum Error {
     /// constraint manifold, or the constraints cannot be satisfied there).
     #[error("projection onto the constraints failed after {iterations} iterations (residual {residual:e}) from {state}")]
     ProjectionFailed {
+        /// The time of the state.
         t: f64,
+        /// Iterations done.
         iterations: usize,
+        /// The largest position residual left.
         residual: f64,
+        /// The state that was projected, coordinate by coordinate.
         state: String,
     },
 
     /// A velocity constraint or slip velocity is not linear in the generalized velocities.
     #[error("velocity constraint `{constraint}` is not linear in the velocities at t = {t}, {configuration} (deviation {deviation:e})")]
     NonlinearVelocityConstraint {
+        /// The constraint row, by its declared name.
         constraint: &'static str,
+        /// The time at which it happened.
         t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
         configuration: String,
+        /// The quadratic term found along a test direction of the velocities.
         deviation: f64,
     },
 
@@ -171,16 +253,22 @@ pub enum Error {
     /// friction-coupled constraint matrix is singular (Painlevé's paradox).
     #[error("sliding friction of {constraints} makes the contact forces indeterminate at t = {t}, {configuration}")]
     FrictionIndeterminate {
+        /// The time at which it happened.
         t: f64,
+        /// The configuration, coordinate by coordinate ("theta1 = 0.1, theta2 = -3").
         configuration: String,
+        /// The constraint rows involved, by their declared names.
         constraints: String,
     },
 
     /// Friction coefficients that are not finite or not 0 ≤ μₖ ≤ μₛ.
     #[error("friction `{constraint}`: coefficients must satisfy 0 <= kinetic <= static, got kinetic {kinetic}, static {stiction}")]
     InvalidFriction {
+        /// The constraint row, by its declared name.
         constraint: &'static str,
+        /// The kinetic coefficient μₖ given.
         kinetic: f64,
+        /// The static coefficient μₛ given.
         stiction: f64,
     },
 
@@ -188,13 +276,49 @@ pub enum Error {
     /// that is not a contact).
     #[error("constraint `{constraint}`: {reason}")]
     InvalidConstraintDeclaration {
+        /// The constraint row, by its declared name.
         constraint: &'static str,
+        /// What is wrong with it.
         reason: String,
     },
 
     /// More mode changes (contacts, releases, stick/slip switches) within one step than allowed.
     #[error("{events} mode changes within one step at t = {t} (Zeno behaviour or an inconsistent contact mode)")]
-    TooManyEvents { t: f64, events: usize },
+    TooManyEvents {
+        /// The time at the start of the step.
+        t: f64,
+        /// How many mode changes were located in the step.
+        events: usize,
+    },
+
+    /// A coordinate named to be held (by
+    /// [`consistent_state_holding`](crate::constraints::consistent_state_holding)) is not one of
+    /// the mechanism's coordinates.
+    #[error("no coordinate named `{name}` to hold; the coordinates are {known}")]
+    UnknownCoordinate {
+        /// The name given.
+        name: String,
+        /// The mechanism's coordinates, in declaration order.
+        known: String,
+    },
+
+    /// Holding the named coordinates (or velocities) leaves fewer free ones than there are
+    /// constraint rows to satisfy with them, so the constraints cannot be solved for the rest.
+    #[error(
+        "holding {held} leaves {free} free {what} for {rows} constraint rows: hold at most {max}"
+    )]
+    TooFewFreeCoordinates {
+        /// `"coordinates"` (position rows) or `"velocities"` (velocity-level rows).
+        what: &'static str,
+        /// The held names.
+        held: String,
+        /// How many are left free.
+        free: usize,
+        /// How many constraint rows they must satisfy.
+        rows: usize,
+        /// The most that can be held.
+        max: usize,
+    },
 }
 
 /// Shorthand for results of this crate.

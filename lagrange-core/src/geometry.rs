@@ -5,36 +5,166 @@
 //! terms, and nested duals for the exact Jacobians of implicit integrators. [`Scalar`] is the one bound
 //! all of them satisfy; [`Vec2`], [`Vec3`] and [`Rot3`] are generic over it.
 //!
-//! Arithmetic reads like the paper, with one Rust-imposed rule: a vector times a scalar is written
-//! `v * s`, not `s * v` (a foreign scalar type cannot be the left operand of our vector).
+//! Arithmetic reads like the paper: a scalar multiplies a vector from either side, `v * s` or
+//! `s * v`, on `f64` and on every dual number (the left product is part of [`Scalar`]).
 //!
 //! ```
-//! use lagrange_core::geometry::{vec2, Vec2};
+//! use lagrange_core::geometry::{vec2, vec3, Scalar, Vec2};
 //! let (l, theta) = (2.0_f64, 0.3_f64);
 //! let bob: Vec2<f64> = vec2(theta.sin(), -theta.cos()) * l;
 //! assert!((bob.norm() - l).abs() < 1e-15);
+//! assert_eq!(l * vec2(theta.sin(), -theta.cos()), bob);
+//! assert_eq!(0.5 * vec3(2.0, 4.0, 6.0), vec3(1.0, 2.0, 3.0));
+//!
+//! // In code generic over the scalar, as a declaration's functions are:
+//! fn tip<D: Scalar>(l: D, theta: D) -> Vec2<D> {
+//!     l * vec2(theta.sin(), -theta.cos())
+//! }
+//! let d = tip(num_dual::Dual64::from(l), num_dual::Dual64::new(theta, 1.0));
+//! assert_eq!(d.x.re, bob.x);
+//! assert!((d.x.eps - l * theta.cos()).abs() < 1e-15); // d/dθ (l sin θ)
+//! ```
+//!
+//! # nalgebra
+//!
+//! `f64` vectors and matrices convert to and from [`nalgebra`]'s types with `From`/`Into`:
+//! [`Vec2`] ↔ `Vector2`, [`Vec3`] ↔ `Vector3`, [`Rot3`] ↔ `Matrix3`, and `Rotation3` → [`Rot3`].
+//! The way back to `Rotation3` is checked ([`Rot3::to_rotation3`]), since a `Rot3` may hold any
+//! 3×3 matrix.
+//!
+//! ```
+//! use lagrange_core::geometry::{rot_z, vec2, vec3, Rot3, Vec2, Vec3};
+//! use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
+//!
+//! let v: Vector2<f64> = vec2(1.0, 2.0).into();
+//! assert_eq!(v, Vector2::new(1.0, 2.0));
+//! assert_eq!(Vec3::from(Vector3::new(1.0, 2.0, 3.0)), vec3(1.0, 2.0, 3.0));
+//!
+//! // A rotation acts the same way on either side.
+//! let r = rot_z(0.4_f64);
+//! let m: Matrix3<f64> = r.into();
+//! let x = r * vec3(1.0, 0.0, 0.5);
+//! assert_eq!(Vec3::from(m * Vector3::new(1.0, 0.0, 0.5)), x);
+//!
+//! // nalgebra's Rotation3 is a checked rotation: a Rot3 converts only if it is one.
+//! let rot: Rotation3<f64> = r.to_rotation3().expect("rot_z is a rotation");
+//! assert_eq!(Rot3::from(rot), r);
+//! let shear = Rot3 { rows: [[1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] };
+//! assert!(shear.to_rotation3().is_none());
+//! assert_eq!(Vec2::from(v), vec2(1.0, 2.0));
 //! ```
 
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim, U1};
 use num_dual::DualNum;
 use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
 /// A real number or a dual number over `f64`: what positions, potentials and the dynamics are
 /// generic over.
-pub trait Scalar: DualNum<Primitive = f64> + Copy {}
-impl<T: DualNum<Primitive = f64> + Copy> Scalar for T {}
+///
+/// Besides the arithmetic of [`DualNum`], a scalar multiplies a vector from the left (`s * v`,
+/// the same as `v * s`): that is part of the bound, so it also holds in code generic over the
+/// scalar, such as every function of a `#[mechanism]` declaration. `f64` and every number type of
+/// `num-dual` (nested to any depth) are scalars.
+pub trait Scalar:
+    DualNum<Primitive = f64>
+    + Copy
+    + Mul<Vec2<Self>, Output = Vec2<Self>>
+    + Mul<Vec3<Self>, Output = Vec3<Self>>
+{
+}
+impl<T> Scalar for T where
+    T: DualNum<Primitive = f64>
+        + Copy
+        + Mul<Vec2<T>, Output = Vec2<T>>
+        + Mul<Vec3<T>, Output = Vec3<T>>
+{
+}
+
+/// `s * v` for a scalar type `S` of `num-dual`: Rust's orphan rules allow it type family by type
+/// family (a generic `impl<D> Mul<Vec2<D>> for D` is not allowed, `D` being foreign).
+macro_rules! scalar_times_vector {
+    ([$($g:tt)*] $S:ty $(, $($w:tt)+)?) => {
+        /// Scalar times vector (`s * v`, the same as `v * s`).
+        impl<$($g)*> Mul<Vec2<$S>> for $S
+        where
+            $S: DualNum<Primitive = f64> + Copy,
+            $($($w)+)?
+        {
+            type Output = Vec2<$S>;
+            #[inline(always)]
+            fn mul(self, v: Vec2<$S>) -> Vec2<$S> {
+                vec2(v.x * self, v.y * self)
+            }
+        }
+        /// Scalar times vector (`s * v`, the same as `v * s`).
+        impl<$($g)*> Mul<Vec3<$S>> for $S
+        where
+            $S: DualNum<Primitive = f64> + Copy,
+            $($($w)+)?
+        {
+            type Output = Vec3<$S>;
+            #[inline(always)]
+            fn mul(self, v: Vec3<$S>) -> Vec3<$S> {
+                vec3(v.x * self, v.y * self, v.z * self)
+            }
+        }
+    };
+}
+scalar_times_vector!([T] num_dual::Dual<T>);
+scalar_times_vector!([T] num_dual::Dual2<T>);
+scalar_times_vector!([T] num_dual::Dual3<T>);
+scalar_times_vector!([T] num_dual::HyperDual<T>);
+scalar_times_vector!([T] num_dual::HyperHyperDual<T>);
+scalar_times_vector!([T] num_dual::Real<T>);
+scalar_times_vector!(
+    [T: nalgebra::Scalar, D: Dim] num_dual::DualVec<T, D>,
+    DefaultAllocator: Allocator<D>
+);
+scalar_times_vector!(
+    [T: nalgebra::Scalar, D: Dim] num_dual::Dual2Vec<T, D>,
+    DefaultAllocator: Allocator<U1, D> + Allocator<D, D>
+);
+scalar_times_vector!(
+    [T: nalgebra::Scalar, M: Dim, N: Dim] num_dual::HyperDualVec<T, M, N>,
+    DefaultAllocator: Allocator<M> + Allocator<M, N> + Allocator<U1, N>
+);
+
+/// A plain number times a vector of any scalar type (`2.0 * v`, the same as `v * 2.0`).
+impl<D: DualNum<Primitive = f64> + Copy> Mul<Vec2<D>> for f64 {
+    type Output = Vec2<D>;
+    #[inline(always)]
+    fn mul(self, v: Vec2<D>) -> Vec2<D> {
+        vec2(v.x * self, v.y * self)
+    }
+}
+
+/// A plain number times a vector of any scalar type (`2.0 * v`, the same as `v * 2.0`).
+impl<D: DualNum<Primitive = f64> + Copy> Mul<Vec3<D>> for f64 {
+    type Output = Vec3<D>;
+    #[inline(always)]
+    fn mul(self, v: Vec3<D>) -> Vec3<D> {
+        vec3(v.x * self, v.y * self, v.z * self)
+    }
+}
 
 /// A vector in the plane.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Vec2<D> {
+    /// Component along the x axis (horizontal, to the right, in the gallery's scenes).
     pub x: D,
+    /// Component along the y axis (vertical, upwards, in the gallery's scenes).
     pub y: D,
 }
 
 /// A vector in space.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Vec3<D> {
+    /// Component along the x axis.
     pub x: D,
+    /// Component along the y axis.
     pub y: D,
+    /// Component along the z axis (x, y, z right-handed: x × y = z).
     pub z: D,
 }
 
@@ -253,7 +383,10 @@ impl<D: Scalar> Mul<Vec3<D>> for Rot3<D> {
 /// Where a planar rigid body is: its centre of mass and its angle (counter-clockwise).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Planar<D> {
+    /// The centre of mass in the world frame (the point the moment of inertia is taken about).
     pub position: Vec2<D>,
+    /// The body's orientation: the angle in radians, counter-clockwise, from the world x axis to
+    /// the body's x axis (0 when the body frame is the world frame).
     pub angle: D,
 }
 
@@ -275,7 +408,10 @@ impl<D: Scalar> Planar<D> {
 /// Where a spatial rigid body is: its centre of mass and its orientation (body frame → world frame).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spatial<D> {
+    /// The centre of mass in the world frame.
     pub position: Vec3<D>,
+    /// The rotation from the body frame to the world frame: column k is the body's k-th principal
+    /// axis in world coordinates (the axes the principal moments `inertia = [I1, I2, I3]` refer to).
     pub rotation: Rot3<D>,
 }
 
@@ -291,6 +427,77 @@ impl<D: Scalar> Spatial<D> {
     #[inline(always)]
     pub fn point(&self, offset: Vec3<D>) -> Vec3<D> {
         self.position + self.rotation * offset
+    }
+}
+
+// Conversions to and from nalgebra's types, for f64 values (see the module docs).
+mod nalgebra_interop {
+    use super::{vec2, vec3, Rot3, Vec2, Vec3};
+    use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
+
+    impl From<Vec2<f64>> for Vector2<f64> {
+        fn from(v: Vec2<f64>) -> Self {
+            Vector2::new(v.x, v.y)
+        }
+    }
+
+    impl From<Vector2<f64>> for Vec2<f64> {
+        fn from(v: Vector2<f64>) -> Self {
+            vec2(v.x, v.y)
+        }
+    }
+
+    impl From<Vec3<f64>> for Vector3<f64> {
+        fn from(v: Vec3<f64>) -> Self {
+            Vector3::new(v.x, v.y, v.z)
+        }
+    }
+
+    impl From<Vector3<f64>> for Vec3<f64> {
+        fn from(v: Vector3<f64>) -> Self {
+            vec3(v.x, v.y, v.z)
+        }
+    }
+
+    impl From<Rot3<f64>> for Matrix3<f64> {
+        fn from(r: Rot3<f64>) -> Self {
+            let m = &r.rows;
+            Matrix3::new(
+                m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2],
+            )
+        }
+    }
+
+    impl From<Matrix3<f64>> for Rot3<f64> {
+        fn from(m: Matrix3<f64>) -> Self {
+            Rot3 {
+                rows: [
+                    [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
+                    [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
+                    [m[(2, 0)], m[(2, 1)], m[(2, 2)]],
+                ],
+            }
+        }
+    }
+
+    impl From<Rotation3<f64>> for Rot3<f64> {
+        fn from(r: Rotation3<f64>) -> Self {
+            Rot3::from(*r.matrix())
+        }
+    }
+
+    impl Rot3<f64> {
+        /// This matrix as nalgebra's [`Rotation3`], if it is a rotation: RᵀR = I to within 1e-12
+        /// in every entry and det R > 0. `None` otherwise (a `Rot3` may hold any 3×3 matrix, and
+        /// `Rotation3` promises orthogonality to every user of it, so there is no unchecked `From`).
+        pub fn to_rotation3(&self) -> Option<Rotation3<f64>> {
+            let m = Matrix3::from(*self);
+            if !m.iter().all(|e| e.is_finite()) {
+                return None;
+            }
+            let orthogonal = (m.transpose() * m - Matrix3::identity()).amax() <= 1e-12;
+            (orthogonal && m.determinant() > 0.0).then(|| Rotation3::from_matrix_unchecked(m))
+        }
     }
 }
 
@@ -318,5 +525,68 @@ mod tests {
         let b = planar(vec2(1.0f64, 2.0), std::f64::consts::FRAC_PI_2);
         let p = b.point(vec2(1.0, 0.0));
         assert!((p.x - 1.0).abs() < 1e-15 && (p.y - 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn nalgebra_vectors_round_trip_component_by_component() {
+        use nalgebra::{Vector2, Vector3};
+        let v = vec2(1.5f64, -2.25);
+        let n: Vector2<f64> = v.into();
+        assert_eq!((n.x, n.y), (1.5, -2.25));
+        assert_eq!(Vec2::from(n), v);
+        let w = vec3(0.1f64, -0.2, 0.3);
+        let n: Vector3<f64> = w.into();
+        assert_eq!((n.x, n.y, n.z), (0.1, -0.2, 0.3));
+        assert_eq!(Vec3::from(n), w);
+        // Arithmetic agrees on both sides.
+        let u = vec3(-1.0f64, 4.0, 2.0);
+        assert_eq!(
+            Vec3::from(Vector3::from(w).cross(&Vector3::from(u))),
+            w.cross(&u)
+        );
+    }
+
+    #[test]
+    fn nalgebra_matrices_keep_rows_and_columns() {
+        use nalgebra::{Matrix3, Rotation3, Vector3};
+        let r = Rot3 {
+            rows: [[1.0f64, 2.0, 3.0], [4.0, 5.0, 6.0], [7.0, 8.0, 9.0]],
+        };
+        let m: Matrix3<f64> = r.into();
+        // Row 0, column 2 on both sides (a transposed conversion would give 7).
+        assert_eq!(m[(0, 2)], 3.0);
+        assert_eq!(Rot3::from(m), r);
+        let x = vec3(0.5f64, -1.0, 2.0);
+        assert_eq!(Vec3::from(m * Vector3::from(x)), r * x);
+        // nalgebra's rotation about z by a maps x to (cos a, sin a, 0), as rot_z does.
+        let a = 0.7f64;
+        let nz = Rotation3::from_axis_angle(&Vector3::z_axis(), a);
+        let ours = Rot3::from(nz);
+        let mine = rot_z(a);
+        for i in 0..3 {
+            for j in 0..3 {
+                assert!((ours.rows[i][j] - mine.rows[i][j]).abs() < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn only_rotations_become_rotation3() {
+        let r = rot_z(0.3f64) * rot_x(-1.1) * rot_y(0.7);
+        let rot = r
+            .to_rotation3()
+            .expect("a product of rotations is a rotation");
+        assert_eq!(Rot3::from(rot), r);
+        let reflection = Rot3 {
+            rows: [[-1.0f64, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        };
+        assert!(reflection.to_rotation3().is_none(), "det = -1");
+        let scaled = Rot3 {
+            rows: [[2.0f64, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        };
+        assert!(scaled.to_rotation3().is_none(), "not orthogonal");
+        let mut nan = Rot3::<f64>::identity();
+        nan.rows[1][1] = f64::NAN;
+        assert!(nan.to_rotation3().is_none(), "NaN entries");
     }
 }

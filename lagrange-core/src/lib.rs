@@ -10,7 +10,8 @@
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`error`]: typed errors; nothing here panics on user input.
 //!
-//! Users depend on the `lagrange` facade crate, which re-exports all of this.
+//! Users depend on the `lagrange` facade crate, which exports the user-facing items by name and
+//! these modules as they are.
 
 pub mod analysis;
 pub mod constraints;
@@ -38,5 +39,5 @@ pub use integrate::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, StormerVerlet, Variational,
 };
 pub use mechanism::Mechanism;
-pub use validated::Validated;
 pub use model::{Coordinates, Model, State};
+pub use validated::Validated;

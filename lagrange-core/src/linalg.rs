@@ -23,7 +23,9 @@ pub const SINGULAR_PIVOT: f64 = 1e3 * f64::EPSILON;
 /// (real part's) value.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NotPositiveDefinite {
+    /// The row (and column) of the first pivot that is not positive, counting from 0.
     pub index: usize,
+    /// That pivot's value (its real part, for dual numbers).
     pub pivot: f64,
 }
 

@@ -31,6 +31,23 @@ pub trait Coordinates<const N: usize>: Copy + Default + std::fmt::Debug {
     fn to_array(&self) -> [f64; N];
     /// Builds the named struct from values in declaration order.
     fn from_array(values: [f64; N]) -> Self;
+    /// The values in declaration order as a nalgebra column vector, for linear algebra on a
+    /// state or a result (accelerations, momenta, an equilibrium).
+    ///
+    /// ```
+    /// use lagrange_core::Coordinates;
+    /// use nalgebra::SVector;
+    /// let q = [1.0, 2.0];
+    /// assert_eq!(q.to_vector(), SVector::<f64, 2>::new(1.0, 2.0));
+    /// assert_eq!(<[f64; 2]>::from_vector(SVector::<f64, 2>::new(3.0, 4.0)), [3.0, 4.0]);
+    /// ```
+    fn to_vector(&self) -> nalgebra::SVector<f64, N> {
+        nalgebra::SVector::from(self.to_array())
+    }
+    /// Builds the named struct from a nalgebra column vector in declaration order.
+    fn from_vector(values: nalgebra::SVector<f64, N>) -> Self {
+        Self::from_array(values.into())
+    }
 }
 
 /// Plain arrays are coordinates too (named q0, q1, … in messages); useful for hand-written models.
@@ -86,6 +103,49 @@ impl<C> State<C> {
     /// At `q` with velocities `v`, at time `t`.
     pub fn new(t: f64, q: C, v: C) -> Self {
         State { t, q, v }
+    }
+
+    /// The generalized coordinates q as a nalgebra column vector, in declaration order.
+    ///
+    /// ```
+    /// use lagrange_core::State;
+    /// use nalgebra::SVector;
+    ///
+    /// let s = State::new(0.5, [1.0, 2.0], [-3.0, 4.0]);
+    /// assert_eq!(s.q_vector(), SVector::<f64, 2>::new(1.0, 2.0));
+    /// assert_eq!(s.v_vector(), SVector::<f64, 2>::new(-3.0, 4.0));
+    /// let back = State::<[f64; 2]>::from_vectors(s.t, s.q_vector(), s.v_vector());
+    /// assert_eq!(back, s);
+    /// ```
+    pub fn q_vector<const N: usize>(&self) -> nalgebra::SVector<f64, N>
+    where
+        C: Coordinates<N>,
+    {
+        self.q.to_vector()
+    }
+
+    /// The generalized velocities q̇ as a nalgebra column vector, in declaration order.
+    pub fn v_vector<const N: usize>(&self) -> nalgebra::SVector<f64, N>
+    where
+        C: Coordinates<N>,
+    {
+        self.v.to_vector()
+    }
+
+    /// A state at time `t` from q and q̇ as nalgebra column vectors, in declaration order.
+    pub fn from_vectors<const N: usize>(
+        t: f64,
+        q: nalgebra::SVector<f64, N>,
+        v: nalgebra::SVector<f64, N>,
+    ) -> Self
+    where
+        C: Coordinates<N>,
+    {
+        State {
+            t,
+            q: C::from_vector(q),
+            v: C::from_vector(v),
+        }
     }
 }
 
@@ -181,4 +241,46 @@ fn non_finite_state<const N: usize>(
     Err(Error::NonFiniteState {
         state: crate::error::describe_state(names, t, q, v),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::SVector;
+
+    /// Named coordinates whose declaration order (r, phi) is not alphabetical.
+    #[derive(Clone, Copy, Debug, Default, PartialEq)]
+    struct Polar {
+        r: f64,
+        phi: f64,
+    }
+
+    impl Coordinates<2> for Polar {
+        const NAMES: [&'static str; 2] = ["r", "phi"];
+        fn to_array(&self) -> [f64; 2] {
+            [self.r, self.phi]
+        }
+        fn from_array(values: [f64; 2]) -> Self {
+            Polar {
+                r: values[0],
+                phi: values[1],
+            }
+        }
+    }
+
+    #[test]
+    fn vectors_follow_declaration_order() {
+        let s = State::new(
+            1.25,
+            Polar { r: 2.0, phi: 0.5 },
+            Polar { r: -0.1, phi: 3.0 },
+        );
+        assert_eq!(s.q_vector(), SVector::<f64, 2>::new(2.0, 0.5));
+        assert_eq!(s.v_vector(), SVector::<f64, 2>::new(-0.1, 3.0));
+        let back = State::<Polar>::from_vectors(1.25, s.q_vector(), s.v_vector());
+        assert_eq!(back, s);
+        let q = Polar::from_vector(SVector::<f64, 2>::new(7.0, -1.0));
+        assert_eq!(q, Polar { r: 7.0, phi: -1.0 });
+        assert_eq!(q.to_vector()[1], -1.0);
+    }
 }

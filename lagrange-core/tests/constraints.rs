@@ -11,8 +11,8 @@
 #![allow(clippy::needless_range_loop)] // index loops over parallel arrays of q, exact values, events
 
 use lagrange_core::constraints::{
-    self, consistent_state, constraint_forces, ConstraintKind, Constraints, ContactOptions,
-    ContactRk4, Coulomb, RowMode, CONSISTENCY_TOLERANCE,
+    self, consistent_state, consistent_state_holding, constraint_forces, ConstraintKind,
+    Constraints, ContactOptions, ContactRk4, Coulomb, RowMode, CONSISTENCY_TOLERANCE,
 };
 #[macro_use]
 mod support;
@@ -497,6 +497,87 @@ impl Constraints<3, 9, 2> for FourBar {
     }
 }
 impl_mechanism!(FourBar, 3, 9, constraints);
+
+#[test]
+fn four_bar_starts_at_the_held_crank_angle_and_rate() {
+    let p = FourBar {
+        l: [1.0, 3.0, 2.0],
+        m: [1.0, 2.0, 1.5],
+        d: 3.0,
+        g: 9.81,
+    };
+    let (theta1, rate1) = (0.3, 2.0);
+    let guess = State::new(0.0, [theta1, 0.2, 1.6], [rate1, 0.0, 0.0]);
+    // Without holding, the least-norm projection moves the crank too.
+    let moved = consistent_state(&p, &guess).unwrap();
+    assert!((moved.q[0] - theta1).abs() > 1e-3, "{:?}", moved.q);
+    assert!((moved.v[0] - rate1).abs() > 1e-3, "{:?}", moved.v);
+
+    let s = consistent_state_holding(&p, &guess, &["q0"], &["q0"]).unwrap();
+    assert_eq!(s.q[0], theta1, "the held angle is kept bit for bit");
+    assert_eq!(s.v[0], rate1, "the held rate is kept bit for bit");
+    // Closed form: B is where the circles |B − A| = l2 about the crank tip A and |B − D| = l3 about
+    // the rocker pivot D meet, on the side of the guess (above the line AD).
+    let [l1, l2, l3] = p.l;
+    let a = vec2(theta1.cos(), theta1.sin()) * l1;
+    let dd = vec2(p.d, 0.0);
+    let ad = dd - a;
+    let r = ad.norm();
+    let along = (l2 * l2 - l3 * l3 + r * r) / (2.0 * r);
+    let across = (l2 * l2 - along * along).sqrt();
+    let b = a + ad * (along / r) + vec2(-ad.y, ad.x) * (across / r);
+    let theta2 = (b.y - a.y).atan2(b.x - a.x);
+    let theta3 = (b.y - dd.y).atan2(b.x - dd.x);
+    assert!((s.q[1] - theta2).abs() < 1e-13, "{} vs {theta2}", s.q[1]);
+    assert!((s.q[2] - theta3).abs() < 1e-13, "{} vs {theta3}", s.q[2]);
+    // Velocities: l1 θ̇1 e⊥(θ1) + l2 θ̇2 e⊥(θ2) = l3 θ̇3 e⊥(θ3), dotted with e(θ3) and e(θ2).
+    let rate2 = -rate1 * l1 * (theta3 - theta1).sin() / (l2 * (theta3 - theta2).sin());
+    let rate3 = rate1 * l1 * (theta2 - theta1).sin() / (l3 * (theta2 - theta3).sin());
+    assert!((s.v[1] - rate2).abs() < 1e-12, "{} vs {rate2}", s.v[1]);
+    assert!((s.v[2] - rate3).abs() < 1e-12, "{} vs {rate3}", s.v[2]);
+    // And it is a state the integrators accept.
+    let mut next = s;
+    p.step::<Rk4>(&mut next, 1e-3).unwrap();
+
+    // Positions and velocities are held independently.
+    let only_angle = consistent_state_holding(&p, &guess, &["q0"], &[]).unwrap();
+    assert_eq!(only_angle.q[0], theta1);
+    assert!((only_angle.v[0] - rate1).abs() > 1e-3);
+
+    // Typed errors: a name that is not a coordinate, and too few free coordinates for two rows.
+    let err = consistent_state_holding(&p, &guess, &["crank"], &[]).unwrap_err();
+    assert!(
+        matches!(&err, Error::UnknownCoordinate { name, known } if name == "crank" && known.contains("`q2`")),
+        "{err}"
+    );
+    let err = consistent_state_holding(&p, &guess, &["q0", "q1"], &[]).unwrap_err();
+    assert!(
+        matches!(
+            &err,
+            Error::TooFewFreeCoordinates {
+                what: "coordinates",
+                free: 1,
+                rows: 2,
+                max: 1,
+                ..
+            }
+        ),
+        "{err}"
+    );
+    let err = consistent_state_holding(&p, &guess, &[], &["q0", "q1", "q2"]).unwrap_err();
+    assert!(
+        matches!(
+            &err,
+            Error::TooFewFreeCoordinates {
+                what: "velocities",
+                free: 0,
+                ..
+            }
+        ),
+        "{err}"
+    );
+    assert!(consistent_state_holding(&p, &guess, &[], &["q2"]).is_ok());
+}
 
 #[test]
 fn four_bar_linkage_keeps_energy_and_closure() {

@@ -19,8 +19,11 @@ fn finite(parameters: &[(&'static str, f64)]) -> Result<()> {
 /// vertical, gravity `g`.
 #[derive(Clone, Copy, Debug)]
 pub struct Pendulum {
+    /// Bob mass.
     pub m: f64,
+    /// Rod length.
     pub l: f64,
+    /// Gravitational acceleration.
     pub g: f64,
 }
 
@@ -49,9 +52,13 @@ impl_mechanism!(Pendulum, 1, 2);
 /// z = −R cos θ.
 #[derive(Clone, Copy, Debug)]
 pub struct SpinningHoop {
+    /// Bead mass.
     pub m: f64,
+    /// Hoop radius.
     pub r: f64,
+    /// Gravitational acceleration.
     pub g: f64,
+    /// Constant spin rate of the hoop about its vertical diameter.
     pub omega: f64,
 }
 
@@ -86,8 +93,11 @@ impl_mechanism!(SpinningHoop, 1, 3);
 /// holonomic constraint `rod`: √(x² + y²) − `l` = 0; gravity `g` along −y.
 #[derive(Clone, Copy, Debug)]
 pub struct CartesianPendulum {
+    /// Bob mass.
     pub m: f64,
+    /// Rod length.
     pub l: f64,
+    /// Gravitational acceleration, along −y.
     pub g: f64,
 }
 

@@ -189,9 +189,8 @@ mod solve;
 pub use contact::{ContactOptions, ContactRk4, ModeChange};
 pub use solve::{
     accelerations, accelerations_in_mode, check_consistent, check_velocity_rows_affine,
-    consistent_state, constraint_forces,
-    constraint_rows, infer_mode, project, ConstrainedAccelerations, ConstraintForces,
-    ConstraintRows, CONSISTENCY_TOLERANCE,
+    consistent_state, consistent_state_holding, constraint_forces, constraint_rows, infer_mode,
+    project, ConstrainedAccelerations, ConstraintForces, ConstraintRows, CONSISTENCY_TOLERANCE,
 };
 
 use crate::geometry::Scalar;

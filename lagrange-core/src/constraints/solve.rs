@@ -836,7 +836,11 @@ fn position_residual<M: Constraints<N, K, C>, const N: usize, const K: usize, co
         .fold(0.0f64, |m, i| m.max(g[i].abs()))
 }
 
-/// One mass-weighted least-norm correction δ = −M⁻¹Rᵀ(RM⁻¹Rᵀ)⁻¹r over the rows selected by `use_row`.
+/// One mass-weighted least-norm correction δ = −M⁻¹Rᵀ(RM⁻¹Rᵀ)⁻¹r over the rows selected by `use_row`,
+/// moving only the coordinates marked in `free`: held coordinates are removed from R and M is
+/// replaced by its free block (the held rows and columns by the identity), so δ is exactly zero
+/// on them and mass-weighted least-norm on the rest.
+#[allow(clippy::too_many_arguments)]
 fn least_norm_correction<
     M: Constraints<N, K, C>,
     const N: usize,
@@ -850,8 +854,25 @@ fn least_norm_correction<
     rows: &[SVector<f64, N>; C],
     residual: &[f64; C],
     use_row: &[bool; C],
+    free: &[bool; N],
 ) -> Result<SVector<f64, N>> {
-    let mass = mass_from_jacobian(model, jac);
+    let mut mass = mass_from_jacobian(model, jac);
+    let held_rows: [SVector<f64, N>; C];
+    let rows = if free.iter().all(|&f| f) {
+        rows
+    } else {
+        for a in 0..N {
+            for b in 0..N {
+                if !free[a] || !free[b] {
+                    mass[(a, b)] = if a == b { 1.0 } else { 0.0 };
+                }
+            }
+        }
+        held_rows = std::array::from_fn(|i| {
+            SVector::from_fn(|j, _| if free[j] { rows[i][j] } else { 0.0 })
+        });
+        &held_rows
+    };
     let l = cholesky(&mass)
         .map_err(|e| dynamics::singular_mass_matrix::<M::Coords, f64, N>(e, t, q))?;
     let y: [SVector<f64, N>; C] = std::array::from_fn(|i| {
@@ -907,6 +928,20 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
     v: &mut [f64; N],
     mode: &Mode<C>,
 ) -> Result<()> {
+    project_holding(model, t, q, v, mode, &[true; N], &[true; N])
+}
+
+/// [`project`] moving only the coordinates marked in `free_q` and the velocities marked in
+/// `free_v`; the others are kept bit for bit.
+fn project_holding<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+    model: &M,
+    t: f64,
+    q: &mut [f64; N],
+    v: &mut [f64; N],
+    mode: &Mode<C>,
+    free_q: &[bool; N],
+    free_v: &[bool; N],
+) -> Result<()> {
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
     let position_rows: [bool; C] =
         std::array::from_fn(|i| enforced[i] && M::KINDS[i].is_position());
@@ -920,7 +955,8 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
             }
             iterations += 1;
             let (rows, value, jac) = position_rows_and_jacobian(model, t, &qn);
-            let delta = least_norm_correction(model, t, &qn, &jac, &rows, &value, &position_rows)?;
+            let delta =
+                least_norm_correction(model, t, &qn, &jac, &rows, &value, &position_rows, free_q)?;
             let trial: [f64; N] = std::array::from_fn(|j| qn[j] + delta[j]);
             let new_residual = position_residual(model, t, &trial, mode);
             if !(new_residual < residual) {
@@ -949,7 +985,7 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
     let mut vn = *v;
     if enforced.iter().any(|&b| b) {
         let (rows, rate, jac) = velocity_rows_and_jacobian(model, t, &qn, &vn);
-        let delta = least_norm_correction(model, t, &qn, &jac, &rows, &rate, &enforced)?;
+        let delta = least_norm_correction(model, t, &qn, &jac, &rows, &rate, &enforced, free_v)?;
         for j in 0..N {
             vn[j] += delta[j];
         }
@@ -1126,7 +1162,55 @@ pub fn consistent_state<M: Constraints<N, K, C>, const N: usize, const K: usize,
     model: &M,
     guess: &State<M::Coords>,
 ) -> Result<State<M::Coords>> {
+    consistent_state_holding(model, guess, &[], &[])
+}
+
+/// [`consistent_state`] that keeps the named coordinates and velocities exactly as in the guess
+/// and solves the constraints for the others: start a four-bar or a slider-crank at a crank angle
+/// of exactly 0.3 and crank rate exactly 2, and let the loop closure place the rest.
+///
+/// `hold_q` names coordinates whose values are kept, `hold_v` coordinates whose velocities are
+/// kept (by the names of [`Coordinates::NAMES`]: `"phi"`, or `"theta[2]"` for an array
+/// coordinate). Positions are projected with the held coordinates fixed, the mass-weighted
+/// least-norm correction spread over the free ones; velocities likewise.
+///
+/// Errors, besides those of [`consistent_state`]: [`Error::UnknownCoordinate`] for a name that is
+/// not a coordinate; [`Error::TooFewFreeCoordinates`] when fewer coordinates (velocities) are left
+/// free than there are position (velocity-level) rows to satisfy. Holding a set that the
+/// constraints cannot be solved around — a crank held at an angle the loop cannot close at, or
+/// every free coordinate absent from a row — is [`Error::SingularConstraints`] or
+/// [`Error::ProjectionFailed`], as for an impossible guess.
+///
+/// ```
+/// use lagrange_core::analysis::doc_models::CartesianPendulum;
+/// use lagrange_core::constraints::consistent_state_holding;
+/// use lagrange_core::State;
+///
+/// // The bob on a rod of length 1: hold x = 0.6, solve for y (from a guess below the pivot).
+/// let p = CartesianPendulum { m: 1.0, l: 1.0, g: 9.81 };
+/// let guess = State::new(0.0, [0.6, -0.5], [1.6, 0.0]);
+/// let s = consistent_state_holding(&p, &guess, &["q0"], &["q0"])?;
+/// assert_eq!(s.q[0], 0.6);
+/// assert!((s.q[1] + 0.8).abs() < 1e-14);
+/// // The rod is rigid: ẋ x + ẏ y = 0 with ẋ held at 1.6 gives ẏ = 1.2.
+/// assert_eq!(s.v[0], 1.6);
+/// assert!((s.v[1] - 1.2).abs() < 1e-14);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+pub fn consistent_state_holding<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    guess: &State<M::Coords>,
+    hold_q: &[&str],
+    hold_v: &[&str],
+) -> Result<State<M::Coords>> {
     model.validate()?;
+    let free_q = free_mask::<N>(&<M::Coords as Coordinates<N>>::NAMES, hold_q)?;
+    let free_v = free_mask::<N>(&<M::Coords as Coordinates<N>>::NAMES, hold_v)?;
     let (mut q, mut v) = (guess.q.to_array(), guess.v.to_array());
     crate::model::check_state(&<M::Coords as Coordinates<N>>::NAMES, guess.t, &q, &v)?;
     // The declaration is checked before projecting (friction coefficients, velocity rows linear
@@ -1145,13 +1229,65 @@ pub fn consistent_state<M: Constraints<N, K, C>, const N: usize, const K: usize,
         }
     }
     friction_rows_follow(&M::KINDS, &mut mode, &cr.value);
-    project(model, guess.t, &mut q, &mut v, &mode)?;
+    let position_rows = (0..C)
+        .filter(|&i| mode.enforced(i) && M::KINDS[i].is_position())
+        .count();
+    let velocity_rows = (0..C).filter(|&i| mode.enforced(i)).count();
+    enough_free("coordinates", hold_q, &free_q, position_rows)?;
+    enough_free("velocities", hold_v, &free_v, velocity_rows)?;
+    project_holding(model, guess.t, &mut q, &mut v, &mode, &free_q, &free_v)?;
     check_consistent(model, guess.t, &q, &v, CONSISTENCY_TOLERANCE)?;
     Ok(State::new(
         guess.t,
         M::Coords::from_array(q),
         M::Coords::from_array(v),
     ))
+}
+
+/// Which coordinates are free: all but the named ones; a name that is not a coordinate is
+/// [`Error::UnknownCoordinate`].
+fn free_mask<const N: usize>(names: &[&'static str; N], held: &[&str]) -> Result<[bool; N]> {
+    let mut free = [true; N];
+    for name in held {
+        match names.iter().position(|n| n == name) {
+            Some(j) => free[j] = false,
+            None => {
+                return Err(Error::UnknownCoordinate {
+                    name: (*name).to_string(),
+                    known: names
+                        .iter()
+                        .map(|n| format!("`{n}`"))
+                        .collect::<Vec<_>>()
+                        .join(", "),
+                })
+            }
+        }
+    }
+    Ok(free)
+}
+
+/// [`Error::TooFewFreeCoordinates`] unless at least `rows` entries of `free` are set.
+fn enough_free<const N: usize>(
+    what: &'static str,
+    held: &[&str],
+    free: &[bool; N],
+    rows: usize,
+) -> Result<()> {
+    let n_free = free.iter().filter(|&&f| f).count();
+    if n_free >= rows {
+        return Ok(());
+    }
+    Err(Error::TooFewFreeCoordinates {
+        what,
+        held: held
+            .iter()
+            .map(|n| format!("`{n}`"))
+            .collect::<Vec<_>>()
+            .join(", "),
+        free: n_free,
+        rows,
+        max: N - rows,
+    })
 }
 
 /// Multipliers, generalized and Cartesian forces of every constraint at a state (mode by

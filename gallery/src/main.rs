@@ -1,37 +1,41 @@
 //! The gallery: every scene, simulated and printed against its closed form, with plots written to
 //! `plots/` (or `$LAGRANGE_PLOTS`). Exits non-zero if any check fails.
 //!
+//! A binary of this crate rather than an example of `lagrange`, so that building it builds only
+//! `lagrange` and its normal dependencies, not the root package's test and benchmark
+//! dev-dependencies. The scenes themselves stay in `examples/`, each runnable alone.
+//!
 //! ```text
-//! cargo run --release --example gallery
+//! cargo run --release -p lagrange-gallery
 //! ```
 
-#[path = "atwood.rs"]
+#[path = "../../examples/atwood.rs"]
 mod atwood;
-#[path = "breathing_ellipse.rs"]
+#[path = "../../examples/breathing_ellipse.rs"]
 mod breathing_ellipse;
-#[path = "cartesian_pendulum.rs"]
+#[path = "../../examples/cartesian_pendulum.rs"]
 mod cartesian_pendulum;
-#[path = "four_bar.rs"]
+#[path = "../../examples/four_bar.rs"]
 mod four_bar;
-#[path = "hoop_bifurcation.rs"]
+#[path = "../../examples/hoop_bifurcation.rs"]
 mod hoop_bifurcation;
-#[path = "pendulum.rs"]
+#[path = "../../examples/pendulum.rs"]
 mod pendulum;
-#[path = "ramp.rs"]
+#[path = "../../examples/ramp.rs"]
 mod ramp;
-#[path = "rigid_triangle.rs"]
+#[path = "../../examples/rigid_triangle.rs"]
 mod rigid_triangle;
-#[path = "rolling_wheel.rs"]
+#[path = "../../examples/rolling_wheel.rs"]
 mod rolling_wheel;
-#[path = "rough_ramp.rs"]
+#[path = "../../examples/rough_ramp.rs"]
 mod rough_ramp;
-#[path = "rough_wedge.rs"]
+#[path = "../../examples/rough_wedge.rs"]
 mod rough_wedge;
-#[path = "small_oscillations.rs"]
+#[path = "../../examples/small_oscillations.rs"]
 mod small_oscillations;
-#[path = "sphere_release.rs"]
+#[path = "../../examples/sphere_release.rs"]
 mod sphere_release;
-#[path = "wedge_block.rs"]
+#[path = "../../examples/wedge_block.rs"]
 mod wedge_block;
 
 // These two scenes are loaded once, as the mechanisms the statics scenes analyse.
