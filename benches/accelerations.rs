@@ -17,18 +17,18 @@
 //! `sys.validated()`, the handle a simulation uses: parameters checked when it was made, the state
 //! on every call.
 
-#[path = "../examples/double_pendulum.rs"]
-#[allow(dead_code)]
-mod double_pendulum_scene;
-#[path = "../examples/wedge_block.rs"]
-#[allow(dead_code)]
-mod wedge_block_scene;
-#[path = "../examples/four_bar.rs"]
-#[allow(dead_code)]
-mod four_bar_scene;
 #[path = "../examples/cartesian_pendulum.rs"]
 #[allow(dead_code)]
 mod cartesian_pendulum_scene;
+#[path = "../examples/double_pendulum.rs"]
+#[allow(dead_code)]
+mod double_pendulum_scene;
+#[path = "../examples/four_bar.rs"]
+#[allow(dead_code)]
+mod four_bar_scene;
+#[path = "../examples/wedge_block.rs"]
+#[allow(dead_code)]
+mod wedge_block_scene;
 
 #[allow(dead_code)]
 mod common;
@@ -354,7 +354,10 @@ fn four_bar(c: &mut Criterion) {
     let by_hand = constrained::four_bar(&hand, q, v);
     // Two solves of the same KKT system: a few ulps of the condition number times |q̈| ≈ 10.
     for j in 0..3 {
-        assert!((generated[j] - by_hand[j]).abs() < 1e-10, "{generated:?} vs {by_hand:?}");
+        assert!(
+            (generated[j] - by_hand[j]).abs() < 1e-10,
+            "{generated:?} vs {by_hand:?}"
+        );
     }
     let mut group = c.benchmark_group("four_bar");
     group.bench_function("hand_written", |b| {
@@ -365,7 +368,11 @@ fn four_bar(c: &mut Criterion) {
     });
     group.finish();
     let kkt = || {
-        black_box(constrained::four_bar(black_box(&hand), black_box(q), black_box(v)));
+        black_box(constrained::four_bar(
+            black_box(&hand),
+            black_box(q),
+            black_box(v),
+        ));
     };
     interleave("four_bar (KKT)", kkt, || {
         black_box(black_box(sys).accelerations(black_box(&s)).unwrap());

@@ -93,7 +93,11 @@ fn simulation(c: &mut Criterion) {
     });
     group.finish();
     let hand = || {
-        black_box(hand_written_run(black_box(&sys), black_box(q), black_box(v)));
+        black_box(hand_written_run(
+            black_box(&sys),
+            black_box(q),
+            black_box(v),
+        ));
     };
     interleave("generated", hand, || {
         black_box(generated_run(black_box(&sys), black_box(s)));
@@ -127,11 +131,7 @@ fn main() {
                 load_average()
             );
             if let Some(gv) = mean_ns(group, "generated_validated") {
-                println!(
-                    "  validated once {:.3} s, ratio {:.2}×",
-                    gv * scale,
-                    gv / h
-                );
+                println!("  validated once {:.3} s, ratio {:.2}×", gv * scale, gv / h);
             }
         }
         _ => println!("\n(no estimates: run without --test to measure)"),

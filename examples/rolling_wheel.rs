@@ -44,13 +44,13 @@ pub mod rolling_wheel {
     /// No slip along x at the contact point.
     #[velocity_constraint]
     fn roll_x() -> f64 {
-        wheel_dot.x - r * theta_dot * phi.cos()
+        wheel_dot.linear.x - r * theta_dot * phi.cos()
     }
 
     /// No slip along y at the contact point.
     #[velocity_constraint]
     fn roll_y() -> f64 {
-        wheel_dot.y - r * theta_dot * phi.sin()
+        wheel_dot.linear.y - r * theta_dot * phi.sin()
     }
 }
 

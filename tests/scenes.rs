@@ -13,6 +13,9 @@ mod cartesian_pendulum;
 #[path = "../examples/four_bar.rs"]
 #[allow(dead_code)]
 mod four_bar;
+#[path = "../examples/gyroscope.rs"]
+#[allow(dead_code)]
+mod gyroscope;
 #[path = "../examples/hoop_bifurcation.rs"]
 #[allow(dead_code)]
 mod hoop_bifurcation;
@@ -97,6 +100,11 @@ fn three_particles_equal_one_rigid_body() {
 #[test]
 fn atwood_machine() {
     assert_scene(atwood::run);
+}
+
+#[test]
+fn gyroscope_driven_by_a_torque() {
+    assert_scene(gyroscope::run);
 }
 
 #[test]

@@ -36,23 +36,26 @@ pub mod driven_body {
     }
 }
 
-/// L = R diag(I) Rᵀ ω, with the world-frame angular velocity of the z-y-x angles
-/// ω = ψ̇ e_z + θ̇ R_z(ψ) e_y + φ̇ R_z(ψ) R_y(θ) e_x.
-fn angular_momentum(p: &driven_body::DrivenBody, s: &driven_body::State) -> [f64; 3] {
+/// The world-frame angular velocity of the z-y-x angles: ω = ψ̇ e_z + θ̇ R_z(ψ) e_y + φ̇ R_z(ψ) R_y(θ) e_x.
+fn euler_angular_velocity(s: &driven_body::State) -> [f64; 3] {
     let (q, v) = (s.q, s.v);
     let (sy, cy) = q.yaw.sin_cos();
     let (sp, cp) = q.pitch.sin_cos();
-    let omega = [
+    [
         -v.pitch * sy + v.roll * cy * cp,
         v.pitch * cy + v.roll * sy * cp,
         v.yaw - v.roll * sp,
-    ];
+    ]
+}
+
+/// L = R diag(I) Rᵀ ω.
+fn angular_momentum(p: &driven_body::DrivenBody, s: &driven_body::State) -> [f64; 3] {
+    let omega = euler_angular_velocity(s);
     let r = p.bodies(s).body.rotation.rows;
     let inertia = [p.i1, p.i2, p.i3];
     // Rᵀ ω, scaled by the principal moments, rotated back.
-    let body: [f64; 3] = std::array::from_fn(|k| {
-        inertia[k] * (0..3).map(|i| r[i][k] * omega[i]).sum::<f64>()
-    });
+    let body: [f64; 3] =
+        std::array::from_fn(|k| inertia[k] * (0..3).map(|i| r[i][k] * omega[i]).sum::<f64>());
     std::array::from_fn(|i| (0..3).map(|k| r[i][k] * body[k]).sum())
 }
 
@@ -138,4 +141,40 @@ fn without_the_torque_the_angular_momentum_is_conserved() {
         // The same RK4 error as above.
         assert!((l[i] - l0[i]).abs() < 1e-10, "{l:?} vs {l0:?}");
     }
+}
+
+#[test]
+fn a_spatial_body_velocity_holds_its_angular_velocity() {
+    use driven_body::{Coords, DrivenBody, State};
+    let p = DrivenBody {
+        m: 2.0,
+        i1: 1.0,
+        i2: 2.0,
+        i3: 2.5,
+        tx: 0.0,
+        ty: 0.0,
+        tz: 0.0,
+    };
+    let s = State::new(
+        0.0,
+        Coords {
+            yaw: 0.4,
+            pitch: -0.3,
+            roll: 1.1,
+        },
+        Coords {
+            yaw: 0.2,
+            pitch: 0.1,
+            roll: 3.0,
+        },
+    );
+    let velocity = p.body_velocities(&s).body;
+    let want = euler_angular_velocity(&s);
+    let got = [velocity.angular.x, velocity.angular.y, velocity.angular.z];
+    for i in 0..3 {
+        // ½ Σ rₖ × ṙₖ against the Euler-angle formula: a few ulps of |ω| ≈ 3.
+        assert!((got[i] - want[i]).abs() < 1e-14, "{got:?} vs {want:?}");
+    }
+    // The centre of mass is fixed.
+    assert_eq!(velocity.linear.x, 0.0);
 }

@@ -142,12 +142,43 @@ fn close(a: f64, b: f64) -> bool {
 #[test]
 fn a_rheonomic_tree_with_potentials_forces_and_a_point_equals_the_dense_assembly() {
     let [m1, m2, l1, k, c, a, w, g, tau] = [1.0, 0.7, 1.1, 3.0, 0.4, 0.3, 2.0, 9.81, 0.5];
-    let tree = as_tree::Params { m1, m2, l1, k, c, a, w, g, tau };
-    let dense = dense::Params { m1, m2, l1, k, c, a, w, g, tau };
+    let tree = as_tree::Params {
+        m1,
+        m2,
+        l1,
+        k,
+        c,
+        a,
+        w,
+        g,
+        tau,
+    };
+    let dense = dense::Params {
+        m1,
+        m2,
+        l1,
+        k,
+        c,
+        a,
+        w,
+        g,
+        tau,
+    };
     for (t, q, v) in states::<3>() {
-        let s1 = as_tree::State::new(t, as_tree::Coords::from_array(q), as_tree::Coords::from_array(v));
-        let s2 = dense::State::new(t, dense::Coords::from_array(q), dense::Coords::from_array(v));
-        let (m_tree, m_dense) = (tree.mass_matrix(&s1).unwrap(), dense.mass_matrix(&s2).unwrap());
+        let s1 = as_tree::State::new(
+            t,
+            as_tree::Coords::from_array(q),
+            as_tree::Coords::from_array(v),
+        );
+        let s2 = dense::State::new(
+            t,
+            dense::Coords::from_array(q),
+            dense::Coords::from_array(v),
+        );
+        let (m_tree, m_dense) = (
+            tree.mass_matrix(&s1).unwrap(),
+            dense.mass_matrix(&s2).unwrap(),
+        );
         for (x, y) in m_tree.iter().zip(m_dense.iter()) {
             assert!(close(*x, *y), "M: {m_tree} vs {m_dense}");
         }
@@ -174,9 +205,20 @@ fn a_family_read_member_by_member_equals_the_dense_assembly() {
     let tree = family_chain::Chain { m, l, g };
     let dense = dense_chain::Chain { m, l, g };
     for (t, q, v) in states::<5>() {
-        let s1 = family_chain::State::new(t, family_chain::Coords { theta: q }, family_chain::Coords { theta: v });
-        let s2 = dense_chain::State::new(t, dense_chain::Coords { theta: q }, dense_chain::Coords { theta: v });
-        let (m_tree, m_dense) = (tree.mass_matrix(&s1).unwrap(), dense.mass_matrix(&s2).unwrap());
+        let s1 = family_chain::State::new(
+            t,
+            family_chain::Coords { theta: q },
+            family_chain::Coords { theta: v },
+        );
+        let s2 = dense_chain::State::new(
+            t,
+            dense_chain::Coords { theta: q },
+            dense_chain::Coords { theta: v },
+        );
+        let (m_tree, m_dense) = (
+            tree.mass_matrix(&s1).unwrap(),
+            dense.mass_matrix(&s2).unwrap(),
+        );
         for (x, y) in m_tree.iter().zip(m_dense.iter()) {
             assert!(close(*x, *y), "M: {m_tree} vs {m_dense}");
         }

@@ -83,7 +83,10 @@ pub fn interleave(label: &str, mut baseline: impl FnMut(), mut measured: impl Fn
 
 /// Prints every interleaved ratio recorded so far, under `title`.
 pub fn print_interleaved(title: &str) {
-    println!("\n{title} (median of 41 interleaved rounds [quartiles]; load average {}):", load_average());
+    println!(
+        "\n{title} (median of 41 interleaved rounds [quartiles]; load average {}):",
+        load_average()
+    );
     for (label, [low, median, high]) in INTERLEAVED.lock().unwrap().iter() {
         println!("  {label:<22} {median:.2}×  [{low:.2}, {high:.2}]");
     }

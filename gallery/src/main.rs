@@ -17,6 +17,8 @@ mod breathing_ellipse;
 mod cartesian_pendulum;
 #[path = "../../examples/four_bar.rs"]
 mod four_bar;
+#[path = "../../examples/gyroscope.rs"]
+mod gyroscope;
 #[path = "../../examples/hoop_bifurcation.rs"]
 mod hoop_bifurcation;
 #[path = "../../examples/pendulum.rs"]
@@ -63,6 +65,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     cartesian_pendulum::run,
     rough_ramp::run,
     rough_wedge::run,
+    gyroscope::run,
 ];
 
 fn main() {

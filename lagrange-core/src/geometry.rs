@@ -415,6 +415,26 @@ pub struct Spatial<D> {
     pub rotation: Rot3<D>,
 }
 
+/// The velocity of a spatial rigid body: its centre of mass's and its angular velocity, both in the
+/// world frame. What a spatial body's `body_dot` is in forces, velocity constraints and friction.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct SpatialVelocity<D> {
+    /// The centre of mass's velocity.
+    pub linear: Vec3<D>,
+    /// The angular velocity ω (Ṙ = [ω]× R).
+    pub angular: Vec3<D>,
+}
+
+/// The world-frame angular velocity of a rotation R from its columns rₖ and their rates ṙₖ:
+/// Ṙ = [ω]× R gives ṙₖ = ω × rₖ, and Σₖ rₖ × (ω × rₖ) = Σₖ (ω |rₖ|² − rₖ (rₖ·ω)) = 3ω − ω, so
+/// ω = ½ Σₖ rₖ × ṙₖ.
+#[inline(always)]
+pub fn angular_velocity<D: Scalar>(columns: [Vec3<D>; 3], rates: [Vec3<D>; 3]) -> Vec3<D> {
+    let sum =
+        columns[0].cross(&rates[0]) + columns[1].cross(&rates[1]) + columns[2].cross(&rates[2]);
+    sum * D::from(0.5)
+}
+
 /// `spatial(centre_of_mass, rotation)`.
 #[inline(always)]
 pub fn spatial<D>(position: Vec3<D>, rotation: Rot3<D>) -> Spatial<D> {

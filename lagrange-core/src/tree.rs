@@ -264,10 +264,14 @@ fn mass_matrix<
             sum * weight
         };
         for (s, seed_s) in body.seeds.iter().enumerate() {
-            let Seed::Coordinate(cs) = *seed_s else { continue };
+            let Seed::Coordinate(cs) = *seed_s else {
+                continue;
+            };
             // a = b: C_b D_bᵀ D_b, every entry (the (r, s) and (s, r) products are equal).
             for (r, seed_r) in body.seeds.iter().enumerate() {
-                let Seed::Coordinate(cr) = *seed_r else { continue };
+                let Seed::Coordinate(cr) = *seed_r else {
+                    continue;
+                };
                 m[(cr, cs)] += dot(db, r, s);
             }
             // a above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ), the same term into both mirrored entries (twice
@@ -276,7 +280,9 @@ fn mass_matrix<
             while let Some(a) = ancestor {
                 let above = &M::BODIES[a];
                 for (r, seed_r) in above.seeds.iter().enumerate() {
-                    let Seed::Coordinate(cr) = *seed_r else { continue };
+                    let Seed::Coordinate(cr) = *seed_r else {
+                        continue;
+                    };
                     let term = dot(&jacobian[a], r, s);
                     m[(cr, cs)] += term;
                     m[(cs, cr)] += term;
@@ -429,10 +435,19 @@ mod tests {
         // Both sum the same products in a different order: a few ulps of entries of order 1–30.
         let close = |a: f64, b: f64| (a - b).abs() <= 1e-13 * (1.0 + b.abs());
         for r in 0..3 {
-            assert!(close(tree.generalized_forces[r], dense.generalized_forces[r]), "F{r}");
-            assert!(close(tree.inertial_terms[r], dense.inertial_terms[r]), "b{r}");
+            assert!(
+                close(tree.generalized_forces[r], dense.generalized_forces[r]),
+                "F{r}"
+            );
+            assert!(
+                close(tree.inertial_terms[r], dense.inertial_terms[r]),
+                "b{r}"
+            );
             for c in 0..3 {
-                assert!(close(tree.mass_matrix[(r, c)], dense.mass_matrix[(r, c)]), "M{r}{c}");
+                assert!(
+                    close(tree.mass_matrix[(r, c)], dense.mass_matrix[(r, c)]),
+                    "M{r}{c}"
+                );
             }
         }
         assert_eq!(tree.mass_matrix, tree.mass_matrix.transpose());

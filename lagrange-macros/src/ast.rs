@@ -240,7 +240,8 @@ impl Mechanism {
             // Its fields typed by a parameter are read as `f64`, not reported again.
             let params: Vec<Ident> = s.generics.type_params().map(|p| p.ident.clone()).collect();
             for field in s.fields.iter_mut() {
-                if matches!(&field.ty, Type::Path(p) if p.path.get_ident().is_some_and(|i| params.contains(i))) {
+                if matches!(&field.ty, Type::Path(p) if p.path.get_ident().is_some_and(|i| params.contains(i)))
+                {
                     field.ty = syn::parse_quote!(f64);
                 }
             }
@@ -342,7 +343,15 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
             .named
             .iter()
             .map(|f| {
-                reject_cfg(cx, &f.attrs, if coords { "a coordinate" } else { "a parameter" });
+                reject_cfg(
+                    cx,
+                    &f.attrs,
+                    if coords {
+                        "a coordinate"
+                    } else {
+                        "a parameter"
+                    },
+                );
                 let array = match ungroup_type(&f.ty) {
                     // `pub theta: [f64; LINKS]`: an array of coordinates.
                     Type::Array(a) if coords && is_f64(&a.elem) => Some((a.len.clone(), 0)),

@@ -167,7 +167,10 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     if let (None, Some(s)) = (&mechanism.params, tuple) {
         cx.error_spanned_by(
             &s.fields,
-            format!("the parameter struct has named fields: `pub struct {} {{ pub m: f64, ... }}`", s.ident),
+            format!(
+                "the parameter struct has named fields: `pub struct {} {{ pub m: f64, ... }}`",
+                s.ident
+            ),
         );
     } else if mechanism.params.is_none() {
         cx.error_at(
@@ -624,7 +627,9 @@ fn check_force_target<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Optio
             // `#[torque(on = bob)]` on a particle: only a rigid body has an orientation to twist.
             _ => cx.error_spanned_by(
                 on,
-                format!("`{on}` is not a rigid body: a torque acts on a `Planar` or `Spatial` body"),
+                format!(
+                    "`{on}` is not a rigid body: a torque acts on a `Planar` or `Spatial` body"
+                ),
             ),
         }
     }
@@ -1036,7 +1041,9 @@ impl Resolver<'_, '_> {
         // `r#type_dot` is not an identifier: the velocity of `r#type` is `type_dot`.
         } else if velocity_of.is_some_and(|v| model.coords.iter().any(|c| c.ident.unraw() == v)) {
             Some(Name::CoordVelocity)
-        } else if velocity_of.is_some_and(|v| model.bodies.iter().any(|b| b.decl.ident().unraw() == v)) {
+        } else if velocity_of
+            .is_some_and(|v| model.bodies.iter().any(|b| b.decl.ident().unraw() == v))
+        {
             Some(Name::BodyVelocity)
         } else if model.mechanism.item_names.iter().any(|i| *i == name)
             || GEOMETRY_FUNCTIONS.contains(&name.as_str())

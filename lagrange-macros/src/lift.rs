@@ -24,7 +24,16 @@ use syn::{BinOp, Expr, ExprLit, Lit};
 const F64_ARGUMENT_METHODS: &[&str] = &["powf", "powi", "log"];
 /// `f64` methods provided by `ScalarExt` on the scalar.
 const EXT_METHODS: &[&str] = &[
-    "max", "min", "clamp", "hypot", "to_degrees", "to_radians", "floor", "ceil", "round", "trunc",
+    "max",
+    "min",
+    "clamp",
+    "hypot",
+    "to_degrees",
+    "to_radians",
+    "floor",
+    "ceil",
+    "round",
+    "trunc",
     "pow_scalar",
 ];
 
@@ -84,7 +93,9 @@ fn is_integer(expr: &Expr, integers: &BTreeSet<String>) -> bool {
             .path
             .get_ident()
             .is_some_and(|i| integers.contains(&i.to_string())),
-        Expr::Cast(c) => !matches!(&*c.ty, syn::Type::Path(p) if p.path.is_ident("f64") || p.path.is_ident("f32")),
+        Expr::Cast(c) => {
+            !matches!(&*c.ty, syn::Type::Path(p) if p.path.is_ident("f64") || p.path.is_ident("f32"))
+        }
         Expr::MethodCall(m) => m.method == "len",
         Expr::Paren(p) => is_integer(&p.expr, integers),
         Expr::Unary(u) => is_integer(&u.expr, integers),
@@ -188,7 +199,9 @@ impl VisitMut for Lifter<'_> {
                 self.visit_expr_mut(&mut index.expr);
                 self.integer_scope(|v| v.visit_expr_mut(&mut index.index));
             }
-            Expr::Range(_) | Expr::Repeat(_) => self.integer_scope(|v| visit_mut::visit_expr_mut(v, expr)),
+            Expr::Range(_) | Expr::Repeat(_) => {
+                self.integer_scope(|v| visit_mut::visit_expr_mut(v, expr))
+            }
             _ => visit_mut::visit_expr_mut(self, expr),
         }
     }
@@ -311,7 +324,9 @@ mod tests {
     use quote::{quote, ToTokens};
 
     fn lifted(block: syn::Block) -> String {
-        lift_block(&block, &quote!(__D)).into_token_stream().to_string()
+        lift_block(&block, &quote!(__D))
+            .into_token_stream()
+            .to_string()
     }
 
     #[test]
@@ -330,19 +345,36 @@ mod tests {
         );
         // `k` indexes, so `i * 2` that defines it stays an integer.
         assert_eq!(
-            lifted(syn::parse_quote!({ let k = i * 2; theta[k] })),
+            lifted(syn::parse_quote!({
+                let k = i * 2;
+                theta[k]
+            })),
             "{ let k = i * 2 ; theta [k] }"
         );
         assert_eq!(
-            lifted(syn::parse_quote!({ if i == 0 { x } else { bob[i - 1] } })),
+            lifted(syn::parse_quote!({
+                if i == 0 {
+                    x
+                } else {
+                    bob[i - 1]
+                }
+            })),
             "{ if i == 0 { x } else { bob [i - 1] } }"
         );
     }
 
     #[test]
     fn f64_types_are_the_scalar_and_ext_methods_are_imported() {
-        let out = lifted(syn::parse_quote!({ let f = |s: f64| s * 2.0; f(theta).max(0.0) }));
-        assert!(out.starts_with("{ # [allow (unused_imports)] use :: lagrange :: __private :: ScalarExt as _ ;"), "{out}");
+        let out = lifted(syn::parse_quote!({
+            let f = |s: f64| s * 2.0;
+            f(theta).max(0.0)
+        }));
+        assert!(
+            out.starts_with(
+                "{ # [allow (unused_imports)] use :: lagrange :: __private :: ScalarExt as _ ;"
+            ),
+            "{out}"
+        );
         assert!(out.contains("| s : __D |"), "{out}");
         assert!(out.contains("max (< __D > :: from (0.0))"), "{out}");
         assert!(lifted(syn::parse_quote!({ x.powf(n) })).contains("pow_scalar"));

@@ -270,7 +270,10 @@ mod tests {
 
     #[test]
     fn unused_lets_do_not_reach_the_value() {
-        assert_eq!(value("{ let _unused = theta; vec2(x, 0.0) }"), ["vec2", "x"]);
+        assert_eq!(
+            value("{ let _unused = theta; vec2(x, 0.0) }"),
+            ["vec2", "x"]
+        );
         assert_eq!(value("{ let _ = theta; x }"), ["x"]);
         // Through a chain of locals, shadowing, and mutation by a later statement.
         assert_eq!(value("{ let a = theta; let b = a * l; b }"), ["theta", "l"]);

@@ -136,7 +136,8 @@ fn rebuild(pieces: &[Piece]) -> TokenStream {
 /// Tokens a mutation may put in: names the macro treats specially, keywords, punctuation and
 /// literals of every kind.
 fn pool() -> Vec<proc_macro2::TokenTree> {
-    let text = "theta theta1 bob bob1 Coords f64 usize Vec2 Vec3 Planar Spatial mass count on inertia \
+    let text =
+        "theta theta1 bob bob1 Coords f64 usize Vec2 Vec3 Planar Spatial mass count on inertia \
                 kinetic t self fn struct pub mod let return r#type r#fn _ theta_dot bob_dot LINKS \
                 , ; = # - * : . ! & < > == >= 0 1 8 0usize 1.5 -1 \"s\" 'c' 1e400 i";
     text.parse::<TokenStream>().unwrap().into_iter().collect()

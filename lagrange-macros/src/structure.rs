@@ -90,7 +90,13 @@ pub fn tree(model: &Model) -> Option<Tree> {
             tree.bodies.push(own);
         }
     }
-    tree.width = tree.bodies.iter().map(TreeBody::seeds).max().unwrap_or(0).max(1);
+    tree.width = tree
+        .bodies
+        .iter()
+        .map(TreeBody::seeds)
+        .max()
+        .unwrap_or(0)
+        .max(1);
     // Seeds as wide as the dense pass's save nothing, and the dense pass is the shorter code
     // (BENCHMARKS.md §1: a pendulum, a wedge).
     (tree.width < model.dof()).then_some(tree)
@@ -224,7 +230,14 @@ fn split_expr(
                 (false, None) => return None,
             };
             let (parent, block) = split_block(model, tree, index, body, family, branch)?;
-            Some((parent, Expr::Block(syn::ExprBlock { attrs: Vec::new(), label: None, block })))
+            Some((
+                parent,
+                Expr::Block(syn::ExprBlock {
+                    attrs: Vec::new(),
+                    label: None,
+                    block,
+                }),
+            ))
         }
         Expr::Binary(sum) if matches!(sum.op, BinOp::Add(_)) => {
             let (left, right) = (&*sum.left, &*sum.right);
@@ -282,11 +295,15 @@ fn parent_of(
 
 /// Whether the block binds the name of a body anywhere (a local that could shadow it).
 fn shadows_a_body(model: &Model, block: &Block) -> bool {
-    let free: BTreeSet<String> = names::free_names(block).iter().map(Ident::to_string).collect();
+    let free: BTreeSet<String> = names::free_names(block)
+        .iter()
+        .map(Ident::to_string)
+        .collect();
     let text = block.to_token_stream().to_string();
     model.bodies.iter().any(|b| {
         let name = b.decl.ident().to_string();
-        text.contains(&format!("let {name}")) || text.contains(&format!("let mut {name}"))
+        text.contains(&format!("let {name}"))
+            || text.contains(&format!("let mut {name}"))
             || (!free.contains(&name) && text.split_whitespace().any(|w| w == name))
     })
 }
@@ -296,7 +313,10 @@ fn condition(cond: &Expr, family: (&Ident, usize)) -> Option<bool> {
     let Expr::Binary(c) = strip(cond) else {
         return None;
     };
-    let (left, right) = (evaluate(&c.left, Some(family))?, evaluate(&c.right, Some(family))?);
+    let (left, right) = (
+        evaluate(&c.left, Some(family))?,
+        evaluate(&c.right, Some(family))?,
+    );
     Some(match c.op {
         BinOp::Eq(_) => left == right,
         BinOp::Ne(_) => left != right,
@@ -357,7 +377,10 @@ fn seed_elements(
         return None;
     }
     // An array coordinate still named (passed whole, iterated): not one element.
-    let free: BTreeSet<String> = names::free_names(&block).iter().map(Ident::to_string).collect();
+    let free: BTreeSet<String> = names::free_names(&block)
+        .iter()
+        .map(Ident::to_string)
+        .collect();
     if arrays.iter().any(|(name, _, _)| free.contains(name)) {
         return None;
     }

@@ -18,7 +18,7 @@ fn body_types(shape: Shape) -> (TokenStream, TokenStream) {
             (quote!(#g::Vec3<T>), quote!(#g::Vec3<T>))
         }
         Shape::Planar => (quote!(#g::Planar<T>), quote!(#g::Planar<T>)),
-        Shape::Spatial => (quote!(#g::Spatial<T>), quote!(#g::Vec3<T>)),
+        Shape::Spatial => (quote!(#g::Spatial<T>), quote!(#g::SpatialVelocity<T>)),
     }
 }
 
@@ -62,7 +62,7 @@ pub(super) fn bodies_structs(model: &Model) -> TokenStream {
 
         /// The velocity of every body and point, by name: a particle or point's velocity; for a
         /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
-        /// spatial body, its centre-of-mass velocity.
+        /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
         #derive
         #[allow(dead_code)]
         pub struct BodyVelocities<T = f64> {
@@ -97,8 +97,8 @@ pub(super) fn inherent_impl(model: &Model) -> TokenStream {
             pub fn body_velocities(&self, state: &State) -> BodyVelocities {
                 let q = <Coords as #p::Coordinates<#n>>::to_array(&state.q);
                 let v = <Coords as #p::Coordinates<#n>>::to_array(&state.v);
-                let (_, x_dot) = #p::dynamics::cartesian_velocities::<Self, f64, #n, #k>(self, state.t, &q, &v);
-                Self::__lagrange_velocities_from_cartesian(&x_dot)
+                let (x, x_dot) = #p::dynamics::cartesian_velocities::<Self, f64, #n, #k>(self, state.t, &q, &v);
+                Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
             }
 
             #bodies_fn
@@ -196,7 +196,25 @@ fn unflatten_at(body: &Body, first: usize, x: &TokenStream, velocity: bool) -> T
         Shape::Particle(Dim::Two) | Shape::Point(Dim::Two) => quote!(#g::vec2(#r0, #r1)),
         Shape::Particle(Dim::Three) | Shape::Point(Dim::Three) => quote!(#g::vec3(#r0, #r1, #r2)),
         Shape::Planar => quote!(#g::planar(#g::vec2(#r0, #r1), #r2)),
-        Shape::Spatial if velocity => quote!(#g::vec3(#r0, #r1, #r2)),
+        // The centre of mass's velocity, and ω = ½ Σₖ rₖ × ṙₖ from the rotation's columns
+        // (positions in `__x`, rates in the velocity rows).
+        Shape::Spatial if velocity => {
+            let column = |x: &TokenStream, k: usize| {
+                let rows = (0..3).map(|i| row(x, first + 3 + 3 * k + i));
+                quote!(#g::vec3(#(#rows),*))
+            };
+            let positions = quote!(__x);
+            let (c0, c1, c2) = (
+                column(&positions, 0),
+                column(&positions, 1),
+                column(&positions, 2),
+            );
+            let (d0, d1, d2) = (column(x, 0), column(x, 1), column(x, 2));
+            quote!(#g::SpatialVelocity {
+                linear: #g::vec3(#r0, #r1, #r2),
+                angular: #g::angular_velocity([#c0, #c1, #c2], [#d0, #d1, #d2]),
+            })
+        }
         Shape::Spatial => {
             // Column k of the rotation occupies rows 3 + 3k .. 6 + 3k: rows[r][k] = x[3 + 3k + r].
             let rows = (0..3).map(|i| {
@@ -275,7 +293,8 @@ fn velocities_from_cartesian(model: &Model) -> TokenStream {
         .map(|b| unflatten(b, &quote!(__x_dot), true));
     quote! {
         #[inline(always)]
-        fn __lagrange_velocities_from_cartesian<__D: #p::Scalar>(__x_dot: &[__D; #k]) -> BodyVelocities<__D> {
+        #[allow(unused_variables)]
+        fn __lagrange_velocities_from_cartesian<__D: #p::Scalar>(__x: &[__D; #k], __x_dot: &[__D; #k]) -> BodyVelocities<__D> {
             BodyVelocities { #(#names: #values),* }
         }
     }

@@ -96,7 +96,7 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
         let body_velocities = model.bodies.iter().map(|b| format_ident!("{}_dot", b.decl.ident()));
         quote! {
             #coords
-            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
+            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x, __x_dot);
         }
     });
     quote! {

@@ -19,7 +19,11 @@ fn lit(n: usize) -> proc_macro2::Literal {
 /// On error: the user's items, stubs for what the rest of their code names (`Coords`, the
 /// parameter struct, `State`, a `Mechanism` impl that is never run), and every error. So one
 /// mistake gives one message, not a cascade of rustc errors about missing items.
-pub(crate) fn fallback(mechanism: &Mechanism, model: Option<&Model>, errors: Vec<syn::Error>) -> TokenStream {
+pub(crate) fn fallback(
+    mechanism: &Mechanism,
+    model: Option<&Model>,
+    errors: Vec<syn::Error>,
+) -> TokenStream {
     let p = quote!(::lagrange::__private);
     let (attrs, vis, ident) = (&mechanism.attrs, &mechanism.vis, &mechanism.ident);
     let other_items = &mechanism.other_items;
@@ -135,9 +139,9 @@ fn coords_stub(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
     });
     let unreachable = quote!(#p::core::unreachable!("this mechanism failed to compile"));
     // `struct Coords {}` (reported): `T` is still used.
-    let marker = coords.is_empty().then(|| {
-        quote!(#[doc(hidden)] pub __scalar: #p::core::marker::PhantomData<T>,)
-    });
+    let marker = coords
+        .is_empty()
+        .then(|| quote!(#[doc(hidden)] pub __scalar: #p::core::marker::PhantomData<T>,));
     let marker_default = coords
         .is_empty()
         .then(|| quote!(__scalar: #p::core::marker::PhantomData,));

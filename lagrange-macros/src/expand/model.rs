@@ -418,7 +418,7 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
             #shared
             #velocities
             #bodies
-            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x_dot);
+            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x, __x_dot);
             #(#forces)*
         }
     }

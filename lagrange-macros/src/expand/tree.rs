@@ -57,7 +57,9 @@ pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
             None => quote!(#p::core::option::Option::None),
         };
         let seeds = row_seeds(own, tree.width);
-        bodies.push(quote!(#p::tree::Body { row: #row, dim: #dim, parent: #parent, seeds: [#(#seeds),*] }));
+        bodies.push(
+            quote!(#p::tree::Body { row: #row, dim: #dim, parent: #parent, seeds: [#(#seeds),*] }),
+        );
     }
     let b = lit(bodies.len());
     quote! {

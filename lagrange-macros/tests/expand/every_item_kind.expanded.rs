@@ -57,7 +57,7 @@ pub mod everything {
     }
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
-    /// spatial body, its centre-of-mass velocity.
+    /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -69,7 +69,7 @@ pub mod everything {
         /// A bar on a pivot.
         pub bar: ::lagrange::__private::geometry::Planar<T>,
         pub tip: ::lagrange::__private::geometry::Vec2<T>,
-        pub top: ::lagrange::__private::geometry::Vec3<T>,
+        pub top: ::lagrange::__private::geometry::SpatialVelocity<T>,
     }
     impl Everything {
         /// Every body and point at `state`, by name.
@@ -90,13 +90,13 @@ pub mod everything {
             let v = <Coords as ::lagrange::__private::Coordinates<
                 2,
             >>::to_array(&state.v);
-            let (_, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+            let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
                 Self,
                 f64,
                 2,
                 17,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x_dot)
+            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -151,7 +151,9 @@ pub mod everything {
             }
         }
         #[inline(always)]
+        #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x: &[__D; 17],
             __x_dot: &[__D; 17],
         ) -> BodyVelocities<__D> {
             BodyVelocities {
@@ -160,11 +162,49 @@ pub mod everything {
                     __x_dot[2],
                 ),
                 tip: ::lagrange::__private::geometry::vec2(__x_dot[15], __x_dot[16]),
-                top: ::lagrange::__private::geometry::vec3(
-                    __x_dot[3],
-                    __x_dot[4],
-                    __x_dot[5],
-                ),
+                top: ::lagrange::__private::geometry::SpatialVelocity {
+                    linear: ::lagrange::__private::geometry::vec3(
+                        __x_dot[3],
+                        __x_dot[4],
+                        __x_dot[5],
+                    ),
+                    angular: ::lagrange::__private::geometry::angular_velocity(
+                        [
+                            ::lagrange::__private::geometry::vec3(
+                                __x[6],
+                                __x[7],
+                                __x[8],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x[9],
+                                __x[10],
+                                __x[11],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x[12],
+                                __x[13],
+                                __x[14],
+                            ),
+                        ],
+                        [
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[6],
+                                __x_dot[7],
+                                __x_dot[8],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[9],
+                                __x_dot[10],
+                                __x_dot[11],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[12],
+                                __x_dot[13],
+                                __x_dot[14],
+                            ),
+                        ],
+                    ),
+                },
             }
         }
     }
@@ -388,6 +428,7 @@ pub mod everything {
             let [theta_dot, phi_dot] = *__v;
             let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
             let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = Self::__lagrange_velocities_from_cartesian(
+                __x,
                 __x_dot,
             );
             let __force_push: ::lagrange::__private::geometry::Vec2<__D> = {

@@ -45,7 +45,7 @@ pub mod varying {
     }
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
-    /// spatial body, its centre-of-mass velocity.
+    /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -75,13 +75,13 @@ pub mod varying {
             let v = <Coords as ::lagrange::__private::Coordinates<
                 1,
             >>::to_array(&state.v);
-            let (_, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+            let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
                 Self,
                 f64,
                 1,
                 2,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x_dot)
+            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -112,7 +112,9 @@ pub mod varying {
             }
         }
         #[inline(always)]
+        #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x: &[__D; 2],
             __x_dot: &[__D; 2],
         ) -> BodyVelocities<__D> {
             BodyVelocities {
