@@ -275,27 +275,6 @@ pub fn diagnose<M: Mechanism<N>, const N: usize>(
     error
 }
 
-/// Checks a step size.
-pub fn check_step(h: f64) -> Result<()> {
-    if h.is_finite() && h > 0.0 {
-        Ok(())
-    } else {
-        Err(Error::InvalidStep { h })
-    }
-}
-
-/// Checks a step size from time `t`: positive and finite ([`Error::InvalidStep`]), and large enough
-/// that t + h ≠ t in floating point ([`Error::StepDoesNotAdvance`]; a subnormal h at t = 1, say).
-/// A non-finite `t` passes here and is refused by the state check that follows.
-pub fn check_step_at(t: f64, h: f64) -> Result<()> {
-    check_step(h)?;
-    if t + h == t {
-        Err(Error::StepDoesNotAdvance { t, h })
-    } else {
-        Ok(())
-    }
-}
-
 /// Implements [`Mechanism`] for a hand-written [`Model`](crate::Model) with `N` coordinates and `K`
 /// Cartesian coordinates, forwarding every method to [`crate::dynamics`]: the same glue
 /// `#[mechanism]` generates, for models written by hand (tests, benchmarks, peers).

@@ -33,6 +33,11 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
+use super::solver::{check_step, Stepper};
+pub use super::solver::{
+    Direction, Event, EventHit, Observation, Outcome, Stats, StopReason,
+};
+use super::Integrator;
 use crate::error::{Error, Result};
 use crate::mechanism::{diagnose, Mechanism};
 use crate::model::{check_state, Coordinates, State};
@@ -121,20 +126,16 @@ impl Default for Dopri5 {
     }
 }
 
-/// What an integration cost.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Dopri5Stats {
-    /// Accepted steps.
-    pub accepted: usize,
-    /// Rejected steps.
-    pub rejected: usize,
-    /// Evaluations of the accelerations q̈ (right-hand side).
-    pub evaluations: usize,
-    /// Evaluations of event functions (including root finding).
-    pub event_evaluations: usize,
-}
+/// What a Dormand–Prince integration cost (the statistics every solver keeps).
+pub type Dopri5Stats = Stats;
 
-/// The dense output of one step: a 4th-order polynomial in time for q and v over [t₀, t₀ + h].
+/// The result of [`Dopri5::integrate`].
+pub type Dopri5Outcome<C> = Outcome<C>;
+
+/// The dense output of one step: a polynomial in time for q and v over [t₀, t₀ + h], in the form
+/// of Hairer's CONTD5, y(t₀ + θh) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))): of order 4 for
+/// Dopri5, and the cubic Hermite interpolant (r₅ = 0) of the end values and derivatives for the
+/// other methods.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DenseOutput<const N: usize> {
     t0: f64,
@@ -144,7 +145,7 @@ pub struct DenseOutput<const N: usize> {
 }
 
 impl<const N: usize> DenseOutput<N> {
-    fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
+    pub(crate) fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
         let mut d = DenseOutput {
             t0: t,
             h: 0.0,
@@ -154,6 +155,34 @@ impl<const N: usize> DenseOutput<N> {
         d.q[0] = *q;
         d.v[0] = *v;
         d
+    }
+
+    /// The cubic Hermite interpolant over [t₀, t₀ + h] of (q, v) with derivatives (v, q̈) at both
+    /// ends (`start` and `end` are (q, v, q̈)): order 3 (HNW I §II.6, (6.7)).
+    pub(crate) fn hermite(
+        t0: f64,
+        h: f64,
+        start: (&[f64; N], &[f64; N], &[f64; N]),
+        end: (&[f64; N], &[f64; N], &[f64; N]),
+    ) -> Self {
+        let make = |y0: &[f64; N], y1: &[f64; N], d0: &[f64; N], d1: &[f64; N]| {
+            let mut r = [[0.0; N]; 5];
+            for i in 0..N {
+                let diff = y1[i] - y0[i];
+                let bspl = h * d0[i] - diff;
+                r[0][i] = y0[i];
+                r[1][i] = diff;
+                r[2][i] = bspl;
+                r[3][i] = diff - h * d1[i] - bspl;
+            }
+            r
+        };
+        DenseOutput {
+            t0,
+            h,
+            q: make(start.0, end.0, start.1, end.1),
+            v: make(start.1, end.1, start.2, end.2),
+        }
     }
 
     /// Start of the step.
@@ -237,110 +266,6 @@ impl<const N: usize> DenseOutput<N> {
     }
 }
 
-/// Which sign changes of an event function count.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Direction {
-    /// g goes from negative to non-negative.
-    Rising,
-    /// g goes from positive to non-positive.
-    Falling,
-    /// Either.
-    #[default]
-    Either,
-}
-
-/// An event function g(state) whose sign changes are located during [`Dopri5::integrate`].
-pub struct Event<'a, C> {
-    g: &'a dyn Fn(&State<C>) -> f64,
-    direction: Direction,
-    terminal: bool,
-    g_prev: f64,
-    pending: Option<(f64, bool)>,
-}
-
-impl<'a, C> Event<'a, C> {
-    /// An event on every sign change of g, not terminal.
-    pub fn new(g: &'a dyn Fn(&State<C>) -> f64) -> Self {
-        Event {
-            g,
-            direction: Direction::Either,
-            terminal: false,
-            g_prev: f64::NAN,
-            pending: None,
-        }
-    }
-
-    /// Only sign changes in this direction count.
-    pub fn direction(mut self, direction: Direction) -> Self {
-        self.direction = direction;
-        self
-    }
-
-    /// The integration stops at this event.
-    pub fn terminal(mut self) -> Self {
-        self.terminal = true;
-        self
-    }
-
-    /// Whether the change from g_prev to g_new is a crossing to report, and its direction (rising?).
-    fn crossing(&self, g_new: f64) -> Option<bool> {
-        let g0 = self.g_prev;
-        let rising = g0 < 0.0 && g_new >= 0.0;
-        let falling = g0 > 0.0 && g_new <= 0.0;
-        match self.direction {
-            Direction::Rising if rising => Some(true),
-            Direction::Falling if falling => Some(false),
-            Direction::Either if rising || falling => Some(rising),
-            _ => None,
-        }
-    }
-}
-
-/// An event located during an integration.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct EventHit<C> {
-    /// Index of the event in the slice passed to [`Dopri5::integrate`].
-    pub index: usize,
-    /// The state at the event (from the dense output).
-    pub state: State<C>,
-    /// Whether g was rising (negative to non-negative).
-    pub rising: bool,
-    /// Whether the event stopped the integration.
-    pub terminal: bool,
-}
-
-/// Why [`Dopri5::integrate`] returned.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum StopReason<C> {
-    /// t_end was reached.
-    Reached,
-    /// A terminal event occurred; the state is the state at the event.
-    Event(EventHit<C>),
-    /// `max_steps` attempts were made before reaching t_end; the state is the last accepted one.
-    MaxSteps,
-}
-
-/// The result of [`Dopri5::integrate`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Dopri5Outcome<C> {
-    /// Cost.
-    pub stats: Dopri5Stats,
-    /// Why the integration ended.
-    pub reason: StopReason<C>,
-}
-
-/// What [`Dopri5::integrate`] shows its observer.
-#[derive(Debug)]
-pub enum Observation<'a, C, const N: usize> {
-    /// An accepted step: the state at its end and the dense output over it.
-    Step {
-        state: &'a State<C>,
-        dense: &'a DenseOutput<N>,
-    },
-    /// A located event (reported before the step it lies in).
-    Event(&'a EventHit<C>),
-}
-
 impl Dopri5 {
     /// The default settings with these tolerances.
     pub fn new(rtol: f64, atol: f64) -> Self {
@@ -408,7 +333,7 @@ impl Dopri5 {
             return invalid("max_steps", 0.0, "at least 1");
         }
         if let Some(h) = self.h_init {
-            crate::mechanism::check_step(h)?;
+            check_step(h)?;
         }
         Ok(())
     }
@@ -423,95 +348,18 @@ impl Dopri5 {
         state: &mut State<M::Coords>,
         t_end: f64,
         events: &mut [Event<'_, M::Coords>],
-        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
+        observer: impl FnMut(Observation<'_, M::Coords, N>),
     ) -> Result<Dopri5Outcome<M::Coords>> {
         if !(t_end.is_finite() && t_end >= state.t) {
             return Err(Error::InvalidEndTime { t: state.t, t_end });
         }
         let mut stepper = Dopri5Stepper::new(mechanism, *self, state)?;
-        for ev in events.iter_mut() {
-            ev.g_prev = (ev.g)(state);
-            ev.pending = None;
-            stepper.stats.event_evaluations += 1;
-        }
-        let mut reason = StopReason::Reached;
-        while stepper.t < t_end {
-            if stepper.stats.accepted + stepper.stats.rejected >= self.max_steps {
-                reason = StopReason::MaxSteps;
-                break;
-            }
-            stepper.step(t_end)?;
-            let current = stepper.state();
-            // Locate this step's crossings.
-            let mut t_stop = f64::INFINITY;
-            let mut any = false;
-            for ev in events.iter_mut() {
-                let g_new = (ev.g)(&current);
-                stepper.stats.event_evaluations += 1;
-                ev.pending = None;
-                if let Some(rising) = ev.crossing(g_new) {
-                    let g = ev.g;
-                    let (root, n) = stepper.dense.find_root(
-                        |t, q, v| {
-                            g(&State::new(
-                                t,
-                                M::Coords::from_array(*q),
-                                M::Coords::from_array(*v),
-                            ))
-                        },
-                        ev.g_prev,
-                        g_new,
-                    );
-                    stepper.stats.event_evaluations += n;
-                    ev.pending = Some((root, rising));
-                    any = true;
-                    if ev.terminal {
-                        t_stop = t_stop.min(root);
-                    }
-                }
-                ev.g_prev = g_new;
-            }
-            // Report them in time order, up to the first terminal one.
-            while any && events.iter().any(|e| e.pending.is_some()) {
-                let mut best: Option<(usize, f64, bool)> = None;
-                for (i, ev) in events.iter().enumerate() {
-                    if let Some((root, rising)) = ev.pending {
-                        if root <= t_stop && best.is_none_or(|(_, t, _)| root < t) {
-                            best = Some((i, root, rising));
-                        }
-                    }
-                }
-                let Some((index, root, rising)) = best else {
-                    break;
-                };
-                events[index].pending = None;
-                let (q, v) = stepper.dense.eval(root);
-                let hit = EventHit {
-                    index,
-                    state: State::new(root, M::Coords::from_array(q), M::Coords::from_array(v)),
-                    rising,
-                    terminal: events[index].terminal,
-                };
-                observer(Observation::Event(&hit));
-                if hit.terminal {
-                    check_state(&M::Coords::NAMES, root, &q, &v)?;
-                    *state = hit.state;
-                    return Ok(Dopri5Outcome {
-                        stats: stepper.stats,
-                        reason: StopReason::Event(hit),
-                    });
-                }
-            }
-            observer(Observation::Step {
-                state: &current,
-                dense: &stepper.dense,
-            });
-        }
-        *state = stepper.state();
-        Ok(Dopri5Outcome {
-            stats: stepper.stats,
-            reason,
-        })
+        let outcome = stepper.integrate(t_end, events, observer)?;
+        *state = match outcome.reason {
+            StopReason::Event(hit) => hit.state,
+            _ => stepper.state(),
+        };
+        Ok(outcome)
     }
 }
 
@@ -576,9 +424,15 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         settings.validate()?;
         let (q, v) = mechanism.check(state)?;
         mechanism.check_constraints(state.t, &q, &v)?;
+        Self::start(mechanism, settings, state.t, q, v)
+    }
+
+    /// Starts at (t, q, v), already checked.
+    fn start(mechanism: &'m M, settings: Dopri5, t: f64, q: [f64; N], v: [f64; N]) -> Result<Self> {
         let a = mechanism
-            .accelerations_at(state.t, &q, &v)
-            .map_err(|e| diagnose(mechanism, state.t, &q, &v, e))?;
+            .accelerations_at(t, &q, &v)
+            .map_err(|e| diagnose(mechanism, t, &q, &v, e))?;
+        let state = State::<M::Coords>::new(t, M::Coords::from_array(q), M::Coords::from_array(v));
         let mut s = Dopri5Stepper {
             mechanism,
             settings,
@@ -918,5 +772,88 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             q: make(&self.q, q1, kq1, kq7, dq),
             v: make(&self.v, v1, ka1, ka7, dv),
         }
+    }
+}
+
+impl<M: Mechanism<N>, const N: usize> Stepper<M::Coords, N> for Dopri5Stepper<'_, M, N> {
+    fn name(&self) -> &'static str {
+        "Dopri5"
+    }
+    fn t(&self) -> f64 {
+        self.t
+    }
+    fn state(&self) -> State<M::Coords> {
+        Dopri5Stepper::state(self)
+    }
+    fn step(&mut self, t_limit: f64) -> Result<()> {
+        Dopri5Stepper::step(self, t_limit)
+    }
+    fn dense(&self) -> &DenseOutput<N> {
+        &self.dense
+    }
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+    fn count_event_evaluations(&mut self, n: usize) {
+        self.stats.event_evaluations += n;
+    }
+    fn max_steps(&self) -> usize {
+        self.settings.max_steps
+    }
+}
+
+/// `sys.step::<Dopri5>(&mut state, h)`: integrates over [t, t + h] with the
+/// [default](Dopri5::default) tolerances (rtol 1e-6, atol 1e-9), as many adaptive steps as that
+/// takes, landing exactly on t + h — the state advances by h, as with every fixed-step method.
+/// For other tolerances, dense output or events use [`Dopri5::integrate`] or a [`Dopri5Stepper`].
+///
+/// ```
+/// use lagrange_core::{Dopri5, Mechanism, State};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&s)?;
+/// Pendulum.step::<Dopri5>(&mut s, 0.5)?;
+/// assert_eq!(s.t, 0.5);
+/// // rtol 1e-6 per step: the energy moves by about that much of its size (4.3 J).
+/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-5);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+impl Integrator for Dopri5 {
+    const NAME: &'static str = "Dopri5";
+    type Memory<const N: usize> = ();
+
+    fn advance<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        _memory: &mut (),
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])> {
+        let mut stepper = Dopri5Stepper::start(mechanism, Dopri5::default(), t, *q, *v)?;
+        let t_end = t + h;
+        let result = (|| {
+            while stepper.t < t_end {
+                stepper.step(t_end)?;
+            }
+            Ok((stepper.q, stepper.v))
+        })();
+        *stats += stepper.stats;
+        result
     }
 }

@@ -29,17 +29,19 @@ mod canonical;
 pub mod dopri5;
 pub mod implicit;
 mod newton;
-mod rk4;
+pub(crate) mod rk4;
+pub mod solver;
 pub mod variational;
 pub mod verlet;
 
-pub use dopri5::{
-    DenseOutput, Direction, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper, Event, EventHit,
-    Observation, StopReason,
-};
-pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats};
+pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper};
+pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
 pub use newton::{acceleration_jacobians, refuse_constrained, MAX_NEWTON_ITERATIONS};
 pub use rk4::Rk4;
+pub use solver::{
+    check_step, check_step_at, Direction, Event, EventHit, FixedStepper, Observation, Outcome,
+    Stats, Stepper, StopReason,
+};
 pub use variational::{momentum_rate, Variational, VariationalStepStats};
 pub use verlet::{StormerVerlet, MASS_MATRIX_VARIATION};
 
@@ -47,15 +49,40 @@ use crate::error::Result;
 use crate::mechanism::Mechanism;
 use crate::model::State;
 
-/// A one-step method: advances a state by h. Implementations validate the mechanism, the state
-/// and h, do not allocate, and leave the state unchanged on error.
+/// A one-step method, as a type: `sys.step::<Rk4>(&mut state, h)` ([`Mechanism::step`]) is one
+/// validated step with it, and [`FixedStepper`] makes a solver of it. Implementations do not
+/// allocate and leave the state unchanged on error.
 pub trait Integrator {
     /// The method's name, for reports and errors.
     const NAME: &'static str;
-    /// Advances `state` by `h`.
+    /// Working memory a solver keeps from one step to the next: the implicit methods' factorised
+    /// Newton matrix ([`NewtonMemory`]), nothing (`()`) for the others.
+    type Memory<const N: usize>: Default + Copy;
+
+    /// One step of h from (t, q, q̇) on raw arrays, without validation or projection, adding its
+    /// cost to `stats`: (q, q̇) at t + h.
+    fn advance<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        memory: &mut Self::Memory<N>,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])>;
+
+    /// Advances `state` by `h`: checks h, the parameters, the state and its constraints, takes one
+    /// step with fresh working memory, projects onto the constraints and checks the result. On
+    /// error the state is unchanged.
     fn step<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
         state: &mut State<M::Coords>,
         h: f64,
-    ) -> Result<()>;
+    ) -> Result<()> {
+        let mut memory = Self::Memory::<N>::default();
+        let mut stats = Stats::default();
+        solver::validated_step(mechanism, state, h, |t, q, v| {
+            Self::advance(mechanism, &mut memory, t, q, v, h, &mut stats)
+        })
+    }
 }
