@@ -168,8 +168,9 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
         };
         Ok((delta, residual_norm))
     })?;
-    // Every iteration evaluated the momenta with their Jacobian ∂p/∂v.
-    stats.jacobians += stats.newton_iterations - before;
+    // Every iteration evaluated the momenta with their Jacobian ∂p/∂v = M (counted as an
+    // evaluation: it is the mass matrix, not a Jacobian of the step's equations).
+    stats.evaluations += stats.newton_iterations - before;
     match end {
         NewtonEnd::Converged { iterations, .. } => Ok((v.into(), iterations)),
         NewtonEnd::Slow {

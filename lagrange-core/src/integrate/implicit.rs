@@ -152,11 +152,59 @@ struct NewtonMatrix<const N: usize, const S: usize> {
 #[derive(Clone, Copy, Debug)]
 pub struct NewtonMemory<const N: usize, const S: usize> {
     matrix: Option<NewtonMatrix<N, S>>,
+    previous: Option<PreviousStep<N, S>>,
 }
 
 impl<const N: usize, const S: usize> Default for NewtonMemory<N, S> {
     fn default() -> Self {
-        NewtonMemory { matrix: None }
+        NewtonMemory {
+            matrix: None,
+            previous: None,
+        }
+    }
+}
+
+/// The velocities of the last step, from which the next step's stages are predicted.
+#[derive(Clone, Copy, Debug)]
+struct PreviousStep<const N: usize, const S: usize> {
+    t_end: f64,
+    h: f64,
+    v0: SVector<f64, N>,
+    stages: [SVector<f64, N>; S],
+    v1: SVector<f64, N>,
+}
+
+impl<const N: usize, const S: usize> PreviousStep<N, S> {
+    /// The next step's stage velocities, extrapolated by the polynomial of degree S + 1 through the
+    /// last step's velocities v₀, Vᵢ (at cᵢ) and v₁ (at 1) to 1 + cⱼ (Hairer & Wanner, *Solving
+    /// ODEs II*, §IV.8, "starting values"): O(h^(S+1)) from the solution (the stage order), where
+    /// v₀ + cⱼ h q̈₀ is O(h²). `shift` moves it by the projection's change of v₁.
+    fn extrapolate(&self, c: &[f64; S], shift: &SVector<f64, N>) -> [SVector<f64, N>; S] {
+        // Nodes 0, c₁…c_S, 1 and their values; Lagrange weights at x.
+        let node = |k: usize| match k {
+            0 => 0.0,
+            k if k <= S => c[k - 1],
+            _ => 1.0,
+        };
+        let value = |k: usize| match k {
+            0 => self.v0,
+            k if k <= S => self.stages[k - 1],
+            _ => self.v1,
+        };
+        std::array::from_fn(|j| {
+            let x = 1.0 + c[j];
+            let mut sum = *shift;
+            for k in 0..S + 2 {
+                let mut w = 1.0;
+                for l in 0..S + 2 {
+                    if l != k {
+                        w *= (x - node(l)) / (node(k) - node(l));
+                    }
+                }
+                sum += value(k) * w;
+            }
+            sum
+        })
     }
 }
 
@@ -231,7 +279,11 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     let constrained = constraint_forces_act(mechanism, t, q, v, &a)?;
     stats.evaluations += 2;
     let a0 = SVector::<f64, N>::from(a);
-    let predictor: [SVector<f64, N>; S] = std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h));
+    let predictor: [SVector<f64, N>; S] = match memory.previous {
+        Some(prev) if prev.t_end == t && prev.h == h => prev.extrapolate(&tableau.c, &(v0 - prev.v1)),
+        _ => std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h)),
+    };
+    memory.previous = None;
     let mut counts = ImplicitStepStats::default();
     for attempt in 0..2 {
         // The matrix: the memory's if it is still good (refactorised for a new h), else fresh.
@@ -327,7 +379,15 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
             }
             rates[i] -= j.rate_q * dq + j.rate_v * last[i];
         }
-        return finish(mechanism, tableau, t, &q0, &v0, &p0, &stages, &rates, h, stats, counts);
+        let end = finish(mechanism, tableau, t, &q0, &v0, &p0, &stages, &rates, h, stats, counts)?;
+        memory.previous = Some(PreviousStep {
+            t_end: t + h,
+            h,
+            v0,
+            stages,
+            v1: end.1.into(),
+        });
+        return Ok(end);
     }
     exact_collocation(mechanism, tableau, t, &q0, &v0, &p0, predictor, constrained, h, stats, counts)
 }
