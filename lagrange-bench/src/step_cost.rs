@@ -167,7 +167,10 @@ fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M:
         let mut memory = NewtonMemory::<N, 1>::default();
         let mut c = Cost::default();
         for _ in 0..STEPS {
-            add(&mut c, ImplicitMidpoint::step_with_memory(sys, &mut memory, s, H).expect("step"));
+            add(
+                &mut c,
+                ImplicitMidpoint::step_with_memory(sys, &mut memory, s, H).expect("step"),
+            );
         }
         c
     });
@@ -175,21 +178,30 @@ fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M:
         let mut memory = NewtonMemory::<N, 2>::default();
         let mut c = Cost::default();
         for _ in 0..STEPS {
-            add(&mut c, GaussLegendre2::step_with_memory(sys, &mut memory, s, H).expect("step"));
+            add(
+                &mut c,
+                GaussLegendre2::step_with_memory(sys, &mut memory, s, H).expect("step"),
+            );
         }
         c
     });
     let mid_fresh: Run<M::Coords> = Box::new(|s| {
         let mut c = Cost::default();
         for _ in 0..STEPS {
-            add(&mut c, ImplicitMidpoint::step_with_stats(sys, s, H).expect("step"));
+            add(
+                &mut c,
+                ImplicitMidpoint::step_with_stats(sys, s, H).expect("step"),
+            );
         }
         c
     });
     let gl_fresh: Run<M::Coords> = Box::new(|s| {
         let mut c = Cost::default();
         for _ in 0..STEPS {
-            add(&mut c, GaussLegendre2::step_with_stats(sys, s, H).expect("step"));
+            add(
+                &mut c,
+                GaussLegendre2::step_with_stats(sys, s, H).expect("step"),
+            );
         }
         c
     });
@@ -210,13 +222,18 @@ fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M:
             best[i] = best[i].min(t0.elapsed().as_secs_f64() / STEPS as f64);
         }
     }
-    println!("\n### {name} (N = {N}, h = {H}, {STEPS} steps, min over {ROUNDS} interleaved rounds)\n");
+    println!(
+        "\n### {name} (N = {N}, h = {H}, {STEPS} steps, min over {ROUNDS} interleaved rounds)\n"
+    );
     println!("| method | µs per step | / RK4 | Newton iterations | field evaluations | Jacobians | factorisations | velocity-recovery iterations |");
     println!("|---|---|---|---|---|---|---|---|");
     for (i, (label, _)) in runs.iter().enumerate() {
         let c = costs[i];
         if i == 0 {
-            println!("| {label} | {:.2} | 1 | — | 4 (q̈) | — | — | — |", best[0] * 1e6);
+            println!(
+                "| {label} | {:.2} | 1 | — | 4 (q̈) | — | — | — |",
+                best[0] * 1e6
+            );
         } else {
             println!(
                 "| {label} | {:.2} | {:.2}× | {:.2} | {:.2} | {:.3} | {:.3} | {:.2} |",
@@ -234,20 +251,53 @@ fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M:
 
 fn main() {
     let uptime = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
-    println!("load average (1, 5, 15 min) at start: {}", uptime.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
+    println!(
+        "load average (1, 5, 15 min) at start: {}",
+        uptime
+            .split_whitespace()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
     {
         use double_pendulum::{Coords, DoublePendulum, State};
-        let sys = DoublePendulum { m1: 1.0, m2: 1.0, l1: 1.0, l2: 1.0, g: 9.81 };
-        let s = State::at_rest(Coords { theta1: 1.0, theta2: 0.5 });
+        let sys = DoublePendulum {
+            m1: 1.0,
+            m2: 1.0,
+            l1: 1.0,
+            l2: 1.0,
+            g: 9.81,
+        };
+        let s = State::at_rest(Coords {
+            theta1: 1.0,
+            theta2: 0.5,
+        });
         measure("double pendulum", &sys, s);
     }
     {
         use four_bar::{Coords, FourBar, State};
-        let sys = FourBar { l1: 1.0, l2: 3.0, l3: 2.0, m1: 1.0, m2: 2.0, m3: 1.5, d: 3.0, g: 9.81 };
+        let sys = FourBar {
+            l1: 1.0,
+            l2: 3.0,
+            l3: 2.0,
+            m1: 1.0,
+            m2: 2.0,
+            m3: 1.5,
+            d: 3.0,
+            g: 9.81,
+        };
         let guess = State::new(
             0.0,
-            Coords { theta1: 1.0, theta2: 0.2, theta3: 1.6 },
-            Coords { theta1: 3.0, theta2: 0.0, theta3: 0.0 },
+            Coords {
+                theta1: 1.0,
+                theta2: 0.2,
+                theta3: 1.6,
+            },
+            Coords {
+                theta1: 3.0,
+                theta2: 0.0,
+                theta3: 0.0,
+            },
         );
         let s = consistent_state(&sys, &guess).expect("consistent initial state");
         measure("four-bar linkage", &sys, s);
@@ -256,7 +306,12 @@ fn main() {
         use rolling_wheel::{Coords, RollingWheel, State};
         let w = RollingWheel { m: 2.0, r: 0.3 };
         let (big_omega, phi0, omega) = (5.0f64, 0.4f64, 2.0f64);
-        let q0 = Coords { x: 0.1, y: -0.2, phi: phi0, theta: 0.0 };
+        let q0 = Coords {
+            x: 0.1,
+            y: -0.2,
+            phi: phi0,
+            theta: 0.0,
+        };
         let v0 = Coords {
             x: w.r * big_omega * phi0.cos(),
             y: w.r * big_omega * phi0.sin(),
@@ -266,5 +321,12 @@ fn main() {
         measure("rolling wheel", &w, State::new(0.0, q0, v0));
     }
     let uptime = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
-    println!("\nload average at end: {}", uptime.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
+    println!(
+        "\nload average at end: {}",
+        uptime
+            .split_whitespace()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
 }

@@ -6,8 +6,8 @@ use super::{
     CONSISTENCY_TOLERANCE,
 };
 use crate::error::{Error, Result};
-use crate::integrate::{check_step_at, DenseOutput, Stats, Stepper};
 use crate::integrate::rk4::rk4_step;
+use crate::integrate::{check_step_at, DenseOutput, Stats, Stepper};
 use crate::model::{check_state, Coordinates, State};
 
 /// Options of [`ContactRk4`].
@@ -615,8 +615,13 @@ fn impulse<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usi
 /// assert!(solver.state().q[0].abs() < 1e-12 && outcome.stats.accepted == 100);
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
-pub struct ContactSolver<'m, M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>
-{
+pub struct ContactSolver<
+    'm,
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+> {
     model: &'m M,
     contact: ContactRk4<C>,
     h: f64,
@@ -660,8 +665,8 @@ impl<'m, M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize
     }
 }
 
-impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>
-    Stepper<M::Coords, N> for ContactSolver<'_, M, N, K, C>
+impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> Stepper<M::Coords, N>
+    for ContactSolver<'_, M, N, K, C>
 {
     fn name(&self) -> &'static str {
         "ContactRk4"

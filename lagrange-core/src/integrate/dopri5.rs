@@ -34,9 +34,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
 use super::solver::{check_step, Stepper};
-pub use super::solver::{
-    Direction, Event, EventHit, Observation, Outcome, Stats, StopReason,
-};
+pub use super::solver::{Direction, Event, EventHit, Observation, Outcome, Stats, StopReason};
 use super::Integrator;
 use crate::error::{Error, Result};
 use crate::mechanism::{diagnose, Mechanism};
@@ -140,8 +138,10 @@ pub type Dopri5Outcome<C> = Outcome<C>;
 pub struct DenseOutput<const N: usize> {
     t0: f64,
     h: f64,
-    q: [[f64; N]; 5],
-    v: [[f64; N]; 5],
+    q: [[f64; N]; 8],
+    v: [[f64; N]; 8],
+    /// Coefficients in use: 5 (Dopri5, Hermite) or 8 (Dop853).
+    terms: usize,
 }
 
 impl<const N: usize> DenseOutput<N> {
@@ -149,8 +149,9 @@ impl<const N: usize> DenseOutput<N> {
         let mut d = DenseOutput {
             t0: t,
             h: 0.0,
-            q: [[0.0; N]; 5],
-            v: [[0.0; N]; 5],
+            q: [[0.0; N]; 8],
+            v: [[0.0; N]; 8],
+            terms: 5,
         };
         d.q[0] = *q;
         d.v[0] = *v;
@@ -166,7 +167,7 @@ impl<const N: usize> DenseOutput<N> {
         end: (&[f64; N], &[f64; N], &[f64; N]),
     ) -> Self {
         let make = |y0: &[f64; N], y1: &[f64; N], d0: &[f64; N], d1: &[f64; N]| {
-            let mut r = [[0.0; N]; 5];
+            let mut r = [[0.0; N]; 8];
             for i in 0..N {
                 let diff = y1[i] - y0[i];
                 let bspl = h * d0[i] - diff;
@@ -182,6 +183,18 @@ impl<const N: usize> DenseOutput<N> {
             h,
             q: make(start.0, end.0, start.1, end.1),
             v: make(start.1, end.1, start.2, end.2),
+            terms: 5,
+        }
+    }
+
+    /// Dop853's continuous extension of order 7 (Hairer's CONTD8): r₁…r₈ for q and for v.
+    pub(crate) fn from_coefficients(t0: f64, h: f64, q: [[f64; N]; 8], v: [[f64; N]; 8]) -> Self {
+        DenseOutput {
+            t0,
+            h,
+            q,
+            v,
+            terms: 8,
         }
     }
 
@@ -202,9 +215,16 @@ impl<const N: usize> DenseOutput<N> {
         }
         let th = (t - self.t0) / self.h;
         let th1 = 1.0 - th;
-        let f = |r: &[[f64; N]; 5]| -> [f64; N] {
+        let terms = self.terms;
+        let f = |r: &[[f64; N]; 8]| -> [f64; N] {
             std::array::from_fn(|i| {
-                r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * r[4][i])))
+                // r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ)(r₅ + θ(r₆ + (1−θ)(r₇ + θ r₈)))))), from the
+                // innermost term out, alternating the factors θ and 1 − θ.
+                let mut acc = 0.0;
+                for k in (1..terms).rev() {
+                    acc = (r[k][i] + acc) * if k % 2 == 1 { th } else { th1 };
+                }
+                r[0][i] + acc
             })
         };
         (f(&self.q), f(&self.v))
@@ -280,9 +300,15 @@ impl Dopri5 {
     /// factors in their ranges, `max_steps` at least 1 ([`Error::InvalidSetting`] naming the
     /// setting), the initial step positive and finite ([`Error::InvalidStep`]).
     pub fn validate(&self) -> Result<()> {
+        self.validate_as("Dopri5")
+    }
+
+    /// [`validate`](Self::validate), naming `method` in the errors (the settings are shared with
+    /// [`Dop853`](super::Dop853)).
+    pub(crate) fn validate_as(&self, method: &'static str) -> Result<()> {
         let invalid = |setting, value, requirement| {
             Err(Error::InvalidSetting {
-                method: "Dopri5",
+                method,
                 setting,
                 value,
                 requirement,
@@ -363,6 +389,55 @@ impl Dopri5 {
     }
 }
 
+/// The starting step of an embedded pair of order `order` (HNW I §II.4, "Starting step size";
+/// Hairer's HINIT): one extra evaluation of q̈.
+pub(crate) fn initial_step<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    st: &Dopri5,
+    (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    order: i32,
+    stats: &mut Stats,
+) -> f64 {
+    let (mut dnf, mut dny) = (0.0, 0.0);
+    for i in 0..N {
+        let sq = st.atol + st.rtol * q[i].abs();
+        let sv = st.atol + st.rtol * v[i].abs();
+        dnf += (v[i] / sq).powi(2) + (a[i] / sv).powi(2);
+        dny += (q[i] / sq).powi(2) + (v[i] / sv).powi(2);
+    }
+    let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
+        1e-6
+    } else {
+        (dny / dnf).sqrt() * 0.01
+    };
+    h = h.min(st.h_max);
+    let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * v[i]);
+    let v1: [f64; N] = std::array::from_fn(|i| v[i] + h * a[i]);
+    stats.evaluations += 1;
+    let Ok(a1) = mechanism.accelerations_at(t + h, &q1, &v1) else {
+        return h;
+    };
+    let mut der2 = 0.0;
+    for i in 0..N {
+        let sq = st.atol + st.rtol * q[i].abs();
+        let sv = st.atol + st.rtol * v[i].abs();
+        der2 += ((v1[i] - v[i]) / sq).powi(2) + ((a1[i] - a[i]) / sv).powi(2);
+    }
+    let der2 = der2.sqrt() / h;
+    let der12 = der2.max(dnf.sqrt());
+    let h1 = if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(1.0 / order as f64)
+    };
+    let h = (100.0 * h).min(h1).min(st.h_max);
+    if h.is_finite() && h > 0.0 {
+        h
+    } else {
+        1e-6
+    }
+}
+
 /// Step-by-step use of [`Dopri5`]: holds the current state, the proposed next step and the dense
 /// output of the last accepted step.
 ///
@@ -393,7 +468,7 @@ pub struct Dopri5Stepper<'m, M: Mechanism<N>, const N: usize> {
 /// e/sc of the error norm, with 0/0 = 0 (an exact component with a zero scale, possible when
 /// atol = 0) and e/0 = ∞ otherwise.
 #[inline(always)]
-fn ratio(e: f64, scale: f64) -> f64 {
+pub(crate) fn ratio(e: f64, scale: f64) -> f64 {
     if e == 0.0 {
         0.0
     } else {
@@ -402,7 +477,7 @@ fn ratio(e: f64, scale: f64) -> f64 {
 }
 
 #[inline(always)]
-fn combo<const N: usize, const S: usize>(
+pub(crate) fn combo<const N: usize, const S: usize>(
     y: &[f64; N],
     h: f64,
     coef: [f64; S],
@@ -457,45 +532,13 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
 
     /// HNW I §II.4, "Starting step size" (Hairer's HINIT, order 5).
     fn initial_step(&mut self) -> f64 {
-        let st = &self.settings;
-        let (mut dnf, mut dny) = (0.0, 0.0);
-        for i in 0..N {
-            let sq = st.atol + st.rtol * self.q[i].abs();
-            let sv = st.atol + st.rtol * self.v[i].abs();
-            dnf += (self.v[i] / sq).powi(2) + (self.a[i] / sv).powi(2);
-            dny += (self.q[i] / sq).powi(2) + (self.v[i] / sv).powi(2);
-        }
-        let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
-            1e-6
-        } else {
-            (dny / dnf).sqrt() * 0.01
-        };
-        h = h.min(st.h_max);
-        let q1: [f64; N] = std::array::from_fn(|i| self.q[i] + h * self.v[i]);
-        let v1: [f64; N] = std::array::from_fn(|i| self.v[i] + h * self.a[i]);
-        self.stats.evaluations += 1;
-        let Ok(a1) = self.mechanism.accelerations_at(self.t + h, &q1, &v1) else {
-            return h;
-        };
-        let mut der2 = 0.0;
-        for i in 0..N {
-            let sq = st.atol + st.rtol * self.q[i].abs();
-            let sv = st.atol + st.rtol * self.v[i].abs();
-            der2 += ((v1[i] - self.v[i]) / sq).powi(2) + ((a1[i] - self.a[i]) / sv).powi(2);
-        }
-        let der2 = der2.sqrt() / h;
-        let der12 = der2.max(dnf.sqrt());
-        let h1 = if der12 <= 1e-15 {
-            (h * 1e-3).max(1e-6)
-        } else {
-            (0.01 / der12).powf(0.2)
-        };
-        let h = (100.0 * h).min(h1).min(st.h_max);
-        if h.is_finite() && h > 0.0 {
-            h
-        } else {
-            1e-6
-        }
+        initial_step(
+            self.mechanism,
+            &self.settings,
+            (self.t, &self.q, &self.v, &self.a),
+            5,
+            &mut self.stats,
+        )
     }
 
     /// Current time.
@@ -753,8 +796,8 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                     k1: &[f64; N],
                     k7: &[f64; N],
                     d: &[f64; N]|
-         -> [[f64; N]; 5] {
-            let mut r = [[0.0; N]; 5];
+         -> [[f64; N]; 8] {
+            let mut r = [[0.0; N]; 8];
             for i in 0..N {
                 let diff = y1[i] - y0[i];
                 let bspl = h * k1[i] - diff;
@@ -771,6 +814,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             h,
             q: make(&self.q, q1, kq1, kq7, dq),
             v: make(&self.v, v1, ka1, ka7, dv),
+            terms: 5,
         }
     }
 }

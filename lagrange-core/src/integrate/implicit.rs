@@ -61,9 +61,7 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
-use super::canonical::{
-    canonical_field, field_jacobians, velocities_from_momenta, FieldJacobians,
-};
+use super::canonical::{canonical_field, field_jacobians, velocities_from_momenta, FieldJacobians};
 use super::newton::{
     constraint_forces_act, max_norm, newton, BlockLu, NewtonEnd, MAX_NEWTON_ITERATIONS,
 };
@@ -219,8 +217,9 @@ fn simplified_matrix<const N: usize, const S: usize>(
     std::array::from_fn(|i| {
         std::array::from_fn(|k| {
             let a2: f64 = (0..S).map(|l| tableau.a[i][l] * tableau.a[l][k]).sum();
-            let mut block =
-                j.p_q * (h * tableau.a[i][k]) - j.rate_q * (h * h * a2) - j.rate_v * (h * tableau.a[i][k]);
+            let mut block = j.p_q * (h * tableau.a[i][k])
+                - j.rate_q * (h * h * a2)
+                - j.rate_v * (h * tableau.a[i][k]);
             if i == k {
                 block += j.p_v;
             }
@@ -239,7 +238,8 @@ fn breakdown(tableau_name: &'static str, t: f64, h: f64, iteration: usize, reaso
     }
 }
 
-const NOT_FINITE: &str = "the collocation residual is not finite (the stages left the region where \
+const NOT_FINITE: &str =
+    "the collocation residual is not finite (the stages left the region where \
                           the equations of motion are finite; reduce h)";
 
 /// Qⱼ = q₀ + h Σₖ aⱼₖ Vₖ.
@@ -280,7 +280,9 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     stats.evaluations += 2;
     let a0 = SVector::<f64, N>::from(a);
     let predictor: [SVector<f64, N>; S] = match memory.previous {
-        Some(prev) if prev.t_end == t && prev.h == h => prev.extrapolate(&tableau.c, &(v0 - prev.v1)),
+        Some(prev) if prev.t_end == t && prev.h == h => {
+            prev.extrapolate(&tableau.c, &(v0 - prev.v1))
+        }
         _ => std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h)),
     };
     memory.previous = None;
@@ -379,7 +381,9 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
             }
             rates[i] -= j.rate_q * dq + j.rate_v * last[i];
         }
-        let end = finish(mechanism, tableau, t, &q0, &v0, &p0, &stages, &rates, h, stats, counts)?;
+        let end = finish(
+            mechanism, tableau, t, &q0, &v0, &p0, &stages, &rates, h, stats, counts,
+        )?;
         memory.previous = Some(PreviousStep {
             t_end: t + h,
             h,
@@ -389,7 +393,19 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
         });
         return Ok(end);
     }
-    exact_collocation(mechanism, tableau, t, &q0, &v0, &p0, predictor, constrained, h, stats, counts)
+    exact_collocation(
+        mechanism,
+        tableau,
+        t,
+        &q0,
+        &v0,
+        &p0,
+        predictor,
+        constrained,
+        h,
+        stats,
+        counts,
+    )
 }
 
 /// q₁ = q₀ + h Σ bⱼ Vⱼ, p₁ = p₀ + h Σ bⱼ ṗⱼ, and v₁ from p₁ (inverse Legendre transform at t₁),
@@ -535,7 +551,9 @@ fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
                 }
                 rates[j] -= field[j].rate_q * dq + field[j].rate_v * last[j];
             }
-            finish(mechanism, tableau, t, q0, v0, p0, &stages, &rates, h, stats, counts)
+            finish(
+                mechanism, tableau, t, q0, v0, p0, &stages, &rates, h, stats, counts,
+            )
         }
         NewtonEnd::Slow {
             iterations,
@@ -633,7 +651,16 @@ macro_rules! collocation_method {
                 h: f64,
             ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
                 let mut memory = NewtonMemory::default();
-                collocation_step(mechanism, &$tableau, &mut memory, t, q, v, h, &mut Stats::default())
+                collocation_step(
+                    mechanism,
+                    &$tableau,
+                    &mut memory,
+                    t,
+                    q,
+                    v,
+                    h,
+                    &mut Stats::default(),
+                )
             }
 
             /// A validated step with fresh working memory that also reports its Newton cost; the

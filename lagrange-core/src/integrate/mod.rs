@@ -26,6 +26,7 @@
 //! constrained mechanisms with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
 
 mod canonical;
+pub mod dop853;
 pub mod dopri5;
 pub mod implicit;
 mod newton;
@@ -34,6 +35,7 @@ pub mod solver;
 pub mod variational;
 pub mod verlet;
 
+pub use dop853::{Dop853, Dop853Stepper};
 pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper};
 pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
 pub use newton::{acceleration_jacobians, refuse_constrained, MAX_NEWTON_ITERATIONS};

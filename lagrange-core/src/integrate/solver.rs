@@ -249,7 +249,6 @@ pub enum Observation<'a, C, const N: usize> {
     Event(&'a EventHit<C>),
 }
 
-
 /// The stepping interface every solver implements (see the [module docs](self)).
 pub trait Stepper<C: Coordinates<N>, const N: usize> {
     /// The method's name.
@@ -296,10 +295,7 @@ pub trait Stepper<C: Coordinates<N>, const N: usize> {
         Self: Sized,
     {
         if !(t_end.is_finite() && t_end >= self.t()) {
-            return Err(Error::InvalidEndTime {
-                t: self.t(),
-                t_end,
-            });
+            return Err(Error::InvalidEndTime { t: self.t(), t_end });
         }
         let start = self.state();
         for ev in events.iter_mut() {
