@@ -16,6 +16,15 @@ pub trait Mechanism<const N: usize>: Sized {
     /// The named generalized coordinates (`Coords` of the declaration).
     type Coords: Coordinates<N>;
 
+    /// The number of constraint rows the declaration has (`Some(0)` for none), or `None` when the
+    /// implementation does not say. Integrators decide from it whether constraint forces are part
+    /// of the motion: the variational integrator and Störmer–Verlet refuse `Some(c)` with c > 0,
+    /// implicit midpoint and Gauss–Legendre then add Jᵀλ at every stage. With `None` they fall back
+    /// to testing, at the start of every step, whether constraint forces act there (which cannot
+    /// tell a constraint whose force happens to vanish, λ = 0, from none). [`impl_mechanism!`]
+    /// declares it.
+    const CONSTRAINTS: Option<usize> = None;
+
     /// Checks parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
     /// M, 𝓕 and b at (t, q, q̇), for any scalar.
@@ -310,6 +319,10 @@ pub fn diagnose<M: Mechanism<N>, const N: usize>(
 macro_rules! impl_mechanism {
     ($ty:ty, $n:tt, $k:tt, constraints) => {
         $crate::impl_mechanism!(@impl $ty, $n, $k, {
+            const CONSTRAINTS: Option<usize> = {
+                use $crate::constraints::Constraints as _;
+                Some($crate::constraints::row_count(&<$ty>::NAMES))
+            };
             fn accelerations_at<S: $crate::Scalar>(
                 &self,
                 t: S,
@@ -334,7 +347,9 @@ macro_rules! impl_mechanism {
         });
     };
     ($ty:ty, $n:tt, $k:tt) => {
-        $crate::impl_mechanism!(@impl $ty, $n, $k, {});
+        $crate::impl_mechanism!(@impl $ty, $n, $k, {
+            const CONSTRAINTS: Option<usize> = Some(0);
+        });
     };
     (@impl $ty:ty, $n:tt, $k:tt, { $($extra:tt)* }) => {
         impl $crate::Mechanism<$n> for $ty {

@@ -1448,3 +1448,24 @@ fn dop853_dense_output_is_seventh_order_accurate_inside_steps() {
     eprintln!("Dop853 dense output: worst midpoint error {worst:.2e}");
     assert!(worst < 1e-8 && worst > 0.0, "{worst}");
 }
+
+#[test]
+fn constrained_or_not_is_decided_by_the_declaration_not_by_lambda() {
+    // `impl_mechanism!` declares the number of constraint rows.
+    assert_eq!(<CartesianPendulum as Mechanism<2>>::CONSTRAINTS, Some(1));
+    assert_eq!(<Kepler as Mechanism<2>>::CONSTRAINTS, Some(0));
+    // Released horizontally at rest the rod's tension m(g cos θ + L θ̇²) is zero: λ = 0 at the
+    // first step, so no constraint force acts there and a test of λ would let the variational
+    // integrator and Störmer–Verlet take that step. The declaration refuses them at once.
+    let horizontal = State::new(0.0, [1.0, 0.0], [0.0, 0.0]);
+    for err in [
+        CartesianPendulum
+            .step::<Variational>(&mut State { ..horizontal }, 0.01)
+            .unwrap_err(),
+        CartesianPendulum
+            .step::<StormerVerlet>(&mut State { ..horizontal }, 0.01)
+            .unwrap_err(),
+    ] {
+        assert!(matches!(err, Error::UnsuitableMethod { .. }), "{err}");
+    }
+}

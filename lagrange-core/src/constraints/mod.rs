@@ -186,7 +186,7 @@
 mod contact;
 mod solve;
 
-pub use contact::{ContactOptions, ContactRk4, ContactSolver, ModeChange};
+pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChange};
 pub use solve::{
     accelerations, accelerations_in_mode, check_consistent, consistent_state, constraint_forces,
     constraint_rows, infer_mode, project, ConstrainedAccelerations, ConstraintForces,

@@ -48,11 +48,12 @@
 //!
 //! **Constraints.** As every integrator, a step first checks that the state satisfies the
 //! mechanism's constraints ([`Mechanism::check_constraints`]) and ends by projecting onto them
-//! ([`Mechanism::project`]; a no-op without constraints). When the mechanism's accelerations carry
-//! constraint forces at the start of the step (the test of
-//! [`refuse_constrained`](super::refuse_constrained): one plain evaluation), G includes the
-//! generalized constraint force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the constrained accelerations, at every
-//! stage. Projection is not symplectic: on a constrained mechanism these methods are projection
+//! ([`Mechanism::project`]; a no-op without constraints). When the mechanism declares constraints
+//! ([`Mechanism::CONSTRAINTS`]; for an implementation that does not declare it, when its
+//! accelerations carry constraint forces at the start of the step, the test of
+//! [`refuse_constrained`](super::refuse_constrained)), G includes the generalized constraint force
+//! Jᵀλ = M q̈ − (𝓕 − b), with q̈ the constrained accelerations, at every stage — also where λ
+//! vanishes at the start of the step. Projection is not symplectic: on a constrained mechanism these methods are projection
 //! methods (HLW §IV.4), symmetric only up to it.
 //!
 //! A Newton iteration that does not converge in [`MAX_NEWTON_ITERATIONS`] is
@@ -273,17 +274,36 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     let v0 = SVector::<f64, N>::from(*v);
     let q0 = SVector::<f64, N>::from(*q);
     let p0 = SVector::<f64, N>::from(mechanism.momenta_at(t, q, v));
-    // Predictor Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀), O(h²) from the solution: one plain evaluation. The
-    // same q̈ tells whether constraint forces act (one more plain evaluation).
-    let a = mechanism.accelerations_at(t, q, v)?;
-    let constrained = constraint_forces_act(mechanism, t, q, v, &a)?;
-    stats.evaluations += 2;
-    let a0 = SVector::<f64, N>::from(a);
+    // The stages are predicted from the previous step when there is one (the solver's memory), else
+    // Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀), O(h²) from the solution: one plain evaluation. Whether the
+    // field carries constraint forces is declared (Mechanism::CONSTRAINTS); a mechanism that does
+    // not declare it is tested here (q̈ and one more plain evaluation).
+    let mut a0: Option<[f64; N]> = None;
+    let mut acceleration = |stats: &mut Stats| -> Result<[f64; N]> {
+        if let Some(a) = a0 {
+            return Ok(a);
+        }
+        stats.evaluations += 1;
+        let a = mechanism.accelerations_at(t, q, v)?;
+        a0 = Some(a);
+        Ok(a)
+    };
+    let constrained = match M::CONSTRAINTS {
+        Some(rows) => rows > 0,
+        None => {
+            let a = acceleration(stats)?;
+            stats.evaluations += 1;
+            constraint_forces_act(mechanism, t, q, v, &a)?
+        }
+    };
     let predictor: [SVector<f64, N>; S] = match memory.previous {
         Some(prev) if prev.t_end == t && prev.h == h => {
             prev.extrapolate(&tableau.c, &(v0 - prev.v1))
         }
-        _ => std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h)),
+        _ => {
+            let a0 = SVector::<f64, N>::from(acceleration(stats)?);
+            std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h))
+        }
     };
     memory.previous = None;
     let mut counts = ImplicitStepStats::default();

@@ -182,14 +182,30 @@ pub(crate) fn constraint_forces_act<M: Mechanism<N>, const N: usize>(
         .any(|(a, b)| (a - b).is_nan() || (a - b).abs() > 1e-10 * scale))
 }
 
-/// Refuses a mechanism whose accelerations are not those of its Lagrangian and generalized forces
-/// alone — one with constraints, whose `accelerations_at` adds constraint forces (KKT system) —
-/// for methods built on the Lagrangian itself (the variational integrator) or on the unconstrained
-/// mass matrix (Störmer–Verlet). The test compares `accelerations` (from
-/// [`Mechanism::accelerations_at`]) with the solve of M q̈ = 𝓕 − b from
-/// [`Mechanism::equations_of_motion_at`] at the same state: identical for an unconstrained mechanism
-/// (up to 1e-10 relative, for hand-optimized `accelerations_at`), different wherever a constraint
-/// force acts.
+/// Whether constraint forces are part of the mechanism's motion: decided by its declaration,
+/// [`Mechanism::CONSTRAINTS`], when it has one; otherwise (an implementation that does not
+/// declare it) by testing at (t, q, v) whether they act ([`constraint_forces_act`], one evaluation
+/// of the equations of motion; `accelerations` evaluates q̈ there, only then).
+pub(crate) fn has_constraint_forces<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    accelerations: impl FnOnce() -> Result<[f64; N]>,
+) -> Result<bool> {
+    match M::CONSTRAINTS {
+        Some(rows) => Ok(rows > 0),
+        None => constraint_forces_act(mechanism, t, q, v, &accelerations()?),
+    }
+}
+
+/// Refuses a mechanism with constraints for methods built on the Lagrangian itself (the
+/// variational integrator) or on the unconstrained mass matrix (Störmer–Verlet): by its
+/// declaration ([`Mechanism::CONSTRAINTS`]) — so a constrained mechanism is refused at its first
+/// step even where its constraint force vanishes — or, for an implementation that does not declare
+/// it, by comparing `accelerations` (from [`Mechanism::accelerations_at`]) with the solve of
+/// M q̈ = 𝓕 − b from [`Mechanism::equations_of_motion_at`] at the same state (identical for an
+/// unconstrained mechanism up to 1e-10 relative, different wherever a constraint force acts).
 pub fn refuse_constrained<M: Mechanism<N>, const N: usize>(
     mechanism: &M,
     method: &'static str,
@@ -198,12 +214,12 @@ pub fn refuse_constrained<M: Mechanism<N>, const N: usize>(
     v: &[f64; N],
     accelerations: &[f64; N],
 ) -> Result<()> {
-    if constraint_forces_act(mechanism, t, q, v, accelerations)? {
+    if has_constraint_forces(mechanism, t, q, v, || Ok(*accelerations))? {
         return Err(crate::error::Error::UnsuitableMethod {
             method,
             reason: "the mechanism has constraints (its accelerations include constraint forces that its \
-                     Lagrangian does not carry); use RK4, Dopri5, implicit midpoint or Gauss-Legendre, which \
-                     integrate the constrained accelerations and project"
+                     Lagrangian does not carry); use RK4, Dopri5, Dop853, implicit midpoint or Gauss-Legendre, \
+                     which integrate the constrained accelerations and project"
                 .to_string(),
         });
     }
