@@ -21,7 +21,7 @@ pub trait Mechanism<const N: usize>: Sized {
     /// of the motion: the variational integrator and Störmer–Verlet refuse `Some(c)` with c > 0,
     /// implicit midpoint and Gauss–Legendre then add Jᵀλ at every stage. With `None` they fall back
     /// to testing, at the start of every step, whether constraint forces act there (which cannot
-    /// tell a constraint whose force happens to vanish, λ = 0, from none). [`impl_mechanism!`]
+    /// tell a constraint whose force happens to vanish, λ = 0, from none). [`impl_mechanism!`](crate::impl_mechanism)
     /// declares it.
     const CONSTRAINTS: Option<usize> = None;
 
