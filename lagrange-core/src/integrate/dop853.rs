@@ -33,7 +33,9 @@
     clippy::unreadable_literal
 )]
 
-use super::dopri5::{initial_step, ratio, DenseOutput, Dopri5};
+use super::dopri5::{
+    adaptive_step, initial_step, project_accepted, ratio, Controller, DenseOutput, Dopri5,
+};
 use super::solver::{Event, Observation, Outcome, Stats, Stepper, StopReason};
 use super::Integrator;
 use crate::error::{Error, Result};
@@ -644,15 +646,16 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
 
     /// Evaluates stage i (0-based) into kq[i], ka[i].
     fn evaluate_stage(
-        &mut self,
+        &self,
         h: f64,
         i: usize,
         kq: &mut [[f64; N]; 16],
         ka: &mut [[f64; N]; 16],
+        stats: &mut Stats,
     ) -> Result<()> {
         let (q, v) = self.stage_point(h, i, kq, ka);
         let t = self.t + C[i] * h;
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         ka[i] = self
             .mechanism
             .accelerations_at(t, &q, &v)
@@ -662,13 +665,13 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
     }
 
     /// One trial step of size h (stages 1…12, the 8th-order solution and the error norm).
-    fn attempt(&mut self, h: f64) -> Result<Trial<N>> {
+    fn attempt(&self, h: f64, stats: &mut Stats) -> Result<Trial<N>> {
         let mut kq = [[0.0; N]; 16];
         let mut ka = [[0.0; N]; 16];
         kq[0] = self.v;
         ka[0] = self.a;
         for i in 1..12 {
-            self.evaluate_stage(h, i, &mut kq, &mut ka)?;
+            self.evaluate_stage(h, i, &mut kq, &mut ka, stats)?;
         }
         let mut q1 = self.q;
         let mut v1 = self.v;
@@ -724,9 +727,9 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
     /// The 7th-order continuous extension of `dop853.f` (CONTD8) over the accepted trial: stage 13
     /// is the FSAL evaluation at the new point (in `trial.kq[12]`, `trial.ka[12]`), stages 14–16 are
     /// evaluated here.
-    fn contd8(&mut self, h: f64, trial: &mut Trial<N>) -> Result<DenseOutput<N>> {
+    fn contd8(&self, h: f64, trial: &mut Trial<N>, stats: &mut Stats) -> Result<DenseOutput<N>> {
         for i in 13..16 {
-            self.evaluate_stage(h, i, &mut trial.kq, &mut trial.ka)?;
+            self.evaluate_stage(h, i, &mut trial.kq, &mut trial.ka, stats)?;
         }
         let make = |y0: &[f64; N], y1: &[f64; N], k: &[[f64; N]; 16]| {
             let mut r = [[0.0; N]; 8];
@@ -759,85 +762,51 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
     /// needed, as [`Dopri5Stepper::step`](super::Dopri5Stepper::step) does. On error the accepted
     /// state is unchanged.
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
-        if !(t_limit > self.t) || !t_limit.is_finite() {
-            return Err(Error::InvalidEndTime {
-                t: self.t,
-                t_end: t_limit,
-            });
-        }
-        let st = self.settings;
-        let expo1 = 1.0 / 8.0 - st.beta * 0.2;
-        let mut last_rejected = false;
-        let mut last_error: Option<Error> = None;
-        loop {
-            let mut h = self.h.min(st.h_max);
-            let last = self.t + 1.01 * h >= t_limit;
-            if last {
-                h = t_limit - self.t;
-            }
-            if !(self.t + 0.1 * h > self.t) {
-                return Err(last_error.unwrap_or(Error::StepSizeUnderflow {
-                    method: "Dop853",
-                    t: self.t,
-                    h,
-                }));
-            }
-            match self.attempt(h) {
-                Ok(mut trial) if trial.err <= 1.0 => {
-                    let t_new = if last { t_limit } else { self.t + h };
-                    // FSAL: q̈ at the new point (stage 13), then the dense output.
-                    self.stats.evaluations += 1;
-                    let a1 = self
-                        .mechanism
-                        .accelerations_at(t_new, &trial.q1, &trial.v1)
-                        .map_err(|e| diagnose(self.mechanism, t_new, &trial.q1, &trial.v1, e))?;
-                    trial.kq[12] = trial.v1;
-                    trial.ka[12] = a1;
-                    let dense = if st.dense {
-                        self.contd8(h, &mut trial)?
-                    } else {
-                        DenseOutput::hermite(
-                            self.t,
-                            h,
-                            (&self.q, &self.v, &self.a),
-                            (&trial.q1, &trial.v1, &a1),
-                        )
-                    };
-                    let (mut qp, mut vp, mut ap) = (trial.q1, trial.v1, a1);
-                    self.mechanism.project(t_new, &mut qp, &mut vp)?;
-                    if qp != trial.q1 || vp != trial.v1 {
-                        check_state(&M::Coords::NAMES, t_new, &qp, &vp)?;
-                        self.stats.evaluations += 1;
-                        ap = self
-                            .mechanism
-                            .accelerations_at(t_new, &qp, &vp)
-                            .map_err(|e| diagnose(self.mechanism, t_new, &qp, &vp, e))?;
-                    }
-                    let fac11 = trial.err.powf(expo1);
-                    let fac = (fac11 / self.fac_old.powf(st.beta) / st.safety)
-                        .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
-                    let mut h_new = h / fac;
-                    if last_rejected {
-                        h_new = h_new.min(h);
-                    }
-                    self.fac_old = trial.err.max(1e-4);
-                    self.dense = dense;
-                    (self.t, self.q, self.v, self.a, self.h) = (t_new, qp, vp, ap, h_new);
-                    self.stats.accepted += 1;
-                    return Ok(());
-                }
-                Ok(trial) => {
-                    let fac11 = trial.err.powf(expo1);
-                    self.h = h / (1.0 / st.fac_min).min(fac11 / st.safety);
-                }
-                Err(e) => {
-                    self.h = h * st.fac_min;
-                    last_error = Some(e);
-                }
-            }
-            last_rejected = true;
-            self.stats.rejected += 1;
-        }
+        let mut control = Controller {
+            h: self.h,
+            fac_old: self.fac_old,
+        };
+        let mut stats = self.stats;
+        let this = &*self;
+        let (mut trial, h, t_new) = adaptive_step(
+            "Dop853",
+            &self.settings.shared(),
+            (1.0 / 8.0, 0.2),
+            self.t,
+            t_limit,
+            &mut control,
+            &mut stats,
+            |h, stats| {
+                this.attempt(h, stats).map(|trial| {
+                    let err = trial.err;
+                    (trial, err)
+                })
+            },
+        )?;
+        // FSAL: q̈ at the new point (stage 13), then the dense output, then the projection.
+        stats.evaluations += 1;
+        let a1 = self
+            .mechanism
+            .accelerations_at(t_new, &trial.q1, &trial.v1)
+            .map_err(|e| diagnose(self.mechanism, t_new, &trial.q1, &trial.v1, e))?;
+        trial.kq[12] = trial.v1;
+        trial.ka[12] = a1;
+        let dense = if self.settings.dense {
+            self.contd8(h, &mut trial, &mut stats)?
+        } else {
+            DenseOutput::hermite(
+                self.t,
+                h,
+                (&self.q, &self.v, &self.a),
+                (&trial.q1, &trial.v1, &a1),
+            )
+        };
+        let (qp, vp, ap) =
+            project_accepted(self.mechanism, t_new, (trial.q1, trial.v1, a1), &mut stats)?;
+        self.dense = dense;
+        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
+        (self.h, self.fac_old, self.stats) = (control.h, control.fac_old, stats);
+        Ok(())
     }
 }
 

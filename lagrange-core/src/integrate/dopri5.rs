@@ -438,6 +438,99 @@ pub(crate) fn initial_step<M: Mechanism<N>, const N: usize>(
     }
 }
 
+/// The step size and the previous error of an embedded pair's controller.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Controller {
+    pub h: f64,
+    pub fac_old: f64,
+}
+
+/// The step loop and PI step-size controller shared by the embedded pairs (Dopri5, Dop853):
+/// attempts steps of the controller's size (the last one shortened to land on `t_limit`, and
+/// steps within 1 % of it stretched to it), rejecting and shrinking until `attempt` reports an
+/// error norm ≤ 1, and returns the accepted trial, its h and its end time. The controller is
+/// h_new = h·min(1/fac_min, max(1/fac_max, safety⁻¹·err^(p − β·w)·err_old^(−β)))⁻¹ with
+/// (p, w) = `exponents` = (1/5, 0.75) for Dopri5 and (1/8, 0.2) for Dop853 (HNW I §II.4;
+/// Hairer & Wanner, *Solving ODEs II*, §IV.2; the forms of Hairer's DOPRI5 and DOP853); after a
+/// rejection the step does not grow. A failing attempt (singular mass matrix, non-finite
+/// dynamics) counts as a rejection with the step cut by `fac_min`; when the step can no longer
+/// shrink (0.1·h below round-off of t) the last failure is returned
+/// ([`Error::StepSizeUnderflow`] if steps were rejected only for accuracy).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn adaptive_step<T>(
+    method: &'static str,
+    st: &Dopri5,
+    (exponent, weight): (f64, f64),
+    t: f64,
+    t_limit: f64,
+    control: &mut Controller,
+    stats: &mut Stats,
+    mut attempt: impl FnMut(f64, &mut Stats) -> Result<(T, f64)>,
+) -> Result<(T, f64, f64)> {
+    if !(t_limit > t) || !t_limit.is_finite() {
+        return Err(Error::InvalidEndTime { t, t_end: t_limit });
+    }
+    let expo1 = exponent - st.beta * weight;
+    let mut last_rejected = false;
+    let mut last_error: Option<Error> = None;
+    loop {
+        let mut h = control.h.min(st.h_max);
+        let last = t + 1.01 * h >= t_limit;
+        if last {
+            h = t_limit - t;
+        }
+        if !(t + 0.1 * h > t) {
+            return Err(last_error.unwrap_or(Error::StepSizeUnderflow { method, t, h }));
+        }
+        match attempt(h, stats) {
+            Ok((trial, err)) => {
+                let fac11 = err.powf(expo1);
+                if err <= 1.0 {
+                    let fac = (fac11 / control.fac_old.powf(st.beta) / st.safety)
+                        .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
+                    let mut h_new = h / fac;
+                    if last_rejected {
+                        h_new = h_new.min(h);
+                    }
+                    control.fac_old = err.max(1e-4);
+                    control.h = h_new;
+                    stats.accepted += 1;
+                    let t_new = if last { t_limit } else { t + h };
+                    return Ok((trial, h, t_new));
+                }
+                control.h = h / (1.0 / st.fac_min).min(fac11 / st.safety);
+            }
+            Err(e) => {
+                control.h = h * st.fac_min;
+                last_error = Some(e);
+            }
+        }
+        last_rejected = true;
+        stats.rejected += 1;
+    }
+}
+
+/// Projects an accepted step's end onto the constraints (a no-op without any); if that moved it,
+/// checks it and re-evaluates q̈ there. Returns (q, v, q̈) at the projected state.
+#[allow(clippy::type_complexity)]
+pub(crate) fn project_accepted<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    (q1, v1, a1): ([f64; N], [f64; N], [f64; N]),
+    stats: &mut Stats,
+) -> Result<([f64; N], [f64; N], [f64; N])> {
+    let (mut qp, mut vp, mut ap) = (q1, v1, a1);
+    mechanism.project(t, &mut qp, &mut vp)?;
+    if qp != q1 || vp != v1 {
+        check_state(&M::Coords::NAMES, t, &qp, &vp)?;
+        stats.evaluations += 1;
+        ap = mechanism
+            .accelerations_at(t, &qp, &vp)
+            .map_err(|e| diagnose(mechanism, t, &qp, &vp, e))?;
+    }
+    Ok((qp, vp, ap))
+}
+
 /// Step-by-step use of [`Dopri5`]: holds the current state, the proposed next step and the dense
 /// output of the last accepted step.
 ///
@@ -581,86 +674,50 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
     /// the last failure is returned ([`Error::StepSizeUnderflow`] if steps were rejected only for
     /// accuracy). On error the accepted state is unchanged.
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
-        if !(t_limit > self.t) || !t_limit.is_finite() {
-            return Err(Error::InvalidEndTime {
-                t: self.t,
-                t_end: t_limit,
-            });
-        }
-        let st = self.settings;
-        let expo1 = 0.2 - st.beta * 0.75;
-        let mut last_rejected = false;
-        let mut last_error: Option<Error> = None;
-        loop {
-            let mut h = self.h.min(st.h_max);
-            let last = self.t + 1.01 * h >= t_limit;
-            if last {
-                h = t_limit - self.t;
-            }
-            if !(self.t + 0.1 * h > self.t) {
-                return Err(last_error.unwrap_or(Error::StepSizeUnderflow {
-                    method: "Dopri5",
-                    t: self.t,
-                    h,
-                }));
-            }
-            match self.attempt(h) {
-                Ok((q1, v1, a1, err, k)) => {
-                    let fac11 = err.powf(expo1);
-                    if err <= 1.0 {
-                        // Accepted. The dense output interpolates the step as computed; the state
-                        // is then projected onto the constraints (a no-op without any: then
-                        // nothing changes and nothing is re-evaluated). If the projection moved it,
-                        // the FSAL acceleration is re-evaluated at the projected state.
-                        let t_new = if last { t_limit } else { self.t + h };
-                        let (mut qp, mut vp, mut ap) = (q1, v1, a1);
-                        self.mechanism.project(t_new, &mut qp, &mut vp)?;
-                        if qp != q1 || vp != v1 {
-                            check_state(&M::Coords::NAMES, t_new, &qp, &vp)?;
-                            self.stats.evaluations += 1;
-                            ap = self
-                                .mechanism
-                                .accelerations_at(t_new, &qp, &vp)
-                                .map_err(|e| diagnose(self.mechanism, t_new, &qp, &vp, e))?;
-                        }
-                        let fac = (fac11 / self.fac_old.powf(st.beta) / st.safety)
-                            .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
-                        let mut h_new = h / fac;
-                        if last_rejected {
-                            h_new = h_new.min(h);
-                        }
-                        self.fac_old = err.max(1e-4);
-                        self.dense = self.build_dense(h, &q1, &v1, &a1, &k);
-                        self.t = t_new;
-                        self.q = qp;
-                        self.v = vp;
-                        self.a = ap;
-                        self.h = h_new;
-                        self.stats.accepted += 1;
-                        return Ok(());
-                    }
-                    self.h = h / (1.0 / st.fac_min).min(fac11 / st.safety);
-                }
-                Err(e) => {
-                    self.h = h * st.fac_min;
-                    last_error = Some(e);
-                }
-            }
-            last_rejected = true;
-            self.stats.rejected += 1;
-        }
+        let mut control = Controller {
+            h: self.h,
+            fac_old: self.fac_old,
+        };
+        let mut stats = self.stats;
+        let this = &*self;
+        let ((q1, v1, a1, k), h, t_new) = adaptive_step(
+            "Dopri5",
+            &self.settings,
+            (0.2, 0.75),
+            self.t,
+            t_limit,
+            &mut control,
+            &mut stats,
+            |h, stats| {
+                this.attempt(h, stats)
+                    .map(|(q1, v1, a1, err, k)| ((q1, v1, a1, k), err))
+            },
+        )?;
+        // Accepted. The dense output interpolates the step as computed; the state is then projected
+        // onto the constraints (a no-op without any: then nothing changes and nothing is
+        // re-evaluated). If the projection moved it, the FSAL acceleration is re-evaluated at the
+        // projected state.
+        let (qp, vp, ap) = project_accepted(self.mechanism, t_new, (q1, v1, a1), &mut stats)?;
+        self.dense = self.build_dense(h, &q1, &v1, &a1, &k);
+        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
+        (self.h, self.fac_old, self.stats) = (control.h, control.fac_old, stats);
+        Ok(())
     }
 
     /// One trial step of size h: (q₁, v₁, q̈₁, err, stage data for the dense output).
     #[allow(clippy::type_complexity)]
-    fn attempt(&mut self, h: f64) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
+    fn attempt(
+        &self,
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
         let m = self.mechanism;
         let (t, q, v) = (self.t, &self.q, &self.v);
         let (kq1, ka1) = (*v, self.a);
         // Stage i: position increments use the stage velocities kqⱼ, velocity increments the stage
         // accelerations kaⱼ.
         let (q2, v2) = (combo(q, h, [A21], [&kq1]), combo(v, h, [A21], [&ka1]));
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka2 = m
             .accelerations_at(t + C2 * h, &q2, &v2)
             .map_err(|e| diagnose(m, t + C2 * h, &q2, &v2, e))?;
@@ -669,7 +726,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             combo(q, h, [A31, A32], [&kq1, &kq2]),
             combo(v, h, [A31, A32], [&ka1, &ka2]),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka3 = m
             .accelerations_at(t + C3 * h, &q3, &v3)
             .map_err(|e| diagnose(m, t + C3 * h, &q3, &v3, e))?;
@@ -678,7 +735,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             combo(q, h, [A41, A42, A43], [&kq1, &kq2, &kq3]),
             combo(v, h, [A41, A42, A43], [&ka1, &ka2, &ka3]),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka4 = m
             .accelerations_at(t + C4 * h, &q4, &v4)
             .map_err(|e| diagnose(m, t + C4 * h, &q4, &v4, e))?;
@@ -687,7 +744,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             combo(q, h, [A51, A52, A53, A54], [&kq1, &kq2, &kq3, &kq4]),
             combo(v, h, [A51, A52, A53, A54], [&ka1, &ka2, &ka3, &ka4]),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka5 = m
             .accelerations_at(t + C5 * h, &q5, &v5)
             .map_err(|e| diagnose(m, t + C5 * h, &q5, &v5, e))?;
@@ -706,7 +763,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                 [&ka1, &ka2, &ka3, &ka4, &ka5],
             ),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka6 = m
             .accelerations_at(t + h, &q6, &v6)
             .map_err(|e| diagnose(m, t + h, &q6, &v6, e))?;
@@ -724,7 +781,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             [&ka1, &ka3, &ka4, &ka5, &ka6],
         );
         check_state(&M::Coords::NAMES, t + h, &q1, &v1)?;
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka7 = m
             .accelerations_at(t + h, &q1, &v1)
             .map_err(|e| diagnose(m, t + h, &q1, &v1, e))?;
