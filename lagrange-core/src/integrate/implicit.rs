@@ -20,9 +20,19 @@
 //! ∂Rᵢ/∂Vₖ = δᵢₖ ∂p/∂v|ᵢ + h aᵢₖ ∂p/∂q|ᵢ − h² Σⱼ aᵢⱼ aⱼₖ ∂G/∂q|ⱼ − h aᵢₖ ∂G/∂v|ₖ,
 //! ```
 //!
-//! an (s·N)-dimensional system solved by Newton's method with exact Jacobians from gradient dual
-//! numbers (nested inside G, whose ∂T/∂q is itself a gradient; re-evaluated at every iterate),
-//! starting from the predictor Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀). Then q₁ = q₀ + h Σ bⱼ Vⱼ,
+//! an (s·N)-dimensional system. It is solved by the **simplified Newton iteration** (Hairer & Wanner,
+//! *Solving ODEs II*, §IV.8): the Jacobians ∂p/∂q, ∂p/∂v, ∂G/∂q, ∂G/∂v are evaluated once, exactly,
+//! from gradient dual numbers (nested inside G, whose ∂T/∂q is itself a gradient) at one point
+//! (t₀ + h/2, q₀, v₀) and used for every stage; the (s·N)-square matrix built from them is
+//! LU-factorised once, and each iteration costs s plain evaluations of (p, ṗ) and one solve. In a
+//! solver ([`FixedStepper`](super::FixedStepper), or [`GaussLegendre2::step_with_memory`]) the
+//! Jacobian and its factorisation are kept for the next steps while the iteration contracts by at
+//! least [`JACOBIAN_REUSE_THETA`] (θ = ‖δₖ‖/‖δₖ₋₁‖), refactorised for a new h, and refreshed when
+//! it contracts slower or not at all; the stages start from the previous step's velocities,
+//! extrapolated. Without a previous step they start from Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀). The
+//! iteration is run to round-off, as the methods' symmetry and symplecticity need; when even a
+//! fresh matrix does not contract, the step falls back to Newton's method with exact Jacobians at
+//! every iterate (quadratic convergence). Then q₁ = q₀ + h Σ bⱼ Vⱼ,
 //! p₁ = p₀ + h Σ bⱼ G(tⱼ, Qⱼ, Vⱼ). This is exactly the Gauss method applied to the system in (q, p)
 //! (given its stage values, Vᵢ := v(tᵢ, Qᵢ, Pᵢ) solves R = 0, and conversely).
 //!

@@ -1,13 +1,19 @@
-//! Integrators, generic over every generated mechanism.
+//! Integrators, generic over every generated mechanism, behind one stepping interface
+//! ([`solver`]: the [`Stepper`] trait — `step`, `integrate` to a stop time with an observer, dense
+//! output and events, [`Stats`] — implemented by [`FixedStepper`] for every [`Integrator`], by
+//! [`Dopri5Stepper`] and [`Dop853Stepper`], and by the contact solver
+//! [`ContactSolver`](crate::constraints::ContactSolver)); `sys.step::<I>(&mut s, h)` is one
+//! validated step.
 //!
 //! | method | order | steps | evaluations of q̈ per step | geometric properties |
 //! |---|---|---|---|---|
 //! | [`Rk4`] | 4 | fixed | 4 | none (energy drifts) |
-//! | [`Dopri5`] | 5(4) | adaptive, dense output, events | 6 (FSAL) | none |
-//! | [`ImplicitMidpoint`] | 2 | fixed | Newton: 1 evaluation of (p, ṗ) with Jacobians per iteration | symmetric; symplectic in (q, p) for any Lagrangian |
-//! | [`GaussLegendre2`] | 4 | fixed | Newton: 2 evaluations of (p, ṗ) with Jacobians per iteration | symmetric; symplectic in (q, p) for any Lagrangian |
+//! | [`Dopri5`] | 5(4) | adaptive, dense output (order 4), events | 6 (FSAL) | none |
+//! | [`Dop853`] | 8(5,3) | adaptive, dense output (order 7), events | 12 (FSAL), + 3 for the dense output | none |
+//! | [`ImplicitMidpoint`] | 2 | fixed | simplified Newton: 1 plain evaluation of (p, ṗ) per iteration; one Jacobian, reused across steps while the iteration contracts well | symmetric; symplectic in (q, p) for any Lagrangian |
+//! | [`GaussLegendre2`] | 4 | fixed | simplified Newton: 2 plain evaluations of (p, ṗ) per iteration; Jacobian reused as above | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations | symplectic in (q, p) for any Lagrangian; refuses constraints |
-//! | [`StormerVerlet`] | 2 | fixed | 3 (2 with M, 1 constraint test) | symplectic; refuses a non-constant mass matrix and constraints |
+//! | [`StormerVerlet`] | 2 | fixed | 2 with M (+ 1 constraint test when constraints are not declared) | symplectic; refuses a non-constant mass matrix and constraints |
 //!
 //! Implicit midpoint, Gauss–Legendre and the variational integrator integrate the canonical
 //! equations in (q, p), p = ∂L/∂q̇ (converting at both ends of a step, so the public state stays
@@ -24,6 +30,8 @@
 //! before a step ([`Mechanism::check_constraints`]) and project after it ([`Mechanism::project`]);
 //! the variational integrator and Störmer–Verlet, built on the unconstrained Lagrangian, refuse
 //! constrained mechanisms with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
+//! Whether a mechanism is constrained is its declaration, [`Mechanism::CONSTRAINTS`]; only for an
+//! implementation that does not declare it is it tested at each step.
 
 mod canonical;
 pub mod dop853;
