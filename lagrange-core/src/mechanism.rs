@@ -202,7 +202,11 @@ pub trait Mechanism<const N: usize>: Sized {
     }
 
     /// Advances `state` by one step of size `h` with integrator `I` (for example
-    /// [`Rk4`](crate::integrate::Rk4)). On error the state is unchanged.
+    /// [`Rk4`](crate::integrate::Rk4)), with fresh working memory. For the adaptive methods
+    /// ([`Dopri5`](crate::integrate::Dopri5), [`Dop853`](crate::integrate::Dop853)) it integrates
+    /// over [t, t + h] with their default tolerances, so the state advances by h as well. For many
+    /// steps, dense output, events or statistics use a solver
+    /// ([`Stepper`](crate::integrate::Stepper)). On error the state is unchanged.
     fn step<I: Integrator>(&self, state: &mut State<Self::Coords>, h: f64) -> Result<()> {
         I::step(self, state, h)
     }
