@@ -1,7 +1,7 @@
 //! `cargo run --release -p lagrange-bench --bin work-precision [-- --quick] [--out DIR]`
 //!
 //! What accuracy costs: every integrator of `lagrange-core` over a ladder of step sizes (fixed-step
-//! methods) or tolerances (Dopri5), on problems with exact or high-precision reference solutions,
+//! methods) or tolerances (Dopri5, Dop853), on problems with exact or high-precision reference solutions,
 //! with the `ode_solvers` crate's Dopri5 and Dop853 on hand-written equations of the same problems
 //! as a peer. For each (problem, method, setting) it records the end-point error (max norm over q
 //! and v), the maximum energy error over the run, right-hand-side evaluations (and Jacobian
@@ -14,7 +14,7 @@ mod problems;
 
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
-use lagrange_core::integrate::ImplicitStepStats;
+use lagrange_core::integrate::{Dop853, ImplicitStepStats, NewtonMemory};
 use lagrange_core::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State, StormerVerlet,
     Variational,
@@ -178,19 +178,23 @@ fn run_fixed<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
     let e0 = m.energy(&s).map_err(|e| e.to_string())?;
     let mut max_de = if track { 0.0f64 } else { f64::NAN };
     let (mut rhs, mut jac) = (0usize, 0usize);
+    // The implicit methods run as a solver does: the Newton matrix and the stage predictor are
+    // kept from step to step. Evaluations: plain evaluations of the canonical field plus the
+    // velocity recovery's passes of the momenta plus the momenta and q̈ at the step's start.
     let add = |st: ImplicitStepStats, rhs: &mut usize, jac: &mut usize| {
-        *rhs += 1;
+        *rhs += st.field_evaluations + st.velocity_iterations + 2;
         *jac += st.jacobian_evaluations;
     };
+    let mut memory1 = NewtonMemory::<N, 1>::default();
+    let mut memory2 = NewtonMemory::<N, 2>::default();
     for _ in 0..n {
         let r = match method {
             Fixed::Rk4 => m.step::<Rk4>(&mut s, h).map(|_| rhs += 4),
             Fixed::Verlet => m.step::<StormerVerlet>(&mut s, h).map(|_| rhs += 3),
-            Fixed::Midpoint => ImplicitMidpoint::step_with_stats(m, &mut s, h)
+            Fixed::Midpoint => ImplicitMidpoint::step_with_memory(m, &mut memory1, &mut s, h)
                 .map(|st| add(st, &mut rhs, &mut jac)),
-            Fixed::Gauss => {
-                GaussLegendre2::step_with_stats(m, &mut s, h).map(|st| add(st, &mut rhs, &mut jac))
-            }
+            Fixed::Gauss => GaussLegendre2::step_with_memory(m, &mut memory2, &mut s, h)
+                .map(|st| add(st, &mut rhs, &mut jac)),
             Fixed::Variational => Variational::step_with_stats(m, &mut s, h).map(|st| {
                 // predictor, constraint test, final momentum rate, momenta; Newton iterations
                 // evaluate with Jacobians.
@@ -215,6 +219,7 @@ fn run_fixed<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
 
 fn run_dopri5<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
     setup: &Setup<M, N>,
+    dop853: bool,
     tol: f64,
     track: bool,
 ) -> RunResult<N> {
@@ -222,17 +227,26 @@ fn run_dopri5<M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
     let mut s = setup.start;
     let e0 = m.energy(&s).map_err(|e| e.to_string())?;
     let mut max_de = if track { 0.0f64 } else { f64::NAN };
-    let out = Dopri5::new(tol, tol)
-        .integrate(m, &mut s, setup.t_end, &mut [], |o| {
-            if track {
-                if let lagrange_core::integrate::Observation::Step { state, .. } = o {
-                    if let Ok(e) = m.energy(state) {
-                        max_de = max_de.max((e - e0).abs());
-                    }
+    let observe = |o: lagrange_core::integrate::Observation<'_, [f64; N], N>| {
+        if track {
+            if let lagrange_core::integrate::Observation::Step { state, .. } = o {
+                if let Ok(e) = m.energy(state) {
+                    max_de = max_de.max((e - e0).abs());
                 }
             }
-        })
-        .map_err(|e| e.to_string())?;
+        }
+    };
+    // Dop853 without its dense output (no events here; the peer's sparse output skips it too).
+    let out = if dop853 {
+        Dop853 {
+            dense: false,
+            ..Dop853::new(tol, tol)
+        }
+        .integrate(m, &mut s, setup.t_end, &mut [], observe)
+    } else {
+        Dopri5::new(tol, tol).integrate(m, &mut s, setup.t_end, &mut [], observe)
+    }
+    .map_err(|e| e.to_string())?;
     Ok((
         s.q,
         s.v,
@@ -395,7 +409,7 @@ fn record<const N: usize>(
 
 fn count_runs<M, const N: usize>(s: &Setup<M, N>) -> usize {
     let fixed = if s.verlet { 5 } else { 4 };
-    fixed * s.steps.len() + 3 * s.tolerances.len()
+    fixed * s.steps.len() + 4 * s.tolerances.len()
 }
 
 fn run_setup<M: Mechanism<N, Coords = [f64; N]>, const N: usize, const N2: usize>(
@@ -430,17 +444,19 @@ fn run_setup<M: Mechanism<N, Coords = [f64; N]>, const N: usize, const N2: usize
         }
     }
     for &tol in &setup.tolerances {
-        progress.tick(&format!("{} / Dopri5 / tol = {tol:.0e}", setup.name));
-        let r = measure(quick, |track| run_dopri5(setup, tol, track));
-        record(
-            rows,
-            setup.name,
-            "Dopri5",
-            format!("tol = {tol:.0e}"),
-            tol,
-            &setup.reference,
-            r,
-        );
+        for (dop853, name) in [(false, "Dopri5"), (true, "Dop853")] {
+            progress.tick(&format!("{} / {name} / tol = {tol:.0e}", setup.name));
+            let r = measure(quick, |track| run_dopri5(setup, dop853, tol, track));
+            record(
+                rows,
+                setup.name,
+                name,
+                format!("tol = {tol:.0e}"),
+                tol,
+                &setup.reference,
+                r,
+            );
+        }
         for (dop853, name) in [(false, "ode_solvers Dopri5"), (true, "ode_solvers Dop853")] {
             progress.tick(&format!("{} / {name} / tol = {tol:.0e}", setup.name));
             let r = measure(quick, |track| {
@@ -664,8 +680,9 @@ fn write_markdown(dir: &std::path::Path, rows: &[Row], notes: &str, quick: bool)
     let _ = writeln!(s, "{notes}\n");
     s.push_str(
         "## Cheapest method per accuracy\n\nFastest run reaching the end-point error, among all methods (peer \
-         included) and among lagrange's own.\n\n| problem | ≤ 1e-6, all | ≤ 1e-6, lagrange | ≤ 1e-10, all | ≤ 1e-10, \
-         lagrange |\n|---|---|---|---|---|\n",
+         included) and among lagrange's own, and the ratio of their times (1 where lagrange's is the cheapest \
+         overall).\n\n| problem | ≤ 1e-6, all | ≤ 1e-6, lagrange | ratio | ≤ 1e-10, all | ≤ 1e-10, \
+         lagrange | ratio |\n|---|---|---|---|---|---|---|\n",
     );
     let problems: Vec<&str> = {
         let mut p: Vec<&str> = Vec::new();
@@ -681,13 +698,22 @@ fn write_markdown(dir: &std::path::Path, rows: &[Row], notes: &str, quick: bool)
             Some(r) => format!("{} ({}), {:.2e} s", r.method, r.setting, r.seconds),
             None => "none reached it".into(),
         };
+        let ratio = |target| match (
+            cheapest(rows, p, target, false),
+            cheapest(rows, p, target, true),
+        ) {
+            (Some(ours), Some(all)) => format!("{:.2}", ours.seconds / all.seconds),
+            _ => "—".into(),
+        };
         let _ = writeln!(
             s,
-            "| {p} | {} | {} | {} | {} |",
+            "| {p} | {} | {} | {} | {} | {} | {} |",
             cell(1e-6, true),
             cell(1e-6, false),
+            ratio(1e-6),
             cell(1e-10, true),
-            cell(1e-10, false)
+            cell(1e-10, false),
+            ratio(1e-10)
         );
     }
     // Our Dopri5 against the peer's at rtol 1e-8 on the double pendulum.

@@ -16,6 +16,15 @@ pub trait Mechanism<const N: usize>: Sized {
     /// The named generalized coordinates (`Coords` of the declaration).
     type Coords: Coordinates<N>;
 
+    /// The number of constraint rows the declaration has (`Some(0)` for none), or `None` when the
+    /// implementation does not say. Integrators decide from it whether constraint forces are part
+    /// of the motion: the variational integrator and Störmer–Verlet refuse `Some(c)` with c > 0,
+    /// implicit midpoint and Gauss–Legendre then add Jᵀλ at every stage. With `None` they fall back
+    /// to testing, at the start of every step, whether constraint forces act there (which cannot
+    /// tell a constraint whose force happens to vanish, λ = 0, from none). [`impl_mechanism!`](crate::impl_mechanism)
+    /// declares it.
+    const CONSTRAINTS: Option<usize> = None;
+
     /// Checks parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
     /// M, 𝓕 and b at (t, q, q̇), for any scalar.
@@ -200,7 +209,11 @@ pub trait Mechanism<const N: usize>: Sized {
     }
 
     /// Advances `state` by one step of size `h` with integrator `I` (for example
-    /// [`Rk4`](crate::integrate::Rk4)). On error the state is unchanged.
+    /// [`Rk4`](crate::integrate::Rk4)), with fresh working memory. For the adaptive methods
+    /// ([`Dopri5`](crate::integrate::Dopri5), [`Dop853`](crate::integrate::Dop853)) it integrates
+    /// over [t, t + h] with their default tolerances, so the state advances by h as well. For many
+    /// steps, dense output, events or statistics use a solver
+    /// ([`Stepper`](crate::integrate::Stepper)). On error the state is unchanged.
     fn step<I: Integrator>(&self, state: &mut State<Self::Coords>, h: f64) -> Result<()> {
         I::step(self, state, h)
     }
@@ -282,27 +295,6 @@ pub fn diagnose<M: Mechanism<N>, const N: usize>(
     error
 }
 
-/// Checks a step size.
-pub fn check_step(h: f64) -> Result<()> {
-    if h.is_finite() && h > 0.0 {
-        Ok(())
-    } else {
-        Err(Error::InvalidStep { h })
-    }
-}
-
-/// Checks a step size from time `t`: positive and finite ([`Error::InvalidStep`]), and large enough
-/// that t + h ≠ t in floating point ([`Error::StepDoesNotAdvance`]; a subnormal h at t = 1, say).
-/// A non-finite `t` passes here and is refused by the state check that follows.
-pub fn check_step_at(t: f64, h: f64) -> Result<()> {
-    check_step(h)?;
-    if t + h == t {
-        Err(Error::StepDoesNotAdvance { t, h })
-    } else {
-        Ok(())
-    }
-}
-
 /// Implements [`Mechanism`] for a hand-written [`Model`](crate::Model) with `N` coordinates and `K`
 /// Cartesian coordinates, forwarding every method to [`crate::dynamics`]: the same glue
 /// `#[mechanism]` generates, for models written by hand (tests, benchmarks, peers).
@@ -338,6 +330,10 @@ pub fn check_step_at(t: f64, h: f64) -> Result<()> {
 macro_rules! impl_mechanism {
     ($ty:ty, $n:tt, $k:tt, constraints) => {
         $crate::impl_mechanism!(@impl $ty, $n, $k, {
+            const CONSTRAINTS: Option<usize> = {
+                use $crate::constraints::Constraints as _;
+                Some($crate::constraints::row_count(&<$ty>::NAMES))
+            };
             fn accelerations_at<S: $crate::Scalar>(
                 &self,
                 t: S,
@@ -365,7 +361,9 @@ macro_rules! impl_mechanism {
         });
     };
     ($ty:ty, $n:tt, $k:tt) => {
-        $crate::impl_mechanism!(@impl $ty, $n, $k, {});
+        $crate::impl_mechanism!(@impl $ty, $n, $k, {
+            const CONSTRAINTS: Option<usize> = Some(0);
+        });
     };
     (@impl $ty:ty, $n:tt, $k:tt, { $($extra:tt)* }) => {
         impl $crate::Mechanism<$n> for $ty {

@@ -1208,3 +1208,264 @@ fn dopri5_end_time_before_the_start_is_named_as_such() {
         Err(Error::InvalidEndTime { t_end, .. }) if t_end == 1.0
     ));
 }
+
+// The common stepping interface.
+
+/// End-point error after one Kepler period with n steps of a solver that keeps its working
+/// memory (the implicit methods' Newton matrix) from step to step; also the Jacobians per step.
+fn kepler_error_solver<I: Integrator>(n: usize) -> (f64, f64) {
+    use lagrange_core::integrate::{FixedStepper, Stepper};
+    let start = kepler_start(E);
+    let h = 2.0 * PI / n as f64;
+    let mut solver = FixedStepper::<_, I, 2>::new(&Kepler, &start, h).unwrap();
+    let out = solver.integrate(2.0 * PI, &mut [], |_| {}).unwrap();
+    assert_eq!(out.stats.accepted, n);
+    let s = solver.state();
+    let (q, v) = kepler_exact(E, s.t);
+    (
+        distance(&s.q, &s.v, &q, &v),
+        out.stats.jacobians as f64 / n as f64,
+    )
+}
+
+#[test]
+fn implicit_solvers_reuse_the_jacobian_and_keep_their_order() {
+    // The simplified Newton iteration is iterated to round-off like the exact one, so reusing the
+    // Newton matrix changes the result only at round-off level (≪ the 1e-7…1e-3 errors here): the
+    // orders must be those of the methods, 4 and 2. At these step counts the leading error term
+    // dominates: the fresh-memory runs above measure 3.997 and 2.000, so ±0.1 leaves room for the
+    // next term only. The Jacobian must actually be reused: on this smooth orbit a refresh is due
+    // only when the contraction factor passes 0.1, far less than once per step (< 0.2 asserted).
+    for (name, err, n, order) in [
+        (
+            "Gauss-Legendre 2 solver",
+            kepler_error_solver::<GaussLegendre2> as fn(usize) -> (f64, f64),
+            200,
+            4.0,
+        ),
+        (
+            "implicit midpoint solver",
+            kepler_error_solver::<ImplicitMidpoint>,
+            1000,
+            2.0,
+        ),
+    ] {
+        let p = observed_order(name, |n| err(n).0, n);
+        assert!((p - order).abs() < 0.1, "{name}: observed order {p}");
+        let (_, jacobians) = err(4 * n);
+        eprintln!("{name}: {jacobians:.3} Jacobians per step");
+        assert!(jacobians < 0.2, "{name}: {jacobians} Jacobians per step");
+        // Same method with fresh memory every step (`sys.step::<I>`): same result to round-off.
+        let fresh = if order == 4.0 {
+            kepler_error::<GaussLegendre2>(n)
+        } else {
+            kepler_error::<ImplicitMidpoint>(n)
+        };
+        let kept = err(n).0;
+        assert!(
+            (fresh - kept).abs() < 1e-9 * fresh.max(1.0),
+            "{name}: {fresh} vs {kept}"
+        );
+    }
+}
+
+#[test]
+fn dopri5_as_a_type_parameter_advances_by_h() {
+    // `sys.step::<Dopri5>(&mut s, h)` integrates over [t, t + h] with the default tolerances
+    // (rtol 1e-6, atol 1e-9): after 10 such calls of h = 2π/10 the state is at t = 2π exactly
+    // (steps land on t + h) and the error is that of a tolerance-1e-6 integration over a period:
+    // about 140 steps (measured) each allowed a local error of 1e-6 relative, accumulated and
+    // amplified by the orbit's error growth near perihelion (speed 2): < 1e-3 (measured 1.6e-4).
+    let mut s = kepler_start(E);
+    for _ in 0..10 {
+        Kepler.step::<Dopri5>(&mut s, 2.0 * PI / 10.0).unwrap();
+    }
+    assert!((s.t - 2.0 * PI).abs() < 1e-14);
+    let (q, v) = kepler_exact(E, s.t);
+    let err = distance(&s.q, &s.v, &q, &v);
+    assert!(err < 1e-3 && err > 0.0, "error {err}");
+}
+
+#[test]
+fn every_solver_integrates_with_events_through_the_same_interface() {
+    use lagrange_core::integrate::{FixedStepper, Stepper};
+    // Kepler from perihelion: the radial velocity r·ṙ = x·ẋ crosses zero (rising → falling) at
+    // aphelion, t = π exactly (half the period 2π for a = 1). Each solver locates it on its dense
+    // output: Dopri5's of order 4 at rtol 1e-10, GL2 at h = 2π/2000 with the cubic Hermite
+    // interpolant (error O(h⁴) ≈ 1e-12, plus the method's O(h⁴) ≈ 1e-11 global error in the phase):
+    // both well within 1e-8 of π.
+    fn run<S: Stepper<[f64; 2], 2>>(name: &str, solver: &mut S) {
+        let radial = |s: &State<[f64; 2]>| s.q[0] * s.v[0] + s.q[1] * s.v[1];
+        let mut events = [Event::new(&radial).direction(Direction::Falling).terminal()];
+        let out = solver.integrate(5.0, &mut events, |_| {}).unwrap();
+        let StopReason::Event(hit) = out.reason else {
+            panic!("{name}: no event")
+        };
+        eprintln!("{name}: aphelion at {:.15}, {:?}", hit.state.t, out.stats);
+        assert!((hit.state.t - PI).abs() < 1e-8, "{name}: {}", hit.state.t);
+        assert!(out.stats.accepted > 0 && out.stats.evaluations > 0);
+    }
+    let start = kepler_start(E);
+    run(
+        "Dopri5",
+        &mut Dopri5Stepper::new(&Kepler, Dopri5::new(1e-10, 1e-12), &start).unwrap(),
+    );
+    run(
+        "Gauss-Legendre 2",
+        &mut FixedStepper::<_, GaussLegendre2, 2>::new(&Kepler, &start, 2.0 * PI / 2000.0).unwrap(),
+    );
+    run(
+        "RK4",
+        &mut FixedStepper::<_, Rk4, 2>::new(&Kepler, &start, 2.0 * PI / 2000.0).unwrap(),
+    );
+}
+
+// Dop853.
+
+/// End-point error after one period of the Kepler orbit of eccentricity `e` with n Dop853 steps.
+fn kepler_error_dop853(e: f64, n: usize) -> f64 {
+    use lagrange_core::integrate::Dop853;
+    // Used as a fixed-step method (tolerances so loose that no step is rejected) to observe the
+    // order of its 8th-order solution.
+    let settings = Dop853 {
+        rtol: 1e10,
+        atol: 1e10,
+        h_init: Some(2.0 * PI / n as f64),
+        h_max: 2.0 * PI / n as f64,
+        dense: false,
+        ..Dop853::default()
+    };
+    let mut s = kepler_start(e);
+    let out = settings
+        .integrate(&Kepler, &mut s, 2.0 * PI, &mut [], |_| {})
+        .unwrap();
+    assert_eq!(out.stats.accepted, n);
+    let (q, v) = kepler_exact(e, s.t);
+    distance(&s.q, &s.v, &q, &v)
+}
+
+#[test]
+fn dop853_is_eighth_order() {
+    // An 8th-order method has a narrow window between its pre-asymptotic regime and round-off in
+    // double precision. On Kepler orbits (printed for the record) the observed order is still 7.7
+    // at e = 0.2 (40 → 80 steps) where the next halving already meets round-off (≈ 5e-14), and 7.95
+    // at e = 0.6 (200 → 400 steps) with round-off (≈ 7e-13) in the finer error. On the harmonic
+    // oscillator q̈ = −q over ten periods the window is wide: with 8, 16 and 32 steps per period the
+    // errors (≈ 6e-7, 2e-9, 9e-12) are far above round-off and hω ≤ 0.8 is small enough for the
+    // leading term to dominate: the measured order is 8.02, and ±0.1 leaves room for the next term.
+    observed_order(
+        "Dop853 on Kepler e = 0.2",
+        |n| kepler_error_dop853(0.2, n),
+        20,
+    );
+    let oscillator = |n: usize| {
+        use lagrange_core::integrate::Dop853;
+        let h = 2.0 * PI / n as f64;
+        let settings = Dop853 {
+            rtol: 1e10,
+            atol: 1e10,
+            h_init: Some(h),
+            h_max: h,
+            dense: false,
+            ..Dop853::default()
+        };
+        let mut s = State::new(0.0, [1.0], [0.0]);
+        let t_end = 20.0 * PI;
+        let out = settings
+            .integrate(&Oscillator { damping: 0.0 }, &mut s, t_end, &mut [], |_| {})
+            .unwrap();
+        assert_eq!(out.stats.accepted, 10 * n);
+        (s.q[0] - t_end.cos())
+            .abs()
+            .max((s.v[0] + t_end.sin()).abs())
+    };
+    let p = observed_order("Dop853 on the oscillator", oscillator, 8);
+    assert!((p - 8.0).abs() < 0.1, "observed order {p}");
+}
+
+#[test]
+fn dop853_locates_aphelion_to_1e_12_and_agrees_with_dopri5() {
+    use lagrange_core::integrate::Dop853;
+    // Kepler from perihelion: r·ṙ falls through zero at aphelion, t = π exactly (a = 1). At
+    // rtol 1e-13 the solution's phase error is ≈ 1e-12 at most (measured end-point error below);
+    // the event is located on the 7th-order dense output to EVENT_TIME_TOLERANCE = 1e-13; so the
+    // event time is within 1e-12 of π.
+    let radial = |s: &State<[f64; 2]>| s.q[0] * s.v[0] + s.q[1] * s.v[1];
+    let mut s = kepler_start(E);
+    let mut events = [Event::new(&radial).direction(Direction::Falling)];
+    let mut hits = Vec::new();
+    let out = Dop853::new(1e-13, 1e-15)
+        .integrate(&Kepler, &mut s, 2.0 * PI, &mut events, |o| {
+            if let Observation::Event(hit) = o {
+                hits.push(hit.state.t);
+            }
+        })
+        .unwrap();
+    assert_eq!(hits.len(), 1);
+    eprintln!(
+        "Dop853 aphelion: {:.3e} from π, {:?}",
+        hits[0] - PI,
+        out.stats
+    );
+    assert!((hits[0] - PI).abs() < 1e-12, "{}", hits[0] - PI);
+    let (q, v) = kepler_exact(E, s.t);
+    let err853 = distance(&s.q, &s.v, &q, &v);
+    // Dopri5 at the same tolerance reaches the same end point: both within 1e-10 of the exact
+    // orbit (the tolerance is local; the global error of ≈ 1e3 steps is a few hundred times it), so
+    // within 2e-10 of each other — and Dop853 takes fewer evaluations.
+    let mut s5 = kepler_start(E);
+    let out5 = Dopri5::new(1e-13, 1e-15)
+        .integrate(&Kepler, &mut s5, 2.0 * PI, &mut [], |_| {})
+        .unwrap();
+    let err5 = distance(&s5.q, &s5.v, &q, &v);
+    let between = distance(&s.q, &s.v, &s5.q, &s5.v);
+    eprintln!(
+        "end-point errors: Dop853 {err853:.2e} ({} evaluations), Dopri5 {err5:.2e} ({}), between {between:.2e}",
+        out.stats.evaluations, out5.stats.evaluations
+    );
+    assert!(err853 < 1e-10 && err5 < 1e-10 && between < 2e-10);
+    assert!(out.stats.evaluations < out5.stats.evaluations);
+}
+
+#[test]
+fn dop853_dense_output_is_seventh_order_accurate_inside_steps() {
+    use lagrange_core::integrate::{Dop853, Dop853Stepper, Stepper};
+    // Inside each step of a Dop853 run at rtol 1e-11 the dense output is compared with the exact
+    // orbit at the step's midpoint: the continuous extension of order 7 adds an O(h⁸) error of the
+    // size of the step's local error, so it stays within 1e-8 (≫ the measured ≈ 1e-10, ≪ the
+    // ≈ 1e-4 that a cubic Hermite interpolant would leave at these step sizes).
+    let start = kepler_start(E);
+    let mut stepper = Dop853Stepper::new(&Kepler, Dop853::new(1e-11, 1e-13), &start).unwrap();
+    let mut worst = 0.0f64;
+    while Stepper::t(&stepper) < 2.0 * PI {
+        stepper.step(2.0 * PI).unwrap();
+        let d = Stepper::dense(&stepper);
+        let tm = 0.5 * (d.t_start() + d.t_end());
+        let (q, v) = d.eval(tm);
+        let (qe, ve) = kepler_exact(E, tm);
+        worst = worst.max(distance(&q, &v, &qe, &ve));
+    }
+    eprintln!("Dop853 dense output: worst midpoint error {worst:.2e}");
+    assert!(worst < 1e-8 && worst > 0.0, "{worst}");
+}
+
+#[test]
+fn constrained_or_not_is_decided_by_the_declaration_not_by_lambda() {
+    // `impl_mechanism!` declares the number of constraint rows.
+    assert_eq!(<CartesianPendulum as Mechanism<2>>::CONSTRAINTS, Some(1));
+    assert_eq!(<Kepler as Mechanism<2>>::CONSTRAINTS, Some(0));
+    // Released horizontally at rest the rod's tension m(g cos θ + L θ̇²) is zero: λ = 0 at the
+    // first step, so no constraint force acts there and a test of λ would let the variational
+    // integrator and Störmer–Verlet take that step. The declaration refuses them at once.
+    let horizontal = State::new(0.0, [1.0, 0.0], [0.0, 0.0]);
+    for err in [
+        CartesianPendulum
+            .step::<Variational>(&mut State { ..horizontal }, 0.01)
+            .unwrap_err(),
+        CartesianPendulum
+            .step::<StormerVerlet>(&mut State { ..horizontal }, 0.01)
+            .unwrap_err(),
+    ] {
+        assert!(matches!(err, Error::UnsuitableMethod { .. }), "{err}");
+    }
+}

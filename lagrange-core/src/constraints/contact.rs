@@ -6,7 +6,8 @@ use super::{
     CONSISTENCY_TOLERANCE,
 };
 use crate::error::{Error, Result};
-use crate::mechanism::check_step_at;
+use crate::integrate::rk4::rk4_step;
+use crate::integrate::{check_step_at, DenseOutput, Stats, Stepper};
 use crate::model::{check_state, Coordinates, State};
 
 /// Options of [`ContactRk4`].
@@ -72,6 +73,13 @@ impl Default for ContactOptions {
     }
 }
 
+/// The number of rows of a [`Constraints`] declaration, from its [`NAMES`](Constraints::NAMES):
+/// what [`impl_mechanism!`](crate::impl_mechanism) declares as
+/// [`Mechanism::CONSTRAINTS`](crate::Mechanism::CONSTRAINTS).
+pub const fn row_count<const C: usize>(_names: &[&'static str; C]) -> usize {
+    C
+}
+
 /// One located mode change.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModeChange {
@@ -127,12 +135,8 @@ pub struct ContactRk4<const C: usize> {
     pub events: Vec<ModeChange>,
 }
 
-#[inline(always)]
-fn axpy<const N: usize>(y: &[f64; N], a: f64, x: &[f64; N]) -> [f64; N] {
-    std::array::from_fn(|i| y[i] + a * x[i])
-}
-
-/// One RK4 step of length `h` in `mode`, then the projection onto the mode's rows.
+/// One RK4 step of length `h` in `mode` ([`rk4_step`] on the mode's accelerations), then the
+/// projection onto the mode's rows.
 fn substep<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
     model: &M,
     t: f64,
@@ -141,22 +145,9 @@ fn substep<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usi
     h: f64,
     mode: &Mode<C>,
 ) -> Result<([f64; N], [f64; N])> {
-    let acc = |t: f64, q: &[f64; N], v: &[f64; N]| -> Result<[f64; N]> {
+    let (mut qn, mut vn) = rk4_step(t, q, v, h, |t, q, v| {
         Ok(accelerations_in_mode(model, t, q, v, mode)?.accelerations)
-    };
-    let half = 0.5 * h;
-    let a1 = acc(t, q, v)?;
-    let (q2, v2) = (axpy(q, half, v), axpy(v, half, &a1));
-    let a2 = acc(t + half, &q2, &v2)?;
-    let (q3, v3) = (axpy(q, half, &v2), axpy(v, half, &a2));
-    let a3 = acc(t + half, &q3, &v3)?;
-    let (q4, v4) = (axpy(q, h, &v3), axpy(v, h, &a3));
-    let a4 = acc(t + h, &q4, &v4)?;
-    let w = h / 6.0;
-    let mut qn: [f64; N] =
-        std::array::from_fn(|i| q[i] + w * (v[i] + 2.0 * (v2[i] + v3[i]) + v4[i]));
-    let mut vn: [f64; N] =
-        std::array::from_fn(|i| v[i] + w * (a1[i] + 2.0 * (a2[i] + a3[i]) + a4[i]));
+    })?;
     project(model, t + h, &mut qn, &mut vn, mode)?;
     Ok((qn, vn))
 }
@@ -591,4 +582,147 @@ fn impulse<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usi
         }
     }
     Ok(())
+}
+
+/// [`ContactRk4`] as a solver of the common stepping interface ([`Stepper`]): holds the model,
+/// the state, the step h and the stepper (its mode and the list of mode changes), with a cubic
+/// Hermite dense output over each step (from q̈ in the step's final mode at both ends: across a
+/// mode change inside the step it is only a rough interpolant) and [`Stats`].
+///
+/// ```
+/// use lagrange_core::constraints::{ConstraintKind, ContactOptions, ContactRk4, ContactSolver, Constraints};
+/// use lagrange_core::integrate::{Stepper, StopReason};
+/// use lagrange_core::{vec2, Model, Scalar, State};
+///
+/// /// A unit mass falling onto the floor y ≥ 0.
+/// struct Ball;
+/// impl Model<1, 1> for Ball {
+///     type Coords = [f64; 1];
+///     const RHEONOMIC: bool = false;
+///     const HAS_POTENTIAL: bool = true;
+///     const HAS_FORCES: bool = false;
+///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+///     fn masses(&self) -> [f64; 1] { [1.0] }
+///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] { [q[0]] }
+///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D { x[0] * 9.81 }
+/// }
+/// impl Constraints<1, 1, 1> for Ball {
+///     const NAMES: [&'static str; 1] = ["floor"];
+///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
+///     fn position_constraints<D: Scalar>(&self, _t: D, q: &[D; 1], _x: &[D; 1]) -> [D; 1] { [q[0]] }
+/// }
+///
+/// let start = State::new(0.0, [1.0], [0.0]);
+/// let mut solver = ContactSolver::new(&Ball, &start, 1e-2, ContactOptions::default())?;
+/// let outcome = solver.integrate(1.0, &mut [], |_| {})?;
+/// assert_eq!(outcome.reason, StopReason::Reached);
+/// // It lands at √(2/g) = 0.4515 s (a plastic impact) and stays on the floor.
+/// let landing = solver.contact().events[0].t;
+/// assert!((landing - (2.0f64 / 9.81).sqrt()).abs() < 1e-10);
+/// assert!(solver.state().q[0].abs() < 1e-12 && outcome.stats.accepted == 100);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+pub struct ContactSolver<
+    'm,
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+> {
+    model: &'m M,
+    contact: ContactRk4<C>,
+    h: f64,
+    state: State<M::Coords>,
+    a: [f64; N],
+    dense: DenseOutput<N>,
+    stats: Stats,
+}
+
+impl<'m, M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>
+    ContactSolver<'m, M, N, K, C>
+{
+    /// A solver at `state` with step `h`: the errors of [`ContactRk4::new`] and an invalid h.
+    pub fn new(
+        model: &'m M,
+        state: &State<M::Coords>,
+        h: f64,
+        options: ContactOptions,
+    ) -> Result<Self> {
+        check_step_at(state.t, h)?;
+        let contact = ContactRk4::new(model, state, options)?;
+        let (q, v) = (state.q.to_array(), state.v.to_array());
+        let a = accelerations_in_mode(model, state.t, &q, &v, &contact.mode)?.accelerations;
+        Ok(ContactSolver {
+            model,
+            contact,
+            h,
+            state: *state,
+            a,
+            dense: DenseOutput::constant(state.t, &q, &v),
+            stats: Stats {
+                evaluations: 1,
+                ..Stats::default()
+            },
+        })
+    }
+
+    /// The contact stepper: its mode and the mode changes so far.
+    pub fn contact(&self) -> &ContactRk4<C> {
+        &self.contact
+    }
+}
+
+impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> Stepper<M::Coords, N>
+    for ContactSolver<'_, M, N, K, C>
+{
+    fn name(&self) -> &'static str {
+        "ContactRk4"
+    }
+    fn t(&self) -> f64 {
+        self.state.t
+    }
+    fn state(&self) -> State<M::Coords> {
+        self.state
+    }
+    fn dense(&self) -> &DenseOutput<N> {
+        &self.dense
+    }
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+    fn count_event_evaluations(&mut self, n: usize) {
+        self.stats.event_evaluations += n;
+    }
+
+    /// One step of h (or of t_limit − t, when that is shorter or only slightly longer), with
+    /// the mode changes inside it located ([`ContactRk4::step`]).
+    fn step(&mut self, t_limit: f64) -> Result<()> {
+        let t0 = self.state.t;
+        if !(t_limit > t0) || !t_limit.is_finite() {
+            return Err(Error::InvalidEndTime {
+                t: t0,
+                t_end: t_limit,
+            });
+        }
+        let h = if t0 + 1.01 * self.h >= t_limit {
+            t_limit - t0
+        } else {
+            self.h
+        };
+        let mut state = self.state;
+        let events = self.contact.events.len();
+        // Leaves the mode and the event list unchanged on error.
+        self.contact.step(self.model, &mut state, h)?;
+        let (q1, v1) = (state.q.to_array(), state.v.to_array());
+        let a1 = accelerations_in_mode(self.model, state.t, &q1, &v1, &self.contact.mode)
+            .map(|a| a.accelerations)
+            .unwrap_or([f64::NAN; N]);
+        let (q0, v0) = (self.state.q.to_array(), self.state.v.to_array());
+        self.dense = DenseOutput::hermite(t0, h, (&q0, &v0, &self.a), (&q1, &v1, &a1));
+        // Four evaluations per RK4 sub-step; one more for the dense output.
+        self.stats.evaluations += 4 * (self.contact.events.len() - events + 1) + 1;
+        self.stats.accepted += 1;
+        (self.state, self.a) = (state, a1);
+        Ok(())
+    }
 }

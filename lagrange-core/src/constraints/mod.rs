@@ -186,7 +186,7 @@
 mod contact;
 mod solve;
 
-pub use contact::{ContactOptions, ContactRk4, ModeChange};
+pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChange};
 pub use solve::{
     accelerations, accelerations_in_mode, check_consistent, check_velocity_rows_affine,
     consistent_state, consistent_state_holding, constraint_forces, constraint_rows, infer_mode,

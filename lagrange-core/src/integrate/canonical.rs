@@ -16,7 +16,8 @@
 //! dual pass over q at fixed q̇, plus 𝓕 — the potential and the non-conservative part need not be
 //! separated ([`momentum_rate`]).
 
-use super::newton::{jacobian_rows, max_norm, Convergence, MAX_NEWTON_ITERATIONS};
+use super::newton::{jacobian_rows, max_norm, newton, NewtonEnd, MAX_NEWTON_ITERATIONS};
+use super::Stats;
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::linalg::lu_solve;
@@ -73,6 +74,7 @@ pub fn canonical_field<M: Mechanism<N>, S: Scalar, const N: usize>(
 
 /// [`canonical_field`] at a real point with its exact Jacobians, from two passes with gradient dual
 /// numbers (seeded on q, then on v; ∂T/∂q inside ṗ nests them: exact second derivatives of T).
+#[derive(Clone, Copy, Debug)]
 pub struct FieldJacobians<const N: usize> {
     /// p = ∂L/∂q̇.
     pub p: SVector<f64, N>,
@@ -125,18 +127,18 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
     q: &[f64; N],
     p: &[f64; N],
     guess: &[f64; N],
+    stats: &mut Stats,
 ) -> Result<([f64; N], usize)> {
     let td = DualSVec::<f64, N>::from_re(t);
     let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
     let mut v = SVector::<f64, N>::from(*guess);
-    let mut conv = Convergence::new();
-    let mut residual_norm = f64::NAN;
-    for it in 1..=MAX_NEWTON_ITERATIONS {
+    let before = stats.newton_iterations;
+    let end = newton(&mut v, MAX_NEWTON_ITERATIONS, false, stats, |v| {
         let vd: [DualSVec<f64, N>; N] =
             std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
         let pv = mechanism.momenta_at(td, &qd, &vd);
         let r = SVector::<f64, N>::from_fn(|i, _| pv[i].re - p[i]);
-        residual_norm = max_norm(&r);
+        let residual_norm = max_norm(&r);
         if !residual_norm.is_finite() {
             // The momenta are not finite at (t, q, v): name the state.
             return Err(Error::NonFiniteDynamics {
@@ -144,7 +146,7 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
                 configuration: format!(
                     "{}, velocities ({})",
                     describe_configuration(&M::Coords::NAMES, q),
-                    describe_configuration(&M::Coords::NAMES, &v.into())
+                    describe_configuration(&M::Coords::NAMES, &(*v).into())
                 ),
             });
         }
@@ -164,14 +166,20 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
                 },
             });
         };
-        v -= delta;
-        if conv.converged(max_norm(&delta), max_norm(&v)) {
-            return Ok((v.into(), it));
-        }
+        Ok((delta, residual_norm))
+    })?;
+    // Every iteration evaluated the momenta with their Jacobian ∂p/∂v = M (counted as an
+    // evaluation: it is the mass matrix, not a Jacobian of the step's equations).
+    stats.evaluations += stats.newton_iterations - before;
+    match end {
+        NewtonEnd::Converged { iterations, .. } => Ok((v.into(), iterations)),
+        NewtonEnd::Slow {
+            iterations,
+            residual,
+        } => Err(Error::NewtonDiverged {
+            t,
+            iterations,
+            residual,
+        }),
     }
-    Err(Error::NewtonDiverged {
-        t,
-        iterations: MAX_NEWTON_ITERATIONS,
-        residual: residual_norm,
-    })
 }

@@ -33,6 +33,9 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
+use super::solver::{check_step, Stepper};
+pub use super::solver::{Direction, Event, EventHit, Observation, Outcome, Stats, StopReason};
+use super::Integrator;
 use crate::error::{Error, Result};
 use crate::mechanism::{diagnose, Mechanism};
 use crate::model::{check_state, Coordinates, State};
@@ -121,39 +124,78 @@ impl Default for Dopri5 {
     }
 }
 
-/// What an integration cost.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Dopri5Stats {
-    /// Accepted steps.
-    pub accepted: usize,
-    /// Rejected steps.
-    pub rejected: usize,
-    /// Evaluations of the accelerations q̈ (right-hand side).
-    pub evaluations: usize,
-    /// Evaluations of event functions (including root finding).
-    pub event_evaluations: usize,
-}
+/// What a Dormand–Prince integration cost (the statistics every solver keeps).
+pub type Dopri5Stats = Stats;
 
-/// The dense output of one step: a 4th-order polynomial in time for q and v over [t₀, t₀ + h].
+/// The result of [`Dopri5::integrate`].
+pub type Dopri5Outcome<C> = Outcome<C>;
+
+/// The dense output of one step: a polynomial in time for q and v over [t₀, t₀ + h], in the form
+/// of Hairer's CONTD5, y(t₀ + θh) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))): of order 4 for
+/// Dopri5, and the cubic Hermite interpolant (r₅ = 0) of the end values and derivatives for the
+/// other methods.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DenseOutput<const N: usize> {
     t0: f64,
     h: f64,
-    q: [[f64; N]; 5],
-    v: [[f64; N]; 5],
+    q: [[f64; N]; 8],
+    v: [[f64; N]; 8],
+    /// Coefficients in use: 5 (Dopri5, Hermite) or 8 (Dop853).
+    terms: usize,
 }
 
 impl<const N: usize> DenseOutput<N> {
-    fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
+    pub(crate) fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
         let mut d = DenseOutput {
             t0: t,
             h: 0.0,
-            q: [[0.0; N]; 5],
-            v: [[0.0; N]; 5],
+            q: [[0.0; N]; 8],
+            v: [[0.0; N]; 8],
+            terms: 5,
         };
         d.q[0] = *q;
         d.v[0] = *v;
         d
+    }
+
+    /// The cubic Hermite interpolant over [t₀, t₀ + h] of (q, v) with derivatives (v, q̈) at both
+    /// ends (`start` and `end` are (q, v, q̈)): order 3 (HNW I §II.6, (6.7)).
+    pub(crate) fn hermite(
+        t0: f64,
+        h: f64,
+        start: (&[f64; N], &[f64; N], &[f64; N]),
+        end: (&[f64; N], &[f64; N], &[f64; N]),
+    ) -> Self {
+        let make = |y0: &[f64; N], y1: &[f64; N], d0: &[f64; N], d1: &[f64; N]| {
+            let mut r = [[0.0; N]; 8];
+            for i in 0..N {
+                let diff = y1[i] - y0[i];
+                let bspl = h * d0[i] - diff;
+                r[0][i] = y0[i];
+                r[1][i] = diff;
+                r[2][i] = bspl;
+                r[3][i] = diff - h * d1[i] - bspl;
+            }
+            r
+        };
+        DenseOutput {
+            t0,
+            h,
+            q: make(start.0, end.0, start.1, end.1),
+            v: make(start.1, end.1, start.2, end.2),
+            terms: 5,
+        }
+    }
+
+    /// Dop853's continuous extension of order 7 (Hairer's CONTD8): r₁…r₈ for q and for v.
+    pub(crate) fn from_coefficients(t0: f64, h: f64, q: [[f64; N]; 8], v: [[f64; N]; 8]) -> Self {
+        DenseOutput {
+            t0,
+            h,
+            q,
+            v,
+            terms: 8,
+        }
     }
 
     /// Start of the step.
@@ -173,9 +215,16 @@ impl<const N: usize> DenseOutput<N> {
         }
         let th = (t - self.t0) / self.h;
         let th1 = 1.0 - th;
-        let f = |r: &[[f64; N]; 5]| -> [f64; N] {
+        let terms = self.terms;
+        let f = |r: &[[f64; N]; 8]| -> [f64; N] {
             std::array::from_fn(|i| {
-                r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * r[4][i])))
+                // r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ)(r₅ + θ(r₆ + (1−θ)(r₇ + θ r₈)))))), from the
+                // innermost term out, alternating the factors θ and 1 − θ.
+                let mut acc = 0.0;
+                for k in (1..terms).rev() {
+                    acc = (r[k][i] + acc) * if k % 2 == 1 { th } else { th1 };
+                }
+                r[0][i] + acc
             })
         };
         (f(&self.q), f(&self.v))
@@ -237,110 +286,6 @@ impl<const N: usize> DenseOutput<N> {
     }
 }
 
-/// Which sign changes of an event function count.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Direction {
-    /// g goes from negative to non-negative.
-    Rising,
-    /// g goes from positive to non-positive.
-    Falling,
-    /// Either.
-    #[default]
-    Either,
-}
-
-/// An event function g(state) whose sign changes are located during [`Dopri5::integrate`].
-pub struct Event<'a, C> {
-    g: &'a dyn Fn(&State<C>) -> f64,
-    direction: Direction,
-    terminal: bool,
-    g_prev: f64,
-    pending: Option<(f64, bool)>,
-}
-
-impl<'a, C> Event<'a, C> {
-    /// An event on every sign change of g, not terminal.
-    pub fn new(g: &'a dyn Fn(&State<C>) -> f64) -> Self {
-        Event {
-            g,
-            direction: Direction::Either,
-            terminal: false,
-            g_prev: f64::NAN,
-            pending: None,
-        }
-    }
-
-    /// Only sign changes in this direction count.
-    pub fn direction(mut self, direction: Direction) -> Self {
-        self.direction = direction;
-        self
-    }
-
-    /// The integration stops at this event.
-    pub fn terminal(mut self) -> Self {
-        self.terminal = true;
-        self
-    }
-
-    /// Whether the change from g_prev to g_new is a crossing to report, and its direction (rising?).
-    fn crossing(&self, g_new: f64) -> Option<bool> {
-        let g0 = self.g_prev;
-        let rising = g0 < 0.0 && g_new >= 0.0;
-        let falling = g0 > 0.0 && g_new <= 0.0;
-        match self.direction {
-            Direction::Rising if rising => Some(true),
-            Direction::Falling if falling => Some(false),
-            Direction::Either if rising || falling => Some(rising),
-            _ => None,
-        }
-    }
-}
-
-/// An event located during an integration.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct EventHit<C> {
-    /// Index of the event in the slice passed to [`Dopri5::integrate`].
-    pub index: usize,
-    /// The state at the event (from the dense output).
-    pub state: State<C>,
-    /// Whether g was rising (negative to non-negative).
-    pub rising: bool,
-    /// Whether the event stopped the integration.
-    pub terminal: bool,
-}
-
-/// Why [`Dopri5::integrate`] returned.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum StopReason<C> {
-    /// t_end was reached.
-    Reached,
-    /// A terminal event occurred; the state is the state at the event.
-    Event(EventHit<C>),
-    /// `max_steps` attempts were made before reaching t_end; the state is the last accepted one.
-    MaxSteps,
-}
-
-/// The result of [`Dopri5::integrate`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Dopri5Outcome<C> {
-    /// Cost.
-    pub stats: Dopri5Stats,
-    /// Why the integration ended.
-    pub reason: StopReason<C>,
-}
-
-/// What [`Dopri5::integrate`] shows its observer.
-#[derive(Debug)]
-pub enum Observation<'a, C, const N: usize> {
-    /// An accepted step: the state at its end and the dense output over it.
-    Step {
-        state: &'a State<C>,
-        dense: &'a DenseOutput<N>,
-    },
-    /// A located event (reported before the step it lies in).
-    Event(&'a EventHit<C>),
-}
-
 impl Dopri5 {
     /// The default settings with these tolerances.
     pub fn new(rtol: f64, atol: f64) -> Self {
@@ -355,9 +300,15 @@ impl Dopri5 {
     /// factors in their ranges, `max_steps` at least 1 ([`Error::InvalidSetting`] naming the
     /// setting), the initial step positive and finite ([`Error::InvalidStep`]).
     pub fn validate(&self) -> Result<()> {
+        self.validate_as("Dopri5")
+    }
+
+    /// [`validate`](Self::validate), naming `method` in the errors (the settings are shared with
+    /// [`Dop853`](super::Dop853)).
+    pub(crate) fn validate_as(&self, method: &'static str) -> Result<()> {
         let invalid = |setting, value, requirement| {
             Err(Error::InvalidSetting {
-                method: "Dopri5",
+                method,
                 setting,
                 value,
                 requirement,
@@ -408,7 +359,7 @@ impl Dopri5 {
             return invalid("max_steps", 0.0, "at least 1");
         }
         if let Some(h) = self.h_init {
-            crate::mechanism::check_step(h)?;
+            check_step(h)?;
         }
         Ok(())
     }
@@ -423,96 +374,161 @@ impl Dopri5 {
         state: &mut State<M::Coords>,
         t_end: f64,
         events: &mut [Event<'_, M::Coords>],
-        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
+        observer: impl FnMut(Observation<'_, M::Coords, N>),
     ) -> Result<Dopri5Outcome<M::Coords>> {
         if !(t_end.is_finite() && t_end >= state.t) {
             return Err(Error::InvalidEndTime { t: state.t, t_end });
         }
         let mut stepper = Dopri5Stepper::new(mechanism, *self, state)?;
-        for ev in events.iter_mut() {
-            ev.g_prev = (ev.g)(state);
-            ev.pending = None;
-            stepper.stats.event_evaluations += 1;
-        }
-        let mut reason = StopReason::Reached;
-        while stepper.t < t_end {
-            if stepper.stats.accepted + stepper.stats.rejected >= self.max_steps {
-                reason = StopReason::MaxSteps;
-                break;
-            }
-            stepper.step(t_end)?;
-            let current = stepper.state();
-            // Locate this step's crossings.
-            let mut t_stop = f64::INFINITY;
-            let mut any = false;
-            for ev in events.iter_mut() {
-                let g_new = (ev.g)(&current);
-                stepper.stats.event_evaluations += 1;
-                ev.pending = None;
-                if let Some(rising) = ev.crossing(g_new) {
-                    let g = ev.g;
-                    let (root, n) = stepper.dense.find_root(
-                        |t, q, v| {
-                            g(&State::new(
-                                t,
-                                M::Coords::from_array(*q),
-                                M::Coords::from_array(*v),
-                            ))
-                        },
-                        ev.g_prev,
-                        g_new,
-                    );
-                    stepper.stats.event_evaluations += n;
-                    ev.pending = Some((root, rising));
-                    any = true;
-                    if ev.terminal {
-                        t_stop = t_stop.min(root);
-                    }
-                }
-                ev.g_prev = g_new;
-            }
-            // Report them in time order, up to the first terminal one.
-            while any && events.iter().any(|e| e.pending.is_some()) {
-                let mut best: Option<(usize, f64, bool)> = None;
-                for (i, ev) in events.iter().enumerate() {
-                    if let Some((root, rising)) = ev.pending {
-                        if root <= t_stop && best.is_none_or(|(_, t, _)| root < t) {
-                            best = Some((i, root, rising));
-                        }
-                    }
-                }
-                let Some((index, root, rising)) = best else {
-                    break;
-                };
-                events[index].pending = None;
-                let (q, v) = stepper.dense.eval(root);
-                let hit = EventHit {
-                    index,
-                    state: State::new(root, M::Coords::from_array(q), M::Coords::from_array(v)),
-                    rising,
-                    terminal: events[index].terminal,
-                };
-                observer(Observation::Event(&hit));
-                if hit.terminal {
-                    check_state(&M::Coords::NAMES, root, &q, &v)?;
-                    *state = hit.state;
-                    return Ok(Dopri5Outcome {
-                        stats: stepper.stats,
-                        reason: StopReason::Event(hit),
-                    });
-                }
-            }
-            observer(Observation::Step {
-                state: &current,
-                dense: &stepper.dense,
-            });
-        }
-        *state = stepper.state();
-        Ok(Dopri5Outcome {
-            stats: stepper.stats,
-            reason,
-        })
+        let outcome = stepper.integrate(t_end, events, observer)?;
+        *state = match outcome.reason {
+            StopReason::Event(hit) => hit.state,
+            _ => stepper.state(),
+        };
+        Ok(outcome)
     }
+}
+
+/// The starting step of an embedded pair of order `order` (HNW I §II.4, "Starting step size";
+/// Hairer's HINIT): one extra evaluation of q̈.
+pub(crate) fn initial_step<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    st: &Dopri5,
+    (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    order: i32,
+    stats: &mut Stats,
+) -> f64 {
+    let (mut dnf, mut dny) = (0.0, 0.0);
+    for i in 0..N {
+        let sq = st.atol + st.rtol * q[i].abs();
+        let sv = st.atol + st.rtol * v[i].abs();
+        dnf += (v[i] / sq).powi(2) + (a[i] / sv).powi(2);
+        dny += (q[i] / sq).powi(2) + (v[i] / sv).powi(2);
+    }
+    let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
+        1e-6
+    } else {
+        (dny / dnf).sqrt() * 0.01
+    };
+    h = h.min(st.h_max);
+    let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * v[i]);
+    let v1: [f64; N] = std::array::from_fn(|i| v[i] + h * a[i]);
+    stats.evaluations += 1;
+    let Ok(a1) = mechanism.accelerations_at(t + h, &q1, &v1) else {
+        return h;
+    };
+    let mut der2 = 0.0;
+    for i in 0..N {
+        let sq = st.atol + st.rtol * q[i].abs();
+        let sv = st.atol + st.rtol * v[i].abs();
+        der2 += ((v1[i] - v[i]) / sq).powi(2) + ((a1[i] - a[i]) / sv).powi(2);
+    }
+    let der2 = der2.sqrt() / h;
+    let der12 = der2.max(dnf.sqrt());
+    let h1 = if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(1.0 / order as f64)
+    };
+    let h = (100.0 * h).min(h1).min(st.h_max);
+    if h.is_finite() && h > 0.0 {
+        h
+    } else {
+        1e-6
+    }
+}
+
+/// The step size and the previous error of an embedded pair's controller.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Controller {
+    pub h: f64,
+    pub fac_old: f64,
+}
+
+/// The step loop and PI step-size controller shared by the embedded pairs (Dopri5, Dop853):
+/// attempts steps of the controller's size (the last one shortened to land on `t_limit`, and
+/// steps within 1 % of it stretched to it), rejecting and shrinking until `attempt` reports an
+/// error norm ≤ 1, and returns the accepted trial, its h and its end time. The controller is
+/// h_new = h·min(1/fac_min, max(1/fac_max, safety⁻¹·err^(p − β·w)·err_old^(−β)))⁻¹ with
+/// (p, w) = `exponents` = (1/5, 0.75) for Dopri5 and (1/8, 0.2) for Dop853 (HNW I §II.4;
+/// Hairer & Wanner, *Solving ODEs II*, §IV.2; the forms of Hairer's DOPRI5 and DOP853); after a
+/// rejection the step does not grow. A failing attempt (singular mass matrix, non-finite
+/// dynamics) counts as a rejection with the step cut by `fac_min`; when the step can no longer
+/// shrink (0.1·h below round-off of t) the last failure is returned
+/// ([`Error::StepSizeUnderflow`] if steps were rejected only for accuracy).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn adaptive_step<T>(
+    method: &'static str,
+    st: &Dopri5,
+    (exponent, weight): (f64, f64),
+    t: f64,
+    t_limit: f64,
+    control: &mut Controller,
+    stats: &mut Stats,
+    mut attempt: impl FnMut(f64, &mut Stats) -> Result<(T, f64)>,
+) -> Result<(T, f64, f64)> {
+    if !(t_limit > t) || !t_limit.is_finite() {
+        return Err(Error::InvalidEndTime { t, t_end: t_limit });
+    }
+    let expo1 = exponent - st.beta * weight;
+    let mut last_rejected = false;
+    let mut last_error: Option<Error> = None;
+    loop {
+        let mut h = control.h.min(st.h_max);
+        let last = t + 1.01 * h >= t_limit;
+        if last {
+            h = t_limit - t;
+        }
+        if !(t + 0.1 * h > t) {
+            return Err(last_error.unwrap_or(Error::StepSizeUnderflow { method, t, h }));
+        }
+        match attempt(h, stats) {
+            Ok((trial, err)) => {
+                let fac11 = err.powf(expo1);
+                if err <= 1.0 {
+                    let fac = (fac11 / control.fac_old.powf(st.beta) / st.safety)
+                        .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
+                    let mut h_new = h / fac;
+                    if last_rejected {
+                        h_new = h_new.min(h);
+                    }
+                    control.fac_old = err.max(1e-4);
+                    control.h = h_new;
+                    stats.accepted += 1;
+                    let t_new = if last { t_limit } else { t + h };
+                    return Ok((trial, h, t_new));
+                }
+                control.h = h / (1.0 / st.fac_min).min(fac11 / st.safety);
+            }
+            Err(e) => {
+                control.h = h * st.fac_min;
+                last_error = Some(e);
+            }
+        }
+        last_rejected = true;
+        stats.rejected += 1;
+    }
+}
+
+/// Projects an accepted step's end onto the constraints (a no-op without any); if that moved it,
+/// checks it and re-evaluates q̈ there. Returns (q, v, q̈) at the projected state.
+#[allow(clippy::type_complexity)]
+pub(crate) fn project_accepted<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    (q1, v1, a1): ([f64; N], [f64; N], [f64; N]),
+    stats: &mut Stats,
+) -> Result<([f64; N], [f64; N], [f64; N])> {
+    let (mut qp, mut vp, mut ap) = (q1, v1, a1);
+    mechanism.project(t, &mut qp, &mut vp)?;
+    if qp != q1 || vp != v1 {
+        check_state(&M::Coords::NAMES, t, &qp, &vp)?;
+        stats.evaluations += 1;
+        ap = mechanism
+            .accelerations_at(t, &qp, &vp)
+            .map_err(|e| diagnose(mechanism, t, &qp, &vp, e))?;
+    }
+    Ok((qp, vp, ap))
 }
 
 /// Step-by-step use of [`Dopri5`]: holds the current state, the proposed next step and the dense
@@ -545,7 +561,7 @@ pub struct Dopri5Stepper<'m, M: Mechanism<N>, const N: usize> {
 /// e/sc of the error norm, with 0/0 = 0 (an exact component with a zero scale, possible when
 /// atol = 0) and e/0 = ∞ otherwise.
 #[inline(always)]
-fn ratio(e: f64, scale: f64) -> f64 {
+pub(crate) fn ratio(e: f64, scale: f64) -> f64 {
     if e == 0.0 {
         0.0
     } else {
@@ -554,7 +570,7 @@ fn ratio(e: f64, scale: f64) -> f64 {
 }
 
 #[inline(always)]
-fn combo<const N: usize, const S: usize>(
+pub(crate) fn combo<const N: usize, const S: usize>(
     y: &[f64; N],
     h: f64,
     coef: [f64; S],
@@ -576,9 +592,15 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         settings.validate()?;
         let (q, v) = mechanism.check(state)?;
         mechanism.check_constraints(state.t, &q, &v)?;
+        Self::start(mechanism, settings, state.t, q, v)
+    }
+
+    /// Starts at (t, q, v), already checked.
+    fn start(mechanism: &'m M, settings: Dopri5, t: f64, q: [f64; N], v: [f64; N]) -> Result<Self> {
         let a = mechanism
-            .accelerations_at(state.t, &q, &v)
-            .map_err(|e| diagnose(mechanism, state.t, &q, &v, e))?;
+            .accelerations_at(t, &q, &v)
+            .map_err(|e| diagnose(mechanism, t, &q, &v, e))?;
+        let state = State::<M::Coords>::new(t, M::Coords::from_array(q), M::Coords::from_array(v));
         let mut s = Dopri5Stepper {
             mechanism,
             settings,
@@ -603,45 +625,13 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
 
     /// HNW I §II.4, "Starting step size" (Hairer's HINIT, order 5).
     fn initial_step(&mut self) -> f64 {
-        let st = &self.settings;
-        let (mut dnf, mut dny) = (0.0, 0.0);
-        for i in 0..N {
-            let sq = st.atol + st.rtol * self.q[i].abs();
-            let sv = st.atol + st.rtol * self.v[i].abs();
-            dnf += (self.v[i] / sq).powi(2) + (self.a[i] / sv).powi(2);
-            dny += (self.q[i] / sq).powi(2) + (self.v[i] / sv).powi(2);
-        }
-        let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
-            1e-6
-        } else {
-            (dny / dnf).sqrt() * 0.01
-        };
-        h = h.min(st.h_max);
-        let q1: [f64; N] = std::array::from_fn(|i| self.q[i] + h * self.v[i]);
-        let v1: [f64; N] = std::array::from_fn(|i| self.v[i] + h * self.a[i]);
-        self.stats.evaluations += 1;
-        let Ok(a1) = self.mechanism.accelerations_at(self.t + h, &q1, &v1) else {
-            return h;
-        };
-        let mut der2 = 0.0;
-        for i in 0..N {
-            let sq = st.atol + st.rtol * self.q[i].abs();
-            let sv = st.atol + st.rtol * self.v[i].abs();
-            der2 += ((v1[i] - self.v[i]) / sq).powi(2) + ((a1[i] - self.a[i]) / sv).powi(2);
-        }
-        let der2 = der2.sqrt() / h;
-        let der12 = der2.max(dnf.sqrt());
-        let h1 = if der12 <= 1e-15 {
-            (h * 1e-3).max(1e-6)
-        } else {
-            (0.01 / der12).powf(0.2)
-        };
-        let h = (100.0 * h).min(h1).min(st.h_max);
-        if h.is_finite() && h > 0.0 {
-            h
-        } else {
-            1e-6
-        }
+        initial_step(
+            self.mechanism,
+            &self.settings,
+            (self.t, &self.q, &self.v, &self.a),
+            5,
+            &mut self.stats,
+        )
     }
 
     /// Current time.
@@ -684,86 +674,50 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
     /// the last failure is returned ([`Error::StepSizeUnderflow`] if steps were rejected only for
     /// accuracy). On error the accepted state is unchanged.
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
-        if !(t_limit > self.t) || !t_limit.is_finite() {
-            return Err(Error::InvalidEndTime {
-                t: self.t,
-                t_end: t_limit,
-            });
-        }
-        let st = self.settings;
-        let expo1 = 0.2 - st.beta * 0.75;
-        let mut last_rejected = false;
-        let mut last_error: Option<Error> = None;
-        loop {
-            let mut h = self.h.min(st.h_max);
-            let last = self.t + 1.01 * h >= t_limit;
-            if last {
-                h = t_limit - self.t;
-            }
-            if !(self.t + 0.1 * h > self.t) {
-                return Err(last_error.unwrap_or(Error::StepSizeUnderflow {
-                    method: "Dopri5",
-                    t: self.t,
-                    h,
-                }));
-            }
-            match self.attempt(h) {
-                Ok((q1, v1, a1, err, k)) => {
-                    let fac11 = err.powf(expo1);
-                    if err <= 1.0 {
-                        // Accepted. The dense output interpolates the step as computed; the state
-                        // is then projected onto the constraints (a no-op without any: then
-                        // nothing changes and nothing is re-evaluated). If the projection moved it,
-                        // the FSAL acceleration is re-evaluated at the projected state.
-                        let t_new = if last { t_limit } else { self.t + h };
-                        let (mut qp, mut vp, mut ap) = (q1, v1, a1);
-                        self.mechanism.project(t_new, &mut qp, &mut vp)?;
-                        if qp != q1 || vp != v1 {
-                            check_state(&M::Coords::NAMES, t_new, &qp, &vp)?;
-                            self.stats.evaluations += 1;
-                            ap = self
-                                .mechanism
-                                .accelerations_at(t_new, &qp, &vp)
-                                .map_err(|e| diagnose(self.mechanism, t_new, &qp, &vp, e))?;
-                        }
-                        let fac = (fac11 / self.fac_old.powf(st.beta) / st.safety)
-                            .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
-                        let mut h_new = h / fac;
-                        if last_rejected {
-                            h_new = h_new.min(h);
-                        }
-                        self.fac_old = err.max(1e-4);
-                        self.dense = self.build_dense(h, &q1, &v1, &a1, &k);
-                        self.t = t_new;
-                        self.q = qp;
-                        self.v = vp;
-                        self.a = ap;
-                        self.h = h_new;
-                        self.stats.accepted += 1;
-                        return Ok(());
-                    }
-                    self.h = h / (1.0 / st.fac_min).min(fac11 / st.safety);
-                }
-                Err(e) => {
-                    self.h = h * st.fac_min;
-                    last_error = Some(e);
-                }
-            }
-            last_rejected = true;
-            self.stats.rejected += 1;
-        }
+        let mut control = Controller {
+            h: self.h,
+            fac_old: self.fac_old,
+        };
+        let mut stats = self.stats;
+        let this = &*self;
+        let ((q1, v1, a1, k), h, t_new) = adaptive_step(
+            "Dopri5",
+            &self.settings,
+            (0.2, 0.75),
+            self.t,
+            t_limit,
+            &mut control,
+            &mut stats,
+            |h, stats| {
+                this.attempt(h, stats)
+                    .map(|(q1, v1, a1, err, k)| ((q1, v1, a1, k), err))
+            },
+        )?;
+        // Accepted. The dense output interpolates the step as computed; the state is then projected
+        // onto the constraints (a no-op without any: then nothing changes and nothing is
+        // re-evaluated). If the projection moved it, the FSAL acceleration is re-evaluated at the
+        // projected state.
+        let (qp, vp, ap) = project_accepted(self.mechanism, t_new, (q1, v1, a1), &mut stats)?;
+        self.dense = self.build_dense(h, &q1, &v1, &a1, &k);
+        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
+        (self.h, self.fac_old, self.stats) = (control.h, control.fac_old, stats);
+        Ok(())
     }
 
     /// One trial step of size h: (q₁, v₁, q̈₁, err, stage data for the dense output).
     #[allow(clippy::type_complexity)]
-    fn attempt(&mut self, h: f64) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
+    fn attempt(
+        &self,
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
         let m = self.mechanism;
         let (t, q, v) = (self.t, &self.q, &self.v);
         let (kq1, ka1) = (*v, self.a);
         // Stage i: position increments use the stage velocities kqⱼ, velocity increments the stage
         // accelerations kaⱼ.
         let (q2, v2) = (combo(q, h, [A21], [&kq1]), combo(v, h, [A21], [&ka1]));
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka2 = m
             .accelerations_at(t + C2 * h, &q2, &v2)
             .map_err(|e| diagnose(m, t + C2 * h, &q2, &v2, e))?;
@@ -772,7 +726,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             combo(q, h, [A31, A32], [&kq1, &kq2]),
             combo(v, h, [A31, A32], [&ka1, &ka2]),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka3 = m
             .accelerations_at(t + C3 * h, &q3, &v3)
             .map_err(|e| diagnose(m, t + C3 * h, &q3, &v3, e))?;
@@ -781,7 +735,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             combo(q, h, [A41, A42, A43], [&kq1, &kq2, &kq3]),
             combo(v, h, [A41, A42, A43], [&ka1, &ka2, &ka3]),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka4 = m
             .accelerations_at(t + C4 * h, &q4, &v4)
             .map_err(|e| diagnose(m, t + C4 * h, &q4, &v4, e))?;
@@ -790,7 +744,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             combo(q, h, [A51, A52, A53, A54], [&kq1, &kq2, &kq3, &kq4]),
             combo(v, h, [A51, A52, A53, A54], [&ka1, &ka2, &ka3, &ka4]),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka5 = m
             .accelerations_at(t + C5 * h, &q5, &v5)
             .map_err(|e| diagnose(m, t + C5 * h, &q5, &v5, e))?;
@@ -809,7 +763,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                 [&ka1, &ka2, &ka3, &ka4, &ka5],
             ),
         );
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka6 = m
             .accelerations_at(t + h, &q6, &v6)
             .map_err(|e| diagnose(m, t + h, &q6, &v6, e))?;
@@ -827,7 +781,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             [&ka1, &ka3, &ka4, &ka5, &ka6],
         );
         check_state(&M::Coords::NAMES, t + h, &q1, &v1)?;
-        self.stats.evaluations += 1;
+        stats.evaluations += 1;
         let ka7 = m
             .accelerations_at(t + h, &q1, &v1)
             .map_err(|e| diagnose(m, t + h, &q1, &v1, e))?;
@@ -899,8 +853,8 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
                     k1: &[f64; N],
                     k7: &[f64; N],
                     d: &[f64; N]|
-         -> [[f64; N]; 5] {
-            let mut r = [[0.0; N]; 5];
+         -> [[f64; N]; 8] {
+            let mut r = [[0.0; N]; 8];
             for i in 0..N {
                 let diff = y1[i] - y0[i];
                 let bspl = h * k1[i] - diff;
@@ -917,6 +871,90 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             h,
             q: make(&self.q, q1, kq1, kq7, dq),
             v: make(&self.v, v1, ka1, ka7, dv),
+            terms: 5,
         }
+    }
+}
+
+impl<M: Mechanism<N>, const N: usize> Stepper<M::Coords, N> for Dopri5Stepper<'_, M, N> {
+    fn name(&self) -> &'static str {
+        "Dopri5"
+    }
+    fn t(&self) -> f64 {
+        self.t
+    }
+    fn state(&self) -> State<M::Coords> {
+        Dopri5Stepper::state(self)
+    }
+    fn step(&mut self, t_limit: f64) -> Result<()> {
+        Dopri5Stepper::step(self, t_limit)
+    }
+    fn dense(&self) -> &DenseOutput<N> {
+        &self.dense
+    }
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+    fn count_event_evaluations(&mut self, n: usize) {
+        self.stats.event_evaluations += n;
+    }
+    fn max_steps(&self) -> usize {
+        self.settings.max_steps
+    }
+}
+
+/// `sys.step::<Dopri5>(&mut state, h)`: integrates over [t, t + h] with the
+/// [default](Dopri5::default) tolerances (rtol 1e-6, atol 1e-9), as many adaptive steps as that
+/// takes, landing exactly on t + h — the state advances by h, as with every fixed-step method.
+/// For other tolerances, dense output or events use [`Dopri5::integrate`] or a [`Dopri5Stepper`].
+///
+/// ```
+/// use lagrange_core::{Dopri5, Mechanism, State};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&s)?;
+/// Pendulum.step::<Dopri5>(&mut s, 0.5)?;
+/// assert_eq!(s.t, 0.5);
+/// // rtol 1e-6 per step: the energy moves by about that much of its size (4.3 J).
+/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-5);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+impl Integrator for Dopri5 {
+    const NAME: &'static str = "Dopri5";
+    type Memory<const N: usize> = ();
+
+    fn advance<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        _memory: &mut (),
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])> {
+        let mut stepper = Dopri5Stepper::start(mechanism, Dopri5::default(), t, *q, *v)?;
+        let t_end = t + h;
+        let result = (|| {
+            while stepper.t < t_end {
+                stepper.step(t_end)?;
+            }
+            Ok((stepper.q, stepper.v))
+        })();
+        *stats += stepper.stats;
+        result
     }
 }

@@ -1,13 +1,19 @@
-//! Integrators, generic over every generated mechanism.
+//! Integrators, generic over every generated mechanism, behind one stepping interface
+//! ([`solver`]: the [`Stepper`] trait — `step`, `integrate` to a stop time with an observer, dense
+//! output and events, [`Stats`] — implemented by [`FixedStepper`] for every [`Integrator`], by
+//! [`Dopri5Stepper`] and [`Dop853Stepper`], and by the contact solver
+//! [`ContactSolver`](crate::constraints::ContactSolver)); `sys.step::<I>(&mut s, h)` is one
+//! validated step.
 //!
 //! | method | order | steps | evaluations of q̈ per step | geometric properties |
 //! |---|---|---|---|---|
 //! | [`Rk4`] | 4 | fixed | 4 | none (energy drifts) |
-//! | [`Dopri5`] | 5(4) | adaptive, dense output, events | 6 (FSAL) | none |
-//! | [`ImplicitMidpoint`] | 2 | fixed | Newton: 1 evaluation of (p, ṗ) with Jacobians per iteration | symmetric; symplectic in (q, p) for any Lagrangian |
-//! | [`GaussLegendre2`] | 4 | fixed | Newton: 2 evaluations of (p, ṗ) with Jacobians per iteration | symmetric; symplectic in (q, p) for any Lagrangian |
+//! | [`Dopri5`] | 5(4) | adaptive, dense output (order 4), events | 6 (FSAL) | none |
+//! | [`Dop853`] | 8(5,3) | adaptive, dense output (order 7), events | 12 (FSAL), + 3 for the dense output | none |
+//! | [`ImplicitMidpoint`] | 2 | fixed | simplified Newton: 1 plain evaluation of (p, ṗ) per iteration; one Jacobian, reused across steps while the iteration contracts well | symmetric; symplectic in (q, p) for any Lagrangian |
+//! | [`GaussLegendre2`] | 4 | fixed | simplified Newton: 2 plain evaluations of (p, ṗ) per iteration; Jacobian reused as above | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations | symplectic in (q, p) for any Lagrangian; refuses constraints |
-//! | [`StormerVerlet`] | 2 | fixed | 3 (2 with M, 1 constraint test) | symplectic; refuses a non-constant mass matrix and constraints |
+//! | [`StormerVerlet`] | 2 | fixed | 2 with M (+ 1 constraint test when constraints are not declared) | symplectic; refuses a non-constant mass matrix and constraints |
 //!
 //! Implicit midpoint, Gauss–Legendre and the variational integrator integrate the canonical
 //! equations in (q, p), p = ∂L/∂q̇ (converting at both ends of a step, so the public state stays
@@ -24,22 +30,28 @@
 //! before a step ([`Mechanism::check_constraints`]) and project after it ([`Mechanism::project`]);
 //! the variational integrator and Störmer–Verlet, built on the unconstrained Lagrangian, refuse
 //! constrained mechanisms with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
+//! Whether a mechanism is constrained is its declaration, [`Mechanism::CONSTRAINTS`]; only for an
+//! implementation that does not declare it is it tested at each step.
 
 mod canonical;
+pub mod dop853;
 pub mod dopri5;
 pub mod implicit;
 mod newton;
-mod rk4;
+pub(crate) mod rk4;
+pub mod solver;
 pub mod variational;
 pub mod verlet;
 
-pub use dopri5::{
-    DenseOutput, Direction, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper, Event, EventHit,
-    Observation, StopReason,
-};
-pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats};
+pub use dop853::{Dop853, Dop853Stepper};
+pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper};
+pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
 pub use newton::{acceleration_jacobians, refuse_constrained, MAX_NEWTON_ITERATIONS};
 pub use rk4::Rk4;
+pub use solver::{
+    check_step, check_step_at, Direction, Event, EventHit, FixedStepper, Observation, Outcome,
+    Stats, Stepper, StopReason,
+};
 pub use variational::{momentum_rate, Variational, VariationalStepStats};
 pub use verlet::{StormerVerlet, MASS_MATRIX_VARIATION};
 
@@ -47,15 +59,40 @@ use crate::error::Result;
 use crate::mechanism::Mechanism;
 use crate::model::State;
 
-/// A one-step method: advances a state by h. Implementations validate the mechanism, the state
-/// and h, do not allocate, and leave the state unchanged on error.
+/// A one-step method, as a type: `sys.step::<Rk4>(&mut state, h)` ([`Mechanism::step`]) is one
+/// validated step with it, and [`FixedStepper`] makes a solver of it. Implementations do not
+/// allocate and leave the state unchanged on error.
 pub trait Integrator {
     /// The method's name, for reports and errors.
     const NAME: &'static str;
-    /// Advances `state` by `h`.
+    /// Working memory a solver keeps from one step to the next: the implicit methods' factorised
+    /// Newton matrix ([`NewtonMemory`]), nothing (`()`) for the others.
+    type Memory<const N: usize>: Default + Copy;
+
+    /// One step of h from (t, q, q̇) on raw arrays, without validation or projection, adding its
+    /// cost to `stats`: (q, q̇) at t + h.
+    fn advance<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        memory: &mut Self::Memory<N>,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])>;
+
+    /// Advances `state` by `h`: checks h, the parameters, the state and its constraints, takes one
+    /// step with fresh working memory, projects onto the constraints and checks the result. On
+    /// error the state is unchanged.
     fn step<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
         state: &mut State<M::Coords>,
         h: f64,
-    ) -> Result<()>;
+    ) -> Result<()> {
+        let mut memory = Self::Memory::<N>::default();
+        let mut stats = Stats::default();
+        solver::validated_step(mechanism, state, h, |t, q, v| {
+            Self::advance(mechanism, &mut memory, t, q, v, h, &mut stats)
+        })
+    }
 }

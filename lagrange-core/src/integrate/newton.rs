@@ -1,5 +1,9 @@
-//! Shared pieces of the implicit methods: exact Jacobians of the accelerations by dual numbers and
-//! the convergence test of the Newton iterations.
+//! Shared pieces of the implicit methods: exact Jacobians of the accelerations by dual numbers,
+//! the one Newton loop with its convergence test, and the block LU factorisation the simplified
+//! Newton iteration reuses.
+
+// `!(a < b)` comparisons are deliberate (they also catch NaN).
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::error::Result;
 use crate::mechanism::Mechanism;
@@ -53,30 +57,105 @@ pub fn max_norm<const N: usize>(x: &SVector<f64, N>) -> f64 {
     x.iter().fold(0.0f64, |m, v| m.max(v.abs()))
 }
 
-/// Convergence test of a Newton iteration on its increments. Converged when the increment is at
-/// the level of round-off of the unknowns (≤ 4ε·scale), or when it has become small (≤ 1e-10·scale)
-/// and stopped shrinking (no longer decreasing by half: quadratic convergence has reached the
-/// round-off floor of the residual evaluation, so further iterations only add noise).
-#[derive(Debug)]
-pub struct Convergence {
-    previous: f64,
+/// The unknowns of a Newton iteration: a vector, or the S stage vectors of a collocation method.
+pub(crate) trait Unknowns: Copy {
+    /// x ← x − δ.
+    fn subtract(&mut self, delta: &Self);
+    /// ‖x‖∞.
+    fn max_norm(&self) -> f64;
 }
 
-impl Convergence {
-    pub fn new() -> Self {
-        Convergence {
-            previous: f64::INFINITY,
+impl<const N: usize> Unknowns for SVector<f64, N> {
+    fn subtract(&mut self, delta: &Self) {
+        *self -= delta;
+    }
+    fn max_norm(&self) -> f64 {
+        max_norm(self)
+    }
+}
+
+impl<const N: usize, const S: usize> Unknowns for [SVector<f64, N>; S] {
+    fn subtract(&mut self, delta: &Self) {
+        for (x, d) in self.iter_mut().zip(delta) {
+            *x -= d;
         }
     }
-
-    /// `increment` and `scale` are ∞-norms of the Newton increment and of the unknowns.
-    pub fn converged(&mut self, increment: f64, scale: f64) -> bool {
-        let s = scale.max(1.0);
-        let done = increment <= 4.0 * f64::EPSILON * s
-            || (increment <= 1e-10 * s && increment > 0.5 * self.previous);
-        self.previous = increment;
-        done
+    fn max_norm(&self) -> f64 {
+        self.iter().fold(0.0f64, |m, x| m.max(max_norm(x)))
     }
+}
+
+/// How a Newton iteration ended.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum NewtonEnd {
+    /// Converged: the iterations taken and the largest contraction factor θ = ‖δₖ‖/‖δₖ₋₁‖ seen
+    /// above the round-off floor (0 when it converged in one iteration).
+    Converged { iterations: usize, theta: f64 },
+    /// The increments stopped shrinking (θ ≥ 1) or the iteration limit was reached, with this
+    /// residual norm: the caller refreshes its Jacobian or reports
+    /// [`Error::NewtonDiverged`](crate::Error::NewtonDiverged).
+    Slow { iterations: usize, residual: f64 },
+}
+
+/// The one Newton loop of the implicit methods. `iteration(x)` evaluates the residual at x and
+/// returns the increment δ (the solution of the Newton system, with an exact Jacobian or a reused
+/// one) and the residual's norm; the loop applies x ← x − δ and tests convergence on the
+/// increments (Hairer & Wanner, *Solving ODEs II*, §IV.8, (8.10)–(8.13)), with θₖ = ‖δₖ‖/‖δₖ₋₁‖:
+///
+/// - converged when ‖δₖ‖ ≤ 4ε·s (s = max(1, ‖x‖)), when the estimated remaining error
+///   θₖ/(1 − θₖ)·‖δₖ‖ is below 4ε·s, or when ‖δₖ‖ ≤ 1e-10·s and θₖ > ½ (the increments have reached
+///   the round-off floor of the residual evaluation and only add noise): the methods are iterated
+///   to round-off, as their symmetry and symplecticity require;
+/// - slow when θₖ ≥ 1 above that floor (diverging, or a Jacobian too stale to contract) if
+///   `stop_when_slow` (a simplified Newton iteration, whose caller then refreshes the Jacobian; an
+///   exact Newton iteration may grow once before it converges quadratically), or after
+///   `max_iterations`.
+pub(crate) fn newton<U: Unknowns>(
+    x: &mut U,
+    max_iterations: usize,
+    stop_when_slow: bool,
+    stats: &mut super::Stats,
+    mut iteration: impl FnMut(&U) -> Result<(U, f64)>,
+) -> Result<NewtonEnd> {
+    let mut previous = f64::INFINITY;
+    let mut theta_max = 0.0f64;
+    let mut residual = f64::NAN;
+    for k in 1..=max_iterations {
+        stats.newton_iterations += 1;
+        let (delta, r) = iteration(x)?;
+        residual = r;
+        x.subtract(&delta);
+        let d = delta.max_norm();
+        let s = x.max_norm().max(1.0);
+        let theta = d / previous;
+        let floor = d <= 1e-10 * s;
+        if d <= 4.0 * f64::EPSILON * s
+            || (k > 1 && theta < 1.0 && theta / (1.0 - theta) * d <= 4.0 * f64::EPSILON * s)
+            || (floor && theta > 0.5)
+        {
+            if !floor || theta <= 0.5 {
+                theta_max = theta_max.max(if k == 1 { 0.0 } else { theta });
+            }
+            return Ok(NewtonEnd::Converged {
+                iterations: k,
+                theta: theta_max,
+            });
+        }
+        if k > 1 && !floor {
+            if stop_when_slow && !(theta < 1.0) {
+                return Ok(NewtonEnd::Slow {
+                    iterations: k,
+                    residual,
+                });
+            }
+            theta_max = theta_max.max(theta);
+        }
+        previous = d;
+    }
+    Ok(NewtonEnd::Slow {
+        iterations: max_iterations,
+        residual,
+    })
 }
 
 /// Whether constraint forces act at (t, q, v): compares `accelerations` (from
@@ -103,14 +182,30 @@ pub(crate) fn constraint_forces_act<M: Mechanism<N>, const N: usize>(
         .any(|(a, b)| (a - b).is_nan() || (a - b).abs() > 1e-10 * scale))
 }
 
-/// Refuses a mechanism whose accelerations are not those of its Lagrangian and generalized forces
-/// alone — one with constraints, whose `accelerations_at` adds constraint forces (KKT system) —
-/// for methods built on the Lagrangian itself (the variational integrator) or on the unconstrained
-/// mass matrix (Störmer–Verlet). The test compares `accelerations` (from
-/// [`Mechanism::accelerations_at`]) with the solve of M q̈ = 𝓕 − b from
-/// [`Mechanism::equations_of_motion_at`] at the same state: identical for an unconstrained mechanism
-/// (up to 1e-10 relative, for hand-optimized `accelerations_at`), different wherever a constraint
-/// force acts.
+/// Whether constraint forces are part of the mechanism's motion: decided by its declaration,
+/// [`Mechanism::CONSTRAINTS`], when it has one; otherwise (an implementation that does not
+/// declare it) by testing at (t, q, v) whether they act ([`constraint_forces_act`], one evaluation
+/// of the equations of motion; `accelerations` evaluates q̈ there, only then).
+pub(crate) fn has_constraint_forces<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    accelerations: impl FnOnce() -> Result<[f64; N]>,
+) -> Result<bool> {
+    match M::CONSTRAINTS {
+        Some(rows) => Ok(rows > 0),
+        None => constraint_forces_act(mechanism, t, q, v, &accelerations()?),
+    }
+}
+
+/// Refuses a mechanism with constraints for methods built on the Lagrangian itself (the
+/// variational integrator) or on the unconstrained mass matrix (Störmer–Verlet): by its
+/// declaration ([`Mechanism::CONSTRAINTS`]) — so a constrained mechanism is refused at its first
+/// step even where its constraint force vanishes — or, for an implementation that does not declare
+/// it, by comparing `accelerations` (from [`Mechanism::accelerations_at`]) with the solve of
+/// M q̈ = 𝓕 − b from [`Mechanism::equations_of_motion_at`] at the same state (identical for an
+/// unconstrained mechanism up to 1e-10 relative, different wherever a constraint force acts).
 pub fn refuse_constrained<M: Mechanism<N>, const N: usize>(
     mechanism: &M,
     method: &'static str,
@@ -119,14 +214,116 @@ pub fn refuse_constrained<M: Mechanism<N>, const N: usize>(
     v: &[f64; N],
     accelerations: &[f64; N],
 ) -> Result<()> {
-    if constraint_forces_act(mechanism, t, q, v, accelerations)? {
+    if has_constraint_forces(mechanism, t, q, v, || Ok(*accelerations))? {
         return Err(crate::error::Error::UnsuitableMethod {
             method,
             reason: "the mechanism has constraints (its accelerations include constraint forces that its \
-                     Lagrangian does not carry); use RK4, Dopri5, implicit midpoint or Gauss-Legendre, which \
-                     integrate the constrained accelerations and project"
+                     Lagrangian does not carry); use RK4, Dopri5, Dop853, implicit midpoint or Gauss-Legendre, \
+                     which integrate the constrained accelerations and project"
                 .to_string(),
         });
     }
     Ok(())
+}
+
+/// An LU factorisation with partial pivoting of a matrix of S×S blocks of size N×N (an
+/// (S·N)-square matrix; stable Rust cannot name S·N as an array length, so the blocks are
+/// indexed through r ↦ (r / N, r % N)): factorised once, solved many times — the simplified Newton
+/// iteration's matrix.
+#[derive(Clone, Copy, Debug)]
+pub struct BlockLu<const N: usize, const S: usize> {
+    lu: [[SMatrix<f64, N, N>; S]; S],
+    pivots: [[usize; N]; S],
+}
+
+impl<const N: usize, const S: usize> BlockLu<N, S> {
+    #[inline(always)]
+    fn get(&self, r: usize, c: usize) -> f64 {
+        self.lu[r / N][c / N][(r % N, c % N)]
+    }
+
+    #[inline(always)]
+    fn set(&mut self, r: usize, c: usize, x: f64) {
+        self.lu[r / N][c / N][(r % N, c % N)] = x;
+    }
+
+    /// Factorises `a`; `None` when it is not finite or a pivot is below
+    /// [`SINGULAR_PIVOT`](crate::linalg::SINGULAR_PIVOT) times its largest entry.
+    pub fn factor(a: &[[SMatrix<f64, N, N>; S]; S]) -> Option<Self> {
+        let mut f = BlockLu {
+            lu: *a,
+            pivots: [[0; N]; S],
+        };
+        let dim = N * S;
+        let mut scale = 0.0f64;
+        for r in 0..dim {
+            for c in 0..dim {
+                scale = scale.max(f.get(r, c).abs());
+            }
+        }
+        if !scale.is_finite() {
+            return None;
+        }
+        let tol = crate::linalg::SINGULAR_PIVOT * scale;
+        for c in 0..dim {
+            let mut p = c;
+            for r in (c + 1)..dim {
+                if f.get(r, c).abs() > f.get(p, c).abs() {
+                    p = r;
+                }
+            }
+            let pivot = f.get(p, c);
+            if !(pivot.abs() > tol) {
+                return None;
+            }
+            f.pivots[c / N][c % N] = p;
+            if p != c {
+                for k in 0..dim {
+                    let (u, w) = (f.get(p, k), f.get(c, k));
+                    f.set(p, k, w);
+                    f.set(c, k, u);
+                }
+            }
+            let inv = 1.0 / pivot;
+            for r in (c + 1)..dim {
+                let m = f.get(r, c) * inv;
+                f.set(r, c, m);
+                if m != 0.0 {
+                    for k in (c + 1)..dim {
+                        let x = f.get(r, k) - m * f.get(c, k);
+                        f.set(r, k, x);
+                    }
+                }
+            }
+        }
+        Some(f)
+    }
+
+    /// Solves A x = b with the factorisation.
+    pub fn solve(&self, b: &[SVector<f64, N>; S]) -> [SVector<f64, N>; S] {
+        let dim = N * S;
+        let mut x = *b;
+        for c in 0..dim {
+            let p = self.pivots[c / N][c % N];
+            if p != c {
+                let (u, w) = (x[p / N][p % N], x[c / N][c % N]);
+                x[p / N][p % N] = w;
+                x[c / N][c % N] = u;
+            }
+            let xc = x[c / N][c % N];
+            if xc != 0.0 {
+                for r in (c + 1)..dim {
+                    x[r / N][r % N] -= self.get(r, c) * xc;
+                }
+            }
+        }
+        for r in (0..dim).rev() {
+            let mut s = x[r / N][r % N];
+            for k in (r + 1)..dim {
+                s -= self.get(r, k) * x[k / N][k % N];
+            }
+            x[r / N][r % N] = s / self.get(r, r);
+        }
+        x
+    }
 }

@@ -1,19 +1,70 @@
 //! The classical fourth-order Runge–Kutta method (Hairer, Nørsett & Wanner, *Solving Ordinary
 //! Differential Equations I*, §II.1, Table 1.2) on the first-order system (q, v)' = (v, q̈(t, q, v)).
 
-use super::Integrator;
+use super::{Integrator, Stats};
 use crate::error::Result;
-use crate::mechanism::{check_step_at, diagnose, Mechanism};
-use crate::model::{Coordinates, State};
+use crate::mechanism::{diagnose, Mechanism};
 
 /// Fixed-step classical Runge–Kutta of order 4: four evaluations of the accelerations per step,
 /// global error O(h⁴), no energy conservation (energy drifts slowly in long runs).
+///
+/// ```
+/// use lagrange_core::{Mechanism, Rk4, State};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&s)?;
+/// for _ in 0..1000 {
+///     Pendulum.step::<Rk4>(&mut s, 1e-3)?;
+/// }
+/// // Local error O(h⁵) per step with constants of order ω⁵|θ| ≈ 150: ≈ 1e-13 per step.
+/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-9);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Rk4;
 
 #[inline(always)]
 fn axpy<const N: usize>(y: &[f64; N], a: f64, x: &[f64; N]) -> [f64; N] {
     std::array::from_fn(|i| y[i] + a * x[i])
+}
+
+/// One classical RK4 step of (q, v)' = (v, `acc`(t, q, v)) from (t, q, v): (q, v) at t + h. The
+/// one implementation of the method, shared by [`Rk4`] and the contact stepper (whose `acc` is
+/// the accelerations in a fixed contact mode).
+#[inline(always)]
+pub(crate) fn rk4_step<const N: usize>(
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    h: f64,
+    mut acc: impl FnMut(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+) -> Result<([f64; N], [f64; N])> {
+    let half = 0.5 * h;
+    let a1 = acc(t, q, v)?;
+    let (q2, v2) = (axpy(q, half, v), axpy(v, half, &a1));
+    let a2 = acc(t + half, &q2, &v2)?;
+    let (q3, v3) = (axpy(q, half, &v2), axpy(v, half, &a2));
+    let a3 = acc(t + half, &q3, &v3)?;
+    let (q4, v4) = (axpy(q, h, &v3), axpy(v, h, &a3));
+    let a4 = acc(t + h, &q4, &v4)?;
+    let w = h / 6.0;
+    let q_new = std::array::from_fn(|i| q[i] + w * (v[i] + 2.0 * (v2[i] + v3[i]) + v4[i]));
+    let v_new = std::array::from_fn(|i| v[i] + w * (a1[i] + 2.0 * (a2[i] + a3[i]) + a4[i]));
+    Ok((q_new, v_new))
 }
 
 impl Rk4 {
@@ -28,46 +79,29 @@ impl Rk4 {
         v: &[f64; N],
         h: f64,
     ) -> Result<([f64; N], [f64; N])> {
-        let half = 0.5 * h;
-        let a1 = mechanism
-            .accelerations_at(t, q, v)
-            .map_err(|e| diagnose(mechanism, t, q, v, e))?;
-        let (q2, v2) = (axpy(q, half, v), axpy(v, half, &a1));
-        let a2 = mechanism
-            .accelerations_at(t + half, &q2, &v2)
-            .map_err(|e| diagnose(mechanism, t + half, &q2, &v2, e))?;
-        let (q3, v3) = (axpy(q, half, &v2), axpy(v, half, &a2));
-        let a3 = mechanism
-            .accelerations_at(t + half, &q3, &v3)
-            .map_err(|e| diagnose(mechanism, t + half, &q3, &v3, e))?;
-        let (q4, v4) = (axpy(q, h, &v3), axpy(v, h, &a3));
-        let a4 = mechanism
-            .accelerations_at(t + h, &q4, &v4)
-            .map_err(|e| diagnose(mechanism, t + h, &q4, &v4, e))?;
-        let w = h / 6.0;
-        let q_new = std::array::from_fn(|i| q[i] + w * (v[i] + 2.0 * (v2[i] + v3[i]) + v4[i]));
-        let v_new = std::array::from_fn(|i| v[i] + w * (a1[i] + 2.0 * (a2[i] + a3[i]) + a4[i]));
-        Ok((q_new, v_new))
+        rk4_step(t, q, v, h, |t, q, v| {
+            mechanism
+                .accelerations_at(t, q, v)
+                .map_err(|e| diagnose(mechanism, t, q, v, e))
+        })
     }
 }
 
 impl Integrator for Rk4 {
     const NAME: &'static str = "RK4";
+    type Memory<const N: usize> = ();
 
-    fn step<M: Mechanism<N>, const N: usize>(
+    #[inline]
+    fn advance<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
-        state: &mut State<M::Coords>,
+        _memory: &mut (),
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
         h: f64,
-    ) -> Result<()> {
-        check_step_at(state.t, h)?;
-        let (q, v) = mechanism.check(state)?;
-        mechanism.check_constraints(state.t, &q, &v)?;
-        let (mut q_new, mut v_new) = Self::step_arrays(mechanism, state.t, &q, &v, h)?;
-        mechanism.project(state.t + h, &mut q_new, &mut v_new)?;
-        crate::model::check_state(&M::Coords::NAMES, state.t + h, &q_new, &v_new)?;
-        state.t += h;
-        state.q = M::Coords::from_array(q_new);
-        state.v = M::Coords::from_array(v_new);
-        Ok(())
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])> {
+        stats.evaluations += 4;
+        Self::step_arrays(mechanism, t, q, v, h)
     }
 }
