@@ -56,10 +56,13 @@ pub use lagrange_core::constraints::{
 };
 pub use lagrange_core::error::{Error, Result};
 pub use lagrange_core::geometry::{
-    planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
+    planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, SpatialVelocity, Vec2,
+    Vec3,
 };
 pub use lagrange_core::integrate::{
-    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, StormerVerlet, Variational,
+    Dop853, Dop853Stepper, Dopri5, Dopri5Stepper, Event, FixedStepper, GaussLegendre2,
+    ImplicitMidpoint, Integrator, Observation, Outcome, Rk4, Stats, Stepper, StopReason,
+    StormerVerlet, Variational,
 };
 pub use lagrange_core::mechanism::Mechanism;
 pub use lagrange_core::model::{Coordinates, State};
@@ -73,8 +76,12 @@ pub use lagrange_core::{
 /// Everything a declaration and its user need: `use lagrange::prelude::*;`.
 pub mod prelude {
     pub use lagrange_core::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3};
-    pub use lagrange_core::geometry::{Planar, Rot3, Spatial, Vec2, Vec3};
-    pub use lagrange_core::{Coordinates, Error, Integrator, Mechanism, Rk4, State};
+    pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
+    pub use lagrange_core::integrate::{
+        Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, Stepper, StormerVerlet,
+        Variational,
+    };
+    pub use lagrange_core::{Coordinates, Error, Mechanism, State, Validated};
     pub use lagrange_macros::mechanism;
 }
 

@@ -85,6 +85,7 @@ pub(crate) fn validate<M: Mechanism<N>, const N: usize>(mechanism: M) -> Result<
 
 impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
     type Coords = M::Coords;
+    const CONSTRAINTS: Option<usize> = M::CONSTRAINTS;
 
     /// Checked when the handle was made.
     #[inline(always)]

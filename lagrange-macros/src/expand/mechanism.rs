@@ -26,9 +26,12 @@ pub(super) fn mechanism_impl(
         let c = lit(c);
         quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
     });
+    // Declared, so integrators decide from the declaration whether constraint forces act.
+    let rows = lit(constrained.unwrap_or(0));
     quote! {
         impl #p::Mechanism<#n> for #params {
             type Coords = Coords;
+            const CONSTRAINTS: #p::core::option::Option<usize> = #p::core::option::Option::Some(#rows);
             #[inline]
             fn validate(&self) -> #p::Result<()> {
                 <Self as #p::Model<#n, #k>>::validate(self)?;

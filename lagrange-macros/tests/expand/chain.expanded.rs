@@ -321,6 +321,9 @@ pub mod chain {
     }
     impl ::lagrange::__private::Mechanism<3> for Chain {
         type Coords = Coords;
+        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
+            0,
+        );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;

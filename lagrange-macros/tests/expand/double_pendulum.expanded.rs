@@ -329,6 +329,9 @@ pub mod double_pendulum {
     }
     impl ::lagrange::__private::Mechanism<2> for DoublePendulum {
         type Coords = Coords;
+        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
+            0,
+        );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;

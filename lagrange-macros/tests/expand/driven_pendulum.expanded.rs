@@ -230,6 +230,9 @@ pub mod driven {
     }
     impl ::lagrange::__private::Mechanism<1> for Driven {
         type Coords = Coords;
+        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
+            0,
+        );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;

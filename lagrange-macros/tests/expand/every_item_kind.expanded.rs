@@ -465,6 +465,9 @@ pub mod everything {
     }
     impl ::lagrange::__private::Mechanism<2> for Everything {
         type Coords = Coords;
+        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
+            0,
+        );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 17>>::validate(self)?;

@@ -210,6 +210,9 @@ pub mod sliding_block {
     }
     impl ::lagrange::__private::Mechanism<2> for SlidingBlock {
         type Coords = Coords;
+        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
+            2,
+        );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
