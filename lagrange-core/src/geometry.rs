@@ -421,12 +421,12 @@ pub struct Spatial<D> {
 pub struct SpatialVelocity<D> {
     /// The centre of mass's velocity.
     pub linear: Vec3<D>,
-    /// The angular velocity ω (Ṙ = [ω]× R).
+    /// The angular velocity ω (Ṙ = \[ω\]× R).
     pub angular: Vec3<D>,
 }
 
 /// The world-frame angular velocity of a rotation R from its columns rₖ and their rates ṙₖ:
-/// Ṙ = [ω]× R gives ṙₖ = ω × rₖ, and Σₖ rₖ × (ω × rₖ) = Σₖ (ω |rₖ|² − rₖ (rₖ·ω)) = 3ω − ω, so
+/// Ṙ = \[ω\]× R gives ṙₖ = ω × rₖ, and Σₖ rₖ × (ω × rₖ) = Σₖ (ω |rₖ|² − rₖ (rₖ·ω)) = 3ω − ω, so
 /// ω = ½ Σₖ rₖ × ṙₖ.
 #[inline(always)]
 pub fn angular_velocity<D: Scalar>(columns: [Vec3<D>; 3], rates: [Vec3<D>; 3]) -> Vec3<D> {

@@ -183,15 +183,24 @@
 // `!(x > tol)` is deliberate: it also rejects NaN.
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
+mod consistency;
 mod contact;
+mod forces;
+mod mode;
+mod projection;
+mod rows;
 mod solve;
 
-pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChange};
-pub use solve::{
-    accelerations, accelerations_in_mode, check_consistent, check_velocity_rows_affine,
-    consistent_state, consistent_state_holding, constraint_forces, constraint_rows, infer_mode,
-    project, ConstrainedAccelerations, ConstraintForces, ConstraintRows, CONSISTENCY_TOLERANCE,
+pub use consistency::{
+    check_consistent, check_velocity_rows_affine, consistent_state, consistent_state_holding,
+    CONSISTENCY_TOLERANCE,
 };
+pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChange};
+pub use forces::{constraint_forces, ConstraintForces};
+pub use mode::infer_mode;
+pub use projection::project;
+pub use rows::{constraint_rows, ConstraintRows};
+pub use solve::{accelerations, accelerations_in_mode, ConstrainedAccelerations};
 
 use crate::geometry::Scalar;
 use crate::model::Model;

@@ -1,0 +1,335 @@
+//! The constraint rows and the Jacobians of x by automatic differentiation: [`ConstraintRows`],
+//! [`constraint_rows`] and the passes the solve and the projection build on.
+
+use super::{ConstraintKind, Constraints};
+use crate::dynamics;
+use crate::geometry::Scalar;
+use nalgebra::SVector;
+use num_dual::{Derivative, Dual, Dual2, DualSVec, DualVec};
+
+/// The constraint rows at one state (see the [module docs](super) for the notation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConstraintRows<S: Scalar, const N: usize, const C: usize> {
+    /// rᵢ: ∂g/∂q for position rows, ∂h/∂q̇ for velocity and friction rows.
+    pub rows: [SVector<S, N>; C],
+    /// βᵢ: rᵢ·q̈ + βᵢ is the second time derivative of g (position rows) or the first of h (velocity rows).
+    pub bias: [S; C],
+    /// The declared function's value: g or c (position rows), h or s (velocity rows).
+    pub value: [S; C],
+    /// Its velocity-level value rᵢ·q̇ + ∂/∂t: ġ (position rows), h or s itself (velocity rows).
+    pub rate: [S; C],
+}
+
+#[inline(always)]
+pub(super) fn gradient<S: Scalar, const N: usize>(x: &DualSVec<S, N>) -> SVector<S, N> {
+    x.eps.0.unwrap_or_else(SVector::zeros)
+}
+
+pub(super) fn has_position<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>() -> bool {
+    M::KINDS.iter().any(|k| k.is_position())
+}
+
+pub(super) fn has_velocity<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>() -> bool {
+    M::KINDS.iter().any(|k| k.is_velocity())
+}
+
+/// Whether every row is always enforced (no unilateral, no friction rows): then no mode logic.
+pub(super) fn always_active<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>() -> bool {
+    M::KINDS
+        .iter()
+        .all(|k| matches!(k, ConstraintKind::Holonomic | ConstraintKind::Velocity))
+}
+
+/// The rows and the Jacobian rows of x (for the mass matrix), at (t, q, q̇).
+///
+/// Two evaluations of x: (1) q seeded as a gradient dual: x, J and G; (2) (q, t) along (q̇, 1) as
+/// a second-order dual: ẋ, the q̈ = 0 accelerations of x, ġ and β of position rows. Velocity rows
+/// then take two first-order passes of their own ([`velocity_rows`]). Where the hyper-dual pass of
+/// the equations of motion is at hand, [`rows_from_pass`] builds the same duals from it instead.
+#[allow(clippy::type_complexity)]
+fn rows_and_jacobian<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
+    let td = DualSVec::from_re(t);
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let x1 = model.cartesian(td, &qd);
+    let t2 = if M::RHEONOMIC {
+        Dual2::new(t, S::one(), S::zero())
+    } else {
+        Dual2::from_re(t)
+    };
+    let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
+    let x2 = model.cartesian(t2, &q2);
+    rows_on(model, t, q, v, (td, &qd, &x1), (t2, &q2, &x2))
+}
+
+/// [`rows_and_jacobian`] of a scleronomic mechanism from the hyper-dual pass of its equations of
+/// motion: x as a gradient dual is (re, ε₁) of the pass, and x along the motion is (re, ε₂, a) with
+/// a = (∂ẋ/∂q) q̇ from ε₁ε₂ — the same numbers the two evaluations of [`rows_and_jacobian`] would
+/// give, without evaluating x(q) again.
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+pub(crate) fn rows_from_pass<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    pass: &dynamics::MotionPass<S, N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
+    let td = DualSVec::from_re(t);
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let x1: [DualSVec<S, N>; K] =
+        std::array::from_fn(|i| DualSVec::new(pass.x[i].re, Derivative::new(pass.x[i].eps1.0)));
+    let t2 = Dual2::from_re(t);
+    let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
+    let x2: [Dual2<S>; K] = std::array::from_fn(|i| {
+        Dual2::new(
+            pass.x[i].re,
+            pass.x[i].eps2.0.map_or(S::zero(), |d| d[0]),
+            dynamics::along_motion(&pass.x[i], v).unwrap_or(S::zero()),
+        )
+    });
+    rows_on(model, t, q, v, (td, &qd, &x1), (t2, &q2, &x2))
+}
+
+/// The rows from x as a gradient dual (J, G) and x along the motion (ẋ, a; ġ, β of position
+/// rows), then the velocity rows ([`velocity_rows`]).
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+fn rows_on<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    (td, qd, x1): (DualSVec<S, N>, &[DualSVec<S, N>; N], &[DualSVec<S, N>; K]),
+    (t2, q2, x2): (Dual2<S>, &[Dual2<S>; N], &[Dual2<S>; K]),
+) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
+    let mut out = ConstraintRows {
+        rows: [SVector::zeros(); C],
+        bias: [S::zero(); C],
+        value: [S::zero(); C],
+        rate: [S::zero(); C],
+    };
+    let jac: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    if has_position::<M, N, K, C>() {
+        let g1 = model.position_constraints(td, qd, x1);
+        let g2 = model.position_constraints(t2, q2, x2);
+        for i in 0..C {
+            if M::KINDS[i].is_position() {
+                out.rows[i] = gradient(&g1[i]);
+                out.value[i] = g1[i].re;
+                out.rate[i] = g2[i].v1;
+                out.bias[i] = g2[i].v2;
+            }
+        }
+    }
+    let motion = CartesianMotion {
+        x: std::array::from_fn(|i| x2[i].re),
+        x_dot: std::array::from_fn(|i| x2[i].v1),
+        x_accel: std::array::from_fn(|i| x2[i].v2),
+    };
+    velocity_rows(model, t, q, v, &motion, &jac, &mut out);
+    (out, jac)
+}
+
+/// x, ẋ and the q̈ = 0 accelerations of x at one state: what velocity rows are evaluated on.
+struct CartesianMotion<S: Scalar, const K: usize> {
+    x: [S; K],
+    x_dot: [S; K],
+    x_accel: [S; K],
+}
+
+/// The velocity rows h(q, q̇, t) into `out`: (3) along the motion as a first-order dual (value and
+/// β), with x and ẋ advanced along it by ẋ and the q̈ = 0 accelerations; (4) with q̇ seeded as a
+/// gradient dual (A), ẋ's gradient in q̇ being J.
+fn velocity_rows<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    motion: &CartesianMotion<S, K>,
+    jac: &[SVector<S, N>; K],
+    out: &mut ConstraintRows<S, N, C>,
+) {
+    if !has_velocity::<M, N, K, C>() {
+        return;
+    }
+    // Pass 3: h(q + s q̇, q̇, t + s): value and β.
+    let tq = if M::RHEONOMIC {
+        Dual::new(t, S::one())
+    } else {
+        Dual::from_re(t)
+    };
+    let qq: [Dual<S>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
+    let vq: [Dual<S>; N] = std::array::from_fn(|j| Dual::from_re(v[j]));
+    let xq: [Dual<S>; K] = std::array::from_fn(|i| Dual::new(motion.x[i], motion.x_dot[i]));
+    let xdq: [Dual<S>; K] = std::array::from_fn(|i| Dual::new(motion.x_dot[i], motion.x_accel[i]));
+    let h = model.velocity_constraints(tq, &qq, &vq, &xq, &xdq);
+    // Pass 4: A = ∂h/∂q̇, with ∂ẋ/∂q̇ = J.
+    let tv = DualSVec::from_re(t);
+    let qv: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
+    let vv: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
+    let xv: [DualSVec<S, N>; K] = std::array::from_fn(|i| DualSVec::from_re(motion.x[i]));
+    let xdv: [DualSVec<S, N>; K] =
+        std::array::from_fn(|i| DualVec::new(motion.x_dot[i], Derivative::some(jac[i])));
+    let hv = model.velocity_constraints(tv, &qv, &vv, &xv, &xdv);
+    for i in 0..C {
+        if M::KINDS[i].is_velocity() {
+            out.value[i] = h[i].re;
+            out.rate[i] = h[i].re;
+            out.bias[i] = h[i].eps;
+            out.rows[i] = gradient(&hv[i]);
+        }
+    }
+}
+
+/// Pass 1 alone, on f64: position rows G, their values g and the Jacobian rows of x.
+#[allow(clippy::type_complexity)]
+pub(super) fn position_rows_and_jacobian<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+) -> ([SVector<f64, N>; C], [f64; C], [SVector<f64, N>; K]) {
+    let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let td = DualSVec::from_re(t);
+    let x1 = model.cartesian(td, &qd);
+    let jac: [SVector<f64, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    let g1 = model.position_constraints(td, &qd, &x1);
+    let mut rows = [SVector::zeros(); C];
+    let mut value = [0.0; C];
+    for i in 0..C {
+        if M::KINDS[i].is_position() {
+            rows[i] = gradient(&g1[i]);
+            value[i] = g1[i].re;
+        }
+    }
+    (rows, value, jac)
+}
+
+/// The rows and their velocity-level values (rates) without the biases β, on f64: for position
+/// rows ġ = G q̇ + ∂g/∂t, for velocity rows h itself, with ẋ = J q̇ + ∂x/∂t. One gradient pass
+/// (plus one first-order pass in t for a rheonomic mechanism), against the two of
+/// [`constraint_rows`]: what the velocity projection needs.
+#[allow(clippy::type_complexity)]
+pub(super) fn velocity_rows_and_jacobian<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> ([SVector<f64, N>; C], [f64; C], [SVector<f64, N>; K]) {
+    let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let td = DualSVec::from_re(t);
+    let x1 = model.cartesian(td, &qd);
+    let jac: [SVector<f64, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
+    let vv = SVector::from(*v);
+    let mut rows = [SVector::zeros(); C];
+    let mut rate = [0.0; C];
+    // ∂x/∂t and ∂g/∂t at fixed q.
+    let (x_t, g_t) = if M::RHEONOMIC {
+        let tt = Dual::new(t, 1.0);
+        let qt: [Dual<f64>; N] = std::array::from_fn(|j| Dual::from_re(q[j]));
+        let xt = model.cartesian(tt, &qt);
+        let gt = if has_position::<M, N, K, C>() {
+            let g = model.position_constraints(tt, &qt, &xt);
+            std::array::from_fn(|i| g[i].eps)
+        } else {
+            [0.0; C]
+        };
+        (std::array::from_fn(|i| xt[i].eps), gt)
+    } else {
+        ([0.0; K], [0.0; C])
+    };
+    if has_position::<M, N, K, C>() {
+        let g1 = model.position_constraints(td, &qd, &x1);
+        for i in 0..C {
+            if M::KINDS[i].is_position() {
+                rows[i] = gradient(&g1[i]);
+                rate[i] = rows[i].dot(&vv) + g_t[i];
+            }
+        }
+    }
+    if has_velocity::<M, N, K, C>() {
+        let tv = DualSVec::from_re(t);
+        let qv: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
+        let vs: [DualSVec<f64, N>; N] =
+            std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
+        let xv: [DualSVec<f64, N>; K] = std::array::from_fn(|i| DualSVec::from_re(x1[i].re));
+        let xdv: [DualSVec<f64, N>; K] = std::array::from_fn(|i| {
+            DualVec::new(jac[i].dot(&vv) + x_t[i], Derivative::some(jac[i]))
+        });
+        let h = model.velocity_constraints(tv, &qv, &vs, &xv, &xdv);
+        for i in 0..C {
+            if M::KINDS[i].is_velocity() {
+                rows[i] = gradient(&h[i]);
+                rate[i] = h[i].re;
+            }
+        }
+    }
+    (rows, rate, jac)
+}
+
+/// The constraint rows rᵢ, biases βᵢ, values and rates at (t, q, q̇), for any scalar.
+pub fn constraint_rows<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> ConstraintRows<S, N, C> {
+    rows_and_jacobian(model, t, q, v).0
+}
+
+pub(super) fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
+    std::array::from_fn(|j| q[j].re())
+}
