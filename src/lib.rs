@@ -55,6 +55,9 @@ pub use lagrange_core::constraints::{
     ContactOptions, ContactRk4, ModeChange, RowMode,
 };
 pub use lagrange_core::error::{Error, Result};
+/// The scalar every declaration function is evaluated on (`f64` or a dual number): the bound of a
+/// helper function called from one, `fn arm<D: lagrange::Scalar>(angle: D) -> D`.
+pub use lagrange_core::geometry::Scalar;
 pub use lagrange_core::geometry::{
     planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, SpatialVelocity, Vec2,
     Vec3,

@@ -57,7 +57,7 @@
 use nalgebra::allocator::Allocator;
 use nalgebra::{DefaultAllocator, Dim, U1};
 use num_dual::DualNum;
-use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
+use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
 /// A real number or a dual number over `f64`: what positions, potentials and the dynamics are
 /// generic over.
@@ -286,6 +286,12 @@ macro_rules! vector_ops {
             type Output = Self;
             #[inline(always)]
             fn mul(self, s: D) -> Self { $V { $($f: self.$f * s),+ } }
+        }
+        /// Vector divided by a scalar, component by component.
+        impl<D: Scalar> Div<D> for $V<D> {
+            type Output = Self;
+            #[inline(always)]
+            fn div(self, s: D) -> Self { $V { $($f: self.$f / s),+ } }
         }
     };
 }
