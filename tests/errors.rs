@@ -214,3 +214,53 @@ fn huge_velocity_is_an_error_for_the_energies_as_for_the_accelerations() {
     // The potential energy does not depend on the velocities: finite.
     assert!(SYS.potential_energy(&fast).unwrap().is_finite());
 }
+
+/// A bead in polar coordinates held on a ray by a constraint: M = diag(m, m r²) overflows at
+/// r = 10³⁰⁰.
+#[mechanism]
+pub mod bead_on_ray {
+    pub struct Coords {
+        pub r: f64,
+        pub theta: f64,
+    }
+
+    pub struct Bead {
+        pub m: f64,
+        pub angle: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bead() -> Vec2 {
+        vec2(theta.cos(), theta.sin()) * r
+    }
+
+    #[constraint]
+    fn ray() -> f64 {
+        theta - angle
+    }
+}
+
+#[test]
+fn an_overflowing_mass_matrix_in_the_constrained_solve_is_non_finite_dynamics() {
+    let p = bead_on_ray::Bead { m: 1.0, angle: 0.3 };
+    let (q, v) = ([1e300, 0.3], [0.0, 0.0]);
+    // The constrained solve itself, not only the user-facing call: not "singular, pivot 1".
+    let err = lagrange::constraints::accelerations(&p, 0.0, &q, &v).unwrap_err();
+    assert!(
+        matches!(err, lagrange::Error::NonFiniteDynamics { .. }),
+        "{err}"
+    );
+    let s = bead_on_ray::State::new(
+        0.0,
+        bead_on_ray::Coords {
+            r: q[0],
+            theta: q[1],
+        },
+        bead_on_ray::Coords::default(),
+    );
+    let err = p.accelerations(&s).unwrap_err();
+    assert!(
+        matches!(err, lagrange::Error::NonFiniteDynamics { .. }),
+        "{err}"
+    );
+}

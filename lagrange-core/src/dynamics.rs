@@ -361,11 +361,7 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
     let rhs = eom.generalized_forces - eom.inertial_terms;
     let qdd = match solve_spd(&eom.mass_matrix, &rhs) {
         Ok(qdd) => qdd,
-        // A mass matrix that overflowed is not singular: say what happened.
-        Err(_) if eom.mass_matrix.iter().any(|m| !m.re().is_finite()) => {
-            return Err(non_finite_dynamics::<C, S, N>(t, q))
-        }
-        Err(e) => return Err(singular_mass_matrix::<C, S, N>(e, t, q)),
+        Err(e) => return Err(mass_matrix_failure::<C, S, N>(&eom.mass_matrix, e, t, q)),
     };
     // Branch-free on the common path: a·0 is 0 exactly when a is finite.
     let mut zero = 0.0;
@@ -376,6 +372,23 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
         Ok(qdd.into())
     } else {
         Err(non_finite_dynamics::<C, S, N>(t, q))
+    }
+}
+
+/// Why a factorisation of the mass matrix failed at (t, q): a matrix that overflowed (a blown-up
+/// state) is not singular — [`Error::NonFiniteDynamics`] — otherwise the singular pivot.
+#[cold]
+#[inline(never)]
+pub(crate) fn mass_matrix_failure<C: Coordinates<N>, S: Scalar, const N: usize>(
+    mass_matrix: &SMatrix<S, N, N>,
+    e: NotPositiveDefinite,
+    t: S,
+    q: &[S; N],
+) -> Error {
+    if mass_matrix.iter().any(|m| !m.re().is_finite()) {
+        non_finite_dynamics::<C, S, N>(t, q)
+    } else {
+        singular_mass_matrix::<C, S, N>(e, t, q)
     }
 }
 

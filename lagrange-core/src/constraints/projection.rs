@@ -79,7 +79,7 @@ fn least_norm_correction<
         &held_rows
     };
     let l = cholesky(&mass)
-        .map_err(|e| dynamics::singular_mass_matrix::<M::Coords, f64, N>(e, t, q))?;
+        .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, f64, N>(&mass, e, t, q))?;
     let y: [SVector<f64, N>; C] = std::array::from_fn(|i| {
         if use_row[i] {
             cholesky_substitute(&l, &rows[i])

@@ -181,7 +181,7 @@ pub fn accelerations_in_mode<
         None => dynamics::equations_of_motion(model, t, q, v),
     };
     let l = cholesky(&eom.mass_matrix)
-        .map_err(|e| dynamics::singular_mass_matrix::<M::Coords, S, N>(e, t, q))?;
+        .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, S, N>(&eom.mass_matrix, e, t, q))?;
     let u = cholesky_substitute(&l, &(eom.generalized_forces - eom.inertial_terms));
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
     // A sliding row acts when its contact is enforced.
