@@ -114,9 +114,36 @@ fn cart_pendulum_closed_form(
     ]
 }
 
+/// The hand-written `baseline` against the generated `accelerations` of `checked`'s parameters at
+/// `s`, and through the validated handle itself: criterion's group `name` (benches `hand_written` and
+/// `generated`), then the interleaved ratios.
+fn compare<M: Mechanism<N>, const N: usize, R>(
+    c: &mut Criterion,
+    name: &'static str,
+    checked: &Validated<M>,
+    s: &State<M::Coords>,
+    baseline: impl Fn() -> R + Copy,
+) {
+    let sys = checked.get();
+    let mut group = c.benchmark_group(name);
+    group.bench_function("hand_written", |b| b.iter(baseline));
+    group.bench_function("generated", |b| {
+        b.iter(|| black_box(sys).accelerations(black_box(s)).unwrap())
+    });
+    group.finish();
+    let baseline = move || {
+        black_box(baseline());
+    };
+    interleave(name, baseline, || {
+        black_box(black_box(sys).accelerations(black_box(s)).unwrap());
+    });
+    interleave("  validated once", baseline, || {
+        black_box(black_box(checked).accelerations(black_box(s)).unwrap());
+    });
+}
+
 fn simple_pendulum(c: &mut Criterion) {
     use pendulum::{Coords, Pendulum, State};
-    // The same parameters checked once: the handle a simulation uses.
     let checked = Pendulum {
         m: 1.0,
         l: 0.8,
@@ -128,28 +155,13 @@ fn simple_pendulum(c: &mut Criterion) {
     let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
     let generated = sys.accelerations(&s).unwrap().theta;
     assert!((generated - pendulum_closed_form(sys, [0.7])[0]).abs() < 1e-12);
-    let mut group = c.benchmark_group("pendulum");
-    group.bench_function("hand_written", |b| {
-        b.iter(|| pendulum_closed_form(black_box(sys), black_box([0.7])))
-    });
-    group.bench_function("generated", |b| {
-        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
-    });
-    group.finish();
-    let closed_form = || {
-        black_box(pendulum_closed_form(black_box(sys), black_box([0.7])));
-    };
-    interleave("pendulum", closed_form, || {
-        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
-    });
-    interleave("  validated once", closed_form, || {
-        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    compare(c, "pendulum", &checked, &s, || {
+        pendulum_closed_form(black_box(sys), black_box([0.7]))
     });
 }
 
 fn pendulum_on_cart(c: &mut Criterion) {
     use cart_pendulum::{CartPendulum, Coords, State};
-    // The same parameters checked once: the handle a simulation uses.
     let checked = CartPendulum {
         cart_mass: 2.0,
         m: 1.0,
@@ -160,46 +172,17 @@ fn pendulum_on_cart(c: &mut Criterion) {
     .unwrap();
     let sys = checked.get();
     let (q, v) = ([0.1, 0.7], [-0.3, 1.1]);
-    let s = State::new(
-        0.0,
-        Coords {
-            x: q[0],
-            theta: q[1],
-        },
-        Coords {
-            x: v[0],
-            theta: v[1],
-        },
-    );
+    let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
     let generated = sys.accelerations(&s).unwrap();
     let hand = cart_pendulum_closed_form(sys, q, v);
     assert!((generated.x - hand[0]).abs() < 1e-12 && (generated.theta - hand[1]).abs() < 1e-12);
-    let mut group = c.benchmark_group("cart_pendulum");
-    group.bench_function("hand_written", |b| {
-        b.iter(|| cart_pendulum_closed_form(black_box(sys), black_box(q), black_box(v)))
-    });
-    group.bench_function("generated", |b| {
-        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
-    });
-    group.finish();
-    let closed_form = || {
-        black_box(cart_pendulum_closed_form(
-            black_box(sys),
-            black_box(q),
-            black_box(v),
-        ));
-    };
-    interleave("cart_pendulum", closed_form, || {
-        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
-    });
-    interleave("  validated once", closed_form, || {
-        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    compare(c, "cart_pendulum", &checked, &s, || {
+        cart_pendulum_closed_form(black_box(sys), black_box(q), black_box(v))
     });
 }
 
 fn double_pendulum(c: &mut Criterion) {
     use double_pendulum_scene::double_pendulum::{Coords, DoublePendulum, State};
-    // The same parameters checked once: the handle a simulation uses.
     let checked = DoublePendulum {
         m1: 1.0,
         m2: 1.3,
@@ -210,43 +193,10 @@ fn double_pendulum(c: &mut Criterion) {
     .validated()
     .unwrap();
     let sys = checked.get();
-    let s = State::new(
-        0.0,
-        Coords {
-            theta1: 0.7,
-            theta2: -1.2,
-        },
-        Coords {
-            theta1: 1.1,
-            theta2: -0.4,
-        },
-    );
-    let mut group = c.benchmark_group("double_pendulum");
-    group.bench_function("hand_written", |b| {
-        b.iter(|| {
-            double_pendulum_scene::closed_form(
-                black_box(sys),
-                black_box([0.7, -1.2]),
-                black_box([1.1, -0.4]),
-            )
-        })
-    });
-    group.bench_function("generated", |b| {
-        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
-    });
-    group.finish();
-    let closed_form = || {
-        black_box(double_pendulum_scene::closed_form(
-            black_box(sys),
-            black_box([0.7, -1.2]),
-            black_box([1.1, -0.4]),
-        ));
-    };
-    interleave("double_pendulum", closed_form, || {
-        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
-    });
-    interleave("  validated once", closed_form, || {
-        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    let (q, v) = ([0.7, -1.2], [1.1, -0.4]);
+    let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+    compare(c, "double_pendulum", &checked, &s, || {
+        double_pendulum_scene::closed_form(black_box(sys), black_box(q), black_box(v))
     });
 }
 
@@ -283,7 +233,6 @@ fn wedge_block_assembled(p: &wedge_block_scene::wedge_block::WedgeBlock) -> [f64
 
 fn wedge_block(c: &mut Criterion) {
     use wedge_block_scene::wedge_block::{Coords, State, WedgeBlock};
-    // The same parameters checked once: the handle a simulation uses.
     let checked = WedgeBlock {
         wedge_mass: 3.0,
         block_mass: 1.0,
@@ -294,47 +243,32 @@ fn wedge_block(c: &mut Criterion) {
     .validated()
     .unwrap();
     let sys = checked.get();
-    let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
-    let mut group = c.benchmark_group("wedge_block");
-    group.bench_function("hand_written", |b| {
-        b.iter(|| wedge_block_closed_form(black_box(sys)))
-    });
-    group.bench_function("generated", |b| {
-        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
-    });
+    let (q, v) = ([0.1, 0.2], [-0.3, 0.5]);
+    let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+    let closed_form = || wedge_block_closed_form(black_box(sys));
+    compare(c, "wedge_block", &checked, &s, closed_form);
     // Without the parameter and state checks (what integrators call between their once-a-step
     // checks), and the method by hand: where the ratio above comes from.
-    let (q, v) = ([0.1, 0.2], [-0.3, 0.5]);
-    group.bench_function("generated_unchecked", |b| {
-        b.iter(|| {
-            black_box(sys)
-                .accelerations_at(0.0, black_box(&q), black_box(&v))
-                .unwrap()
-        })
-    });
-    group.bench_function("hand_assembled", |b| {
-        b.iter(|| wedge_block_assembled(black_box(sys)))
-    });
-    group.finish();
-    let closed_form = || {
-        black_box(wedge_block_closed_form(black_box(sys)));
-    };
-    interleave("wedge_block", closed_form, || {
-        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
-    });
-    interleave("  validated once", closed_form, || {
-        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
-    });
-    interleave("  unchecked", closed_form, || {
+    let unchecked = || {
         black_box(
             black_box(sys)
                 .accelerations_at(0.0, black_box(&q), black_box(&v))
                 .unwrap(),
         );
-    });
-    interleave("  hand-assembled", closed_form, || {
+    };
+    let assembled = || {
         black_box(wedge_block_assembled(black_box(sys)));
-    });
+    };
+    let mut group = c.benchmark_group("wedge_block_parts");
+    group.bench_function("hand_written", |b| b.iter(closed_form));
+    group.bench_function("generated_unchecked", |b| b.iter(unchecked));
+    group.bench_function("hand_assembled", |b| b.iter(assembled));
+    group.finish();
+    let closed_form = move || {
+        black_box(closed_form());
+    };
+    interleave("  unchecked", closed_form, unchecked);
+    interleave("  hand-assembled", closed_form, assembled);
 }
 
 /// The four-bar of the gallery at its consistent start, against its KKT system by hand.
@@ -359,26 +293,8 @@ fn four_bar(c: &mut Criterion) {
             "{generated:?} vs {by_hand:?}"
         );
     }
-    let mut group = c.benchmark_group("four_bar");
-    group.bench_function("hand_written", |b| {
-        b.iter(|| constrained::four_bar(black_box(&hand), black_box(q), black_box(v)))
-    });
-    group.bench_function("generated", |b| {
-        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
-    });
-    group.finish();
-    let kkt = || {
-        black_box(constrained::four_bar(
-            black_box(&hand),
-            black_box(q),
-            black_box(v),
-        ));
-    };
-    interleave("four_bar (KKT)", kkt, || {
-        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
-    });
-    interleave("  validated once", kkt, || {
-        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    compare(c, "four_bar", &checked, &s, || {
+        constrained::four_bar(black_box(&hand), black_box(q), black_box(v))
     });
 }
 
@@ -404,35 +320,13 @@ fn cartesian_pendulum(c: &mut Criterion) {
         [sys.l * th.sin(), -sys.l * th.cos()],
         [sys.l * w * th.cos(), sys.l * w * th.sin()],
     );
-    let s = State::new(
-        0.0,
-        Coords { x: q[0], y: q[1] },
-        Coords { x: v[0], y: v[1] },
-    );
+    let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
     let generated = sys.accelerations(&s).unwrap();
     let by_hand = constrained::cartesian_pendulum(&hand, q, v);
     // The same formula rounded differently: a few ulps of |q̈| ≈ 10.
     assert!((generated.x - by_hand[0]).abs() < 1e-12 && (generated.y - by_hand[1]).abs() < 1e-12);
-    let mut group = c.benchmark_group("cartesian_pendulum");
-    group.bench_function("hand_written", |b| {
-        b.iter(|| constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v)))
-    });
-    group.bench_function("generated", |b| {
-        b.iter(|| black_box(sys).accelerations(black_box(&s)).unwrap())
-    });
-    group.finish();
-    let kkt = || {
-        black_box(constrained::cartesian_pendulum(
-            black_box(&hand),
-            black_box(q),
-            black_box(v),
-        ));
-    };
-    interleave("cartesian_pendulum (KKT)", kkt, || {
-        black_box(black_box(sys).accelerations(black_box(&s)).unwrap());
-    });
-    interleave("  validated once", kkt, || {
-        black_box(black_box(&checked).accelerations(black_box(&s)).unwrap());
+    compare(c, "cartesian_pendulum", &checked, &s, || {
+        constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))
     });
 }
 
@@ -469,8 +363,8 @@ fn main() {
     }
     for variant in ["generated_unchecked", "hand_assembled"] {
         if let (Some(g), Some(h)) = (
-            mean_ns("wedge_block", variant),
-            mean_ns("wedge_block", "hand_written"),
+            mean_ns("wedge_block_parts", variant),
+            mean_ns("wedge_block_parts", "hand_written"),
         ) {
             println!("    {variant:<20} {g:8.1} ns / {h:8.1} ns = {:.2}×", g / h);
         }
