@@ -70,8 +70,27 @@ pub trait Tree<const N: usize, const K: usize, const W: usize, const B: usize>:
 {
     /// The bodies, in declaration order.
     const BODIES: [Body<W>; B];
+    /// `ANCESTORS[b][a]`: body a lies above body b (b is translated, directly or through others,
+    /// from a). Computed from [`Tree::BODIES`] at compile time, so the mass matrix's loop over pairs
+    /// has a fixed shape instead of a walk whose length varies from body to body.
+    const ANCESTORS: [[bool; B]; B] = ancestors(&Self::BODIES);
     /// d for every row of x, each body's expression evaluated on its own seeds ([`seed`], [`time`]).
     fn displacements<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [Seeded<S, W>; K];
+}
+
+/// The ancestor table of a list of bodies whose parents come first (see [`Tree::ANCESTORS`]).
+pub const fn ancestors<const W: usize, const B: usize>(bodies: &[Body<W>; B]) -> [[bool; B]; B] {
+    let mut table = [[false; B]; B];
+    let mut b = 0;
+    while b < B {
+        let mut above = bodies[b].parent;
+        while let Some(a) = above {
+            table[b][a] = true;
+            above = bodies[a].parent;
+        }
+        b += 1;
+    }
+    table
 }
 
 /// Coordinate value `q` seeded in `slot` with direction `q̇`: ε₁ = e_slot, ε₂ = q̇.
@@ -276,8 +295,10 @@ fn mass_matrix<
             }
             // a above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ), the same term into both mirrored entries (twice
             // into a diagonal one).
-            let mut ancestor = body.parent;
-            while let Some(a) = ancestor {
+            for a in 0..b {
+                if !M::ANCESTORS[b][a] {
+                    continue;
+                }
                 let above = &M::BODIES[a];
                 for (r, seed_r) in above.seeds.iter().enumerate() {
                     let Seed::Coordinate(cr) = *seed_r else {
@@ -287,7 +308,6 @@ fn mass_matrix<
                     m[(cr, cs)] += term;
                     m[(cs, cr)] += term;
                 }
-                ancestor = above.parent;
             }
         }
     }
