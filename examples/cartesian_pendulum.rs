@@ -75,7 +75,7 @@ pub mod angle_pendulum {
 
 const SCENE: &str = "Cartesian pendulum";
 
-/// Steps of the long run: the issue's 10⁵ in optimized builds (the gallery), 10⁴ in debug builds
+/// Steps of the long run: 10⁵ in optimized builds (the gallery), 10⁴ in debug builds
 /// (the tests), where 10⁵ would take minutes. The projection after every step keeps the constraint
 /// error at round-off whatever the run length.
 const LONG_RUN: usize = if cfg!(debug_assertions) {
@@ -189,7 +189,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             1e-10,
         ),
         // Projection onto |r| = L and r·ṙ = 0 after every step: round-off of |r| ~ 1, independent
-        // of the run length; the issue asks for ≤ 1e-10.
+        // of the run length; the bar is ≤ 1e-10.
         Check::new(
             SCENE,
             format!("max |g| = ||r| − L| over {steps} (m)"),

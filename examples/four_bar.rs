@@ -81,7 +81,7 @@ pub mod four_bar {
 
 const SCENE: &str = "four-bar linkage";
 
-/// Steps of the long run: the issue's 10⁵ in optimized builds (the gallery), 10⁴ in debug builds
+/// Steps of the long run: 10⁵ in optimized builds (the gallery), 10⁴ in debug builds
 /// (the tests), where 10⁵ would take minutes. The projection after every step keeps the loop
 /// closed to round-off whatever the run length.
 const LONG_RUN: usize = if cfg!(debug_assertions) {
@@ -188,7 +188,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     );
     vec![
         // Projection onto g = 0 (Newton, to round-off) and ġ = 0 after every step: round-off of
-        // positions ~ 3 m, independent of the run length; the issue asks for ≤ 1e-10.
+        // positions ~ 3 m, independent of the run length; the bar is ≤ 1e-10.
         Check::new(
             SCENE,
             format!("max |g| loop closure over {steps} (m)"),

@@ -56,7 +56,7 @@ pub mod rolling_wheel {
 
 const SCENE: &str = "rolling wheel";
 
-/// Steps of the long run: the issue's 10⁵ in optimized builds (the gallery), 3·10³ in debug builds
+/// Steps of the long run: 10⁵ in optimized builds (the gallery), 3·10³ in debug builds
 /// (the tests: the spatial body's dual-number passes cost ~1.7 ms per unoptimized step, so even 10⁴
 /// would take half a minute). The projection after every step keeps the no-slip residual at
 /// round-off whatever the run length.
@@ -155,7 +155,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             r.slip, r.worst, r.energy
         );
         // Velocities are projected onto A q̇ = 0 after every step: the residual is the round-off of
-        // velocities of size RΩ = 1.5 m/s, a few ε; 1e-13 m/s leaves a margin (the issue asks for
+        // velocities of size RΩ = 1.5 m/s, a few ε; 1e-13 m/s leaves a margin (the bar is
         // ≤ 1e-10).
         checks.push(Check::new(
             SCENE,

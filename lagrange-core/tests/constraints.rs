@@ -1,6 +1,6 @@
 //! Constrained mechanisms written by hand (what `#[mechanism]` generates for `#[constraint]`,
 //! `#[velocity_constraint]`, `#[unilateral]` and `#[friction]` items), checked against closed forms.
-//! The scenes are issue 3's: particle leaving a sphere, rolling wheel, four-bar linkage, Cartesian
+//! The scenes: particle leaving a sphere, rolling wheel, four-bar linkage, Cartesian
 //! pendulum, block on a rough ramp, wedge and block with friction.
 //!
 //! Tolerances: classical RK4 has local error O(h⁵) and global error O(h⁴) (Hairer, Nørsett &
@@ -20,7 +20,7 @@ mod support;
 use lagrange_core::impl_mechanism;
 use lagrange_core::{vec2, Error, Mechanism, Model, Rk4, Scalar, State};
 
-/// Steps of the long runs (scenes 2–4): the issue's 10⁵ in optimized builds
+/// Steps of the long runs (scenes 2–4): 10⁵ in optimized builds
 /// (`cargo test --release`, ~1 s each); 10⁴ in debug builds, where 10⁵ would take minutes. The
 /// projection after every step keeps the constraint error at round-off independently of the run
 /// length, so the shorter run checks the same property; the figures quoted in the docs are from

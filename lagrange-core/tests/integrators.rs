@@ -692,7 +692,7 @@ fn newton_without_a_solution_is_an_error() {
     diverges::<Variational>();
 }
 
-// Stiff spring chain and the long runs of the issue.
+// Stiff spring chain and the long runs.
 
 #[test]
 fn implicit_midpoint_stays_bounded_on_the_stiff_chain_at_large_h_omega() {

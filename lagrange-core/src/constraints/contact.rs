@@ -17,7 +17,7 @@ pub struct ContactOptions {
     /// 0 (the default) is a plastic impact: the contact closes and stays closed while λ ≥ 0.
     pub restitution: f64,
     /// Relative accuracy of event times: the bracket around an event is narrowed to
-    /// `event_tolerance · (|t| + h)`. Default 1e-13 (the issue asks for ≤ 1e-12).
+    /// `event_tolerance · (|t| + h)`. Default 1e-13 (events are located to ≤ 1e-12).
     pub event_tolerance: f64,
     /// Mode changes allowed within one step before the step fails with
     /// [`Error::TooManyEvents`] (a Zeno sequence of impacts, or an inconsistent friction mode).
