@@ -295,7 +295,7 @@ fn mass_matrix<
             }
             // a above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ), the same term into both mirrored entries (twice
             // into a diagonal one).
-            for a in 0..b {
+            for (a, da) in jacobian.iter().enumerate().take(b) {
                 if !M::ANCESTORS[b][a] {
                     continue;
                 }
@@ -304,7 +304,7 @@ fn mass_matrix<
                     let Seed::Coordinate(cr) = *seed_r else {
                         continue;
                     };
-                    let term = dot(&jacobian[a], r, s);
+                    let term = dot(da, r, s);
                     m[(cr, cs)] += term;
                     m[(cs, cr)] += term;
                 }
