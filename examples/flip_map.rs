@@ -200,6 +200,8 @@ pub fn draw(
     chart
         .configure_mesh()
         .disable_mesh()
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 15))
         .x_desc("θ₁ (rad)")
         .y_desc("θ₂ (rad)")
         .draw()?;
@@ -222,6 +224,8 @@ pub fn draw(
     bar.configure_mesh()
         .disable_mesh()
         .disable_x_axis()
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 15))
         .y_desc("log₁₀ flip time (s)")
         .draw()?;
     let steps = 100;
