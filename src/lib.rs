@@ -71,6 +71,7 @@ pub use lagrange_core::mechanism::Mechanism;
 pub use lagrange_core::model::{Coordinates, State};
 pub use lagrange_core::validated::Validated;
 
+pub use lagrange_core::ensemble;
 pub use lagrange_core::{
     analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model,
     scalar_ext, tree, validated,

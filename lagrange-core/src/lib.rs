@@ -8,6 +8,7 @@
 //! - [`mechanism`]: the user-facing [`Mechanism`] trait, and [`Validated`] for parameters checked once;
 //! - [`integrate`]: the integrators, generic over every mechanism;
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
+//! - [`ensemble`]: one computation over many parameters or initial states, on every core;
 //! - [`error`]: typed errors; nothing here panics on user input.
 //!
 //! Users depend on the `lagrange` facade crate, which exports the user-facing items by name and
@@ -16,6 +17,7 @@
 pub mod analysis;
 pub mod constraints;
 pub mod dynamics;
+pub mod ensemble;
 pub mod error;
 pub mod geometry;
 pub mod integrate;
