@@ -1,7 +1,8 @@
 //! The equations of motion of a [`Model`], by automatic differentiation.
 //!
 //! With Cartesian coordinates x(q, t), masses μ and Jacobian J = ∂x/∂q (see [`crate::model`]),
-//! Lagrange's equations d/dt(∂T/∂q̇ₖ) − ∂T/∂qₖ = 𝓕ₖ become (DESIGN §2; the lecture's "golden rule")
+//! Lagrange's equations d/dt(∂T/∂q̇ₖ) − ∂T/∂qₖ = 𝓕ₖ become (Goldstein, Poole & Safko,
+//! *Classical Mechanics*, 3rd ed., §1.4; Cross, Caltech Ph106 Lecture 4, the "golden rule")
 //!
 //! ```text
 //! M(q,t) q̈ = 𝓕 − b,    M = Jᵀ diag(μ) J,    b = Jᵀ diag(μ) a,    a = d²/ds² x(q + s q̇, t + s)|₀,

@@ -11,8 +11,8 @@
 //!
 //! so each row's own displacement dᵢ needs dual numbers seeded only on the few coordinates S(i) it
 //! names (a chain link: one), never on all N. Summing Lagrange's terms over the tree
-//! (DESIGN §2, "the point-mass form"; the composite-body idea of Featherstone, *Rigid Body Dynamics
-//! Algorithms*, 2008, §6.2, for translations):
+//! (the composite-rigid-body idea of Featherstone, *Rigid Body Dynamics Algorithms*, 2008, §6.2,
+//! for bodies that only translate relative to their parents):
 //!
 //! ```text
 //! M = Σ_{a, b} m(a, b) Dₐᵀ D_b,           m(a, b) = mass of the rows below both a and b,

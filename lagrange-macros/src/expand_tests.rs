@@ -1,7 +1,7 @@
 //! Expansion tests: each declaration is expanded, pretty-printed and compared with a snapshot in
 //! `tests/expand/`. Run with `LAGRANGE_BLESS=1` to rewrite the snapshots after a deliberate change
-//! (and read the diff). The assertions below pin down what DESIGN §3 promises: only the effects a
-//! declaration calls for are generated.
+//! (and read the diff). The assertions below pin down that only the effects a declaration calls for
+//! are generated (README, "How it works").
 
 use crate::expand::expand;
 use proc_macro2::TokenStream;

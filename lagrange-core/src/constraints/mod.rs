@@ -17,7 +17,7 @@
 //! | [`Unilateral`](ConstraintKind::Unilateral) | c(q, t, x) ≥ 0 | ∂c/∂q | as holonomic, while in contact | λ ≥ 0 (pushes only) |
 //! | [`Friction`](ConstraintKind::Friction) | slip velocity s = S(q, t) q̇ + s₀(q, t) | S = ∂s/∂q̇ | as velocity, while sticking | see below |
 //!
-//! This is the KKT system of DESIGN §2, [M −Rᵀ; R 0][q̈; λ] = [𝓕 − b; −β], the index-1 form of
+//! This is the KKT system [M −Rᵀ; R 0][q̈; λ] = [𝓕 − b; −β], the index-1 form of
 //! the equations of motion of a constrained mechanical system (Hairer & Wanner, *Solving Ordinary
 //! Differential Equations II*, 2nd ed., §VII.1, eq. (1.46); Lagrange multipliers for
 //! nonholonomic constraints linear in the velocities: Goldstein, Poole & Safko, *Classical
