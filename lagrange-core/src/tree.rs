@@ -226,9 +226,9 @@ pub fn equations_of_motion<
             }
             if let Some(p) = body.parent {
                 let ip = M::BODIES[p].row + k;
-                let (f, b) = (force[i], inertia[i]);
-                force[ip] += f;
-                inertia[ip] += b;
+                let (row_force, row_inertia) = (force[i], inertia[i]);
+                force[ip] += row_force;
+                inertia[ip] += row_inertia;
             }
         }
         if let Some(p) = body.parent {
@@ -243,8 +243,8 @@ pub fn equations_of_motion<
     }
 }
 
-/// M = Σ_b C_b (D_bᵀ D_b + Σ_{a above b} (Dₐᵀ D_b + D_bᵀ Dₐ)): every body walks up through its
-/// ancestors, one dot product over its rows per pair of seeds. Mirrored entries receive the same
+/// M = Σ_b C_b (D_bᵀ D_b + Σ_{a above b} (Dₐᵀ D_b + D_bᵀ Dₐ)): every body is paired with the
+/// ancestors [`Tree::ANCESTORS`] lists, one dot product over its rows per pair of seeds. Mirrored entries receive the same
 /// terms in the same order, so M is exactly symmetric.
 #[inline(always)]
 fn mass_matrix<
