@@ -22,7 +22,7 @@
 //! where αᵢ = d²/ds² dᵢ(q + s q̇, t + s)|₀ is a row's own velocity-product (and time) acceleration and
 //! Aᵢ the row's whole acceleration at q̈ = 0. "Below a" includes a. When b lies below a,
 //! m(a, b) = C_b, the composite mass of b's subtree; rows on different branches do not couple. So
-//! M is a walk from every row up through its ancestors (a chain: O(N²) products, one per entry, as
+//! M pairs every body with each of its ancestors (a chain: O(N²) products, one per entry, as
 //! in the hand-written form), the forces a backward sweep (O(K)), the accelerations a forward sweep.
 //!
 //! `#[mechanism]` implements [`Tree`] when it finds this structure in a declaration (see the
