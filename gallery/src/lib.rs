@@ -10,6 +10,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 pub mod plot;
+pub mod scenes;
 
 /// One simulated quantity against its exact value.
 #[derive(Clone, Debug)]

@@ -66,6 +66,8 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     rough_ramp::run,
     rough_wedge::run,
     gyroscope::run,
+    lagrange_gallery::scenes::rough_plane::run,
+    lagrange_gallery::scenes::pushed_block::run,
 ];
 
 fn main() {

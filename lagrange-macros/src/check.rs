@@ -88,8 +88,21 @@ pub struct Force<'a> {
 /// A constraint row, in declaration order among constraints.
 pub struct ConstraintRow<'a> {
     pub decl: &'a Decl,
-    /// For a friction row, the index of its contact (normal) row.
+    /// For a friction row, the index of its contact (normal) row among the constraint items.
     pub normal: Option<usize>,
+    /// A friction item whose slip velocity is a `Vec2` (the Coulomb cone): two runtime rows.
+    pub cone: bool,
+}
+
+impl ConstraintRow<'_> {
+    /// Runtime rows of the item: 2 for a friction cone, 1 otherwise.
+    pub fn width(&self) -> usize {
+        if self.cone {
+            2
+        } else {
+            1
+        }
+    }
 }
 
 /// A checked declaration: what the expansion works from.
@@ -120,6 +133,16 @@ pub struct Model<'a> {
 }
 
 impl<'a> Model<'a> {
+    /// The first runtime constraint row of constraint item `item` (a friction cone takes two).
+    pub fn constraint_row(&self, item: usize) -> usize {
+        self.constraints[..item].iter().map(ConstraintRow::width).sum()
+    }
+
+    /// Runtime constraint rows in total.
+    pub fn constraint_row_count(&self) -> usize {
+        self.constraint_row(self.constraints.len())
+    }
+
     /// Degrees of freedom: every element of every coordinate.
     pub fn dof(&self) -> usize {
         crate::ast::slot_count(self.coords)
@@ -208,7 +231,12 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
             .decls
             .iter()
             .filter(|d| d.kind().is_constraint())
-            .map(|decl| ConstraintRow { decl, normal: None })
+            .map(|decl| ConstraintRow {
+                decl,
+                normal: None,
+                cone: decl.kind() == Kind::Friction
+                    && return_type_name(decl).as_deref() == Some("Vec2"),
+            })
             .collect(),
         free_names: HashMap::new(),
         rheonomic: false,
@@ -518,7 +546,15 @@ fn check_function<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) {
             Context::Force
         }
         Kind::Friction => {
-            expect_return_type(cx, decl, &["f64"], "the slip velocity");
+            // `#[friction(..)] fn slip() -> Vec3`: a slip velocity lies in the tangent plane.
+            expect_return_type(
+                cx,
+                decl,
+                &["f64", "Vec2"],
+                "the slip velocity: along one tangent direction (planar friction), or its \
+                 components along two orthonormal tangent directions (friction in the tangent \
+                 plane, the Coulomb cone)",
+            );
             check_friction(cx, model, decl);
             Context::Force
         }
@@ -848,6 +884,23 @@ fn check_friction(cx: &Ctxt, model: &mut Model, decl: &Decl) {
         None => cx.error_spanned_by(on, format!("`{on}` is not a `#[constraint]`, `#[velocity_constraint]` or `#[unilateral]` of this mechanism")),
         Some(n) => {
             let row = model.constraints.iter().position(|c| std::ptr::eq(c.decl, decl)).unwrap();
+            // `#[friction(on = floor)] fn slip() -> Vec2` and another friction on `floor`: the cone
+            // already bounds the whole tangential force.
+            let cone = model.constraints[row].cone;
+            if let Some(other) = model
+                .constraints
+                .iter()
+                .find(|c| c.normal == Some(n) && (cone || c.cone))
+            {
+                cx.error_spanned_by(
+                    on,
+                    format!(
+                        "`{on}` already has friction `{}`: friction in the tangent plane (a `Vec2` \
+                         slip velocity) is the whole friction law of its contact",
+                        other.decl.ident()
+                    ),
+                );
+            }
             model.constraints[row].normal = Some(n);
         }
     }

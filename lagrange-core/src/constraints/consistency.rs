@@ -79,7 +79,7 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
                     pen
                 }
             }
-            ConstraintKind::Friction { .. } => 0.0,
+            ConstraintKind::Friction { .. } | ConstraintKind::FrictionCone { .. } => 0.0,
         };
         if !(r <= tol) {
             violated.push((i, r));
@@ -246,7 +246,7 @@ pub fn consistent_state_holding<
             }
         }
     }
-    friction_rows_follow(&M::KINDS, &mut mode, &cr.value);
+    friction_rows_follow(&M::KINDS, &mut mode, &cr.value, None);
     let position_rows = (0..C)
         .filter(|&i| mode.enforced(i) && M::KINDS[i].is_position())
         .count();

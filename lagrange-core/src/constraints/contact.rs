@@ -1,5 +1,6 @@
 //! [`ContactRk4`]: RK4 with the constraint mode fixed during a step and mode changes located in time.
 
+use super::cone;
 use super::solve::{accelerations_in_mode, worst_violation};
 use super::{
     check_consistent, infer_mode, project, ConstraintKind, Constraints, Mode, RowMode,
@@ -110,6 +111,8 @@ pub struct ModeChange {
 /// | unilateral, in contact | λ | the contact would pull | separated |
 /// | friction, sliding with sign σ | σ·s | the slip velocity reaches 0 | s set to 0 exactly, then stick if μₛ holds, else slide the other way |
 /// | friction, sticking | μₛ|λₙ| − |λₜ| | static friction is exceeded | slide against λₜ |
+/// | friction cone, sliding | s·ŝ_ref (ŝ_ref: the slip direction at the step's start) | the slip stops | s set to 0, then stick if μₛ holds, else slide against the stick force |
+/// | friction cone, sticking | μₛ|λₙ| − |(λⱼ, λₖ)| | static friction is exceeded | slide along −λ/|λ| |
 ///
 /// When an event function is negative at the end of a step, the step length τ at which it is zero
 /// is found by the Illinois variant of regula falsi (Dowell & Jarratt, BIT 11 (1971) 168–174) on
@@ -173,8 +176,12 @@ fn event_values<M: Constraints<N, K, C>, const N: usize, const K: usize, const C
     };
     let x = model.cartesian(t, q);
     let c = model.position_constraints(t, q, &x);
-    let needs_slip =
-        (0..C).any(|i| matches!(mode.rows[i], RowMode::SlipPositive | RowMode::SlipNegative));
+    let needs_slip = (0..C).any(|i| {
+        matches!(
+            mode.rows[i],
+            RowMode::SlipPositive | RowMode::SlipNegative | RowMode::Sliding
+        )
+    });
     let s = if needs_slip {
         let (x, x_dot) = crate::dynamics::cartesian_velocities(model, t, q, v);
         model.velocity_constraints(t, q, v, &x, &x_dot)
@@ -188,6 +195,14 @@ fn event_values<M: Constraints<N, K, C>, const N: usize, const K: usize, const C
         (ConstraintKind::Friction { .. }, RowMode::SlipNegative) => -s[i],
         (ConstraintKind::Friction { normal }, RowMode::Stick) => {
             model.friction_coefficients(i).stiction * lambda[normal].abs() - lambda[i].abs()
+        }
+        // A cone's pair has one event, on its first row: the slip along the step's reference
+        // direction, or the margin of static friction.
+        (ConstraintKind::FrictionCone { partner, .. }, RowMode::Sliding) if i < partner => {
+            s[i] * mode.reference[i] + s[partner] * mode.reference[partner]
+        }
+        (ConstraintKind::FrictionCone { normal, partner }, RowMode::Stick) if i < partner => {
+            -cone::stick_excess(model, i, partner, normal, &lambda)
         }
         _ => f64::INFINITY,
     }))
@@ -268,6 +283,8 @@ impl<const C: usize> ContactRk4<C> {
         let mut events: Vec<ModeChange> = Vec::new();
         loop {
             let span = t_end - t;
+            // A sliding cone continues its slip direction of this (sub)step's start.
+            cone::refresh_references(model, t, &q, &v, span, &mut mode)?;
             let (q1, v1) = substep(model, t, &q, &v, span, &mode)?;
             let phi1 = event_values(model, t_end, &q1, &v1, &mode)?;
             // A contact that bounced off (disarmed, separating at the start of the sub-step) can
@@ -431,21 +448,7 @@ impl<const C: usize> ContactRk4<C> {
         row: usize,
     ) -> Result<()> {
         let follow = |mode: &mut Mode<C>, slip: &[f64; C]| {
-            for j in 0..C {
-                if let ConstraintKind::Friction { normal } = M::KINDS[j] {
-                    if normal == row || !mode.enforced(normal) {
-                        mode.rows[j] = if !mode.enforced(normal) {
-                            RowMode::Inactive
-                        } else if slip[j].abs() <= CONSISTENCY_TOLERANCE {
-                            RowMode::Stick
-                        } else if slip[j] > 0.0 {
-                            RowMode::SlipPositive
-                        } else {
-                            RowMode::SlipNegative
-                        };
-                    }
-                }
-            }
+            super::mode::friction_rows_follow(&M::KINDS, mode, slip, Some(row));
         };
         match (M::KINDS[row], mode.rows[row]) {
             (ConstraintKind::Unilateral, RowMode::Inactive) => {
@@ -457,7 +460,7 @@ impl<const C: usize> ContactRk4<C> {
                 mode.rows[row] = RowMode::Active;
                 if approach < 0.0 {
                     let use_row: [bool; C] = std::array::from_fn(|i| {
-                        mode.enforced(i) && !matches!(M::KINDS[i], ConstraintKind::Friction { .. })
+                        mode.enforced(i) && M::KINDS[i].friction_normal().is_none()
                     });
                     // Lower the contact's rate from ċ⁻ to −e ċ⁻, the others' to 0.
                     let decrease: [f64; C] = std::array::from_fn(|i| {
@@ -467,7 +470,7 @@ impl<const C: usize> ContactRk4<C> {
                             cr.rate[i]
                         }
                     });
-                    let mut velocity_only = Mode { rows: mode.rows };
+                    let mut velocity_only = *mode;
                     for i in 0..C {
                         if !use_row[i] {
                             velocity_only.rows[i] = RowMode::Inactive;
@@ -499,6 +502,20 @@ impl<const C: usize> ContactRk4<C> {
                     RowMode::SlipPositive
                 };
             }
+            (ConstraintKind::FrictionCone { partner, .. }, RowMode::Sliding) => {
+                // The slip stopped: both tangent slips set to zero, then the stick test below.
+                mode.rows[row] = RowMode::Stick;
+                mode.rows[partner] = RowMode::Stick;
+                mode.reference[row] = 0.0;
+                mode.reference[partner] = 0.0;
+                mode.stopping[row] = false;
+                mode.stopping[partner] = false;
+                project(model, t, q, v, mode)?;
+            }
+            (ConstraintKind::FrictionCone { partner, .. }, RowMode::Stick) => {
+                let lambda = accelerations_in_mode(model, t, q, v, mode)?.multipliers;
+                cone::break_stick(mode, row, partner, &lambda);
+            }
             _ => {}
         }
         // Complementarity of the new mode (a closed contact that pulls opens, a stick that needs
@@ -507,16 +524,7 @@ impl<const C: usize> ContactRk4<C> {
             let lambda = accelerations_in_mode(model, t, q, v, mode)?.multipliers;
             match worst_violation(model, mode, &lambda) {
                 None => break,
-                Some((i, new)) => {
-                    mode.rows[i] = new;
-                    if new == RowMode::Inactive {
-                        for j in 0..C {
-                            if M::KINDS[j] == (ConstraintKind::Friction { normal: i }) {
-                                mode.rows[j] = RowMode::Inactive;
-                            }
-                        }
-                    }
-                }
+                Some((i, new)) => super::mode::apply_fix::<M, N, K, C>(mode, i, new, &lambda),
             }
         }
         project(model, t, q, v, mode)?;

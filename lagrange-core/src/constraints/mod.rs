@@ -41,8 +41,22 @@
 //! - **sticking** (sⱼ = 0): the row is an active velocity constraint sⱼ = 0 and fⱼ = λⱼ is its
 //!   multiplier, admissible while |λⱼ| ≤ μₛ|λₙ|.
 //!
-//! Friction is planar (a scalar slip velocity per row). For a contact in space declare two rows with
-//! the two tangent directions: that is the *anisotropic* (box) Coulomb law, not the circular cone.
+//! A [`Friction`](ConstraintKind::Friction) row is planar: one scalar slip velocity. Two such rows on
+//! one contact give the *anisotropic* (box) law, each component bounded on its own.
+//!
+//! **Friction in a tangent plane** (the isotropic Coulomb cone, declared with a `Vec2` slip
+//! velocity): a [`FrictionCone`](ConstraintKind::FrictionCone) pair of rows (j, k) carries the slip
+//! velocity s = (sⱼ, sₖ), its components along two orthonormal tangent directions at the contact, and
+//! the tangential force f = (fⱼ, fₖ) with generalized force fⱼSⱼ + fₖSₖ. Coulomb's law in its cone
+//! form (Stewart, "Rigid-body dynamics with friction and impact", SIAM Review 42(1), 2000,
+//! pp. 3–39: |F_t| ≤ μN, and F_t = −μN v_t/|v_t| while sliding):
+//! - **sliding** (|s| > 0): f = −μₖ|λₙ| ŝ, ŝ = s/|s|. The direction depends on the state, not only on
+//!   the mode, so unlike the planar row the coefficient of each tangent row in the Schur system is
+//!   −μₖŝⱼ (still solved together with λₙ by LU);
+//! - **sticking** (s = 0): both rows are active velocity constraints with multipliers fⱼ, fₖ,
+//!   admissible while |f| = √(fⱼ² + fₖ²) ≤ μₛ|λₙ|; beyond it the contact starts sliding with ŝ
+//!   opposite to the force static friction would have had to supply (exact when the tangential
+//!   inverse inertia is isotropic, a particle or a body sliding without rolling).
 //!
 //! # Modes and events
 //!
@@ -52,7 +66,10 @@
 //! friction can hold it). [`ContactRk4`] integrates with the mode fixed during a step and locates the
 //! instant a mode changes — contact, release (λ = 0), slip velocity reaching 0, static friction
 //! exceeded — to 1e-12 relative by the Illinois method on the step length, so mode changes happen
-//! exactly once and never chatter.
+//! exactly once and never chatter. A sliding cone has no sign to fix during a step, so its slip
+//! direction at the step's start, [`Mode::reference`], plays that part: the force opposes
+//! ŝ·sign(ŝ·ŝ_ref), which continues smoothly through the instant the slip stops, and that instant is
+//! the zero of s·ŝ_ref.
 //!
 //! **Impact law**: when a separated unilateral contact closes (c reaches 0 with ċ < 0), the
 //! velocities jump by an impulse along the contact row (and the other active rows, which stay
@@ -183,6 +200,7 @@
 // `!(x > tol)` is deliberate: it also rejects NaN.
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
+mod cone;
 mod consistency;
 mod contact;
 mod forces;
@@ -221,6 +239,17 @@ pub enum ConstraintKind {
         /// Index of the row whose multiplier is the normal force.
         normal: usize,
     },
+    /// One of the two rows of isotropic Coulomb friction in a tangent plane (the friction cone) at
+    /// the contact of row `normal`: its slip velocity is the component of the tangential relative
+    /// velocity along one of two orthonormal tangent directions, `partner` the row of the other.
+    /// The friction force (f₁, f₂) on the pair obeys |f| ≤ μ|λₙ| and opposes the slip direction
+    /// while sliding; see the [module docs](self).
+    FrictionCone {
+        /// Index of the row whose multiplier is the normal force.
+        normal: usize,
+        /// Index of the other tangent row of the same contact.
+        partner: usize,
+    },
 }
 
 impl ConstraintKind {
@@ -232,8 +261,19 @@ impl ConstraintKind {
     pub const fn is_velocity(self) -> bool {
         matches!(
             self,
-            ConstraintKind::Velocity | ConstraintKind::Friction { .. }
+            ConstraintKind::Velocity
+                | ConstraintKind::Friction { .. }
+                | ConstraintKind::FrictionCone { .. }
         )
+    }
+    /// The normal row of a friction row (planar or cone), `None` for other kinds.
+    pub const fn friction_normal(self) -> Option<usize> {
+        match self {
+            ConstraintKind::Friction { normal } | ConstraintKind::FrictionCone { normal, .. } => {
+                Some(normal)
+            }
+            _ => None,
+        }
     }
 }
 
@@ -259,13 +299,27 @@ pub enum RowMode {
     SlipPositive,
     /// A friction row sliding with s < 0.
     SlipNegative,
+    /// Both rows of a friction cone sliding: the friction force is −μₖ|λₙ| times the unit slip
+    /// direction in the tangent plane (continued through [`Mode::reference`] within a step).
+    Sliding,
 }
 
 /// Which constraint rows are enforced, and how friction rows act.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Mode<const C: usize> {
     /// One entry per row, in declaration order.
     pub rows: [RowMode; C],
+    /// For the two rows of a sliding friction cone: the unit slip direction (its components along
+    /// the two tangent rows) at the start of the current step. The friction force opposes ŝ·sign(ŝ·ŝ_ref):
+    /// the slip direction, continued smoothly past an instant where the slip stops, so that the
+    /// event "slip stopped" (s·ŝ_ref = 0) can be located instead of the force flipping inside a step.
+    /// Zero for every other row.
+    pub reference: [f64; C],
+    /// For the rows of a sliding friction cone whose slip is predicted to stop within the current
+    /// step: the force is held at −μₖ|λₙ| ŝ_ref for the step. Near a stop the slip direction turns
+    /// without bound (ŝ is not smooth at s = 0), and a step through it would swing s around the
+    /// origin instead of through it; held, s crosses zero along a line and the stop is located.
+    pub stopping: [bool; C],
 }
 
 impl<const C: usize> Mode<C> {
@@ -273,9 +327,13 @@ impl<const C: usize> Mode<C> {
     pub fn all_active<M: Constraints<N, K, C>, const N: usize, const K: usize>() -> Self {
         Mode {
             rows: std::array::from_fn(|i| match M::KINDS[i] {
-                ConstraintKind::Friction { .. } => RowMode::Stick,
+                ConstraintKind::Friction { .. } | ConstraintKind::FrictionCone { .. } => {
+                    RowMode::Stick
+                }
                 _ => RowMode::Active,
             }),
+            reference: [0.0; C],
+            stopping: [false; C],
         }
     }
     /// Whether row `i` is enforced as a constraint (contributes a row to the KKT system).
@@ -353,7 +411,7 @@ pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, 
     fn validate_constraints(&self) -> crate::Result<()> {
         check_declaration::<Self, N, K, C>()?;
         for (i, kind) in Self::KINDS.iter().enumerate() {
-            if let ConstraintKind::Friction { .. } = kind {
+            if kind.friction_normal().is_some() {
                 let Coulomb { kinetic, stiction } = self.friction_coefficients(i);
                 if !(kinetic.is_finite()
                     && stiction.is_finite()
@@ -380,11 +438,24 @@ pub fn check_declaration<
     const C: usize,
 >() -> crate::Result<()> {
     for (i, kind) in M::KINDS.iter().enumerate() {
-        if let ConstraintKind::Friction { normal } = *kind {
-            if normal >= C || matches!(M::KINDS[normal], ConstraintKind::Friction { .. }) {
+        if let Some(normal) = kind.friction_normal() {
+            if normal >= C || M::KINDS[normal].friction_normal().is_some() {
                 return Err(crate::Error::InvalidConstraintDeclaration {
                     constraint: M::NAMES[i],
                     reason: format!("friction must point at a contact row, got row {normal}"),
+                });
+            }
+        }
+        if let ConstraintKind::FrictionCone { normal, partner } = *kind {
+            let paired = partner < C
+                && partner != i
+                && M::KINDS[partner] == (ConstraintKind::FrictionCone { normal, partner: i });
+            if !paired {
+                return Err(crate::Error::InvalidConstraintDeclaration {
+                    constraint: M::NAMES[i],
+                    reason: format!(
+                        "a friction cone row needs a partner row on the same contact pointing back, got row {partner}"
+                    ),
                 });
             }
         }

@@ -1,6 +1,7 @@
 //! The constraint mode read from a state by complementarity: [`infer_mode`] and the helpers that
 //! decide which unilateral and friction rows are enforced.
 
+use super::cone;
 use super::rows::{always_active, constraint_rows};
 use super::{
     accelerations_in_mode, ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE,
@@ -31,7 +32,7 @@ pub fn infer_mode<M: Constraints<N, K, C>, const N: usize, const K: usize, const
             }
         }
     }
-    friction_rows_follow(&M::KINDS, &mut mode, &cr.value);
+    friction_rows_follow(&M::KINDS, &mut mode, &cr.value, None);
     for _ in 0..=2 * C {
         if always_active::<M, N, K, C>() {
             break;
@@ -39,45 +40,82 @@ pub fn infer_mode<M: Constraints<N, K, C>, const N: usize, const K: usize, const
         let sol = accelerations_in_mode(model, t, q, v, &mode)?;
         match worst_violation(model, &mode, &sol.multipliers) {
             None => break,
-            Some((i, new)) => {
-                mode.rows[i] = new;
-                if new == RowMode::Inactive {
-                    // A separated contact carries no friction.
-                    for j in 0..C {
-                        if M::KINDS[j] == (ConstraintKind::Friction { normal: i }) {
-                            mode.rows[j] = RowMode::Inactive;
-                        }
-                    }
-                }
-            }
+            Some((i, new)) => apply_fix::<M, N, K, C>(&mut mode, i, new, &sol.multipliers),
         }
     }
     Ok(mode)
 }
 
-/// Friction rows follow their contact (helper with the model type in scope).
+/// Switches row `i` to `new` as [`worst_violation`] asks: a separated contact carries no friction;
+/// a friction cone's stick breaks for both its rows, sliding against the stick force `lambda`.
+pub(crate) fn apply_fix<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+    mode: &mut Mode<C>,
+    i: usize,
+    new: RowMode,
+    lambda: &[f64; C],
+) {
+    if let (Some((k, _)), RowMode::Sliding) = (cone::first_of_pair(M::KINDS[i], i), new) {
+        cone::break_stick(mode, i, k, lambda);
+        return;
+    }
+    mode.rows[i] = new;
+    if new == RowMode::Inactive {
+        for j in 0..C {
+            if M::KINDS[j].friction_normal() == Some(i) {
+                mode.rows[j] = RowMode::Inactive;
+                mode.reference[j] = 0.0;
+            mode.stopping[j] = false;
+                mode.stopping[j] = false;
+            }
+        }
+    }
+}
+
+/// Friction rows follow their contact (helper with the model type in scope): rows of a separated
+/// contact are inactive; the others stick where the slip is within [`CONSISTENCY_TOLERANCE`] of zero
+/// and slide with it elsewhere. `only_normal` restricts the update to the friction of one contact.
 pub(super) fn friction_rows_follow<const C: usize>(
     kinds: &[ConstraintKind; C],
     mode: &mut Mode<C>,
     slip: &[f64; C],
+    only_normal: Option<usize>,
 ) {
     for j in 0..C {
-        if let ConstraintKind::Friction { normal } = kinds[j] {
-            mode.rows[j] = if !mode.enforced(normal) {
-                RowMode::Inactive
-            } else if slip[j].abs() <= CONSISTENCY_TOLERANCE {
-                RowMode::Stick
-            } else if slip[j] > 0.0 {
-                RowMode::SlipPositive
-            } else {
-                RowMode::SlipNegative
-            };
+        let Some(normal) = kinds[j].friction_normal() else {
+            continue;
+        };
+        if only_normal.is_some_and(|n| n != normal) && mode.enforced(normal) {
+            continue;
+        }
+        if !mode.enforced(normal) {
+            mode.rows[j] = RowMode::Inactive;
+            mode.reference[j] = 0.0;
+            mode.stopping[j] = false;
+            continue;
+        }
+        match kinds[j] {
+            ConstraintKind::FrictionCone { partner, .. } => {
+                if j < partner {
+                    cone::follow_slip(mode, j, partner, slip);
+                }
+            }
+            _ => {
+                mode.rows[j] = if slip[j].abs() <= CONSISTENCY_TOLERANCE {
+                    RowMode::Stick
+                } else if slip[j] > 0.0 {
+                    RowMode::SlipPositive
+                } else {
+                    RowMode::SlipNegative
+                };
+            }
         }
     }
 }
 
 /// The most violated complementarity condition of a solved mode, and the row mode that fixes it:
-/// a contact pulling (λ < 0) separates; a stick needing more than μₛ|λₙ| slides against it.
+/// a contact pulling (λ < 0) separates; a stick needing more than μₛ|λₙ| slides against it (for a
+/// friction cone, the pair's first row reports |(λⱼ, λₖ)| > μₛ|λₙ| and the fix
+/// [`RowMode::Sliding`], applied to both rows by [`apply_fix`]).
 pub(crate) fn worst_violation<
     M: Constraints<N, K, C>,
     const N: usize,
@@ -101,6 +139,10 @@ pub(crate) fn worst_violation<
                 };
                 (lambda[i].abs() - bound, fix)
             }
+            (ConstraintKind::FrictionCone { normal, partner }, RowMode::Stick) if i < partner => (
+                cone::stick_excess(model, i, partner, normal, lambda),
+                RowMode::Sliding,
+            ),
             _ => continue,
         };
         if excess > 0.0 && worst.is_none_or(|w| excess > w.2) {

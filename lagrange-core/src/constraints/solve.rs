@@ -1,6 +1,7 @@
 //! The Schur-complement solve of the KKT system in a mode: [`ConstrainedAccelerations`],
 //! [`accelerations_in_mode`] (sliding friction included) and [`accelerations`].
 
+use super::cone;
 use super::rows::{always_active, constraint_rows, real, rows_from_pass};
 use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
 use crate::dynamics;
@@ -25,7 +26,7 @@ pub struct ConstrainedAccelerations<S: Scalar, const N: usize, const C: usize> {
     pub accelerations: [S; N],
     /// λᵢ: the generalized constraint force of row i is λᵢ·rᵢ. For a friction row, the tangential
     /// force along its slip direction (−μₖ·sign(s)·|λₙ| while sliding, the stick multiplier while
-    /// sticking); zero for rows not enforced.
+    /// sticking; for a cone's row, −μₖ|λₙ|ŝᵢ while sliding); zero for rows not enforced.
     pub multipliers: [S; C],
 }
 
@@ -187,6 +188,9 @@ pub fn accelerations_in_mode<
     // A sliding row acts when its contact is enforced.
     let sliding: [bool; C] = std::array::from_fn(|j| match M::KINDS[j] {
         ConstraintKind::Friction { normal } => slip_sign(mode.rows[j]) != 0.0 && enforced[normal],
+        ConstraintKind::FrictionCone { normal, .. } => {
+            mode.rows[j] == RowMode::Sliding && enforced[normal]
+        }
         _ => false,
     });
     let mut multipliers = [S::zero(); C];
@@ -241,7 +245,20 @@ pub fn accelerations_in_mode<
     }
     // Sliding friction: the generalized force of normal row n becomes λₙ(rₙ − Σⱼ μₖ σⱼ sₙ Sⱼ), with
     // sₙ = sign(λₙ) (+1 for a unilateral contact, whose λ ≥ 0 while active). The sign of a bilateral
-    // normal force is taken from the frictionless solve and re-checked.
+    // normal force is taken from the frictionless solve and re-checked. σⱼ is the slip sign of a
+    // planar row, and the component ŝⱼ of the unit slip direction of a cone's row.
+    let direction: [S; C] = std::array::from_fn(|j| match M::KINDS[j] {
+        ConstraintKind::FrictionCone { .. } if sliding[j] && mode.stopping[j] => {
+            S::from(mode.reference[j])
+        }
+        ConstraintKind::FrictionCone { partner, .. } if sliding[j] => cone::sliding_direction(
+            cr.value[j],
+            cr.value[partner],
+            mode.reference[j],
+            mode.reference[partner],
+        ),
+        _ => S::from(slip_sign(mode.rows[j])),
+    });
     let mut sign_n: [f64; C] = std::array::from_fn(|n| match M::KINDS[n] {
         ConstraintKind::Unilateral => 1.0,
         _ => {
@@ -275,9 +292,9 @@ pub fn accelerations_in_mode<
             }
         }
         for j in 0..C {
-            if let (true, ConstraintKind::Friction { normal }) = (sliding[j], M::KINDS[j]) {
+            if let (true, Some(normal)) = (sliding[j], M::KINDS[j].friction_normal()) {
                 let mu = model.friction_coefficients(j).kinetic;
-                columns[normal] -= y[j] * S::from(mu * slip_sign(mode.rows[j]) * sign_n[normal]);
+                columns[normal] -= y[j] * direction[j] * S::from(mu * sign_n[normal]);
             }
         }
         let mut a = SMatrix::<S, C, C>::zeros();
@@ -318,9 +335,9 @@ pub fn accelerations_in_mode<
         }
     }
     for j in 0..C {
-        if let (true, ConstraintKind::Friction { normal }) = (sliding[j], M::KINDS[j]) {
+        if let (true, Some(normal)) = (sliding[j], M::KINDS[j].friction_normal()) {
             let mu = model.friction_coefficients(j).kinetic;
-            multipliers[j] = lambda[normal] * (-mu * slip_sign(mode.rows[j]) * sign_n[normal]);
+            multipliers[j] = lambda[normal] * direction[j] * S::from(-mu * sign_n[normal]);
         }
     }
     finish::<M, S, N, K, C>(qdd, multipliers, t, q)

@@ -15,19 +15,37 @@ pub(super) fn constraints_impl(model: &Model) -> TokenStream {
         model.params_ident,
         lit(model.dof()),
         lit(model.rows),
-        lit(model.constraints.len()),
+        lit(model.constraint_row_count()),
     );
-    let names = model.constraints.iter().map(|r| r.decl.ident().to_string());
+    // A friction cone is two rows, `name.x` and `name.y` (the components of its `Vec2`).
+    let names = model.constraints.iter().flat_map(|r| {
+        let name = r.decl.ident().to_string();
+        if r.cone {
+            vec![format!("{name}.x"), format!("{name}.y")]
+        } else {
+            vec![name]
+        }
+    });
     let kinds = model
         .constraints
         .iter()
-        .map(|r| match (r.decl.kind(), r.normal) {
-            (Kind::Constraint, _) => quote!(#constraints::ConstraintKind::Holonomic),
-            (Kind::Unilateral, _) => quote!(#constraints::ConstraintKind::Unilateral),
-            (Kind::VelocityConstraint, _) => quote!(#constraints::ConstraintKind::Velocity),
+        .enumerate()
+        .flat_map(|(item, r)| match (r.decl.kind(), r.normal) {
+            (Kind::Constraint, _) => vec![quote!(#constraints::ConstraintKind::Holonomic)],
+            (Kind::Unilateral, _) => vec![quote!(#constraints::ConstraintKind::Unilateral)],
+            (Kind::VelocityConstraint, _) => vec![quote!(#constraints::ConstraintKind::Velocity)],
             (_, normal) => {
-                let normal = lit(normal.unwrap_or_default());
-                quote!(#constraints::ConstraintKind::Friction { normal: #normal })
+                let normal = lit(model.constraint_row(normal.unwrap_or_default()));
+                if r.cone {
+                    let row = model.constraint_row(item);
+                    let (first, second) = (lit(row), lit(row + 1));
+                    vec![
+                        quote!(#constraints::ConstraintKind::FrictionCone { normal: #normal, partner: #second }),
+                        quote!(#constraints::ConstraintKind::FrictionCone { normal: #normal, partner: #first }),
+                    ]
+                } else {
+                    vec![quote!(#constraints::ConstraintKind::Friction { normal: #normal })]
+                }
             }
         });
     let is_position = |kind: Kind| matches!(kind, Kind::Constraint | Kind::Unilateral);
@@ -61,7 +79,7 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
     let (n, k, c, d) = (
         lit(model.dof()),
         lit(model.rows),
-        lit(model.constraints.len()),
+        lit(model.constraint_row_count()),
         scalar(),
     );
     let prelude = prelude();
@@ -77,12 +95,21 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
         quote!(__q),
     );
     let bodies = bind_bodies(model);
-    let values = model.constraints.iter().map(|r| {
-        if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position {
+    // A friction cone's `Vec2` is evaluated once, before the array, and gives two rows.
+    let cones = model.constraints.iter().enumerate().filter(|(_, r)| r.cone && !position).map(|(item, r)| {
+        let block = lift::lift_block(&r.decl.block, &d);
+        let name = format_ident!("__cone_{}", item);
+        quote!(let #name: Vec2<__D> = #block;)
+    });
+    let values = model.constraints.iter().enumerate().flat_map(|(item, r)| {
+        if r.cone && !position {
+            let name = format_ident!("__cone_{}", item);
+            vec![quote!(#name.x), quote!(#name.y)]
+        } else if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position && !r.cone {
             let block = lift::lift_block(&r.decl.block, &d);
-            quote!({ let __row: __D = #block; __row })
+            vec![quote!({ let __row: __D = #block; __row })]
         } else {
-            quote!(<__D>::zero())
+            vec![quote!(<__D>::zero()); r.width()]
         }
     });
     let signature = if position {
@@ -106,6 +133,7 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
             #inputs
             #bodies
             #velocities
+            #(#cones)*
             [#(#values),*]
         }
     }
@@ -121,11 +149,12 @@ fn friction_fn(model: &Model) -> TokenStream {
         .iter()
         .enumerate()
         .filter(|(_, r)| r.decl.kind() == Kind::Friction)
-        .map(|(i, r)| {
-            let i = lit(i);
+        .map(|(item, r)| {
+            let row = model.constraint_row(item);
+            let rows = (row..row + r.width()).map(lit);
             let kinetic = r.decl.args.kinetic.as_ref();
             let stiction = r.decl.args.stiction.as_ref().or(kinetic);
-            quote!(#i => #constraints::Coulomb { kinetic: #kinetic, stiction: #stiction },)
+            quote!(#(#rows)|* => #constraints::Coulomb { kinetic: #kinetic, stiction: #stiction },)
         });
     quote! {
         #[allow(unused_variables, clippy::all)]

@@ -111,7 +111,7 @@ fn generate(model: &Model) -> TokenStream {
     let bodies = bodies_structs(model);
     let inherent = inherent_impl(model);
     let model_impl = model_impl(model);
-    let constrained = (!model.constraints.is_empty()).then_some(model.constraints.len());
+    let constrained = (!model.constraints.is_empty()).then_some(model.constraint_row_count());
     let tree = crate::structure::tree(model);
     let tree_items = tree.as_ref().map(|tree| tree::tree_items(model, tree));
     let mechanism_impl = mechanism_impl(
