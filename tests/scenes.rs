@@ -146,3 +146,13 @@ fn block_on_a_rough_ramp_sticks_or_slides_back() {
 fn wedge_and_block_with_friction() {
     assert_scene(rough_wedge::run);
 }
+
+#[test]
+fn puck_on_a_rough_plane_stops_where_the_closed_form_says() {
+    assert_scene(lagrange_gallery::scenes::rough_plane::run);
+}
+
+#[test]
+fn block_pushed_sideways_on_a_rough_incline() {
+    assert_scene(lagrange_gallery::scenes::pushed_block::run);
+}
