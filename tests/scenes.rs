@@ -1,56 +1,8 @@
-//! Every gallery scene against its closed form: the same `run` functions the gallery prints, each
-//! check carrying the tolerance its scene file argues from the method's error.
+//! Every gallery scene against its closed form: the same `run` functions the gallery prints
+//! (`lagrange_gallery::scenes`), each check carrying the tolerance its scene argues from the
+//! method's error.
 
-#[path = "../examples/atwood.rs"]
-#[allow(dead_code)]
-mod atwood;
-#[path = "../examples/breathing_ellipse.rs"]
-#[allow(dead_code)]
-mod breathing_ellipse;
-#[path = "../examples/cartesian_pendulum.rs"]
-#[allow(dead_code)]
-mod cartesian_pendulum;
-#[path = "../examples/four_bar.rs"]
-#[allow(dead_code)]
-mod four_bar;
-#[path = "../examples/gyroscope.rs"]
-#[allow(dead_code)]
-mod gyroscope;
-#[path = "../examples/hoop_bifurcation.rs"]
-#[allow(dead_code)]
-mod hoop_bifurcation;
-#[path = "../examples/pendulum.rs"]
-#[allow(dead_code)]
-mod pendulum;
-#[path = "../examples/ramp.rs"]
-#[allow(dead_code)]
-mod ramp;
-#[path = "../examples/rigid_triangle.rs"]
-#[allow(dead_code)]
-mod rigid_triangle;
-#[path = "../examples/rolling_wheel.rs"]
-#[allow(dead_code)]
-mod rolling_wheel;
-#[path = "../examples/rough_ramp.rs"]
-#[allow(dead_code)]
-mod rough_ramp;
-#[path = "../examples/rough_wedge.rs"]
-#[allow(dead_code)]
-mod rough_wedge;
-#[path = "../examples/small_oscillations.rs"]
-#[allow(dead_code)]
-mod small_oscillations;
-#[path = "../examples/sphere_release.rs"]
-#[allow(dead_code)]
-mod sphere_release;
-#[path = "../examples/wedge_block.rs"]
-#[allow(dead_code)]
-mod wedge_block;
-
-// Loaded once, as the mechanisms the statics scenes analyse.
-use hoop_bifurcation::scene as spinning_hoop;
-use small_oscillations::scene as double_pendulum;
-
+use lagrange_gallery::scenes::*;
 use lagrange_gallery::{table, Check};
 use std::path::PathBuf;
 
@@ -149,10 +101,10 @@ fn wedge_and_block_with_friction() {
 
 #[test]
 fn puck_on_a_rough_plane_stops_where_the_closed_form_says() {
-    assert_scene(lagrange_gallery::scenes::rough_plane::run);
+    assert_scene(rough_plane::run);
 }
 
 #[test]
 fn block_pushed_sideways_on_a_rough_incline() {
-    assert_scene(lagrange_gallery::scenes::pushed_block::run);
+    assert_scene(pushed_block::run);
 }

@@ -1,0 +1,263 @@
+//! The lecture's wedge and block (Cross, Caltech Ph106, Lecture 4, eqs. (27)–(32); the frictionless
+//! version is the `wedge_block` scene), now with Coulomb friction between block and wedge; the wedge
+//! (mass M) still slides freely on a frictionless floor. Coordinates: the wedge's position X and the
+//! block's position (bₓ, b_y). The wedge's face passes through (X, h) and slopes down at angle α; the
+//! block touches it through a unilateral contact c = n·(b − (X, h)) ≥ 0, n = (sin α, cos α), with
+//! friction on that contact, slip velocity s = t̂·(ḃ − (Ẋ, 0)), t̂ = (cos α, −sin α) (positive when
+//! the block slides down the face).
+//!
+//! Closed form while the block slides down (derived here; Newton's laws for the two bodies, as in
+//! Kleppner & Kolenkow, 2nd ed., problem 3.x for the frictionless case). With A the wedge's
+//! (horizontal) acceleration, a_r the block's acceleration down the face relative to the wedge, N the
+//! normal force and μₖN the friction on the block (up the face; down the face on the wedge):
+//!   block along n:   m A sin α = N − m g cos α
+//!   block along t̂:   m (A cos α + a_r) = m g sin α − μₖ N
+//!   wedge along x:   M A = −N (sin α − μₖ cos α)
+//! so, with k = sin α − μₖ cos α,
+//!   A = −m g cos α · k / (M + m sin α · k),   N = m (g cos α + A sin α),
+//!   a_r = g k − A (cos α + μₖ sin α),
+//! all constant. At μₖ = 0 this is the frictionless A = −m g sin α cos α / (M + m sin²α). Friction
+//! is internal: the total horizontal momentum M Ẋ + m ḃₓ stays 0 from rest, while the energy falls by
+//! the work of friction, μₖ N times the distance slid, ½ a_r t². With tan α ≤ μₛ the block sticks
+//! and, no horizontal external force acting, nothing moves.
+
+use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
+use lagrange::prelude::*;
+use crate::plot::{self, Series};
+use crate::Check;
+use std::path::Path;
+
+#[mechanism]
+pub mod rough_wedge {
+    /// X: the wedge's position on the floor; (bx, by): the block's position.
+    pub struct Coords {
+        pub x: f64,
+        pub bx: f64,
+        pub by: f64,
+    }
+
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct RoughWedge {
+        pub wedge_mass: f64,
+        pub block_mass: f64,
+        pub alpha: f64,
+        /// Height of the face's top edge above the wedge's reference point.
+        pub h: f64,
+        pub g: f64,
+        pub mu_k: f64,
+        pub mu_s: f64,
+    }
+
+    #[particle(mass = wedge_mass)]
+    fn wedge() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[particle(mass = block_mass)]
+    fn block() -> Vec2 {
+        vec2(bx, by)
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+
+    /// The face pushes the block along its normal (sin α, cos α) and cannot pull.
+    #[unilateral]
+    fn face() -> f64 {
+        (block.x - wedge.x) * alpha.sin() + (block.y - wedge.y - h) * alpha.cos()
+    }
+
+    /// Coulomb friction between block and face; slip velocity positive down the face.
+    #[friction(on = face, kinetic = mu_k, stiction = mu_s)]
+    fn face_friction() -> f64 {
+        (block_dot.x - wedge_dot.x) * alpha.cos() - (block_dot.y - wedge_dot.y) * alpha.sin()
+    }
+}
+
+const SCENE: &str = "wedge and block with friction";
+
+/// The closed form: (A, a_r, N) for coefficient μₖ.
+fn closed_form(sys: &rough_wedge::RoughWedge) -> (f64, f64, f64) {
+    let (m, big_m, mu, g) = (sys.block_mass, sys.wedge_mass, sys.mu_k, sys.g);
+    let (sn, cs) = sys.alpha.sin_cos();
+    let k = sn - mu * cs;
+    let big_a = -m * g * cs * k / (big_m + m * sn * k);
+    let normal = m * (g * cs + big_a * sn);
+    let a_r = g * k - big_a * (cs + mu * sn);
+    (big_a, a_r, normal)
+}
+
+pub fn run(plots: &Path) -> Vec<Check> {
+    use rough_wedge::{Coords, RoughWedge, State};
+    let sys = RoughWedge {
+        wedge_mass: 3.0,
+        block_mass: 1.0,
+        alpha: 0.5,
+        h: 1.0,
+        g: 9.81,
+        mu_k: 0.2,
+        mu_s: 0.3,
+    };
+    let (sn, cs) = sys.alpha.sin_cos();
+    let (big_a, a_r, normal) = closed_form(&sys);
+    // The block at rest a distance d₀ down the face.
+    let d0 = 0.3;
+    let s0 = State::at_rest(Coords {
+        x: 0.0,
+        bx: d0 * cs,
+        by: sys.h - d0 * sn,
+    });
+    let exact = |t: f64| {
+        let x_wedge = 0.5 * big_a * t * t;
+        let d = d0 + 0.5 * a_r * t * t;
+        [x_wedge, x_wedge + d * cs, sys.h - d * sn]
+    };
+
+    let mut stepper = ContactRk4::new(&sys, &s0, ContactOptions::default()).expect("stepper");
+    let starts_sliding = stepper.mode().rows == [RowMode::Active, RowMode::SlipPositive];
+    let mut s = s0;
+    let e0 = sys.energy(&s).expect("energy");
+    let (mut worst, mut worst_momentum) = (0.0f64, 0.0f64);
+    let (mut wedge_path, mut block_path) = (Vec::new(), Vec::new());
+    for _ in 0..1000 {
+        stepper.step(&sys, &mut s, 1e-3).expect("step");
+        let q = s.q.to_array();
+        let e = exact(s.t);
+        worst = (0..3).fold(worst, |acc, i| acc.max((q[i] - e[i]).abs()));
+        let p = sys.momenta(&s).expect("momenta");
+        worst_momentum = worst_momentum.max((p.x + p.bx).abs());
+        let b = sys.bodies(&s);
+        wedge_path.push((b.wedge.x, b.wedge.y));
+        block_path.push((b.block.x, b.block.y));
+    }
+    let t = s.t;
+    let f = constraint_forces(&sys, &s).expect("forces");
+    let dissipated = e0 - sys.energy(&s).expect("energy");
+    let friction_work = sys.mu_k * normal * 0.5 * a_r * t * t;
+    let sliding_events = stepper.events.len();
+    println!(
+        "{SCENE}: A = {big_a:.6} m/s², a_r = {a_r:.6} m/s², N = {normal:.6} N; |q − closed form| ≤ {worst:.1e} m \
+         after {t:.0} s; λ = ({:.6}, {:.6}) N; energy lost {dissipated:.6} J vs μₖN·½a_r t² = {friction_work:.6} J",
+        f.multipliers[0], f.multipliers[1]
+    );
+
+    // μ = 0 reproduces the frictionless textbook result.
+    let smooth = RoughWedge {
+        mu_k: 0.0,
+        mu_s: 0.0,
+        ..sys
+    };
+    let a_smooth = sys.block_mass * sys.g * sn * cs / (sys.wedge_mass + sys.block_mass * sn * sn);
+    let smooth_acc = constraint_forces(&smooth, &s0)
+        .expect("forces")
+        .accelerations[0];
+
+    // tan α ≤ μₛ: stuck, nothing moves.
+    let sticky = RoughWedge {
+        mu_k: 0.5,
+        mu_s: 0.6,
+        ..sys
+    };
+    let mut stuck = ContactRk4::new(&sticky, &s0, ContactOptions::default()).expect("stepper");
+    let starts_stuck = stuck.mode().rows == [RowMode::Active, RowMode::Stick];
+    let mut s_stuck = s0;
+    for _ in 0..1000 {
+        stuck.step(&sticky, &mut s_stuck, 1e-3).expect("step");
+    }
+    let (q_end, q_start) = (s_stuck.q.to_array(), s0.q.to_array());
+    let moved = (0..3).fold(0.0f64, |acc, i| acc.max((q_end[i] - q_start[i]).abs()));
+
+    let _ = plot::lines(
+        &plots.join("rough_wedge.svg"),
+        "Wedge and block with friction (μₖ = 0.2): paths over 1 s from rest",
+        "x",
+        "y",
+        &[
+            Series::new("wedge", wedge_path),
+            Series::new("block", block_path),
+        ],
+    );
+    vec![
+        Check::new(
+            SCENE,
+            "block slides down the face from rest, no mode change (1 = yes)",
+            f64::from(u8::from(starts_sliding && sliding_events == 0)),
+            1.0,
+            0.0,
+        ),
+        // Constant accelerations: RK4 integrates the quadratic motion exactly; round-off over 1000
+        // steps of positions ~1 m.
+        Check::new(
+            SCENE,
+            format!("max |q − closed form| over {t:.0} s (m)"),
+            worst,
+            0.0,
+            1e-12,
+        ),
+        // The multipliers from the KKT solve (the friction row's coupled to the normal row's by
+        // Coulomb's law, solved by LU) against the closed form: round-off.
+        Check::new(
+            SCENE,
+            "normal force λ = N = m(g cos α + A sin α)",
+            f.multipliers[0],
+            normal,
+            1e-12,
+        ),
+        Check::new(
+            SCENE,
+            "friction multiplier −μₖN (opposes the slip)",
+            f.multipliers[1],
+            -sys.mu_k * normal,
+            1e-12,
+        ),
+        Check::new(
+            SCENE,
+            "wedge acceleration Ẍ = A",
+            f.accelerations[0],
+            big_a,
+            1e-12,
+        ),
+        // Friction is internal and the floor frictionless: M Ẋ + m ḃₓ = 0 from rest; absolute error
+        // against momenta ~ m a_r t ≈ 2 kg m/s, round-off.
+        Check::new(
+            SCENE,
+            "max |M Ẋ + m ḃₓ| (horizontal momentum, 0 from rest)",
+            worst_momentum,
+            0.0,
+            1e-12,
+        ),
+        // Energy lost = friction's work μₖN × distance slid: both exact for RK4 on this quadratic
+        // motion, round-off of E ~ 10 J.
+        Check::new(
+            SCENE,
+            format!("energy lost after {t:.0} s = μₖN · ½a_r t²"),
+            dissipated,
+            friction_work,
+            1e-11,
+        ),
+        Check::new(
+            SCENE,
+            "μ = 0: Ẍ = −m g sin α cos α / (M + m sin²α)",
+            smooth_acc,
+            -a_smooth,
+            1e-13,
+        ),
+        // Sticking is enforced as a velocity constraint: nothing moves, to round-off.
+        Check::new(
+            SCENE,
+            "tan α ≤ μₛ: max |q − q₀| after 1 s (m)",
+            moved,
+            0.0,
+            1e-14,
+        ),
+        Check::new(
+            SCENE,
+            "tan α ≤ μₛ: stuck, no mode change (1 = yes)",
+            f64::from(u8::from(starts_stuck && stuck.events.is_empty())),
+            1.0,
+            0.0,
+        ),
+    ]
+}
