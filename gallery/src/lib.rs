@@ -2,9 +2,9 @@
 //! closed form, the results table the gallery prints, SVG line plots, and the special functions the
 //! closed forms need.
 //!
-//! Every scene file in `examples/` exposes `pub fn run(plots: &Path) -> Vec<Check>`; the scene's own
-//! `main`, the `gallery` binary of this crate and the `scenes` test all call it, so what the gallery prints is
-//! exactly what the tests assert.
+//! Every scene in [`scenes`] exposes `pub fn run(plots: &Path) -> Vec<Check>`; the example that runs
+//! it alone, the `gallery` binary of this crate and the `scenes` test all call it, so what the gallery
+//! prints is exactly what the tests assert.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -44,7 +44,9 @@ use proc_macro::TokenStream;
 /// (`f64` on a planar body, `Vec3` on a spatial one) and `#[generalized_force(on = coordinate)]`
 /// (`f64`); constraint rows `#[constraint]` (g = 0),
 /// `#[unilateral]` (c ≥ 0), `#[velocity_constraint]` (h = 0, affine in velocities) and
-/// `#[friction(on = contact, kinetic = μₖ, stiction = μₛ)]` (the slip velocity), all `f64`. Bodies
+/// `#[friction(on = contact, kinetic = μₖ, stiction = μₛ)]` (the slip velocity), all `f64`; a
+/// `#[friction]` returning `Vec2` is friction in the contact's tangent plane (the Coulomb cone, its
+/// components the slip along two orthonormal tangent directions, runtime rows `name.x`, `name.y`). Bodies
 /// name coordinates, parameters, `t` and earlier bodies; potentials and position constraints every
 /// body; forces, velocity constraints and friction also `<coordinate>_dot` and `<body>_dot`. Other
 /// items of the module are kept as written.
