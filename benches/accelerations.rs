@@ -17,18 +17,10 @@
 //! `sys.validated()`, the handle a simulation uses: parameters checked when it was made, the state
 //! on every call.
 
-#[path = "../examples/cartesian_pendulum.rs"]
-#[allow(dead_code)]
-mod cartesian_pendulum_scene;
-#[path = "../examples/double_pendulum.rs"]
-#[allow(dead_code)]
-mod double_pendulum_scene;
-#[path = "../examples/four_bar.rs"]
-#[allow(dead_code)]
-mod four_bar_scene;
-#[path = "../examples/wedge_block.rs"]
-#[allow(dead_code)]
-mod wedge_block_scene;
+use lagrange_gallery::scenes::cartesian_pendulum as cartesian_pendulum_scene;
+use lagrange_gallery::scenes::double_pendulum as double_pendulum_scene;
+use lagrange_gallery::scenes::four_bar as four_bar_scene;
+use lagrange_gallery::scenes::wedge_block as wedge_block_scene;
 
 #[allow(dead_code)]
 mod common;

@@ -8,9 +8,7 @@
 //!
 //! Each iteration is 10⁴ steps (h = 10⁻³); the summary scales the mean to 10⁶ steps.
 
-#[path = "../examples/double_pendulum.rs"]
-#[allow(dead_code)]
-mod double_pendulum_scene;
+use lagrange_gallery::scenes::double_pendulum as double_pendulum_scene;
 
 #[allow(dead_code)]
 mod common;

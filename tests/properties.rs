@@ -3,9 +3,7 @@
 //! - the mass matrix is symmetric positive definite;
 //! - ½ q̇ᵀ M q̇ equals the kinetic energy summed from the body velocities, ½ Σ mᵢ|ṙᵢ|².
 
-#[path = "../examples/double_pendulum.rs"]
-#[allow(dead_code)]
-mod scene;
+use lagrange_gallery::scenes::double_pendulum as scene;
 
 use lagrange::prelude::*;
 use proptest::prelude::*;

@@ -267,6 +267,13 @@ impl ConstraintKind {
         )
     }
     /// The normal row of a friction row (planar or cone), `None` for other kinds.
+    ///
+    /// ```
+    /// use lagrange_core::constraints::ConstraintKind;
+    /// let cone = ConstraintKind::FrictionCone { normal: 0, partner: 2 };
+    /// assert_eq!(cone.friction_normal(), Some(0));
+    /// assert_eq!(ConstraintKind::Unilateral.friction_normal(), None);
+    /// ```
     pub const fn friction_normal(self) -> Option<usize> {
         match self {
             ConstraintKind::Friction { normal } | ConstraintKind::FrictionCone { normal, .. } => {
