@@ -57,7 +57,10 @@ pub mod pushed_block {
     /// Friction in the incline's plane: slip along the level direction and up the slope.
     #[friction(on = incline, kinetic = mu_k, stiction = mu_s)]
     fn rub() -> Vec2 {
-        vec2(block_dot.x, block_dot.y * alpha.cos() + block_dot.z * alpha.sin())
+        vec2(
+            block_dot.x,
+            block_dot.y * alpha.cos() + block_dot.z * alpha.sin(),
+        )
     }
 }
 
@@ -72,8 +75,18 @@ fn main() -> Result<(), lagrange::Error> {
         push: 7.0,
     };
     let mut series = Vec::new();
-    for sys in [gentle, PushedBlock { push: 9.5, ..gentle }] {
-        let mut s = State::at_rest(Coords { x: 0.0, y: 0.0, z: 0.0 });
+    for sys in [
+        gentle,
+        PushedBlock {
+            push: 9.5,
+            ..gentle
+        },
+    ] {
+        let mut s = State::at_rest(Coords {
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+        });
         let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;
         let mut slid = vec![(0.0, 0.0)];
         for _ in 0..2000 {

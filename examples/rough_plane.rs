@@ -69,8 +69,16 @@ fn main() -> Result<(), lagrange::Error> {
     };
     let mut s = State::new(
         0.0,
-        Coords { x: 0.0, y: 0.0, z: 0.0 },
-        Coords { x: 3.0, y: 0.0, z: 0.0 },
+        Coords {
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+        },
+        Coords {
+            x: 3.0,
+            y: 0.0,
+            z: 0.0,
+        },
     );
     // ContactRk4 locates the instant the slip stops, then decides stick or slide once.
     let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;

@@ -110,7 +110,13 @@ fn a_cone_row_without_its_partner_is_refused() {
     assert!(check_declaration::<R, 3, 3, 3>().is_ok());
     assert_eq!(
         <R as Constraints<3, 3, 3>>::KINDS[1],
-        ConstraintKind::FrictionCone { normal: 0, partner: 2 }
+        ConstraintKind::FrictionCone {
+            normal: 0,
+            partner: 2
+        }
     );
-    assert_eq!(<R as Constraints<3, 3, 3>>::NAMES, ["plane", "rub.x", "rub.y"]);
+    assert_eq!(
+        <R as Constraints<3, 3, 3>>::NAMES,
+        ["plane", "rub.x", "rub.y"]
+    );
 }

@@ -3,7 +3,7 @@
 //!
 //! A binary of this crate rather than an example of `lagrange`, so that building it builds only
 //! `lagrange` and its normal dependencies, not the root package's test and benchmark
-//! dev-dependencies. The scenes and their checks are this crate's [`scenes`] modules; the
+//! dev-dependencies. The scenes and their checks are this crate's `lagrange_gallery::scenes` modules; the
 //! `examples/` of `lagrange` tell the same stories as plain usage.
 //!
 //! ```text

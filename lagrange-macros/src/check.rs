@@ -135,7 +135,10 @@ pub struct Model<'a> {
 impl<'a> Model<'a> {
     /// The first runtime constraint row of constraint item `item` (a friction cone takes two).
     pub fn constraint_row(&self, item: usize) -> usize {
-        self.constraints[..item].iter().map(ConstraintRow::width).sum()
+        self.constraints[..item]
+            .iter()
+            .map(ConstraintRow::width)
+            .sum()
     }
 
     /// Runtime constraint rows in total.

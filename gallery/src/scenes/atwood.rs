@@ -3,8 +3,8 @@
 //! the descent y of m₁; the pulley turns by −y/r. Closed form (Kleppner & Kolenkow, 2nd ed., §7.x):
 //!   ÿ = (m₁ − m₂) g / (m₁ + m₂ + I/r²).
 
-use lagrange::prelude::*;
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

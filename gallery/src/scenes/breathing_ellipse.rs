@@ -5,9 +5,9 @@
 //! (Goldstein, *Classical Mechanics*, 3rd ed., eq. 2.55). The scene integrates −∂L/∂t alongside the
 //! motion (composite Simpson rule on the step samples) and compares it with h(t) − h(0).
 
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -10,10 +10,10 @@
 //! "Lagrange multipliers"). The constraint's gradient ∂(|r| − L)/∂r is the outward unit vector, so the
 //! multiplier is the outward force: λ = −T.
 
-use lagrange::constraints::{constraint_forces, constraint_rows};
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::constraints::{constraint_forces, constraint_rows};
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

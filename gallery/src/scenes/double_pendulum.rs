@@ -4,9 +4,9 @@
 //! generated equations against the closed form and shows the energy behaviour of RK4 over a long
 //! run: a slow drift that shrinks as h⁴.
 
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -14,10 +14,10 @@
 //! §2.4 and §2.7), and the loop must stay closed, g = ġ = 0. Newton's third law at the joint B is
 //! checked too: the force of the constraint on the coupler's end is minus the one on the rocker's.
 
-use lagrange::constraints::{consistent_state, constraint_forces, constraint_rows};
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::constraints::{consistent_state, constraint_forces, constraint_rows};
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -9,8 +9,8 @@
 //! — so θ(t) = θ₀, φ(t) = Ω t, and ω₃ is conserved. For a fast spin Ω ≈ k / (C ω₃), the
 //! textbook gyroscopic precession.
 
-use lagrange::prelude::*;
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

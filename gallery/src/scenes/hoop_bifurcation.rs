@@ -9,9 +9,9 @@
 
 pub use super::spinning_hoop as scene;
 
-use lagrange::analysis::{continuation, normal_modes, stability, EquilibriumOptions, Stability};
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::analysis::{continuation, normal_modes, stability, EquilibriumOptions, Stability};
 use scene::spinning_hoop::{Coords, SpinningHoop};
 use std::path::Path;
 

@@ -4,9 +4,9 @@
 //! the first upward zero crossing of θ (at 3T/4), located by cubic Hermite interpolation between
 //! steps.
 
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::{elliptic_k, upward_crossing, Check};
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -2,8 +2,8 @@
 //! down the ramp; the constraint force is normal to the ramp, does no virtual work, and drops out.
 //! Closed form: s̈ = g sin α, so s(t) = v₀ t + ½ g sin α t².
 
-use lagrange::prelude::*;
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -5,9 +5,9 @@
 //!
 //! Closed form: with V = M g (c rotated by θ)_y, θ̈ = −M g (c_x cos θ − c_y sin θ) / (I_c + M|c|²).
 
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -14,9 +14,9 @@
 //! θ̇ = Ω is constant, and the centre moves on a straight line (ω = 0) or on a circle of radius
 //! RΩ/ω, at constant kinetic energy.
 
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

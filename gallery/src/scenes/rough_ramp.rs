@@ -15,10 +15,10 @@
 //! [`ContactRk4`] locates the stop (slip velocity reaching 0) and then decides stick or slide once:
 //! exactly one mode change, no chattering at the stick/slip boundary.
 
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

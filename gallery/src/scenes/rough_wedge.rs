@@ -21,10 +21,10 @@
 //! the work of friction, μₖ N times the distance slid, ½ a_r t². With tan α ≤ μₛ the block sticks
 //! and, no horizontal external force acting, nothing moves.
 
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

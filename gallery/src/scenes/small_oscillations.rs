@@ -5,8 +5,8 @@
 
 pub use super::double_pendulum as scene;
 
-use lagrange::analysis::{equilibrium, normal_modes, EquilibriumOptions};
 use crate::Check;
+use lagrange::analysis::{equilibrium, normal_modes, EquilibriumOptions};
 use scene::double_pendulum::{Coords, DoublePendulum};
 use std::path::Path;
 

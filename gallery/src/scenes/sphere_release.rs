@@ -14,10 +14,10 @@
 //! The simulation knows none of this: it integrates the constrained equations with [`ContactRk4`],
 //! which keeps the contact while its multiplier λ = N is positive and locates the instant λ reaches 0.
 
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -7,9 +7,9 @@
 //! conserved; the Jacobi integral h = ½mR²θ̇² − ½mR²ω²sin²θ − mgR cos θ is, because L has no explicit
 //! t dependence once written in θ.
 
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

@@ -9,9 +9,9 @@
 //! 𝓕_X = 0 does not mean Ẍ = 0 (the lecture's footnote): the momentum conjugate to X is conserved
 //! instead, and it is zero when starting from rest.
 
-use lagrange::prelude::*;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::prelude::*;
 use std::path::Path;
 
 #[mechanism]

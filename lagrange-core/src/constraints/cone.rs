@@ -40,12 +40,7 @@ pub(super) fn follow_slip<const C: usize>(mode: &mut Mode<C>, j: usize, k: usize
 }
 
 /// Both rows of the pair (j, k) sliding along `direction`.
-pub(super) fn slide<const C: usize>(
-    mode: &mut Mode<C>,
-    j: usize,
-    k: usize,
-    direction: (f64, f64),
-) {
+pub(super) fn slide<const C: usize>(mode: &mut Mode<C>, j: usize, k: usize, direction: (f64, f64)) {
     mode.rows[j] = RowMode::Sliding;
     mode.rows[k] = RowMode::Sliding;
     mode.stopping[j] = false;
@@ -56,13 +51,23 @@ pub(super) fn slide<const C: usize>(
 
 /// Static friction exceeded at the stuck pair (j, k) with multipliers (λⱼ, λₖ): slide opposite to the
 /// force static friction would have had to supply, ŝ = −λ/|λ|.
-pub(super) fn break_stick<const C: usize>(mode: &mut Mode<C>, j: usize, k: usize, lambda: &[f64; C]) {
+pub(super) fn break_stick<const C: usize>(
+    mode: &mut Mode<C>,
+    j: usize,
+    k: usize,
+    lambda: &[f64; C],
+) {
     let direction = unit(-lambda[j], -lambda[k]).unwrap_or((1.0, 0.0));
     slide(mode, j, k, direction);
 }
 
 /// How far the stuck pair (j, k) needs more than static friction holds: |(λⱼ, λₖ)| − μₛ|λₙ|.
-pub(super) fn stick_excess<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+pub(super) fn stick_excess<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
     model: &M,
     j: usize,
     k: usize,
@@ -85,7 +90,12 @@ pub(super) fn first_of_pair(kind: ConstraintKind, j: usize) -> Option<(usize, us
 /// pair to its current slip direction (kept where the slip is within [`CONSISTENCY_TOLERANCE`] of
 /// zero, just after sliding starts), and marks the pairs whose slip, extrapolated linearly with
 /// ṡ = S q̈ + β, stops within 2·span as [`Mode::stopping`].
-pub(super) fn refresh_references<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+pub(super) fn refresh_references<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
     model: &M,
     t: f64,
     q: &[f64; N],
@@ -108,7 +118,8 @@ pub(super) fn refresh_references<M: Constraints<N, K, C>, const N: usize, const 
             }
         }
     }
-    let qdd = nalgebra::SVector::from(super::accelerations_in_mode(model, t, q, v, mode)?.accelerations);
+    let qdd =
+        nalgebra::SVector::from(super::accelerations_in_mode(model, t, q, v, mode)?.accelerations);
     for j in 0..C {
         if let Some((k, _)) = first_of_pair(M::KINDS[j], j) {
             if mode.rows[j] != RowMode::Sliding {

@@ -64,7 +64,7 @@ pub(crate) fn apply_fix<M: Constraints<N, K, C>, const N: usize, const K: usize,
             if M::KINDS[j].friction_normal() == Some(i) {
                 mode.rows[j] = RowMode::Inactive;
                 mode.reference[j] = 0.0;
-            mode.stopping[j] = false;
+                mode.stopping[j] = false;
                 mode.stopping[j] = false;
             }
         }

@@ -96,16 +96,23 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
     );
     let bodies = bind_bodies(model);
     // A friction cone's `Vec2` is evaluated once, before the array, and gives two rows.
-    let cones = model.constraints.iter().enumerate().filter(|(_, r)| r.cone && !position).map(|(item, r)| {
-        let block = lift::lift_block(&r.decl.block, &d);
-        let name = format_ident!("__cone_{}", item);
-        quote!(let #name: Vec2<__D> = #block;)
-    });
+    let cones = model
+        .constraints
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.cone && !position)
+        .map(|(item, r)| {
+            let block = lift::lift_block(&r.decl.block, &d);
+            let name = format_ident!("__cone_{}", item);
+            quote!(let #name: Vec2<__D> = #block;)
+        });
     let values = model.constraints.iter().enumerate().flat_map(|(item, r)| {
         if r.cone && !position {
             let name = format_ident!("__cone_{}", item);
             vec![quote!(#name.x), quote!(#name.y)]
-        } else if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position && !r.cone {
+        } else if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position
+            && !r.cone
+        {
             let block = lift::lift_block(&r.decl.block, &d);
             vec![quote!({ let __row: __D = #block; __row })]
         } else {
