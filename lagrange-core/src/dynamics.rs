@@ -270,17 +270,25 @@ pub(crate) fn motion_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: us
     q: &[S; N],
     v: &[S; N],
 ) -> MotionPass<S, N, K> {
-    let qh: [HyperDualSVec<S, N, 1>; N] = std::array::from_fn(|j| {
+    MotionPass {
+        x: model.cartesian(HyperDualSVec::from_re(t), &motion_seeds(q, v)),
+    }
+}
+
+/// The seeds of a [`MotionPass`]: qⱼ with ε₁ = eⱼ (gradient) and ε₂ = q̇ⱼ (direction of motion).
+#[inline(always)]
+pub(crate) fn motion_seeds<S: Scalar, const N: usize>(
+    q: &[S; N],
+    v: &[S; N],
+) -> [HyperDualSVec<S, N, 1>; N] {
+    std::array::from_fn(|j| {
         HyperDualSVec::new(
             q[j],
             Derivative::derivative_generic(Const::<N>, U1, j),
             Derivative::some(SMatrix::<S, 1, 1>::new(v[j])),
             Derivative::none(),
         )
-    });
-    MotionPass {
-        x: model.cartesian(HyperDualSVec::from_re(t), &qh),
-    }
+    })
 }
 
 /// J, x, ẋ, a = (∂ẋ/∂q) q̇ and −∇V from a [`MotionPass`].

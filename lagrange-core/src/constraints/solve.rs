@@ -161,6 +161,7 @@ fn slip_sign(mode: RowMode) -> f64 {
 ///
 /// Errors: singular mass matrix, singular R M⁻¹ Rᵀ (naming the rows), indeterminate sliding
 /// friction (the friction-coupled Schur matrix is singular: Painlevé's paradox), non-finite results.
+#[inline(always)]
 pub fn accelerations_in_mode<
     M: Constraints<N, K, C>,
     S: Scalar,

@@ -363,6 +363,7 @@ pub mod sliding_block {
             },
         ];
         #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         fn position_constraints<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,
@@ -387,6 +388,7 @@ pub mod sliding_block {
             ]
         }
         #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         fn velocity_constraints<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,
