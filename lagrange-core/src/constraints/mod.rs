@@ -21,7 +21,7 @@
 //! the equations of motion of a constrained mechanical system (Hairer & Wanner, *Solving Ordinary
 //! Differential Equations II*, 2nd ed., §VII.1, eq. (1.46); Lagrange multipliers for
 //! nonholonomic constraints linear in the velocities: Goldstein, Poole & Safko, *Classical
-//! Mechanics*, 3rd ed., §2.4). It is solved by the Schur complement: with M = LLᵀ (Cholesky),
+//! Mechanics*, 3rd ed., §2.4). It is solved by the Schur complement: with M = LDLᵀ,
 //! (R M⁻¹ Rᵀ) λ = −β − R M⁻¹(𝓕 − b), then q̈ = M⁻¹(𝓕 − b + Rᵀλ). Every matrix stays N×N or C×C, so
 //! sizes are const generics on stable Rust. **M must be positive definite** (the generalized
 //! coordinates independent before the constraints are imposed); a singular M is
@@ -83,18 +83,15 @@
 //!
 //! # Cost
 //!
-//! Per step, relative to the same mechanism without the constraint (release build, both measured
-//! alternately on one shared machine, minimum of 25 runs, two reports; reproduce with
-//! `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`): holonomic
-//! ×4.1–4.8 (four-bar with 2 rows, Cartesian pendulum with 1, plain RK4 + projection), velocity
-//! ×6.7–7.6 (rolling wheel, 2 rows), unilateral in contact ×5.9–6.0 and separated ×1.3–1.6
-//! ([`ContactRk4`] against plain RK4 on the free particle), friction ×1.1–1.5 on top of its
-//! contact. The free mechanisms here are nearly free (identity x(q) for the particle and the
-//! wheel), which makes the ratios large; the absolute cost is a few hundred ns to a few µs per step.
-//! Where it goes: every evaluation of q̈ adds the rows' dual passes and two small Cholesky
-//! factorisations to the unconstrained work, and each step adds the projection (one or two Newton
-//! corrections and one velocity correction) and the consistency check. The rows' passes re-evaluate
-//! x(q, t), which [`crate::dynamics`] has just evaluated: fusing the two would save about a third.
+//! What a constraint adds to an evaluation of q̈ (the measured ratios are in the repository's
+//! BENCHMARKS.md; reproduce them with
+//! `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`): for a
+//! scleronomic mechanism, the position rows are evaluated once on the hyper-dual numbers that
+//! already carry x(q) for M, 𝓕 and b, so G, ġ and β come with no second evaluation of x; then
+//! one LDLᵀ factorisation of M reused for M⁻¹(𝓕 − b) and M⁻¹Rᵀ, and one of the C×C Schur matrix.
+//! A rheonomic mechanism evaluates x and g twice more (gradient, then along the motion). Each step
+//! adds the projection (one or two Newton corrections and one velocity correction) and the
+//! consistency check.
 //!
 //! # Only what is declared
 //!
