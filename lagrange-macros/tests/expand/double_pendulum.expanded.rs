@@ -326,6 +326,38 @@ pub mod double_pendulum {
                 );
             [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
         }
+        #[inline(always)]
+        fn mass_matrix<S: ::lagrange::__private::Scalar>(
+            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 2>,
+            __composite: &[f64; 2],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 2, 2>::zeros();
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 0, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 0);
+            __m
+        }
     }
     impl ::lagrange::__private::Mechanism<2> for DoublePendulum {
         type Coords = Coords;
