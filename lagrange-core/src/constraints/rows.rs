@@ -149,7 +149,7 @@ pub(crate) fn rows_from_pass<
                 out.rows[i] = g[i].eps1.0.unwrap_or_else(SVector::zeros);
                 out.value[i] = g[i].re;
                 out.rate[i] = g[i].eps2.0.map_or(S::zero(), |d| d[0]);
-                out.bias[i] = dynamics::along_motion(&g[i], v).unwrap_or(S::zero());
+                out.bias[i] = dynamics::along_motion(&g[i], v, &[true; N]).unwrap_or(S::zero());
             }
         }
     }
@@ -158,7 +158,7 @@ pub(crate) fn rows_from_pass<
             x: std::array::from_fn(|i| pass.x[i].re),
             x_dot: std::array::from_fn(|i| pass.x[i].eps2.0.map_or(S::zero(), |d| d[0])),
             x_accel: std::array::from_fn(|i| {
-                dynamics::along_motion(&pass.x[i], v).unwrap_or(S::zero())
+                dynamics::along_motion(&pass.x[i], v, &M::DEPENDS[i]).unwrap_or(S::zero())
             }),
         };
         velocity_rows(model, t, q, v, &motion, &jac, &mut out);

@@ -136,6 +136,12 @@ pub mod double_pendulum {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 4] = [
+            [true, false],
+            [true, false],
+            [true, true],
+            [true, true],
+        ];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {

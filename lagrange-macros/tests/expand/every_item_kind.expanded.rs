@@ -214,6 +214,25 @@ pub mod everything {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = true;
         const HAS_FORCES: bool = true;
+        const DEPENDS: [[bool; 2]; 17] = [
+            [true, false],
+            [true, false],
+            [true, false],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [true, false],
+            [true, false],
+        ];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             if !self.m.is_finite() {
