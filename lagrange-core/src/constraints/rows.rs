@@ -333,3 +333,37 @@ pub fn constraint_rows<
 pub(super) fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
     std::array::from_fn(|j| q[j].re())
 }
+
+/// The holonomic rows' values g(q, t) at (t, q), for any scalar, in declaration order (other kinds
+/// of row skipped) and padded with zeros to N entries: what
+/// [`Mechanism::holonomic_constraints_at`](crate::Mechanism::holonomic_constraints_at) forwards to,
+/// so integrators generic over `Mechanism<N>` (which cannot name C) can differentiate them.
+/// Independent holonomic rows number at most N; rows beyond the N-th are not returned (the
+/// integrators refuse such a declaration from
+/// [`Mechanism::CONSTRAINT_COUNTS`](crate::Mechanism::CONSTRAINT_COUNTS) before calling this).
+pub fn holonomic_values<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+) -> [S; N] {
+    let mut out = [S::zero(); N];
+    if !M::KINDS.iter().any(|k| matches!(k, ConstraintKind::Holonomic)) {
+        return out;
+    }
+    let x = model.cartesian(t, q);
+    let g = model.position_constraints(t, q, &x);
+    let mut slot = 0;
+    for i in 0..C {
+        if matches!(M::KINDS[i], ConstraintKind::Holonomic) && slot < N {
+            out[slot] = g[i];
+            slot += 1;
+        }
+    }
+    out
+}
