@@ -69,9 +69,7 @@ fn leave(v0: f64, tol: f64) -> (f64, f64, usize) {
         },
     );
     let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
-    let mut events = [Event::new(&normal)
-        .direction(Direction::Falling)
-        .terminal()];
+    let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
     let mut s = s0;
     let outcome = Dop853::new(tol, tol)
         .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
@@ -81,7 +79,11 @@ fn leave(v0: f64, tol: f64) -> (f64, f64, usize) {
     };
     let q = hit.state.q;
     let steps = outcome.stats.accepted + outcome.stats.rejected;
-    (hit.state.t, q.z / (q.x * q.x + q.y * q.y + q.z * q.z).sqrt(), steps)
+    (
+        hit.state.t,
+        q.z / (q.x * q.x + q.y * q.y + q.z * q.z).sqrt(),
+        steps,
+    )
 }
 
 /// The closed form: (t*, cos θ*).
@@ -116,8 +118,14 @@ fn dop853_event_locates_where_the_particle_leaves_the_sphere() {
             "v₀ = {v0}: left at t = {t:.15} s (closed form {t_star:.15}, {dt:+.1e}), cos θ = {cos:.15} \
              ({dcos:+.1e}), {steps} steps"
         );
-        assert!(steps <= 50, "v₀ = {v0}: {steps} steps, more than the error estimate assumes");
+        assert!(
+            steps <= 50,
+            "v₀ = {v0}: {steps} steps, more than the error estimate assumes"
+        );
         assert!(dt.abs() < 1e-12, "v₀ = {v0}: t = {t}, t* = {t_star}");
-        assert!(dcos.abs() < 5e-12, "v₀ = {v0}: cos θ = {cos}, cos θ* = {cos_star}");
+        assert!(
+            dcos.abs() < 5e-12,
+            "v₀ = {v0}: cos θ = {cos}, cos θ* = {cos_star}"
+        );
     }
 }

@@ -868,7 +868,11 @@ fn constrained_pendulum_with_implicit_methods_and_dopri5() {
     let s = run::<Variational>(start, quarter, 400);
     assert!(angle(&s).abs() < 1e-4, "variational θ(K) = {}", angle(&s));
     let s = run::<StormerVerlet>(start, quarter, 400);
-    assert!(angle(&s).abs() < 1e-4, "Störmer–Verlet θ(K) = {}", angle(&s));
+    assert!(
+        angle(&s).abs() < 1e-4,
+        "Störmer–Verlet θ(K) = {}",
+        angle(&s)
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1468,7 +1472,9 @@ fn constrained_or_not_is_decided_by_the_declaration_not_by_lambda() {
         ("Störmer–Verlet", {
             let mut s = horizontal;
             for _ in 0..2 {
-                CartesianPendulum.step::<StormerVerlet>(&mut s, 0.01).unwrap();
+                CartesianPendulum
+                    .step::<StormerVerlet>(&mut s, 0.01)
+                    .unwrap();
             }
             s
         }),

@@ -5,8 +5,8 @@
 
 use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 use lagrange_core::dynamics::{self, EquationsOfMotion};
-use lagrange_core::{vec2, Model, Scalar};
 use lagrange_core::integrate::Dop853;
+use lagrange_core::{vec2, Model, Scalar};
 use lagrange_core::{
     Error, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, State, StormerVerlet,
     Variational,
@@ -74,7 +74,12 @@ fn observed_orders<I: Integrator>() -> Vec<f64> {
         .iter()
         .map(|&n| {
             distance(
-                &run::<I, _>(&CartesianPendulum, cartesian(theta0, 0.0), t_end / n as f64, n),
+                &run::<I, _>(
+                    &CartesianPendulum,
+                    cartesian(theta0, 0.0),
+                    t_end / n as f64,
+                    n,
+                ),
                 &exact,
             )
         })
@@ -130,14 +135,26 @@ fn check_long_run<I: Integrator>(h: f64, steps: usize) {
     // The position stage solves g(q₁) = 0 by Newton to round-off and the velocity stage is an
     // exact linear projection: |g|, |ġ| ~ ε·|q|, |v| ≈ 1e-15, whatever the number of steps (no
     // drift: every step re-imposes both). 1e-10 is the required bound.
-    assert!(g < 1e-10 && gdot < 1e-10, "{}: |g| {g:e}, |ġ| {gdot:e}", I::NAME);
+    assert!(
+        g < 1e-10 && gdot < 1e-10,
+        "{}: |g| {g:e}, |ġ| {gdot:e}",
+        I::NAME
+    );
     // Symplectic: the energy error stays O((hω)²)·E_osc, E_osc = g L (1 − cos 1) ≈ 4.5 the energy of
     // the oscillation, and does not drift (HLW §IX.8: bounded over exponentially long times): the
     // second half of the run adds nothing beyond the first half's oscillation (a drift linear in t
     // would double it; 10% allows for the oscillation's maximum falling in either half).
     let omega2 = G / L;
-    assert!(e_max < h * h * omega2 * 4.5, "{}: |E − E₀| = {e_max:e}", I::NAME);
-    assert!(e_max <= 1.1 * e_first, "{}: drift {e_first:e} → {e_max:e}", I::NAME);
+    assert!(
+        e_max < h * h * omega2 * 4.5,
+        "{}: |E − E₀| = {e_max:e}",
+        I::NAME
+    );
+    assert!(
+        e_max <= 1.1 * e_first,
+        "{}: drift {e_first:e} → {e_max:e}",
+        I::NAME
+    );
 }
 
 #[test]
@@ -164,12 +181,24 @@ fn released_horizontally_at_rest_every_step_is_taken_and_follows_the_pendulum() 
     let start = cartesian(std::f64::consts::FRAC_PI_2, 0.0);
     let exact = reference(std::f64::consts::FRAC_PI_2, 0.0, 1.0);
     for (name, end) in [
-        ("Stormer-Verlet", run::<StormerVerlet, _>(&CartesianPendulum, start, 1e-3, 1000)),
-        ("variational", run::<Variational, _>(&CartesianPendulum, start, 1e-3, 1000)),
+        (
+            "Stormer-Verlet",
+            run::<StormerVerlet, _>(&CartesianPendulum, start, 1e-3, 1000),
+        ),
+        (
+            "variational",
+            run::<Variational, _>(&CartesianPendulum, start, 1e-3, 1000),
+        ),
     ] {
         let (g, gdot) = rod_errors(&end);
-        assert!(g.abs() < 1e-12 && gdot.abs() < 1e-12, "{name}: g {g:e}, ġ {gdot:e}");
-        assert!(distance(&end, &exact) < 1e-4, "{name}: {end:?} vs {exact:?}");
+        assert!(
+            g.abs() < 1e-12 && gdot.abs() < 1e-12,
+            "{name}: g {g:e}, ġ {gdot:e}"
+        );
+        assert!(
+            distance(&end, &exact) < 1e-4,
+            "{name}: {end:?} vs {exact:?}"
+        );
     }
 }
 
@@ -179,10 +208,17 @@ fn undeclared_constraints_are_refused_at_the_first_step_whatever_lambda() {
     // RATTLE cannot know which rows to enforce, so both methods refuse it — at the first step, at
     // rest horizontally (λ = 0) exactly as from any other state, and leave the state alone.
     assert_eq!(<Undeclared as Mechanism<2>>::CONSTRAINTS, None);
-    for start in [cartesian(std::f64::consts::FRAC_PI_2, 0.0), cartesian(0.5, 1.0)] {
+    for start in [
+        cartesian(std::f64::consts::FRAC_PI_2, 0.0),
+        cartesian(0.5, 1.0),
+    ] {
         for err in [
-            Undeclared.step::<StormerVerlet>(&mut start.clone(), 0.01).unwrap_err(),
-            Undeclared.step::<Variational>(&mut start.clone(), 0.01).unwrap_err(),
+            Undeclared
+                .step::<StormerVerlet>(&mut start.clone(), 0.01)
+                .unwrap_err(),
+            Undeclared
+                .step::<Variational>(&mut start.clone(), 0.01)
+                .unwrap_err(),
         ] {
             assert!(matches!(err, Error::UnsuitableMethod { .. }), "{err}");
             assert!(err.to_string().contains("does not declare"), "{err}");
@@ -200,7 +236,10 @@ fn implicit_methods_include_the_constraint_force_when_lambda_starts_at_zero() {
     // fall projected (`FreeFall`, which declares no rows) by O(h³) ≈ 1e-3 at h = 0.1 — so this test
     // tells the two apart.
     let start = cartesian(std::f64::consts::FRAC_PI_2, 0.0);
-    fn one<I: Integrator, M: Mechanism<2, Coords = [f64; 2]>>(sys: &M, s: State<[f64; 2]>) -> State<[f64; 2]> {
+    fn one<I: Integrator, M: Mechanism<2, Coords = [f64; 2]>>(
+        sys: &M,
+        s: State<[f64; 2]>,
+    ) -> State<[f64; 2]> {
         run::<I, M>(sys, s, 0.1, 1)
     }
     for (name, declared, undeclared, free) in [
@@ -221,7 +260,10 @@ fn implicit_methods_include_the_constraint_force_when_lambda_starts_at_zero() {
         let apart = distance(&declared, &free);
         eprintln!("{name}: declared − undeclared {same:e}, declared − free fall {apart:e}");
         assert!(same < 1e-14, "{name}: {declared:?} vs {undeclared:?}");
-        assert!(apart > 1e-5, "{name}: the free fall is not told apart ({apart:e})");
+        assert!(
+            apart > 1e-5,
+            "{name}: the free fall is not told apart ({apart:e})"
+        );
     }
 }
 
@@ -234,7 +276,8 @@ fn rattle_refuses_velocity_constraints_by_the_declaration() {
         Some((0, 1))
     );
     for err in [
-        Rail.step::<StormerVerlet>(&mut s.clone(), 0.01).unwrap_err(),
+        Rail.step::<StormerVerlet>(&mut s.clone(), 0.01)
+            .unwrap_err(),
         Rail.step::<Variational>(&mut s.clone(), 0.01).unwrap_err(),
     ] {
         assert!(matches!(err, Error::UnsuitableMethod { .. }), "{err}");
@@ -345,7 +388,12 @@ macro_rules! forward_pendulum {
 }
 
 forward_pendulum!(Undeclared, {
-    fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
+    fn accelerations_at<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; 2],
+        v: &[S; 2],
+    ) -> lagrange_core::Result<[S; 2]> {
         constraints::accelerations(&CartesianPendulum, t, q, v)
     }
 });

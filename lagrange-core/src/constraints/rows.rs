@@ -353,7 +353,10 @@ pub fn holonomic_values<
     q: &[S; N],
 ) -> [S; N] {
     let mut out = [S::zero(); N];
-    if !M::KINDS.iter().any(|k| matches!(k, ConstraintKind::Holonomic)) {
+    if !M::KINDS
+        .iter()
+        .any(|k| matches!(k, ConstraintKind::Holonomic))
+    {
         return out;
     }
     let x = model.cartesian(t, q);

@@ -16,22 +16,21 @@
 //!
 //! The position stage is a nonlinear system for λ (Störmer–Verlet: C unknowns, q₁ depending on λ
 //! through M⁻¹G(q₀)ᵀλ) or for (v_m, λ) together (the variational integrator's discrete
-//! Euler–Lagrange equations with the multiplier term), solved by the one Newton driver
-//! ([`newton`](super::newton)) with exact Jacobians from dual numbers. The velocity stage is linear
-//! in μ: with p affine in q̇ with slope M(q₁) (every [`Model`](crate::Model)), q̇₁ = q̂̇₁ + M⁻¹Gᵀμ
-//! with μ = −(G M⁻¹ Gᵀ)⁻¹(G q̂̇₁ + ∂g/∂t) — the mass-weighted velocity projection the constraints
-//! module already implements, [`Mechanism::project`] (whose position part finds g(q₁) = 0 to
-//! round-off already and moves q₁ at most by round-off). The step map (q₀, p₀) ↦ (q₁, p₁) is
-//! symplectic on the constraint manifold {g = 0, G q̇ + ∂g/∂t = 0}, symmetric and of order 2
-//! (HLW §VII.1.4, for RATTLE and for the discrete Euler–Lagrange equations with multipliers), and
-//! keeps g and its time derivative at the Newton tolerance (round-off) at every step, without
-//! drift.
+//! Euler–Lagrange equations with the multiplier term), solved by the one Newton driver of the
+//! implicit methods with exact Jacobians from dual numbers. The velocity stage is linear in μ: with
+//! p affine in q̇ with slope M(q₁) (every [`Model`](crate::Model)), q̇₁ = q̂̇₁ + M⁻¹Gᵀμ with
+//! μ = −(G M⁻¹ Gᵀ)⁻¹(G q̂̇₁ + ∂g/∂t) — the mass-weighted velocity projection the constraints module
+//! already implements, [`Mechanism::project`] (whose position part finds g(q₁) = 0 to round-off
+//! already and moves q₁ at most by round-off). Without non-conservative forces the step map
+//! (q₀, p₀) ↦ (q₁, p₁) is symplectic on the constraint manifold {g = 0, G q̇ + ∂g/∂t = 0},
+//! symmetric and of order 2 (HLW §VII.1.4, for RATTLE and for the discrete Euler–Lagrange
+//! equations with multipliers); with any forces it keeps g and its time derivative at the Newton
+//! tolerance (round-off) at every step, without drift.
 //!
 //! **Which constraints.** Only holonomic rows: the choice is the declaration's,
 //! [`Mechanism::CONSTRAINT_COUNTS`], never the state's ([`holonomic_rows`]). Velocity rows,
-//! unilateral contacts and friction are refused with
-//! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod), and so is an implementation that
-//! does not declare its constraints.
+//! unilateral contacts and friction are refused with [`Error::UnsuitableMethod`], and so is an
+//! implementation that does not declare its constraints.
 //!
 //! **Rows as an N-vector.** The methods are generic over `Mechanism<N>`, which cannot name the
 //! number of rows C; the rows come from [`Mechanism::holonomic_constraints_at`] padded with zeros
@@ -147,7 +146,13 @@ pub(crate) fn rows_on<M: Mechanism<N>, const N: usize>(
 }
 
 /// The Newton breakdown of a RATTLE position stage.
-pub(crate) fn breakdown(method: &'static str, t: f64, h: f64, iteration: usize, reason: &str) -> Error {
+pub(crate) fn breakdown(
+    method: &'static str,
+    t: f64,
+    h: f64,
+    iteration: usize,
+    reason: &str,
+) -> Error {
     Error::NewtonBreakdown {
         method,
         t,

@@ -242,8 +242,12 @@ impl Variational {
         let (_, g0) = rows_and_jacobian(mechanism, Self::NAME, t, q0)?;
         // Λ enters R linearly through −G(q₀)ᵀΛ; the padding rows are Λᵢ = 0.
         let minus_g0t = -g0.transpose();
-        let padding = SMatrix::<f64, N, N>::from_fn(|i, j| if i == j && i >= rows { 1.0 } else { 0.0 });
-        let mut x = [SVector::<f64, N>::from(*v_guess), SVector::<f64, N>::zeros()];
+        let padding =
+            SMatrix::<f64, N, N>::from_fn(|i, j| if i == j && i >= rows { 1.0 } else { 0.0 });
+        let mut x = [
+            SVector::<f64, N>::from(*v_guess),
+            SVector::<f64, N>::zeros(),
+        ];
         let mut iteration = 0;
         let before = stats.newton_iterations;
         let end = newton(&mut x, MAX_NEWTON_ITERATIONS, false, stats, |x| {
@@ -253,13 +257,8 @@ impl Variational {
             let q1: [DualSVec<f64, N>; N] = std::array::from_fn(|j| vm[j] * h + q0[j]);
             let g = rows_on(mechanism, Self::NAME, t1, &q1)?;
             let momentum = SVector::<f64, N>::from_fn(|i, _| r[i].re) + minus_g0t * x[1];
-            let position = SVector::<f64, N>::from_fn(|i, _| {
-                if i < rows {
-                    g[i].re / h
-                } else {
-                    x[1][i]
-                }
-            });
+            let position =
+                SVector::<f64, N>::from_fn(|i, _| if i < rows { g[i].re / h } else { x[1][i] });
             let norm = max_norm(&momentum).max(max_norm(&position));
             if !norm.is_finite() {
                 return Err(breakdown(

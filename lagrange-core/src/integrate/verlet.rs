@@ -47,8 +47,8 @@ use super::rattle::{holonomic_rows, position_stage, rows_and_jacobian};
 use super::{Integrator, Stats};
 use crate::dynamics::{mass_matrix_failure, solve_accelerations};
 use crate::error::{Error, Result};
-use crate::mechanism::Mechanism;
 use crate::linalg::{cholesky, cholesky_substitute};
+use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
