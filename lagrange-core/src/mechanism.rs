@@ -66,6 +66,27 @@ pub trait Mechanism<const N: usize>: Sized {
     /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation
     /// does not provide them. RATTLE ([`StormerVerlet`](crate::StormerVerlet),
     /// [`Variational`](crate::Variational)) differentiates them with dual numbers.
+    ///
+    /// ```
+    /// use lagrange_core::Mechanism;
+    /// # use lagrange_core::{vec2, Model, Scalar};
+    /// # struct Pendulum;
+    /// # impl Model<1, 2> for Pendulum {
+    /// #     type Coords = [f64; 1];
+    /// #     const RHEONOMIC: bool = false;
+    /// #     const HAS_POTENTIAL: bool = true;
+    /// #     const HAS_FORCES: bool = false;
+    /// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    /// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+    /// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+    /// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+    /// #     }
+    /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+    /// # }
+    /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+    /// // The pendulum in its angle has no constraint rows to provide.
+    /// assert_eq!(Pendulum.holonomic_constraints_at(0.0, &[0.3]), None);
+    /// ```
     #[inline]
     fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {
         let _ = (t, q);
