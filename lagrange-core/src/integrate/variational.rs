@@ -35,17 +35,18 @@
 //! **Constraints: RATTLE.** Holonomic constraints g(q, t) = 0 (`#[constraint]` rows) enter the
 //! discrete Euler–Lagrange equations with multipliers, split between the two ends of the step as in
 //! RATTLE (Hairer, Lubich & Wanner, *Geometric Numerical Integration*, 2nd ed., §VI.6 and
-//! §VII.1.4, (1.26); see [`rattle`](super::rattle)), with G = ∂g/∂q and Λ = (h/2)λ:
+//! §VII.1.4, (1.26); see [`rattle`](super::rattle)), with Dg = ∂g/∂q the constraint Jacobian (G
+//! stays the momentum rate above), Λ = (h/2)λ and Λ₁ = (h/2)μ:
 //!
 //! ```text
-//! R(v_m, Λ) = p(t_m, q_m, v_m) − (h/2) G(t_m, q_m, v_m) − p₀ − G(q₀, t₀)ᵀΛ = 0,   g(q₀ + h v_m, t₁) / h = 0,
-//! q₁ = q₀ + h v_m,     p₁ = p₀ + G(q₀, t₀)ᵀΛ + h G(t_m, q_m, v_m) + G(q₁, t₁)ᵀ μ,
+//! p(t_m, q_m, v_m) − (h/2) G(t_m, q_m, v_m) − p₀ − Dg(q₀, t₀)ᵀΛ = 0,     g(q₀ + h v_m, t₁) / h = 0,
+//! q₁ = q₀ + h v_m,     p₁ = p₀ + Dg(q₀, t₀)ᵀΛ + h G(t_m, q_m, v_m) + Dg(q₁, t₁)ᵀΛ₁,
 //! ```
 //!
 //! the first line solved for (v_m, Λ) together by the same Newton iteration (the 2N-square Jacobian
-//! [[∂R/∂v_m, −G(q₀)ᵀ], [G(q₁), 0]], exact from the same dual seeding of v_m), μ such that v₁
-//! satisfies G(q₁, t₁) v₁ + ∂g/∂t = 0: the mass-weighted velocity projection
-//! [`Mechanism::project`] applied to the velocity recovered from p₁ without μ. Velocity rows,
+//! [[∂R/∂v_m, −Dg(q₀)ᵀ], [Dg(q₁), 0]], exact from the same dual seeding of v_m), Λ₁ such that v₁
+//! satisfies Dg(q₁, t₁) v₁ + ∂g/∂t = 0: the mass-weighted velocity projection
+//! [`Mechanism::project`] applied to the velocity recovered from p₁ without Λ₁. Velocity rows,
 //! unilateral contacts and friction are refused by the declaration
 //! ([`Mechanism::CONSTRAINT_COUNTS`], see [`holonomic_rows`]), whatever the state.
 
@@ -141,8 +142,8 @@ impl Variational {
         if rows == 0 {
             return Ok((q1, p1, vm, iterations));
         }
-        // RATTLE's μ on the momenta: p₁ + G(q₁)ᵀμ is the momentum of the velocity recovered from
-        // p₁ and projected (mass-weighted) onto G(q₁) v₁ + ∂g/∂t = 0.
+        // RATTLE's μ on the momenta: p₁ + Dg(q₁)ᵀΛ₁ is the momentum of the velocity recovered from
+        // p₁ and projected (mass-weighted) onto Dg(q₁) v₁ + ∂g/∂t = 0.
         let (t1, mut q1) = (t + h, q1);
         let (mut v1, _) =
             canonical::velocities_from_momenta(mechanism, t1, &q1, &p1, &vm, &mut stats)?;
@@ -240,7 +241,7 @@ impl Variational {
     ) -> Result<([f64; N], [f64; N], [f64; N], usize)> {
         let (tm, t1) = (t + 0.5 * h, t + h);
         let (_, g0) = rows_and_jacobian(mechanism, Self::NAME, t, q0)?;
-        // Λ enters R linearly through −G(q₀)ᵀΛ; the padding rows are Λᵢ = 0.
+        // Λ enters R linearly through −Dg(q₀)ᵀΛ; the padding rows are Λᵢ = 0.
         let minus_g0t = -g0.transpose();
         let padding =
             SMatrix::<f64, N, N>::from_fn(|i, j| if i == j && i >= rows { 1.0 } else { 0.0 });
