@@ -39,7 +39,7 @@
 //! stays the momentum rate above), Λ = (h/2)λ and Λ₁ = (h/2)μ:
 //!
 //! ```text
-//! p(t_m, q_m, v_m) − (h/2) G(t_m, q_m, v_m) − p₀ − Dg(q₀, t₀)ᵀΛ = 0,     g(q₀ + h v_m, t₁) / h = 0,
+//! R(v_m) − Dg(q₀, t₀)ᵀΛ = 0,     g(q₀ + h v_m, t₁) / h = 0                  (R as above),
 //! q₁ = q₀ + h v_m,     p₁ = p₀ + Dg(q₀, t₀)ᵀΛ + h G(t_m, q_m, v_m) + Dg(q₁, t₁)ᵀΛ₁,
 //! ```
 //!
