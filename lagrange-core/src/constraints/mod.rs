@@ -196,7 +196,7 @@ pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChan
 pub use forces::{constraint_forces, ConstraintForces};
 pub use mode::infer_mode;
 pub use projection::project;
-pub use rows::{constraint_rows, ConstraintRows};
+pub use rows::{constraint_rows, holonomic_values, ConstraintRows};
 pub use solve::{accelerations, accelerations_in_mode, ConstrainedAccelerations};
 
 use crate::geometry::Scalar;
@@ -231,6 +231,66 @@ impl ConstraintKind {
             self,
             ConstraintKind::Velocity | ConstraintKind::Friction { .. }
         )
+    }
+}
+
+/// How many rows of each [`ConstraintKind`] a declaration has: what
+/// [`Mechanism::CONSTRAINT_COUNTS`](crate::Mechanism::CONSTRAINT_COUNTS) declares, so integrators
+/// decide from constants which constraints they can enforce.
+///
+/// ```
+/// use lagrange_core::constraints::{ConstraintCounts, ConstraintKind};
+/// let kinds = [ConstraintKind::Holonomic, ConstraintKind::Unilateral, ConstraintKind::Friction { normal: 1 }];
+/// const NONE: ConstraintCounts = ConstraintCounts::NONE;
+/// let counts = ConstraintCounts::of(&kinds);
+/// assert_eq!((counts.holonomic, counts.unilateral, counts.friction, counts.rows()), (1, 1, 1, 3));
+/// assert!(!counts.only_holonomic() && NONE.only_holonomic() && NONE.rows() == 0);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ConstraintCounts {
+    /// Holonomic rows g(q, t) = 0.
+    pub holonomic: usize,
+    /// Velocity rows A(q, t) q̇ + a(q, t) = 0.
+    pub velocity: usize,
+    /// Unilateral rows c(q, t) ≥ 0.
+    pub unilateral: usize,
+    /// Friction rows.
+    pub friction: usize,
+}
+
+impl ConstraintCounts {
+    /// No constraint rows.
+    pub const NONE: ConstraintCounts = ConstraintCounts {
+        holonomic: 0,
+        velocity: 0,
+        unilateral: 0,
+        friction: 0,
+    };
+
+    /// The counts of a declaration's [`Constraints::KINDS`].
+    pub const fn of(kinds: &[ConstraintKind]) -> Self {
+        let mut counts = Self::NONE;
+        let mut i = 0;
+        while i < kinds.len() {
+            match kinds[i] {
+                ConstraintKind::Holonomic => counts.holonomic += 1,
+                ConstraintKind::Velocity => counts.velocity += 1,
+                ConstraintKind::Unilateral => counts.unilateral += 1,
+                ConstraintKind::Friction { .. } => counts.friction += 1,
+            }
+            i += 1;
+        }
+        counts
+    }
+
+    /// Every row.
+    pub const fn rows(self) -> usize {
+        self.holonomic + self.velocity + self.unilateral + self.friction
+    }
+
+    /// Whether every row (if any) is holonomic: equality constraints on the configuration alone.
+    pub const fn only_holonomic(self) -> bool {
+        self.velocity == 0 && self.unilateral == 0 && self.friction == 0
     }
 }
 

@@ -337,3 +337,65 @@ pub fn constraint_rows<
 pub(super) fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
     std::array::from_fn(|j| q[j].re())
 }
+
+/// The holonomic rows' values g(q, t) at (t, q), for any scalar, in declaration order (other kinds
+/// of row skipped) and padded with zeros to N entries: what
+/// [`Mechanism::holonomic_constraints_at`](crate::Mechanism::holonomic_constraints_at) forwards to,
+/// so integrators generic over `Mechanism<N>` (which cannot name C) can differentiate them.
+/// Independent holonomic rows number at most N; rows beyond the N-th are not returned (the
+/// integrators refuse such a declaration from
+/// [`Mechanism::CONSTRAINT_COUNTS`](crate::Mechanism::CONSTRAINT_COUNTS) before calling this).
+///
+/// ```
+/// use lagrange_core::constraints::{holonomic_values, ConstraintKind, Constraints};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Bead;
+/// # impl Model<2, 2> for Bead {
+/// #     type Coords = [f64; 2];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = false;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], _x: &[D; 2]) -> D { D::zero() }
+/// # }
+/// // A bead on the unit circle, with a velocity row declared first: only the circle is returned.
+/// impl Constraints<2, 2, 2> for Bead {
+///     const NAMES: [&'static str; 2] = ["drive", "circle"];
+///     const KINDS: [ConstraintKind; 2] = [ConstraintKind::Velocity, ConstraintKind::Holonomic];
+///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 2] {
+///         [D::zero(), vec2(x[0], x[1]).norm() - D::from(1.0)]
+///     }
+/// }
+/// assert_eq!(holonomic_values(&Bead, 0.0, &[3.0, 4.0]), [4.0, 0.0]);
+/// ```
+pub fn holonomic_values<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+) -> [S; N] {
+    let mut out = [S::zero(); N];
+    if !M::KINDS
+        .iter()
+        .any(|k| matches!(k, ConstraintKind::Holonomic))
+    {
+        return out;
+    }
+    let x = model.cartesian(t, q);
+    let g = model.position_constraints(t, q, &x);
+    let mut slot = 0;
+    for i in 0..C {
+        if matches!(M::KINDS[i], ConstraintKind::Holonomic) && slot < N {
+            out[slot] = g[i];
+            slot += 1;
+        }
+    }
+    out
+}
