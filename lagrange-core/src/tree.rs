@@ -283,6 +283,10 @@ pub fn mass_matrix_by_ancestors<
 ) -> SMatrix<S, N, N> {
     let mut m = SMatrix::<S, N, N>::zeros();
     for b in 0..B {
+        // A subtree of massless points adds nothing.
+        if composite[b] == 0.0 {
+            continue;
+        }
         couple::<M, S, N, K, W, B>(&mut m, jacobian, composite, b, b);
         for a in 0..b {
             if M::ANCESTORS[b][a] {
@@ -296,8 +300,9 @@ pub fn mass_matrix_by_ancestors<
 /// Adds to M the terms that pair body `b` with body `a` — `a = b` (C_b D_bᵀ D_b), or `a` above `b`
 /// (C_b (Dₐᵀ D_b + D_bᵀ Dₐ)) — one dot product over b's rows per pair of seeds. Mirrored entries
 /// receive the same terms in the same order, so M is exactly symmetric. Called with constant
-/// `b` and `a` (as the `#[mechanism]` expansion does, pair by pair), every index and seed is known
-/// where it is compiled: straight-line code with no loop or bounds check left.
+/// `b` and `a` (as the `#[mechanism]` expansion does, pair by pair, leaving out the bodies below
+/// which nothing carries mass), every index and seed is known where it is compiled: straight-line
+/// code with no loop, branch or bounds check left.
 #[inline(always)]
 pub fn couple<
     M: Tree<N, K, W, B>,
@@ -313,9 +318,6 @@ pub fn couple<
     b: usize,
     a: usize,
 ) {
-    if composite[b] == 0.0 {
-        return;
-    }
     let (body, above) = (&M::BODIES[b], &M::BODIES[a]);
     let weight = S::from(composite[b]);
     let (da, db) = (&jacobian[a], &jacobian[b]);

@@ -62,7 +62,7 @@ pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
         );
     }
     let b = lit(bodies.len());
-    let mass_matrix = mass_matrix_fn(tree, (&n, &k, &w, &b));
+    let mass_matrix = mass_matrix_fn(model, tree, (&n, &k, &w, &b));
     quote! {
         impl #params {
             #(#functions)*
@@ -89,12 +89,27 @@ const MAX_WRITTEN_PAIRS: usize = 160;
 /// `fn mass_matrix`: one `couple(b, a)` per body and each body above it, with constant indices,
 /// so the compiler emits straight-line code for M (see `lagrange_core::tree::couple`).
 fn mass_matrix_fn(
+    model: &Model,
     tree: &Tree,
     (n, k, w, b): (&Literal, &Literal, &Literal, &Literal),
 ) -> TokenStream {
     let p = private();
+    // Whether anything at or below each body carries mass (children come after their parents).
+    let mut massive: Vec<bool> = tree
+        .bodies
+        .iter()
+        .map(|own| model.bodies[own.body].shape.has_mass())
+        .collect();
+    for b in (0..tree.bodies.len()).rev() {
+        if let (true, Some(parent)) = (massive[b], tree.bodies[b].parent) {
+            massive[parent] = true;
+        }
+    }
     let mut pairs = Vec::new();
     for (body, own) in tree.bodies.iter().enumerate() {
+        if !massive[body] {
+            continue;
+        }
         pairs.push((body, body));
         let mut above = own.parent;
         while let Some(a) = above {
