@@ -48,7 +48,7 @@ pub(super) fn mechanism_impl(
                 #p::core::result::Result::Ok(())
             }
             #overrides
-            #[inline]
+            #[inline(always)]
             fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
                 #equations_of_motion
             }

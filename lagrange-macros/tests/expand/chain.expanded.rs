@@ -387,7 +387,7 @@ pub mod chain {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,

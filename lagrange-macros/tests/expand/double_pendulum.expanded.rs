@@ -377,7 +377,7 @@ pub mod double_pendulum {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,

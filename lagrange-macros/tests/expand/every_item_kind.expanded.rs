@@ -494,7 +494,7 @@ pub mod everything {
             <Self as ::lagrange::__private::Model<2, 17>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,

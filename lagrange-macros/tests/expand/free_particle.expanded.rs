@@ -177,7 +177,7 @@ pub mod free {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,

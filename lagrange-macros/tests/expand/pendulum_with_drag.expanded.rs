@@ -266,7 +266,7 @@ pub mod pendulum {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,

@@ -313,7 +313,7 @@ pub mod sliding_block {
                 ::lagrange::__private::lagrange_core::constraints::CONSISTENCY_TOLERANCE,
             )
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
