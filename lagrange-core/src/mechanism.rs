@@ -9,9 +9,12 @@ use nalgebra::SMatrix;
 
 /// A mechanism with `N` degrees of freedom, as `#[mechanism]` generates it.
 ///
-/// The required methods are the generated glue (each forwards to a generic function of
-/// [`crate::dynamics`]); everything a user calls is provided on top of them, with named coordinates
-/// in and out and typed errors.
+/// What a user calls is here: [`accelerations`](Mechanism::accelerations), the energies and momenta,
+/// [`step`](Mechanism::step) and [`simulate`](Mechanism::simulate), [`validated`](Mechanism::validated),
+/// with named coordinates in and out and typed errors. Beneath them sits the glue `#[mechanism]`
+/// generates (hidden from these docs): scalar-generic hooks on raw arrays that forward to the
+/// generic functions of [`crate::dynamics`], [`crate::tree`] and [`crate::constraints`], and that the
+/// integrators, the analyses and the sensitivities call.
 pub trait Mechanism<const N: usize>: Sized {
     /// The named generalized coordinates (`Coords` of the declaration).
     type Coords: Coordinates<N>;
@@ -37,6 +40,7 @@ pub trait Mechanism<const N: usize>: Sized {
 
     /// Checks parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
+    #[doc(hidden)]
     /// M, 𝓕 and b at (t, q, q̇), for any scalar.
     fn equations_of_motion_at<S: Scalar>(
         &self,
@@ -44,15 +48,20 @@ pub trait Mechanism<const N: usize>: Sized {
         q: &[S; N],
         v: &[S; N],
     ) -> EquationsOfMotion<S, N>;
+    #[doc(hidden)]
     /// T at (t, q, q̇), for any scalar.
     fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> S;
+    #[doc(hidden)]
     /// V at (t, q), for any scalar.
     fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; N]) -> S;
+    #[doc(hidden)]
     /// p = ∂L/∂q̇ at (t, q, q̇), for any scalar.
     fn momenta_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [S; N];
+    #[doc(hidden)]
     /// ∂L/∂t at fixed (q, q̇) (zero for a scleronomic mechanism).
     fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> f64;
 
+    #[doc(hidden)]
     /// q̈ at (t, q, q̇) for any scalar: solves M q̈ = 𝓕 − b. No validation (the hot path of
     /// integrators, which validate once per step).
     #[inline]
@@ -61,6 +70,7 @@ pub trait Mechanism<const N: usize>: Sized {
         crate::dynamics::solve_accelerations::<Self::Coords, S, N>(&eom, t, q)
     }
 
+    #[doc(hidden)]
     /// Hook for mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any
     /// scalar, in declaration order and padded with zeros to N entries (see
     /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation
@@ -93,6 +103,7 @@ pub trait Mechanism<const N: usize>: Sized {
         None
     }
 
+    #[doc(hidden)]
     /// Hook for mechanisms with constraints: projects (q, q̇) at time `t` back onto the constraints
     /// (see [`crate::constraints::project`]). Integrators call it after every step; the default does
     /// nothing. On error `q` and `v` are unchanged.
@@ -102,6 +113,7 @@ pub trait Mechanism<const N: usize>: Sized {
         Ok(())
     }
 
+    #[doc(hidden)]
     /// Hook for mechanisms with constraints: checks that (t, q, q̇) satisfies them within tolerance
     /// (see [`crate::constraints::check_consistent`]), so a state violating them is refused rather
     /// than silently projected. Integrators call it before every step; the default accepts.
@@ -118,6 +130,7 @@ pub trait Mechanism<const N: usize>: Sized {
         crate::validated::validate(self)
     }
 
+    #[doc(hidden)]
     /// Hook for mechanisms with constraints: checks what the declaration promises but only a state
     /// can show — that every velocity row is affine in q̇ (see
     /// [`crate::constraints::check_velocity_rows_affine`]) — so every entry point refuses the same
@@ -128,6 +141,7 @@ pub trait Mechanism<const N: usize>: Sized {
         Ok(())
     }
 
+    #[doc(hidden)]
     /// Checks parameters and state; what every user-facing call does first.
     fn check(&self, state: &State<Self::Coords>) -> Result<([f64; N], [f64; N])> {
         self.validate()?;
