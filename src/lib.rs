@@ -72,13 +72,13 @@ pub use lagrange_core::model::{Coordinates, State};
 pub use lagrange_core::validated::Validated;
 
 pub use lagrange_core::ensemble;
-/// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
-pub use lagrange_ffi as ffi;
-pub use lagrange_ffi::export_c;
 pub use lagrange_core::{
     analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model,
     scalar_ext, tree, validated,
 };
+/// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
+pub use lagrange_ffi as ffi;
+pub use lagrange_ffi::export_c;
 
 /// Everything a declaration and its user need: `use lagrange::prelude::*;`.
 pub mod prelude {

@@ -148,15 +148,19 @@ fn comment(out: &mut String, indent: &str, lines: &[&str]) {
 /// The part every exported mechanism shares (status and method codes), once per translation unit.
 fn common(out: &mut String) {
     out.push_str("#ifndef LAGRANGE_COMMON_DECLARATIONS\n#define LAGRANGE_COMMON_DECLARATIONS\n\n");
-    out.push_str("/* What every function returns: LAGRANGE_OK or the kind of failure; the message of\n");
+    out.push_str(
+        "/* What every function returns: LAGRANGE_OK or the kind of failure; the message of\n",
+    );
     out.push_str(" * a failure is PREFIX_last_error(). */\ntypedef enum lagrange_status {\n");
     for status in Status::ALL {
-        let (name, meaning) = status.c_name();
+        let (name, meaning) = status.c_definition();
         let _ = writeln!(out, "    {name} = {}, /* {meaning} */", status as u32);
     }
-    out.push_str("} lagrange_status;\n\n/* Integration methods, the `method` argument of PREFIX_step. */\n");
+    out.push_str(
+        "} lagrange_status;\n\n/* Integration methods, the `method` argument of PREFIX_step. */\n",
+    );
     for method in Method::ALL {
-        let (name, meaning) = method.c_name();
+        let (name, meaning) = method.c_definition();
         let _ = writeln!(out, "#define {name} {}u /* {meaning} */", method as u32);
     }
     out.push_str("\n#endif /* LAGRANGE_COMMON_DECLARATIONS */\n\n");
@@ -186,8 +190,16 @@ pub fn header<M: Export + Mechanism<N>, const N: usize>() -> String {
     out.push_str("#include <stddef.h>\n#include <stdint.h>\n\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
     common(&mut out);
     let _ = writeln!(out, "#define {upper}_DOF {N}");
-    let _ = writeln!(out, "#define {upper}_PARAMETER_COUNT {}", M::PARAMETERS.len());
-    let _ = writeln!(out, "#define {upper}_CONSTRAINT_COUNT {}\n", M::CONSTRAINT_ROWS.len());
+    let _ = writeln!(
+        out,
+        "#define {upper}_PARAMETER_COUNT {}",
+        M::PARAMETERS.len()
+    );
+    let _ = writeln!(
+        out,
+        "#define {upper}_CONSTRAINT_COUNT {}\n",
+        M::CONSTRAINT_ROWS.len()
+    );
     out.push_str("/* Parameters: indices into the `params` array of the create function. */\n");
     indices(&mut out, &upper, "PARAM_", M::PARAMETERS);
     out.push_str("\n/* Coordinates: indices into q and v. */\n");
@@ -203,7 +215,11 @@ pub fn header<M: Export + Mechanism<N>, const N: usize>() -> String {
     );
     for f in M::functions() {
         let doc: Vec<String> = f.doc.iter().map(|l| with_prefix(l, prefix)).collect();
-        comment(&mut out, "", &doc.iter().map(String::as_str).collect::<Vec<_>>());
+        comment(
+            &mut out,
+            "",
+            &doc.iter().map(String::as_str).collect::<Vec<_>>(),
+        );
         let args: Vec<String> = f
             .args
             .iter()
@@ -223,7 +239,10 @@ pub fn header<M: Export + Mechanism<N>, const N: usize>() -> String {
         };
         let _ = writeln!(out, "{ret}{prefix}_{}({args});\n", f.name);
     }
-    let _ = writeln!(out, "#ifdef __cplusplus\n}}\n#endif\n\n#endif /* {upper}_H */");
+    let _ = writeln!(
+        out,
+        "#ifdef __cplusplus\n}}\n#endif\n\n#endif /* {upper}_H */"
+    );
     out
 }
 
@@ -237,7 +256,7 @@ mod tests {
         assert_eq!(<*mut f64>::c_name(), "double *");
         assert_eq!(<*mut *mut usize>::c_name(), "size_t **");
         assert_eq!(<*const c_char>::c_name(), "const char *");
-        assert_eq!(<Status>::c_name(), "lagrange_status");
+        assert_eq!(<Status as CType>::c_name(), "lagrange_status");
     }
 
     #[test]

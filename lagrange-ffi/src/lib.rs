@@ -30,3 +30,6 @@ pub mod __private {
     pub use std::vec;
     pub use std::vec::Vec;
 }
+
+#[cfg(test)]
+mod tests;

@@ -76,7 +76,7 @@ impl Method {
     }
 
     /// The C name of the code (`LAGRANGE_RK4`) and its meaning, for the header.
-    pub fn c_name(self) -> (&'static str, &'static str) {
+    pub fn c_definition(self) -> (&'static str, &'static str) {
         match self {
             Method::Rk4 => ("LAGRANGE_RK4", "classical Runge-Kutta 4, one step of h"),
             Method::Dopri5 => (
@@ -87,12 +87,18 @@ impl Method {
                 "LAGRANGE_DOP853",
                 "Dormand-Prince 8(5,3), adaptive over [t, t + h], rtol 1e-6, atol 1e-9",
             ),
-            Method::ImplicitMidpoint => ("LAGRANGE_IMPLICIT_MIDPOINT", "implicit midpoint, one step of h"),
+            Method::ImplicitMidpoint => (
+                "LAGRANGE_IMPLICIT_MIDPOINT",
+                "implicit midpoint, one step of h",
+            ),
             Method::GaussLegendre2 => (
                 "LAGRANGE_GAUSS_LEGENDRE2",
                 "2-stage Gauss-Legendre, one step of h",
             ),
-            Method::Variational => ("LAGRANGE_VARIATIONAL", "variational integrator, one step of h"),
+            Method::Variational => (
+                "LAGRANGE_VARIATIONAL",
+                "variational integrator, one step of h",
+            ),
             Method::StormerVerlet => (
                 "LAGRANGE_STORMER_VERLET",
                 "Stormer-Verlet (constant mass matrix only), one step of h",
@@ -138,7 +144,12 @@ unsafe fn output(ptr: *mut f64, values: &[f64]) {
 }
 
 /// Checks that an output array's length is the mechanism's (unless the pointer is NULL: skipped).
-fn output_len(name: &'static str, ptr: *mut f64, len: usize, expected: usize) -> Result<(), Failure> {
+fn output_len(
+    name: &'static str,
+    ptr: *mut f64,
+    len: usize,
+    expected: usize,
+) -> Result<(), Failure> {
     if ptr.is_null() || len == expected {
         Ok(())
     } else {

@@ -56,10 +56,13 @@ impl Status {
     ];
 
     /// The C name of the value (`LAGRANGE_INVALID_STEP`) and its one-line meaning, for the header.
-    pub fn c_name(self) -> (&'static str, &'static str) {
+    pub fn c_definition(self) -> (&'static str, &'static str) {
         match self {
             Status::Ok => ("LAGRANGE_OK", "success"),
-            Status::NullPointer => ("LAGRANGE_NULL_POINTER", "a required pointer argument is NULL"),
+            Status::NullPointer => (
+                "LAGRANGE_NULL_POINTER",
+                "a required pointer argument is NULL",
+            ),
             Status::InvalidArgument => (
                 "LAGRANGE_INVALID_ARGUMENT",
                 "an array length that does not match the mechanism, or an unknown method",

@@ -43,10 +43,17 @@ fn static_library() -> PathBuf {
 /// library, or the shared one when `shared` (found at run time through the rpath).
 fn compile_c_program(out: &Path, shared: bool) {
     let mut cc = Command::new("cc");
-    cc.args(["-O2", "-std=c11", "-Wall", "-Wextra", "-Werror", "-pedantic"])
-        .arg(crate_dir().join("main.c"))
-        .arg("-I")
-        .arg(crate_dir());
+    cc.args([
+        "-O2",
+        "-std=c11",
+        "-Wall",
+        "-Wextra",
+        "-Werror",
+        "-pedantic",
+    ])
+    .arg(crate_dir().join("main.c"))
+    .arg("-I")
+    .arg(crate_dir());
     let library = static_library();
     if shared {
         let dir = library.parent().unwrap().display().to_string();
@@ -92,10 +99,19 @@ fn numbers(lines: &[Vec<String>], label: &str) -> Vec<f64> {
 }
 
 fn scene() -> (lagrange::Validated<DoublePendulum>, State) {
-    let sys = DoublePendulum { m1: 1.0, m2: 1.0, l1: 1.0, l2: 1.0, g: 9.81 }
-        .validated()
-        .unwrap();
-    let s = State::at_rest(Coords { theta1: 1.0, theta2: 0.5 });
+    let sys = DoublePendulum {
+        m1: 1.0,
+        m2: 1.0,
+        l1: 1.0,
+        l2: 1.0,
+        g: 9.81,
+    }
+    .validated()
+    .unwrap();
+    let s = State::at_rest(Coords {
+        theta1: 1.0,
+        theta2: 0.5,
+    });
     (sys, s)
 }
 
@@ -152,7 +168,9 @@ fn c_program_matches_rust() {
         .find(|l| l.first().map(String::as_str) == Some("nan_parameter"))
         .expect("the NaN parameter line");
     assert_eq!(nan[1], "3", "LAGRANGE_INVALID_PARAMETER is 3");
-    assert!(nan[2..].join(" ").contains("parameter `l1` is not finite (NaN)"));
+    assert!(nan[2..]
+        .join(" ")
+        .contains("parameter `l1` is not finite (NaN)"));
     assert!(lines.iter().any(|l| l == &["bad_input", "ok"]));
     std::fs::remove_dir_all(&dir).ok();
 }
