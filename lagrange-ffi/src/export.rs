@@ -3,8 +3,8 @@
 /// Exports a `#[mechanism]` to C: writes, for the parameter struct named, the `extern "C"`
 /// functions `PREFIX_create`, `PREFIX_free`, `PREFIX_set_state`, `PREFIX_get_state`,
 /// `PREFIX_step`, `PREFIX_steps`, `PREFIX_integrate_dopri5`, `PREFIX_energies`,
-/// `PREFIX_accelerations`, `PREFIX_constraint_forces` and `PREFIX_last_error`, and an
-/// [`Export`](crate::Export) impl whose `header()` is their C header.
+/// `PREFIX_accelerations`, `PREFIX_constraint_forces` and `PREFIX_last_error`, and a type named
+/// by the prefix (`dp`) whose [`Export`](crate::Export) impl gives their C header, `dp::header()`.
 ///
 /// Put it in a crate built as `cdylib` or `staticlib` (see the README, "Calling a mechanism from
 /// C"). Every function returns a `lagrange_status`; none unwinds into C.
@@ -34,13 +34,17 @@
 ///
 /// lagrange::export_c!(pendulum::Pendulum, prefix = pend);
 ///
-/// let header = <pendulum::Pendulum as Export>::header();
+/// let header = pend::header();
 /// assert!(header.contains("lagrange_status pend_step(pend_simulation *sim, uint32_t method, double h);"));
 /// assert!(header.contains("#define PEND_PARAM_G 1"));
 /// ```
 #[macro_export]
 macro_rules! export_c {
     ($mechanism:ty, prefix = $prefix:ident $(,)?) => {
+        #[doc = concat!("The C export of `", stringify!($mechanism), "`: functions `", stringify!($prefix), "_*`; `", stringify!($prefix), "::header()` is their header.")]
+        #[allow(non_camel_case_types)]
+        pub enum $prefix {}
+
         const _: () = {
             type Mech = $mechanism;
             const N: usize = <Mech as $crate::__private::Declaration>::DOF;
@@ -48,14 +52,14 @@ macro_rules! export_c {
             type Status = $crate::Status;
             type CChar = $crate::__private::c_char;
 
-            impl $crate::Export for Mech {
+            impl $crate::Export for $prefix {
                 const PREFIX: &'static str = stringify!($prefix);
                 const RUST_PATH: &'static str = stringify!($mechanism);
                 fn functions() -> $crate::__private::Vec<$crate::header::CFunction> {
                     functions()
                 }
                 fn header() -> $crate::__private::String {
-                    $crate::header::header::<Mech, N>()
+                    $crate::header::header::<$prefix, Mech, N>()
                 }
             }
 

@@ -73,7 +73,7 @@ fn last_error() -> String {
 
 #[test]
 fn the_header_names_the_constraint_row() {
-    let header = cartesian_pendulum::CartesianPendulum::header();
+    let header = cp::header();
     assert!(header.contains("#define CP_CONSTRAINT_COUNT 1"));
     assert!(header.contains("#define CP_CONSTRAINT_ROD 0"));
     assert!(header.contains("#define CP_X 0\n#define CP_Y 1"));

@@ -1,12 +1,12 @@
 //! The double pendulum as a C library: `#[mechanism]` declares it, `lagrange::export_c!` writes
 //! its C functions (`dp_create`, `dp_step`, …). The header `double_pendulum.h` next to this crate
-//! is `<DoublePendulum as Export>::header()`, checked by `tests/c_program.rs`, which also compiles
+//! is `dp::header()`, checked by `tests/c_program.rs`, which also compiles
 //! and runs `main.c` against the library.
 //!
 //! ```
-//! use double_pendulum_ffi::double_pendulum::DoublePendulum;
+//! use double_pendulum_ffi::dp;
 //! use lagrange::ffi::Export;
-//! assert!(DoublePendulum::header().contains("#define DP_DOF 2"));
+//! assert!(dp::header().contains("#define DP_DOF 2"));
 //! ```
 
 use lagrange::prelude::*;

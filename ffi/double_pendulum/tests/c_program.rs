@@ -16,7 +16,7 @@ fn crate_dir() -> PathBuf {
 #[test]
 fn header_is_current() {
     let path = crate_dir().join("double_pendulum.h");
-    let generated = DoublePendulum::header();
+    let generated = double_pendulum_ffi::dp::header();
     if std::env::var_os("LAGRANGE_BLESS").is_some() {
         std::fs::write(&path, &generated).unwrap();
     }
