@@ -7,7 +7,7 @@
 //! - [`status`]: the [`Status`] codes every function returns, the last error's message per thread,
 //!   and the guard that turns errors and (as a last resort) panics into both;
 //! - [`simulation`]: the handle C holds ([`Simulation`]) and the checked marshalling of arrays;
-//! - [`header`]: the header, written from the same tokens as the functions.
+//! - [`header`](mod@header): the header, written from the same tokens as the functions.
 //!
 //! Bad input — a NULL pointer, a wrong array length, an unknown method code, a NaN parameter or
 //! state, a bad step — is a status and a message, never a panic; no unwinding crosses into C.
