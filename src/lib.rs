@@ -74,7 +74,7 @@ pub use lagrange_core::validated::Validated;
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
     analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model,
-    scalar_ext, tree, validated,
+    scalar_ext, sensitivity, tree, validated,
 };
 /// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
 pub use lagrange_ffi as ffi;
