@@ -38,8 +38,9 @@
 //! ```
 
 use crate::error::{Error, Result};
+use crate::integrate::dopri5::stages;
 use crate::integrate::rk4::rk4_step;
-use crate::integrate::{check_step_at, refuse_constrained};
+use crate::integrate::{check_step_at, refuse_constrained, Dopri5, Dopri5Stepper};
 use crate::mechanism::{diagnose, Mechanism};
 use crate::model::{check_state, Coordinates, State};
 use num_dual::DualSVec;
@@ -169,6 +170,25 @@ impl<'m, M: Mechanism<N>, const N: usize, const P: usize> Tangent<'m, M, N, P> {
         Ok(())
     }
 
+    /// One Dormand–Prince 5(4) step of size `h` (fixed: no error control), on the duals, with the
+    /// method's own stages. On error nothing changes.
+    pub fn dopri5_step(&mut self, h: f64) -> Result<()> {
+        check_step_at(self.t, h)?;
+        let m = self.mechanism;
+        let acc = |t: f64, q: &[DualSVec<f64, P>; N], v: &[DualSVec<f64, P>; N]| {
+            m.accelerations_at(DualSVec::from_re(t), q, v).map_err(|e| {
+                let (qr, vr) = (q.map(|x| x.re), v.map(|x| x.re));
+                diagnose(m, t, &qr, &vr, e)
+            })
+        };
+        let a = acc(self.t, &self.q, &self.v)?;
+        let (q, v, _, _) = stages(self.t, &self.q, &self.v, a, h, acc)?;
+        let (qr, vr) = (q.map(|x| x.re), v.map(|x| x.re));
+        check_state(&M::Coords::NAMES, self.t + h, &qr, &vr)?;
+        (self.t, self.q, self.v) = (self.t + h, q, v);
+        Ok(())
+    }
+
     /// The current state (real parts).
     pub fn state(&self) -> State<M::Coords> {
         State::new(
@@ -192,6 +212,70 @@ impl<'m, M: Mechanism<N>, const N: usize, const P: usize> Tangent<'m, M, N, P> {
             dv: std::array::from_fn(|j| along(&self.v, j)),
         }
     }
+}
+
+/// Sensitivities of an adaptive Dormand–Prince 5(4) run from `state` to `t_end` with `settings`:
+/// the plain run chooses its steps, then they are replayed on dual numbers with the step sizes
+/// frozen. The result is the derivative of the map the plain run computed with its step sizes held
+/// fixed (how the controller's choices depend on the initial values is not differentiated, which
+/// changes the result by about the tolerance); its real parts are the plain run's, bit for bit.
+///
+/// Errors: those of [`Tangent::new`] and of the plain run ([`Dopri5::integrate`]); more than
+/// `settings.max_steps` accepted steps is [`Error::StepSizeUnderflow`] at the time reached.
+///
+/// ```
+/// use lagrange_core::sensitivity::{integrate_dopri5, Seed};
+/// use lagrange_core::Dopri5;
+/// # use lagrange_core::{impl_mechanism, vec2, Model, Scalar, State};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # impl_mechanism!(Pendulum, 1, 2);
+/// let s0 = State::at_rest([0.01]);
+/// let out = integrate_dopri5(&Pendulum, &s0, [Seed::Velocity("q0")], Dopri5::new(1e-10, 1e-12), 1.0)?;
+/// // Linearised: ∂θ(t)/∂θ̇₀ = sin(ωt)/ω, to O(θ₀²).
+/// let omega = 9.81f64.sqrt();
+/// assert!((out.dq[0][0] - omega.sin() / omega).abs() < 1e-4);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+pub fn integrate_dopri5<M: Mechanism<N>, const N: usize, const P: usize>(
+    mechanism: &M,
+    state: &State<M::Coords>,
+    seeds: [Seed; P],
+    settings: Dopri5,
+    t_end: f64,
+) -> Result<Sensitivities<M::Coords, P>> {
+    let mut run = Tangent::new(mechanism, state, seeds)?;
+    if !(t_end.is_finite() && t_end >= state.t) {
+        return Err(Error::InvalidEndTime { t: state.t, t_end });
+    }
+    let mut plain = Dopri5Stepper::new(mechanism, settings, state)?;
+    let mut accepted = 0;
+    while plain.t() < t_end {
+        if accepted == settings.max_steps {
+            return Err(Error::StepSizeUnderflow {
+                method: "Dopri5",
+                t: plain.t(),
+                h: plain.proposed_step(),
+            });
+        }
+        plain.step(t_end)?;
+        accepted += 1;
+        run.dopri5_step(plain.last_step())?;
+        // The last step lands on t_end exactly, which t + h need not.
+        run.t = plain.t();
+    }
+    Ok(run.sensitivities())
 }
 
 fn constrained() -> Error {
