@@ -188,19 +188,24 @@ thread_local! {
 /// becomes U+FFFD).
 pub fn set_last_error(message: &str) {
     let text = CString::new(message.replace('\0', "\u{fffd}")).unwrap_or_default();
-    LAST_ERROR.with(|cell| *cell.borrow_mut() = text);
+    // `try_with`: during the thread's teardown (a call from a thread-exit destructor) the storage
+    // is gone; the message is then dropped rather than panicking.
+    let _ = LAST_ERROR.try_with(|cell| *cell.borrow_mut() = text);
 }
 
 /// The message of the last failure of a call on this thread, as a NUL-terminated UTF-8 string
 /// owned by the library: valid until the next call into the library on this thread, never to be
 /// freed by the caller. Empty (`""`) before the first failure. A success does not clear it.
 pub fn last_error() -> *const c_char {
-    LAST_ERROR.with(|cell| cell.borrow().as_ptr())
+    LAST_ERROR
+        .try_with(|cell| cell.borrow().as_ptr())
+        .unwrap_or(c"".as_ptr())
 }
 
 /// Runs `body` at the C boundary: `Ok` is [`Status::Ok`]; a failure stores its message and returns
 /// its status; a panic (a bug of the library, never bad input) is caught here, as a last guard,
-/// and reported as [`Status::Panic`] with its message, so no unwinding crosses into C.
+/// and reported as [`Status::Panic`] with its message, so no unwinding crosses into C. (A library
+/// built with `panic = "abort"` aborts instead: keep the default `unwind` profile for it.)
 pub fn guard(body: impl FnOnce() -> Result<(), Failure>) -> Status {
     let outcome = catch_unwind(AssertUnwindSafe(body)).unwrap_or_else(|payload| {
         let what = payload
