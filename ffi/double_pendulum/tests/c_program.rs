@@ -145,16 +145,19 @@ fn c_program_matches_rust() {
         .unwrap();
     let dopri5 = summary(&sys, &s0, &s);
 
+    let mut largest: f64 = 0.0;
     for (label, rust) in [("rk4", &rk4), ("dopri5", &dopri5)] {
         let c = numbers(&lines, label);
         assert_eq!(c.len(), rust.len());
         for (k, (c, r)) in c.iter().zip(rust).enumerate() {
+            largest = largest.max((c - r).abs());
             assert!(
                 (c - r).abs() <= 4.0 * f64::EPSILON * 8.0,
                 "{label}[{k}]: C {c:e} against Rust {r:e}"
             );
         }
     }
+    eprintln!("largest difference between the C and the Rust runs: {largest:e}");
     assert_eq!(
         numbers(&lines, "dopri5_accepted"),
         [outcome.stats.accepted as f64]
