@@ -16,14 +16,24 @@ pub trait Mechanism<const N: usize>: Sized {
     /// The named generalized coordinates (`Coords` of the declaration).
     type Coords: Coordinates<N>;
 
+    /// The constraint rows the declaration has, by kind (`Some(ConstraintCounts::NONE)` for none),
+    /// or `None` when the implementation does not say. [`impl_mechanism!`](crate::impl_mechanism)
+    /// and `#[mechanism]` declare it. Integrators decide from it alone — never from the state, so a
+    /// constraint whose force happens to vanish (λ = 0) is treated as what it is:
+    /// Störmer–Verlet and the variational integrator enforce holonomic rows by RATTLE and refuse
+    /// velocity, unilateral and friction rows, and an undeclared implementation; implicit midpoint
+    /// and Gauss–Legendre add Jᵀλ at every stage unless the mechanism declares no rows.
+    ///
+    /// [`ConstraintCounts`]: crate::constraints::ConstraintCounts
+    const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = None;
+
     /// The number of constraint rows the declaration has (`Some(0)` for none), or `None` when the
-    /// implementation does not say. Integrators decide from it whether constraint forces are part
-    /// of the motion: the variational integrator and Störmer–Verlet refuse `Some(c)` with c > 0,
-    /// implicit midpoint and Gauss–Legendre then add Jᵀλ at every stage. With `None` they fall back
-    /// to testing, at the start of every step, whether constraint forces act there (which cannot
-    /// tell a constraint whose force happens to vanish, λ = 0, from none). [`impl_mechanism!`](crate::impl_mechanism)
-    /// declares it.
-    const CONSTRAINTS: Option<usize> = None;
+    /// implementation does not say; by default the total of
+    /// [`CONSTRAINT_COUNTS`](Mechanism::CONSTRAINT_COUNTS).
+    const CONSTRAINTS: Option<usize> = match Self::CONSTRAINT_COUNTS {
+        Some(counts) => Some(counts.rows()),
+        None => None,
+    };
 
     /// Checks parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
@@ -49,6 +59,38 @@ pub trait Mechanism<const N: usize>: Sized {
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
         let eom = self.equations_of_motion_at(t, q, v);
         crate::dynamics::solve_accelerations::<Self::Coords, S, N>(&eom, t, q)
+    }
+
+    /// Hook for mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any
+    /// scalar, in declaration order and padded with zeros to N entries (see
+    /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation
+    /// does not provide them. RATTLE ([`StormerVerlet`](crate::StormerVerlet),
+    /// [`Variational`](crate::Variational)) differentiates them with dual numbers.
+    ///
+    /// ```
+    /// use lagrange_core::Mechanism;
+    /// # use lagrange_core::{vec2, Model, Scalar};
+    /// # struct Pendulum;
+    /// # impl Model<1, 2> for Pendulum {
+    /// #     type Coords = [f64; 1];
+    /// #     const RHEONOMIC: bool = false;
+    /// #     const HAS_POTENTIAL: bool = true;
+    /// #     const HAS_FORCES: bool = false;
+    /// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    /// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+    /// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+    /// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+    /// #     }
+    /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+    /// # }
+    /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+    /// // The pendulum in its angle has no constraint rows to provide.
+    /// assert_eq!(Pendulum.holonomic_constraints_at(0.0, &[0.3]), None);
+    /// ```
+    #[inline]
+    fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {
+        let _ = (t, q);
+        None
     }
 
     /// Hook for mechanisms with constraints: projects (q, q̇) at time `t` back onto the constraints
@@ -330,10 +372,13 @@ pub fn diagnose<M: Mechanism<N>, const N: usize>(
 macro_rules! impl_mechanism {
     ($ty:ty, $n:tt, $k:tt, constraints) => {
         $crate::impl_mechanism!(@impl $ty, $n, $k, {
-            const CONSTRAINTS: Option<usize> = {
+            const CONSTRAINT_COUNTS: Option<$crate::constraints::ConstraintCounts> = {
                 use $crate::constraints::Constraints as _;
-                Some($crate::constraints::row_count(&<$ty>::NAMES))
+                Some($crate::constraints::ConstraintCounts::of(&<$ty>::KINDS))
             };
+            fn holonomic_constraints_at<S: $crate::Scalar>(&self, t: S, q: &[S; $n]) -> Option<[S; $n]> {
+                Some($crate::constraints::holonomic_values(self, t, q))
+            }
             fn accelerations_at<S: $crate::Scalar>(
                 &self,
                 t: S,
@@ -362,7 +407,8 @@ macro_rules! impl_mechanism {
     };
     ($ty:ty, $n:tt, $k:tt) => {
         $crate::impl_mechanism!(@impl $ty, $n, $k, {
-            const CONSTRAINTS: Option<usize> = Some(0);
+            const CONSTRAINT_COUNTS: Option<$crate::constraints::ConstraintCounts> =
+                Some($crate::constraints::ConstraintCounts::NONE);
         });
     };
     (@impl $ty:ty, $n:tt, $k:tt, { $($extra:tt)* }) => {

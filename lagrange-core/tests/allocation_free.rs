@@ -111,6 +111,38 @@ impl Model<2, 4> for DampedDoublePendulum {
 }
 lagrange_core::impl_mechanism!(DampedDoublePendulum, 2, 4);
 
+/// The pendulum in Cartesian coordinates with its rod as a holonomic constraint: RATTLE.
+struct CartesianPendulum;
+
+impl Model<2, 2> for CartesianPendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * D::from(9.81)
+    }
+}
+
+impl lagrange_core::constraints::Constraints<2, 2, 1> for CartesianPendulum {
+    const NAMES: [&'static str; 1] = ["rod"];
+    const KINDS: [lagrange_core::constraints::ConstraintKind; 1] =
+        [lagrange_core::constraints::ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [vec2(x[0], x[1]).norm() - D::from(1.0)]
+    }
+}
+lagrange_core::impl_mechanism!(CartesianPendulum, 2, 2, constraints);
+
 fn steps_without_allocating<I: Integrator, M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
     m: &M,
     start: State<[f64; N]>,
@@ -141,6 +173,11 @@ fn every_integrator_steps_without_allocating() {
     steps_without_allocating::<ImplicitMidpoint, _, 2>(&DampedDoublePendulum, pendulum);
     steps_without_allocating::<GaussLegendre2, _, 2>(&DampedDoublePendulum, pendulum);
     steps_without_allocating::<Variational, _, 2>(&DampedDoublePendulum, pendulum);
+    // RATTLE: the position stage's Newton iteration and the velocity projection.
+    let on_rod = State::new(0.0, [0.6, -0.8], [0.8, 0.6]);
+    steps_without_allocating::<StormerVerlet, _, 2>(&CartesianPendulum, on_rod);
+    steps_without_allocating::<Variational, _, 2>(&CartesianPendulum, on_rod);
+    steps_without_allocating::<GaussLegendre2, _, 2>(&CartesianPendulum, on_rod);
 
     // Dopri5: a whole integration with events (one terminal) and an observer.
     let settings = Dopri5::new(1e-9, 1e-9);

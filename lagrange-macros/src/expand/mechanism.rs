@@ -26,12 +26,21 @@ pub(super) fn mechanism_impl(
         let c = lit(c);
         quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
     });
-    // Declared, so integrators decide from the declaration whether constraint forces act.
-    let rows = lit(constrained.unwrap_or(0));
+    // Declared, so integrators decide from the declaration which constraint forces act.
+    let counts = match constrained {
+        Some(c) => {
+            let c = lit(c);
+            quote!(#p::lagrange_core::constraints::ConstraintCounts::of(
+                &<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::KINDS
+            ))
+        }
+        None => quote!(#p::lagrange_core::constraints::ConstraintCounts::NONE),
+    };
     quote! {
         impl #p::Mechanism<#n> for #params {
             type Coords = Coords;
-            const CONSTRAINTS: #p::core::option::Option<usize> = #p::core::option::Option::Some(#rows);
+            const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
+                #p::core::option::Option::Some(#counts);
             #[inline]
             fn validate(&self) -> #p::Result<()> {
                 <Self as #p::Model<#n, #k>>::validate(self)?;
@@ -63,7 +72,7 @@ pub(super) fn mechanism_impl(
     }
 }
 
-/// The three `Mechanism` hooks that make every integrator enforce the constraints.
+/// The `Mechanism` hooks that make every integrator enforce the constraints.
 fn constrained_overrides(
     n: proc_macro2::Literal,
     k: proc_macro2::Literal,
@@ -75,6 +84,10 @@ fn constrained_overrides(
         #[inline]
         fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
             #constraints::accelerations::<Self, S, #n, #k, #c>(self, t, q, v)
+        }
+        #[inline]
+        fn holonomic_constraints_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> #p::core::option::Option<[S; #n]> {
+            #p::core::option::Option::Some(#constraints::holonomic_values::<Self, S, #n, #k, #c>(self, t, q))
         }
         fn project(&self, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
             let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;

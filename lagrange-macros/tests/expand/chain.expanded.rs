@@ -318,11 +318,69 @@ pub mod chain {
                 );
             [__body_0.x, __body_0.y, __body_1.x, __body_1.y, __body_2.x, __body_2.y]
         }
+        #[inline(always)]
+        fn mass_matrix<S: ::lagrange::__private::Scalar>(
+            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 3>,
+            __composite: &[f64; 3],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 3, 3> {
+            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 3, 3>::zeros();
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 0, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 1, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 1, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 2, 2);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 2, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 2, 0);
+            __m
+        }
     }
     impl ::lagrange::__private::Mechanism<3> for Chain {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {

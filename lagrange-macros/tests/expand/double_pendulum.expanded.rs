@@ -136,6 +136,12 @@ pub mod double_pendulum {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 4] = [
+            [true, false],
+            [true, false],
+            [true, true],
+            [true, true],
+        ];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {
@@ -326,11 +332,45 @@ pub mod double_pendulum {
                 );
             [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
         }
+        #[inline(always)]
+        fn mass_matrix<S: ::lagrange::__private::Scalar>(
+            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 2>,
+            __composite: &[f64; 2],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 2, 2>::zeros();
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 0, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 0);
+            __m
+        }
     }
     impl ::lagrange::__private::Mechanism<2> for DoublePendulum {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {

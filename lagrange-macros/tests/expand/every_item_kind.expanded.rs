@@ -214,6 +214,25 @@ pub mod everything {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = true;
         const HAS_FORCES: bool = true;
+        const DEPENDS: [[bool; 2]; 17] = [
+            [true, false],
+            [true, false],
+            [true, false],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [true, false],
+            [true, false],
+        ];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             if !self.m.is_finite() {
@@ -465,8 +484,10 @@ pub mod everything {
     }
     impl ::lagrange::__private::Mechanism<2> for Everything {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {

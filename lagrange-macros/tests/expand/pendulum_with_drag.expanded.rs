@@ -256,8 +256,10 @@ pub mod pendulum {
     }
     impl ::lagrange::__private::Mechanism<1> for Pendulum {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {

@@ -210,8 +210,16 @@ pub mod sliding_block {
     }
     impl ::lagrange::__private::Mechanism<2> for SlidingBlock {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            2,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::of(
+                &<Self as ::lagrange::__private::lagrange_core::constraints::Constraints<
+                    2,
+                    2,
+                    2,
+                >>::KINDS,
+            ),
         );
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
@@ -237,6 +245,22 @@ pub mod sliding_block {
                 2,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn holonomic_constraints_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> ::lagrange::__private::core::option::Option<[S; 2]> {
+            ::lagrange::__private::core::option::Option::Some(
+                ::lagrange::__private::lagrange_core::constraints::holonomic_values::<
+                    Self,
+                    S,
+                    2,
+                    2,
+                    2,
+                >(self, t, q),
+            )
         }
         fn project(
             &self,
@@ -363,6 +387,7 @@ pub mod sliding_block {
             },
         ];
         #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         fn position_constraints<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,
@@ -387,6 +412,7 @@ pub mod sliding_block {
             ]
         }
         #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         fn velocity_constraints<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,

@@ -313,8 +313,35 @@ pub mod driven {
     }
 }
 
+/// Σ q̈₀ over `n` calls of `accelerations`, on the parameters or (`validated`) through a
+/// validated handle, whose parameters were checked once.
+fn calls<M: Mechanism<N>, const N: usize>(
+    sys: M,
+    s: &State<M::Coords>,
+    n: usize,
+    validated: bool,
+) -> f64 {
+    fn run<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
+        let mut acc = 0.0;
+        for _ in 0..n {
+            acc += black_box(sys).accelerations(black_box(s)).unwrap().to_array()[0];
+        }
+        acc
+    }
+    if validated {
+        run(&sys.validated().unwrap(), s, n)
+    } else {
+        run(&sys, s, n)
+    }
+}
+
 fn main() {
-    let which = std::env::args().nth(1).unwrap();
+    let arg = std::env::args().nth(1).unwrap();
+    // `validated_NAME`: the generated mechanism NAME through `sys.validated()`.
+    let (validated, which) = match arg.strip_prefix("validated_") {
+        Some(name) => (true, name.to_string()),
+        None => (false, arg.clone()),
+    };
     let n: usize = std::env::args()
         .nth(2)
         .map(|s| s.parse().unwrap())
@@ -329,9 +356,7 @@ fn main() {
                 g: 9.81,
             };
             let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "double_pendulum" => {
             use double_pendulum::*;
@@ -353,9 +378,7 @@ fn main() {
                     theta2: -0.4,
                 },
             );
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         // One RK4 step (h = 10⁻³) per call: `sys.step::<Rk4>` on the parameters, through a
         // validated handle, and a hand-written RK4 on the closed form.
@@ -471,9 +494,7 @@ fn main() {
                 g: 9.81,
             };
             let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "cart_pendulum" => {
             use cart_pendulum::*;
@@ -491,9 +512,7 @@ fn main() {
                     theta: 1.1,
                 },
             );
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "hw_pendulum" => {
             let sys = pendulum::Pendulum {
@@ -523,9 +542,7 @@ fn main() {
         }
         "four_bar" => {
             let (sys, s) = four_bar_scene::linkage();
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "hw_four_bar" => {
             let (sys, s) = four_bar_scene::linkage();
@@ -572,9 +589,7 @@ fn main() {
                     y: 0.8 * w * th.sin(),
                 },
             );
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "hw_wedge_block" | "assembled_wedge_block" => {
             let sys = wedge_block::WedgeBlock {
@@ -664,9 +679,7 @@ fn main() {
                 c: 0.3,
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "driven" => {
             use driven::*;
@@ -678,9 +691,7 @@ fn main() {
                 w: 2.0,
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "none" => {}
         _ => panic!(),
