@@ -360,3 +360,47 @@ fn dopri5_with_frozen_steps_matches_rk4() {
     eprintln!("largest |Dopri5 − RK4| sensitivity difference: {worst:e}");
     assert!(worst < 1e-7);
 }
+
+#[mechanism]
+pub mod cartesian_pendulum {
+    pub struct Coords {
+        pub x: f64,
+        pub y: f64,
+    }
+    pub struct CartesianPendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, y)
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+    #[constraint]
+    fn rod() -> f64 {
+        bob.norm() - l
+    }
+}
+
+/// The projection onto constraints after each step is not differentiated: refused up front.
+#[test]
+fn constrained_mechanisms_are_refused() {
+    let sys = cartesian_pendulum::CartesianPendulum {
+        m: 1.0,
+        l: 1.0,
+        g: G,
+    };
+    let s0 = cartesian_pendulum::State::at_rest(cartesian_pendulum::Coords { x: 0.6, y: -0.8 });
+    let err = Tangent::new(&sys, &s0, [Seed::Coordinate("x")]).unwrap_err();
+    assert!(matches!(
+        err,
+        lagrange::Error::UnsuitableMethod {
+            method: "sensitivities",
+            ..
+        }
+    ));
+}

@@ -40,7 +40,7 @@
 use crate::error::{Error, Result};
 use crate::integrate::dopri5::stages;
 use crate::integrate::rk4::rk4_step;
-use crate::integrate::{check_step_at, refuse_constrained, Dopri5, Dopri5Stepper};
+use crate::integrate::{check_step_at, Dopri5, Dopri5Stepper};
 use crate::mechanism::{diagnose, Mechanism};
 use crate::model::{check_state, Coordinates, State};
 use num_dual::DualSVec;
@@ -119,17 +119,14 @@ fn coordinate<C: Coordinates<N>, const N: usize>(name: &str) -> Result<usize> {
 
 impl<'m, M: Mechanism<N>, const N: usize, const P: usize> Tangent<'m, M, N, P> {
     /// Starts at `state` with derivative 1 along each seed. Errors: invalid parameters or state, a
-    /// seed naming no coordinate ([`Error::UnknownCoordinate`]), a mechanism with constraints
-    /// ([`Error::UnsuitableMethod`]: the projection onto the constraints is not differentiated).
+    /// seed naming no coordinate ([`Error::UnknownCoordinate`]), a mechanism that declares
+    /// constraints or does not say ([`Error::UnsuitableMethod`]: the projection onto the
+    /// constraints is not differentiated).
     pub fn new(mechanism: &'m M, state: &State<M::Coords>, seeds: [Seed; P]) -> Result<Self> {
         let (q0, v0) = mechanism.check(state)?;
-        match M::CONSTRAINTS {
-            Some(0) => {}
-            Some(_) => return Err(constrained()),
-            None => {
-                let a = mechanism.accelerations_at(state.t, &q0, &v0)?;
-                refuse_constrained(mechanism, "sensitivities", state.t, &q0, &v0, &a)?;
-            }
+        // Decided by the declaration alone, as the integrators decide.
+        if M::CONSTRAINTS != Some(0) {
+            return Err(constrained());
         }
         let mut q: [DualSVec<f64, P>; N] = std::array::from_fn(|i| DualSVec::from_re(q0[i]));
         let mut v: [DualSVec<f64, P>; N] = std::array::from_fn(|i| DualSVec::from_re(v0[i]));
@@ -281,8 +278,8 @@ pub fn integrate_dopri5<M: Mechanism<N>, const N: usize, const P: usize>(
 fn constrained() -> Error {
     Error::UnsuitableMethod {
         method: "sensitivities",
-        reason: "the mechanism has constraints, and the projection onto them after each step is \
-                 not differentiated"
+        reason: "the mechanism declares constraints (or does not declare whether it has any), and \
+                 the projection onto them after each step is not differentiated"
             .to_string(),
     }
 }
