@@ -10,7 +10,8 @@
 //! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
 //! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
 //! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
-//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`].
+//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`], [`sensitivity`] (trajectory
+//! sensitivities), [`declaration`], and [`ffi`] with [`export_c!`] (C embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
 //!
@@ -73,9 +74,12 @@ pub use lagrange_core::validated::Validated;
 
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
-    analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model,
-    scalar_ext, tree, validated,
+    analysis, constraints, declaration, dynamics, error, geometry, integrate, linalg, mechanism,
+    model, scalar_ext, sensitivity, tree, validated,
 };
+/// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
+pub use lagrange_ffi as ffi;
+pub use lagrange_ffi::export_c;
 
 /// Everything a declaration and its user need: `use lagrange::prelude::*;`.
 pub mod prelude {

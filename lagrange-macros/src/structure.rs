@@ -458,7 +458,10 @@ pub fn row_dependencies(model: &Model) -> Option<Vec<Vec<bool>>> {
     let mut slots_of: BTreeMap<String, Vec<usize>> = BTreeMap::new();
     let mut slot = 0;
     for field in model.coords {
-        slots_of.insert(field.ident.to_string(), (slot..slot + field.slots()).collect());
+        slots_of.insert(
+            field.ident.to_string(),
+            (slot..slot + field.slots()).collect(),
+        );
         slot += field.slots();
     }
     let mut body_deps: BTreeMap<String, Vec<bool>> = BTreeMap::new();

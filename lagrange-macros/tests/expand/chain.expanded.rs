@@ -453,4 +453,23 @@ pub mod chain {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Chain {
+        const DOF: usize = 3;
+        const PARAMETERS: &'static [&'static str] = &["m", "l", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Chain {
+                m: values[0],
+                l: values[1],
+                g: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.l, self.g]
+        }
+    }
 }

@@ -443,4 +443,26 @@ pub mod double_pendulum {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration
+    for DoublePendulum {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m1", "m2", "l1", "l2", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(DoublePendulum {
+                m1: values[0],
+                m2: values[1],
+                l1: values[2],
+                l2: values[3],
+                g: values[4],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m1, self.m2, self.l1, self.l2, self.g]
+        }
+    }
 }

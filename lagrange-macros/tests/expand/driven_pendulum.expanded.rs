@@ -304,4 +304,25 @@ pub mod driven {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Driven {
+        const DOF: usize = 1;
+        const PARAMETERS: &'static [&'static str] = &["m", "l", "a", "w", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Driven {
+                m: values[0],
+                l: values[1],
+                a: values[2],
+                w: values[3],
+                g: values[4],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.l, self.a, self.w, self.g]
+        }
+    }
 }

@@ -558,4 +558,28 @@ pub mod everything {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Everything {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m", "i", "k", "c", "tau", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Everything {
+                m: values[0],
+                i: values[1],
+                k: values[2],
+                c: values[3],
+                tau: values[4],
+                g: values[5],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![
+                self.m, self.i, self.k, self.c, self.tau, self.g
+            ]
+        }
+    }
 }

@@ -241,4 +241,19 @@ pub mod free {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Free {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Free { m: values[0] })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m]
+        }
+    }
 }

@@ -330,4 +330,24 @@ pub mod pendulum {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {
+        const DOF: usize = 1;
+        const PARAMETERS: &'static [&'static str] = &["m", "l", "g", "c"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Pendulum {
+                m: values[0],
+                l: values[1],
+                g: values[2],
+                c: values[3],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.l, self.g, self.c]
+        }
+    }
 }

@@ -464,4 +464,40 @@ pub mod sliding_block {
             }
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration
+    for SlidingBlock {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m", "g", "mu"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(SlidingBlock {
+                m: values[0],
+                g: values[1],
+                mu: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.g, self.mu]
+        }
+        const CONSTRAINT_ROWS: &'static [&'static str] = &["floor", "slide"];
+        fn constraint_forces(
+            &self,
+            t: f64,
+            q: &[f64],
+            v: &[f64],
+        ) -> ::lagrange::__private::Result<
+            ::lagrange::__private::lagrange_core::declaration::FlatConstraintForces,
+        > {
+            ::lagrange::__private::lagrange_core::declaration::flat_constraint_forces::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+    }
 }

@@ -294,4 +294,23 @@ pub mod varying {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Varying {
+        const DOF: usize = 1;
+        const PARAMETERS: &'static [&'static str] = &["m", "g", "w"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Varying {
+                m: values[0],
+                g: values[1],
+                w: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.g, self.w]
+        }
+    }
 }

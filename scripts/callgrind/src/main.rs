@@ -414,6 +414,49 @@ fn main() {
             }
             acc += s.q.theta1;
         }
+        // One RK4 step (h = 10⁻³) per call on dual numbers seeded on 1, 2 or 4 initial values
+        // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
+        mode if mode.starts_with("sensitivity_double_pendulum_") => {
+            use double_pendulum::*;
+            use lagrange::sensitivity::{Seed, Tangent};
+            let sys = DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            }
+            .validated()
+            .unwrap();
+            let s = State::new(
+                0.0,
+                Coords {
+                    theta1: 0.7,
+                    theta2: -1.2,
+                },
+                Coords {
+                    theta1: 1.1,
+                    theta2: -0.4,
+                },
+            );
+            let (q1, q2) = (Seed::Coordinate("theta1"), Seed::Coordinate("theta2"));
+            let (v1, v2) = (Seed::Velocity("theta1"), Seed::Velocity("theta2"));
+            macro_rules! run {
+                ($seeds:expr) => {{
+                    let mut run = Tangent::new(&sys, &s, $seeds).unwrap();
+                    for _ in 0..n {
+                        black_box(&mut run).rk4_step(1e-3).unwrap();
+                    }
+                    acc += run.sensitivities().dq[0].theta1;
+                }};
+            }
+            match &mode["sensitivity_double_pendulum_".len()..] {
+                "1" => run!([q1]),
+                "2" => run!([q1, q2]),
+                "4" => run!([q1, q2, v1, v2]),
+                other => panic!("no sensitivity run with {other} seeds"),
+            }
+        }
         "hw_rk4_double_pendulum" => {
             let sys = double_pendulum::DoublePendulum {
                 m1: 1.0,
