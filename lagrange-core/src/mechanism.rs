@@ -157,7 +157,7 @@ pub trait Mechanism<const N: usize>: Sized {
     ///
     /// A mechanism with constraints also refuses what its integrators refuse about the declaration
     /// itself (invalid friction coefficients, a velocity row that is not linear in q̇), but
-    /// evaluates states off the constraints (see [`Mechanism::check_constraints`]).
+    /// evaluates states off the constraints (see `Mechanism::check_constraints`).
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
         self.check_declaration_at(state.t, &q, &v)?;

@@ -340,7 +340,7 @@ pub(super) fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
 
 /// The holonomic rows' values g(q, t) at (t, q), for any scalar, in declaration order (other kinds
 /// of row skipped) and padded with zeros to N entries: what
-/// [`Mechanism::holonomic_constraints_at`](crate::Mechanism::holonomic_constraints_at) forwards to,
+/// `Mechanism::holonomic_constraints_at` forwards to,
 /// so integrators generic over `Mechanism<N>` (which cannot name C) can differentiate them.
 /// Independent holonomic rows number at most N; rows beyond the N-th are not returned (the
 /// integrators refuse such a declaration from

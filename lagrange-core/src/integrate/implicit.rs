@@ -57,8 +57,8 @@
 //! (q, p) (HLW §IV.2.1), e.g. angular momentum.
 //!
 //! **Constraints.** As every integrator, a step first checks that the state satisfies the
-//! mechanism's constraints ([`Mechanism::check_constraints`]) and ends by projecting onto them
-//! ([`Mechanism::project`]; a no-op without constraints). Unless the mechanism declares no
+//! mechanism's constraints (`Mechanism::check_constraints`) and ends by projecting onto them
+//! (`Mechanism::project`; a no-op without constraints). Unless the mechanism declares no
 //! constraint rows ([`Mechanism::CONSTRAINTS`] = `Some(0)`), G includes the generalized constraint
 //! force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the constrained accelerations, at every stage — a constant
 //! of the mechanism, never a test of λ, so also where λ vanishes at the start of the step (a

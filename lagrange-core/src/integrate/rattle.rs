@@ -20,7 +20,7 @@
 //! implicit methods with exact Jacobians from dual numbers. The velocity stage is linear in μ: with
 //! p affine in q̇ with slope M(q₁) (every [`Model`](crate::Model)), q̇₁ = q̂̇₁ + M⁻¹Gᵀμ with
 //! μ = −(G M⁻¹ Gᵀ)⁻¹(G q̂̇₁ + ∂g/∂t) — the mass-weighted velocity projection the constraints module
-//! already implements, [`Mechanism::project`] (whose position part finds g(q₁) = 0 to round-off
+//! already implements, `Mechanism::project` (whose position part finds g(q₁) = 0 to round-off
 //! already and moves q₁ at most by round-off). Without non-conservative forces the step map
 //! (q₀, p₀) ↦ (q₁, p₁) is symplectic on the constraint manifold {g = 0, G q̇ + ∂g/∂t = 0},
 //! symmetric and of order 2 (HLW §VII.1.4, for RATTLE and for the discrete Euler–Lagrange
@@ -33,7 +33,7 @@
 //! implementation that does not declare its constraints.
 //!
 //! **Rows as an N-vector.** The methods are generic over `Mechanism<N>`, which cannot name the
-//! number of rows C; the rows come from [`Mechanism::holonomic_constraints_at`] padded with zeros
+//! number of rows C; the rows come from `Mechanism::holonomic_constraints_at` padded with zeros
 //! to N entries (independent holonomic rows number at most N), and the multipliers are an
 //! N-vector whose entries beyond the declared rows are held at zero by identity rows in the Newton
 //! systems.
@@ -108,7 +108,7 @@ pub fn holonomic_rows<M: Mechanism<N>, const N: usize>(method: &'static str) -> 
 }
 
 /// The error for a mechanism that declares holonomic rows but does not provide them
-/// ([`Mechanism::holonomic_constraints_at`] returns `None`).
+/// (`Mechanism::holonomic_constraints_at` returns `None`).
 fn rows_not_provided(method: &'static str) -> Error {
     Error::UnsuitableMethod {
         method,
