@@ -827,6 +827,15 @@ fn main() {
     eprintln!("wrote {}", out_dir.display());
 }
 
+/// A ratio with two decimals, or two significant digits below 0.1.
+fn factor(x: f64) -> String {
+    if x < 0.1 {
+        format!("{x:.1e}")
+    } else {
+        format!("{x:.2}")
+    }
+}
+
 /// The load averages of `/proc/loadavg` (what `uptime` prints), or "unknown".
 fn load_average() -> String {
     std::fs::read_to_string("/proc/loadavg")
@@ -948,8 +957,9 @@ fn write_markdown(dir: &std::path::Path, rows: &[Row], notes: &str, quick: bool)
                     // evaluations of the implicit methods not counted), whose product is r.
                     let evals = ours.rhs_evals as f64 / peer.rhs_evals as f64;
                     let why = format!(
-                        "evaluations ×{evals:.2}, time per evaluation ×{:.2}",
-                        r / evals
+                        "evaluations ×{}, time per evaluation ×{}",
+                        factor(evals),
+                        factor(r / evals)
                     );
                     if r <= 1.0 {
                         format!("{r:.2} ({why})")
