@@ -203,6 +203,14 @@ fn radau5_errors_name_their_cause_and_leave_the_state_alone() {
             ..
         })
     ));
+    let no_atol = Radau5::new(1e-6, 0.0);
+    assert!(matches!(
+        Radau5Stepper::new(&Oscillator, no_atol, &start),
+        Err(Error::InvalidSetting {
+            setting: "atol",
+            ..
+        })
+    ));
     // q̈ = q² from q = 1, q̇ = √(2/3) blows up at t = √6: the integration to 3 fails and the state
     // stays where it was.
     let mut s = State::new(0.0, [1.0], [(2.0f64 / 3.0).sqrt()]);

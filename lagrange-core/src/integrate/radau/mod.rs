@@ -5,7 +5,7 @@
 //!   Table 5.6; the implementation follows §IV.8 and Hairer's code `radau5.f`, version of 1996–2002).
 //!   It is applied to the first-order system y = (q, v), y' = f(t, y) = (v, q̈(t, q, v)), with q̈
 //!   the mechanism's accelerations (on a constrained mechanism these include the constraint forces,
-//!   as for [`Dopri5`](super::Dopri5)).
+//!   as for [`Dopri5`]).
 //! - Stage equations: for Z = (Z₁, Z₂, Z₃), Zᵢ = yᵢ − y₀, the collocation equations
 //!   Zᵢ = h Σⱼ aᵢⱼ f(t₀ + cⱼh, y₀ + Zⱼ) are solved by the **simplified Newton iteration** of HW II
 //!   §IV.8, (8.5)–(8.17): with W = T⁻¹Z (T the eigenvector matrix of A⁻¹, eigenvalues γ̂ and
@@ -14,8 +14,8 @@
 //! - Second-order structure: J = [[0, I], [∂q̈/∂q, ∂q̈/∂v]], so (σI − J)(x, y) = (r₁, r₂) reduces to
 //!   (σ²I − σ∂q̈/∂v − ∂q̈/∂q) x = r₂ + (σI − ∂q̈/∂v) r₁, y = σx − r₁: an N-square system (the
 //!   reduction `radau5.f` makes for problems with the special structure y'ᵢ = y_{i+M2}, its options
-//!   M1, M2). The real matrix is factorised as an N-square [`BlockLu`], the complex one in its real
-//!   form [[Re K, −Im K], [Im K, Re K]] as a 2N-square [`BlockLu`]: about 3N³ flops per
+//!   M1, M2). The real matrix is factorised as an N-square block LU (the one the Gauss methods use), the complex one in its real
+//!   form [[Re K, −Im K], [Im K, Re K]] as a 2N-square one: about 3N³ flops per
 //!   factorisation against (6N)³/3 = 72N³ for the unsplit system.
 //! - Reuse: the Jacobians ∂q̈/∂q, ∂q̈/∂v (exact, by dual numbers, [`acceleration_jacobians`]) are
 //!   kept across iterations and steps while the Newton contraction rate θ stays below
@@ -42,7 +42,7 @@
 //! - Events, the observer and the statistics are those of every solver ([`Stepper::integrate`]).
 //!   [`Stats::factorizations`] counts one per refactorisation (the real and the complex matrix
 //!   together, as `radau5.f`'s NDEC).
-//! - Constraints: as [`Dopri5`](super::Dopri5), the start state must satisfy them and every
+//! - Constraints: as [`Dopri5`], the start state must satisfy them and every
 //!   accepted step is projected onto them; the dense output interpolates the step before
 //!   projection.
 //!

@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
 use crate::model::State;
 
-/// Settings of the adaptive Radau IIA method of order 5 (see the [module docs](self)).
+/// Settings of the adaptive Radau IIA method of order 5 (see the [module docs](super)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Radau5 {
     /// Relative tolerance (per component; converted as in `radau5.f`, see the module docs).
@@ -79,8 +79,13 @@ impl Radau5 {
                 return invalid(name, value, "finite and non-negative");
             }
         }
+        // Both positive: the error and Newton norms divide by atol′ + rtol′·|yᵢ|, which a
+        // component at zero would make 0 with atol = 0.
         if !(self.rtol > 0.0) {
             return invalid("rtol", self.rtol, "positive");
+        }
+        if !(self.atol > 0.0) {
+            return invalid("atol", self.atol, "positive");
         }
         if !(self.h_max > 0.0) {
             return invalid("h_max", self.h_max, "positive");
