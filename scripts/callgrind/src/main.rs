@@ -5,12 +5,12 @@ use lagrange::prelude::*;
 use std::hint::black_box;
 
 // Constrained mechanisms, from the gallery's scenes.
-#[path = "../../../examples/cartesian_pendulum.rs"]
-#[allow(dead_code)]
-mod cartesian_pendulum_scene;
 #[path = "../../../examples/four_bar.rs"]
 #[allow(dead_code)]
 mod four_bar_scene;
+#[path = "../../../examples/cartesian_pendulum.rs"]
+#[allow(dead_code)]
+mod cartesian_pendulum_scene;
 // The constrained mechanisms' KKT systems written out by hand, as in the accelerations benchmark.
 #[path = "../../../benches/common/constrained.rs"]
 #[allow(dead_code)]
@@ -162,19 +162,12 @@ fn chain_links(links: &str, calls: usize) -> f64 {
     macro_rules! run {
         ($module:ident, $ty:ident, $n:literal) => {{
             use chains::$module::*;
-            let sys = $ty {
-                m: 1.0,
-                l: 0.5,
-                g: 9.81,
-            };
+            let sys = $ty { m: 1.0, l: 0.5, g: 9.81 };
             let (q, v) = chain_state::<$n>();
             let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
             let mut acc = 0.0;
             for _ in 0..calls {
-                acc += black_box(&sys)
-                    .accelerations(black_box(&s))
-                    .unwrap()
-                    .to_array()[0];
+                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().to_array()[0];
             }
             acc
         }};
@@ -236,10 +229,7 @@ fn assembled_wedge(p: &wedge_block::WedgeBlock) -> [f64; 2] {
     let (m00, m10, m11) = (big_m + m, m * c, m * (c * c + s * s));
     let (f0, f1) = (0.0, m * p.g * s);
     let inv_det = 1.0 / (m00 * m11 - m10 * m10);
-    [
-        (m11 * f0 - m10 * f1) * inv_det,
-        (m00 * f1 - m10 * f0) * inv_det,
-    ]
+    [(m11 * f0 - m10 * f1) * inv_det, (m00 * f1 - m10 * f0) * inv_det]
 }
 fn hw_cart(p: &cart_pendulum::CartPendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
     let (s, c) = q[1].sin_cos();
@@ -561,9 +551,7 @@ fn main() {
             let q = [0.8 * th.sin(), -0.8 * th.cos()];
             let v = [0.8 * w * th.cos(), 0.8 * w * th.sin()];
             for _ in 0..n {
-                acc +=
-                    constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))
-                        [0];
+                acc += constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))[0];
             }
         }
         "cartesian_pendulum" => {
