@@ -86,8 +86,8 @@ pub mod prelude {
     pub use lagrange_core::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3};
     pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
     pub use lagrange_core::integrate::{
-        Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, Stepper, StormerVerlet,
-        Variational,
+        Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
+        StormerVerlet, Variational,
     };
     pub use lagrange_core::{Coordinates, Error, Mechanism, State, Validated};
     pub use lagrange_macros::mechanism;

@@ -42,7 +42,7 @@ pub use geometry::{
     planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3,
 };
 pub use integrate::{
-    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, StormerVerlet, Variational,
+    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, StormerVerlet, Variational,
 };
 pub use mechanism::Mechanism;
 pub use model::{Coordinates, Model, State};

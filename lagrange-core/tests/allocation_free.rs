@@ -1,7 +1,9 @@
 //! Every integrator step is allocation-free: a counting global allocator records the allocations
 //! made by this thread while stepping, and there must be none.
 
-use lagrange_core::integrate::{Direction, Dopri5Stepper, Event, Observation};
+use lagrange_core::integrate::{
+    Direction, Dopri5Stepper, Event, Observation, Radau5, Radau5Stepper, Stepper,
+};
 use lagrange_core::{
     vec2, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Model, Rk4, Scalar,
     State, StormerVerlet, Variational,
@@ -219,4 +221,27 @@ fn every_integrator_steps_without_allocating() {
         }
     });
     assert_eq!(n, 0, "Dopri5Stepper::step allocated {n} times");
+
+    // Radau5 step by step (Jacobian, factorisations, Newton iterations) and a whole integration
+    // with an event.
+    let mut stepper =
+        Radau5Stepper::new(&DampedDoublePendulum, Radau5::new(1e-8, 1e-8), &pendulum).unwrap();
+    stepper.step(10.0).unwrap();
+    let n = allocations(|| {
+        while stepper.t() < 10.0 {
+            stepper.step(10.0).unwrap();
+            std::hint::black_box(stepper.dense().eval(stepper.t()));
+        }
+    });
+    assert_eq!(n, 0, "Radau5Stepper::step allocated {n} times");
+    assert!(stepper.stats().factorizations > 1 && stepper.stats().jacobians >= 1);
+    let mut s = kepler;
+    let n = allocations(|| {
+        let mut events = [Event::new(&g_cross)];
+        let out = Radau5::new(1e-8, 1e-8)
+            .integrate(&Kepler, &mut s, 20.0, &mut events, |_| {})
+            .unwrap();
+        std::hint::black_box(out);
+    });
+    assert_eq!(n, 0, "Radau5::integrate allocated {n} times");
 }

@@ -1,7 +1,7 @@
 //! Integrators, generic over every generated mechanism, behind one stepping interface
 //! ([`solver`]: the [`Stepper`] trait — `step`, `integrate` to a stop time with an observer, dense
 //! output and events, [`Stats`] — implemented by [`FixedStepper`] for every [`Integrator`], by
-//! [`Dopri5Stepper`] and [`Dop853Stepper`], and by the contact solver
+//! [`Dopri5Stepper`], [`Dop853Stepper`] and [`Radau5Stepper`], and by the contact solver
 //! [`ContactSolver`](crate::constraints::ContactSolver)); `sys.step::<I>(&mut s, h)` is one
 //! validated step.
 //!
@@ -10,6 +10,7 @@
 //! | [`Rk4`] | 4 | fixed | 4 | none (energy drifts) |
 //! | [`Dopri5`] | 5(4) | adaptive, dense output (order 4), events | 6 (FSAL) | none |
 //! | [`Dop853`] | 8(5,3) | adaptive, dense output (order 7), events | 12 (FSAL), + 3 for the dense output | none |
+//! | [`Radau5`] | 5 | adaptive, dense output (order 3), events; for stiff mechanisms | simplified Newton: 3 per iteration (usually 1–4 iterations), + 1 at the new point; one Jacobian of q̈ (2 dual passes) and one factorisation reused across steps while the iteration contracts well | L-stable |
 //! | [`ImplicitMidpoint`] | 2 | fixed | simplified Newton: 1 plain evaluation of (p, ṗ) per iteration; one Jacobian, reused across steps while the iteration contracts well | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`GaussLegendre2`] | 4 | fixed | simplified Newton: 2 plain evaluations of (p, ṗ) per iteration; Jacobian reused as above | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations (with the multipliers of holonomic constraints: RATTLE) | symplectic in (q, p) for any Lagrangian, also with holonomic constraints; refuses velocity constraints, contacts and friction |
@@ -25,9 +26,10 @@
 //! the maps are not symplectic.
 //!
 //! Every step is allocation-free (a test counts allocations) and leaves the caller's state
-//! unchanged on error. On a mechanism with constraints, RK4, Dopri5, implicit midpoint and
-//! Gauss–Legendre integrate the constrained accelerations, check the state against the constraints
-//! before a step ([`Mechanism::check_constraints`]) and project after it ([`Mechanism::project`]).
+//! unchanged on error. On a mechanism with constraints, RK4, Dopri5, Dop853, Radau5, implicit
+//! midpoint and Gauss–Legendre integrate the constrained accelerations, check the state against
+//! the constraints before a step (`Mechanism::check_constraints`) and project after it
+//! (`Mechanism::project`).
 //! Störmer–Verlet and the variational integrator enforce holonomic constraints g(q, t) = 0 by
 //! RATTLE ([`rattle`]: the multipliers of a position stage solved by Newton with the step, then the
 //! velocity projection), which keeps them symplectic on the constraint manifold, and refuse
@@ -46,6 +48,7 @@ pub mod dopri5;
 pub mod implicit;
 mod newton;
 pub mod rattle;
+pub mod radau;
 pub(crate) mod rk4;
 pub mod solver;
 pub mod variational;
@@ -56,6 +59,7 @@ pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper}
 pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
 pub use newton::{acceleration_jacobians, MAX_NEWTON_ITERATIONS};
 pub use rattle::holonomic_rows;
+pub use radau::{Radau5, Radau5Stepper};
 pub use rk4::Rk4;
 pub use solver::{
     check_step, check_step_at, Direction, Event, EventHit, FixedStepper, Observation, Outcome,

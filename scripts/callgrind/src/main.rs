@@ -457,6 +457,50 @@ fn main() {
                 other => panic!("no sensitivity run with {other} seeds"),
             }
         }
+        // One implicit step (h = 10⁻³) per call, as a solver takes it: the Newton matrix and the
+        // stage predictor kept from step to step (`step_with_memory`).
+        "midpoint_double_pendulum" | "gl2_double_pendulum" => {
+            use double_pendulum::*;
+            use lagrange::integrate::NewtonMemory;
+            use lagrange::{GaussLegendre2, ImplicitMidpoint};
+            let params = DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            };
+            let mut s = State::new(
+                0.0,
+                Coords {
+                    theta1: 0.7,
+                    theta2: -1.2,
+                },
+                Coords {
+                    theta1: 1.1,
+                    theta2: -0.4,
+                },
+            );
+            if which.starts_with("gl2") {
+                let mut memory = NewtonMemory::<2, 2>::default();
+                for _ in 0..n {
+                    GaussLegendre2::step_with_memory(black_box(&params), &mut memory, &mut s, 1e-3)
+                        .unwrap();
+                }
+            } else {
+                let mut memory = NewtonMemory::<2, 1>::default();
+                for _ in 0..n {
+                    ImplicitMidpoint::step_with_memory(
+                        black_box(&params),
+                        &mut memory,
+                        &mut s,
+                        1e-3,
+                    )
+                    .unwrap();
+                }
+            }
+            acc += s.q.theta1;
+        }
         "hw_rk4_double_pendulum" => {
             let sys = double_pendulum::DoublePendulum {
                 m1: 1.0,
