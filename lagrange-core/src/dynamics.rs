@@ -540,6 +540,47 @@ pub fn momenta<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     p.into()
 }
 
+/// The canonical field of a scleronomic mechanism, (p, ṗ) = (∂T/∂q̇, ∂T/∂q + 𝓕) at (t, q, q̇), from
+/// one hyper-dual pass ([`MotionPass`]): with T = ½ Σᵢ μᵢ ẋᵢ² and ẋ = J q̇,
+///
+/// ```text
+/// p = Jᵀ diag(μ) ẋ,     ∂T/∂q = (∂ẋ/∂q)ᵀ diag(μ) ẋ,
+/// ```
+///
+/// J, ẋ and ∂ẋ/∂q being the pass's ε₁, ε₂ and ε₁ε₂ parts, and 𝓕 (which holds −∇V and the applied
+/// forces) that of the equations of motion on the same pass. What the methods on (q, p) evaluate
+/// at every Newton iteration (see `integrate::canonical`); the momenta and the gradient of T by
+/// passes of their own would evaluate x several times over.
+#[doc(hidden)]
+#[inline]
+pub fn canonical_field<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> ([S; N], [S; N]) {
+    debug_assert!(!M::RHEONOMIC, "one pass carries no ∂x/∂t");
+    let pass = motion_pass(model, t, q, v);
+    let forces = equations_of_motion_from_pass(model, &pass, t, q, v).generalized_forces;
+    let masses = model.masses();
+    let mut p = SVector::<S, N>::zeros();
+    let mut kinetic_gradient = SVector::<S, N>::zeros();
+    for i in 0..M::INERTIAL {
+        if masses[i] == 0.0 {
+            continue;
+        }
+        let x = &pass.x[i];
+        let weighted_velocity = x.eps2.0.map_or(S::zero(), |e| e[0]) * masses[i];
+        if let Some(row) = &x.eps1.0 {
+            p += row * weighted_velocity;
+        }
+        if let Some(mixed) = &x.eps1eps2.0 {
+            kinetic_gradient += mixed * weighted_velocity;
+        }
+    }
+    (p.into(), (kinetic_gradient + forces).into())
+}
+
 /// The mass matrix alone (one gradient pass).
 pub fn mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,

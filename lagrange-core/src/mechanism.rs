@@ -61,6 +61,19 @@ pub trait Mechanism<const N: usize>: Sized {
     /// ∂L/∂t at fixed (q, q̇) (zero for a scleronomic mechanism).
     fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> f64;
 
+    /// The canonical field (p, ṗ) = (∂L/∂q̇, ∂L/∂q + F_nc) at (t, q, q̇), for any scalar: what the
+    /// methods on (q, p) evaluate (see `integrate::canonical`). By default from the momenta and a
+    /// gradient of T of their own; `#[mechanism]` computes a scleronomic mechanism's from one
+    /// hyper-dual pass ([`crate::dynamics::canonical_field`]).
+    #[doc(hidden)]
+    #[inline]
+    fn canonical_field_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> ([S; N], [S; N]) {
+        (
+            self.momenta_at(t, q, v),
+            crate::integrate::momentum_rate(self, t, q, v),
+        )
+    }
+
     #[doc(hidden)]
     /// q̈ at (t, q, q̇) for any scalar: solves M q̈ = 𝓕 − b. No validation (the hot path of
     /// integrators, which validate once per step).

@@ -119,6 +119,10 @@ impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
         self.0.lagrangian_time_derivative_at(t, q, v)
     }
     #[inline(always)]
+    fn canonical_field_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> ([S; N], [S; N]) {
+        self.0.canonical_field_at(t, q, v)
+    }
+    #[inline(always)]
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
         self.0.accelerations_at(t, q, v)
     }

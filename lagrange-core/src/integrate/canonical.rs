@@ -56,8 +56,7 @@ pub fn canonical_field<M: Mechanism<N>, S: Scalar, const N: usize>(
     v: &[S; N],
     constrained: bool,
 ) -> Result<([S; N], [S; N])> {
-    let p = mechanism.momenta_at(t, q, v);
-    let mut rate = momentum_rate(mechanism, t, q, v);
+    let (p, mut rate) = mechanism.canonical_field_at(t, q, v);
     if constrained {
         let eom = mechanism.equations_of_motion_at(t, q, v);
         let a = mechanism.accelerations_at(t, q, v)?;

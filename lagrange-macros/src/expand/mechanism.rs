@@ -11,8 +11,18 @@ pub(super) fn mechanism_impl(
     k: usize,
     constrained: Option<usize>,
     tree: Option<(usize, usize)>,
+    rheonomic: bool,
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
+    // A scleronomic mechanism's canonical field comes from one hyper-dual pass.
+    let canonical = (!rheonomic).then(|| {
+        quote! {
+            #[inline]
+            fn canonical_field_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+                #p::dynamics::canonical_field::<Self, S, #n, #k>(self, t, q, v)
+            }
+        }
+    });
     // A tree of translations is assembled from each body's own seeds; anything else densely.
     let equations_of_motion = match tree {
         Some((w, b)) => {
@@ -68,6 +78,7 @@ pub(super) fn mechanism_impl(
             fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
                 #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
             }
+            #canonical
         }
     }
 }

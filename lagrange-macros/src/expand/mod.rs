@@ -123,6 +123,7 @@ fn generate(model: &Model) -> TokenStream {
         model.rows,
         constrained,
         tree.map(|tree| (tree.width, tree.bodies.len())),
+        model.rheonomic,
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);

@@ -452,6 +452,20 @@ pub mod chain {
                 6,
             >(self, t, q, v)
         }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> ([S; 3], [S; 3]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                3,
+                6,
+            >(self, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Chain {
         const DOF: usize = 3;

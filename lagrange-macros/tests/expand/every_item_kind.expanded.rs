@@ -557,6 +557,20 @@ pub mod everything {
                 17,
             >(self, t, q, v)
         }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                17,
+            >(self, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Everything {
         const DOF: usize = 2;

@@ -275,6 +275,20 @@ pub mod pendulum {
                 2,
             >(self, t, q, v)
         }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ([S; 1], [S; 1]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {
         const DOF: usize = 1;

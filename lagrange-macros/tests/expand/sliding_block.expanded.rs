@@ -376,6 +376,20 @@ pub mod sliding_block {
                 2,
             >(self, t, q, v)
         }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::constraints::Constraints<2, 2, 2>
     for SlidingBlock {
