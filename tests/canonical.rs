@@ -84,8 +84,14 @@ fn assert_same_field<M: Mechanism<N>, const N: usize>(sys: &M, q: [f64; N], v: [
     let (p, rate) = sys.canonical_field_at(0.3, &q, &v);
     let (p_def, rate_def) = (sys.momenta_at(0.3, &q, &v), momentum_rate(sys, 0.3, &q, &v));
     for k in 0..N {
-        assert!((p[k] - p_def[k]).abs() < 1e-12, "p[{k}]: {p:?} vs {p_def:?}");
-        assert!((rate[k] - rate_def[k]).abs() < 1e-12, "ṗ[{k}]: {rate:?} vs {rate_def:?}");
+        assert!(
+            (p[k] - p_def[k]).abs() < 1e-12,
+            "p[{k}]: {p:?} vs {p_def:?}"
+        );
+        assert!(
+            (rate[k] - rate_def[k]).abs() < 1e-12,
+            "ṗ[{k}]: {rate:?} vs {rate_def:?}"
+        );
     }
     // On gradient duals seeded on q (the Newton matrix's ∂/∂q): the derivatives agree as well.
     let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
@@ -96,7 +102,10 @@ fn assert_same_field<M: Mechanism<N>, const N: usize>(sys: &M, q: [f64; N], v: [
     for k in 0..N {
         let d = |x: &DualSVec<f64, N>| x.eps.0.unwrap_or_else(SVector::zeros);
         assert!((d(&pd[k]) - d(&pd_def[k])).norm() < 1e-11, "∂p[{k}]/∂q");
-        assert!((d(&rated[k]) - d(&rated_def[k])).norm() < 1e-10, "∂ṗ[{k}]/∂q");
+        assert!(
+            (d(&rated[k]) - d(&rated_def[k])).norm() < 1e-10,
+            "∂ṗ[{k}]/∂q"
+        );
         assert!((rated[k].re - rated_def[k].re).abs() < 1e-12);
     }
 }
@@ -112,7 +121,11 @@ fn one_pass_field_is_the_definition_for_points_potentials_and_forces() {
         g: 9.81,
     };
     assert_same_field(&sys, [0.7, -1.2, 1.1], [1.1, -0.4, 0.3]);
-    assert_same_field(&sys.validated().unwrap(), [0.1, 2.0, 0.9], [-2.0, 0.5, -0.1]);
+    assert_same_field(
+        &sys.validated().unwrap(),
+        [0.1, 2.0, 0.9],
+        [-2.0, 0.5, -0.1],
+    );
 }
 
 #[test]
@@ -124,4 +137,27 @@ fn one_pass_field_is_the_definition_for_rigid_bodies_and_constraints() {
         g: 9.81,
     };
     assert_same_field(&sys, [0.4, 0.75 * 0.4f64.cos()], [0.8, -0.3]);
+}
+
+/// A scleronomic mechanism's velocities from its momenta are one solve with M (p = M q̇): the
+/// velocities that give back the momenta, to the solve's round-off (cond(M) ε ≈ 1e-15 here).
+#[test]
+fn velocities_from_momenta_invert_the_momenta() {
+    use lagrange::Variational;
+    let sys = sprung_pendulum::Params {
+        m1: 1.0,
+        m2: 1.3,
+        l1: 0.9,
+        k: 40.0,
+        c: 0.2,
+        g: 9.81,
+    };
+    let (q, v) = ([0.7, -1.2, 1.1], [1.1, -0.4, 0.3]);
+    let p = sys.momenta_at(0.0, &q, &v);
+    let (back, iterations) =
+        Variational::velocities_from_momenta(&sys, 0.0, &q, &p, &[0.0; 3]).unwrap();
+    assert_eq!(iterations, 1);
+    for k in 0..3 {
+        assert!((back[k] - v[k]).abs() < 1e-13, "{back:?} vs {v:?}");
+    }
 }

@@ -38,6 +38,12 @@ pub trait Mechanism<const N: usize>: Sized {
         None => None,
     };
 
+    /// Whether x does not depend on time (`#[mechanism]` declares it; `false`, the safe default,
+    /// for an implementation that does not say). Then p = M(q) q̇ exactly, and the methods on (q, p)
+    /// recover q̇ from p by one solve with M instead of a Newton iteration.
+    #[doc(hidden)]
+    const SCLERONOMIC: bool = false;
+
     /// Checks parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
     #[doc(hidden)]

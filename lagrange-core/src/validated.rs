@@ -86,6 +86,7 @@ pub(crate) fn validate<M: Mechanism<N>, const N: usize>(mechanism: M) -> Result<
 impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
     type Coords = M::Coords;
     const CONSTRAINTS: Option<usize> = M::CONSTRAINTS;
+    const SCLERONOMIC: bool = M::SCLERONOMIC;
     const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = M::CONSTRAINT_COUNTS;
 
     /// Checked when the handle was made.

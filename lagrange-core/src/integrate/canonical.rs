@@ -128,6 +128,20 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
     guess: &[f64; N],
     stats: &mut Stats,
 ) -> Result<([f64; N], usize)> {
+    if M::SCLERONOMIC {
+        // p = M(q) q̇ exactly: one solve with the mass matrix, no iteration.
+        stats.evaluations += 1;
+        let mass = mechanism.equations_of_motion_at(t, q, guess).mass_matrix;
+        return match crate::linalg::solve_spd(&mass, &SVector::from(*p)) {
+            Ok(v) if v.iter().all(|x| x.is_finite()) => Ok((v.into(), 1)),
+            Ok(_) => Err(crate::dynamics::non_finite_dynamics::<M::Coords, f64, N>(
+                t, q,
+            )),
+            Err(e) => Err(crate::dynamics::mass_matrix_failure::<M::Coords, f64, N>(
+                &mass, e, t, q,
+            )),
+        };
+    }
     let td = DualSVec::<f64, N>::from_re(t);
     let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
     let mut v = SVector::<f64, N>::from(*guess);

@@ -47,8 +47,8 @@ pub mod dop853;
 pub mod dopri5;
 pub mod implicit;
 mod newton;
-pub mod rattle;
 pub mod radau;
+pub mod rattle;
 pub(crate) mod rk4;
 pub mod solver;
 pub mod variational;
@@ -58,8 +58,8 @@ pub use dop853::{Dop853, Dop853Stepper};
 pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper};
 pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
 pub use newton::{acceleration_jacobians, MAX_NEWTON_ITERATIONS};
-pub use rattle::holonomic_rows;
 pub use radau::{Radau5, Radau5Stepper};
+pub use rattle::holonomic_rows;
 pub use rk4::Rk4;
 pub use solver::{
     check_step, check_step_at, Direction, Event, EventHit, FixedStepper, Observation, Outcome,

@@ -14,6 +14,7 @@ pub(super) fn mechanism_impl(
     rheonomic: bool,
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
+    let scleronomic = !rheonomic;
     // A scleronomic mechanism's canonical field comes from one hyper-dual pass.
     let canonical = (!rheonomic).then(|| {
         quote! {
@@ -51,6 +52,7 @@ pub(super) fn mechanism_impl(
             type Coords = Coords;
             const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
                 #p::core::option::Option::Some(#counts);
+            const SCLERONOMIC: bool = #scleronomic;
             #[inline]
             fn validate(&self) -> #p::Result<()> {
                 <Self as #p::Model<#n, #k>>::validate(self)?;

@@ -382,6 +382,7 @@ pub mod chain {
         > = ::lagrange::__private::core::option::Option::Some(
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
+        const SCLERONOMIC: bool = true;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;

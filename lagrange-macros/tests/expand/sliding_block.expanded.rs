@@ -221,6 +221,7 @@ pub mod sliding_block {
                 >>::KINDS,
             ),
         );
+        const SCLERONOMIC: bool = true;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;

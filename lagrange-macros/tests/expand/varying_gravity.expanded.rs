@@ -225,6 +225,7 @@ pub mod varying {
         > = ::lagrange::__private::core::option::Option::Some(
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
+        const SCLERONOMIC: bool = false;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
