@@ -3,7 +3,7 @@
 //! end state carries ∂q(T)/∂q₀ and ∂q̇(T)/∂q₀ exactly — the derivatives of the numerical solution
 //! (the discrete map the integrator computes), not of an approximation of it.
 //!
-//! Every evaluation is the mechanism's own scalar-generic [`Mechanism::accelerations_at`], and every
+//! Every evaluation is the mechanism's own scalar-generic `Mechanism::accelerations_at`, and every
 //! step the integrator's own code on the dual type (the stages [`Rk4`](crate::Rk4) and
 //! [`Dopri5`] take), so the real parts are the plain f64 run bit for bit. A step with `P` seeds
 //! costs one pass of the accelerations on duals of width `P`.
