@@ -10,7 +10,8 @@
 //! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
 //! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
 //! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
-//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`].
+//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`], [`sensitivity`] (trajectory
+//! sensitivities), [`declaration`], and [`ffi`] with [`export_c!`] (C embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
 //!
@@ -73,17 +74,20 @@ pub use lagrange_core::validated::Validated;
 
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
-    analysis, constraints, dynamics, error, geometry, integrate, linalg, mechanism, model,
-    scalar_ext, tree, validated,
+    analysis, constraints, declaration, dynamics, error, geometry, integrate, linalg, mechanism,
+    model, scalar_ext, sensitivity, tree, validated,
 };
+/// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
+pub use lagrange_ffi as ffi;
+pub use lagrange_ffi::export_c;
 
 /// Everything a declaration and its user need: `use lagrange::prelude::*;`.
 pub mod prelude {
     pub use lagrange_core::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3};
     pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
     pub use lagrange_core::integrate::{
-        Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, Stepper, StormerVerlet,
-        Variational,
+        Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
+        StormerVerlet, Variational,
     };
     pub use lagrange_core::{Coordinates, Error, Mechanism, State, Validated};
     pub use lagrange_macros::mechanism;

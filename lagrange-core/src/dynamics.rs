@@ -76,28 +76,33 @@ fn cartesian_along_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: us
 }
 
 /// M(q, t) = Σᵢ μᵢ Jᵢᵀ Jᵢ over the rows that carry mass and depend on q, by rank-one updates of
-/// the lower triangle, mirrored at the end.
+/// the lower triangle, mirrored at the end. Only the entries [`Model::DEPENDS`] allows are
+/// formed: a row that depends on two of N coordinates costs three products, not N(N + 1)/2.
 #[inline(always)]
-fn assemble_mass_matrix<S: Scalar, const N: usize, const K: usize>(
-    inertial: usize,
+fn assemble_mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     masses: &[f64; K],
     rows: &[Option<SVector<S, N>>; K],
 ) -> SMatrix<S, N, N> {
     let mut mass_matrix = SMatrix::<S, N, N>::zeros();
     // Written for the compiler, measured with scripts/callgrind: over the constant range 0..K (not
-    // 0..inertial), from a zero matrix, LLVM unrolls this loop for small mechanisms, where otherwise
-    // a pendulum's rows stay in memory and are looped over — pendulum 286 → 241 instructions per
-    // `accelerations`, drag 315 → 272 — at a price for long chains (N = 32: 578k → 612k; starting
-    // from the first row instead of zeros keeps the chain at 578k but the pendulum at 277).
+    // 0..INERTIAL), from a zero matrix, LLVM unrolls this loop for small mechanisms, where otherwise
+    // a pendulum's rows stay in memory and are looped over; `DEPENDS` is then known at every entry.
     for i in 0..K {
-        if i >= inertial {
+        if i >= M::INERTIAL {
             break;
         }
+        let depends = &M::DEPENDS[i];
         if let Some(row) = &rows[i] {
-            let weighted = row * S::from(masses[i]);
+            let mass = S::from(masses[i]);
             for c in 0..N {
+                if !depends[c] {
+                    continue;
+                }
+                let weighted = row[c] * mass;
                 for r in c..N {
-                    mass_matrix[(r, c)] += row[r] * weighted[c];
+                    if depends[r] {
+                        mass_matrix[(r, c)] += row[r] * weighted;
+                    }
                 }
             }
         }
@@ -168,12 +173,12 @@ fn assemble<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     let masses = model.masses();
     let rows = &kinematics.rows;
 
-    let mass_matrix = assemble_mass_matrix(M::INERTIAL, &masses, rows);
+    let mass_matrix = assemble_mass_matrix::<M, S, N, K>(&masses, rows);
     // b = Σᵢ μᵢ aᵢ Jᵢᵀ.
     let mut inertial_terms: Option<SVector<S, N>> = None;
     for i in 0..M::INERTIAL {
         if let (Some(row), Some(a)) = (&rows[i], kinematics.accelerations[i]) {
-            accumulate(&mut inertial_terms, row * (a * masses[i]));
+            add_row::<M, S, N, K>(&mut inertial_terms, i, row, a * masses[i]);
         }
     }
 
@@ -183,7 +188,7 @@ fn assemble<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
         let weights = model.weights();
         for i in 0..K {
             if let Some(row) = &rows[i] {
-                accumulate(&mut generalized_forces, row * S::from(weights[i]));
+                add_row::<M, S, N, K>(&mut generalized_forces, i, row, S::from(weights[i]));
             }
         }
     }
@@ -204,7 +209,7 @@ fn assemble<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
         for i in 0..K {
             if let Some(row) = &rows[i] {
                 if cartesian_force[i] != 0.0 {
-                    accumulate(&mut generalized_forces, row * cartesian_force[i]);
+                    add_row::<M, S, N, K>(&mut generalized_forces, i, row, cartesian_force[i]);
                 }
             }
         }
@@ -214,6 +219,28 @@ fn assemble<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
         mass_matrix,
         generalized_forces: generalized_forces.unwrap_or_else(SVector::zeros),
         inertial_terms: inertial_terms.unwrap_or_else(SVector::zeros),
+    }
+}
+
+/// `sum += s·row` for row i of x: the whole row, or, where [`Model::DEPENDS`] rules entries out,
+/// only the others.
+#[inline(always)]
+fn add_row<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    sum: &mut Option<SVector<S, N>>,
+    i: usize,
+    row: &SVector<S, N>,
+    s: S,
+) {
+    let depends = &M::DEPENDS[i];
+    if depends.iter().all(|&d| d) {
+        accumulate(sum, row * s);
+    } else {
+        let sum = sum.get_or_insert_with(SVector::zeros);
+        for j in 0..N {
+            if depends[j] {
+                sum[j] += row[j] * s;
+            }
+        }
     }
 }
 
@@ -247,16 +274,20 @@ pub(crate) struct MotionPass<S: Scalar, const N: usize, const K: usize> {
 }
 
 /// d²/ds² f(q + s q̇)|₀ = (∂ḟ/∂q) q̇ of a value f computed on the seeds of a [`MotionPass`]
-/// (`None` when f is at most linear in q: the mixed part was never formed).
+/// (`None` when f is at most linear in q: the mixed part was never formed), summed over the
+/// coordinates f may depend on (`depends`, e.g. a row of [`Model::DEPENDS`]).
 #[inline(always)]
 pub(crate) fn along_motion<S: Scalar, const N: usize>(
     f: &HyperDualSVec<S, N, 1>,
     v: &[S; N],
+    depends: &[bool; N],
 ) -> Option<S> {
     f.eps1eps2.0.map(|h| {
-        let mut a = h[0] * v[0];
-        for j in 1..N {
-            a += h[j] * v[j];
+        let mut a = S::zero();
+        for j in 0..N {
+            if depends[j] {
+                a += h[j] * v[j];
+            }
         }
         a
     })
@@ -270,17 +301,25 @@ pub(crate) fn motion_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: us
     q: &[S; N],
     v: &[S; N],
 ) -> MotionPass<S, N, K> {
-    let qh: [HyperDualSVec<S, N, 1>; N] = std::array::from_fn(|j| {
+    MotionPass {
+        x: model.cartesian(HyperDualSVec::from_re(t), &motion_seeds(q, v)),
+    }
+}
+
+/// The seeds of a [`MotionPass`]: qⱼ with ε₁ = eⱼ (gradient) and ε₂ = q̇ⱼ (direction of motion).
+#[inline(always)]
+pub(crate) fn motion_seeds<S: Scalar, const N: usize>(
+    q: &[S; N],
+    v: &[S; N],
+) -> [HyperDualSVec<S, N, 1>; N] {
+    std::array::from_fn(|j| {
         HyperDualSVec::new(
             q[j],
             Derivative::derivative_generic(Const::<N>, U1, j),
             Derivative::some(SMatrix::<S, 1, 1>::new(v[j])),
             Derivative::none(),
         )
-    });
-    MotionPass {
-        x: model.cartesian(HyperDualSVec::from_re(t), &qh),
-    }
+    })
 }
 
 /// J, x, ẋ, a = (∂ẋ/∂q) q̇ and −∇V from a [`MotionPass`].
@@ -296,7 +335,7 @@ fn kinematics_of_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>
     let rows: [Option<SVector<S, N>>; K] = std::array::from_fn(|i| xh[i].eps1.0);
     let x = std::array::from_fn(|i| xh[i].re);
     let x_dot = std::array::from_fn(|i| xh[i].eps2.0.map_or(S::zero(), |d| d[0]));
-    let accelerations = std::array::from_fn(|i| along_motion(&xh[i], v));
+    let accelerations = std::array::from_fn(|i| along_motion(&xh[i], v, &M::DEPENDS[i]));
     // ∇V needs only first derivatives: evaluate V on gradient duals rebuilt from the same pass.
     let potential_forces = if M::HAS_POTENTIAL {
         let qd: [DualSVec<S, N>; N] =
@@ -501,6 +540,47 @@ pub fn momenta<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     p.into()
 }
 
+/// The canonical field of a scleronomic mechanism, (p, ṗ) = (∂T/∂q̇, ∂T/∂q + 𝓕) at (t, q, q̇), from
+/// one hyper-dual pass ([`MotionPass`]): with T = ½ Σᵢ μᵢ ẋᵢ² and ẋ = J q̇,
+///
+/// ```text
+/// p = Jᵀ diag(μ) ẋ,     ∂T/∂q = (∂ẋ/∂q)ᵀ diag(μ) ẋ,
+/// ```
+///
+/// J, ẋ and ∂ẋ/∂q being the pass's ε₁, ε₂ and ε₁ε₂ parts, and 𝓕 (which holds −∇V and the applied
+/// forces) that of the equations of motion on the same pass. What the methods on (q, p) evaluate
+/// at every Newton iteration (see `integrate::canonical`); the momenta and the gradient of T by
+/// passes of their own would evaluate x several times over.
+#[doc(hidden)]
+#[inline]
+pub fn canonical_field<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> ([S; N], [S; N]) {
+    debug_assert!(!M::RHEONOMIC, "one pass carries no ∂x/∂t");
+    let pass = motion_pass(model, t, q, v);
+    let forces = equations_of_motion_from_pass(model, &pass, t, q, v).generalized_forces;
+    let masses = model.masses();
+    let mut p = SVector::<S, N>::zeros();
+    let mut kinetic_gradient = SVector::<S, N>::zeros();
+    for i in 0..M::INERTIAL {
+        if masses[i] == 0.0 {
+            continue;
+        }
+        let x = &pass.x[i];
+        let weighted_velocity = x.eps2.0.map_or(S::zero(), |e| e[0]) * masses[i];
+        if let Some(row) = &x.eps1.0 {
+            p += row * weighted_velocity;
+        }
+        if let Some(mixed) = &x.eps1eps2.0 {
+            kinetic_gradient += mixed * weighted_velocity;
+        }
+    }
+    (p.into(), (kinetic_gradient + forces).into())
+}
+
 /// The mass matrix alone (one gradient pass).
 pub fn mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
@@ -509,7 +589,7 @@ pub fn mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
 ) -> SMatrix<S, N, N> {
     let (x1, _, _) = cartesian_with_jacobian(model, t, q);
     let rows: [Option<SVector<S, N>>; K] = std::array::from_fn(|i| x1[i].eps.0);
-    assemble_mass_matrix(M::INERTIAL, &model.masses(), &rows)
+    assemble_mass_matrix::<M, S, N, K>(&model.masses(), &rows)
 }
 
 /// ∂L/∂t = ∂T/∂t − ∂V/∂t at fixed (q, q̇): the rate of change of the energy function

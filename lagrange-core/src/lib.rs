@@ -8,6 +8,8 @@
 //! - [`mechanism`]: the user-facing [`Mechanism`] trait, and [`Validated`] for parameters checked once;
 //! - [`integrate`]: the integrators, generic over every mechanism;
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
+//! - [`declaration`]: a declaration's names and flat values, for code generic over declarations;
+//! - [`sensitivity`]: trajectory sensitivities, the simulation on dual numbers;
 //! - [`ensemble`]: one computation over many parameters or initial states, on every core;
 //! - [`error`]: typed errors; nothing here panics on user input.
 //!
@@ -16,6 +18,7 @@
 
 pub mod analysis;
 pub mod constraints;
+pub mod declaration;
 pub mod dynamics;
 pub mod ensemble;
 pub mod error;
@@ -25,6 +28,7 @@ pub mod linalg;
 pub mod mechanism;
 pub mod model;
 pub mod scalar_ext;
+pub mod sensitivity;
 pub mod tree;
 pub mod validated;
 
@@ -38,7 +42,7 @@ pub use geometry::{
     planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3,
 };
 pub use integrate::{
-    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Rk4, StormerVerlet, Variational,
+    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, StormerVerlet, Variational,
 };
 pub use mechanism::Mechanism;
 pub use model::{Coordinates, Model, State};

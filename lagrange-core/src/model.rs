@@ -166,6 +166,12 @@ pub trait Model<const N: usize, const K: usize> {
     /// Whether applied Cartesian or generalized forces are declared.
     const HAS_FORCES: bool;
 
+    /// `DEPENDS[i][j]`: row i of x may depend on coordinate j. `false` only where the declaration
+    /// shows it cannot (row i's body, and the bodies it is placed from, never name coordinate j):
+    /// a structural zero of the Jacobian, whose products the dense assembly of M, b and 𝓕 skips.
+    /// By default every row may depend on every coordinate.
+    const DEPENDS: [[bool; N]; K] = [[true; N]; K];
+
     /// Checks the parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
 

@@ -76,6 +76,18 @@ pub trait Tree<const N: usize, const K: usize, const W: usize, const B: usize>:
     const ANCESTORS: [[bool; B]; B] = ancestors(&Self::BODIES);
     /// d for every row of x, each body's expression evaluated on its own seeds ([`seed`], [`time`]).
     fn displacements<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [Seeded<S, W>; K];
+    /// M from each body's D and composite mass: by default a loop over the pairs
+    /// ([`mass_matrix_by_ancestors`]); `#[mechanism]` writes the pairs out, one [`couple`] each.
+    #[inline(always)]
+    fn mass_matrix<S: Scalar>(
+        jacobian: &BodyJacobians<S, W, B>,
+        composite: &[f64; B],
+    ) -> SMatrix<S, N, N>
+    where
+        Self: Sized,
+    {
+        mass_matrix_by_ancestors::<Self, S, N, K, W, B>(jacobian, composite)
+    }
 }
 
 /// The ancestor table of a list of bodies whose parents come first (see [`Tree::ANCESTORS`]).
@@ -236,18 +248,29 @@ pub fn equations_of_motion<
         }
     }
 
+    // D of each body, row by row (zero where a row does not depend on the seeds).
+    let jacobian: BodyJacobians<S, W, B> = std::array::from_fn(|b| {
+        let body = &M::BODIES[b];
+        std::array::from_fn(|k| match k < body.dim {
+            true => d[body.row + k].eps1.0.unwrap_or_else(SVector::zeros),
+            false => SVector::zeros(),
+        })
+    });
     EquationsOfMotion {
-        mass_matrix: mass_matrix::<M, S, N, K, W, B>(&d, &composite),
+        mass_matrix: M::mass_matrix(&jacobian, &composite),
         generalized_forces,
         inertial_terms,
     }
 }
 
-/// M = Σ_b C_b (D_bᵀ D_b + Σ_{a above b} (Dₐᵀ D_b + D_bᵀ Dₐ)): every body is paired with the
-/// ancestors [`Tree::ANCESTORS`] lists, one dot product over its rows per pair of seeds. Mirrored entries receive the same
-/// terms in the same order, so M is exactly symmetric.
+/// The rows of D of each body (zero where a row does not depend on the seeds): what
+/// [`Tree::mass_matrix`] pairs.
+pub type BodyJacobians<S, const W: usize, const B: usize> = [[SVector<S, W>; 3]; B];
+
+/// M = Σ_b C_b (D_bᵀ D_b + Σ_{a above b} (Dₐᵀ D_b + D_bᵀ Dₐ)) by a loop over the pairs
+/// [`Tree::ANCESTORS`] lists, one [`couple`] each: the default of [`Tree::mass_matrix`].
 #[inline(always)]
-fn mass_matrix<
+pub fn mass_matrix_by_ancestors<
     M: Tree<N, K, W, B>,
     S: Scalar,
     const N: usize,
@@ -255,66 +278,78 @@ fn mass_matrix<
     const W: usize,
     const B: usize,
 >(
-    d: &[Seeded<S, W>; K],
+    jacobian: &BodyJacobians<S, W, B>,
     composite: &[f64; B],
 ) -> SMatrix<S, N, N> {
-    // D of each body, row by row (zero where a row does not depend on the seeds).
-    let jacobian: [[SVector<S, W>; 3]; B] = std::array::from_fn(|b| {
-        let body = &M::BODIES[b];
-        std::array::from_fn(|k| match k < body.dim {
-            true => d[body.row + k].eps1.0.unwrap_or_else(SVector::zeros),
-            false => SVector::zeros(),
-        })
-    });
     let mut m = SMatrix::<S, N, N>::zeros();
     for b in 0..B {
+        // A subtree of massless points adds nothing.
         if composite[b] == 0.0 {
             continue;
         }
-        let body = &M::BODIES[b];
-        let weight = S::from(composite[b]);
-        let db = &jacobian[b];
-        // Σ over the body's rows of Dₐ[r] D_b[s].
-        let dot = |da: &[SVector<S, W>; 3], r: usize, s: usize| {
-            let mut sum = da[0][r] * db[0][s];
-            for k in 1..body.dim {
-                sum += da[k][r] * db[k][s];
-            }
-            sum * weight
-        };
-        for (s, seed_s) in body.seeds.iter().enumerate() {
-            let Seed::Coordinate(cs) = *seed_s else {
-                continue;
-            };
-            // a = b: C_b D_bᵀ D_b, every entry (the (r, s) and (s, r) products are equal).
-            for (r, seed_r) in body.seeds.iter().enumerate() {
-                let Seed::Coordinate(cr) = *seed_r else {
-                    continue;
-                };
-                m[(cr, cs)] += dot(db, r, s);
-            }
-            // a above b: C_b (Dₐᵀ D_b + D_bᵀ Dₐ), the same term into both mirrored entries (twice
-            // into a diagonal one).
-            for (a, da) in jacobian.iter().enumerate().take(b) {
-                if !M::ANCESTORS[b][a] {
-                    continue;
-                }
-                let above = &M::BODIES[a];
-                for (r, seed_r) in above.seeds.iter().enumerate() {
-                    let Seed::Coordinate(cr) = *seed_r else {
-                        continue;
-                    };
-                    let term = dot(da, r, s);
-                    m[(cr, cs)] += term;
-                    m[(cs, cr)] += term;
-                }
+        couple::<M, S, N, K, W, B>(&mut m, jacobian, composite, b, b);
+        for a in 0..b {
+            if M::ANCESTORS[b][a] {
+                couple::<M, S, N, K, W, B>(&mut m, jacobian, composite, b, a);
             }
         }
     }
     m
 }
 
-/// ∇V, with V evaluated on gradient duals whose rows are assembled along the tree (Jᵢ = J_p(i) + Dᵢ).
+/// Adds to M the terms that pair body `b` with body `a` — `a = b` (C_b D_bᵀ D_b), or `a` above `b`
+/// (C_b (Dₐᵀ D_b + D_bᵀ Dₐ)) — one dot product over b's rows per pair of seeds. Mirrored entries
+/// receive the same terms in the same order, so M is exactly symmetric. Called with constant
+/// `b` and `a` (as the `#[mechanism]` expansion does, pair by pair, leaving out the bodies below
+/// which nothing carries mass), every index and seed is known where it is compiled: straight-line
+/// code with no loop, branch or bounds check left.
+#[inline(always)]
+pub fn couple<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+>(
+    m: &mut SMatrix<S, N, N>,
+    jacobian: &BodyJacobians<S, W, B>,
+    composite: &[f64; B],
+    b: usize,
+    a: usize,
+) {
+    let (body, above) = (&M::BODIES[b], &M::BODIES[a]);
+    let weight = S::from(composite[b]);
+    let (da, db) = (&jacobian[a], &jacobian[b]);
+    // Σ over the body's rows of Dₐ[r] D_b[s].
+    let dot = |r: usize, s: usize| {
+        let mut sum = da[0][r] * db[0][s];
+        for k in 1..body.dim {
+            sum += da[k][r] * db[k][s];
+        }
+        sum * weight
+    };
+    for (s, seed_s) in body.seeds.iter().enumerate() {
+        let Seed::Coordinate(cs) = *seed_s else {
+            continue;
+        };
+        for (r, seed_r) in above.seeds.iter().enumerate() {
+            let Seed::Coordinate(cr) = *seed_r else {
+                continue;
+            };
+            let term = dot(r, s);
+            if a == b {
+                // Every entry of D_bᵀ D_b: the (r, s) and (s, r) products are equal.
+                m[(cr, cs)] += term;
+            } else {
+                // The same term into both mirrored entries (twice into a diagonal one).
+                m[(cr, cs)] += term;
+                m[(cs, cr)] += term;
+            }
+        }
+    }
+}
+
 #[inline(always)]
 fn potential_gradient<
     M: Tree<N, K, W, B>,

@@ -86,6 +86,8 @@ pub(crate) fn validate<M: Mechanism<N>, const N: usize>(mechanism: M) -> Result<
 impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
     type Coords = M::Coords;
     const CONSTRAINTS: Option<usize> = M::CONSTRAINTS;
+    const SCLERONOMIC: bool = M::SCLERONOMIC;
+    const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = M::CONSTRAINT_COUNTS;
 
     /// Checked when the handle was made.
     #[inline(always)]
@@ -118,8 +120,16 @@ impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
         self.0.lagrangian_time_derivative_at(t, q, v)
     }
     #[inline(always)]
+    fn canonical_field_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> ([S; N], [S; N]) {
+        self.0.canonical_field_at(t, q, v)
+    }
+    #[inline(always)]
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
         self.0.accelerations_at(t, q, v)
+    }
+    #[inline(always)]
+    fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {
+        self.0.holonomic_constraints_at(t, q)
     }
     #[inline(always)]
     fn project(&self, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {

@@ -1,7 +1,9 @@
 //! Every integrator step is allocation-free: a counting global allocator records the allocations
 //! made by this thread while stepping, and there must be none.
 
-use lagrange_core::integrate::{Direction, Dopri5Stepper, Event, Observation};
+use lagrange_core::integrate::{
+    Direction, Dopri5Stepper, Event, Observation, Radau5, Radau5Stepper, Stepper,
+};
 use lagrange_core::{
     vec2, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Model, Rk4, Scalar,
     State, StormerVerlet, Variational,
@@ -111,6 +113,38 @@ impl Model<2, 4> for DampedDoublePendulum {
 }
 lagrange_core::impl_mechanism!(DampedDoublePendulum, 2, 4);
 
+/// The pendulum in Cartesian coordinates with its rod as a holonomic constraint: RATTLE.
+struct CartesianPendulum;
+
+impl Model<2, 2> for CartesianPendulum {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * D::from(9.81)
+    }
+}
+
+impl lagrange_core::constraints::Constraints<2, 2, 1> for CartesianPendulum {
+    const NAMES: [&'static str; 1] = ["rod"];
+    const KINDS: [lagrange_core::constraints::ConstraintKind; 1] =
+        [lagrange_core::constraints::ConstraintKind::Holonomic];
+    fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+        [vec2(x[0], x[1]).norm() - D::from(1.0)]
+    }
+}
+lagrange_core::impl_mechanism!(CartesianPendulum, 2, 2, constraints);
+
 fn steps_without_allocating<I: Integrator, M: Mechanism<N, Coords = [f64; N]>, const N: usize>(
     m: &M,
     start: State<[f64; N]>,
@@ -141,6 +175,11 @@ fn every_integrator_steps_without_allocating() {
     steps_without_allocating::<ImplicitMidpoint, _, 2>(&DampedDoublePendulum, pendulum);
     steps_without_allocating::<GaussLegendre2, _, 2>(&DampedDoublePendulum, pendulum);
     steps_without_allocating::<Variational, _, 2>(&DampedDoublePendulum, pendulum);
+    // RATTLE: the position stage's Newton iteration and the velocity projection.
+    let on_rod = State::new(0.0, [0.6, -0.8], [0.8, 0.6]);
+    steps_without_allocating::<StormerVerlet, _, 2>(&CartesianPendulum, on_rod);
+    steps_without_allocating::<Variational, _, 2>(&CartesianPendulum, on_rod);
+    steps_without_allocating::<GaussLegendre2, _, 2>(&CartesianPendulum, on_rod);
 
     // Dopri5: a whole integration with events (one terminal) and an observer.
     let settings = Dopri5::new(1e-9, 1e-9);
@@ -182,4 +221,27 @@ fn every_integrator_steps_without_allocating() {
         }
     });
     assert_eq!(n, 0, "Dopri5Stepper::step allocated {n} times");
+
+    // Radau5 step by step (Jacobian, factorisations, Newton iterations) and a whole integration
+    // with an event.
+    let mut stepper =
+        Radau5Stepper::new(&DampedDoublePendulum, Radau5::new(1e-8, 1e-8), &pendulum).unwrap();
+    stepper.step(10.0).unwrap();
+    let n = allocations(|| {
+        while stepper.t() < 10.0 {
+            stepper.step(10.0).unwrap();
+            std::hint::black_box(stepper.dense().eval(stepper.t()));
+        }
+    });
+    assert_eq!(n, 0, "Radau5Stepper::step allocated {n} times");
+    assert!(stepper.stats().factorizations > 1 && stepper.stats().jacobians >= 1);
+    let mut s = kepler;
+    let n = allocations(|| {
+        let mut events = [Event::new(&g_cross)];
+        let out = Radau5::new(1e-8, 1e-8)
+            .integrate(&Kepler, &mut s, 20.0, &mut events, |_| {})
+            .unwrap();
+        std::hint::black_box(out);
+    });
+    assert_eq!(n, 0, "Radau5::integrate allocated {n} times");
 }

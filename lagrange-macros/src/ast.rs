@@ -27,6 +27,7 @@ const LAGRANGE_PRELUDE: &[&str] = &[
     "GaussLegendre2",
     "ImplicitMidpoint",
     "Integrator",
+    "Radau5",
     "Rk4",
     "Stepper",
     "StormerVerlet",

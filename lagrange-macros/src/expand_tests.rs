@@ -362,3 +362,48 @@ fn a_pendulum_keeps_the_dense_pass() {
     assert!(!out.contains("tree::Tree<"));
     assert!(out.contains("dynamics::equations_of_motion::<"));
 }
+
+/// The structural zeros of J a declaration states: each row depends on the coordinates its body
+/// names and on those of the bodies it names (the coupler names the crank's angle through `tip`,
+/// the rocker only its own), so the dense assembly skips the products that are zero.
+#[test]
+fn rows_depend_on_the_coordinates_their_bodies_name() {
+    let out = pretty(expand(
+        TokenStream::new(),
+        quote! {
+            pub mod linkage {
+                pub struct Coords { pub a: f64, pub b: f64, pub c: f64 }
+                pub struct Linkage { pub m: f64, pub l: f64 }
+                #[particle(mass = m)]
+                fn crank() -> Vec2 { vec2(a.cos(), a.sin()) * l }
+                #[particle(mass = m)]
+                fn coupler() -> Vec2 {
+                    let tip = crank;
+                    tip + vec2(b.cos(), b.sin()) * l
+                }
+                #[particle(mass = m)]
+                fn rocker() -> Vec2 { vec2(c.cos(), c.sin()) * l }
+                #[constraint]
+                fn closed() -> f64 { coupler.x - rocker.x }
+            }
+        },
+    ));
+    let compact: String = out.split_whitespace().collect();
+    let depends = compact
+        .split("constDEPENDS:[[bool;3];6]=")
+        .nth(1)
+        .and_then(|rest| rest.split("];").next())
+        .expect("DEPENDS is declared");
+    assert_eq!(
+        depends,
+        "[[true,false,false],[true,false,false],[true,true,false],[true,true,false],\
+         [false,false,true],[false,false,true],"
+    );
+}
+
+/// Where every row names every coordinate there is nothing to rule out: the default stays.
+#[test]
+fn no_depends_table_when_every_row_names_every_coordinate() {
+    let out = pretty(expand(TokenStream::new(), pendulum()));
+    assert!(!out.contains("const DEPENDS"));
+}

@@ -57,7 +57,7 @@ const SCENE: &str = "particle leaving a sphere";
 /// ∫ₐᵇ f by composite 5-point Gauss–Legendre (Abramowitz & Stegun, Table 25.4), exact for
 /// polynomials of degree 9 on each panel: for an analytic integrand the error with 400 panels is far
 /// below round-off.
-fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
+pub fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
     const X: [f64; 5] = [
         0.0,
         -0.538_469_310_105_683_1,

@@ -21,7 +21,7 @@
 //! the equations of motion of a constrained mechanical system (Hairer & Wanner, *Solving Ordinary
 //! Differential Equations II*, 2nd ed., §VII.1, eq. (1.46); Lagrange multipliers for
 //! nonholonomic constraints linear in the velocities: Goldstein, Poole & Safko, *Classical
-//! Mechanics*, 3rd ed., §2.4). It is solved by the Schur complement: with M = LLᵀ (Cholesky),
+//! Mechanics*, 3rd ed., §2.4). It is solved by the Schur complement: with M = LDLᵀ,
 //! (R M⁻¹ Rᵀ) λ = −β − R M⁻¹(𝓕 − b), then q̈ = M⁻¹(𝓕 − b + Rᵀλ). Every matrix stays N×N or C×C, so
 //! sizes are const generics on stable Rust. **M must be positive definite** (the generalized
 //! coordinates independent before the constraints are imposed); a singular M is
@@ -100,18 +100,15 @@
 //!
 //! # Cost
 //!
-//! Per step, relative to the same mechanism without the constraint (release build, both measured
-//! alternately on one shared machine, minimum of 25 runs, two reports; reproduce with
-//! `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`): holonomic
-//! ×4.1–4.8 (four-bar with 2 rows, Cartesian pendulum with 1, plain RK4 + projection), velocity
-//! ×6.7–7.6 (rolling wheel, 2 rows), unilateral in contact ×5.9–6.0 and separated ×1.3–1.6
-//! ([`ContactRk4`] against plain RK4 on the free particle), friction ×1.1–1.5 on top of its
-//! contact. The free mechanisms here are nearly free (identity x(q) for the particle and the
-//! wheel), which makes the ratios large; the absolute cost is a few hundred ns to a few µs per step.
-//! Where it goes: every evaluation of q̈ adds the rows' dual passes and two small Cholesky
-//! factorisations to the unconstrained work, and each step adds the projection (one or two Newton
-//! corrections and one velocity correction) and the consistency check. The rows' passes re-evaluate
-//! x(q, t), which [`crate::dynamics`] has just evaluated: fusing the two would save about a third.
+//! What a constraint adds to an evaluation of q̈ (the measured ratios are in the repository's
+//! BENCHMARKS.md; reproduce them with
+//! `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`): for a
+//! scleronomic mechanism, the position rows are evaluated once on the hyper-dual numbers that
+//! already carry x(q) for M, 𝓕 and b, so G, ġ and β come with no second evaluation of x; then
+//! one LDLᵀ factorisation of M reused for M⁻¹(𝓕 − b) and M⁻¹Rᵀ, and one of the C×C Schur matrix.
+//! A rheonomic mechanism evaluates x and g twice more (gradient, then along the motion). Each step
+//! adds the projection (one or two Newton corrections and one velocity correction) and the
+//! consistency check.
 //!
 //! # Only what is declared
 //!
@@ -217,7 +214,7 @@ pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChan
 pub use forces::{constraint_forces, ConstraintForces};
 pub use mode::infer_mode;
 pub use projection::project;
-pub use rows::{constraint_rows, ConstraintRows};
+pub use rows::{constraint_rows, holonomic_values, ConstraintRows};
 pub use solve::{accelerations, accelerations_in_mode, ConstrainedAccelerations};
 
 use crate::geometry::Scalar;
@@ -281,6 +278,68 @@ impl ConstraintKind {
             }
             _ => None,
         }
+    }
+}
+
+/// How many rows of each [`ConstraintKind`] a declaration has: what
+/// [`Mechanism::CONSTRAINT_COUNTS`](crate::Mechanism::CONSTRAINT_COUNTS) declares, so integrators
+/// decide from constants which constraints they can enforce.
+///
+/// ```
+/// use lagrange_core::constraints::{ConstraintCounts, ConstraintKind};
+/// let kinds = [ConstraintKind::Holonomic, ConstraintKind::Unilateral, ConstraintKind::Friction { normal: 1 }];
+/// const NONE: ConstraintCounts = ConstraintCounts::NONE;
+/// let counts = ConstraintCounts::of(&kinds);
+/// assert_eq!((counts.holonomic, counts.unilateral, counts.friction, counts.rows()), (1, 1, 1, 3));
+/// assert!(!counts.only_holonomic() && NONE.only_holonomic() && NONE.rows() == 0);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ConstraintCounts {
+    /// Holonomic rows g(q, t) = 0.
+    pub holonomic: usize,
+    /// Velocity rows A(q, t) q̇ + a(q, t) = 0.
+    pub velocity: usize,
+    /// Unilateral rows c(q, t) ≥ 0.
+    pub unilateral: usize,
+    /// Friction rows (a friction cone counts its two tangent rows).
+    pub friction: usize,
+}
+
+impl ConstraintCounts {
+    /// No constraint rows.
+    pub const NONE: ConstraintCounts = ConstraintCounts {
+        holonomic: 0,
+        velocity: 0,
+        unilateral: 0,
+        friction: 0,
+    };
+
+    /// The counts of a declaration's [`Constraints::KINDS`].
+    pub const fn of(kinds: &[ConstraintKind]) -> Self {
+        let mut counts = Self::NONE;
+        let mut i = 0;
+        while i < kinds.len() {
+            match kinds[i] {
+                ConstraintKind::Holonomic => counts.holonomic += 1,
+                ConstraintKind::Velocity => counts.velocity += 1,
+                ConstraintKind::Unilateral => counts.unilateral += 1,
+                ConstraintKind::Friction { .. } | ConstraintKind::FrictionCone { .. } => {
+                    counts.friction += 1
+                }
+            }
+            i += 1;
+        }
+        counts
+    }
+
+    /// Every row.
+    pub const fn rows(self) -> usize {
+        self.holonomic + self.velocity + self.unilateral + self.friction
+    }
+
+    /// Whether every row (if any) is holonomic: equality constraints on the configuration alone.
+    pub const fn only_holonomic(self) -> bool {
+        self.velocity == 0 && self.unilateral == 0 && self.friction == 0
     }
 }
 

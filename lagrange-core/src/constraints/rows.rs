@@ -5,7 +5,7 @@ use super::{ConstraintKind, Constraints};
 use crate::dynamics;
 use crate::geometry::Scalar;
 use nalgebra::SVector;
-use num_dual::{Derivative, Dual, Dual2, DualSVec, DualVec};
+use num_dual::{Derivative, Dual, Dual2, DualSVec, DualVec, HyperDualVec};
 
 /// The constraint rows at one state (see the [module docs](super) for the notation).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -18,6 +18,17 @@ pub struct ConstraintRows<S: Scalar, const N: usize, const C: usize> {
     pub value: [S; C],
     /// Its velocity-level value rᵢ·q̇ + ∂/∂t: ġ (position rows), h or s itself (velocity rows).
     pub rate: [S; C],
+}
+
+impl<S: Scalar, const N: usize, const C: usize> ConstraintRows<S, N, C> {
+    fn zero() -> Self {
+        Self {
+            rows: [SVector::zeros(); C],
+            bias: [S::zero(); C],
+            value: [S::zero(); C],
+            rate: [S::zero(); C],
+        }
+    }
 }
 
 #[inline(always)]
@@ -57,8 +68,8 @@ pub(super) fn always_active<
 
 /// The rows and the Jacobian rows of x (for the mass matrix), at (t, q, q̇).
 ///
-/// Two evaluations of x: (1) q seeded as a gradient dual: x, J and G; (2) (q, t) along (q̇, 1) as
-/// a second-order dual: ẋ, the q̈ = 0 accelerations of x, ġ and β of position rows. Velocity rows
+/// Two evaluations of x and g: (1) q seeded as a gradient dual: x, J and G; (2) (q, t) along
+/// (q̇, 1) as a second-order dual: ẋ, the q̈ = 0 accelerations of x, ġ and β of position rows. Velocity rows
 /// then take two first-order passes of their own ([`velocity_rows`]). Where the hyper-dual pass of
 /// the equations of motion is at hand, [`rows_from_pass`] builds the same duals from it instead.
 #[allow(clippy::type_complexity)]
@@ -84,66 +95,11 @@ fn rows_and_jacobian<
     };
     let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
     let x2 = model.cartesian(t2, &q2);
-    rows_on(model, t, q, v, (td, &qd, &x1), (t2, &q2, &x2))
-}
-
-/// [`rows_and_jacobian`] of a scleronomic mechanism from the hyper-dual pass of its equations of
-/// motion: x as a gradient dual is (re, ε₁) of the pass, and x along the motion is (re, ε₂, a) with
-/// a = (∂ẋ/∂q) q̇ from ε₁ε₂ — the same numbers the two evaluations of [`rows_and_jacobian`] would
-/// give, without evaluating x(q) again.
-#[allow(clippy::type_complexity)]
-#[inline(always)]
-pub(crate) fn rows_from_pass<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    model: &M,
-    pass: &dynamics::MotionPass<S, N, K>,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
-    let td = DualSVec::from_re(t);
-    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
-    let x1: [DualSVec<S, N>; K] =
-        std::array::from_fn(|i| DualSVec::new(pass.x[i].re, Derivative::new(pass.x[i].eps1.0)));
-    let t2 = Dual2::from_re(t);
-    let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
-    let x2: [Dual2<S>; K] = std::array::from_fn(|i| {
-        Dual2::new(
-            pass.x[i].re,
-            pass.x[i].eps2.0.map_or(S::zero(), |d| d[0]),
-            dynamics::along_motion(&pass.x[i], v).unwrap_or(S::zero()),
-        )
-    });
-    rows_on(model, t, q, v, (td, &qd, &x1), (t2, &q2, &x2))
-}
-
-/// The rows from x as a gradient dual (J, G) and x along the motion (ẋ, a; ġ, β of position
-/// rows), then the velocity rows ([`velocity_rows`]).
-#[allow(clippy::type_complexity)]
-#[inline(always)]
-fn rows_on<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-    (td, qd, x1): (DualSVec<S, N>, &[DualSVec<S, N>; N], &[DualSVec<S, N>; K]),
-    (t2, q2, x2): (Dual2<S>, &[Dual2<S>; N], &[Dual2<S>; K]),
-) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
-    let mut out = ConstraintRows {
-        rows: [SVector::zeros(); C],
-        bias: [S::zero(); C],
-        value: [S::zero(); C],
-        rate: [S::zero(); C],
-    };
+    let mut out = ConstraintRows::zero();
     let jac: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
     if has_position::<M, N, K, C>() {
-        let g1 = model.position_constraints(td, qd, x1);
-        let g2 = model.position_constraints(t2, q2, x2);
+        let g1 = model.position_constraints(td, &qd, &x1);
+        let g2 = model.position_constraints(t2, &q2, &x2);
         for i in 0..C {
             if M::KINDS[i].is_position() {
                 out.rows[i] = gradient(&g1[i]);
@@ -159,6 +115,54 @@ fn rows_on<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, c
         x_accel: std::array::from_fn(|i| x2[i].v2),
     };
     velocity_rows(model, t, q, v, &motion, &jac, &mut out);
+    (out, jac)
+}
+
+/// [`rows_and_jacobian`] of a scleronomic mechanism from the hyper-dual pass of its equations of
+/// motion. The position rows are evaluated once, on the pass's own seeds and its x: g's ε₁ part is
+/// G, its ε₂ part ġ = G q̇, and β = (∂ġ/∂q) q̇ from its ε₁ε₂ part, as for x itself — so G, ġ and β
+/// come from one evaluation of g, and x(q) (with the rotations of its bodies) is not evaluated
+/// again. Velocity rows take x, ẋ and a from the same pass.
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+pub(crate) fn rows_from_pass<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    pass: &dynamics::MotionPass<S, N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> (ConstraintRows<S, N, C>, [SVector<S, N>; K]) {
+    let mut out = ConstraintRows::zero();
+    let jac: [SVector<S, N>; K] =
+        std::array::from_fn(|i| pass.x[i].eps1.0.unwrap_or_else(SVector::zeros));
+    if has_position::<M, N, K, C>() {
+        let seeds = dynamics::motion_seeds(q, v);
+        let g = model.position_constraints(HyperDualVec::from_re(t), &seeds, &pass.x);
+        for i in 0..C {
+            if M::KINDS[i].is_position() {
+                out.rows[i] = g[i].eps1.0.unwrap_or_else(SVector::zeros);
+                out.value[i] = g[i].re;
+                out.rate[i] = g[i].eps2.0.map_or(S::zero(), |d| d[0]);
+                out.bias[i] = dynamics::along_motion(&g[i], v, &[true; N]).unwrap_or(S::zero());
+            }
+        }
+    }
+    if has_velocity::<M, N, K, C>() {
+        let motion = CartesianMotion {
+            x: std::array::from_fn(|i| pass.x[i].re),
+            x_dot: std::array::from_fn(|i| pass.x[i].eps2.0.map_or(S::zero(), |d| d[0])),
+            x_accel: std::array::from_fn(|i| {
+                dynamics::along_motion(&pass.x[i], v, &M::DEPENDS[i]).unwrap_or(S::zero())
+            }),
+        };
+        velocity_rows(model, t, q, v, &motion, &jac, &mut out);
+    }
     (out, jac)
 }
 
@@ -332,4 +336,66 @@ pub fn constraint_rows<
 
 pub(super) fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
     std::array::from_fn(|j| q[j].re())
+}
+
+/// The holonomic rows' values g(q, t) at (t, q), for any scalar, in declaration order (other kinds
+/// of row skipped) and padded with zeros to N entries: what
+/// `Mechanism::holonomic_constraints_at` forwards to,
+/// so integrators generic over `Mechanism<N>` (which cannot name C) can differentiate them.
+/// Independent holonomic rows number at most N; rows beyond the N-th are not returned (the
+/// integrators refuse such a declaration from
+/// [`Mechanism::CONSTRAINT_COUNTS`](crate::Mechanism::CONSTRAINT_COUNTS) before calling this).
+///
+/// ```
+/// use lagrange_core::constraints::{holonomic_values, ConstraintKind, Constraints};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Bead;
+/// # impl Model<2, 2> for Bead {
+/// #     type Coords = [f64; 2];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = false;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], _x: &[D; 2]) -> D { D::zero() }
+/// # }
+/// // A bead on the unit circle, with a velocity row declared first: only the circle is returned.
+/// impl Constraints<2, 2, 2> for Bead {
+///     const NAMES: [&'static str; 2] = ["drive", "circle"];
+///     const KINDS: [ConstraintKind; 2] = [ConstraintKind::Velocity, ConstraintKind::Holonomic];
+///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 2] {
+///         [D::zero(), vec2(x[0], x[1]).norm() - D::from(1.0)]
+///     }
+/// }
+/// assert_eq!(holonomic_values(&Bead, 0.0, &[3.0, 4.0]), [4.0, 0.0]);
+/// ```
+pub fn holonomic_values<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+) -> [S; N] {
+    let mut out = [S::zero(); N];
+    if !M::KINDS
+        .iter()
+        .any(|k| matches!(k, ConstraintKind::Holonomic))
+    {
+        return out;
+    }
+    let x = model.cartesian(t, q);
+    let g = model.position_constraints(t, q, &x);
+    let mut slot = 0;
+    for i in 0..C {
+        if matches!(M::KINDS[i], ConstraintKind::Holonomic) && slot < N {
+            out[slot] = g[i];
+            slot += 1;
+        }
+    }
+    out
 }

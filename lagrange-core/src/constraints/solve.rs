@@ -7,7 +7,7 @@ use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
 use crate::dynamics;
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::{cholesky, cholesky_substitute, NotPositiveDefinite};
+use crate::linalg::{Ldlt, NotPositiveDefinite};
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
@@ -30,7 +30,7 @@ pub struct ConstrainedAccelerations<S: Scalar, const N: usize, const C: usize> {
     pub multipliers: [S; C],
 }
 
-/// The error for a singular Schur matrix S = R M⁻¹ Rᵀ whose Cholesky factorisation stopped at row
+/// The error for a singular Schur matrix S = R M⁻¹ Rᵀ whose factorisation stopped at row
 /// p: row p is (numerically) a combination of earlier rows k, S[p, ·] ≈ Σ cₖ S[k, ·] with
 /// S₁₁ c = S[0..p, p]. The rows with a coefficient that matters are named with p.
 pub(super) fn singular_constraints<
@@ -162,6 +162,7 @@ fn slip_sign(mode: RowMode) -> f64 {
 ///
 /// Errors: singular mass matrix, singular R M⁻¹ Rᵀ (naming the rows), indeterminate sliding
 /// friction (the friction-coupled Schur matrix is singular: Painlevé's paradox), non-finite results.
+#[inline(always)]
 pub fn accelerations_in_mode<
     M: Constraints<N, K, C>,
     S: Scalar,
@@ -181,9 +182,10 @@ pub fn accelerations_in_mode<
         Some(pass) => dynamics::equations_of_motion_from_pass(model, pass, t, q, v),
         None => dynamics::equations_of_motion(model, t, q, v),
     };
-    let l = cholesky(&eom.mass_matrix)
+    // LDLᵀ with reciprocal pivots: no square roots, no divisions in the solves (see `Ldlt`).
+    let l = Ldlt::new(&eom.mass_matrix)
         .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, S, N>(&eom.mass_matrix, e, t, q))?;
-    let u = cholesky_substitute(&l, &(eom.generalized_forces - eom.inertial_terms));
+    let u = l.solve(&(eom.generalized_forces - eom.inertial_terms));
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
     // A sliding row acts when its contact is enforced.
     let sliding: [bool; C] = std::array::from_fn(|j| match M::KINDS[j] {
@@ -203,7 +205,7 @@ pub fn accelerations_in_mode<
     };
     let y: [SVector<S, N>; C] = std::array::from_fn(|i| {
         if enforced[i] || sliding[i] {
-            cholesky_substitute(&l, &cr.rows[i])
+            l.solve(&cr.rows[i])
         } else {
             SVector::zeros()
         }
@@ -223,16 +225,16 @@ pub fn accelerations_in_mode<
         }
     }
     // Rows not enforced get λ = 0 from an identity row at the scale of the others (so the relative
-    // singularity test of the Cholesky factorisation is not distorted).
+    // singularity test of the factorisation is not distorted).
     let filler = if diagonal > 0.0 { diagonal } else { 1.0 };
     for i in 0..C {
         if !enforced[i] {
             schur[(i, i)] = S::from(filler);
         }
     }
-    let ls = cholesky(&schur)
+    let ls = Ldlt::new(&schur)
         .map_err(|e| singular_constraints::<M, S, N, K, C>(e, &schur, &enforced, t, q))?;
-    let mut lambda = cholesky_substitute(&ls, &rhs);
+    let mut lambda = ls.solve(&rhs);
     if !sliding.iter().any(|&s| s) {
         let mut qdd = u;
         for k in 0..C {

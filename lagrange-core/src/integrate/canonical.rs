@@ -46,7 +46,7 @@ pub fn momentum_rate<M: Mechanism<N>, S: Scalar, const N: usize>(
 
 /// (p, ṗ) at (t, q, v), for any scalar: p = ∂L/∂q̇ and ṗ = [`momentum_rate`], plus, when
 /// `constrained`, the generalized constraint force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the mechanism's
-/// (constrained) [`accelerations`](Mechanism::accelerations_at): for a mechanism with constraints,
+/// (constrained) `accelerations` (`Mechanism::accelerations_at`): for a mechanism with constraints,
 /// ṗ = d/dt ∂L/∂q̇ along its motion is ∂L/∂q + F_nc + Jᵀλ.
 #[inline]
 pub fn canonical_field<M: Mechanism<N>, S: Scalar, const N: usize>(
@@ -56,8 +56,7 @@ pub fn canonical_field<M: Mechanism<N>, S: Scalar, const N: usize>(
     v: &[S; N],
     constrained: bool,
 ) -> Result<([S; N], [S; N])> {
-    let p = mechanism.momenta_at(t, q, v);
-    let mut rate = momentum_rate(mechanism, t, q, v);
+    let (p, mut rate) = mechanism.canonical_field_at(t, q, v);
     if constrained {
         let eom = mechanism.equations_of_motion_at(t, q, v);
         let a = mechanism.accelerations_at(t, q, v)?;
@@ -129,6 +128,20 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
     guess: &[f64; N],
     stats: &mut Stats,
 ) -> Result<([f64; N], usize)> {
+    if M::SCLERONOMIC {
+        // p = M(q) q̇ exactly: one solve with the mass matrix, no iteration.
+        stats.evaluations += 1;
+        let mass = mechanism.equations_of_motion_at(t, q, guess).mass_matrix;
+        return match crate::linalg::solve_spd(&mass, &SVector::from(*p)) {
+            Ok(v) if v.iter().all(|x| x.is_finite()) => Ok((v.into(), 1)),
+            Ok(_) => Err(crate::dynamics::non_finite_dynamics::<M::Coords, f64, N>(
+                t, q,
+            )),
+            Err(e) => Err(crate::dynamics::mass_matrix_failure::<M::Coords, f64, N>(
+                &mass, e, t, q,
+            )),
+        };
+    }
     let td = DualSVec::<f64, N>::from_re(t);
     let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
     let mut v = SVector::<f64, N>::from(*guess);

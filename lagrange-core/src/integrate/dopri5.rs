@@ -24,8 +24,8 @@
 //!   change and is missed: bound `h_max` if that matters.
 //!
 //! - Constraints: the start state must satisfy the mechanism's constraints
-//!   ([`Mechanism::check_constraints`]); every accepted step is projected onto them
-//!   ([`Mechanism::project`], a no-op without constraints). The dense output interpolates the step
+//!   (`Mechanism::check_constraints`); every accepted step is projected onto them
+//!   (`Mechanism::project`, a no-op without constraints). The dense output interpolates the step
 //!   before projection, which moves the end point by about the local error.
 //!
 //! Integration is forward in time only.
@@ -37,6 +37,7 @@ use super::solver::{check_step, Stepper};
 pub use super::solver::{Direction, Event, EventHit, Observation, Outcome, Stats, StopReason};
 use super::Integrator;
 use crate::error::{Error, Result};
+use crate::geometry::Scalar;
 use crate::mechanism::{diagnose, Mechanism};
 use crate::model::{check_state, Coordinates, State};
 
@@ -569,20 +570,94 @@ pub(crate) fn ratio(e: f64, scale: f64) -> f64 {
     }
 }
 
+/// y + h Σⱼ coefⱼ kⱼ, componentwise, on any scalar (the f64 operations in the same order).
 #[inline(always)]
-pub(crate) fn combo<const N: usize, const S: usize>(
-    y: &[f64; N],
+pub(crate) fn combo<T: Scalar, const N: usize, const S: usize>(
+    y: &[T; N],
     h: f64,
     coef: [f64; S],
-    k: [&[f64; N]; S],
-) -> [f64; N] {
+    k: [&[T; N]; S],
+) -> [T; N] {
     std::array::from_fn(|i| {
-        let mut s = 0.0;
+        let mut s = T::zero();
         for j in 0..S {
-            s += coef[j] * k[j][i];
+            s += k[j][i] * coef[j];
         }
-        y[i] + h * s
+        y[i] + s * h
     })
+}
+
+/// The stages of one Dormand–Prince step of size h from (t, q, v) with q̈ = `a1` there: the new
+/// (q₁, v₁) and the stage velocities kq and accelerations ka of stages 1…6 (stage 7, FSAL, is q̈ at
+/// the new point). On any scalar: the f64 step, and the trajectory sensitivities on dual numbers.
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+pub(crate) fn stages<T: Scalar, const N: usize>(
+    t: f64,
+    q: &[T; N],
+    v: &[T; N],
+    a1: [T; N],
+    h: f64,
+    mut acc: impl FnMut(f64, &[T; N], &[T; N]) -> Result<[T; N]>,
+) -> Result<([T; N], [T; N], [[T; N]; 6], [[T; N]; 6])> {
+    let (kq1, ka1) = (*v, a1);
+    // Stage i: position increments use the stage velocities kqⱼ, velocity increments the stage
+    // accelerations kaⱼ.
+    let (q2, v2) = (combo(q, h, [A21], [&kq1]), combo(v, h, [A21], [&ka1]));
+    let ka2 = acc(t + C2 * h, &q2, &v2)?;
+    let kq2 = v2;
+    let (q3, v3) = (
+        combo(q, h, [A31, A32], [&kq1, &kq2]),
+        combo(v, h, [A31, A32], [&ka1, &ka2]),
+    );
+    let ka3 = acc(t + C3 * h, &q3, &v3)?;
+    let kq3 = v3;
+    let (q4, v4) = (
+        combo(q, h, [A41, A42, A43], [&kq1, &kq2, &kq3]),
+        combo(v, h, [A41, A42, A43], [&ka1, &ka2, &ka3]),
+    );
+    let ka4 = acc(t + C4 * h, &q4, &v4)?;
+    let kq4 = v4;
+    let (q5, v5) = (
+        combo(q, h, [A51, A52, A53, A54], [&kq1, &kq2, &kq3, &kq4]),
+        combo(v, h, [A51, A52, A53, A54], [&ka1, &ka2, &ka3, &ka4]),
+    );
+    let ka5 = acc(t + C5 * h, &q5, &v5)?;
+    let kq5 = v5;
+    let (q6, v6) = (
+        combo(
+            q,
+            h,
+            [A61, A62, A63, A64, A65],
+            [&kq1, &kq2, &kq3, &kq4, &kq5],
+        ),
+        combo(
+            v,
+            h,
+            [A61, A62, A63, A64, A65],
+            [&ka1, &ka2, &ka3, &ka4, &ka5],
+        ),
+    );
+    let ka6 = acc(t + h, &q6, &v6)?;
+    let kq6 = v6;
+    let q1 = combo(
+        q,
+        h,
+        [A71, A73, A74, A75, A76],
+        [&kq1, &kq3, &kq4, &kq5, &kq6],
+    );
+    let v1 = combo(
+        v,
+        h,
+        [A71, A73, A74, A75, A76],
+        [&ka1, &ka3, &ka4, &ka5, &ka6],
+    );
+    Ok((
+        q1,
+        v1,
+        [kq1, kq2, kq3, kq4, kq5, kq6],
+        [ka1, ka2, ka3, ka4, ka5, ka6],
+    ))
 }
 
 impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
@@ -713,73 +788,13 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
     ) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
         let m = self.mechanism;
         let (t, q, v) = (self.t, &self.q, &self.v);
-        let (kq1, ka1) = (*v, self.a);
-        // Stage i: position increments use the stage velocities kqⱼ, velocity increments the stage
-        // accelerations kaⱼ.
-        let (q2, v2) = (combo(q, h, [A21], [&kq1]), combo(v, h, [A21], [&ka1]));
-        stats.evaluations += 1;
-        let ka2 = m
-            .accelerations_at(t + C2 * h, &q2, &v2)
-            .map_err(|e| diagnose(m, t + C2 * h, &q2, &v2, e))?;
-        let kq2 = v2;
-        let (q3, v3) = (
-            combo(q, h, [A31, A32], [&kq1, &kq2]),
-            combo(v, h, [A31, A32], [&ka1, &ka2]),
-        );
-        stats.evaluations += 1;
-        let ka3 = m
-            .accelerations_at(t + C3 * h, &q3, &v3)
-            .map_err(|e| diagnose(m, t + C3 * h, &q3, &v3, e))?;
-        let kq3 = v3;
-        let (q4, v4) = (
-            combo(q, h, [A41, A42, A43], [&kq1, &kq2, &kq3]),
-            combo(v, h, [A41, A42, A43], [&ka1, &ka2, &ka3]),
-        );
-        stats.evaluations += 1;
-        let ka4 = m
-            .accelerations_at(t + C4 * h, &q4, &v4)
-            .map_err(|e| diagnose(m, t + C4 * h, &q4, &v4, e))?;
-        let kq4 = v4;
-        let (q5, v5) = (
-            combo(q, h, [A51, A52, A53, A54], [&kq1, &kq2, &kq3, &kq4]),
-            combo(v, h, [A51, A52, A53, A54], [&ka1, &ka2, &ka3, &ka4]),
-        );
-        stats.evaluations += 1;
-        let ka5 = m
-            .accelerations_at(t + C5 * h, &q5, &v5)
-            .map_err(|e| diagnose(m, t + C5 * h, &q5, &v5, e))?;
-        let kq5 = v5;
-        let (q6, v6) = (
-            combo(
-                q,
-                h,
-                [A61, A62, A63, A64, A65],
-                [&kq1, &kq2, &kq3, &kq4, &kq5],
-            ),
-            combo(
-                v,
-                h,
-                [A61, A62, A63, A64, A65],
-                [&ka1, &ka2, &ka3, &ka4, &ka5],
-            ),
-        );
-        stats.evaluations += 1;
-        let ka6 = m
-            .accelerations_at(t + h, &q6, &v6)
-            .map_err(|e| diagnose(m, t + h, &q6, &v6, e))?;
-        let kq6 = v6;
-        let q1 = combo(
-            q,
-            h,
-            [A71, A73, A74, A75, A76],
-            [&kq1, &kq3, &kq4, &kq5, &kq6],
-        );
-        let v1 = combo(
-            v,
-            h,
-            [A71, A73, A74, A75, A76],
-            [&ka1, &ka3, &ka4, &ka5, &ka6],
-        );
+        let (q1, v1, kq, ka) = stages(t, q, v, self.a, h, |t, q, v| {
+            stats.evaluations += 1;
+            m.accelerations_at(t, q, v)
+                .map_err(|e| diagnose(m, t, q, v, e))
+        })?;
+        let [kq1, _, kq3, kq4, kq5, kq6] = kq;
+        let [ka1, _, ka3, ka4, ka5, ka6] = ka;
         check_state(&M::Coords::NAMES, t + h, &q1, &v1)?;
         stats.evaluations += 1;
         let ka7 = m

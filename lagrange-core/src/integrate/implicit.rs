@@ -57,14 +57,13 @@
 //! (q, p) (HLW §IV.2.1), e.g. angular momentum.
 //!
 //! **Constraints.** As every integrator, a step first checks that the state satisfies the
-//! mechanism's constraints ([`Mechanism::check_constraints`]) and ends by projecting onto them
-//! ([`Mechanism::project`]; a no-op without constraints). When the mechanism declares constraints
-//! ([`Mechanism::CONSTRAINTS`]; for an implementation that does not declare it, when its
-//! accelerations carry constraint forces at the start of the step, the test of
-//! [`refuse_constrained`](super::refuse_constrained)), G includes the generalized constraint force
-//! Jᵀλ = M q̈ − (𝓕 − b), with q̈ the constrained accelerations, at every stage — also where λ
-//! vanishes at the start of the step. Projection is not symplectic: on a constrained mechanism these methods are projection
-//! methods (HLW §IV.4), symmetric only up to it.
+//! mechanism's constraints (`Mechanism::check_constraints`) and ends by projecting onto them
+//! (`Mechanism::project`; a no-op without constraints). Unless the mechanism declares no
+//! constraint rows ([`Mechanism::CONSTRAINTS`] = `Some(0)`), G includes the generalized constraint
+//! force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the constrained accelerations, at every stage — a constant
+//! of the mechanism, never a test of λ, so also where λ vanishes at the start of the step (a
+//! pendulum released horizontally at rest). Projection is not symplectic: on a constrained
+//! mechanism these methods are projection methods (HLW §IV.4), symmetric only up to it.
 //!
 //! A Newton iteration that does not converge in [`MAX_NEWTON_ITERATIONS`] is
 //! [`Error::NewtonDiverged`]; the caller's state is unchanged on every error.
@@ -74,7 +73,7 @@
 
 use super::canonical::{canonical_field, field_jacobians, velocities_from_momenta, FieldJacobians};
 use super::newton::{
-    constraint_forces_act, max_norm, newton, BlockLu, NewtonEnd, MAX_NEWTON_ITERATIONS,
+    carries_constraint_forces, max_norm, newton, BlockLu, NewtonEnd, MAX_NEWTON_ITERATIONS,
 };
 use super::solver::validated_step;
 use super::{Integrator, Stats};
@@ -286,32 +285,16 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     let p0 = SVector::<f64, N>::from(mechanism.momenta_at(t, q, v));
     // The stages are predicted from the previous step when there is one (the solver's memory), else
     // Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀), O(h²) from the solution: one plain evaluation. Whether the
-    // field carries constraint forces is declared (Mechanism::CONSTRAINTS); a mechanism that does
-    // not declare it is tested here (q̈ and one more plain evaluation).
-    let mut a0: Option<[f64; N]> = None;
-    let mut acceleration = |stats: &mut Stats| -> Result<[f64; N]> {
-        if let Some(a) = a0 {
-            return Ok(a);
-        }
-        stats.evaluations += 1;
-        let a = mechanism.accelerations_at(t, q, v)?;
-        a0 = Some(a);
-        Ok(a)
-    };
-    let constrained = match M::CONSTRAINTS {
-        Some(rows) => rows > 0,
-        None => {
-            let a = acceleration(stats)?;
-            stats.evaluations += 1;
-            constraint_forces_act(mechanism, t, q, v, &a)?
-        }
-    };
+    // field carries constraint forces is the declaration's (Mechanism::CONSTRAINTS): every stage
+    // includes Jᵀλ unless the mechanism declares no rows, whatever λ is at the start of the step.
+    let constrained = carries_constraint_forces::<M, N>();
     let predictor: [SVector<f64, N>; S] = match memory.previous {
         Some(prev) if prev.t_end == t && prev.h == h => {
             prev.extrapolate(&tableau.c, &(v0 - prev.v1))
         }
         _ => {
-            let a0 = SVector::<f64, N>::from(acceleration(stats)?);
+            stats.evaluations += 1;
+            let a0 = SVector::<f64, N>::from(mechanism.accelerations_at(t, q, v)?);
             std::array::from_fn(|i| v0 + a0 * (tableau.c[i] * h))
         }
     };

@@ -1,7 +1,7 @@
 //! Integrators, generic over every generated mechanism, behind one stepping interface
 //! ([`solver`]: the [`Stepper`] trait — `step`, `integrate` to a stop time with an observer, dense
 //! output and events, [`Stats`] — implemented by [`FixedStepper`] for every [`Integrator`], by
-//! [`Dopri5Stepper`] and [`Dop853Stepper`], and by the contact solver
+//! [`Dopri5Stepper`], [`Dop853Stepper`] and [`Radau5Stepper`], and by the contact solver
 //! [`ContactSolver`](crate::constraints::ContactSolver)); `sys.step::<I>(&mut s, h)` is one
 //! validated step.
 //!
@@ -10,10 +10,11 @@
 //! | [`Rk4`] | 4 | fixed | 4 | none (energy drifts) |
 //! | [`Dopri5`] | 5(4) | adaptive, dense output (order 4), events | 6 (FSAL) | none |
 //! | [`Dop853`] | 8(5,3) | adaptive, dense output (order 7), events | 12 (FSAL), + 3 for the dense output | none |
+//! | [`Radau5`] | 5 | adaptive, dense output (order 3), events; for stiff mechanisms | simplified Newton: 3 per iteration (usually 1–4 iterations), + 1 at the new point; one Jacobian of q̈ (2 dual passes) and one factorisation reused across steps while the iteration contracts well | L-stable |
 //! | [`ImplicitMidpoint`] | 2 | fixed | simplified Newton: 1 plain evaluation of (p, ṗ) per iteration; one Jacobian, reused across steps while the iteration contracts well | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`GaussLegendre2`] | 4 | fixed | simplified Newton: 2 plain evaluations of (p, ṗ) per iteration; Jacobian reused as above | symmetric; symplectic in (q, p) for any Lagrangian |
-//! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations | symplectic in (q, p) for any Lagrangian; refuses constraints |
-//! | [`StormerVerlet`] | 2 | fixed | 2 with M (+ 1 constraint test when constraints are not declared) | symplectic; refuses a non-constant mass matrix and constraints |
+//! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations (with the multipliers of holonomic constraints: RATTLE) | symplectic in (q, p) for any Lagrangian, also with holonomic constraints; refuses velocity constraints, contacts and friction |
+//! | [`StormerVerlet`] | 2 | fixed | 2 with M (+ Newton on the multipliers of holonomic constraints: RATTLE) | symplectic, also with holonomic constraints; refuses a non-constant mass matrix, velocity constraints, contacts and friction |
 //!
 //! Implicit midpoint, Gauss–Legendre and the variational integrator integrate the canonical
 //! equations in (q, p), p = ∂L/∂q̇ (converting at both ends of a step, so the public state stays
@@ -25,19 +26,29 @@
 //! the maps are not symplectic.
 //!
 //! Every step is allocation-free (a test counts allocations) and leaves the caller's state
-//! unchanged on error. On a mechanism with constraints, RK4, Dopri5, implicit midpoint and
-//! Gauss–Legendre integrate the constrained accelerations, check the state against the constraints
-//! before a step ([`Mechanism::check_constraints`]) and project after it ([`Mechanism::project`]);
-//! the variational integrator and Störmer–Verlet, built on the unconstrained Lagrangian, refuse
-//! constrained mechanisms with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
-//! Whether a mechanism is constrained is its declaration, [`Mechanism::CONSTRAINTS`]; only for an
-//! implementation that does not declare it is it tested at each step.
+//! unchanged on error. On a mechanism with constraints, RK4, Dopri5, Dop853, Radau5, implicit
+//! midpoint and Gauss–Legendre integrate the constrained accelerations, check the state against
+//! the constraints before a step (`Mechanism::check_constraints`) and project after it
+//! (`Mechanism::project`).
+//! Störmer–Verlet and the variational integrator enforce holonomic constraints g(q, t) = 0 by
+//! RATTLE ([`rattle`]: the multipliers of a position stage solved by Newton with the step, then the
+//! velocity projection), which keeps them symplectic on the constraint manifold, and refuse
+//! velocity constraints, unilateral contacts and friction with
+//! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod) (use [`ContactRk4`](crate::ContactRk4)
+//! for those). Which constraints a method enforces is decided by the declaration alone —
+//! [`Mechanism::CONSTRAINT_COUNTS`] and [`Mechanism::CONSTRAINTS`] — never by the multipliers at
+//! some state (a pendulum released horizontally at rest has λ = 0 at its first step and is treated
+//! as constrained all the same): the symplectic methods refuse an implementation that does not
+//! declare its constraints, and implicit midpoint and Gauss–Legendre add the constraint force at
+//! every stage unless the mechanism declares none.
 
 mod canonical;
 pub mod dop853;
 pub mod dopri5;
 pub mod implicit;
 mod newton;
+pub mod radau;
+pub mod rattle;
 pub(crate) mod rk4;
 pub mod solver;
 pub mod variational;
@@ -46,7 +57,9 @@ pub mod verlet;
 pub use dop853::{Dop853, Dop853Stepper};
 pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper};
 pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
-pub use newton::{acceleration_jacobians, refuse_constrained, MAX_NEWTON_ITERATIONS};
+pub use newton::{acceleration_jacobians, MAX_NEWTON_ITERATIONS};
+pub use radau::{Radau5, Radau5Stepper};
+pub use rattle::holonomic_rows;
 pub use rk4::Rk4;
 pub use solver::{
     check_step, check_step_at, Direction, Event, EventHit, FixedStepper, Observation, Outcome,

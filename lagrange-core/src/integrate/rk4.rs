@@ -3,6 +3,7 @@
 
 use super::{Integrator, Stats};
 use crate::error::Result;
+use crate::geometry::Scalar;
 use crate::mechanism::{diagnose, Mechanism};
 
 /// Fixed-step classical Runge–Kutta of order 4: four evaluations of the accelerations per step,
@@ -38,21 +39,22 @@ use crate::mechanism::{diagnose, Mechanism};
 pub struct Rk4;
 
 #[inline(always)]
-fn axpy<const N: usize>(y: &[f64; N], a: f64, x: &[f64; N]) -> [f64; N] {
-    std::array::from_fn(|i| y[i] + a * x[i])
+fn axpy<S: Scalar, const N: usize>(y: &[S; N], a: f64, x: &[S; N]) -> [S; N] {
+    std::array::from_fn(|i| y[i] + x[i] * a)
 }
 
 /// One classical RK4 step of (q, v)' = (v, `acc`(t, q, v)) from (t, q, v): (q, v) at t + h. The
-/// one implementation of the method, shared by [`Rk4`] and the contact stepper (whose `acc` is
-/// the accelerations in a fixed contact mode).
+/// one implementation of the method, shared by [`Rk4`], the contact stepper (whose `acc` is the
+/// accelerations in a fixed contact mode) and the trajectory sensitivities (on dual numbers `S`,
+/// the same operations in the same order, so the real parts are the f64 run bit for bit).
 #[inline(always)]
-pub(crate) fn rk4_step<const N: usize>(
+pub(crate) fn rk4_step<S: Scalar, const N: usize>(
     t: f64,
-    q: &[f64; N],
-    v: &[f64; N],
+    q: &[S; N],
+    v: &[S; N],
     h: f64,
-    mut acc: impl FnMut(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-) -> Result<([f64; N], [f64; N])> {
+    mut acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
+) -> Result<([S; N], [S; N])> {
     let half = 0.5 * h;
     let a1 = acc(t, q, v)?;
     let (q2, v2) = (axpy(q, half, v), axpy(v, half, &a1));
@@ -62,8 +64,8 @@ pub(crate) fn rk4_step<const N: usize>(
     let (q4, v4) = (axpy(q, h, &v3), axpy(v, h, &a3));
     let a4 = acc(t + h, &q4, &v4)?;
     let w = h / 6.0;
-    let q_new = std::array::from_fn(|i| q[i] + w * (v[i] + 2.0 * (v2[i] + v3[i]) + v4[i]));
-    let v_new = std::array::from_fn(|i| v[i] + w * (a1[i] + 2.0 * (a2[i] + a3[i]) + a4[i]));
+    let q_new = std::array::from_fn(|i| q[i] + (v[i] + (v2[i] + v3[i]) * 2.0 + v4[i]) * w);
+    let v_new = std::array::from_fn(|i| v[i] + (a1[i] + (a2[i] + a3[i]) * 2.0 + a4[i]) * w);
     Ok((q_new, v_new))
 }
 

@@ -32,26 +32,36 @@
 //! the sequence of (q, p) is that of the discrete flow: the step map is symplectic in (q, p) for any
 //! Lagrangian, second order, symmetric. [`Variational::step_momenta`] works on (q, p) directly.
 //!
-//! **Constraints.** The discrete Lagrangian here is that of the coordinates alone: a mechanism with
-//! constraints (whose accelerations carry constraint forces) is refused with
-//! [`Error::UnsuitableMethod`] (the test is one extra evaluation per step, see
-//! [`refuse_constrained`]); a constrained variational integrator
-//! (M&W §3.5, multipliers enforcing g(q₁) = 0) is not implemented. The validated step still calls
-//! [`Mechanism::check_constraints`] and [`Mechanism::project`] like every integrator (no-ops here).
+//! **Constraints: RATTLE.** Holonomic constraints g(q, t) = 0 (`#[constraint]` rows) enter the
+//! discrete Euler–Lagrange equations with multipliers, split between the two ends of the step as in
+//! RATTLE (Hairer, Lubich & Wanner, *Geometric Numerical Integration*, 2nd ed., §VI.6 and
+//! §VII.1.4, (1.26); see [`rattle`](super::rattle)), with Dg = ∂g/∂q the constraint Jacobian (G
+//! stays the momentum rate above), Λ = (h/2)λ and Λ₁ = (h/2)μ:
+//!
+//! ```text
+//! R(v_m) − Dg(q₀, t₀)ᵀΛ = 0,     g(q₀ + h v_m, t₁) / h = 0                  (R as above),
+//! q₁ = q₀ + h v_m,     p₁ = p₀ + Dg(q₀, t₀)ᵀΛ + h G(t_m, q_m, v_m) + Dg(q₁, t₁)ᵀΛ₁,
+//! ```
+//!
+//! the first line solved for (v_m, Λ) together by the same Newton iteration (the 2N-square Jacobian
+//! [[∂R/∂v_m, −Dg(q₀)ᵀ], [Dg(q₁), 0]], exact from the same dual seeding of v_m), Λ₁ such that v₁
+//! satisfies Dg(q₁, t₁) v₁ + ∂g/∂t = 0: the mass-weighted velocity projection
+//! `Mechanism::project` applied to the velocity recovered from p₁ without Λ₁. Velocity rows,
+//! unilateral contacts and friction are refused by the declaration
+//! ([`Mechanism::CONSTRAINT_COUNTS`], see [`holonomic_rows`]), whatever the state.
 
 use super::canonical;
 pub use super::canonical::momentum_rate;
-use super::newton::{
-    jacobian_rows, max_norm, newton, refuse_constrained, NewtonEnd, MAX_NEWTON_ITERATIONS,
-};
+use super::newton::{jacobian_rows, max_norm, newton, seeded, NewtonEnd, MAX_NEWTON_ITERATIONS};
+use super::rattle::{breakdown, holonomic_rows, rows_and_jacobian, rows_on};
 use super::solver::validated_step;
 use super::{Integrator, Stats};
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::lu_solve;
+use crate::linalg::{lu_solve, lu_solve_blocks};
 use crate::mechanism::Mechanism;
 use crate::model::State;
-use nalgebra::SVector;
+use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
 
 /// The midpoint variational integrator (see the [module docs](self)).
@@ -126,12 +136,27 @@ impl Variational {
         h: f64,
     ) -> Result<([f64; N], [f64; N], [f64; N], usize)> {
         let mut stats = Stats::default();
-        Self::momenta_step(mechanism, t, q0, p0, v_guess, h, &mut stats)
+        let rows = holonomic_rows::<M, N>(Self::NAME)?;
+        let (q1, p1, vm, iterations) =
+            Self::momenta_step(mechanism, rows, t, q0, p0, v_guess, h, &mut stats)?;
+        if rows == 0 {
+            return Ok((q1, p1, vm, iterations));
+        }
+        // RATTLE's μ on the momenta: p₁ + Dg(q₁)ᵀΛ₁ is the momentum of the velocity recovered from
+        // p₁ and projected (mass-weighted) onto Dg(q₁) v₁ + ∂g/∂t = 0.
+        let (t1, mut q1) = (t + h, q1);
+        let (mut v1, _) =
+            canonical::velocities_from_momenta(mechanism, t1, &q1, &p1, &vm, &mut stats)?;
+        mechanism.project(t1, &mut q1, &mut v1)?;
+        Ok((q1, mechanism.momenta_at(t1, &q1, &v1), vm, iterations))
     }
 
-    #[allow(clippy::type_complexity)]
+    /// One step of the discrete flow with `rows` holonomic rows: (q₁, p₁ before RATTLE's μ, v_m,
+    /// iterations).
+    #[allow(clippy::type_complexity, clippy::too_many_arguments)]
     fn momenta_step<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
+        rows: usize,
         t: f64,
         q0: &[f64; N],
         p0: &[f64; N],
@@ -139,15 +164,16 @@ impl Variational {
         h: f64,
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N], [f64; N], usize)> {
+        if rows > 0 {
+            return Self::constrained_momenta_step(mechanism, rows, t, q0, p0, v_guess, h, stats);
+        }
         let tm = t + 0.5 * h;
         let mut vm = SVector::<f64, N>::from(*v_guess);
         let mut iteration = 0;
         let before = stats.newton_iterations;
         let end = newton(&mut vm, MAX_NEWTON_ITERATIONS, false, stats, |vm| {
             iteration += 1;
-            let seeded: [DualSVec<f64, N>; N] =
-                std::array::from_fn(|j| DualSVec::from_re(vm[j]).derivative(j));
-            let r = residual(mechanism, tm, q0, p0, &seeded, h);
+            let r = residual(mechanism, tm, q0, p0, &seeded(&(*vm).into()), h);
             let value = SVector::<f64, N>::from_fn(|i, _| r[i].re);
             let residual_norm = max_norm(&value);
             let breakdown = |reason: &str| Error::NewtonBreakdown {
@@ -198,6 +224,94 @@ impl Variational {
         }
     }
 
+    /// The position stage of RATTLE on the discrete Euler–Lagrange equations (see the
+    /// [module docs](self)): Newton on (v_m, Λ) together, the 2N-square Jacobian exact from one
+    /// dual seeding of v_m through both R and g(q₀ + h v_m, t₁); the multipliers beyond `rows` are
+    /// held at zero by identity rows. Returns (q₁, p₁ before μ, v_m, iterations).
+    #[allow(clippy::type_complexity, clippy::too_many_arguments)]
+    fn constrained_momenta_step<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        rows: usize,
+        t: f64,
+        q0: &[f64; N],
+        p0: &[f64; N],
+        v_guess: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N], [f64; N], usize)> {
+        let (tm, t1) = (t + 0.5 * h, t + h);
+        let (_, g0) = rows_and_jacobian(mechanism, Self::NAME, t, q0)?;
+        // Λ enters R linearly through −Dg(q₀)ᵀΛ; the padding rows are Λᵢ = 0.
+        let minus_g0t = -g0.transpose();
+        let padding =
+            SMatrix::<f64, N, N>::from_fn(|i, j| if i == j && i >= rows { 1.0 } else { 0.0 });
+        let mut x = [
+            SVector::<f64, N>::from(*v_guess),
+            SVector::<f64, N>::zeros(),
+        ];
+        let mut iteration = 0;
+        let before = stats.newton_iterations;
+        let end = newton(&mut x, MAX_NEWTON_ITERATIONS, false, stats, |x| {
+            iteration += 1;
+            let vm = seeded(&x[0].into());
+            let r = residual(mechanism, tm, q0, p0, &vm, h);
+            let q1: [DualSVec<f64, N>; N] = std::array::from_fn(|j| vm[j] * h + q0[j]);
+            let g = rows_on(mechanism, Self::NAME, t1, &q1)?;
+            let momentum = SVector::<f64, N>::from_fn(|i, _| r[i].re) + minus_g0t * x[1];
+            let position =
+                SVector::<f64, N>::from_fn(|i, _| if i < rows { g[i].re / h } else { x[1][i] });
+            let norm = max_norm(&momentum).max(max_norm(&position));
+            if !norm.is_finite() {
+                return Err(breakdown(
+                    Self::NAME,
+                    t,
+                    h,
+                    iteration,
+                    "the discrete Euler-Lagrange residual is not finite (the midpoint left the \
+                     region where the equations of motion are finite; reduce h)",
+                ));
+            }
+            let jacobian = [
+                [jacobian_rows(&r), minus_g0t],
+                [jacobian_rows(&g) / h, padding],
+            ];
+            let Some(delta) = lu_solve_blocks(&jacobian, &[momentum, position]) else {
+                return Err(breakdown(
+                    Self::NAME,
+                    t,
+                    h,
+                    iteration,
+                    "the Newton matrix is singular or not finite (redundant constraints, or h too \
+                     large for this mechanism)",
+                ));
+            };
+            Ok((delta, norm))
+        })?;
+        let n = stats.newton_iterations - before;
+        stats.jacobians += n;
+        stats.factorizations += n;
+        match end {
+            NewtonEnd::Converged { iterations, .. } => {
+                let vm: [f64; N] = x[0].into();
+                let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
+                let rate = momentum_rate(mechanism, tm, &qm, &vm);
+                stats.evaluations += 1;
+                let push = g0.transpose() * x[1];
+                let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
+                let p1 = std::array::from_fn(|j| p0[j] + push[j] + h * rate[j]);
+                Ok((q1, p1, vm, iterations))
+            }
+            NewtonEnd::Slow {
+                iterations,
+                residual,
+            } => Err(Error::NewtonDiverged {
+                t,
+                iterations,
+                residual,
+            }),
+        }
+    }
+
     /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method
     /// with the exact Jacobian ∂p/∂v from dual numbers, from `guess`. Returns v and the iterations.
     pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
@@ -235,17 +349,24 @@ impl Variational {
         stats: &mut Stats,
         counts: &mut VariationalStepStats,
     ) -> Result<([f64; N], [f64; N])> {
+        // Which constraints are enforced is the declaration's, decided before anything is evaluated.
+        let rows = holonomic_rows::<M, N>(Self::NAME)?;
         let p0 = mechanism.momenta_at(t, q, v);
-        // Predictor v_m = v₀ + (h/2) q̈(t₀, q₀, v₀), O(h²) from the solution.
+        // Predictor v_m = v₀ + (h/2) q̈(t₀, q₀, v₀), O(h²) from the solution (q̈ with the constraint
+        // forces, for a constrained mechanism).
         let a0 = mechanism.accelerations_at(t, q, v)?;
         stats.evaluations += 1;
-        refuse_constrained(mechanism, Self::NAME, t, q, v, &a0)?;
         let guess: [f64; N] = std::array::from_fn(|j| v[j] + 0.5 * h * a0[j]);
-        let (q1, p1, vm, iterations) = Self::momenta_step(mechanism, t, q, &p0, &guess, h, stats)?;
+        let (mut q1, p1, vm, iterations) =
+            Self::momenta_step(mechanism, rows, t, q, &p0, &guess, h, stats)?;
         // v₁ ≈ 2 v_m − v₀ to first order: the Newton start for the inverse Legendre transform.
         let guess: [f64; N] = std::array::from_fn(|j| 2.0 * vm[j] - v[j]);
-        let (v1, velocity_iterations) =
+        let (mut v1, velocity_iterations) =
             canonical::velocities_from_momenta(mechanism, t + h, &q1, &p1, &guess, stats)?;
+        if rows > 0 {
+            // RATTLE's μ: the mass-weighted velocity projection at (t₁, q₁).
+            mechanism.project(t + h, &mut q1, &mut v1)?;
+        }
         *counts = VariationalStepStats {
             iterations,
             velocity_iterations,

@@ -6,9 +6,8 @@
 //! v_{1/2} = v₀ + (h/2) q̈(t₀, q₀, v₀),   q₁ = q₀ + h v_{1/2},   v₁ = v_{1/2} + (h/2) q̈(t₁, q₁, v_{1/2}).
 //! ```
 //!
-//! Explicit, order 2 (three evaluations of the dynamics per step: two with the mass matrix, one for
-//! the constraint test below), symplectic and symmetric for q̈ = −M⁻¹∇V(q) with a **constant** mass matrix M
-//! (then (q, Mv) are canonical and the method is the composition of two symplectic Euler steps).
+//! Explicit, order 2 (two evaluations of the dynamics per step), symplectic and symmetric for
+//! q̈ = −M⁻¹∇V(q) with a **constant** mass matrix M (then (q, Mv) are canonical and the method is the composition of two symplectic Euler steps).
 //! With forces that depend on the velocity the last evaluation uses v_{1/2} in place of the unknown
 //! v₁ (which keeps the method explicit, but it is then neither symmetric nor symplectic — use
 //! [`Variational`](super::Variational) for forced mechanisms).
@@ -24,21 +23,34 @@
 //! particles) is accepted. A step that does not move (v = q̈ = 0) cannot see the difference and
 //! is allowed, harmlessly: it is exact for any M.
 //!
-//! **Constraints.** The step works on M q̈ = 𝓕 − b alone, so a mechanism with constraints is refused
-//! too ([`Error::UnsuitableMethod`]): by its declaration ([`Mechanism::CONSTRAINTS`]), or, for an
-//! implementation that does not declare it, by comparing its accelerations with that solve at the
-//! start of every step (one extra evaluation; see [`refuse_constrained`]). A constrained Verlet
-//! (RATTLE) is not implemented.
+//! **Constraints: RATTLE.** Holonomic constraints g(q, t) = 0 (`#[constraint]` rows) are enforced
+//! by RATTLE (Andersen, J. Comput. Phys. 52 (1983); Hairer, Lubich & Wanner, *Geometric Numerical
+//! Integration*, §VII.1.4, (1.26)), in the velocity form above with M q̈ = 𝓕 − b + Gᵀλ:
+//!
+//! ```text
+//! v_{1/2} = v₀ + (h/2) (q̈₀ + M⁻¹G(q₀, t₀)ᵀλ),   q₁ = q₀ + h v_{1/2},   g(q₁, t₁) = 0,
+//! v₁ = v_{1/2} + (h/2) (q̈₁ + M⁻¹G(q₁, t₁)ᵀμ),   G(q₁, t₁) v₁ + ∂g/∂t(q₁, t₁) = 0,
+//! ```
+//!
+//! q̈ the unconstrained accelerations M⁻¹(𝓕 − b). λ solves the nonlinear position stage by Newton
+//! with the exact Jacobian G(q₁) M⁻¹ G(q₀)ᵀ (dual numbers); μ is the mass-weighted velocity
+//! projection, `Mechanism::project` (see [`rattle`](super::rattle)). Symplectic and symmetric
+//! for a constant M and conservative forces, order 2, g and ġ kept at round-off. Velocity
+//! constraints, unilateral contacts and friction are refused, by the declaration
+//! ([`Mechanism::CONSTRAINT_COUNTS`], see [`holonomic_rows`]), as is an implementation that does not
+//! declare its constraints: whatever the state, never by testing the multipliers.
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
-use super::newton::refuse_constrained;
+use super::rattle::{holonomic_rows, position_stage, rows_and_jacobian};
 use super::{Integrator, Stats};
-use crate::dynamics::solve_accelerations;
+use crate::dynamics::{mass_matrix_failure, solve_accelerations};
 use crate::error::{Error, Result};
+use crate::linalg::{cholesky, cholesky_substitute};
 use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
+use nalgebra::{SMatrix, SVector};
 
 /// Relative change of the mass matrix over one step above which [`StormerVerlet`] refuses the
 /// mechanism (see the [module docs](self)).
@@ -80,7 +92,8 @@ pub struct StormerVerlet;
 
 impl StormerVerlet {
     /// One step on raw arrays: (q₁, v₁), or [`Error::UnsuitableMethod`] when the mass matrix
-    /// changed over the step. No validation of the inputs.
+    /// changed over the step or the mechanism has constraints RATTLE does not enforce. No
+    /// validation of the inputs.
     pub fn step_arrays<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
         t: f64,
@@ -88,24 +101,57 @@ impl StormerVerlet {
         v: &[f64; N],
         h: f64,
     ) -> Result<([f64; N], [f64; N])> {
+        Self::step_counted(mechanism, t, q, v, h, &mut Stats::default())
+    }
+
+    fn step_counted<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])> {
+        // Which constraints are enforced is the declaration's, decided before anything is evaluated.
+        let rows = holonomic_rows::<M, N>(Self::NAME)?;
         let eom0 = mechanism.equations_of_motion_at(t, q, v);
         let a0 = solve_accelerations::<M::Coords, f64, N>(&eom0, t, q)?;
-        // Constraint forces are not part of M q̈ = 𝓕 − b: refuse constrained mechanisms (by their
-        // declaration; undeclared ones by a test that evaluates q̈ once more).
-        if M::CONSTRAINTS.is_none_or(|rows| rows > 0) {
-            refuse_constrained(
+        stats.evaluations += 1;
+        let t1 = t + h;
+        let (mut q1, vh): ([f64; N], [f64; N]) = if rows == 0 {
+            let vh: [f64; N] = std::array::from_fn(|i| v[i] + 0.5 * h * a0[i]);
+            (std::array::from_fn(|i| q[i] + h * vh[i]), vh)
+        } else {
+            // RATTLE's position stage: v_{1/2} = v₀ + (h/2) q̈₀ + W Λ and q₁ = q̂ + h W Λ with
+            // W = M⁻¹G(q₀)ᵀ, Λ = (h/2) λ, q̂ = q₀ + h v₀ + (h²/2) q̈₀, and g(q₁, t₁) = 0.
+            let (_, g0) = rows_and_jacobian(mechanism, Self::NAME, t, q)?;
+            let l = cholesky(&eom0.mass_matrix).map_err(|e| {
+                mass_matrix_failure::<M::Coords, f64, N>(&eom0.mass_matrix, e, t, q)
+            })?;
+            let mut w = SMatrix::<f64, N, N>::zeros();
+            for i in 0..rows {
+                w.set_column(i, &cholesky_substitute(&l, &g0.row(i).transpose()));
+            }
+            let unconstrained =
+                SVector::<f64, N>::from_fn(|i, _| q[i] + h * v[i] + 0.5 * h * h * a0[i]);
+            let (q1, lambda) = position_stage(
                 mechanism,
                 Self::NAME,
+                rows,
                 t,
-                q,
-                v,
-                &mechanism.accelerations_at(t, q, v)?,
+                h,
+                &unconstrained,
+                &(w * h),
+                stats,
             )?;
-        }
-        let vh: [f64; N] = std::array::from_fn(|i| v[i] + 0.5 * h * a0[i]);
-        let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * vh[i]);
-        let t1 = t + h;
+            let push = w * lambda;
+            (
+                q1.into(),
+                std::array::from_fn(|i| v[i] + 0.5 * h * a0[i] + push[i]),
+            )
+        };
         let eom1 = mechanism.equations_of_motion_at(t1, &q1, &vh);
+        stats.evaluations += 1;
         // A step that blew up (M overflowing at q₁) is non-finite dynamics there, not a mass matrix
         // that "changed by NaN".
         if !eom1.mass_matrix.iter().all(|x| x.is_finite()) {
@@ -131,7 +177,12 @@ impl StormerVerlet {
             });
         }
         let a1 = solve_accelerations::<M::Coords, f64, N>(&eom1, t1, &q1)?;
-        let v1 = std::array::from_fn(|i| vh[i] + 0.5 * h * a1[i]);
+        let mut v1 = std::array::from_fn(|i| vh[i] + 0.5 * h * a1[i]);
+        if rows > 0 {
+            // RATTLE's velocity stage: v₁ += M⁻¹G(q₁)ᵀμ with G(q₁) v₁ + ∂g/∂t = 0, the mass-weighted
+            // velocity projection (g(q₁) is at round-off already).
+            mechanism.project(t1, &mut q1, &mut v1)?;
+        }
         Ok((q1, v1))
     }
 }
@@ -149,9 +200,7 @@ impl Integrator for StormerVerlet {
         h: f64,
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N])> {
-        // Two solves with the mass matrix, and the constraint test's evaluation if the mechanism
-        // does not declare its constraints.
-        stats.evaluations += if M::CONSTRAINTS.is_some() { 2 } else { 3 };
-        Self::step_arrays(mechanism, t, q, v, h)
+        // Two solves with the mass matrix, and RATTLE's Newton iterations (counted there).
+        Self::step_counted(mechanism, t, q, v, h, stats)
     }
 }

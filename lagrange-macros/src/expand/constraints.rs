@@ -133,8 +133,11 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
             let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x, __x_dot);
         }
     });
+    // Inlined like `cartesian`: which derivatives of x are structurally absent is then known where
+    // the rows are used, and costs nothing.
     quote! {
         #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         #signature {
             #prelude
             #inputs

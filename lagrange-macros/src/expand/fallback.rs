@@ -68,6 +68,12 @@ pub(crate) fn fallback(
                 fn momenta_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] { #unreachable }
                 fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 { #unreachable }
             }
+            impl #p::lagrange_core::declaration::Declaration for #ident {
+                const DOF: usize = #n;
+                const PARAMETERS: &'static [&'static str] = &[];
+                fn from_parameters(values: &[f64]) -> #p::core::option::Option<Self> { #unreachable }
+                fn parameters(&self) -> #p::std::vec::Vec<f64> { #unreachable }
+            }
         }
     });
     let errors = ctxt::to_compile_errors(errors);

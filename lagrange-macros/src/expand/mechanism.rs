@@ -11,8 +11,19 @@ pub(super) fn mechanism_impl(
     k: usize,
     constrained: Option<usize>,
     tree: Option<(usize, usize)>,
+    rheonomic: bool,
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
+    let scleronomic = !rheonomic;
+    // A scleronomic mechanism's canonical field comes from one hyper-dual pass.
+    let canonical = (!rheonomic).then(|| {
+        quote! {
+            #[inline]
+            fn canonical_field_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+                #p::dynamics::canonical_field::<Self, S, #n, #k>(self, t, q, v)
+            }
+        }
+    });
     // A tree of translations is assembled from each body's own seeds; anything else densely.
     let equations_of_motion = match tree {
         Some((w, b)) => {
@@ -26,12 +37,22 @@ pub(super) fn mechanism_impl(
         let c = lit(c);
         quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
     });
-    // Declared, so integrators decide from the declaration whether constraint forces act.
-    let rows = lit(constrained.unwrap_or(0));
+    // Declared, so integrators decide from the declaration which constraint forces act.
+    let counts = match constrained {
+        Some(c) => {
+            let c = lit(c);
+            quote!(#p::lagrange_core::constraints::ConstraintCounts::of(
+                &<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::KINDS
+            ))
+        }
+        None => quote!(#p::lagrange_core::constraints::ConstraintCounts::NONE),
+    };
     quote! {
         impl #p::Mechanism<#n> for #params {
             type Coords = Coords;
-            const CONSTRAINTS: #p::core::option::Option<usize> = #p::core::option::Option::Some(#rows);
+            const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
+                #p::core::option::Option::Some(#counts);
+            const SCLERONOMIC: bool = #scleronomic;
             #[inline]
             fn validate(&self) -> #p::Result<()> {
                 <Self as #p::Model<#n, #k>>::validate(self)?;
@@ -39,7 +60,7 @@ pub(super) fn mechanism_impl(
                 #p::core::result::Result::Ok(())
             }
             #overrides
-            #[inline]
+            #[inline(always)]
             fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
                 #equations_of_motion
             }
@@ -59,11 +80,12 @@ pub(super) fn mechanism_impl(
             fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
                 #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
             }
+            #canonical
         }
     }
 }
 
-/// The three `Mechanism` hooks that make every integrator enforce the constraints.
+/// The `Mechanism` hooks that make every integrator enforce the constraints.
 fn constrained_overrides(
     n: proc_macro2::Literal,
     k: proc_macro2::Literal,
@@ -75,6 +97,10 @@ fn constrained_overrides(
         #[inline]
         fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
             #constraints::accelerations::<Self, S, #n, #k, #c>(self, t, q, v)
+        }
+        #[inline]
+        fn holonomic_constraints_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> #p::core::option::Option<[S; #n]> {
+            #p::core::option::Option::Some(#constraints::holonomic_values::<Self, S, #n, #k, #c>(self, t, q))
         }
         fn project(&self, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
             let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;

@@ -11,13 +11,15 @@
 //! One file per artifact: [`coords`] writes `Coords`, its `Coordinates` impl, `DOF` and `State`;
 //! [`bodies`] `Bodies`, `BodyVelocities` and the inherent impl; [`model`] the `Model` impl;
 //! [`mechanism`] the `Mechanism` impl; [`constraints`] the `Constraints` impl; [`tree`] the
-//! `Tree` impl of a tree of translations; [`fallback`] the stubs written after a failed check.
+//! `Tree` impl of a tree of translations; [`declaration`] the `Declaration` impl (names and flat
+//! values, for the C export); [`fallback`] the stubs written after a failed check.
 //! This file holds the entry [`expand`], the whole module ([`generate`]) and the helpers the
 //! others share.
 
 mod bodies;
 mod constraints;
 mod coords;
+mod declaration;
 mod fallback;
 mod mechanism;
 mod model;
@@ -26,6 +28,7 @@ mod tree;
 use bodies::{bodies_structs, inherent_impl};
 use constraints::constraints_impl;
 use coords::coords_items;
+use declaration::declaration_impl;
 use mechanism::mechanism_impl;
 use model::model_impl;
 
@@ -120,8 +123,10 @@ fn generate(model: &Model) -> TokenStream {
         model.rows,
         constrained,
         tree.map(|tree| (tree.width, tree.bodies.len())),
+        model.rheonomic,
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
+    let declaration_impl = declaration_impl(model);
     quote! {
         #(#attrs)*
         #vis mod #ident {
@@ -134,6 +139,7 @@ fn generate(model: &Model) -> TokenStream {
             #tree_items
             #mechanism_impl
             #constraints_impl
+            #declaration_impl
         }
     }
 }

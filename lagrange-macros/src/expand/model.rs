@@ -31,6 +31,22 @@ fn mass_bindings(model: &Model) -> TokenStream {
     out
 }
 
+/// Above this many entries (rows × coordinates) `DEPENDS` is left at its default: the table's
+/// size grows as K·N, its saving only where the dense assembly is used (not for trees).
+const MAX_DEPENDS_ENTRIES: usize = 1024;
+
+/// `const DEPENDS` when the declaration rules some entries of J out (see
+/// [`crate::structure::row_dependencies`]).
+fn depends_const(model: &Model) -> Option<TokenStream> {
+    if model.rows * model.dof() > MAX_DEPENDS_ENTRIES {
+        return None;
+    }
+    let rows = crate::structure::row_dependencies(model)?;
+    let (n, k) = (lit(model.dof()), lit(model.rows));
+    let rows = rows.iter().map(|r| quote!([#(#r),*]));
+    Some(quote!(const DEPENDS: [[bool; #n]; #k] = [#(#rows),*];))
+}
+
 /// The `Model` impl.
 pub(super) fn model_impl(model: &Model) -> TokenStream {
     let p = private();
@@ -49,6 +65,7 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     let potential = has_potential.then(|| potential_fn(model));
     let forces = has_forces.then(|| applied_forces_fn(model));
     let weights = (!model.uniform_gravities.is_empty()).then(|| weights_fn(model));
+    let depends = depends_const(model);
     quote! {
         impl #p::Model<#n, #k> for #params {
             type Coords = Coords;
@@ -56,6 +73,7 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
             const RHEONOMIC: bool = #rheonomic;
             const HAS_POTENTIAL: bool = #has_potential;
             const HAS_FORCES: bool = #has_forces;
+            #depends
             #validate
             #masses
             #cartesian

@@ -5,7 +5,7 @@ use crate::check::{family_index, Dim, Model};
 use crate::expand::{lit, position_type, prelude, private, scalar};
 use crate::optimize;
 use crate::structure::{Displacement, Tree, TreeBody};
-use proc_macro2::{Ident, TokenStream};
+use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
 
@@ -62,6 +62,7 @@ pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
         );
     }
     let b = lit(bodies.len());
+    let mass_matrix = mass_matrix_fn(model, tree, (&n, &k, &w, &b));
     quote! {
         impl #params {
             #(#functions)*
@@ -75,6 +76,63 @@ pub fn tree_items(model: &Model, tree: &Tree) -> TokenStream {
                 #(#calls)*
                 [#(#rows),*]
             }
+            #mass_matrix
+        }
+    }
+}
+
+/// Above this many pairs, the default loop over `ANCESTORS` is kept: the straight-line form's
+/// code grows with the pairs (a chain's N(N + 1)/2) while its saving, the loop's bookkeeping,
+/// shrinks beside the products themselves.
+const MAX_WRITTEN_PAIRS: usize = 160;
+
+/// `fn mass_matrix`: one `couple(b, a)` per body and each body above it, with constant indices,
+/// so the compiler emits straight-line code for M (see `lagrange_core::tree::couple`).
+fn mass_matrix_fn(
+    model: &Model,
+    tree: &Tree,
+    (n, k, w, b): (&Literal, &Literal, &Literal, &Literal),
+) -> TokenStream {
+    let p = private();
+    // Whether anything at or below each body carries mass (children come after their parents).
+    let mut massive: Vec<bool> = tree
+        .bodies
+        .iter()
+        .map(|own| model.bodies[own.body].shape.has_mass())
+        .collect();
+    for b in (0..tree.bodies.len()).rev() {
+        if let (true, Some(parent)) = (massive[b], tree.bodies[b].parent) {
+            massive[parent] = true;
+        }
+    }
+    let mut pairs = Vec::new();
+    for (body, own) in tree.bodies.iter().enumerate() {
+        if !massive[body] {
+            continue;
+        }
+        pairs.push((body, body));
+        let mut above = own.parent;
+        while let Some(a) = above {
+            pairs.push((body, a));
+            above = tree.bodies[a].parent;
+        }
+    }
+    if pairs.len() > MAX_WRITTEN_PAIRS {
+        return quote!();
+    }
+    let couples = pairs.iter().map(|&(body, above)| {
+        let (body, above) = (lit(body), lit(above));
+        quote!(#p::tree::couple::<Self, S, #n, #k, #w, #b>(&mut __m, __jacobian, __composite, #body, #above);)
+    });
+    quote! {
+        #[inline(always)]
+        fn mass_matrix<S: #p::Scalar>(
+            __jacobian: &#p::tree::BodyJacobians<S, #w, #b>,
+            __composite: &[f64; #b],
+        ) -> #p::nalgebra::SMatrix<S, #n, #n> {
+            let mut __m = #p::nalgebra::SMatrix::<S, #n, #n>::zeros();
+            #(#couples)*
+            __m
         }
     }
 }

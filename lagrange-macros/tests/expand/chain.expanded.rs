@@ -318,18 +318,77 @@ pub mod chain {
                 );
             [__body_0.x, __body_0.y, __body_1.x, __body_1.y, __body_2.x, __body_2.y]
         }
+        #[inline(always)]
+        fn mass_matrix<S: ::lagrange::__private::Scalar>(
+            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 3>,
+            __composite: &[f64; 3],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 3, 3> {
+            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 3, 3>::zeros();
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 0, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 1, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 1, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 2, 2);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 2, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(&mut __m, __jacobian, __composite, 2, 0);
+            __m
+        }
     }
     impl ::lagrange::__private::Mechanism<3> for Chain {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
+        const SCLERONOMIC: bool = true;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
@@ -393,6 +452,39 @@ pub mod chain {
                 3,
                 6,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> ([S; 3], [S; 3]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                3,
+                6,
+            >(self, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Chain {
+        const DOF: usize = 3;
+        const PARAMETERS: &'static [&'static str] = &["m", "l", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Chain {
+                m: values[0],
+                l: values[1],
+                g: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.l, self.g]
         }
     }
 }

@@ -136,6 +136,12 @@ pub mod double_pendulum {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 4] = [
+            [true, false],
+            [true, false],
+            [true, true],
+            [true, true],
+        ];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {
@@ -326,18 +332,53 @@ pub mod double_pendulum {
                 );
             [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
         }
+        #[inline(always)]
+        fn mass_matrix<S: ::lagrange::__private::Scalar>(
+            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 2>,
+            __composite: &[f64; 2],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 2, 2>::zeros();
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 0, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 0);
+            __m
+        }
     }
     impl ::lagrange::__private::Mechanism<2> for DoublePendulum {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
+        const SCLERONOMIC: bool = true;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
@@ -401,6 +442,42 @@ pub mod double_pendulum {
                 2,
                 4,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                4,
+            >(self, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration
+    for DoublePendulum {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m1", "m2", "l1", "l2", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(DoublePendulum {
+                m1: values[0],
+                m2: values[1],
+                l1: values[2],
+                l2: values[3],
+                g: values[4],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m1, self.m2, self.l1, self.l2, self.g]
         }
     }
 }

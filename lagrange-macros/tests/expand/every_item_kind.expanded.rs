@@ -214,6 +214,25 @@ pub mod everything {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = true;
         const HAS_FORCES: bool = true;
+        const DEPENDS: [[bool; 2]; 17] = [
+            [true, false],
+            [true, false],
+            [true, false],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [false, true],
+            [true, false],
+            [true, false],
+        ];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             if !self.m.is_finite() {
@@ -465,15 +484,18 @@ pub mod everything {
     }
     impl ::lagrange::__private::Mechanism<2> for Everything {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
+        const SCLERONOMIC: bool = true;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 17>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
@@ -535,6 +557,44 @@ pub mod everything {
                 2,
                 17,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                17,
+            >(self, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Everything {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m", "i", "k", "c", "tau", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Everything {
+                m: values[0],
+                i: values[1],
+                k: values[2],
+                c: values[3],
+                tau: values[4],
+                g: values[5],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![
+                self.m, self.i, self.k, self.c, self.tau, self.g
+            ]
         }
     }
 }

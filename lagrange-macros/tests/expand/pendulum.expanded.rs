@@ -202,15 +202,18 @@ pub mod pendulum {
     }
     impl ::lagrange::__private::Mechanism<1> for Pendulum {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
+        const SCLERONOMIC: bool = true;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
@@ -272,6 +275,39 @@ pub mod pendulum {
                 1,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ([S; 1], [S; 1]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {
+        const DOF: usize = 1;
+        const PARAMETERS: &'static [&'static str] = &["m", "l", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Pendulum {
+                m: values[0],
+                l: values[1],
+                g: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.l, self.g]
         }
     }
 }

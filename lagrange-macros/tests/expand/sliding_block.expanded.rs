@@ -210,9 +210,18 @@ pub mod sliding_block {
     }
     impl ::lagrange::__private::Mechanism<2> for SlidingBlock {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            2,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::of(
+                &<Self as ::lagrange::__private::lagrange_core::constraints::Constraints<
+                    2,
+                    2,
+                    2,
+                >>::KINDS,
+            ),
         );
+        const SCLERONOMIC: bool = true;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
@@ -237,6 +246,22 @@ pub mod sliding_block {
                 2,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn holonomic_constraints_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> ::lagrange::__private::core::option::Option<[S; 2]> {
+            ::lagrange::__private::core::option::Option::Some(
+                ::lagrange::__private::lagrange_core::constraints::holonomic_values::<
+                    Self,
+                    S,
+                    2,
+                    2,
+                    2,
+                >(self, t, q),
+            )
         }
         fn project(
             &self,
@@ -289,7 +314,7 @@ pub mod sliding_block {
                 ::lagrange::__private::lagrange_core::constraints::CONSISTENCY_TOLERANCE,
             )
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
@@ -352,6 +377,20 @@ pub mod sliding_block {
                 2,
             >(self, t, q, v)
         }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::constraints::Constraints<2, 2, 2>
     for SlidingBlock {
@@ -363,6 +402,7 @@ pub mod sliding_block {
             },
         ];
         #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         fn position_constraints<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,
@@ -387,6 +427,7 @@ pub mod sliding_block {
             ]
         }
         #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         fn velocity_constraints<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,
@@ -436,6 +477,42 @@ pub mod sliding_block {
                     ::lagrange::__private::lagrange_core::constraints::Coulomb::default()
                 }
             }
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration
+    for SlidingBlock {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m", "g", "mu"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(SlidingBlock {
+                m: values[0],
+                g: values[1],
+                mu: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.g, self.mu]
+        }
+        const CONSTRAINT_ROWS: &'static [&'static str] = &["floor", "slide"];
+        fn constraint_forces(
+            &self,
+            t: f64,
+            q: &[f64],
+            v: &[f64],
+        ) -> ::lagrange::__private::Result<
+            ::lagrange::__private::lagrange_core::declaration::FlatConstraintForces,
+        > {
+            ::lagrange::__private::lagrange_core::declaration::flat_constraint_forces::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, t, q, v)
         }
     }
 }

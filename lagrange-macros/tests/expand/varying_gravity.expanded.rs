@@ -220,15 +220,18 @@ pub mod varying {
     }
     impl ::lagrange::__private::Mechanism<1> for Varying {
         type Coords = Coords;
-        const CONSTRAINTS: ::lagrange::__private::core::option::Option<usize> = ::lagrange::__private::core::option::Option::Some(
-            0,
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
+        const SCLERONOMIC: bool = false;
         #[inline]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
+        #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
@@ -290,6 +293,25 @@ pub mod varying {
                 1,
                 2,
             >(self, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Varying {
+        const DOF: usize = 1;
+        const PARAMETERS: &'static [&'static str] = &["m", "g", "w"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Varying {
+                m: values[0],
+                g: values[1],
+                w: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.g, self.w]
         }
     }
 }

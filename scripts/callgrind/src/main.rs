@@ -313,8 +313,35 @@ pub mod driven {
     }
 }
 
+/// Σ q̈₀ over `n` calls of `accelerations`, on the parameters or (`validated`) through a
+/// validated handle, whose parameters were checked once.
+fn calls<M: Mechanism<N>, const N: usize>(
+    sys: M,
+    s: &State<M::Coords>,
+    n: usize,
+    validated: bool,
+) -> f64 {
+    fn run<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
+        let mut acc = 0.0;
+        for _ in 0..n {
+            acc += black_box(sys).accelerations(black_box(s)).unwrap().to_array()[0];
+        }
+        acc
+    }
+    if validated {
+        run(&sys.validated().unwrap(), s, n)
+    } else {
+        run(&sys, s, n)
+    }
+}
+
 fn main() {
-    let which = std::env::args().nth(1).unwrap();
+    let arg = std::env::args().nth(1).unwrap();
+    // `validated_NAME`: the generated mechanism NAME through `sys.validated()`.
+    let (validated, which) = match arg.strip_prefix("validated_") {
+        Some(name) => (true, name.to_string()),
+        None => (false, arg.clone()),
+    };
     let n: usize = std::env::args()
         .nth(2)
         .map(|s| s.parse().unwrap())
@@ -329,9 +356,7 @@ fn main() {
                 g: 9.81,
             };
             let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "double_pendulum" => {
             use double_pendulum::*;
@@ -353,9 +378,7 @@ fn main() {
                     theta2: -0.4,
                 },
             );
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         // One RK4 step (h = 10⁻³) per call: `sys.step::<Rk4>` on the parameters, through a
         // validated handle, and a hand-written RK4 on the closed form.
@@ -387,6 +410,93 @@ fn main() {
             } else {
                 for _ in 0..n {
                     black_box(&params).step::<Rk4>(&mut s, 1e-3).unwrap();
+                }
+            }
+            acc += s.q.theta1;
+        }
+        // One RK4 step (h = 10⁻³) per call on dual numbers seeded on 1, 2 or 4 initial values
+        // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
+        mode if mode.starts_with("sensitivity_double_pendulum_") => {
+            use double_pendulum::*;
+            use lagrange::sensitivity::{Seed, Tangent};
+            let sys = DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            }
+            .validated()
+            .unwrap();
+            let s = State::new(
+                0.0,
+                Coords {
+                    theta1: 0.7,
+                    theta2: -1.2,
+                },
+                Coords {
+                    theta1: 1.1,
+                    theta2: -0.4,
+                },
+            );
+            let (q1, q2) = (Seed::Coordinate("theta1"), Seed::Coordinate("theta2"));
+            let (v1, v2) = (Seed::Velocity("theta1"), Seed::Velocity("theta2"));
+            macro_rules! run {
+                ($seeds:expr) => {{
+                    let mut run = Tangent::new(&sys, &s, $seeds).unwrap();
+                    for _ in 0..n {
+                        black_box(&mut run).rk4_step(1e-3).unwrap();
+                    }
+                    acc += run.sensitivities().dq[0].theta1;
+                }};
+            }
+            match &mode["sensitivity_double_pendulum_".len()..] {
+                "1" => run!([q1]),
+                "2" => run!([q1, q2]),
+                "4" => run!([q1, q2, v1, v2]),
+                other => panic!("no sensitivity run with {other} seeds"),
+            }
+        }
+        // One implicit step (h = 10⁻³) per call, as a solver takes it: the Newton matrix and the
+        // stage predictor kept from step to step (`step_with_memory`).
+        "midpoint_double_pendulum" | "gl2_double_pendulum" => {
+            use double_pendulum::*;
+            use lagrange::integrate::NewtonMemory;
+            use lagrange::{GaussLegendre2, ImplicitMidpoint};
+            let params = DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            };
+            let mut s = State::new(
+                0.0,
+                Coords {
+                    theta1: 0.7,
+                    theta2: -1.2,
+                },
+                Coords {
+                    theta1: 1.1,
+                    theta2: -0.4,
+                },
+            );
+            if which.starts_with("gl2") {
+                let mut memory = NewtonMemory::<2, 2>::default();
+                for _ in 0..n {
+                    GaussLegendre2::step_with_memory(black_box(&params), &mut memory, &mut s, 1e-3)
+                        .unwrap();
+                }
+            } else {
+                let mut memory = NewtonMemory::<2, 1>::default();
+                for _ in 0..n {
+                    ImplicitMidpoint::step_with_memory(
+                        black_box(&params),
+                        &mut memory,
+                        &mut s,
+                        1e-3,
+                    )
+                    .unwrap();
                 }
             }
             acc += s.q.theta1;
@@ -428,9 +538,7 @@ fn main() {
                 g: 9.81,
             };
             let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "cart_pendulum" => {
             use cart_pendulum::*;
@@ -448,9 +556,7 @@ fn main() {
                     theta: 1.1,
                 },
             );
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "hw_pendulum" => {
             let sys = pendulum::Pendulum {
@@ -480,9 +586,7 @@ fn main() {
         }
         "four_bar" => {
             let (sys, s) = four_bar_scene::linkage();
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta1;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "hw_four_bar" => {
             let (sys, s) = four_bar_scene::linkage();
@@ -529,9 +633,7 @@ fn main() {
                     y: 0.8 * w * th.sin(),
                 },
             );
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().x;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "hw_wedge_block" | "assembled_wedge_block" => {
             let sys = wedge_block::WedgeBlock {
@@ -621,9 +723,7 @@ fn main() {
                 c: 0.3,
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "driven" => {
             use driven::*;
@@ -635,9 +735,7 @@ fn main() {
                 w: 2.0,
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            for _ in 0..n {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().theta;
-            }
+            acc += calls(sys, &s, n, validated);
         }
         "none" => {}
         _ => panic!(),

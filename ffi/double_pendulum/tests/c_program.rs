@@ -1,0 +1,194 @@
+//! The double pendulum through its C interface: the checked-in header is the generated one, and
+//! `main.c`, compiled with the machine's `cc` against the static library, simulates the same run
+//! as Rust does here and gets the same numbers.
+
+use double_pendulum_ffi::double_pendulum::{Coords, DoublePendulum, State};
+use lagrange::ffi::Export;
+use lagrange::prelude::*;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn crate_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `double_pendulum.h` is what `export_c!` generates; `LAGRANGE_BLESS=1` rewrites it.
+#[test]
+fn header_is_current() {
+    let path = crate_dir().join("double_pendulum.h");
+    let generated = double_pendulum_ffi::dp::header();
+    if std::env::var_os("LAGRANGE_BLESS").is_some() {
+        std::fs::write(&path, &generated).unwrap();
+    }
+    let checked_in = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        checked_in == generated,
+        "{} is stale: regenerate it with `LAGRANGE_BLESS=1 cargo test -p double-pendulum-ffi --test c_program`",
+        path.display()
+    );
+}
+
+/// The static library cargo built for this test, next to the test binary's `deps/` directory.
+fn static_library() -> PathBuf {
+    let exe = std::env::current_exe().unwrap();
+    let deps = exe.parent().unwrap();
+    let name = "libdouble_pendulum_ffi.a";
+    [deps.parent().unwrap().join(name), deps.join(name)]
+        .into_iter()
+        .find(|p| p.exists())
+        .unwrap_or_else(|| panic!("{name} not found next to {}", deps.display()))
+}
+
+/// Compiles `main.c` with the machine's `cc` (warnings are errors), linked against the static
+/// library, or the shared one when `shared` (found at run time through the rpath).
+fn compile_c_program(out: &Path, shared: bool) {
+    let mut cc = Command::new("cc");
+    cc.args([
+        "-O2",
+        "-std=c11",
+        "-Wall",
+        "-Wextra",
+        "-Werror",
+        "-pedantic",
+    ])
+    .arg(crate_dir().join("main.c"))
+    .arg("-I")
+    .arg(crate_dir());
+    let library = static_library();
+    if shared {
+        let dir = library.parent().unwrap().display().to_string();
+        cc.arg(format!("-L{dir}"))
+            .arg(format!("-Wl,-rpath,{dir}"))
+            .args(["-ldouble_pendulum_ffi", "-lm"]);
+    } else {
+        // What a Rust static library needs from the system (`rustc --print native-static-libs`).
+        cc.arg(library)
+            .args(["-lpthread", "-ldl", "-lm", "-lrt", "-lutil", "-lgcc_s"]);
+    }
+    let status = cc
+        .arg("-o")
+        .arg(out)
+        .status()
+        .expect("the machine's C compiler `cc` runs");
+    assert!(status.success(), "cc failed on main.c");
+}
+
+/// Runs the compiled program with `args`; its standard output as lines of words.
+fn run(program: &Path, args: &[&str]) -> Vec<Vec<String>> {
+    let output = Command::new(program).args(args).output().unwrap();
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        output.status.success(),
+        "{} failed:\n{stdout}\n{}",
+        program.display(),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    stdout
+        .lines()
+        .map(|l| l.split_whitespace().map(str::to_string).collect())
+        .collect()
+}
+
+/// The numbers after `label` on its line of the program's output.
+fn numbers(lines: &[Vec<String>], label: &str) -> Vec<f64> {
+    let line = lines
+        .iter()
+        .find(|l| l.first().map(String::as_str) == Some(label))
+        .unwrap_or_else(|| panic!("no line `{label}` in the C program's output"));
+    line[1..].iter().map(|x| x.parse().unwrap()).collect()
+}
+
+fn scene() -> (lagrange::Validated<DoublePendulum>, State) {
+    let sys = DoublePendulum {
+        m1: 1.0,
+        m2: 1.0,
+        l1: 1.0,
+        l2: 1.0,
+        g: 9.81,
+    }
+    .validated()
+    .unwrap();
+    let s = State::at_rest(Coords {
+        theta1: 1.0,
+        theta2: 0.5,
+    });
+    (sys, s)
+}
+
+/// [t, θ₁, θ₂, ω₁, ω₂, E₀, E] as the C program prints them.
+fn summary(sys: &lagrange::Validated<DoublePendulum>, s0: &State, s: &State) -> Vec<f64> {
+    let (e0, e) = (sys.energy(s0).unwrap(), sys.energy(s).unwrap());
+    vec![s.t, s.q.theta1, s.q.theta2, s.v.theta1, s.v.theta2, e0, e]
+}
+
+/// The C program's runs end where the same runs in Rust end. The C side calls the same compiled
+/// functions, so the only room for a difference is in marshalling; IEEE arithmetic without
+/// contraction makes the runs bit-identical in practice, and the comparison allows 4 ulp of the
+/// largest value (|ω| ≈ 5) for a libm or compiler that rounds a last bit differently.
+#[test]
+fn c_program_matches_rust() {
+    let dir = std::env::temp_dir().join(format!("lagrange-ffi-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let program = dir.join("double_pendulum");
+    compile_c_program(&program, false);
+    let lines = run(&program, &[]);
+
+    let (sys, s0) = scene();
+    let mut s = s0;
+    for _ in 0..10_000 {
+        sys.step::<Rk4>(&mut s, 1e-3).unwrap();
+    }
+    let rk4 = summary(&sys, &s0, &s);
+    let mut s = s0;
+    let outcome = Dopri5::new(1e-10, 1e-12)
+        .integrate(&sys, &mut s, 20.0, &mut [], |_| {})
+        .unwrap();
+    let dopri5 = summary(&sys, &s0, &s);
+
+    let mut largest: f64 = 0.0;
+    for (label, rust) in [("rk4", &rk4), ("dopri5", &dopri5)] {
+        let c = numbers(&lines, label);
+        assert_eq!(c.len(), rust.len());
+        for (k, (c, r)) in c.iter().zip(rust).enumerate() {
+            largest = largest.max((c - r).abs());
+            assert!(
+                (c - r).abs() <= 4.0 * f64::EPSILON * 8.0,
+                "{label}[{k}]: C {c:e} against Rust {r:e}"
+            );
+        }
+    }
+    eprintln!("largest difference between the C and the Rust runs: {largest:e}");
+    assert_eq!(
+        numbers(&lines, "dopri5_accepted"),
+        [outcome.stats.accepted as f64]
+    );
+    // RK4's energy error here, which main.c bounds by 1e-8.
+    eprintln!("RK4 energy error over 10 s: {:e}", (rk4[6] - rk4[5]).abs());
+
+    // The bad-input calls all got their status and message.
+    let nan = &lines
+        .iter()
+        .find(|l| l.first().map(String::as_str) == Some("nan_parameter"))
+        .expect("the NaN parameter line");
+    assert_eq!(nan[1], "3", "LAGRANGE_INVALID_PARAMETER is 3");
+    assert!(nan[2..]
+        .join(" ")
+        .contains("parameter `l1` is not finite (NaN)"));
+    assert!(lines.iter().any(|l| l == &["bad_input", "ok"]));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The same program linked against the shared library prints the same lines.
+#[test]
+fn shared_library_gives_the_same_output() {
+    let dir = std::env::temp_dir().join(format!("lagrange-ffi-shared-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (static_program, shared_program) = (dir.join("static"), dir.join("shared"));
+    compile_c_program(&static_program, false);
+    compile_c_program(&shared_program, true);
+    assert_eq!(run(&static_program, &[]), run(&shared_program, &[]));
+    // The untimed benchmark modes run too (callgrind counts them).
+    run(&shared_program, &["calls", "10"]);
+    run(&shared_program, &["loop", "10"]);
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -1,0 +1,406 @@
+//! Trajectory sensitivities (`lagrange::sensitivity`) against closed forms and finite differences.
+
+use lagrange::prelude::*;
+use lagrange::sensitivity::{Seed, Tangent};
+
+#[mechanism]
+pub mod pendulum {
+    pub struct Coords {
+        pub theta: f64,
+    }
+    pub struct Pendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * l
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[mechanism]
+pub mod double_pendulum {
+    pub struct Coords {
+        pub theta1: f64,
+        pub theta2: f64,
+    }
+    pub struct DoublePendulum {
+        pub m1: f64,
+        pub m2: f64,
+        pub l1: f64,
+        pub l2: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m1)]
+    fn bob1() -> Vec2 {
+        vec2(theta1.sin(), -theta1.cos()) * l1
+    }
+    #[particle(mass = m2)]
+    fn bob2() -> Vec2 {
+        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+const G: f64 = 9.81;
+
+fn double_pendulum() -> lagrange::Validated<double_pendulum::DoublePendulum> {
+    double_pendulum::DoublePendulum {
+        m1: 1.0,
+        m2: 1.0,
+        l1: 1.0,
+        l2: 1.0,
+        g: G,
+    }
+    .validated()
+    .unwrap()
+}
+
+/// The plain RK4 run: (θ₁, θ₂, θ̇₁, θ̇₂) after `steps` steps of `h`.
+fn rk4_end(s0: double_pendulum::State, h: f64, steps: usize) -> [f64; 4] {
+    let sys = double_pendulum();
+    let mut s = s0;
+    sys.simulate::<Rk4>(&mut s, h, steps, |_| {}).unwrap();
+    [s.q.theta1, s.q.theta2, s.v.theta1, s.v.theta2]
+}
+
+/// On the double pendulum (2 s of RK4, h = 1e-3, released with velocity; sensitivities up to ~4)
+/// every derivative of the end state by every initial value agrees with finite differences of the
+/// same discrete map, to the differences' own error, estimated as follows.
+/// - Truncation: the central difference D(δ) has error c₂δ² + c₄δ⁴ + …; the Richardson combination
+///   R(δ) = (4 D(δ/2) − D(δ))/3 removes c₂, so R(δ/2) is off by about |R(δ) − R(δ/2)|/15.
+/// - Round-off: each of the n steps rounds the state at relative ε; such an error propagates like a
+///   perturbation of the initial value, amplified at most by the largest sensitivity |J|max, and n
+///   of them add like a random walk: ε max(|x|, 1) (1 + |J|max) √n in each end value, divided by
+///   the increment δ/4 and amplified 5/3 by the Richardson combination.
+#[test]
+fn double_pendulum_matches_finite_differences() {
+    let sys = double_pendulum();
+    let s0 = double_pendulum::State::new(
+        0.0,
+        double_pendulum::Coords {
+            theta1: 1.2,
+            theta2: -0.4,
+        },
+        double_pendulum::Coords {
+            theta1: 0.3,
+            theta2: 0.1,
+        },
+    );
+    let seeds = [
+        Seed::Coordinate("theta1"),
+        Seed::Coordinate("theta2"),
+        Seed::Velocity("theta1"),
+        Seed::Velocity("theta2"),
+    ];
+    let (h, steps) = (1e-3, 2000);
+    let mut run = Tangent::new(&sys, &s0, seeds).unwrap();
+    for _ in 0..steps {
+        run.rk4_step(h).unwrap();
+    }
+    let ad = run.sensitivities();
+    // The real parts are the plain run, bit for bit.
+    let plain = rk4_end(s0, h, steps);
+    assert_eq!(
+        [
+            ad.state.q.theta1,
+            ad.state.q.theta2,
+            ad.state.v.theta1,
+            ad.state.v.theta2
+        ],
+        plain
+    );
+    let jacobian: Vec<[f64; 4]> = (0..4)
+        .map(|j| {
+            [
+                ad.dq[j].theta1,
+                ad.dq[j].theta2,
+                ad.dv[j].theta1,
+                ad.dv[j].theta2,
+            ]
+        })
+        .collect();
+    let largest = jacobian
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+
+    let central = |seed: usize, delta: f64| -> [f64; 4] {
+        let shifted = |sign: f64| {
+            let mut s = s0;
+            let d = sign * delta;
+            match seed {
+                0 => s.q.theta1 += d,
+                1 => s.q.theta2 += d,
+                2 => s.v.theta1 += d,
+                _ => s.v.theta2 += d,
+            }
+            rk4_end(s, h, steps)
+        };
+        let (plus, minus) = (shifted(1.0), shifted(-1.0));
+        std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * delta))
+    };
+    let delta = 1e-3;
+    let mut worst: f64 = 0.0;
+    for (j, seed) in seeds.iter().enumerate() {
+        let d = [
+            central(j, delta),
+            central(j, delta / 2.0),
+            central(j, delta / 4.0),
+        ];
+        for i in 0..4 {
+            let coarse = (4.0 * d[1][i] - d[0][i]) / 3.0;
+            let fine = (4.0 * d[2][i] - d[1][i]) / 3.0;
+            let truncation = (coarse - fine).abs() / 15.0;
+            let round_off =
+                f64::EPSILON * plain[i].abs().max(1.0) * (1.0 + largest) * (steps as f64).sqrt()
+                    / (delta / 4.0)
+                    * (5.0 / 3.0);
+            let estimate = truncation + round_off;
+            let error = (jacobian[j][i] - fine).abs();
+            worst = worst.max(error / estimate);
+            assert!(
+                error <= 3.0 * estimate,
+                "∂x{i}/∂{}: AD {:e}, FD {fine:e}, differs by {error:e} > 3 × the FD error estimate {estimate:e}",
+                seed.label(),
+                jacobian[j][i],
+            );
+        }
+    }
+    eprintln!("largest sensitivity {largest:.1}; worst |AD − FD| / FD error estimate: {worst:.3}");
+}
+
+/// Small oscillations: θ(t) = θ₀ cos ωt + (θ̇₀/ω) sin ωt, so ∂θ/∂θ₀ = cos ωt and ∂θ/∂θ̇₀ =
+/// sin(ωt)/ω, ω = √(g/L). At θ₀ = 1e-4 the nonlinearity shifts the frequency by ω θ₀²/16
+/// (Landau & Lifshitz, *Mechanics*, §28), 2e-9 relative, so over t = 5 the linear forms hold to
+/// ~1e-8; RK4 at h = 1e-3 adds (ωh)⁴ ω t / 120 ≈ 1e-11.
+#[test]
+fn small_oscillations_have_the_linear_sensitivities() {
+    let sys = pendulum::Pendulum {
+        m: 1.0,
+        l: 2.0,
+        g: G,
+    }
+    .validated()
+    .unwrap();
+    let s0 = pendulum::State::at_rest(pendulum::Coords { theta: 1e-4 });
+    let mut run = Tangent::new(
+        &sys,
+        &s0,
+        [Seed::Coordinate("theta"), Seed::Velocity("theta")],
+    )
+    .unwrap();
+    for _ in 0..5000 {
+        run.rk4_step(1e-3).unwrap();
+    }
+    let out = run.sensitivities();
+    let (omega, t) = ((G / 2.0).sqrt(), out.state.t);
+    assert!((out.dq[0].theta - (omega * t).cos()).abs() < 1e-7);
+    assert!((out.dq[1].theta - (omega * t).sin() / omega).abs() < 1e-7);
+    assert!((out.dv[0].theta + omega * (omega * t).sin()).abs() < 1e-7);
+}
+
+/// K(k) and E(k) by the arithmetic–geometric mean (Abramowitz & Stegun 17.6.1–17.6.4):
+/// K = π / (2 a_∞), E = K (1 − Σₙ 2ⁿ⁻¹ cₙ²) with c₀ = k, cₙ = (aₙ₋₁ − bₙ₋₁)/2.
+fn elliptic_k_e(k: f64) -> (f64, f64) {
+    let (mut a, mut b) = (1.0f64, (1.0 - k * k).sqrt());
+    let (mut sum, mut power) = (0.5 * k * k, 0.5);
+    for _ in 0..64 {
+        let c = 0.5 * (a - b);
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+        power *= 2.0;
+        sum += power * c * c;
+        if c.abs() <= 1e-17 {
+            break;
+        }
+    }
+    let big_k = std::f64::consts::PI / (2.0 * a);
+    (big_k, big_k * (1.0 - sum))
+}
+
+/// The large-amplitude period T(θ₀) = 4 √(L/g) K(sin(θ₀/2)) (Abramowitz & Stegun 17.3; the
+/// pendulum's period, Landau & Lifshitz §11) has dT/dθ₀ = 4 √(L/g) K'(k) cos(θ₀/2)/2 with
+/// K'(k) = (E − (1 − k²) K) / (k (1 − k²)) (NIST DLMF 19.4.1). The simulation gets it from the
+/// sensitivity of the first passage through θ = 0 (a quarter period): at that time t*,
+/// θ(t*; θ₀) = 0, so dt*/dθ₀ = −(∂θ/∂θ₀)/θ̇. RK4 at h = 1e-3 (ωh ≈ 3e-3) is accurate to ~1e-12
+/// in θ and its derivative, so 1e-8 relative is the bound, the closed form being exact.
+#[test]
+fn large_amplitude_period_derivative_matches_elliptic_integrals() {
+    let (l, theta0) = (1.5, 2.0);
+    let sys = pendulum::Pendulum { m: 1.0, l, g: G }.validated().unwrap();
+    let s0 = pendulum::State::at_rest(pendulum::Coords { theta: theta0 });
+    let mut run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta")]).unwrap();
+    let h = 1e-3;
+    // Whole steps while θ stays positive, then the partial step τ that lands on θ = 0, found by
+    // the secant method on the plain RK4 step (θ(τ) is smooth in τ).
+    loop {
+        let mut next = run.clone();
+        next.rk4_step(h).unwrap();
+        if next.state().q.theta <= 0.0 {
+            break;
+        }
+        run = next;
+    }
+    let theta_after = |tau: f64| {
+        let mut s = run.state();
+        sys.step::<Rk4>(&mut s, tau).unwrap();
+        s.q.theta
+    };
+    let (mut a, mut b): (f64, f64) = (0.5 * h, h);
+    let (mut fa, mut fb) = (theta_after(a), theta_after(b));
+    for _ in 0..50 {
+        if fb == 0.0 || (b - a).abs() < 1e-16 {
+            break;
+        }
+        let c = b - fb * (b - a) / (fb - fa);
+        (a, fa) = (b, fb);
+        (b, fb) = (c, theta_after(c));
+    }
+    run.rk4_step(b).unwrap();
+    let at_bottom = run.sensitivities();
+    let quarter = at_bottom.state.t;
+    let dquarter = -at_bottom.dq[0].theta / at_bottom.state.v.theta;
+
+    let k = (theta0 / 2.0).sin();
+    let (big_k, big_e) = elliptic_k_e(k);
+    let scale = 4.0 * (l / G).sqrt();
+    let period = scale * big_k;
+    let dk_dk = (big_e - (1.0 - k * k) * big_k) / (k * (1.0 - k * k));
+    let dperiod = scale * dk_dk * 0.5 * (theta0 / 2.0).cos();
+    assert!(
+        ((4.0 * quarter - period) / period).abs() < 1e-8,
+        "T: {} against {period}",
+        4.0 * quarter
+    );
+    assert!(
+        ((4.0 * dquarter - dperiod) / dperiod).abs() < 1e-8,
+        "dT/dθ₀: {} against {dperiod}",
+        4.0 * dquarter
+    );
+}
+
+#[test]
+fn unknown_coordinates_are_named() {
+    let sys = double_pendulum();
+    let s0 = double_pendulum::State::at_rest(double_pendulum::Coords {
+        theta1: 0.1,
+        theta2: 0.0,
+    });
+    let err = Tangent::new(&sys, &s0, [Seed::Velocity("theta3")]).unwrap_err();
+    assert!(matches!(err, lagrange::Error::UnknownCoordinate { ref name, .. } if name == "theta3"));
+    let mut run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta1")]).unwrap();
+    assert!(matches!(
+        run.rk4_step(-1.0),
+        Err(lagrange::Error::InvalidStep { .. })
+    ));
+    assert_eq!(run.state(), s0, "a refused step changes nothing");
+}
+
+/// Dopri5 with its step sizes frozen from the plain run: the real parts are that run bit for bit,
+/// and the derivatives agree with RK4's (h = 1e-3) on the double pendulum. Both approximate the
+/// exact sensitivities: RK4's error is that of its solution, O(h⁴) ≈ 1e-11 here (the
+/// finite-difference test above holds it to 1e-10); Dopri5's is governed by rtol = 1e-11 on the
+/// state, amplified by at most the largest sensitivity (≈ 4) over its ~1000 steps: ≤ 1e-7 at
+/// worst, so 1e-7 is the bound (measured: printed).
+#[test]
+fn dopri5_with_frozen_steps_matches_rk4() {
+    let sys = double_pendulum();
+    let s0 = double_pendulum::State::new(
+        0.0,
+        double_pendulum::Coords {
+            theta1: 1.2,
+            theta2: -0.4,
+        },
+        double_pendulum::Coords {
+            theta1: 0.3,
+            theta2: 0.1,
+        },
+    );
+    let seeds = [Seed::Coordinate("theta1"), Seed::Velocity("theta2")];
+    let settings = Dopri5::new(1e-11, 1e-13);
+    let adaptive =
+        lagrange::sensitivity::integrate_dopri5(&sys, &s0, seeds, settings, 2.0).unwrap();
+    let mut plain = s0;
+    settings
+        .integrate(&sys, &mut plain, 2.0, &mut [], |_| {})
+        .unwrap();
+    assert_eq!(adaptive.state, plain, "the real parts are the plain run");
+
+    let mut run = Tangent::new(&sys, &s0, seeds).unwrap();
+    for _ in 0..2000 {
+        run.rk4_step(1e-3).unwrap();
+    }
+    let fixed = run.sensitivities();
+    let mut worst: f64 = 0.0;
+    for j in 0..2 {
+        let a = [
+            adaptive.dq[j].theta1,
+            adaptive.dq[j].theta2,
+            adaptive.dv[j].theta1,
+            adaptive.dv[j].theta2,
+        ];
+        let b = [
+            fixed.dq[j].theta1,
+            fixed.dq[j].theta2,
+            fixed.dv[j].theta1,
+            fixed.dv[j].theta2,
+        ];
+        for i in 0..4 {
+            worst = worst.max((a[i] - b[i]).abs());
+        }
+    }
+    eprintln!("largest |Dopri5 − RK4| sensitivity difference: {worst:e}");
+    assert!(worst < 1e-7);
+}
+
+#[mechanism]
+pub mod cartesian_pendulum {
+    pub struct Coords {
+        pub x: f64,
+        pub y: f64,
+    }
+    pub struct CartesianPendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, y)
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+    #[constraint]
+    fn rod() -> f64 {
+        bob.norm() - l
+    }
+}
+
+/// The projection onto constraints after each step is not differentiated: refused up front.
+#[test]
+fn constrained_mechanisms_are_refused() {
+    let sys = cartesian_pendulum::CartesianPendulum {
+        m: 1.0,
+        l: 1.0,
+        g: G,
+    };
+    let s0 = cartesian_pendulum::State::at_rest(cartesian_pendulum::Coords { x: 0.6, y: -0.8 });
+    let err = Tangent::new(&sys, &s0, [Seed::Coordinate("x")]).unwrap_err();
+    assert!(matches!(
+        err,
+        lagrange::Error::UnsuitableMethod {
+            method: "sensitivities",
+            ..
+        }
+    ));
+}
