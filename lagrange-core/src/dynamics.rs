@@ -565,12 +565,11 @@ pub fn canonical_field<M: Model<N, K>, S: Scalar, const N: usize, const K: usize
     let masses = model.masses();
     let mut p = SVector::<S, N>::zeros();
     let mut kinetic_gradient = SVector::<S, N>::zeros();
-    for i in 0..M::INERTIAL {
-        if masses[i] == 0.0 {
+    for (x, &mass) in pass.x.iter().zip(&masses).take(M::INERTIAL) {
+        if mass == 0.0 {
             continue;
         }
-        let x = &pass.x[i];
-        let weighted_velocity = x.eps2.0.map_or(S::zero(), |e| e[0]) * masses[i];
+        let weighted_velocity = x.eps2.0.map_or(S::zero(), |e| e[0]) * mass;
         if let Some(row) = &x.eps1.0 {
             p += row * weighted_velocity;
         }

@@ -5,12 +5,8 @@ use lagrange::prelude::*;
 use std::hint::black_box;
 
 // Constrained mechanisms, from the gallery's scenes.
-#[path = "../../../examples/four_bar.rs"]
-#[allow(dead_code)]
-mod four_bar_scene;
-#[path = "../../../examples/cartesian_pendulum.rs"]
-#[allow(dead_code)]
-mod cartesian_pendulum_scene;
+use lagrange_gallery::scenes::cartesian_pendulum as cartesian_pendulum_scene;
+use lagrange_gallery::scenes::four_bar as four_bar_scene;
 // The constrained mechanisms' KKT systems written out by hand, as in the accelerations benchmark.
 #[path = "../../../benches/common/constrained.rs"]
 #[allow(dead_code)]
