@@ -1,15 +1,13 @@
-//! Sweeps on the double pendulum's flip-time map (the `flip_map` scene): the same map whatever the
+//! Sweeps on the double pendulum's flip-time map (`lagrange_gallery::flip_map`, the `flip_map` example's): the same map whatever the
 //! number of threads, shards that are slices of the whole, and flips where — and only where —
 //! physics allows them.
 
-#[path = "../examples/flip_map.rs"]
-#[allow(dead_code)]
-mod flip_map;
-
-use flip_map::{can_flip, flip_time, flip_times, grid, pendulum, Coords, State, H};
 use lagrange::ensemble::{rayon, shard_range};
 use lagrange::integrate::{Direction, Event, StopReason};
 use lagrange::{Dopri5, Mechanism};
+use lagrange_gallery::flip_map::{
+    can_flip, flip_time, flip_times, grid, pendulum, Coords, State, H,
+};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 

@@ -9,6 +9,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+pub mod flip_map;
 pub mod plot;
 pub mod scenes;
 
