@@ -51,6 +51,9 @@ fn pendulum_is_scleronomic_without_forces() {
     let out = snapshot("pendulum", pendulum());
     assert!(out.contains("const RHEONOMIC: bool = false;"));
     assert!(out.contains("const HAS_FORCES: bool = false;"));
+    // Scleronomic: the methods on (q, p) get the one-pass canonical field and q̇ = M⁻¹p.
+    assert!(out.contains("const SCLERONOMIC: bool = true;"));
+    assert!(out.contains("fn canonical_field_at"));
     assert!(
         !out.contains("fn applied_forces"),
         "a mechanism without forces has no force pass"
@@ -123,6 +126,10 @@ fn time_in_a_position_is_rheonomic() {
         },
     );
     assert!(out.contains("const RHEONOMIC: bool = true;"));
+    // x depends on t: p = M q̇ + Jᵀ diag(μ) ∂x/∂t, so neither the one-pass canonical field nor the
+    // one-solve velocities apply.
+    assert!(out.contains("const SCLERONOMIC: bool = false;"));
+    assert!(!out.contains("fn canonical_field_at"));
 }
 
 #[test]
