@@ -102,6 +102,7 @@ pub mod __private {
     pub use lagrange_core::geometry;
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
     pub use lagrange_core::scalar_ext::ScalarExt;
+    pub use lagrange_core::parameters;
     pub use lagrange_core::tree;
     pub use lagrange_core::{Error, Mechanism, Result, Scalar};
     pub use nalgebra;

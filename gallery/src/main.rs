@@ -35,6 +35,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     gyroscope::run,
     rough_plane::run,
     pushed_block::run,
+    identify_pendulum::run,
 ];
 
 fn main() {

@@ -302,6 +302,27 @@ pub enum Error {
         known: String,
     },
 
+    /// A sensitivity seed names no parameter of the mechanism.
+    #[error("no parameter named `{name}` to differentiate by; the parameters are {known}")]
+    UnknownParameter {
+        /// The name given.
+        name: String,
+        /// The mechanism's parameters, in declaration order.
+        known: String,
+    },
+
+    /// A sensitivity seed names a parameter that enters the dynamics as a plain number (a mass, a
+    /// moment of inertia or a uniform field's strength), which carries no derivative.
+    #[error(
+        "parameter `{name}` is a mass, a moment of inertia or the strength of a uniform field, \
+         which the dynamics take as plain numbers: it cannot be differentiated by (positions, \
+         potentials and forces can)"
+    )]
+    UnseedableParameter {
+        /// The parameter's name.
+        name: &'static str,
+    },
+
     /// Holding the named coordinates (or velocities) leaves fewer free ones than there are
     /// constraint rows to satisfy with them, so the constraints cannot be solved for the rest.
     #[error(

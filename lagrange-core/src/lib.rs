@@ -10,6 +10,7 @@
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`declaration`]: a declaration's names and flat values, for code generic over declarations;
 //! - [`sensitivity`]: trajectory sensitivities, the simulation on dual numbers;
+//! - [`parameters`]: a mechanism's parameters as values of any scalar (for sensitivities);
 //! - [`ensemble`]: one computation over many parameters or initial states, on every core;
 //! - [`error`]: typed errors; nothing here panics on user input.
 //!
@@ -27,6 +28,7 @@ pub mod integrate;
 pub mod linalg;
 pub mod mechanism;
 pub mod model;
+pub mod parameters;
 pub mod scalar_ext;
 pub mod sensitivity;
 pub mod tree;

@@ -445,6 +445,22 @@ macro_rules! impl_mechanism {
         });
     };
     (@impl $ty:ty, $n:tt, $k:tt, { $($extra:tt)* }) => {
+        // A hand-written model reads no parameter through an array: there is nothing to seed.
+        impl $crate::parameters::Parametrized<$n, $k, 0> for $ty {
+            const PARAMETER_NAMES: [&'static str; 0] = [];
+            const SEEDABLE: [bool; 0] = [];
+            fn parameters(&self) -> [f64; 0] {
+                []
+            }
+            fn cartesian_with<S: $crate::Scalar, D: $crate::Scalar>(
+                &self,
+                _p: &[S; 0],
+                t: D,
+                q: &[D; $n],
+            ) -> [D; $k] {
+                <$ty as $crate::Model<$n, $k>>::cartesian(self, t, q)
+            }
+        }
         impl $crate::Mechanism<$n> for $ty {
             type Coords = <$ty as $crate::Model<$n, $k>>::Coords;
             fn validate(&self) -> $crate::Result<()> {

@@ -5,6 +5,8 @@ use crate::dynamics::EquationsOfMotion;
 use crate::error::Result;
 use crate::geometry::Scalar;
 use crate::mechanism::Mechanism;
+use crate::model::Model;
+use crate::parameters::Parametrized;
 
 /// A mechanism whose parameters (finite, masses and inertias positive, constraint declarations
 /// well formed) were checked when it was made. Parameters do not change during a simulation, so
@@ -142,5 +144,94 @@ impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
     #[inline(always)]
     fn check_constraints(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
         self.0.check_constraints(t, q, v)
+    }
+}
+
+/// The model behind the handle, for the generic code that works on a [`Model`] (the parameter
+/// sensitivities lift it; see [`crate::parameters`]).
+impl<M: Model<N, K>, const N: usize, const K: usize> Model<N, K> for Validated<M> {
+    type Coords = M::Coords;
+    const INERTIAL: usize = M::INERTIAL;
+    const RHEONOMIC: bool = M::RHEONOMIC;
+    const HAS_POTENTIAL: bool = M::HAS_POTENTIAL;
+    const HAS_FORCES: bool = M::HAS_FORCES;
+    const DEPENDS: [[bool; N]; K] = M::DEPENDS;
+    const HAS_GRAVITY: bool = M::HAS_GRAVITY;
+
+    /// Checked when the handle was made.
+    #[inline(always)]
+    fn validate(&self) -> Result<()> {
+        Ok(())
+    }
+    #[inline(always)]
+    fn masses(&self) -> [f64; K] {
+        self.0.masses()
+    }
+    #[inline(always)]
+    fn weights(&self) -> [f64; K] {
+        self.0.weights()
+    }
+    #[inline(always)]
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; N]) -> [D; K] {
+        self.0.cartesian(t, q)
+    }
+    #[inline(always)]
+    fn potential<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> D {
+        self.0.potential(t, q, x)
+    }
+    #[inline(always)]
+    fn applied_forces<D: Scalar>(
+        &self,
+        t: D,
+        q: &[D; N],
+        v: &[D; N],
+        x: &[D; K],
+        x_dot: &[D; K],
+        cartesian_force: &mut [D; K],
+        generalized_force: &mut [D; N],
+    ) {
+        self.0
+            .applied_forces(t, q, v, x, x_dot, cartesian_force, generalized_force)
+    }
+}
+
+impl<M, const N: usize, const K: usize, const NP: usize> Parametrized<N, K, NP> for Validated<M>
+where
+    M: Parametrized<N, K, NP>,
+{
+    const PARAMETER_NAMES: [&'static str; NP] = M::PARAMETER_NAMES;
+    const SEEDABLE: [bool; NP] = M::SEEDABLE;
+    #[inline(always)]
+    fn parameters(&self) -> [f64; NP] {
+        self.0.parameters()
+    }
+    #[inline(always)]
+    fn cartesian_with<S: Scalar, D: Scalar>(&self, p: &[S; NP], t: D, q: &[D; N]) -> [D; K] {
+        self.0.cartesian_with(p, t, q)
+    }
+    #[inline(always)]
+    fn potential_with<S: Scalar, D: Scalar>(
+        &self,
+        p: &[S; NP],
+        t: D,
+        q: &[D; N],
+        x: &[D; K],
+    ) -> D {
+        self.0.potential_with(p, t, q, x)
+    }
+    #[inline(always)]
+    fn applied_forces_with<S: Scalar, D: Scalar>(
+        &self,
+        p: &[S; NP],
+        t: D,
+        q: &[D; N],
+        v: &[D; N],
+        x: &[D; K],
+        x_dot: &[D; K],
+        cartesian_force: &mut [D; K],
+        generalized_force: &mut [D; N],
+    ) {
+        self.0
+            .applied_forces_with(p, t, q, v, x, x_dot, cartesian_force, generalized_force)
     }
 }

@@ -9,6 +9,7 @@ pub mod double_pendulum;
 pub mod four_bar;
 pub mod gyroscope;
 pub mod hoop_bifurcation;
+pub mod identify_pendulum;
 pub mod pendulum;
 pub mod pushed_block;
 pub mod ramp;

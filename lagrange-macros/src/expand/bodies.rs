@@ -2,7 +2,7 @@
 //! `bodies`, `body_velocities`, the generic `__lagrange_bodies`, and the conversions between bodies
 //! and rows of x (flatten, unflatten).
 
-use super::{bind_inputs, lit, optimized_blocks, position_type, prelude, private};
+use super::{bind_inputs_from, lit, optimized_blocks_from, position_type, prelude, private, Params};
 use crate::check::{self, Body, Dim, Model, Shape};
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
@@ -75,7 +75,7 @@ pub(super) fn bodies_structs(model: &Model) -> TokenStream {
 pub(super) fn inherent_impl(model: &Model) -> TokenStream {
     let p = private();
     let (params, n, k) = (model.params_ident, lit(model.dof()), lit(model.rows));
-    let bodies_fn = bodies_fn(model);
+    let bodies_fn = bodies_fn(model, Params::Fields);
     let from_cartesian = (!model.potentials.is_empty()
         || !model.gravities.is_empty()
         || !model.forces.is_empty()
@@ -108,15 +108,18 @@ pub(super) fn inherent_impl(model: &Model) -> TokenStream {
     }
 }
 
-/// The user's position functions as `let` bindings in declaration order, on any scalar.
-fn bodies_fn(model: &Model) -> TokenStream {
+/// The user's position functions as `let` bindings in declaration order, on any scalar:
+/// `__lagrange_bodies` reads the parameters from the fields, `__lagrange_bodies_with` from an array
+/// `__p` of any scalar (see [`Params`]).
+pub(super) fn bodies_fn(model: &Model, params: Params) -> TokenStream {
     let p = private();
     let n = lit(model.dof());
     let prelude = prelude();
     let used = model.names_used_by(model.bodies.iter().map(|b| b.decl));
-    let inputs = bind_inputs(model, &used, quote!(__q));
+    let inputs = bind_inputs_from(model, &used, quote!(__q), params);
     let names: Vec<&Ident> = model.bodies.iter().map(|b| b.decl.ident()).collect();
-    let (shared, blocks) = optimized_blocks(model, model.bodies.iter().map(|b| &b.decl.block));
+    let (shared, blocks) =
+        optimized_blocks_from(model, model.bodies.iter().map(|b| &b.decl.block), params);
     let values: Vec<TokenStream> = model
         .bodies
         .iter()
@@ -142,10 +145,19 @@ fn bodies_fn(model: &Model) -> TokenStream {
             }
         })
         .collect();
+    let signature = match params {
+        Params::Fields => {
+            quote!(fn __lagrange_bodies<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> Bodies<__D>)
+        }
+        Params::Array => {
+            let np = lit(model.params.len());
+            quote!(fn __lagrange_bodies_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n]) -> Bodies<__D>)
+        }
+    };
     quote! {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
-        fn __lagrange_bodies<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> Bodies<__D> {
+        #signature {
             #prelude
             #inputs
             #shared

@@ -12,7 +12,8 @@
 //! [`bodies`] `Bodies`, `BodyVelocities` and the inherent impl; [`model`] the `Model` impl;
 //! [`mechanism`] the `Mechanism` impl; [`constraints`] the `Constraints` impl; [`tree`] the
 //! `Tree` impl of a tree of translations; [`declaration`] the `Declaration` impl (names and flat
-//! values, for the C export); [`fallback`] the stubs written after a failed check.
+//! values, for the C export); [`parametrized`] the `Parametrized` impl (the position, potential and
+//! force functions with the parameters as an array of any scalar, for sensitivities); [`fallback`] the stubs written after a failed check.
 //! This file holds the entry [`expand`], the whole module ([`generate`]) and the helpers the
 //! others share.
 
@@ -23,6 +24,7 @@ mod declaration;
 mod fallback;
 mod mechanism;
 mod model;
+mod parametrized;
 mod tree;
 
 use bodies::{bodies_structs, inherent_impl};
@@ -31,6 +33,7 @@ use coords::coords_items;
 use declaration::declaration_impl;
 use mechanism::mechanism_impl;
 use model::model_impl;
+use parametrized::parametrized_items;
 
 use crate::ast::{Field, Mechanism};
 use crate::check::{self, Dim, Model, Shape};
@@ -127,6 +130,7 @@ fn generate(model: &Model) -> TokenStream {
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);
+    let parametrized = parametrized_items(model);
     quote! {
         #(#attrs)*
         #vis mod #ident {
@@ -140,6 +144,7 @@ fn generate(model: &Model) -> TokenStream {
             #mechanism_impl
             #constraints_impl
             #declaration_impl
+            #parametrized
         }
     }
 }
@@ -171,32 +176,67 @@ fn bind_coordinates(model: &Model, q: &TokenStream, suffix: &str) -> TokenStream
     out
 }
 
+/// Where a generated function reads the parameters from: the parameter struct's `f64` fields, or
+/// the array `__p: &[__S; NP]` of any scalar that the `Parametrized` variants take (see
+/// [`parametrized`]).
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Params {
+    Fields,
+    Array,
+}
+
 /// `let theta1 = …; let l1 = <__D>::from(self.l1); let t = __t;` for the names `used`.
 fn bind_inputs(model: &Model, used: &BTreeSet<String>, q: TokenStream) -> TokenStream {
-    let d = scalar();
+    bind_inputs_from(model, used, q, Params::Fields)
+}
+
+/// [`bind_inputs`] with the parameters read from `params`: from an array, parameter i is
+/// `let l1: __D = lift::<__S, __D>(&__p[i]);`.
+fn bind_inputs_from(
+    model: &Model,
+    used: &BTreeSet<String>,
+    q: TokenStream,
+    params: Params,
+) -> TokenStream {
+    let (d, p) = (scalar(), private());
     let coords = bind_coordinates(model, &q, "");
-    let params = model
+    let bindings = model
         .params
         .iter()
-        .map(|p| &p.ident)
-        .filter(|p| used.contains(&p.to_string()));
+        .enumerate()
+        .filter(|(_, f)| used.contains(&f.ident.to_string()))
+        .map(|(i, f)| {
+            let (ident, i) = (&f.ident, lit(i));
+            match params {
+                Params::Fields => quote!(let #ident = <#d>::from(self.#ident);),
+                Params::Array => {
+                    quote!(let #ident: #d = #p::parameters::lift::<__S, #d>(&__p[#i]);)
+                }
+            }
+        });
     let time = used.contains("t").then(|| quote!(let t = __t;));
     quote! {
         #coords
-        #( let #params = <#d>::from(self.#params); )*
+        #( #bindings )*
         #time
     }
 }
 
 /// The user's `blocks` rewritten by [`optimize`] (parameter-only subexpressions in `f64`, shared
 /// `sin_cos`) and lifted to `__D`, with the `let`s the rewrites need (placed after the inputs).
-pub(crate) fn optimized_blocks<'d>(
+/// With the parameters read from an array ([`Params::Array`]) they may carry derivatives, so no
+/// parameter-only subexpression is taken out to `f64`.
+pub(crate) fn optimized_blocks_from<'d>(
     model: &Model,
     blocks: impl IntoIterator<Item = &'d syn::Block>,
+    params: Params,
 ) -> (TokenStream, Vec<syn::Block>) {
     let d = scalar();
     let mut blocks: Vec<syn::Block> = blocks.into_iter().cloned().collect();
-    let params: BTreeSet<String> = model.params.iter().map(|p| p.ident.to_string()).collect();
+    let params: BTreeSet<String> = match params {
+        Params::Fields => model.params.iter().map(|p| p.ident.to_string()).collect(),
+        Params::Array => BTreeSet::new(),
+    };
     let trig: BTreeSet<String> = model
         .coords
         .iter()

@@ -3,8 +3,8 @@
 
 use super::bodies::flatten;
 use super::{
-    bind_bodies, bind_coordinates, bind_inputs, lit, optimized_blocks, position_type, prelude,
-    private, scalar,
+    bind_bodies, bind_coordinates, bind_inputs_from, lit, optimized_blocks_from, position_type,
+    prelude, private, scalar, Params,
 };
 use crate::attr::{Inertia, Kind};
 use crate::check::{self, Body, Dim, Model, Shape};
@@ -61,9 +61,9 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     let has_forces = !model.forces.is_empty();
     let validate = validate_fn(model);
     let masses = masses_fn(model);
-    let cartesian = cartesian_fn(model);
-    let potential = has_potential.then(|| potential_fn(model));
-    let forces = has_forces.then(|| applied_forces_fn(model));
+    let cartesian = cartesian_fn(model, Params::Fields);
+    let potential = has_potential.then(|| potential_fn(model, Params::Fields));
+    let forces = has_forces.then(|| applied_forces_fn(model, Params::Fields));
     let weights = (!model.uniform_gravities.is_empty()).then(|| weights_fn(model));
     let depends = depends_const(model);
     quote! {
@@ -257,7 +257,9 @@ fn masses_fn(model: &Model) -> TokenStream {
     }
 }
 
-fn cartesian_fn(model: &Model) -> TokenStream {
+/// x(q, t) from the bodies: `cartesian` with the parameters from the fields, `cartesian_with` from
+/// an array (see [`Params`]).
+pub(super) fn cartesian_fn(model: &Model, params: Params) -> TokenStream {
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
     let mut by_row: Vec<&Body> = model.bodies.iter().collect();
@@ -266,16 +268,31 @@ fn cartesian_fn(model: &Model) -> TokenStream {
         let name = b.decl.ident();
         flatten(b, &quote!(__bodies.#name))
     });
+    let (signature, bodies) = match params {
+        Params::Fields => (
+            quote!(fn cartesian<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> [__D; #k]),
+            quote!(self.__lagrange_bodies(__t, __q)),
+        ),
+        Params::Array => {
+            let np = lit(model.params.len());
+            (
+                quote!(fn cartesian_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n]) -> [__D; #k]),
+                quote!(self.__lagrange_bodies_with(__p, __t, __q)),
+            )
+        }
+    };
     quote! {
         #[inline(always)]
-        fn cartesian<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> [__D; #k] {
-            let __bodies = self.__lagrange_bodies(__t, __q);
+        #signature {
+            let __bodies = #bodies;
             [#(#rows),*]
         }
     }
 }
 
-fn potential_fn(model: &Model) -> TokenStream {
+/// The potential: `potential` with the parameters from the fields, `potential_with` from an array
+/// (see [`Params`]).
+pub(super) fn potential_fn(model: &Model, params: Params) -> TokenStream {
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
     let prelude = prelude();
@@ -284,9 +301,10 @@ fn potential_fn(model: &Model) -> TokenStream {
         .iter()
         .copied()
         .chain(model.gravities.iter().map(|(g, _)| *g));
-    let inputs = bind_inputs(model, &model.names_used_by(decls), quote!(__q));
+    let inputs = bind_inputs_from(model, &model.names_used_by(decls), quote!(__q), params);
     let bodies = bind_bodies(model);
-    let (shared, blocks) = optimized_blocks(model, model.potentials.iter().map(|d| &d.block));
+    let (shared, blocks) =
+        optimized_blocks_from(model, model.potentials.iter().map(|d| &d.block), params);
     let potentials = model.potentials.iter().zip(blocks).map(|(decl, block)| {
         let ident = format_ident!("__potential_{}", decl.ident());
         quote!(let #ident: __D = #block; __potential += #ident;)
@@ -298,9 +316,16 @@ fn potential_fn(model: &Model) -> TokenStream {
     // Masses only weigh a field that varies; constant fields are `weights`.
     let masses = (!model.gravities.is_empty())
         .then(|| quote!(let __masses = <Self as #p::Model<#n, #k>>::masses(self);));
+    let signature = match params {
+        Params::Fields => quote!(fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D),
+        Params::Array => {
+            let np = lit(model.params.len());
+            quote!(fn potential_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D)
+        }
+    };
     quote! {
         #[allow(unused_variables, clippy::all)]
-        fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D {
+        #signature {
             #prelude
             #inputs
             #shared
@@ -346,14 +371,17 @@ fn gravity_terms(model: &Model, decl: &crate::ast::Decl, dim: Dim) -> TokenStrea
     quote!(let #ident: #ty = #block; #(#terms)*)
 }
 
-fn applied_forces_fn(model: &Model) -> TokenStream {
+/// The applied forces: `applied_forces` with the parameters from the fields, `applied_forces_with`
+/// from an array (see [`Params`]).
+pub(super) fn applied_forces_fn(model: &Model, params: Params) -> TokenStream {
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
     let prelude = prelude();
-    let inputs = bind_inputs(
+    let inputs = bind_inputs_from(
         model,
         &model.names_used_by(model.forces.iter().map(|f| f.decl)),
         quote!(__q),
+        params,
     );
     let velocities = bind_coordinates(model, &quote!(__v), "_dot");
     let bodies = bind_bodies(model);
@@ -362,7 +390,8 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
         .bodies
         .iter()
         .map(|b| format_ident!("{}_dot", b.decl.ident()));
-    let (shared, blocks) = optimized_blocks(model, model.forces.iter().map(|f| &f.decl.block));
+    let (shared, blocks) =
+        optimized_blocks_from(model, model.forces.iter().map(|f| &f.decl.block), params);
     let forces = model.forces.iter().zip(blocks).map(|(force, block)| {
         let ident = format_ident!("__{}_{}", force.kind.name(), force.decl.ident());
         match force.kind {
@@ -419,10 +448,22 @@ fn applied_forces_fn(model: &Model) -> TokenStream {
             }
         }
     });
+    let (name, generics, array) = match params {
+        Params::Fields => (quote!(applied_forces), quote!(<__D: #p::Scalar>), quote!()),
+        Params::Array => {
+            let np = lit(model.params.len());
+            (
+                quote!(applied_forces_with),
+                quote!(<__S: #p::Scalar, __D: #p::Scalar>),
+                quote!(__p: &[__S; #np],),
+            )
+        }
+    };
     quote! {
         #[allow(unused_variables, clippy::all)]
-        fn applied_forces<__D: #p::Scalar>(
+        fn #name #generics(
             &self,
+            #array
             __t: __D,
             __q: &[__D; #n],
             __v: &[__D; #n],

@@ -487,4 +487,60 @@ pub mod chain {
             ::lagrange::__private::std::vec![self.m, self.l, self.g]
         }
     }
+    impl Chain {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 3]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let theta = [__q[0], __q[1], __q[2]];
+            let l: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
+            let __sin_cos_theta = theta.map(|__x| __x.sin_cos());
+            let bob: [::lagrange::__private::geometry::Vec2<__D>; 3] = {
+                let mut bob: [::lagrange::__private::geometry::Vec2<__D>; 3] = ::lagrange::__private::core::array::from_fn(|
+                    _|
+                ::lagrange::__private::geometry::vec2(<__D>::zero(), <__D>::zero()));
+                for i in 0..3 {
+                    let __member: ::lagrange::__private::geometry::Vec2<__D> = {
+                        let link = vec2(__sin_cos_theta[i].0, -__sin_cos_theta[i].1) * l;
+                        if i == 0 { link } else { bob[i - 1] + link }
+                    };
+                    bob[i] = __member;
+                }
+                bob
+            };
+            Bodies { bob }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<3, 6, 3> for Chain {
+        const PARAMETER_NAMES: [&'static str; 3] = ["m", "l", "g"];
+        const SEEDABLE: [bool; 3] = [false, true, false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 3] {
+            [self.m, self.l, self.g]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 3]) -> [__D; 6] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [
+                __bodies.bob[0].x,
+                __bodies.bob[0].y,
+                __bodies.bob[1].x,
+                __bodies.bob[1].y,
+                __bodies.bob[2].x,
+                __bodies.bob[2].y,
+            ]
+        }
+    }
 }

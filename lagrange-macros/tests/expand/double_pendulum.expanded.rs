@@ -480,4 +480,48 @@ pub mod double_pendulum {
             ::lagrange::__private::std::vec![self.m1, self.m2, self.l1, self.l2, self.g]
         }
     }
+    impl DoublePendulum {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta1, theta2] = *__q;
+            let l1: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
+            let l2: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
+            let (__sin_theta1, __cos_theta1) = theta1.sin_cos();
+            let (__sin_theta2, __cos_theta2) = theta2.sin_cos();
+            let bob1: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(__sin_theta1, -__cos_theta1) * l1
+            };
+            let bob2: ::lagrange::__private::geometry::Vec2<__D> = {
+                bob1 + vec2(__sin_theta2, -__cos_theta2) * l2
+            };
+            Bodies { bob1, bob2 }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 4, 5> for DoublePendulum {
+        const PARAMETER_NAMES: [&'static str; 5] = ["m1", "m2", "l1", "l2", "g"];
+        const SEEDABLE: [bool; 5] = [false, false, true, true, false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 5] {
+            [self.m1, self.m2, self.l1, self.l2, self.g]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 2]) -> [__D; 4] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.bob1.x, __bodies.bob1.y, __bodies.bob2.x, __bodies.bob2.y]
+        }
+    }
 }

@@ -326,4 +326,46 @@ pub mod driven {
             ::lagrange::__private::std::vec![self.m, self.l, self.a, self.w, self.g]
         }
     }
+    impl Driven {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 1]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta] = *__q;
+            let l: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
+            let a: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
+            let w: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
+            let t = __t;
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
+            let bob: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(a * (w * t).cos() + l * __sin_theta, -l * __cos_theta)
+            };
+            Bodies { bob }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<1, 2, 5> for Driven {
+        const PARAMETER_NAMES: [&'static str; 5] = ["m", "l", "a", "w", "g"];
+        const SEEDABLE: [bool; 5] = [false, true, true, true, false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 5] {
+            [self.m, self.l, self.a, self.w, self.g]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 1]) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.bob.x, __bodies.bob.y]
+        }
+    }
 }

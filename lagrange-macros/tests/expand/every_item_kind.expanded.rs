@@ -597,4 +597,130 @@ pub mod everything {
             ]
         }
     }
+    impl Everything {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 6], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta, phi] = *__q;
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
+            let bar: ::lagrange::__private::geometry::Planar<__D> = {
+                planar(vec2(__sin_theta, -__cos_theta) * HALF, theta)
+            };
+            let tip: ::lagrange::__private::geometry::Vec2<__D> = {
+                bar.point(vec2(<__D>::from(0.5), <__D>::from(0.0)))
+            };
+            let top: ::lagrange::__private::geometry::Spatial<__D> = {
+                spatial(
+                    vec3(<__D>::from(0.0), <__D>::from(0.0), <__D>::from(1.0)),
+                    rot_z(phi) * rot_x(PI * <__D>::from(0.1)),
+                )
+            };
+            Bodies { bar, tip, top }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 17, 6> for Everything {
+        const PARAMETER_NAMES: [&'static str; 6] = ["m", "i", "k", "c", "tau", "g"];
+        const SEEDABLE: [bool; 6] = [false, false, true, true, true, false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 6] {
+            [self.m, self.i, self.k, self.c, self.tau, self.g]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 6], __t: __D, __q: &[__D; 2]) -> [__D; 17] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [
+                __bodies.bar.position.x,
+                __bodies.bar.position.y,
+                __bodies.bar.angle,
+                __bodies.top.position.x,
+                __bodies.top.position.y,
+                __bodies.top.position.z,
+                __bodies.top.rotation.rows[0][0],
+                __bodies.top.rotation.rows[1][0],
+                __bodies.top.rotation.rows[2][0],
+                __bodies.top.rotation.rows[0][1],
+                __bodies.top.rotation.rows[1][1],
+                __bodies.top.rotation.rows[2][1],
+                __bodies.top.rotation.rows[0][2],
+                __bodies.top.rotation.rows[1][2],
+                __bodies.top.rotation.rows[2][2],
+                __bodies.tip.x,
+                __bodies.tip.y,
+            ]
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn potential_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 6], __t: __D, __q: &[__D; 2], __x: &[__D; 17]) -> __D {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta, phi] = *__q;
+            let k: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
+            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
+            let mut __potential = <__D>::zero();
+            let __potential_spring: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
+            __potential += __potential_spring;
+            __potential
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn applied_forces_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(
+            &self,
+            __p: &[__S; 6],
+            __t: __D,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+            __x: &[__D; 17],
+            __x_dot: &[__D; 17],
+            __cartesian_force: &mut [__D; 17],
+            __generalized_force: &mut [__D; 2],
+        ) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta, phi] = *__q;
+            let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
+            let tau: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[4]);
+            let [theta_dot, phi_dot] = *__v;
+            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
+            let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = Self::__lagrange_velocities_from_cartesian(
+                __x,
+                __x_dot,
+            );
+            let __force_push: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(c, <__D>::from(0.0))
+            };
+            __cartesian_force[15] += __force_push.x;
+            __cartesian_force[16] += __force_push.y;
+            let __torque_motor: __D = { tau };
+            __cartesian_force[2] += __torque_motor;
+            let __generalized_force_damping: __D = { -c * phi_dot };
+            __generalized_force[1] += __generalized_force_damping;
+        }
+    }
 }

@@ -271,4 +271,39 @@ pub mod free {
             ::lagrange::__private::std::vec![self.m]
         }
     }
+    impl Free {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 1], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [x, y] = *__q;
+            let ball: ::lagrange::__private::geometry::Vec2<__D> = { vec2(x, y) };
+            Bodies { ball }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 2, 1> for Free {
+        const PARAMETER_NAMES: [&'static str; 1] = ["m"];
+        const SEEDABLE: [bool; 1] = [false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 1] {
+            [self.m]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 1], __t: __D, __q: &[__D; 2]) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.ball.x, __bodies.ball.y]
+        }
+    }
 }

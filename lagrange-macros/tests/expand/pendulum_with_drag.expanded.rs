@@ -365,4 +365,79 @@ pub mod pendulum {
             ::lagrange::__private::std::vec![self.m, self.l, self.g, self.c]
         }
     }
+    impl Pendulum {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 4], __t: __D, __q: &[__D; 1]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta] = *__q;
+            let l: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
+            let (__sin_theta, __cos_theta) = theta.sin_cos();
+            let bob: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(__sin_theta, -__cos_theta) * l
+            };
+            Bodies { bob }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<1, 2, 4> for Pendulum {
+        const PARAMETER_NAMES: [&'static str; 4] = ["m", "l", "g", "c"];
+        const SEEDABLE: [bool; 4] = [false, true, false, true];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 4] {
+            [self.m, self.l, self.g, self.c]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 4], __t: __D, __q: &[__D; 1]) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.bob.x, __bodies.bob.y]
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn applied_forces_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(
+            &self,
+            __p: &[__S; 4],
+            __t: __D,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+            __x: &[__D; 2],
+            __x_dot: &[__D; 2],
+            __cartesian_force: &mut [__D; 2],
+            __generalized_force: &mut [__D; 1],
+        ) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta] = *__q;
+            let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
+            let [theta_dot] = *__v;
+            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
+            let BodyVelocities { bob: bob_dot } = Self::__lagrange_velocities_from_cartesian(
+                __x,
+                __x_dot,
+            );
+            let __force_drag: ::lagrange::__private::geometry::Vec2<__D> = {
+                bob_dot * (-c)
+            };
+            __cartesian_force[0] += __force_drag.x;
+            __cartesian_force[1] += __force_drag.y;
+        }
+    }
 }

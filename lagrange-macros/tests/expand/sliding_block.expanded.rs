@@ -515,4 +515,39 @@ pub mod sliding_block {
             >(self, t, q, v)
         }
     }
+    impl SlidingBlock {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [x, y] = *__q;
+            let block: ::lagrange::__private::geometry::Vec2<__D> = { vec2(x, y) };
+            Bodies { block }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 2, 3> for SlidingBlock {
+        const PARAMETER_NAMES: [&'static str; 3] = ["m", "g", "mu"];
+        const SEEDABLE: [bool; 3] = [false, false, true];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 3] {
+            [self.m, self.g, self.mu]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 2]) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.block.x, __bodies.block.y]
+        }
+    }
 }

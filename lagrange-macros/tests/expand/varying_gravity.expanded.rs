@@ -314,4 +314,66 @@ pub mod varying {
             ::lagrange::__private::std::vec![self.m, self.g, self.w]
         }
     }
+    impl Varying {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 1]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [y] = *__q;
+            let ball: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(<__D>::from(0.0), y)
+            };
+            Bodies { ball }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<1, 2, 3> for Varying {
+        const PARAMETER_NAMES: [&'static str; 3] = ["m", "g", "w"];
+        const SEEDABLE: [bool; 3] = [false, true, true];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 3] {
+            [self.m, self.g, self.w]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 1]) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.ball.x, __bodies.ball.y]
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn potential_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 1], __x: &[__D; 2]) -> __D {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [y] = *__q;
+            let g: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
+            let w: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
+            let t = __t;
+            let Bodies { ball } = Self::__lagrange_bodies_from_cartesian(__x);
+            let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
+            let mut __potential = <__D>::zero();
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(<__D>::from(0.0), -g * (w * t).cos())
+            };
+            __potential -= __gravity_down.dot(&ball) * __masses[0];
+            __potential
+        }
+    }
 }
