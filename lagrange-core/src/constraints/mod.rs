@@ -197,6 +197,7 @@
 // `!(x > tol)` is deliberate: it also rejects NaN.
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
+mod adaptive;
 mod cone;
 mod consistency;
 mod contact;
@@ -206,6 +207,7 @@ mod projection;
 mod rows;
 mod solve;
 
+pub use adaptive::ContactDopri5;
 pub use consistency::{
     check_consistent, check_velocity_rows_affine, consistent_state, consistent_state_holding,
     CONSISTENCY_TOLERANCE,
