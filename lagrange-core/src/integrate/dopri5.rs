@@ -378,6 +378,11 @@ impl Dopri5 {
     /// step and for every located event, and stopping early at a terminal event or after
     /// `max_steps` attempts. On success `state` is the final state (at t_end, at the terminal event,
     /// or the last accepted one); on error `state` is unchanged. No allocation.
+    ///
+    /// A mechanism with unilateral contacts or friction is integrated here with its mode re-inferred
+    /// at every evaluation, so each mode switch falls inside a step and costs many rejected steps:
+    /// use [`integrate_contacts`](Self::integrate_contacts) for it, which fixes the mode over a
+    /// step and locates the switches.
     pub fn integrate<M: Mechanism<N>, const N: usize>(
         &self,
         mechanism: &M,

@@ -1,9 +1,10 @@
 //! Integrators, generic over every generated mechanism, behind one stepping interface
 //! ([`solver`]: the [`Stepper`] trait — `step`, `integrate` to a stop time with an observer, dense
 //! output and events, [`Stats`] — implemented by [`FixedStepper`] for every [`Integrator`], by
-//! [`Dopri5Stepper`], [`Dop853Stepper`] and [`Radau5Stepper`], and by the contact solver
-//! [`ContactSolver`](crate::constraints::ContactSolver)); `sys.step::<I>(&mut s, h)` is one
-//! validated step.
+//! [`Dopri5Stepper`], [`Dop853Stepper`] and [`Radau5Stepper`], and by the contact solvers
+//! [`ContactSolver`](crate::constraints::ContactSolver) (RK4) and
+//! [`ContactDopri5`](crate::constraints::ContactDopri5) (adaptive)); `sys.step::<I>(&mut s, h)` is
+//! one validated step.
 //!
 //! | method | order | steps | evaluations of q̈ per step | geometric properties |
 //! |---|---|---|---|---|
@@ -35,7 +36,7 @@
 //! velocity projection), which keeps them symplectic on the constraint manifold, and refuse
 //! velocity constraints, unilateral contacts and friction with
 //! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod) (use [`ContactRk4`](crate::ContactRk4)
-//! for those). Which constraints a method enforces is decided by the declaration alone —
+//! or [`ContactDopri5`](crate::ContactDopri5) for those). Which constraints a method enforces is decided by the declaration alone —
 //! [`Mechanism::CONSTRAINT_COUNTS`] and [`Mechanism::CONSTRAINTS`] — never by the multipliers at
 //! some state (a pendulum released horizontally at rest has λ = 0 at its first step and is treated
 //! as constrained all the same): the symplectic methods refuse an implementation that does not
