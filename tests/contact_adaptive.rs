@@ -12,8 +12,10 @@
 //! - A block sent up a rough ramp (`#[friction]`): it stops at t_s = u/(g(sin α + μₖ cos α)) and
 //!   sticks or slides back, as μₛ decides.
 
-use lagrange::constraints::{constraint_forces, ContactDopri5, ContactOptions, RowMode};
-use lagrange::integrate::{Direction, Event, Stats, StopReason};
+use lagrange::constraints::{
+    constraint_forces, ContactAdaptive, ContactDopri5, ContactOptions, RowMode,
+};
+use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::gauss_legendre;
@@ -131,14 +133,26 @@ fn cost(stats: Stats) -> (usize, usize) {
 /// The bilateral sphere in Dopri5 from the top with speed v₀, stopped where its multiplier falls
 /// through 0: the release time and the cost.
 fn bilateral_release(v0: f64, tol: f64) -> (f64, Stats) {
+    bilateral_release_in(v0, |sys, s, events| {
+        Dopri5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+    })
+}
+
+/// [`bilateral_release`] with the integration `integrate` (Dopri5 or Dop853).
+fn bilateral_release_in(
+    v0: f64,
+    integrate: impl FnOnce(
+        &bilateral::Sphere,
+        &mut bilateral::State,
+        &mut [Event<'_, bilateral::Coords>],
+    ) -> lagrange::Result<lagrange::integrate::Outcome<bilateral::Coords>>,
+) -> (f64, Stats) {
     use bilateral::{Coords, Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
     let mut s = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: v0, y: 0.0 });
     let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
     let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
-    let outcome = Dopri5::new(tol, tol)
-        .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
-        .expect("integration");
+    let outcome = integrate(&sys, &mut s, &mut events).expect("integration");
     let StopReason::Event(hit) = outcome.reason else {
         panic!("the particle did not leave: {:?}", outcome.reason)
     };
@@ -147,6 +161,30 @@ fn bilateral_release(v0: f64, tol: f64) -> (f64, Stats) {
 
 #[test]
 fn unilateral_sphere_releases_on_time_at_the_cost_of_the_bilateral_one() {
+    sphere_release_against_closed_form(Dopri5::new(1e-13, 1e-13), 1e-13, |v0| {
+        bilateral_release(v0, 1e-13)
+    });
+}
+
+#[test]
+fn unilateral_sphere_in_dop853() {
+    // Dop853 shares the contact solver: the same checks, with its error bounded as below.
+    let tol = 1e-13;
+    sphere_release_against_closed_form(Dop853::new(tol, tol), tol, |v0| {
+        bilateral_release_in(v0, |sys, s, events| {
+            Dop853::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+        })
+    });
+}
+
+/// The sphere declared unilateral in `method` (at tolerance `tol`), released from the top at
+/// v₀ = 0.5 and 1.2: release time and position against the closed form, cost in contact against
+/// `bilateral` (the bilateral declaration in the same method), the parabola after.
+fn sphere_release_against_closed_form<P: EmbeddedPair>(
+    method: P,
+    tol: f64,
+    bilateral: impl Fn(f64) -> (f64, Stats),
+) {
     use unilateral::{Coords, Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
     // What bounds the located release time |t − t*| (the analysis of tests/sphere_event.rs,
@@ -157,32 +195,28 @@ fn unilateral_sphere_releases_on_time_at_the_cost_of_the_bilateral_one() {
     // ≤ 2·tol·(1 + |y|) ≤ 8.4 tol per component (error norm ≤ 1 over 2N = 4 components,
     // |y| ≤ 3.2), grown at most like e^{λ₊(t* − s)}, λ₊ = √(g/R) (the rate off the unstable top);
     // with the n steps spread over [0, t*], δ ≤ (n/t*)·(e^{λ₊t*} − 1)/λ₊ · 8.4 tol, and the
-    // dense output adds one more local error (n + 1 below). tol = 1e-13 makes the bound ~1e-10.
-    let tol = 1e-13;
+    // dense output adds one more local error (n + 1 below). tol = 1e-13 makes the bound ~1e-10
+    // for Dopri5 (and ~1e-11 for Dop853, which takes fewer steps).
     let rate = (G / R).sqrt();
     for v0 in [0.5, 1.2] {
         let (t_star, cos_star) = release(v0);
         let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: v0, y: 0.0 });
-        let mut solver = ContactDopri5::new(
-            &sys,
-            Dopri5::new(tol, tol),
-            &start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
+        let mut solver =
+            ContactAdaptive::new(&sys, method, &start, ContactOptions::default()).expect("solver");
         assert_eq!(solver.mode().rows, [RowMode::Active]);
         while solver.events().is_empty() {
             solver.step(10.0).expect("step");
         }
         let in_contact = solver.stats();
         let change = solver.events()[0];
-        let (t_bil, bil) = bilateral_release(v0, tol);
+        let (t_bil, bil) = bilateral(v0);
         let (steps_u, evals_u) = cost(in_contact);
         let (steps_b, evals_b) = cost(bil);
         eprintln!(
-            "v₀ = {v0}: released at t = {:.15} (closed form {t_star:.15}, {:+.1e}; bilateral \
+            "{}, v₀ = {v0}: released at t = {:.15} (closed form {t_star:.15}, {:+.1e}; bilateral \
              {:+.1e}); in contact, unilateral {steps_u} steps ({} rejected) {evals_u} evaluations \
              {} event evaluations, bilateral {steps_b} steps ({} rejected) {evals_b} evaluations",
+            P::NAME,
             change.t,
             change.t - t_star,
             t_bil - t_star,

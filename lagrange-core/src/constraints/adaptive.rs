@@ -1,5 +1,6 @@
-//! [`ContactDopri5`]: Dormand–Prince 5(4) with the constraint mode frozen over each step and the
-//! mode changes located on the step's dense output.
+//! [`ContactAdaptive`] ([`ContactDopri5`], [`ContactDop853`]): an adaptive Dormand–Prince pair
+//! with the constraint mode frozen over each step and the mode changes located on the step's dense
+//! output.
 
 // `!(x > 0)` is deliberate: it also treats NaN as not positive.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -8,9 +9,9 @@ use super::contact::{event_values, triggered_rows};
 use super::{accelerations_in_mode, cone, project, Constraints, ContactOptions, ContactRk4};
 use super::{Mode, ModeChange};
 use crate::error::{Error, Result};
-use crate::integrate::dopri5::{adaptive_step, dense_output, initial_step_on, trial, Controller};
-use crate::integrate::StopReason;
-use crate::integrate::{DenseOutput, Dopri5, Event, Observation, Outcome, Stats, Stepper};
+use crate::integrate::dopri5::{adaptive_step, initial_step_on, Controller};
+use crate::integrate::{DenseOutput, Dop853, Dopri5, EmbeddedPair, Event, Observation, Outcome};
+use crate::integrate::{Stats, Stepper, StopReason};
 use crate::model::{check_state, Coordinates, State};
 
 /// q̈ in `mode` (the constrained accelerations with the mode's rows enforced).
@@ -22,8 +23,18 @@ fn accelerations<'a, M: Constraints<N, K, C>, const N: usize, const K: usize, co
     move |t, q, v| Ok(accelerations_in_mode(model, t, q, v, &mode)?.accelerations)
 }
 
-/// Adaptive Dormand–Prince 5(4) ([`Dopri5`]) for mechanisms with unilateral contacts and friction,
-/// with the mode changes located: a solver of the common stepping interface ([`Stepper`]).
+/// [`ContactAdaptive`] with Dormand–Prince 5(4).
+pub type ContactDopri5<'m, M, const N: usize, const K: usize, const C: usize> =
+    ContactAdaptive<'m, Dopri5, M, N, K, C>;
+
+/// [`ContactAdaptive`] with Dormand–Prince 8(5,3) (its dense output of order 7 unless
+/// `dense: false`, which locates events on the cubic Hermite interpolant).
+pub type ContactDop853<'m, M, const N: usize, const K: usize, const C: usize> =
+    ContactAdaptive<'m, Dop853, M, N, K, C>;
+
+/// An adaptive Dormand–Prince pair ([`Dopri5`] or [`Dop853`], an [`EmbeddedPair`]) for mechanisms
+/// with unilateral contacts and friction, with the mode changes located: a solver of the common
+/// stepping interface ([`Stepper`]). [`ContactDopri5`] and [`ContactDop853`] name the two.
 ///
 /// A contact that can release (or a friction row that can stick or slip) makes the constrained
 /// accelerations a different function in each [`Mode`]; re-inferring the mode at every stage puts
@@ -32,13 +43,15 @@ fn accelerations<'a, M: Constraints<N, K, C>, const N: usize, const K: usize, co
 /// duration of a step, so every stage integrates one smooth right-hand side
 /// ([`accelerations_in_mode`]) and the error estimate is honest:
 ///
-/// 1. a step is attempted and accepted by Dopri5's own error control, in the mode of its start;
+/// 1. a step is attempted and accepted by the method's own error control, in the mode of its
+///    start;
 /// 2. the event functions of [`ContactRk4`] (a contact's gap c while separated, its multiplier λ
 ///    while closed, a slip velocity while sliding, the margin of static friction while sticking)
 ///    are evaluated at the step's end; where one fell below zero, its root is located on the
-///    step's dense output (order 4) by the Illinois method ([`DenseOutput::find_root`]), to
+///    step's dense output (order 4 for Dopri5, 7 for Dop853) by the Illinois method
+///    ([`DenseOutput::find_root`]), to
 ///    [`EVENT_TIME_TOLERANCE`](crate::integrate::dopri5::EVENT_TIME_TOLERANCE);
-/// 3. the step is cut at the earliest root: recomputed as one Dopri5 step from its start to the
+/// 3. the step is cut at the earliest root: recomputed as one step from its start to the
 ///    root (a step shorter than the accepted one, so its local error is within the tolerance as
 ///    well), projected onto the mode's rows, and the mode is switched there as [`ContactRk4`]
 ///    switches it (impact law with the [`ContactOptions::restitution`], release, stick or slip,
@@ -46,14 +59,15 @@ fn accelerations<'a, M: Constraints<N, K, C>, const N: usize, const K: usize, co
 /// 4. the next step starts in the new mode from the switched state; the step size the controller
 ///    proposed for the accepted step is kept.
 ///
-/// Without an event a step costs what a Dopri5 step costs (6 evaluations of q̈, FSAL) plus the
-/// event functions at its end ([`Stats::event_evaluations`]; one constrained solve when a contact
-/// is closed); a cut step adds 6 evaluations and one more at the switched state. A row whose event
+/// Without an event a step costs what a step of the method costs (Dopri5: 6 evaluations of q̈,
+/// FSAL; Dop853: 12 + 3 for the dense output) plus the event functions at its end
+/// ([`Stats::event_evaluations`]; one constrained solve when a contact is closed); a cut step adds
+/// the recomputed step and one evaluation at the switched state. A row whose event
 /// just fired is disarmed until its new event function is positive (no chattering), as in
 /// [`ContactRk4`]. Events are detected at step ends: an event function that dips below zero and
 /// back within one step is missed (bound `h_max` if that can happen).
 ///
-/// The [`Stepper::dense`] output of a step is Dopri5's over the step (up to the cut); the state
+/// The [`Stepper::dense`] output of a step is the method's over the step (up to the cut); the state
 /// after a step is the state after the switch (the post-impact velocities, say).
 ///
 /// ```
@@ -91,15 +105,16 @@ fn accelerations<'a, M: Constraints<N, K, C>, const N: usize, const K: usize, co
 /// assert!(outcome.stats.accepted < 20);
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
-pub struct ContactDopri5<
+pub struct ContactAdaptive<
     'm,
+    P: EmbeddedPair,
     M: Constraints<N, K, C>,
     const N: usize,
     const K: usize,
     const C: usize,
 > {
     model: &'m M,
-    settings: Dopri5,
+    method: P,
     /// The mode, the armed rows, the options and the mode changes so far; its transition switches
     /// modes.
     contact: ContactRk4<C>,
@@ -115,23 +130,31 @@ pub struct ContactDopri5<
     stats: Stats,
 }
 
-impl<'m, M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>
-    ContactDopri5<'m, M, N, K, C>
+impl<
+        'm,
+        P: EmbeddedPair,
+        M: Constraints<N, K, C>,
+        const N: usize,
+        const K: usize,
+        const C: usize,
+    > ContactAdaptive<'m, P, M, N, K, C>
 {
     /// A solver at `state`, whose mode is inferred by complementarity
     /// ([`infer_mode`](super::infer_mode)).
     ///
-    /// Errors: invalid settings ([`Dopri5::validate`]), the errors of [`ContactRk4::new`] (invalid
+    /// Errors: invalid settings ([`Dopri5::validate`], [`Dop853::validate`]), the errors of
+    /// [`ContactRk4::new`] (invalid
     /// options or parameters, a state off the constraints: project it first with
     /// [`consistent_state`](super::consistent_state)), accelerations that cannot be evaluated
     /// there.
     pub fn new(
         model: &'m M,
-        settings: Dopri5,
+        method: P,
         state: &State<M::Coords>,
         options: ContactOptions,
     ) -> Result<Self> {
-        settings.validate()?;
+        method.validate()?;
+        let settings = method.controls();
         let contact = ContactRk4::new(model, state, options)?;
         let (t, q, v) = (state.t, state.q.to_array(), state.v.to_array());
         let acc = accelerations(model, &contact.mode);
@@ -142,11 +165,11 @@ impl<'m, M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize
         };
         let h = match settings.h_init {
             Some(h) => h.min(settings.h_max),
-            None => initial_step_on(&acc, &settings, (t, &q, &v, &a), 5, &mut stats),
+            None => initial_step_on(&acc, &settings, (t, &q, &v, &a), P::ORDER, &mut stats),
         };
-        Ok(ContactDopri5 {
+        Ok(ContactAdaptive {
             model,
-            settings,
+            method,
             contact,
             t,
             q,
@@ -213,11 +236,11 @@ impl<'m, M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize
     }
 }
 
-impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> Stepper<M::Coords, N>
-    for ContactDopri5<'_, M, N, K, C>
+impl<P: EmbeddedPair, M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>
+    Stepper<M::Coords, N> for ContactAdaptive<'_, P, M, N, K, C>
 {
     fn name(&self) -> &'static str {
-        "ContactDopri5"
+        P::NAME
     }
     fn t(&self) -> f64 {
         self.t
@@ -239,11 +262,11 @@ impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> St
         self.stats.event_evaluations += n;
     }
     fn max_steps(&self) -> usize {
-        self.settings.max_steps
+        self.method.controls().max_steps
     }
 
-    /// One accepted Dopri5 step in the current mode, not past `t_limit`, cut at the first mode
-    /// change inside it (see the [type docs](ContactDopri5)). On error the solver (state, mode,
+    /// One accepted step in the current mode, not past `t_limit`, cut at the first mode change
+    /// inside it (see the [type docs](ContactAdaptive)). On error the solver (state, mode,
     /// event list, statistics) is unchanged.
     ///
     /// Errors: those of [`Dopri5Stepper::step`](crate::integrate::Dopri5Stepper::step) (a step
@@ -267,21 +290,23 @@ impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> St
             stats.evaluations += 1;
             acc(t, &q, &v)?
         };
-        let settings = self.settings;
-        let ((q1, v1, a1, k), h, t1) = adaptive_step(
-            "ContactDopri5",
-            &settings,
-            (0.2, 0.75),
+        let method = self.method;
+        let start = (t, &q, &v, &a);
+        let ((q1, v1, attempt), h, t1) = adaptive_step(
+            P::NAME,
+            &method.controls(),
+            P::EXPONENTS,
             t,
             t_limit,
             &mut control,
             &mut stats,
             |h, stats| {
-                trial::<M::Coords, N>(&settings, (t, &q, &v, &a), h, stats, &acc)
-                    .map(|(q1, v1, a1, err, k)| ((q1, v1, a1, k), err))
+                method
+                    .attempt::<M::Coords, N>(start, h, stats, &acc)
+                    .map(|(q1, v1, err, attempt)| ((q1, v1, attempt), err))
             },
         )?;
-        let mut dense = dense_output(t, h, (&q, &v), (&q1, &v1), &k);
+        let (a1, mut dense) = method.accept(start, h, attempt, &mut stats, &acc)?;
         stats.event_evaluations += 1;
         let phi1 = event_values(model, t1, &q1, &v1, &mode)?;
         let triggered = triggered_rows(model, t, &q, &v, &mode, &armed, &phi1);
@@ -305,15 +330,10 @@ impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> St
                     dense = DenseOutput::constant(t, &q, &v);
                 } else if root < t1 {
                     // Cut: the step recomputed from its start to the event.
-                    let (qc, vc, ac, _, kc) = trial::<M::Coords, N>(
-                        &settings,
-                        (t, &q, &v, &a),
-                        root - t,
-                        &mut stats,
-                        &acc,
-                    )?;
-                    dense = dense_output(t, root - t, (&q, &v), (&qc, &vc), &kc);
-                    (qe, ve, ae) = (qc, vc, ac);
+                    let (qc, vc, _, cut) =
+                        method.attempt::<M::Coords, N>(start, root - t, &mut stats, &acc)?;
+                    (ae, dense) = method.accept(start, root - t, cut, &mut stats, &acc)?;
+                    (qe, ve) = (qc, vc);
                 }
                 change = Some(row);
             }
@@ -382,6 +402,35 @@ impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> St
     }
 }
 
+/// [`Dopri5::integrate_contacts`] and [`Dop853::integrate_contacts`].
+#[allow(clippy::type_complexity)]
+fn integrate_contacts<
+    P: EmbeddedPair,
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    method: P,
+    model: &M,
+    state: &mut State<M::Coords>,
+    t_end: f64,
+    options: ContactOptions,
+    events: &mut [Event<'_, M::Coords>],
+    observer: impl FnMut(Observation<'_, M::Coords, N>),
+) -> Result<(Outcome<M::Coords>, Vec<ModeChange>)> {
+    if !(t_end.is_finite() && t_end >= state.t) {
+        return Err(Error::InvalidEndTime { t: state.t, t_end });
+    }
+    let mut solver = ContactAdaptive::new(model, method, state, options)?;
+    let outcome = solver.integrate(t_end, events, observer)?;
+    *state = match outcome.reason {
+        StopReason::Event(hit) => hit.state,
+        _ => solver.state(),
+    };
+    Ok((outcome, solver.contact.events))
+}
+
 impl Dopri5 {
     /// Integrates a mechanism with unilateral contacts or friction from `state` to `t_end` with the
     /// mode changes located ([`ContactDopri5`]), calling `observer` after every step and for every
@@ -437,15 +486,60 @@ impl Dopri5 {
         events: &mut [Event<'_, M::Coords>],
         observer: impl FnMut(Observation<'_, M::Coords, N>),
     ) -> Result<(Outcome<M::Coords>, Vec<ModeChange>)> {
-        if !(t_end.is_finite() && t_end >= state.t) {
-            return Err(Error::InvalidEndTime { t: state.t, t_end });
-        }
-        let mut solver = ContactDopri5::new(model, *self, state, options)?;
-        let outcome = solver.integrate(t_end, events, observer)?;
-        *state = match outcome.reason {
-            StopReason::Event(hit) => hit.state,
-            _ => solver.state(),
-        };
-        Ok((outcome, solver.contact.events))
+        integrate_contacts(*self, model, state, t_end, options, events, observer)
+    }
+}
+
+impl Dop853 {
+    /// [`Dopri5::integrate_contacts`] with Dormand–Prince 8(5,3) ([`ContactDop853`]).
+    ///
+    /// ```
+    /// use lagrange_core::constraints::{ConstraintKind, ContactOptions, Constraints, RowMode};
+    /// use lagrange_core::integrate::Dop853;
+    /// use lagrange_core::{Model, Scalar, State};
+    ///
+    /// /// A unit mass falling onto the floor y ≥ 0.
+    /// struct Ball;
+    /// impl Model<1, 1> for Ball {
+    ///     type Coords = [f64; 1];
+    ///     const RHEONOMIC: bool = false;
+    ///     const HAS_POTENTIAL: bool = true;
+    ///     const HAS_FORCES: bool = false;
+    ///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    ///     fn masses(&self) -> [f64; 1] { [1.0] }
+    ///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] { [q[0]] }
+    ///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D { x[0] * 9.81 }
+    /// }
+    /// impl Constraints<1, 1, 1> for Ball {
+    ///     const NAMES: [&'static str; 1] = ["floor"];
+    ///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
+    ///     fn position_constraints<D: Scalar>(&self, _t: D, q: &[D; 1], _x: &[D; 1]) -> [D; 1] { [q[0]] }
+    /// }
+    ///
+    /// let mut s = State::new(0.0, [1.0], [0.0]);
+    /// let (_, changes) = Dop853::new(1e-10, 1e-10)
+    ///     .integrate_contacts(&Ball, &mut s, 1.0, ContactOptions::default(), &mut [], |_| {})?;
+    /// // A plastic landing at √(2/g) (a quadratic: exact but for the root finder and round-off).
+    /// assert!((changes[0].t - (2.0f64 / 9.81).sqrt()).abs() < 1e-12);
+    /// assert_eq!((changes.len(), changes[0].to), (1, RowMode::Active));
+    /// assert!(s.q[0].abs() < 1e-12 && s.t == 1.0);
+    /// # Ok::<(), lagrange_core::Error>(())
+    /// ```
+    #[allow(clippy::type_complexity)]
+    pub fn integrate_contacts<
+        M: Constraints<N, K, C>,
+        const N: usize,
+        const K: usize,
+        const C: usize,
+    >(
+        &self,
+        model: &M,
+        state: &mut State<M::Coords>,
+        t_end: f64,
+        options: ContactOptions,
+        events: &mut [Event<'_, M::Coords>],
+        observer: impl FnMut(Observation<'_, M::Coords, N>),
+    ) -> Result<(Outcome<M::Coords>, Vec<ModeChange>)> {
+        integrate_contacts(*self, model, state, t_end, options, events, observer)
     }
 }

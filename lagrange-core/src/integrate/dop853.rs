@@ -506,7 +506,7 @@ impl Dop853 {
     }
 
     /// The settings as the shared embedded-pair settings.
-    fn shared(&self) -> Dopri5 {
+    pub(crate) fn shared(&self) -> Dopri5 {
         Dopri5 {
             rtol: self.rtol,
             atol: self.atol,
@@ -564,13 +564,15 @@ pub struct Dop853Stepper<'m, M: Mechanism<N>, const N: usize> {
     stats: Stats,
 }
 
-/// One trial step: the new (q, v), the error norm and the stages (position and velocity parts).
-pub(crate) struct Trial<const N: usize> {
-    q1: [f64; N],
-    v1: [f64; N],
-    err: f64,
-    kq: [[f64; N]; 16],
-    ka: [[f64; N]; 16],
+/// One trial step of [`Dop853`]: the new (q, v), the error norm and the stages (position and
+/// velocity parts).
+#[derive(Clone, Copy, Debug)]
+pub struct Trial<const N: usize> {
+    pub(crate) q1: [f64; N],
+    pub(crate) v1: [f64; N],
+    pub(crate) err: f64,
+    pub(crate) kq: [[f64; N]; 16],
+    pub(crate) ka: [[f64; N]; 16],
 }
 
 impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
