@@ -67,6 +67,11 @@ pub type ContactDop853<'m, M, const N: usize, const K: usize, const C: usize> =
 /// [`ContactRk4`]. Events are detected at step ends: an event function that dips below zero and
 /// back within one step is missed (bound `h_max` if that can happen).
 ///
+/// Of the [`ContactOptions`], the restitution and [`max_events_per_step`](ContactOptions::max_events_per_step)
+/// (here: mode changes at one instant, which do not advance time) apply; event times are located
+/// to the root finder's tolerance on the dense output, not to `event_tolerance` (which is
+/// [`ContactRk4`]'s, on its sub-steps).
+///
 /// The [`Stepper::dense`] output of a step is the method's over the step (up to the cut); the state
 /// after a step is the state after the switch (the post-impact velocities, say).
 ///
