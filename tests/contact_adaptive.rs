@@ -118,33 +118,73 @@ const M: f64 = 0.7;
 const R: f64 = 1.5;
 const G: f64 = 9.81;
 
-/// The closed form of the release from the top with speed v₀: (t*, cos θ*).
-fn release(v0: f64) -> (f64, f64) {
-    let cos_star = (2.0 + v0 * v0 / (G * R)) / 3.0;
-    let theta_star = cos_star.acos();
-    let speed = |th: f64| (v0 * v0 + 2.0 * G * R * (1.0 - th.cos())).sqrt();
-    // 400 panels of 5-point Gauss–Legendre on an analytic integrand (v ≥ v₀ > 0): exact to
-    // round-off.
-    let t_star = gauss_legendre(|th| R / speed(th), 0.0, theta_star, 400);
-    (t_star, cos_star)
+/// Where the particle starts: at angle θ₀ from the top, with speed v₀ along the sphere.
+#[derive(Clone, Copy, Debug)]
+struct Start {
+    theta0: f64,
+    v0: f64,
 }
+
+impl Start {
+    /// (position, velocity) in the plane of the great circle.
+    fn state(self) -> ([f64; 2], [f64; 2]) {
+        let (sin, cos) = self.theta0.sin_cos();
+        ([R * sin, R * cos], [self.v0 * cos, -self.v0 * sin])
+    }
+
+    /// The speed at angle θ, by energy: v² = v₀² + 2gR(cos θ₀ − cos θ), the difference written
+    /// 2 sin((θ + θ₀)/2) sin((θ − θ₀)/2) so that it keeps its relative accuracy near θ₀.
+    fn speed(self, theta: f64) -> f64 {
+        let drop = 2.0 * (0.5 * (theta + self.theta0)).sin() * (0.5 * (theta - self.theta0)).sin();
+        (self.v0 * self.v0 + 2.0 * G * R * drop).sqrt()
+    }
+
+    /// The closed form of the release: (t*, cos θ*). The normal force m(g cos θ − v²/R) vanishes
+    /// at cos θ* = (2 cos θ₀ + v₀²/(gR))/3, reached at t* = ∫_θ₀^θ* R dθ / v(θ).
+    fn release(self) -> (f64, f64) {
+        let cos_star = (2.0 * self.theta0.cos() + self.v0 * self.v0 / (G * R)) / 3.0;
+        let theta_star = cos_star.acos();
+        // With θ = θ₀ + u², dθ = 2u du: the integrand 2uR/v(θ₀ + u²) is analytic in u also from
+        // rest (v² = u²·(2gR sin θ₀ + O(u²)) then), so 400 panels of 5-point Gauss–Legendre are
+        // exact to round-off.
+        let integrand = |u: f64| 2.0 * u * R / self.speed(self.theta0 + u * u);
+        let end = (theta_star - self.theta0).sqrt();
+        (gauss_legendre(integrand, 0.0, end, 400), cos_star)
+    }
+}
+
+/// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
+const STARTS: [Start; 3] = [
+    Start {
+        theta0: 0.1,
+        v0: 0.0,
+    },
+    Start {
+        theta0: 0.0,
+        v0: 0.5,
+    },
+    Start {
+        theta0: 0.0,
+        v0: 1.2,
+    },
+];
 
 /// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
 fn cost(stats: Stats) -> (usize, usize) {
     (stats.accepted + stats.rejected, stats.evaluations)
 }
 
-/// The bilateral sphere in Dopri5 from the top with speed v₀, stopped where its multiplier falls
-/// through 0: the release time and the cost.
-fn bilateral_release(v0: f64, tol: f64) -> (f64, Stats) {
-    bilateral_release_in(v0, |sys, s, events| {
+/// The bilateral sphere in Dopri5 from `start`, stopped where its multiplier falls through 0: the
+/// release time and the cost.
+fn bilateral_release(start: Start, tol: f64) -> (f64, Stats) {
+    bilateral_release_in(start, |sys, s, events| {
         Dopri5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
     })
 }
 
 /// [`bilateral_release`] with the integration `integrate` (Dopri5 or Dop853).
 fn bilateral_release_in(
-    v0: f64,
+    start: Start,
     integrate: impl FnOnce(
         &bilateral::Sphere,
         &mut bilateral::State,
@@ -153,7 +193,8 @@ fn bilateral_release_in(
 ) -> (f64, Stats) {
     use bilateral::{Coords, Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
-    let mut s = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: v0, y: 0.0 });
+    let ([x, y], [vx, vy]) = start.state();
+    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
     let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
     let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
     let outcome = integrate(&sys, &mut s, &mut events).expect("integration");
@@ -165,8 +206,8 @@ fn bilateral_release_in(
 
 #[test]
 fn unilateral_sphere_releases_on_time_at_the_cost_of_the_bilateral_one() {
-    sphere_release_against_closed_form(Dopri5::new(1e-13, 1e-13), 1e-13, |v0| {
-        bilateral_release(v0, 1e-13)
+    sphere_release_against_closed_form(Dopri5::new(1e-13, 1e-13), 1e-13, |start| {
+        bilateral_release(start, 1e-13)
     });
 }
 
@@ -174,20 +215,20 @@ fn unilateral_sphere_releases_on_time_at_the_cost_of_the_bilateral_one() {
 fn unilateral_sphere_in_dop853() {
     // Dop853 shares the contact solver: the same checks, with its error bounded as below.
     let tol = 1e-13;
-    sphere_release_against_closed_form(Dop853::new(tol, tol), tol, |v0| {
-        bilateral_release_in(v0, |sys, s, events| {
+    sphere_release_against_closed_form(Dop853::new(tol, tol), tol, |start| {
+        bilateral_release_in(start, |sys, s, events| {
             Dop853::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
         })
     });
 }
 
-/// The sphere declared unilateral in `method` (at tolerance `tol`), released from the top at
-/// v₀ = 0.5 and 1.2: release time and position against the closed form, cost in contact against
+/// The sphere declared unilateral in `method` (at tolerance `tol`), released from each of the
+/// [`STARTS`]: release time and position against the closed form, cost in contact against
 /// `bilateral` (the bilateral declaration in the same method), the parabola after.
 fn sphere_release_against_closed_form<P: EmbeddedPair>(
     method: P,
     tol: f64,
-    bilateral: impl Fn(f64) -> (f64, Stats),
+    bilateral: impl Fn(Start) -> (f64, Stats),
 ) {
     use unilateral::{Coords, Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
@@ -195,29 +236,31 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
     // for Dopri5): the root finder stops within 1e-13, and λ on the dense output is off by the
     // solution's error δ in (q, q̇) (max norm), which moves the root by δ·|∇λ|₁/|λ̇|. With
     // λ = m(g cos θ − v²/R): |∇λ|₁ ≤ √2·m(g + 2v)/R and |λ̇| = 3 m g v sin θ*/R at release, a
-    // ratio ≤ 0.34 for both speeds (v ≈ 3.1 there). δ: each accepted step commits a local error
+    // ratio ≤ 0.34 for every start (v ≈ 3.1 there). δ: each accepted step commits a local error
     // ≤ 2·tol·(1 + |y|) ≤ 8.4 tol per component (error norm ≤ 1 over 2N = 4 components,
     // |y| ≤ 3.2), grown at most like e^{λ₊(t* − s)}, λ₊ = √(g/R) (the rate off the unstable top);
     // with the n steps spread over [0, t*], δ ≤ (n/t*)·(e^{λ₊t*} − 1)/λ₊ · 8.4 tol, and the
     // dense output adds one more local error (n + 1 below). tol = 1e-13 makes the bound ~1e-10
     // for Dopri5 (and ~1e-11 for Dop853, which takes fewer steps).
     let rate = (G / R).sqrt();
-    for v0 in [0.5, 1.2] {
-        let (t_star, cos_star) = release(v0);
-        let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: v0, y: 0.0 });
+    for start in STARTS {
+        let Start { theta0, v0 } = start;
+        let (t_star, cos_star) = start.release();
+        let ([x, y], [vx, vy]) = start.state();
+        let state = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
         let mut solver =
-            ContactAdaptive::new(&sys, method, &start, ContactOptions::default()).expect("solver");
+            ContactAdaptive::new(&sys, method, &state, ContactOptions::default()).expect("solver");
         assert_eq!(solver.mode().rows, [RowMode::Active]);
         while solver.events().is_empty() {
             solver.step(10.0).expect("step");
         }
         let in_contact = solver.stats();
         let change = solver.events()[0];
-        let (t_bil, bil) = bilateral(v0);
+        let (t_bil, bil) = bilateral(start);
         let (steps_u, evals_u) = cost(in_contact);
         let (steps_b, evals_b) = cost(bil);
         eprintln!(
-            "{}, v₀ = {v0}: released at t = {:.15} (closed form {t_star:.15}, {:+.1e}; bilateral \
+            "{}, θ₀ = {theta0}, v₀ = {v0}: released at t = {:.15} (closed form {t_star:.15}, {:+.1e}; bilateral \
              {:+.1e}); in contact, unilateral {steps_u} steps ({} rejected) {evals_u} evaluations \
              {} event evaluations, bilateral {steps_b} steps ({} rejected) {evals_b} evaluations",
             P::NAME,
@@ -238,7 +281,7 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
         eprintln!("    bound on |t − t*|: {bound:.1e} (δ ≤ {delta:.1e})");
         assert!(
             (change.t - t_star).abs() < bound,
-            "v₀ = {v0}: released at {}, closed form {t_star}",
+            "θ₀ = {theta0}, v₀ = {v0}: released at {}, closed form {t_star}",
             change.t
         );
         // The position at the release: cos θ = y/|r| against cos θ*, off by δ/R plus
@@ -247,19 +290,19 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
         let cos = s.q.y / s.q.x.hypot(s.q.y);
         assert!(
             (cos - cos_star).abs() < delta / R + 2.0 * bound,
-            "v₀ = {v0}: cos θ = {cos}, cos θ* = {cos_star}"
+            "θ₀ = {theta0}, v₀ = {v0}: cos θ = {cos}, cos θ* = {cos_star}"
         );
         // The cost in contact: within 2× of the bilateral declaration's (which stops at the same
         // instant by a user event on its multiplier).
         assert!(
             steps_u as f64 <= 2.0 * steps_b as f64 && evals_u as f64 <= 2.0 * evals_b as f64,
-            "v₀ = {v0}: unilateral {steps_u} steps / {evals_u} evaluations, bilateral {steps_b} / \
+            "θ₀ = {theta0}, v₀ = {v0}: unilateral {steps_u} steps / {evals_u} evaluations, bilateral {steps_b} / \
              {evals_b}"
         );
 
         // After the release: a projectile from the closed-form release state, x* = R(sin θ*,
-        // cos θ*) with speed v* = √(v₀² + 2gR(1 − cos θ*)) along the tangent (cos θ*, −sin θ*),
-        // 0.3 s later. Dopri5 integrates the parabola exactly (quadratic in t), so the error is the
+        // cos θ*) with speed v* = √(v₀² + 2gR(cos θ₀ − cos θ*)) along the tangent (cos θ*, −sin θ*),
+        // 0.3 s later. Both methods integrate the parabola exactly (quadratic in t), so the error is the
         // release state's: δ in (q, q̇), carried to (1 + τ)·δ over τ = 0.3 s of free flight (at the
         // release λ = 0, so leaving the sphere a time Δt early or late changes the path by
         // O(|λ̇|Δt²/m) ≈ 1e-18 only).
@@ -272,7 +315,7 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
             "no second contact: it flies off the sphere"
         );
         let sin_star = (1.0 - cos_star * cos_star).sqrt();
-        let v_star = (v0 * v0 + 2.0 * G * R * (1.0 - cos_star)).sqrt();
+        let v_star = start.speed(cos_star.acos());
         let tau = t_flight - t_star;
         let x = R * sin_star + v_star * cos_star * tau;
         let y = R * cos_star - v_star * sin_star * tau - 0.5 * G * tau * tau;
@@ -439,7 +482,7 @@ fn cost_in_contact_table() {
             .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
             .expect("integration")
             .stats;
-        let (_, bil) = bilateral_release(v0, tol);
+        let (_, bil) = bilateral_release(Start { theta0: 0.0, v0 }, tol);
         let show = |s: Stats| {
             format!(
                 "{} accepted + {} rejected, {} evaluations",
