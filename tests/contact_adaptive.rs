@@ -302,9 +302,9 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
 
         // After the release: a projectile from the closed-form release state, x* = R(sin θ*,
         // cos θ*) with speed v* = √(v₀² + 2gR(cos θ₀ − cos θ*)) along the tangent (cos θ*, −sin θ*),
-        // 0.3 s later. Both methods integrate the parabola exactly (quadratic in t), so the error is the
-        // release state's: δ in (q, q̇), carried to (1 + τ)·δ over τ = 0.3 s of free flight (at the
-        // release λ = 0, so leaving the sphere a time Δt early or late changes the path by
+        // 0.3 s later. Both methods integrate the parabola exactly (quadratic in t), so the error
+        // is the release state's: δ in (q, q̇), carried to (1 + τ)·δ over τ = 0.3 s of free flight
+        // (at the release λ = 0, so leaving the sphere a time Δt early or late changes the path by
         // O(|λ̇|Δt²/m) ≈ 1e-18 only).
         let t_flight = t_star + 0.3;
         let outcome = solver.integrate(t_flight, &mut [], |_| {}).expect("flight");
