@@ -581,3 +581,47 @@ fn puck_on_a_rough_plane_stops_at_the_closed_form_point() {
         previous = Some(errors);
     }
 }
+
+#[test]
+fn bouncing_ball_comes_to_rest_at_the_accumulation_point() {
+    use ball::{Ball, Coords, State};
+    use lagrange::constraints::CONSISTENCY_TOLERANCE;
+    let sys = Ball { m: 0.3, g: G };
+    let height = 1.3;
+    let t1 = (2.0 * height / G).sqrt();
+    for e in [0.6, 0.9] {
+        // Newton's law ċ⁺ = −e ċ⁻: flights of 2e·v/g, 2e²·v/g, … after the first landing at t₁
+        // with v = g t₁, so the bounces accumulate at t∞ = t₁ (1 + e)/(1 − e) (a Zeno sequence).
+        // The impact law stops bouncing once the rebound speed e·v would be below
+        // CONSISTENCY_TOLERANCE, which leaves out flights summing to at most
+        // 2·tol/(g(1 − e)); each landing is located to 1e-13, an error that shortens or lengthens
+        // each later flight by 2e per unit, at most n·1e-13·(1 + e)/(1 − e) over n landings.
+        let t_inf = t1 * (1.0 + e) / (1.0 - e);
+        let mut s = State::new(0.0, Coords { x: 0.2, y: height }, Coords { x: 0.5, y: 0.0 });
+        let options = ContactOptions {
+            restitution: e,
+            ..Default::default()
+        };
+        let (outcome, changes) = Dopri5::new(1e-10, 1e-10)
+            .integrate_contacts(&sys, &mut s, 30.0, options, &mut [], |_| {})
+            .expect("integration");
+        let last = *changes.last().expect("landings");
+        let bound = 2.0 * CONSISTENCY_TOLERANCE / (G * (1.0 - e))
+            + changes.len() as f64 * 1e-13 * (1.0 + e) / (1.0 - e);
+        eprintln!(
+            "e = {e}: {} landings, at rest from t = {:.12} (closed form {t_inf:.12}, bound \
+             {bound:.1e}); {} steps, {} evaluations",
+            changes.len(),
+            last.t,
+            outcome.stats.accepted + outcome.stats.rejected,
+            outcome.stats.evaluations
+        );
+        assert_eq!(last.to, RowMode::Active);
+        assert!((last.t - t_inf).abs() < bound, "{} against {t_inf}", last.t);
+        // At rest on the floor from then on (the contact projected to round-off), still sliding at
+        // 0.5 m/s exactly: impulses and projections act along the floor's normal (0, 1) only.
+        assert!(s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12 && s.v.x == 0.5);
+        // One step per flight, and a few more: the motion is polynomial.
+        assert!(outcome.stats.accepted < changes.len() + 10);
+    }
+}
