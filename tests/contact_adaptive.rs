@@ -8,7 +8,7 @@
 //!   cos θ* = (2 + v₀²/(gR))/3, t* = ∫₀^θ* R dθ / v(θ)), then the parabola after it; steps and
 //!   evaluations in contact against the bilateral declaration's.
 //! - A ball dropped on a floor declared `#[unilateral]`: impact at √(2h/g), bounces with Newton's
-//!   restitution law.
+//!   restitution law, and comes to rest at the accumulation point of its bounces.
 //! - A block sent up a rough ramp (`#[friction]`): it stops at t_s = u/(g(sin α + μₖ cos α)) and
 //!   sticks or slides back, as μₛ decides.
 //! - A puck on a rough plane (`#[friction]` with a `Vec2` slip velocity, the friction cone),
