@@ -53,7 +53,7 @@ pub use lagrange_core::analysis::{
 };
 pub use lagrange_core::constraints::{
     consistent_state, consistent_state_holding, constraint_forces, ConstraintForces, Constraints,
-    ContactOptions, ContactRk4, ModeChange, RowMode,
+    ContactAdaptive, ContactDop853, ContactDopri5, ContactOptions, ContactRk4, ModeChange, RowMode,
 };
 pub use lagrange_core::error::{Error, Result};
 /// The scalar every declaration function is evaluated on (`f64` or a dual number): the bound of a

@@ -417,6 +417,16 @@ fn constrained_cases<M, const N: usize, const K: usize, const C: usize>(
             }
         },
     );
+    tally.run(
+        || label("Dopri5::integrate_contacts"),
+        || {
+            let t_end = s.t + set.h;
+            stepping(s, |state| {
+                set.dopri5
+                    .integrate_contacts(sys, state, t_end, set.contact, &mut [], |_| {})
+            })
+        },
+    );
 }
 
 /// Replaces one input at a time by each bad value: state components, parameters, step size and

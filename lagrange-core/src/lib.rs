@@ -38,7 +38,7 @@ pub use analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability,
     ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization, NormalModes, Stability,
 };
-pub use constraints::{Constraints, ContactRk4};
+pub use constraints::{Constraints, ContactDopri5, ContactRk4};
 pub use error::{Error, Result};
 pub use geometry::{
     planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3,

@@ -245,3 +245,54 @@ fn every_integrator_steps_without_allocating() {
     });
     assert_eq!(n, 0, "Radau5::integrate allocated {n} times");
 }
+
+/// A particle sliding on a floor y ≥ 0 that can only push.
+struct SlidingOnFloor;
+
+impl Model<2, 2> for SlidingOnFloor {
+    type Coords = [f64; 2];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
+        *q
+    }
+    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
+        x[1] * D::from(9.81) + x[0] * x[0] * D::from(0.5)
+    }
+}
+
+impl lagrange_core::constraints::Constraints<2, 2, 1> for SlidingOnFloor {
+    const NAMES: [&'static str; 1] = ["floor"];
+    const KINDS: [lagrange_core::constraints::ConstraintKind; 1] =
+        [lagrange_core::constraints::ConstraintKind::Unilateral];
+    fn position_constraints<D: Scalar>(&self, _t: D, q: &[D; 2], _x: &[D; 2]) -> [D; 1] {
+        [q[1]]
+    }
+}
+
+#[test]
+fn the_adaptive_contact_solver_steps_without_allocating() {
+    use lagrange_core::constraints::{ContactDopri5, ContactOptions};
+    // In contact (λ = g > 0) and oscillating along the floor on a spring: steps without a mode
+    // change, each with its event functions, the projection and the dense output.
+    let start = State::new(0.0, [1.0, 0.0], [0.0, 0.0]);
+    let settings = Dopri5::new(1e-9, 1e-9);
+    let mut solver =
+        ContactDopri5::new(&SlidingOnFloor, settings, &start, ContactOptions::default()).unwrap();
+    solver.step(10.0).unwrap();
+    let n = allocations(|| {
+        while solver.t() < 10.0 {
+            solver.step(10.0).unwrap();
+            std::hint::black_box(solver.dense().eval(solver.t()));
+        }
+    });
+    assert_eq!(n, 0, "ContactDopri5 step allocated {n} times");
+    assert!(solver.events().is_empty() && solver.stats().accepted > 10);
+}

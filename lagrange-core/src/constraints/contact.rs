@@ -130,8 +130,8 @@ pub struct ModeChange {
 /// [`ContactRk4::reset`].
 #[derive(Clone, Debug)]
 pub struct ContactRk4<const C: usize> {
-    mode: Mode<C>,
-    armed: [bool; C],
+    pub(super) mode: Mode<C>,
+    pub(super) armed: [bool; C],
     /// The options.
     pub options: ContactOptions,
     /// Every mode change so far, in order (grows only when an event happens).
@@ -156,7 +156,12 @@ fn substep<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usi
 }
 
 /// The event function of every row in `mode` (+∞ for rows without one).
-fn event_values<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+pub(super) fn event_values<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
     model: &M,
     t: f64,
     q: &[f64; N],
@@ -206,6 +211,38 @@ fn event_values<M: Constraints<N, K, C>, const N: usize, const K: usize, const C
         }
         _ => f64::INFINITY,
     }))
+}
+
+/// The rows whose event fired over a (sub)step from (t, q, v) in `mode`, given the event functions
+/// `phi_end` at its end: armed rows whose function is negative there, and also a contact that
+/// bounced off (disarmed, separating at the start) and closes again within the same step.
+pub(super) fn triggered_rows<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    mode: &Mode<C>,
+    armed: &[bool; C],
+    phi_end: &[f64; C],
+) -> [bool; C] {
+    let separated = |i: usize| {
+        matches!(
+            (M::KINDS[i], mode.rows[i]),
+            (ConstraintKind::Unilateral, RowMode::Inactive)
+        )
+    };
+    let separating: [bool; C] = if (0..C).any(|i| !armed[i] && phi_end[i] < 0.0 && separated(i)) {
+        let rate = super::constraint_rows(model, t, q, v).rate;
+        std::array::from_fn(|i| separated(i) && rate[i] > CONSISTENCY_TOLERANCE)
+    } else {
+        [false; C]
+    };
+    std::array::from_fn(|i| (armed[i] || separating[i]) && phi_end[i] < 0.0)
 }
 
 impl<const C: usize> ContactRk4<C> {
@@ -287,28 +324,7 @@ impl<const C: usize> ContactRk4<C> {
             cone::refresh_references(model, t, &q, &v, span, &mut mode)?;
             let (q1, v1) = substep(model, t, &q, &v, span, &mode)?;
             let phi1 = event_values(model, t_end, &q1, &v1, &mode)?;
-            // A contact that bounced off (disarmed, separating at the start of the sub-step) can
-            // close again within the same step: it takes part too.
-            let separating: [bool; C] = if (0..C).any(|i| {
-                !armed[i]
-                    && phi1[i] < 0.0
-                    && matches!(
-                        (M::KINDS[i], mode.rows[i]),
-                        (ConstraintKind::Unilateral, RowMode::Inactive)
-                    )
-            }) {
-                let rate = super::constraint_rows(model, t, &q, &v).rate;
-                std::array::from_fn(|i| {
-                    matches!(
-                        (M::KINDS[i], mode.rows[i]),
-                        (ConstraintKind::Unilateral, RowMode::Inactive)
-                    ) && rate[i] > CONSISTENCY_TOLERANCE
-                })
-            } else {
-                [false; C]
-            };
-            let triggered: [bool; C] =
-                std::array::from_fn(|i| (armed[i] || separating[i]) && phi1[i] < 0.0);
+            let triggered = triggered_rows(model, t, &q, &v, &mode, &armed, &phi1);
             if !triggered.iter().any(|&b| b) {
                 for i in 0..C {
                     armed[i] |= phi1[i] > 0.0;
@@ -438,7 +454,7 @@ impl<const C: usize> ContactRk4<C> {
 
     /// Switches row `row` after its event at (t, q, v): impact, release, slip stop or stick break,
     /// then restores complementarity of the whole mode and projects onto it.
-    fn transition<M: Constraints<N, K, C>, const N: usize, const K: usize>(
+    pub(super) fn transition<M: Constraints<N, K, C>, const N: usize, const K: usize>(
         &self,
         model: &M,
         t: f64,

@@ -94,9 +94,12 @@
 //! on the state before a step (refusing a state that violates the constraints) and
 //! [`Mechanism::project`](crate::Mechanism::project) on the new (q, q̇) after it, before writing it
 //! back; both default to no-ops, so unconstrained mechanisms pay nothing. [`Rk4`](crate::Rk4) does.
-//! Unilateral contacts and friction should be integrated with [`ContactRk4`], which locates mode
-//! changes; other integrators re-infer the mode at every evaluation of q̈ ([`accelerations`]), which
-//! is right between events but puts each event somewhere inside a step.
+//! Unilateral contacts and friction should be integrated with [`ContactRk4`] (fixed step) or
+//! [`ContactDopri5`] (adaptive, [`Dopri5::integrate_contacts`](crate::integrate::Dopri5::integrate_contacts)),
+//! which keep the mode fixed over a step and locate mode changes; other integrators re-infer the
+//! mode at every evaluation of q̈ ([`accelerations`]), which is right between events but puts each
+//! event somewhere inside a step (an adaptive method then rejects and shrinks its steps around
+//! every switch, and a contact drifting by round-off chatters between modes).
 //!
 //! # Cost
 //!
@@ -197,6 +200,7 @@
 // `!(x > tol)` is deliberate: it also rejects NaN.
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
+mod adaptive;
 mod cone;
 mod consistency;
 mod contact;
@@ -206,6 +210,7 @@ mod projection;
 mod rows;
 mod solve;
 
+pub use adaptive::{ContactAdaptive, ContactDop853, ContactDopri5};
 pub use consistency::{
     check_consistent, check_velocity_rows_affine, consistent_state, consistent_state_holding,
     CONSISTENCY_TOLERANCE,

@@ -506,7 +506,7 @@ impl Dop853 {
     }
 
     /// The settings as the shared embedded-pair settings.
-    fn shared(&self) -> Dopri5 {
+    pub(crate) fn shared(&self) -> Dopri5 {
         Dopri5 {
             rtol: self.rtol,
             atol: self.atol,
@@ -564,13 +564,15 @@ pub struct Dop853Stepper<'m, M: Mechanism<N>, const N: usize> {
     stats: Stats,
 }
 
-/// One trial step: the new (q, v), the error norm and the stages (position and velocity parts).
-struct Trial<const N: usize> {
-    q1: [f64; N],
-    v1: [f64; N],
-    err: f64,
-    kq: [[f64; N]; 16],
-    ka: [[f64; N]; 16],
+/// One trial step of [`Dop853`]: the new (q, v), the error norm and the stages (position and
+/// velocity parts).
+#[derive(Clone, Copy, Debug)]
+pub struct Trial<const N: usize> {
+    pub(crate) q1: [f64; N],
+    pub(crate) v1: [f64; N],
+    pub(crate) err: f64,
+    pub(crate) kq: [[f64; N]; 16],
+    pub(crate) ka: [[f64; N]; 16],
 }
 
 impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
@@ -622,142 +624,6 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
         self.dense.t_end() - self.dense.t_start()
     }
 
-    /// (q, v) at stage i (0-based) from the stages before it: y + h Σⱼ aᵢⱼ kⱼ.
-    fn stage_point(
-        &self,
-        h: f64,
-        i: usize,
-        kq: &[[f64; N]; 16],
-        ka: &[[f64; N]; 16],
-    ) -> ([f64; N], [f64; N]) {
-        let mut q = self.q;
-        let mut v = self.v;
-        for j in 0..i {
-            let a = A[i][j];
-            if a != 0.0 {
-                for n in 0..N {
-                    q[n] += h * a * kq[j][n];
-                    v[n] += h * a * ka[j][n];
-                }
-            }
-        }
-        (q, v)
-    }
-
-    /// Evaluates stage i (0-based) into kq[i], ka[i].
-    fn evaluate_stage(
-        &self,
-        h: f64,
-        i: usize,
-        kq: &mut [[f64; N]; 16],
-        ka: &mut [[f64; N]; 16],
-        stats: &mut Stats,
-    ) -> Result<()> {
-        let (q, v) = self.stage_point(h, i, kq, ka);
-        let t = self.t + C[i] * h;
-        stats.evaluations += 1;
-        ka[i] = self
-            .mechanism
-            .accelerations_at(t, &q, &v)
-            .map_err(|e| diagnose(self.mechanism, t, &q, &v, e))?;
-        kq[i] = v;
-        Ok(())
-    }
-
-    /// One trial step of size h (stages 1…12, the 8th-order solution and the error norm).
-    fn attempt(&self, h: f64, stats: &mut Stats) -> Result<Trial<N>> {
-        let mut kq = [[0.0; N]; 16];
-        let mut ka = [[0.0; N]; 16];
-        kq[0] = self.v;
-        ka[0] = self.a;
-        for i in 1..12 {
-            self.evaluate_stage(h, i, &mut kq, &mut ka, stats)?;
-        }
-        let mut q1 = self.q;
-        let mut v1 = self.v;
-        for j in 0..12 {
-            if B[j] != 0.0 {
-                for n in 0..N {
-                    q1[n] += h * B[j] * kq[j][n];
-                    v1[n] += h * B[j] * ka[j][n];
-                }
-            }
-        }
-        check_state(&M::Coords::NAMES, self.t + h, &q1, &v1)?;
-        let st = &self.settings;
-        let (mut err5, mut err3) = (0.0, 0.0);
-        let mut component = |e5: f64, e3: f64, y0: f64, y1: f64| {
-            let sc = st.atol + st.rtol * y0.abs().max(y1.abs());
-            err5 += ratio(e5, sc).powi(2);
-            err3 += ratio(e3, sc).powi(2);
-        };
-        for n in 0..N {
-            for (k, y0, y1) in [(&kq, self.q[n], q1[n]), (&ka, self.v[n], v1[n])] {
-                let mut e5 = 0.0;
-                let mut bsum = 0.0;
-                for j in 0..12 {
-                    e5 += E[j] * k[j][n];
-                    bsum += B[j] * k[j][n];
-                }
-                let e3 = bsum - BHH[0] * k[0][n] - BHH[1] * k[8][n] - BHH[2] * k[11][n];
-                component(e5, e3, y0, y1);
-            }
-        }
-        // dop853.f: err = |h|·err₅² / √(n·(err₅² + 0.01·err₃²)), with sums of squares.
-        let mut deno = err5 + 0.01 * err3;
-        if !(deno > 0.0) {
-            deno = 1.0;
-        }
-        let err = h.abs() * err5 * (1.0 / (deno * (2 * N) as f64)).sqrt();
-        if err.is_nan() {
-            return Err(Error::NonFiniteDynamics {
-                t: self.t + h,
-                configuration: crate::error::describe_configuration(&M::Coords::NAMES, &q1),
-            });
-        }
-        Ok(Trial {
-            q1,
-            v1,
-            err,
-            kq,
-            ka,
-        })
-    }
-
-    /// The 7th-order continuous extension of `dop853.f` (CONTD8) over the accepted trial: stage 13
-    /// is the FSAL evaluation at the new point (in `trial.kq[12]`, `trial.ka[12]`), stages 14–16 are
-    /// evaluated here.
-    fn contd8(&self, h: f64, trial: &mut Trial<N>, stats: &mut Stats) -> Result<DenseOutput<N>> {
-        for i in 13..16 {
-            self.evaluate_stage(h, i, &mut trial.kq, &mut trial.ka, stats)?;
-        }
-        let make = |y0: &[f64; N], y1: &[f64; N], k: &[[f64; N]; 16]| {
-            let mut r = [[0.0; N]; 8];
-            for n in 0..N {
-                let diff = y1[n] - y0[n];
-                let bspl = h * k[0][n] - diff;
-                r[0][n] = y0[n];
-                r[1][n] = diff;
-                r[2][n] = bspl;
-                r[3][n] = diff - h * k[12][n] - bspl;
-                for (row, d) in D.iter().enumerate() {
-                    let mut s = 0.0;
-                    for j in 0..16 {
-                        s += d[j] * k[j][n];
-                    }
-                    r[4 + row][n] = h * s;
-                }
-            }
-            r
-        };
-        Ok(DenseOutput::from_coefficients(
-            self.t,
-            h,
-            make(&self.q, &trial.q1, &trial.kq),
-            make(&self.v, &trial.v1, &trial.ka),
-        ))
-    }
-
     /// Takes one accepted step, not past `t_limit` (> current time), rejecting and shrinking as
     /// needed, as [`Dopri5Stepper::step`](super::Dopri5Stepper::step) does. On error the accepted
     /// state is unchanged.
@@ -767,40 +633,26 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
             fac_old: self.fac_old,
         };
         let mut stats = self.stats;
-        let this = &*self;
+        let acc = mechanism_accelerations(self.mechanism);
+        let start = (self.t, &self.q, &self.v, &self.a);
+        let settings = self.settings;
         let (mut trial, h, t_new) = adaptive_step(
             "Dop853",
-            &self.settings.shared(),
+            &settings.shared(),
             (1.0 / 8.0, 0.2),
             self.t,
             t_limit,
             &mut control,
             &mut stats,
             |h, stats| {
-                this.attempt(h, stats).map(|trial| {
+                attempt::<M::Coords, N>(&settings, start, h, stats, &acc).map(|trial| {
                     let err = trial.err;
                     (trial, err)
                 })
             },
         )?;
         // FSAL: q̈ at the new point (stage 13), then the dense output, then the projection.
-        stats.evaluations += 1;
-        let a1 = self
-            .mechanism
-            .accelerations_at(t_new, &trial.q1, &trial.v1)
-            .map_err(|e| diagnose(self.mechanism, t_new, &trial.q1, &trial.v1, e))?;
-        trial.kq[12] = trial.v1;
-        trial.ka[12] = a1;
-        let dense = if self.settings.dense {
-            self.contd8(h, &mut trial, &mut stats)?
-        } else {
-            DenseOutput::hermite(
-                self.t,
-                h,
-                (&self.q, &self.v, &self.a),
-                (&trial.q1, &trial.v1, &a1),
-            )
-        };
+        let (a1, dense) = accept(&settings, start, h, &mut trial, &mut stats, &acc)?;
         let (qp, vp, ap) =
             project_accepted(self.mechanism, t_new, (trial.q1, trial.v1, a1), &mut stats)?;
         self.dense = dense;
@@ -808,6 +660,173 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
         (self.h, self.fac_old, self.stats) = (control.h, control.fac_old, stats);
         Ok(())
     }
+}
+
+/// q̈ of a mechanism, as the stages evaluate it.
+fn mechanism_accelerations<M: Mechanism<N>, const N: usize>(
+    m: &M,
+) -> impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]> + '_ {
+    move |t, q, v| {
+        m.accelerations_at(t, q, v)
+            .map_err(|e| diagnose(m, t, q, v, e))
+    }
+}
+
+/// (q, v) at stage i (0-based) from the stages before it: y + h Σⱼ aᵢⱼ kⱼ.
+fn stage_point<const N: usize>(
+    (q0, v0): (&[f64; N], &[f64; N]),
+    h: f64,
+    i: usize,
+    kq: &[[f64; N]; 16],
+    ka: &[[f64; N]; 16],
+) -> ([f64; N], [f64; N]) {
+    let mut q = *q0;
+    let mut v = *v0;
+    for j in 0..i {
+        let a = A[i][j];
+        if a != 0.0 {
+            for n in 0..N {
+                q[n] += h * a * kq[j][n];
+                v[n] += h * a * ka[j][n];
+            }
+        }
+    }
+    (q, v)
+}
+
+/// Evaluates stage i (0-based) of a step of size h from (t, q, v) into kq[i], ka[i].
+#[allow(clippy::too_many_arguments)]
+fn evaluate_stage<const N: usize>(
+    (t, q, v): (f64, &[f64; N], &[f64; N]),
+    h: f64,
+    i: usize,
+    kq: &mut [[f64; N]; 16],
+    ka: &mut [[f64; N]; 16],
+    stats: &mut Stats,
+    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+) -> Result<()> {
+    let (qi, vi) = stage_point((q, v), h, i, kq, ka);
+    stats.evaluations += 1;
+    ka[i] = acc(t + C[i] * h, &qi, &vi)?;
+    kq[i] = vi;
+    Ok(())
+}
+
+/// One trial step of size h from (t, q, v) with q̈ = `a` there, on the accelerations `acc`
+/// (stages 1…12, the 8th-order solution and the error norm): what [`Dop853Stepper`] attempts on a
+/// mechanism's accelerations, and the contact solver on those of a frozen constraint mode.
+pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
+    st: &Dop853,
+    (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    h: f64,
+    stats: &mut Stats,
+    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+) -> Result<Trial<N>> {
+    let mut kq = [[0.0; N]; 16];
+    let mut ka = [[0.0; N]; 16];
+    kq[0] = *v;
+    ka[0] = *a;
+    for i in 1..12 {
+        evaluate_stage((t, q, v), h, i, &mut kq, &mut ka, stats, acc)?;
+    }
+    let mut q1 = *q;
+    let mut v1 = *v;
+    for j in 0..12 {
+        if B[j] != 0.0 {
+            for n in 0..N {
+                q1[n] += h * B[j] * kq[j][n];
+                v1[n] += h * B[j] * ka[j][n];
+            }
+        }
+    }
+    check_state(&Q::NAMES, t + h, &q1, &v1)?;
+    let (mut err5, mut err3) = (0.0, 0.0);
+    let mut component = |e5: f64, e3: f64, y0: f64, y1: f64| {
+        let sc = st.atol + st.rtol * y0.abs().max(y1.abs());
+        err5 += ratio(e5, sc).powi(2);
+        err3 += ratio(e3, sc).powi(2);
+    };
+    for n in 0..N {
+        for (k, y0, y1) in [(&kq, q[n], q1[n]), (&ka, v[n], v1[n])] {
+            let mut e5 = 0.0;
+            let mut bsum = 0.0;
+            for j in 0..12 {
+                e5 += E[j] * k[j][n];
+                bsum += B[j] * k[j][n];
+            }
+            let e3 = bsum - BHH[0] * k[0][n] - BHH[1] * k[8][n] - BHH[2] * k[11][n];
+            component(e5, e3, y0, y1);
+        }
+    }
+    // dop853.f: err = |h|·err₅² / √(n·(err₅² + 0.01·err₃²)), with sums of squares.
+    let mut deno = err5 + 0.01 * err3;
+    if !(deno > 0.0) {
+        deno = 1.0;
+    }
+    let err = h.abs() * err5 * (1.0 / (deno * (2 * N) as f64)).sqrt();
+    if err.is_nan() {
+        return Err(Error::NonFiniteDynamics {
+            t: t + h,
+            configuration: crate::error::describe_configuration(&Q::NAMES, &q1),
+        });
+    }
+    Ok(Trial {
+        q1,
+        v1,
+        err,
+        kq,
+        ka,
+    })
+}
+
+/// Completes an accepted [`attempt`] of size h from (t, q, v, q̈): the FSAL evaluation q̈₁ at the
+/// new point (stage 13), and the dense output — the 7th-order continuous extension of `dop853.f`
+/// (CONTD8, stages 14–16 evaluated here), or the cubic Hermite interpolant with `dense: false`.
+pub(crate) fn accept<const N: usize>(
+    st: &Dop853,
+    (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    h: f64,
+    trial: &mut Trial<N>,
+    stats: &mut Stats,
+    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+) -> Result<([f64; N], DenseOutput<N>)> {
+    stats.evaluations += 1;
+    let a1 = acc(t + h, &trial.q1, &trial.v1)?;
+    trial.kq[12] = trial.v1;
+    trial.ka[12] = a1;
+    if !st.dense {
+        let dense = DenseOutput::hermite(t, h, (q, v, a), (&trial.q1, &trial.v1, &a1));
+        return Ok((a1, dense));
+    }
+    for i in 13..16 {
+        evaluate_stage((t, q, v), h, i, &mut trial.kq, &mut trial.ka, stats, acc)?;
+    }
+    let make = |y0: &[f64; N], y1: &[f64; N], k: &[[f64; N]; 16]| {
+        let mut r = [[0.0; N]; 8];
+        for n in 0..N {
+            let diff = y1[n] - y0[n];
+            let bspl = h * k[0][n] - diff;
+            r[0][n] = y0[n];
+            r[1][n] = diff;
+            r[2][n] = bspl;
+            r[3][n] = diff - h * k[12][n] - bspl;
+            for (row, d) in D.iter().enumerate() {
+                let mut s = 0.0;
+                for j in 0..16 {
+                    s += d[j] * k[j][n];
+                }
+                r[4 + row][n] = h * s;
+            }
+        }
+        r
+    };
+    let dense = DenseOutput::from_coefficients(
+        t,
+        h,
+        make(q, &trial.q1, &trial.kq),
+        make(v, &trial.v1, &trial.ka),
+    );
+    Ok((a1, dense))
 }
 
 impl<M: Mechanism<N>, const N: usize> Stepper<M::Coords, N> for Dop853Stepper<'_, M, N> {

@@ -237,11 +237,20 @@ impl<const N: usize> DenseOutput<N> {
     /// Also returns the number of evaluations of g.
     pub fn find_root(
         &self,
-        mut g: impl FnMut(f64, &[f64; N], &[f64; N]) -> f64,
+        g: impl FnMut(f64, &[f64; N], &[f64; N]) -> f64,
         g_start: f64,
         g_end: f64,
     ) -> (f64, usize) {
-        let (mut a, mut fa, mut b, mut fb) = (self.t0, g_start, self.t_end(), g_end);
+        self.find_root_between(g, (self.t0, g_start), (self.t_end(), g_end))
+    }
+
+    /// [`find_root`](Self::find_root) on a bracket [a, b] inside the step, given g there.
+    pub(crate) fn find_root_between(
+        &self,
+        mut g: impl FnMut(f64, &[f64; N], &[f64; N]) -> f64,
+        (mut a, mut fa): (f64, f64),
+        (mut b, mut fb): (f64, f64),
+    ) -> (f64, usize) {
         if fb == 0.0 {
             return (b, 0);
         }
@@ -369,6 +378,11 @@ impl Dopri5 {
     /// step and for every located event, and stopping early at a terminal event or after
     /// `max_steps` attempts. On success `state` is the final state (at t_end, at the terminal event,
     /// or the last accepted one); on error `state` is unchanged. No allocation.
+    ///
+    /// A mechanism with unilateral contacts or friction is integrated here with its mode re-inferred
+    /// at every evaluation, so each mode switch falls inside a step and costs many rejected steps:
+    /// use [`integrate_contacts`](Self::integrate_contacts) for it, which fixes the mode over a
+    /// step and locates the switches.
     pub fn integrate<M: Mechanism<N>, const N: usize>(
         &self,
         mechanism: &M,
@@ -395,6 +409,23 @@ impl Dopri5 {
 pub(crate) fn initial_step<M: Mechanism<N>, const N: usize>(
     mechanism: &M,
     st: &Dopri5,
+    start: (f64, &[f64; N], &[f64; N], &[f64; N]),
+    order: i32,
+    stats: &mut Stats,
+) -> f64 {
+    initial_step_on(
+        |t, q, v| mechanism.accelerations_at(t, q, v),
+        st,
+        start,
+        order,
+        stats,
+    )
+}
+
+/// [`initial_step`] on the accelerations `acc` (those of a frozen constraint mode, say).
+pub(crate) fn initial_step_on<const N: usize>(
+    acc: impl FnOnce(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+    st: &Dopri5,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
     order: i32,
     stats: &mut Stats,
@@ -415,7 +446,7 @@ pub(crate) fn initial_step<M: Mechanism<N>, const N: usize>(
     let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * v[i]);
     let v1: [f64; N] = std::array::from_fn(|i| v[i] + h * a[i]);
     stats.evaluations += 1;
-    let Ok(a1) = mechanism.accelerations_at(t + h, &q1, &v1) else {
+    let Ok(a1) = acc(t + h, &q1, &v1) else {
         return h;
     };
     let mut der2 = 0.0;
@@ -779,7 +810,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         Ok(())
     }
 
-    /// One trial step of size h: (q₁, v₁, q̈₁, err, stage data for the dense output).
+    /// One trial step of size h ([`trial`] on the mechanism's accelerations).
     #[allow(clippy::type_complexity)]
     fn attempt(
         &self,
@@ -787,71 +818,16 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
         let m = self.mechanism;
-        let (t, q, v) = (self.t, &self.q, &self.v);
-        let (q1, v1, kq, ka) = stages(t, q, v, self.a, h, |t, q, v| {
-            stats.evaluations += 1;
-            m.accelerations_at(t, q, v)
-                .map_err(|e| diagnose(m, t, q, v, e))
-        })?;
-        let [kq1, _, kq3, kq4, kq5, kq6] = kq;
-        let [ka1, _, ka3, ka4, ka5, ka6] = ka;
-        check_state(&M::Coords::NAMES, t + h, &q1, &v1)?;
-        stats.evaluations += 1;
-        let ka7 = m
-            .accelerations_at(t + h, &q1, &v1)
-            .map_err(|e| diagnose(m, t + h, &q1, &v1, e))?;
-        let kq7 = v1;
-        let st = &self.settings;
-        let mut sum = 0.0;
-        for i in 0..N {
-            let eq = h
-                * (E1 * kq1[i]
-                    + E3 * kq3[i]
-                    + E4 * kq4[i]
-                    + E5 * kq5[i]
-                    + E6 * kq6[i]
-                    + E7 * kq7[i]);
-            let ev = h
-                * (E1 * ka1[i]
-                    + E3 * ka3[i]
-                    + E4 * ka4[i]
-                    + E5 * ka5[i]
-                    + E6 * ka6[i]
-                    + E7 * ka7[i]);
-            let sq = st.atol + st.rtol * q[i].abs().max(q1[i].abs());
-            let sv = st.atol + st.rtol * v[i].abs().max(v1[i].abs());
-            sum += ratio(eq, sq).powi(2) + ratio(ev, sv).powi(2);
-        }
-        // Every stage is finite here (checked above), so an infinite error norm is an error far
-        // above a tolerance near the bottom of the floating-point range (rtol = atol = 1e-300):
-        // a rejection like any other, which ends in a step-size underflow if it persists.
-        let err = (sum / (2 * N) as f64).sqrt();
-        if err.is_nan() {
-            return Err(Error::NonFiniteDynamics {
-                t: t + h,
-                configuration: crate::error::describe_configuration(&M::Coords::NAMES, &q1),
-            });
-        }
-        // The dense output needs d-weighted sums of the stages for q and v.
-        let dq = combo(
-            &[0.0; N],
-            1.0,
-            [D1, D3, D4, D5, D6, D7],
-            [&kq1, &kq3, &kq4, &kq5, &kq6, &kq7],
-        );
-        let dv = combo(
-            &[0.0; N],
-            1.0,
-            [D1, D3, D4, D5, D6, D7],
-            [&ka1, &ka3, &ka4, &ka5, &ka6, &ka7],
-        );
-        Ok((
-            q1,
-            v1,
-            ka7,
-            err,
-            [kq1, ka1, kq7, ka7, dq, dv, [0.0; N], [0.0; N]],
-        ))
+        trial::<M::Coords, N>(
+            &self.settings,
+            (self.t, &self.q, &self.v, &self.a),
+            h,
+            stats,
+            |t, q, v| {
+                m.accelerations_at(t, q, v)
+                    .map_err(|e| diagnose(m, t, q, v, e))
+            },
+        )
     }
 
     fn build_dense(
@@ -862,32 +838,108 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
         _a1: &[f64; N],
         k: &[[f64; N]; 8],
     ) -> DenseOutput<N> {
-        let [kq1, ka1, kq7, ka7, dq, dv, _, _] = k;
-        let make = |y0: &[f64; N],
-                    y1: &[f64; N],
-                    k1: &[f64; N],
-                    k7: &[f64; N],
-                    d: &[f64; N]|
-         -> [[f64; N]; 8] {
-            let mut r = [[0.0; N]; 8];
-            for i in 0..N {
-                let diff = y1[i] - y0[i];
-                let bspl = h * k1[i] - diff;
-                r[0][i] = y0[i];
-                r[1][i] = diff;
-                r[2][i] = bspl;
-                r[3][i] = diff - h * k7[i] - bspl;
-                r[4][i] = h * d[i];
-            }
-            r
-        };
-        DenseOutput {
-            t0: self.t,
-            h,
-            q: make(&self.q, q1, kq1, kq7, dq),
-            v: make(&self.v, v1, ka1, ka7, dv),
-            terms: 5,
+        dense_output(self.t, h, (&self.q, &self.v), (q1, v1), k)
+    }
+}
+
+/// One trial step of Dormand–Prince 5(4) of size h from (t, q, v) with q̈ = `a` there, on the
+/// accelerations `acc`: (q₁, v₁, q̈₁, err, stage data for [`dense_output`]). What [`Dopri5Stepper`]
+/// attempts on a mechanism's accelerations, and the contact solver on the accelerations of a frozen
+/// constraint mode. Adds its evaluations of `acc` to `stats`.
+#[allow(clippy::type_complexity)]
+pub(crate) fn trial<C: Coordinates<N>, const N: usize>(
+    st: &Dopri5,
+    (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    h: f64,
+    stats: &mut Stats,
+    mut acc: impl FnMut(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
+    let (q1, v1, kq, ka) = stages(t, q, v, *a, h, |t, q, v| {
+        stats.evaluations += 1;
+        acc(t, q, v)
+    })?;
+    let [kq1, _, kq3, kq4, kq5, kq6] = kq;
+    let [ka1, _, ka3, ka4, ka5, ka6] = ka;
+    check_state(&C::NAMES, t + h, &q1, &v1)?;
+    stats.evaluations += 1;
+    let ka7 = acc(t + h, &q1, &v1)?;
+    let kq7 = v1;
+    let mut sum = 0.0;
+    for i in 0..N {
+        let eq =
+            h * (E1 * kq1[i] + E3 * kq3[i] + E4 * kq4[i] + E5 * kq5[i] + E6 * kq6[i] + E7 * kq7[i]);
+        let ev =
+            h * (E1 * ka1[i] + E3 * ka3[i] + E4 * ka4[i] + E5 * ka5[i] + E6 * ka6[i] + E7 * ka7[i]);
+        let sq = st.atol + st.rtol * q[i].abs().max(q1[i].abs());
+        let sv = st.atol + st.rtol * v[i].abs().max(v1[i].abs());
+        sum += ratio(eq, sq).powi(2) + ratio(ev, sv).powi(2);
+    }
+    // Every stage is finite here (checked above), so an infinite error norm is an error far
+    // above a tolerance near the bottom of the floating-point range (rtol = atol = 1e-300):
+    // a rejection like any other, which ends in a step-size underflow if it persists.
+    let err = (sum / (2 * N) as f64).sqrt();
+    if err.is_nan() {
+        return Err(Error::NonFiniteDynamics {
+            t: t + h,
+            configuration: crate::error::describe_configuration(&C::NAMES, &q1),
+        });
+    }
+    // The dense output needs d-weighted sums of the stages for q and v.
+    let dq = combo(
+        &[0.0; N],
+        1.0,
+        [D1, D3, D4, D5, D6, D7],
+        [&kq1, &kq3, &kq4, &kq5, &kq6, &kq7],
+    );
+    let dv = combo(
+        &[0.0; N],
+        1.0,
+        [D1, D3, D4, D5, D6, D7],
+        [&ka1, &ka3, &ka4, &ka5, &ka6, &ka7],
+    );
+    Ok((
+        q1,
+        v1,
+        ka7,
+        err,
+        [kq1, ka1, kq7, ka7, dq, dv, [0.0; N], [0.0; N]],
+    ))
+}
+
+/// The dense output of an accepted [`trial`] of size h from (t₀, q₀, v₀) to (q₁, v₁): Hairer's
+/// CONTD5 (HNW I §II.6), order 4, no extra evaluation.
+pub(crate) fn dense_output<const N: usize>(
+    t0: f64,
+    h: f64,
+    (q0, v0): (&[f64; N], &[f64; N]),
+    (q1, v1): (&[f64; N], &[f64; N]),
+    k: &[[f64; N]; 8],
+) -> DenseOutput<N> {
+    let [kq1, ka1, kq7, ka7, dq, dv, _, _] = k;
+    let make = |y0: &[f64; N],
+                y1: &[f64; N],
+                k1: &[f64; N],
+                k7: &[f64; N],
+                d: &[f64; N]|
+     -> [[f64; N]; 8] {
+        let mut r = [[0.0; N]; 8];
+        for i in 0..N {
+            let diff = y1[i] - y0[i];
+            let bspl = h * k1[i] - diff;
+            r[0][i] = y0[i];
+            r[1][i] = diff;
+            r[2][i] = bspl;
+            r[3][i] = diff - h * k7[i] - bspl;
+            r[4][i] = h * d[i];
         }
+        r
+    };
+    DenseOutput {
+        t0,
+        h,
+        q: make(q0, q1, kq1, kq7, dq),
+        v: make(v0, v1, ka1, ka7, dv),
+        terms: 5,
     }
 }
 

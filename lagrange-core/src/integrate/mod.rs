@@ -1,9 +1,10 @@
 //! Integrators, generic over every generated mechanism, behind one stepping interface
 //! ([`solver`]: the [`Stepper`] trait — `step`, `integrate` to a stop time with an observer, dense
 //! output and events, [`Stats`] — implemented by [`FixedStepper`] for every [`Integrator`], by
-//! [`Dopri5Stepper`], [`Dop853Stepper`] and [`Radau5Stepper`], and by the contact solver
-//! [`ContactSolver`](crate::constraints::ContactSolver)); `sys.step::<I>(&mut s, h)` is one
-//! validated step.
+//! [`Dopri5Stepper`], [`Dop853Stepper`] and [`Radau5Stepper`], and by the contact solvers
+//! [`ContactSolver`](crate::constraints::ContactSolver) (RK4) and
+//! [`ContactDopri5`](crate::constraints::ContactDopri5) (adaptive)); `sys.step::<I>(&mut s, h)` is
+//! one validated step.
 //!
 //! | method | order | steps | evaluations of q̈ per step | geometric properties |
 //! |---|---|---|---|---|
@@ -35,7 +36,7 @@
 //! velocity projection), which keeps them symplectic on the constraint manifold, and refuse
 //! velocity constraints, unilateral contacts and friction with
 //! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod) (use [`ContactRk4`](crate::ContactRk4)
-//! for those). Which constraints a method enforces is decided by the declaration alone —
+//! or [`ContactDopri5`](crate::ContactDopri5) for those). Which constraints a method enforces is decided by the declaration alone —
 //! [`Mechanism::CONSTRAINT_COUNTS`] and [`Mechanism::CONSTRAINTS`] — never by the multipliers at
 //! some state (a pendulum released horizontally at rest has λ = 0 at its first step and is treated
 //! as constrained all the same): the symplectic methods refuse an implementation that does not
@@ -47,6 +48,7 @@ pub mod dop853;
 pub mod dopri5;
 pub mod implicit;
 mod newton;
+pub mod pair;
 pub mod radau;
 pub mod rattle;
 pub(crate) mod rk4;
@@ -58,6 +60,7 @@ pub use dop853::{Dop853, Dop853Stepper};
 pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper};
 pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
 pub use newton::{acceleration_jacobians, MAX_NEWTON_ITERATIONS};
+pub use pair::EmbeddedPair;
 pub use radau::{Radau5, Radau5Stepper};
 pub use rattle::holonomic_rows;
 pub use rk4::Rk4;

@@ -8,6 +8,7 @@
 //! | [`FixedStepper`] | [`FixedStepper::new`] with any [`Integrator`] (RK4, implicit midpoint, Gauss–Legendre 2, variational, Störmer–Verlet) and a step h | one step of h (shortened to land on the limit) | cubic Hermite from the end points and q̈ there (order 3; one evaluation of q̈ per step) |
 //! | [`Dopri5Stepper`](super::Dopri5Stepper) | [`Dopri5Stepper::new`](super::Dopri5Stepper::new) with tolerances | one accepted adaptive step | the method's own, order 4 |
 //! | [`ContactSolver`](crate::constraints::ContactSolver) | [`ContactSolver::new`](crate::constraints::ContactSolver::new) around a [`ContactRk4`](crate::constraints::ContactRk4) | one RK4 step of h with located mode changes | cubic Hermite |
+//! | [`ContactDopri5`](crate::constraints::ContactDopri5), [`ContactDop853`](crate::constraints::ContactDop853) | [`ContactAdaptive::new`](crate::constraints::ContactAdaptive::new) with a [`Dopri5`](super::Dopri5) or [`Dop853`](super::Dop853) and [`ContactOptions`](crate::constraints::ContactOptions) | one accepted step in a fixed contact mode, cut at the first mode change inside it | the method's, order 4 or 7 |
 //!
 //! The shorthand `sys.step::<I>(&mut state, h)` ([`Mechanism::step`]) is one validated step of an
 //! [`Integrator`] with fresh working memory; for [`Dopri5`](super::Dopri5) it integrates over

@@ -1,0 +1,627 @@
+//! Unilateral contacts inside the adaptive Dormand–Prince method ([`ContactDopri5`]): the mode is
+//! frozen over each step and mode changes are located on the dense output, so a contact costs about
+//! what the same mechanism declared bilateral costs, and its events land on their closed forms.
+//!
+//! - A particle sliding off a sphere declared `#[unilateral]`, against the same sphere declared
+//!   `#[constraint]` (an event on its multiplier): release time against the closed form of
+//!   `tests/sphere_event.rs` (Goldstein, Poole & Safko, *Classical Mechanics*, 3rd ed., §2.4:
+//!   cos θ* = (2 + v₀²/(gR))/3, t* = ∫₀^θ* R dθ / v(θ)), then the parabola after it; steps and
+//!   evaluations in contact against the bilateral declaration's.
+//! - A ball dropped on a floor declared `#[unilateral]`: impact at √(2h/g), bounces with Newton's
+//!   restitution law, and comes to rest at the accumulation point of its bounces.
+//! - A block sent up a rough ramp (`#[friction]`): it stops at t_s = u/(g(sin α + μₖ cos α)) and
+//!   sticks or slides back, as μₛ decides.
+//! - A puck on a rough plane (`#[friction]` with a `Vec2` slip velocity, the friction cone),
+//!   straight and pushed sideways: its stop time and point against the closed forms of the
+//!   gallery's `rough_plane`.
+//! - Dop853 shares the solver: the sphere again.
+
+use lagrange::constraints::{
+    constraint_forces, ContactAdaptive, ContactDopri5, ContactOptions, RowMode,
+};
+use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
+use lagrange::prelude::*;
+use lagrange_gallery::scenes::rough_ramp::rough_ramp;
+use lagrange_gallery::scenes::sphere_release::gauss_legendre;
+
+/// The sphere as a contact that only pushes.
+#[mechanism]
+pub mod unilateral {
+    /// The particle in the plane of its great circle, sphere centre at the origin, y up.
+    pub struct Coords {
+        pub x: f64,
+        pub y: f64,
+    }
+
+    pub struct Sphere {
+        pub m: f64,
+        pub r: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m)]
+    fn particle() -> Vec2 {
+        vec2(x, y)
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+
+    #[unilateral]
+    fn surface() -> f64 {
+        particle.norm() - r
+    }
+}
+
+/// The same sphere as a bilateral constraint: its multiplier is the normal force it would need.
+#[mechanism]
+pub mod bilateral {
+    pub struct Coords {
+        pub x: f64,
+        pub y: f64,
+    }
+
+    pub struct Sphere {
+        pub m: f64,
+        pub r: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m)]
+    fn particle() -> Vec2 {
+        vec2(x, y)
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+
+    #[constraint]
+    fn surface() -> f64 {
+        particle.norm() - r
+    }
+}
+
+/// A ball above a floor y ≥ 0.
+#[mechanism]
+pub mod ball {
+    pub struct Coords {
+        pub x: f64,
+        pub y: f64,
+    }
+
+    pub struct Ball {
+        pub m: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m)]
+    fn ball() -> Vec2 {
+        vec2(x, y)
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+
+    #[unilateral]
+    fn floor() -> f64 {
+        y
+    }
+}
+
+const M: f64 = 0.7;
+const R: f64 = 1.5;
+const G: f64 = 9.81;
+
+/// Where the particle starts: at angle θ₀ from the top, with speed v₀ along the sphere.
+#[derive(Clone, Copy, Debug)]
+struct Start {
+    theta0: f64,
+    v0: f64,
+}
+
+impl Start {
+    /// (position, velocity) in the plane of the great circle.
+    fn state(self) -> ([f64; 2], [f64; 2]) {
+        let (sin, cos) = self.theta0.sin_cos();
+        ([R * sin, R * cos], [self.v0 * cos, -self.v0 * sin])
+    }
+
+    /// The speed at angle θ, by energy: v² = v₀² + 2gR(cos θ₀ − cos θ), the difference written
+    /// 2 sin((θ + θ₀)/2) sin((θ − θ₀)/2) so that it keeps its relative accuracy near θ₀.
+    fn speed(self, theta: f64) -> f64 {
+        let drop = 2.0 * (0.5 * (theta + self.theta0)).sin() * (0.5 * (theta - self.theta0)).sin();
+        (self.v0 * self.v0 + 2.0 * G * R * drop).sqrt()
+    }
+
+    /// The closed form of the release: (t*, cos θ*). The normal force m(g cos θ − v²/R) vanishes
+    /// at cos θ* = (2 cos θ₀ + v₀²/(gR))/3, reached at t* = ∫_θ₀^θ* R dθ / v(θ).
+    fn release(self) -> (f64, f64) {
+        let cos_star = (2.0 * self.theta0.cos() + self.v0 * self.v0 / (G * R)) / 3.0;
+        let theta_star = cos_star.acos();
+        // With θ = θ₀ + u², dθ = 2u du: the integrand 2uR/v(θ₀ + u²) is analytic in u also from
+        // rest (v² = u²·(2gR sin θ₀ + O(u²)) then), so 400 panels of 5-point Gauss–Legendre are
+        // exact to round-off.
+        let integrand = |u: f64| 2.0 * u * R / self.speed(self.theta0 + u * u);
+        let end = (theta_star - self.theta0).sqrt();
+        (gauss_legendre(integrand, 0.0, end, 400), cos_star)
+    }
+}
+
+/// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
+const STARTS: [Start; 3] = [
+    Start {
+        theta0: 0.1,
+        v0: 0.0,
+    },
+    Start {
+        theta0: 0.0,
+        v0: 0.5,
+    },
+    Start {
+        theta0: 0.0,
+        v0: 1.2,
+    },
+];
+
+/// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
+fn cost(stats: Stats) -> (usize, usize) {
+    (stats.accepted + stats.rejected, stats.evaluations)
+}
+
+/// The bilateral sphere in Dopri5 from `start`, stopped where its multiplier falls through 0: the
+/// release time and the cost.
+fn bilateral_release(start: Start, tol: f64) -> (f64, Stats) {
+    bilateral_release_in(start, |sys, s, events| {
+        Dopri5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+    })
+}
+
+/// [`bilateral_release`] with the integration `integrate` (Dopri5 or Dop853).
+fn bilateral_release_in(
+    start: Start,
+    integrate: impl FnOnce(
+        &bilateral::Sphere,
+        &mut bilateral::State,
+        &mut [Event<'_, bilateral::Coords>],
+    ) -> lagrange::Result<lagrange::integrate::Outcome<bilateral::Coords>>,
+) -> (f64, Stats) {
+    use bilateral::{Coords, Sphere, State};
+    let sys = Sphere { m: M, r: R, g: G };
+    let ([x, y], [vx, vy]) = start.state();
+    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
+    let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
+    let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
+    let outcome = integrate(&sys, &mut s, &mut events).expect("integration");
+    let StopReason::Event(hit) = outcome.reason else {
+        panic!("the particle did not leave: {:?}", outcome.reason)
+    };
+    (hit.state.t, outcome.stats)
+}
+
+#[test]
+fn unilateral_sphere_releases_on_time_at_the_cost_of_the_bilateral_one() {
+    sphere_release_against_closed_form(Dopri5::new(1e-13, 1e-13), 1e-13, |start| {
+        bilateral_release(start, 1e-13)
+    });
+}
+
+#[test]
+fn unilateral_sphere_in_dop853() {
+    // Dop853 shares the contact solver: the same checks, with its error bounded as below.
+    let tol = 1e-13;
+    sphere_release_against_closed_form(Dop853::new(tol, tol), tol, |start| {
+        bilateral_release_in(start, |sys, s, events| {
+            Dop853::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+        })
+    });
+}
+
+/// The sphere declared unilateral in `method` (at tolerance `tol`), released from each of the
+/// [`STARTS`]: release time and position against the closed form, cost in contact against
+/// `bilateral` (the bilateral declaration in the same method), the parabola after.
+fn sphere_release_against_closed_form<P: EmbeddedPair>(
+    method: P,
+    tol: f64,
+    bilateral: impl Fn(Start) -> (f64, Stats),
+) {
+    use unilateral::{Coords, Sphere, State};
+    let sys = Sphere { m: M, r: R, g: G };
+    // What bounds the located release time |t − t*| (the analysis of tests/sphere_event.rs,
+    // for Dopri5): the root finder stops within 1e-13, and λ on the dense output is off by the
+    // solution's error δ in (q, q̇) (max norm), which moves the root by δ·|∇λ|₁/|λ̇|. With
+    // λ = m(g cos θ − v²/R): |∇λ|₁ ≤ √2·m(g + 2v)/R and |λ̇| = 3 m g v sin θ*/R at release, a
+    // ratio ≤ 0.34 for every start (v ≈ 3.1 there). δ: each accepted step commits a local error
+    // ≤ 2·tol·(1 + |y|) ≤ 8.4 tol per component (error norm ≤ 1 over 2N = 4 components,
+    // |y| ≤ 3.2), grown at most like e^{λ₊(t* − s)}, λ₊ = √(g/R) (the rate off the unstable top);
+    // with the n steps spread over [0, t*], δ ≤ (n/t*)·(e^{λ₊t*} − 1)/λ₊ · 8.4 tol, and the
+    // dense output adds one more local error (n + 1 below). tol = 1e-13 makes the bound ~1e-10
+    // for Dopri5 (and ~1e-11 for Dop853, which takes fewer steps).
+    let rate = (G / R).sqrt();
+    for start in STARTS {
+        let Start { theta0, v0 } = start;
+        let (t_star, cos_star) = start.release();
+        let ([x, y], [vx, vy]) = start.state();
+        let state = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
+        let mut solver =
+            ContactAdaptive::new(&sys, method, &state, ContactOptions::default()).expect("solver");
+        assert_eq!(solver.mode().rows, [RowMode::Active]);
+        while solver.events().is_empty() {
+            solver.step(10.0).expect("step");
+        }
+        let in_contact = solver.stats();
+        let change = solver.events()[0];
+        let (t_bil, bil) = bilateral(start);
+        let (steps_u, evals_u) = cost(in_contact);
+        let (steps_b, evals_b) = cost(bil);
+        eprintln!(
+            "{}, θ₀ = {theta0}, v₀ = {v0}: released at t = {:.15} (closed form {t_star:.15}, {:+.1e}; bilateral \
+             {:+.1e}); in contact, unilateral {steps_u} steps ({} rejected) {evals_u} evaluations \
+             {} event evaluations, bilateral {steps_b} steps ({} rejected) {evals_b} evaluations",
+            P::NAME,
+            change.t,
+            change.t - t_star,
+            t_bil - t_star,
+            in_contact.rejected,
+            in_contact.event_evaluations,
+            bil.rejected,
+        );
+        assert_eq!(
+            (change.constraint, change.from, change.to),
+            ("surface", RowMode::Active, RowMode::Inactive)
+        );
+        let delta =
+            (steps_u + 1) as f64 / t_star * ((rate * t_star).exp() - 1.0) / rate * 8.4 * tol;
+        let bound = 1e-13 + 0.34 * delta;
+        eprintln!("    bound on |t − t*|: {bound:.1e} (δ ≤ {delta:.1e})");
+        assert!(
+            (change.t - t_star).abs() < bound,
+            "θ₀ = {theta0}, v₀ = {v0}: released at {}, closed form {t_star}",
+            change.t
+        );
+        // The position at the release: cos θ = y/|r| against cos θ*, off by δ/R plus
+        // |d cos θ/dt| = v sin θ*/R ≤ 2 s⁻¹ times the time error.
+        let s = solver.state();
+        let cos = s.q.y / s.q.x.hypot(s.q.y);
+        assert!(
+            (cos - cos_star).abs() < delta / R + 2.0 * bound,
+            "θ₀ = {theta0}, v₀ = {v0}: cos θ = {cos}, cos θ* = {cos_star}"
+        );
+        // The cost in contact: within 2× of the bilateral declaration's (which stops at the same
+        // instant by a user event on its multiplier).
+        assert!(
+            steps_u as f64 <= 2.0 * steps_b as f64 && evals_u as f64 <= 2.0 * evals_b as f64,
+            "θ₀ = {theta0}, v₀ = {v0}: unilateral {steps_u} steps / {evals_u} evaluations, bilateral {steps_b} / \
+             {evals_b}"
+        );
+
+        // After the release: a projectile from the closed-form release state, x* = R(sin θ*,
+        // cos θ*) with speed v* = √(v₀² + 2gR(cos θ₀ − cos θ*)) along the tangent (cos θ*, −sin θ*),
+        // 0.3 s later. Both methods integrate the parabola exactly (quadratic in t), so the error
+        // is the release state's: δ in (q, q̇), carried to (1 + τ)·δ over τ = 0.3 s of free flight
+        // (at the release λ = 0, so leaving the sphere a time Δt early or late changes the path by
+        // O(|λ̇|Δt²/m) ≈ 1e-18 only).
+        let t_flight = t_star + 0.3;
+        let outcome = solver.integrate(t_flight, &mut [], |_| {}).expect("flight");
+        assert_eq!(outcome.reason, StopReason::Reached);
+        assert_eq!(
+            solver.events().len(),
+            1,
+            "no second contact: it flies off the sphere"
+        );
+        let sin_star = (1.0 - cos_star * cos_star).sqrt();
+        let v_star = start.speed(cos_star.acos());
+        let tau = t_flight - t_star;
+        let x = R * sin_star + v_star * cos_star * tau;
+        let y = R * cos_star - v_star * sin_star * tau - 0.5 * G * tau * tau;
+        let s = solver.state();
+        eprintln!(
+            "    flight: at t* + 0.3 s, ({:.12}, {:.12}) against ({x:.12}, {y:.12})",
+            s.q.x, s.q.y
+        );
+        let flight_bound = 1.3 * delta + 1e-13;
+        assert!((s.q.x - x).abs() < flight_bound && (s.q.y - y).abs() < flight_bound);
+    }
+}
+
+#[test]
+fn ball_dropped_on_a_unilateral_floor_lands_at_the_closed_form_time() {
+    use ball::{Ball, Coords, State};
+    let sys = Ball { m: 0.3, g: G };
+    let height = 1.3;
+    let t1 = (2.0 * height / G).sqrt();
+    // Free fall and flight are quadratic in t, which Dopri5 (order 5) integrates exactly: the only
+    // errors are the root finder's 1e-13 and round-off over a few steps. Asserted to 1e-12.
+    for restitution in [0.0, 0.6] {
+        let mut s = State::new(0.0, Coords { x: 0.2, y: height }, Coords { x: 0.5, y: 0.0 });
+        let options = ContactOptions {
+            restitution,
+            ..Default::default()
+        };
+        let (outcome, changes) = Dopri5::new(1e-10, 1e-10)
+            .integrate_contacts(&sys, &mut s, 2.0, options, &mut [], |_| {})
+            .expect("integration");
+        eprintln!(
+            "e = {restitution}: {} steps ({} rejected), {} evaluations, mode changes at {:?}",
+            outcome.stats.accepted,
+            outcome.stats.rejected,
+            outcome.stats.evaluations,
+            changes.iter().map(|c| c.t).collect::<Vec<_>>()
+        );
+        assert!(
+            (changes[0].t - t1).abs() < 1e-12,
+            "landed at {}, closed form {t1}",
+            changes[0].t
+        );
+        assert_eq!(changes[0].from, RowMode::Inactive);
+        if restitution == 0.0 {
+            // A plastic impact: it stays on the floor, sliding on at 0.5 m/s (frictionless).
+            assert_eq!((changes.len(), changes[0].to), (1, RowMode::Active));
+            assert!(s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12);
+            assert!((s.q.x - (0.2 + 0.5 * 2.0)).abs() < 1e-12);
+        } else {
+            // Bounces: leaves at e·g·t₁, so the k-th landing is at t₁(1 + 2e + … + 2eᵏ⁻¹).
+            assert_eq!(changes[0].to, RowMode::Inactive);
+            let mut landing = t1;
+            let mut flight = 2.0 * restitution * t1;
+            for change in changes.iter().take_while(|c| c.t < 1.5) {
+                assert!(
+                    (change.t - landing).abs() < 1e-12,
+                    "landed at {}, closed form {landing}",
+                    change.t
+                );
+                landing += flight;
+                flight *= restitution;
+            }
+            assert!(changes.len() >= 3);
+        }
+        // Few steps: a polynomial motion has no error to control, and each landing cuts one step.
+        assert!(outcome.stats.accepted < 20 * changes.len().max(1));
+    }
+}
+
+#[test]
+fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
+    use rough_ramp::{Coords, RoughRamp, State};
+    let (alpha, u) = (0.5f64, 2.0);
+    let (sn, cs) = alpha.sin_cos();
+    let up = Coords {
+        x: u * cs,
+        y: u * sn,
+    };
+    // Piecewise constant accelerations: each phase is a quadratic in t, integrated exactly by
+    // Dopri5; the stop is located to the root finder's 1e-13 and round-off. Asserted to 1e-12.
+    for (mu_k, mu_s) in [(0.5, 0.6), (0.3, 0.4)] {
+        let sys = RoughRamp {
+            m: 2.0,
+            alpha,
+            g: G,
+            mu_k,
+            mu_s,
+        };
+        let start = State::new(0.0, Coords { x: 0.0, y: 0.0 }, up);
+        let mut solver = ContactDopri5::new(
+            &sys,
+            Dopri5::new(1e-10, 1e-10),
+            &start,
+            ContactOptions::default(),
+        )
+        .expect("solver");
+        assert_eq!(solver.mode().rows, [RowMode::Active, RowMode::SlipPositive]);
+        let outcome = solver.integrate(1.5, &mut [], |_| {}).expect("integration");
+        let t_stop = u / (G * (sn + mu_k * cs));
+        let d_stop = u * u / (2.0 * G * (sn + mu_k * cs));
+        let s = solver.state();
+        let distance = s.q.x * cs + s.q.y * sn;
+        eprintln!(
+            "μₖ = {mu_k}, μₛ = {mu_s}: {:?}; {} steps ({} rejected), {} evaluations",
+            solver.events(),
+            outcome.stats.accepted,
+            outcome.stats.rejected,
+            outcome.stats.evaluations
+        );
+        let stop = solver.events()[0];
+        assert!(
+            (stop.t - t_stop).abs() < 1e-12,
+            "stopped at {}, closed form {t_stop}",
+            stop.t
+        );
+        if alpha.tan() <= mu_s {
+            // Sticks where it stopped, for good: one mode change.
+            assert_eq!(solver.events().len(), 1);
+            assert_eq!(stop.to, RowMode::Stick);
+            assert!(
+                (distance - d_stop).abs() < 1e-12,
+                "{distance} against {d_stop}"
+            );
+        } else {
+            // Slides back down from the stop with a = g(sin α − μₖ cos α).
+            assert_eq!(stop.to, RowMode::SlipNegative);
+            let tau = 1.5 - t_stop;
+            let back = d_stop - 0.5 * G * (sn - mu_k * cs) * tau * tau;
+            assert!((distance - back).abs() < 1e-11, "{distance} against {back}");
+        }
+        assert!(outcome.stats.rejected == 0 && outcome.stats.accepted < 20);
+    }
+}
+
+/// The figures of BENCHMARKS.md: steps and evaluations in contact, up to the release, for the
+/// sphere declared unilateral (in [`ContactDopri5`], and in plain [`Dopri5`], which re-infers the
+/// mode at every evaluation) and bilateral (plain Dopri5 with an event on its multiplier).
+/// `cargo test --release --test contact_adaptive -- --ignored --nocapture`
+#[test]
+#[ignore = "prints the cost table of BENCHMARKS.md"]
+fn cost_in_contact_table() {
+    use unilateral::{Coords, Sphere, State};
+    let sys = Sphere { m: M, r: R, g: G };
+    let v0 = 0.5;
+    println!("| tol | unilateral, ContactDopri5 | unilateral, plain Dopri5 | bilateral, Dopri5 |");
+    println!("|---|---|---|---|");
+    for tol in [1e-6, 1e-10, 1e-13] {
+        let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: v0, y: 0.0 });
+        let mut solver = ContactDopri5::new(
+            &sys,
+            Dopri5::new(tol, tol),
+            &start,
+            ContactOptions::default(),
+        )
+        .expect("solver");
+        while solver.events().is_empty() {
+            solver.step(10.0).expect("step");
+        }
+        let frozen = solver.stats();
+        let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
+        let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
+        let mut s = start;
+        let plain = Dopri5::new(tol, tol)
+            .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
+            .expect("integration")
+            .stats;
+        let (_, bil) = bilateral_release(Start { theta0: 0.0, v0 }, tol);
+        let show = |s: Stats| {
+            format!(
+                "{} accepted + {} rejected, {} evaluations",
+                s.accepted, s.rejected, s.evaluations
+            )
+        };
+        println!(
+            "| {tol:.0e} | {} | {} | {} |",
+            show(frozen),
+            show(plain),
+            show(bil)
+        );
+    }
+}
+
+#[test]
+fn puck_on_a_rough_plane_stops_at_the_closed_form_point() {
+    use lagrange_gallery::scenes::rough_plane::rough_plane::{Coords, RoughPlane, State};
+    use lagrange_gallery::scenes::rough_plane::stop;
+    // The friction cone (`#[friction]` with a `Vec2` slip velocity) in the adaptive method: the
+    // puck of the gallery's `rough_plane` from 3 m/s, straight and pushed sideways; closed forms of
+    // the stop (time and point) in `stop`.
+    let straight = RoughPlane {
+        m: 1.5,
+        g: G,
+        mu_k: 0.5,
+        mu_s: 0.6,
+        push: 0.0,
+    };
+    let v0 = 3.0;
+    let run = |sys: &RoughPlane, tol: f64| {
+        let mut s = State::new(
+            0.0,
+            Coords {
+                x: 0.0,
+                y: 0.0,
+                z: 0.0,
+            },
+            Coords {
+                x: v0,
+                y: 0.0,
+                z: 0.0,
+            },
+        );
+        let (outcome, changes) = Dopri5::new(tol, tol)
+            .integrate_contacts(sys, &mut s, 1.5, ContactOptions::default(), &mut [], |_| {})
+            .expect("integration");
+        // One stop, decided once (no chattering), from sliding to sticking for good.
+        assert_eq!(changes.len(), 1, "{changes:?}");
+        assert_eq!(
+            (changes[0].from, changes[0].to),
+            (RowMode::Sliding, RowMode::Stick)
+        );
+        // Sticking is enforced as a velocity constraint: at rest to round-off.
+        assert!(s.v.x.hypot(s.v.y) < 1e-12, "{:?}", s.v);
+        (changes[0].t, s.q.x, s.q.y, outcome.stats)
+    };
+    // Straight: a constant deceleration, integrated exactly (quadratic in t); the stop is located
+    // to the root finder's 1e-13 and round-off. Asserted to 1e-12.
+    let (t_s, x_s, y_s) = stop(&straight, v0);
+    let (t, x, y, stats) = run(&straight, 1e-10);
+    eprintln!(
+        "straight: stop at {t:.15} ({:+.1e}), {} steps",
+        t - t_s,
+        stats.accepted
+    );
+    assert!((t - t_s).abs() < 1e-12 && (x - x_s).abs() < 1e-12 && (y - y_s).abs() < 1e-12);
+    // Pushed sideways: the path curves and the slip direction turns ever faster near the stop, so
+    // the errors are the integration's, which Dopri5 keeps proportional to the tolerance (HNW I
+    // §II.4: the global error of a tolerance-controlled method is proportional to tol), plus the
+    // direction held along the step's initial slip in the step that reaches the stop, O(h·θ(h)),
+    // which falls faster than h. Asserted: each 100× smaller tolerance divides the errors of the
+    // stop time and point by at least 30 (proportionality with a margin of 3 for its constant).
+    let pushed = RoughPlane {
+        push: 3.0,
+        ..straight
+    };
+    let (t_s, x_s, y_s) = stop(&pushed, v0);
+    let mut previous: Option<[f64; 3]> = None;
+    for tol in [1e-6, 1e-8, 1e-10] {
+        let (t, x, y, stats) = run(&pushed, tol);
+        let errors = [(t - t_s).abs(), (x - x_s).abs(), (y - y_s).abs()];
+        eprintln!(
+            "pushed, tol {tol:.0e}: stop time {:.1e}, point ({:.1e}, {:.1e}) off; {} accepted, {} \
+             rejected, {} evaluations",
+            errors[0], errors[1], errors[2], stats.accepted, stats.rejected, stats.evaluations
+        );
+        if let Some(p) = previous {
+            for (e, p) in errors.iter().zip(p) {
+                assert!(
+                    *e < p / 30.0,
+                    "tol {tol:.0e}: errors {errors:?} after {p:?}"
+                );
+            }
+        }
+        previous = Some(errors);
+    }
+}
+
+#[test]
+fn bouncing_ball_comes_to_rest_at_the_accumulation_point() {
+    use ball::{Ball, Coords, State};
+    use lagrange::constraints::CONSISTENCY_TOLERANCE;
+    let sys = Ball { m: 0.3, g: G };
+    let height = 1.3;
+    let t1 = (2.0 * height / G).sqrt();
+    for e in [0.6, 0.9] {
+        // Newton's law ċ⁺ = −e ċ⁻: flights of 2e·v/g, 2e²·v/g, … after the first landing at t₁
+        // with v = g t₁, so the bounces accumulate at t∞ = t₁ (1 + e)/(1 − e) (a Zeno sequence).
+        // The impact law stops bouncing once the rebound speed e·v would be below
+        // CONSISTENCY_TOLERANCE, which leaves out flights summing to at most
+        // 2·tol/(g(1 − e)); each landing is located to 1e-13, an error that shortens or lengthens
+        // each later flight by 2e per unit, at most n·1e-13·(1 + e)/(1 − e) over n landings.
+        let t_inf = t1 * (1.0 + e) / (1.0 - e);
+        let mut s = State::new(0.0, Coords { x: 0.2, y: height }, Coords { x: 0.5, y: 0.0 });
+        let options = ContactOptions {
+            restitution: e,
+            ..Default::default()
+        };
+        let (outcome, changes) = Dopri5::new(1e-10, 1e-10)
+            .integrate_contacts(&sys, &mut s, 30.0, options, &mut [], |_| {})
+            .expect("integration");
+        let last = *changes.last().expect("landings");
+        let bound = 2.0 * CONSISTENCY_TOLERANCE / (G * (1.0 - e))
+            + changes.len() as f64 * 1e-13 * (1.0 + e) / (1.0 - e);
+        eprintln!(
+            "e = {e}: {} landings, at rest from t = {:.12} (closed form {t_inf:.12}, bound \
+             {bound:.1e}); {} steps, {} evaluations",
+            changes.len(),
+            last.t,
+            outcome.stats.accepted + outcome.stats.rejected,
+            outcome.stats.evaluations
+        );
+        assert_eq!(last.to, RowMode::Active);
+        assert!((last.t - t_inf).abs() < bound, "{} against {t_inf}", last.t);
+        // At rest on the floor from then on (the contact projected to round-off), still sliding at
+        // 0.5 m/s exactly: impulses and projections act along the floor's normal (0, 1) only.
+        assert!(s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12 && s.v.x == 0.5);
+        // One step per flight, and a few more: the motion is polynomial.
+        assert!(outcome.stats.accepted < changes.len() + 10);
+    }
+}
