@@ -123,6 +123,29 @@ pub trait Mechanism<const N: usize>: Sized {
     }
 
     #[doc(hidden)]
+    /// Hook for mechanisms with unilateral or friction rows: integrates from `state` to `t_end`
+    /// with the embedded pair `method`, the contact mode held within each step and its switches
+    /// located ([`crate::constraints::ContactAdaptive`]), as `Dopri5::integrate` and
+    /// `Dop853::integrate` promise. `None` (the default) when the declaration has no such rows:
+    /// the pair then integrates the smooth system itself.
+    #[inline]
+    fn integrate_contacts<P, O>(
+        &self,
+        method: P,
+        state: &mut State<Self::Coords>,
+        t_end: f64,
+        events: &mut [crate::integrate::Event<'_, Self::Coords>],
+        observer: O,
+    ) -> Option<Result<crate::integrate::Outcome<Self::Coords>>>
+    where
+        P: crate::integrate::EmbeddedPair,
+        O: FnMut(crate::integrate::Observation<'_, Self::Coords, N>),
+    {
+        let _ = (method, state, t_end, events, observer);
+        None
+    }
+
+    #[doc(hidden)]
     /// Hook for mechanisms with constraints: projects (q, q̇) at time `t` back onto the constraints
     /// (see [`crate::constraints::project`]). Integrators call it after every step; the default does
     /// nothing. On error `q` and `v` are unchanged.
@@ -435,6 +458,20 @@ macro_rules! impl_mechanism {
                     v,
                     $crate::constraints::CONSISTENCY_TOLERANCE,
                 )
+            }
+            fn integrate_contacts<P, O>(
+                &self,
+                method: P,
+                state: &mut $crate::State<Self::Coords>,
+                t_end: f64,
+                events: &mut [$crate::integrate::Event<'_, Self::Coords>],
+                observer: O,
+            ) -> Option<$crate::Result<$crate::integrate::Outcome<Self::Coords>>>
+            where
+                P: $crate::integrate::EmbeddedPair,
+                O: FnMut($crate::integrate::Observation<'_, Self::Coords, $n>),
+            {
+                $crate::constraints::integrate_declared_contacts(method, self, state, t_end, events, observer)
             }
         });
     };

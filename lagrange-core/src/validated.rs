@@ -145,6 +145,22 @@ impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
     fn check_constraints(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
         self.0.check_constraints(t, q, v)
     }
+    #[inline(always)]
+    fn integrate_contacts<P, O>(
+        &self,
+        method: P,
+        state: &mut crate::model::State<Self::Coords>,
+        t_end: f64,
+        events: &mut [crate::integrate::Event<'_, Self::Coords>],
+        observer: O,
+    ) -> Option<Result<crate::integrate::Outcome<Self::Coords>>>
+    where
+        P: crate::integrate::EmbeddedPair,
+        O: FnMut(crate::integrate::Observation<'_, Self::Coords, N>),
+    {
+        self.0
+            .integrate_contacts(method, state, t_end, events, observer)
+    }
 }
 
 /// The model behind the handle, for the generic code that works on a [`Model`] (the parameter

@@ -436,6 +436,44 @@ fn integrate_contacts<
     Ok((outcome, solver.contact.events))
 }
 
+/// What the `Mechanism::integrate_contacts` hook of a constrained mechanism does: integrates with
+/// the contact mode held per step ([`ContactAdaptive`], default [`ContactOptions`]) when the
+/// declaration has unilateral or friction rows, and returns `None` otherwise (bilateral rows are
+/// smooth: the pair's own stepper integrates them).
+#[doc(hidden)]
+#[allow(clippy::type_complexity)]
+pub fn integrate_declared_contacts<
+    P: EmbeddedPair,
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    method: P,
+    model: &M,
+    state: &mut State<M::Coords>,
+    t_end: f64,
+    events: &mut [Event<'_, M::Coords>],
+    observer: impl FnMut(Observation<'_, M::Coords, N>),
+) -> Option<Result<Outcome<M::Coords>>> {
+    let counts = super::ConstraintCounts::of(&M::KINDS);
+    if counts.unilateral + counts.friction == 0 {
+        return None;
+    }
+    Some(
+        integrate_contacts(
+            method,
+            model,
+            state,
+            t_end,
+            ContactOptions::default(),
+            events,
+            observer,
+        )
+        .map(|(outcome, _)| outcome),
+    )
+}
+
 impl Dopri5 {
     /// Integrates a mechanism with unilateral contacts or friction from `state` to `t_end` with the
     /// mode changes located ([`ContactDopri5`]), calling `observer` after every step and for every

@@ -210,7 +210,7 @@ mod projection;
 mod rows;
 mod solve;
 
-pub use adaptive::{ContactAdaptive, ContactDop853, ContactDopri5};
+pub use adaptive::{integrate_declared_contacts, ContactAdaptive, ContactDop853, ContactDopri5};
 pub use consistency::{
     check_consistent, check_velocity_rows_affine, consistent_state, consistent_state_holding,
     CONSISTENCY_TOLERANCE,

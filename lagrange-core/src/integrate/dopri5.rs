@@ -389,10 +389,16 @@ impl Dopri5 {
         state: &mut State<M::Coords>,
         t_end: f64,
         events: &mut [Event<'_, M::Coords>],
-        observer: impl FnMut(Observation<'_, M::Coords, N>),
+        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
     ) -> Result<Dopri5Outcome<M::Coords>> {
         if !(t_end.is_finite() && t_end >= state.t) {
             return Err(Error::InvalidEndTime { t: state.t, t_end });
+        }
+        // Unilateral and friction rows: the mode held per step, its switches located.
+        if let Some(outcome) =
+            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
+        {
+            return outcome;
         }
         let mut stepper = Dopri5Stepper::new(mechanism, *self, state)?;
         let outcome = stepper.integrate(t_end, events, observer)?;

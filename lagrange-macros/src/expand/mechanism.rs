@@ -112,5 +112,19 @@ fn constrained_overrides(
         fn check_constraints(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
             #constraints::check_consistent::<Self, #n, #k, #c>(self, t, q, v, #constraints::CONSISTENCY_TOLERANCE)
         }
+        fn integrate_contacts<__P, __O>(
+            &self,
+            method: __P,
+            state: &mut #p::State<Coords>,
+            t_end: f64,
+            events: &mut [#p::lagrange_core::integrate::Event<'_, Coords>],
+            observer: __O,
+        ) -> #p::core::option::Option<#p::Result<#p::lagrange_core::integrate::Outcome<Coords>>>
+        where
+            __P: #p::lagrange_core::integrate::EmbeddedPair,
+            __O: #p::core::ops::FnMut(#p::lagrange_core::integrate::Observation<'_, Coords, #n>),
+        {
+            #constraints::integrate_declared_contacts::<__P, Self, #n, #k, #c>(method, self, state, t_end, events, observer)
+        }
     }
 }

@@ -314,6 +314,39 @@ pub mod sliding_block {
                 ::lagrange::__private::lagrange_core::constraints::CONSISTENCY_TOLERANCE,
             )
         }
+        fn integrate_contacts<__P, __O>(
+            &self,
+            method: __P,
+            state: &mut ::lagrange::__private::State<Coords>,
+            t_end: f64,
+            events: &mut [::lagrange::__private::lagrange_core::integrate::Event<
+                '_,
+                Coords,
+            >],
+            observer: __O,
+        ) -> ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::Result<
+                ::lagrange::__private::lagrange_core::integrate::Outcome<Coords>,
+            >,
+        >
+        where
+            __P: ::lagrange::__private::lagrange_core::integrate::EmbeddedPair,
+            __O: ::lagrange::__private::core::ops::FnMut(
+                ::lagrange::__private::lagrange_core::integrate::Observation<
+                    '_,
+                    Coords,
+                    2,
+                >,
+            ),
+        {
+            ::lagrange::__private::lagrange_core::constraints::integrate_declared_contacts::<
+                __P,
+                Self,
+                2,
+                2,
+                2,
+            >(method, self, state, t_end, events, observer)
+        }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
