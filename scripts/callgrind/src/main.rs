@@ -410,7 +410,8 @@ fn main() {
             }
             acc += s.q.theta1;
         }
-        // One RK4 step (h = 10⁻³) per call on dual numbers seeded on 1, 2 or 4 initial values
+        // One RK4 step (h = 10⁻³) per call on dual numbers seeded on 1, 2 or 4 initial values, or
+        // on the lengths (`l1`, `l1_l2`, and both with two initial values: `l1_l2_4`)
         // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
         mode if mode.starts_with("sensitivity_double_pendulum_") => {
             use double_pendulum::*;
@@ -446,10 +447,15 @@ fn main() {
                     acc += run.sensitivities().dq[0].theta1;
                 }};
             }
+            let (l1, l2) = (Seed::Parameter("l1"), Seed::Parameter("l2"));
             match &mode["sensitivity_double_pendulum_".len()..] {
                 "1" => run!([q1]),
                 "2" => run!([q1, q2]),
                 "4" => run!([q1, q2, v1, v2]),
+                // Seeded on parameters: the accelerations of the lifted model.
+                "l1" => run!([l1]),
+                "l1_l2" => run!([l1, l2]),
+                "l1_l2_4" => run!([l1, l2, q1, q2]),
                 other => panic!("no sensitivity run with {other} seeds"),
             }
         }
