@@ -4,6 +4,8 @@
 use lagrange::prelude::*;
 use lagrange::sensitivity::{Seed, Tangent};
 
+mod common;
+
 #[mechanism]
 pub mod pendulum {
     pub struct Coords {
@@ -161,14 +163,9 @@ fn rk4_end(sys: &damped::Damped, s0: damped::State, h: f64, steps: usize) -> [f6
 
 /// On the damped double pendulum (2 s of RK4, h = 1e-3) the derivatives of the end state by the
 /// lengths (in the positions) and by the friction coefficient (in the forces) agree with finite
-/// differences of the same discrete map, to the differences' own error:
-/// - truncation: the Richardson combination R(δ) = (4 D(δ/2) − D(δ))/3 of central differences
-///   removes the δ² term, so R(δ/2) is off by about |R(δ) − R(δ/2)|/15;
-/// - round-off: each of the n steps rounds the state at relative ε, propagated like a perturbation
-///   of the initial state (amplified at most by 1 + the largest sensitivity) and adding like a
-///   random walk, ε max(|x|, 1)(1 + |J|max)√n, divided by the increment δ/4 and amplified 5/3 by
-///   the combination; the real parts of the two runs (the lifted model's dynamics and the
-///   generated ones) differ by the same order of rounding.
+/// differences of the same discrete map, to the differences' own error (estimated in
+/// `common::check_against_finite_differences`; the real parts of the two runs, the lifted model's
+/// dynamics and the generated ones, differ by rounding of the same order).
 #[test]
 fn damped_double_pendulum_by_parameters_matches_finite_differences() {
     let sys = damped();
@@ -220,10 +217,6 @@ fn damped_double_pendulum_by_parameters_matches_finite_differences() {
             ]
         })
         .collect();
-    let largest = jacobian
-        .iter()
-        .flatten()
-        .fold(0.0f64, |m, x| m.max(x.abs()));
     let central = |seed: usize, delta: f64| -> [f64; 4] {
         let shifted = |sign: f64| {
             let mut p = damped();
@@ -238,34 +231,8 @@ fn damped_double_pendulum_by_parameters_matches_finite_differences() {
         let (plus, minus) = (shifted(1.0), shifted(-1.0));
         std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * delta))
     };
-    let delta = 1e-3;
-    let mut worst: f64 = 0.0;
-    for (j, seed) in seeds.iter().enumerate() {
-        let d = [
-            central(j, delta),
-            central(j, delta / 2.0),
-            central(j, delta / 4.0),
-        ];
-        for i in 0..4 {
-            let coarse = (4.0 * d[1][i] - d[0][i]) / 3.0;
-            let fine = (4.0 * d[2][i] - d[1][i]) / 3.0;
-            let truncation = (coarse - fine).abs() / 15.0;
-            let round_off =
-                f64::EPSILON * plain[i].abs().max(1.0) * (1.0 + largest) * (steps as f64).sqrt()
-                    / (delta / 4.0)
-                    * (5.0 / 3.0);
-            let estimate = truncation + round_off;
-            let error = (jacobian[j][i] - fine).abs();
-            worst = worst.max(error / estimate);
-            assert!(
-                error <= 3.0 * estimate,
-                "∂x{i}/∂{}: AD {:e}, FD {fine:e}, differs by {error:e} > 3 × the FD error estimate {estimate:e}",
-                seed.label(),
-                jacobian[j][i],
-            );
-        }
-    }
-    eprintln!("largest sensitivity {largest:.2}; worst |AD − FD| / FD error estimate: {worst:.3}");
+    let labels: Vec<String> = seeds.iter().map(Seed::label).collect();
+    common::check_against_finite_differences(&jacobian, &labels, plain, steps, central);
     // The friction's sensitivity is not trivially zero: c takes energy out.
     assert!(jacobian[2].iter().any(|x| x.abs() > 1e-2));
 }

@@ -3,6 +3,8 @@
 use lagrange::prelude::*;
 use lagrange::sensitivity::{Seed, Tangent};
 
+mod common;
+
 #[mechanism]
 pub mod pendulum {
     pub struct Coords {
@@ -74,13 +76,8 @@ fn rk4_end(s0: double_pendulum::State, h: f64, steps: usize) -> [f64; 4] {
 
 /// On the double pendulum (2 s of RK4, h = 1e-3, released with velocity; sensitivities up to ~4)
 /// every derivative of the end state by every initial value agrees with finite differences of the
-/// same discrete map, to the differences' own error, estimated as follows.
-/// - Truncation: the central difference D(δ) has error c₂δ² + c₄δ⁴ + …; the Richardson combination
-///   R(δ) = (4 D(δ/2) − D(δ))/3 removes c₂, so R(δ/2) is off by about |R(δ) − R(δ/2)|/15.
-/// - Round-off: each of the n steps rounds the state at relative ε; such an error propagates like a
-///   perturbation of the initial value, amplified at most by the largest sensitivity |J|max, and n
-///   of them add like a random walk: ε max(|x|, 1) (1 + |J|max) √n in each end value, divided by
-///   the increment δ/4 and amplified 5/3 by the Richardson combination.
+/// same discrete map, to the differences' own error (estimated in
+/// `common::check_against_finite_differences`).
 #[test]
 fn double_pendulum_matches_finite_differences() {
     let sys = double_pendulum();
@@ -128,11 +125,6 @@ fn double_pendulum_matches_finite_differences() {
             ]
         })
         .collect();
-    let largest = jacobian
-        .iter()
-        .flatten()
-        .fold(0.0f64, |m, x| m.max(x.abs()));
-
     let central = |seed: usize, delta: f64| -> [f64; 4] {
         let shifted = |sign: f64| {
             let mut s = s0;
@@ -148,34 +140,8 @@ fn double_pendulum_matches_finite_differences() {
         let (plus, minus) = (shifted(1.0), shifted(-1.0));
         std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * delta))
     };
-    let delta = 1e-3;
-    let mut worst: f64 = 0.0;
-    for (j, seed) in seeds.iter().enumerate() {
-        let d = [
-            central(j, delta),
-            central(j, delta / 2.0),
-            central(j, delta / 4.0),
-        ];
-        for i in 0..4 {
-            let coarse = (4.0 * d[1][i] - d[0][i]) / 3.0;
-            let fine = (4.0 * d[2][i] - d[1][i]) / 3.0;
-            let truncation = (coarse - fine).abs() / 15.0;
-            let round_off =
-                f64::EPSILON * plain[i].abs().max(1.0) * (1.0 + largest) * (steps as f64).sqrt()
-                    / (delta / 4.0)
-                    * (5.0 / 3.0);
-            let estimate = truncation + round_off;
-            let error = (jacobian[j][i] - fine).abs();
-            worst = worst.max(error / estimate);
-            assert!(
-                error <= 3.0 * estimate,
-                "∂x{i}/∂{}: AD {:e}, FD {fine:e}, differs by {error:e} > 3 × the FD error estimate {estimate:e}",
-                seed.label(),
-                jacobian[j][i],
-            );
-        }
-    }
-    eprintln!("largest sensitivity {largest:.1}; worst |AD − FD| / FD error estimate: {worst:.3}");
+    let labels: Vec<String> = seeds.iter().map(Seed::label).collect();
+    common::check_against_finite_differences(&jacobian, &labels, plain, steps, central);
 }
 
 /// Small oscillations: θ(t) = θ₀ cos ωt + (θ̇₀/ω) sin ωt, so ∂θ/∂θ₀ = cos ωt and ∂θ/∂θ̇₀ =
