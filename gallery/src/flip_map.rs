@@ -84,7 +84,7 @@ pub fn angles(n: usize) -> Vec<f64> {
 }
 
 /// Every release of an `n` × `n` map, θ₁ varying fastest: cell (i, j) is element `j * n + i`,
-/// (θ₁, θ₂) = (angles[i], angles[j]).
+/// (θ₁, θ₂) = (`angles[i]`, `angles[j]`).
 pub fn grid(n: usize) -> Vec<(f64, f64)> {
     let a = angles(n);
     ensemble::grid2(&a, &a)
