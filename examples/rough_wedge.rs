@@ -106,32 +106,26 @@ fn main() -> Result<(), lagrange::Error> {
     }
     let f = constraint_forces(&sys, &s)?;
     let t = s.t;
-    println!("after {t:.1} s, {} mode changes:", stepper.events.len());
-    println!(
-        "wedge acceleration {:.12} m/s², closed form A = {big_a:.12}",
-        f.accelerations[0]
-    );
-    println!(
-        "normal force       {:.12} N,    closed form N = {normal:.12}",
-        f.multipliers[0]
-    );
-    println!(
-        "friction           {:.12} N,    closed form −μₖN = {:.12}",
-        f.multipliers[1],
-        -mu * normal
-    );
-    println!(
-        "wedge position     {:.12} m,    closed form ½At² = {:.12}",
-        s.q.x,
-        0.5 * big_a * t * t
-    );
     let p = sys.momenta(&s)?;
-    println!("momentum M Ẋ + m ḃₓ = {:.1e} kg m/s", p.x + p.bx);
+    println!("after {t:.1} s, {} mode changes", stepper.events.len());
     println!(
-        "energy lost {:.12} J, friction's work μₖN·½a_r t² = {:.12} J",
-        e0 - sys.energy(&s)?,
-        mu * normal * 0.5 * a_r * t * t
+        "{:30} {:>18} {:>18}",
+        "quantity", "simulated", "closed form"
     );
+    for (what, simulated, closed_form) in [
+        ("wedge acceleration A (m/s²)", f.accelerations[0], big_a),
+        ("normal force N (N)", f.multipliers[0], normal),
+        ("friction −μₖN (N)", f.multipliers[1], -mu * normal),
+        ("wedge position ½At² (m)", s.q.x, 0.5 * big_a * t * t),
+        ("momentum M Ẋ + m ḃₓ (kg m/s)", p.x + p.bx, 0.0),
+        (
+            "energy lost μₖN·½a_r t² (J)",
+            e0 - sys.energy(&s)?,
+            mu * normal * 0.5 * a_r * t * t,
+        ),
+    ] {
+        println!("{what:30} {simulated:18.12} {closed_form:18.12}");
+    }
     let plots = lagrange_gallery::plots_dir();
     plot::lines(
         &plots.join("rough_wedge_example.svg"),
