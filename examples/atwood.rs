@@ -1,12 +1,86 @@
 //! An Atwood machine with a massive pulley: masses m₁ and m₂ hang from an inextensible rope over a
 //! pulley of radius r and moment of inertia I that turns without the rope slipping. One coordinate,
-//! the descent y of m₁; the pulley turns by −y/r. Closed form (Kleppner & Kolenkow, 2nd ed., §7.x):
-//!   ÿ = (m₁ − m₂) g / (m₁ + m₂ + I/r²).
+//! the descent y of m₁; the pulley turns by −y/r, so its inertia adds I/r² to the masses the
+//! weight difference has to accelerate. Closed form (Kleppner & Kolenkow, 2nd ed., §7.x):
+//!   ÿ = (m₁ − m₂) g / (m₁ + m₂ + I/r²),  so y(t) = ½ ÿ t² from rest.
 //!
-//! The mechanism, the simulation and its checks against the closed forms are the gallery's scene
-//! `lagrange_gallery::scenes::atwood` (`gallery/src/scenes/atwood.rs`); this runs it alone and prints its
-//! table.
+//! ```text
+//! cargo run --release --example atwood
+//! ```
+//!
+//! The gallery's scene `lagrange_gallery::scenes::atwood` checks ÿ and y(t) against the closed form.
 
-fn main() {
-    lagrange_gallery::run_scene(lagrange_gallery::scenes::atwood::run)
+use lagrange::prelude::*;
+
+#[mechanism]
+pub mod atwood {
+    /// Descent of the first mass.
+    pub struct Coords {
+        pub y: f64,
+    }
+
+    pub struct Atwood {
+        /// The descending mass.
+        pub m1: f64,
+        /// The rising mass.
+        pub m2: f64,
+        pub pulley_mass: f64,
+        /// The pulley's moment of inertia about its axle.
+        pub pulley_inertia: f64,
+        /// The pulley's radius.
+        pub r: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m1)]
+    fn left() -> Vec2 {
+        vec2(-r, -1.0 - y)
+    }
+
+    #[particle(mass = m2)]
+    fn right() -> Vec2 {
+        vec2(r, -1.0 + y)
+    }
+
+    /// The rope does not slip: the pulley turns by −y/r.
+    #[rigid_body(mass = pulley_mass, inertia = pulley_inertia)]
+    fn pulley() -> Planar {
+        planar(vec2(0.0, 0.0), -y / r)
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+fn main() -> Result<(), lagrange::Error> {
+    use atwood::{Atwood, Coords, State};
+    // A uniform disk for the pulley: I = ½ M r².
+    let sys = Atwood {
+        m1: 3.0,
+        m2: 2.0,
+        pulley_mass: 1.5,
+        pulley_inertia: 0.5 * 1.5 * 0.2 * 0.2,
+        r: 0.2,
+        g: 9.81,
+    };
+    let closed_form =
+        (sys.m1 - sys.m2) * sys.g / (sys.m1 + sys.m2 + sys.pulley_inertia / (sys.r * sys.r));
+    let mut s = State::at_rest(Coords { y: 0.0 });
+    println!(
+        "ÿ = {:.12} m/s²; (m₁ − m₂)g / (m₁ + m₂ + I/r²) = {closed_form:.12} m/s²",
+        sys.accelerations(&s)?.y
+    );
+    println!("   t (s)        y (m)      ½ÿt² (m)");
+    for _ in 0..5 {
+        sys.simulate::<Rk4>(&mut s, 1e-3, 200, |_| {})?;
+        println!(
+            "{:8.2} {:12.9} {:12.9}",
+            s.t,
+            s.q.y,
+            0.5 * closed_form * s.t * s.t
+        );
+    }
+    Ok(())
 }

@@ -1,15 +1,140 @@
 //! The lecture's wedge and block (Cross, Caltech Ph106, Lecture 4, eqs. (27)–(32); the frictionless
-//! version is the `wedge_block` scene), now with Coulomb friction between block and wedge; the wedge
-//! (mass M) still slides freely on a frictionless floor. Coordinates: the wedge's position X and the
-//! block's position (bₓ, b_y). The wedge's face passes through (X, h) and slopes down at angle α; the
-//! block touches it through a unilateral contact c = n·(b − (X, h)) ≥ 0, n = (sin α, cos α), with
-//! friction on that contact, slip velocity s = t̂·(ḃ − (Ẋ, 0)), t̂ = (cos α, −sin α) (positive when
-//! the block slides down the face).
+//! version is the `wedge_block` example), now with Coulomb friction between block and wedge; the
+//! wedge (mass M) still slides freely on a frictionless floor. Coordinates: the wedge's position X
+//! and the block's position (bₓ, b_y). The block touches the wedge's face through a unilateral
+//! contact, with friction on that contact against the slip along the face.
 //!
-//! The mechanism, the simulation and its checks against the closed forms are the gallery's scene
-//! `lagrange_gallery::scenes::rough_wedge` (`gallery/src/scenes/rough_wedge.rs`); this runs it alone and prints its
-//! table.
+//! Closed form while the block slides down (Newton's laws for the two bodies, as in Kleppner &
+//! Kolenkow, 2nd ed., problem 3.x for the frictionless case), with k = sin α − μₖ cos α:
+//!   A = −m g cos α · k / (M + m sin α · k),   N = m (g cos α + A sin α),
+//!   a_r = g k − A (cos α + μₖ sin α),
+//! for the wedge's acceleration A, the normal force N and the block's acceleration a_r down the face
+//! relative to the wedge. Friction is internal, so M Ẋ + m ḃₓ stays 0 from rest, while the energy
+//! falls by the work of friction, μₖ N times the distance slid, ½ a_r t².
+//!
+//! ```text
+//! cargo run --release --example rough_wedge
+//! ```
+//!
+//! The gallery's scene `lagrange_gallery::scenes::rough_wedge` checks the motion, the forces, the
+//! momentum, the energy lost, the frictionless limit and the stuck case against the closed form.
 
-fn main() {
-    lagrange_gallery::run_scene(lagrange_gallery::scenes::rough_wedge::run)
+use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4};
+use lagrange::prelude::*;
+use lagrange_gallery::plot::{self, Series};
+
+#[mechanism]
+pub mod rough_wedge {
+    /// x: the wedge's position X on the floor; (bx, by): the block's position.
+    pub struct Coords {
+        pub x: f64,
+        pub bx: f64,
+        pub by: f64,
+    }
+
+    pub struct RoughWedge {
+        pub wedge_mass: f64,
+        pub block_mass: f64,
+        /// The face's angle; it slopes down from its top edge.
+        pub alpha: f64,
+        /// Height of the face's top edge above the wedge's reference point.
+        pub h: f64,
+        pub g: f64,
+        pub mu_k: f64,
+        pub mu_s: f64,
+    }
+
+    #[particle(mass = wedge_mass)]
+    fn wedge() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[particle(mass = block_mass)]
+    fn block() -> Vec2 {
+        vec2(bx, by)
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+
+    /// The face pushes the block along its normal (sin α, cos α) and cannot pull.
+    #[unilateral]
+    fn face() -> f64 {
+        (block.x - wedge.x) * alpha.sin() + (block.y - wedge.y - h) * alpha.cos()
+    }
+
+    /// Coulomb friction between block and face; slip velocity positive down the face.
+    #[friction(on = face, kinetic = mu_k, stiction = mu_s)]
+    fn face_friction() -> f64 {
+        (block_dot.x - wedge_dot.x) * alpha.cos() - (block_dot.y - wedge_dot.y) * alpha.sin()
+    }
+}
+
+fn main() -> Result<(), lagrange::Error> {
+    use rough_wedge::{Coords, RoughWedge, State};
+    let sys = RoughWedge {
+        wedge_mass: 3.0,
+        block_mass: 1.0,
+        alpha: 0.5,
+        h: 1.0,
+        g: 9.81,
+        mu_k: 0.2,
+        mu_s: 0.3,
+    };
+    let (m, big_m, mu, g) = (sys.block_mass, sys.wedge_mass, sys.mu_k, sys.g);
+    let (sn, cs) = sys.alpha.sin_cos();
+    let k = sn - mu * cs;
+    let big_a = -m * g * cs * k / (big_m + m * sn * k);
+    let normal = m * (g * cs + big_a * sn);
+    let a_r = g * k - big_a * (cs + mu * sn);
+
+    // The block at rest 0.3 m down the face.
+    let mut s = State::at_rest(Coords {
+        x: 0.0,
+        bx: 0.3 * cs,
+        by: sys.h - 0.3 * sn,
+    });
+    let e0 = sys.energy(&s)?;
+    let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;
+    let (mut wedge, mut block) = (Vec::new(), Vec::new());
+    for _ in 0..1000 {
+        stepper.step(&sys, &mut s, 1e-3)?;
+        wedge.push((s.q.x, 0.0));
+        block.push((s.q.bx, s.q.by));
+    }
+    let f = constraint_forces(&sys, &s)?;
+    let t = s.t;
+    let p = sys.momenta(&s)?;
+    println!("after {t:.1} s, {} mode changes", stepper.events.len());
+    println!(
+        "{:30} {:>18} {:>18}",
+        "quantity", "simulated", "closed form"
+    );
+    for (what, simulated, closed_form) in [
+        ("wedge acceleration A (m/s²)", f.accelerations[0], big_a),
+        ("normal force N (N)", f.multipliers[0], normal),
+        ("friction −μₖN (N)", f.multipliers[1], -mu * normal),
+        ("wedge position ½At² (m)", s.q.x, 0.5 * big_a * t * t),
+        ("momentum M Ẋ + m ḃₓ (kg m/s)", p.x + p.bx, 0.0),
+        (
+            "energy lost μₖN·½a_r t² (J)",
+            e0 - sys.energy(&s)?,
+            mu * normal * 0.5 * a_r * t * t,
+        ),
+    ] {
+        println!("{what:30} {simulated:18.12} {closed_form:18.12}");
+    }
+    let plots = lagrange_gallery::plots_dir();
+    plot::lines(
+        &plots.join("rough_wedge_example.svg"),
+        "Wedge and block with friction (μₖ = 0.2): paths over 1 s from rest",
+        "x",
+        "y",
+        &[Series::new("wedge", wedge), Series::new("block", block)],
+    )
+    .map_err(|e| eprintln!("{e}"))
+    .ok();
+    Ok(())
 }

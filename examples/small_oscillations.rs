@@ -1,12 +1,84 @@
-//! Small oscillations of the double pendulum (equal masses m and lengths l, the mechanism of
-//! `double_pendulum.rs`) about its stable equilibrium: the normal modes from K v = ω² M v with M and
-//! K from dual numbers. Closed form (Goldstein, 3rd ed., §6.4; Landau & Lifshitz §23, problem 1):
-//! ω² = (2 ± √2) g/l, with mode shapes θ₂/θ₁ = ±√2 (in phase for the slow mode).
+//! Small oscillations of a double pendulum (equal masses m, equal lengths l) about its stable
+//! equilibrium: `equilibrium` finds the rest configuration by virtual work (every generalized force
+//! zero), and `normal_modes` solves K v = ω² M v with the mass matrix M and the stiffness K taken
+//! from dual numbers. Closed form (Goldstein, 3rd ed., §6.4; Landau & Lifshitz §23, problem 1):
+//!   ω² = (2 ∓ √2) g/l,  mode shapes θ₂/θ₁ = ±√2 (in phase for the slow mode).
 //!
-//! The mechanism, the simulation and its checks against the closed forms are the gallery's scene
-//! `lagrange_gallery::scenes::small_oscillations` (`gallery/src/scenes/small_oscillations.rs`); this runs it alone and prints its
-//! table.
+//! ```text
+//! cargo run --release --example small_oscillations
+//! ```
+//!
+//! The gallery's scene `lagrange_gallery::scenes::small_oscillations` checks the equilibrium, both
+//! frequencies and both shapes against the closed form.
 
-fn main() {
-    lagrange_gallery::run_scene(lagrange_gallery::scenes::small_oscillations::run)
+use lagrange::analysis::{equilibrium, normal_modes, EquilibriumOptions};
+use lagrange::prelude::*;
+
+#[mechanism]
+pub mod double_pendulum {
+    /// Angles of the two arms from the downward vertical.
+    pub struct Coords {
+        pub theta1: f64,
+        pub theta2: f64,
+    }
+
+    pub struct DoublePendulum {
+        pub m1: f64,
+        pub m2: f64,
+        pub l1: f64,
+        pub l2: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m1)]
+    fn bob1() -> Vec2 {
+        vec2(theta1.sin(), -theta1.cos()) * l1
+    }
+
+    /// The second bob hangs from the first.
+    #[particle(mass = m2)]
+    fn bob2() -> Vec2 {
+        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+fn main() -> Result<(), lagrange::Error> {
+    use double_pendulum::{Coords, DoublePendulum};
+    let (m, l, g) = (0.7, 1.3, 9.81);
+    let sys = DoublePendulum {
+        m1: m,
+        m2: m,
+        l1: l,
+        l2: l,
+        g,
+    };
+    // Newton from a guess off the equilibrium.
+    let guess = Coords {
+        theta1: 0.3,
+        theta2: -0.2,
+    };
+    let rest = equilibrium(&sys, 0.0, &guess, &EquilibriumOptions::default())?;
+    println!(
+        "equilibrium θ₁ = {:.1e}, θ₂ = {:.1e} after {} Newton iterations",
+        rest.q.theta1, rest.q.theta2, rest.iterations
+    );
+
+    let modes = normal_modes(&sys, 0.0, &rest.q)?;
+    let root2 = std::f64::consts::SQRT_2;
+    println!("mode   ω (rad/s)       √((2 ∓ √2) g/l)   θ₂/θ₁           closed form");
+    for (j, (name, sign)) in [("slow", -1.0), ("fast", 1.0)].into_iter().enumerate() {
+        println!(
+            "{name}  {:.12}  {:.12}    {:+.12}  {:+.12}",
+            modes.frequencies[j],
+            ((2.0 + sign * root2) * g / l).sqrt(),
+            modes.shapes[(1, j)] / modes.shapes[(0, j)],
+            -sign * root2
+        );
+    }
+    Ok(())
 }
