@@ -2,9 +2,10 @@
 //! closed form, the results table the gallery prints, SVG line plots, and the special functions the
 //! closed forms need.
 //!
-//! Every scene in [`scenes`] exposes `pub fn run(plots: &Path) -> Vec<Check>`; the example that runs
-//! it alone, the `gallery` binary of this crate and the `scenes` test all call it, so what the gallery
-//! prints is exactly what the tests assert.
+//! Every scene in [`scenes`] exposes `pub fn run(plots: &Path) -> Vec<Check>`; the `gallery` binary
+//! of this crate and the `scenes` test both call it, so what the gallery prints is exactly what the
+//! tests assert. The examples of `lagrange` tell the same stories as plain usage (declare, simulate,
+//! print, plot) without the checks.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -109,15 +110,6 @@ pub fn plots_dir() -> PathBuf {
         });
     let _ = std::fs::create_dir_all(&dir);
     dir.canonicalize().unwrap_or(dir)
-}
-
-/// Runs one scene as its own program: prints its table, exits non-zero if a check fails.
-pub fn run_scene(run: fn(&Path) -> Vec<Check>) {
-    let checks = run(&plots_dir());
-    print!("{}", table(&checks));
-    if checks.iter().any(|c| !c.passed()) {
-        std::process::exit(1);
-    }
 }
 
 /// The complete elliptic integral of the first kind K(k) = ∫₀^{π/2} dθ / √(1 − k² sin²θ) (modulus
