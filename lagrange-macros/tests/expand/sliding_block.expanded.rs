@@ -282,6 +282,7 @@ pub mod sliding_block {
                 2,
             >(self, t, q, v, &mode)
         }
+        #[inline]
         fn check_declaration_at(
             &self,
             t: f64,
