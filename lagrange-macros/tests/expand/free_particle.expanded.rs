@@ -120,6 +120,7 @@ pub mod free {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 2] = [[true, false], [false, true]];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {

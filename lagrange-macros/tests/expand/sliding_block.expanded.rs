@@ -130,6 +130,7 @@ pub mod sliding_block {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 2] = [[true, false], [false, true]];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {

@@ -128,6 +128,7 @@ pub mod varying {
         const RHEONOMIC: bool = true;
         const HAS_POTENTIAL: bool = true;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 1]; 2] = [[false], [true]];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {
