@@ -13,6 +13,9 @@
 use crate::geometry::Scalar;
 use nalgebra::{SMatrix, SVector};
 
+mod pattern;
+pub use pattern::{factor_pattern, mass_pattern};
+
 /// Relative size (against the largest diagonal entry) under which a squared Cholesky pivot counts
 /// as zero. The squared pivots bound the smallest eigenvalue from above, so a pivot this small means
 /// κ(M) ≳ 1/(1e3·ε) ≈ 4.5e12: the solve would have lost all but three or four digits, and a
@@ -120,6 +123,8 @@ pub struct Ldlt<S: Scalar, const N: usize> {
     lower: SMatrix<S, N, N>,
     /// 1 / Dⱼⱼ.
     inverse_pivots: SVector<S, N>,
+    /// `pattern[i][k]`: L_ik (i > k) may be nonzero; the others are exact zeros never formed.
+    pattern: [[bool; N]; N],
 }
 
 impl<S: Scalar, const N: usize> Ldlt<S, N> {
@@ -127,6 +132,30 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
     /// clearly positive (see [`SINGULAR_PIVOT`]); NaN never passes.
     #[inline]
     pub fn new(m: &SMatrix<S, N, N>) -> Result<Self, NotPositiveDefinite> {
+        Self::with_pattern(m, &[[true; N]; N])
+    }
+
+    /// [`Ldlt::new`] for an M whose structural zeros are known: `pattern` is the pattern of L,
+    /// [`factor_pattern`] of M's; the entries outside it are never formed, in the factorisation
+    /// and in the solves. M must be exactly zero wherever its pattern says so (as a mass matrix
+    /// assembled from `Model::DEPENDS` is); the result then equals [`Ldlt::new`]'s, the terms left
+    /// out being exact zeros.
+    ///
+    /// ```
+    /// use lagrange_core::linalg::{factor_pattern, Ldlt};
+    /// use nalgebra::{matrix, vector};
+    /// // Coordinates 0 and 1 coupled, 2 on its own.
+    /// let m = matrix![4.0, 1.0, 0.0; 1.0, 3.0, 0.0; 0.0, 0.0, 2.0];
+    /// let pattern = factor_pattern(&[[true, true, false], [true, true, false], [false, false, true]]);
+    /// let b = vector![1.0, 2.0, 3.0];
+    /// let x = Ldlt::with_pattern(&m, &pattern).unwrap().solve(&b);
+    /// assert_eq!(x, Ldlt::new(&m).unwrap().solve(&b));
+    /// ```
+    #[inline]
+    pub fn with_pattern(
+        m: &SMatrix<S, N, N>,
+        pattern: &[[bool; N]; N],
+    ) -> Result<Self, NotPositiveDefinite> {
         let mut scale = 0.0f64;
         for i in 0..N {
             scale = scale.max(m[(i, i)].re().abs());
@@ -139,7 +168,9 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
             // w_k = L_jk D_k, reused for the column below.
             let mut d = m[(j, j)];
             for k in 0..j {
-                d -= lower[(j, k)] * lower[(j, k)] * pivots[k];
+                if pattern[j][k] {
+                    d -= lower[(j, k)] * lower[(j, k)] * pivots[k];
+                }
             }
             if !(d.re() > tol) {
                 return Err(NotPositiveDefinite {
@@ -151,9 +182,14 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
             pivots[j] = d;
             inverse_pivots[j] = inv;
             for i in (j + 1)..N {
+                if !pattern[i][j] {
+                    continue;
+                }
                 let mut s = m[(i, j)];
                 for k in 0..j {
-                    s -= lower[(i, k)] * lower[(j, k)] * pivots[k];
+                    if pattern[i][k] && pattern[j][k] {
+                        s -= lower[(i, k)] * lower[(j, k)] * pivots[k];
+                    }
                 }
                 lower[(i, j)] = s * inv;
             }
@@ -161,18 +197,21 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
         Ok(Ldlt {
             lower,
             inverse_pivots,
+            pattern: *pattern,
         })
     }
 
     /// Solves M x = b.
     #[inline]
     pub fn solve(&self, b: &SVector<S, N>) -> SVector<S, N> {
-        let l = &self.lower;
+        let (l, pattern) = (&self.lower, &self.pattern);
         let mut x = *b;
         for i in 0..N {
             let mut s = x[i];
             for k in 0..i {
-                s -= l[(i, k)] * x[k];
+                if pattern[i][k] {
+                    s -= l[(i, k)] * x[k];
+                }
             }
             x[i] = s;
         }
@@ -182,7 +221,9 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
         for i in (0..N).rev() {
             let mut s = x[i];
             for k in (i + 1)..N {
-                s -= l[(k, i)] * x[k];
+                if pattern[k][i] {
+                    s -= l[(k, i)] * x[k];
+                }
             }
             x[i] = s;
         }
