@@ -118,13 +118,39 @@ pub fn cholesky_substitute<S: Scalar, const N: usize>(
 /// for the tiny systems of mechanisms: no square roots, N divisions in all (Golub & Van Loan,
 /// *Matrix Computations*, 4th ed., §4.1.2). This is the solve on the hot path of `accelerations`.
 #[derive(Clone, Copy, Debug)]
-pub struct Ldlt<S: Scalar, const N: usize> {
+pub struct Ldlt<S: Scalar, const N: usize, P = Dense> {
     /// Strictly lower part: L (the unit diagonal is implicit).
     lower: SMatrix<S, N, N>,
     /// 1 / Dⱼⱼ.
     inverse_pivots: SVector<S, N>,
-    /// `pattern[i][k]`: L_ik (i > k) may be nonzero; the others are exact zeros never formed.
-    pattern: [[bool; N]; N],
+    /// Which entries of L may be nonzero; the others are exact zeros never formed.
+    pattern: P,
+}
+
+/// Which entries of L an [`Ldlt`] forms: [`Dense`] (every one), or a pattern of structural zeros
+/// (`[[bool; N]; N]`, `pattern[i][k]` for L_ik with i > k; see [`factor_pattern`]), a constant
+/// of the declaration for the compiler to fold.
+pub trait FactorPattern<const N: usize>: Copy {
+    /// Whether L_ik (i > k) may be nonzero.
+    fn may_be_nonzero(&self, i: usize, k: usize) -> bool;
+}
+
+/// Every entry of L formed: the pattern of [`Ldlt::new`], at no cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Dense;
+
+impl<const N: usize> FactorPattern<N> for Dense {
+    #[inline(always)]
+    fn may_be_nonzero(&self, _i: usize, _k: usize) -> bool {
+        true
+    }
+}
+
+impl<const N: usize> FactorPattern<N> for [[bool; N]; N] {
+    #[inline(always)]
+    fn may_be_nonzero(&self, i: usize, k: usize) -> bool {
+        self[i][k]
+    }
 }
 
 impl<S: Scalar, const N: usize> Ldlt<S, N> {
@@ -132,9 +158,11 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
     /// clearly positive (see [`SINGULAR_PIVOT`]); NaN never passes.
     #[inline]
     pub fn new(m: &SMatrix<S, N, N>) -> Result<Self, NotPositiveDefinite> {
-        Self::with_pattern(m, &[[true; N]; N])
+        Self::with_pattern(m, Dense)
     }
+}
 
+impl<S: Scalar, const N: usize, P: FactorPattern<N>> Ldlt<S, N, P> {
     /// [`Ldlt::new`] for an M whose structural zeros are known: `pattern` is the pattern of L,
     /// [`factor_pattern`] of M's; the entries outside it are never formed, in the factorisation
     /// and in the solves. M must be exactly zero wherever its pattern says so (as a mass matrix
@@ -145,17 +173,15 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
     /// use lagrange_core::linalg::{factor_pattern, Ldlt};
     /// use nalgebra::{matrix, vector};
     /// // Coordinates 0 and 1 coupled, 2 on its own.
+    /// const PATTERN: [[bool; 3]; 3] =
+    ///     factor_pattern(&[[true, true, false], [true, true, false], [false, false, true]]);
     /// let m = matrix![4.0, 1.0, 0.0; 1.0, 3.0, 0.0; 0.0, 0.0, 2.0];
-    /// let pattern = factor_pattern(&[[true, true, false], [true, true, false], [false, false, true]]);
     /// let b = vector![1.0, 2.0, 3.0];
-    /// let x = Ldlt::with_pattern(&m, &pattern).unwrap().solve(&b);
+    /// let x = Ldlt::with_pattern(&m, PATTERN).unwrap().solve(&b);
     /// assert_eq!(x, Ldlt::new(&m).unwrap().solve(&b));
     /// ```
     #[inline]
-    pub fn with_pattern(
-        m: &SMatrix<S, N, N>,
-        pattern: &[[bool; N]; N],
-    ) -> Result<Self, NotPositiveDefinite> {
+    pub fn with_pattern(m: &SMatrix<S, N, N>, pattern: P) -> Result<Self, NotPositiveDefinite> {
         let mut scale = 0.0f64;
         for i in 0..N {
             scale = scale.max(m[(i, i)].re().abs());
@@ -168,7 +194,7 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
             // w_k = L_jk D_k, reused for the column below.
             let mut d = m[(j, j)];
             for k in 0..j {
-                if pattern[j][k] {
+                if pattern.may_be_nonzero(j, k) {
                     d -= lower[(j, k)] * lower[(j, k)] * pivots[k];
                 }
             }
@@ -182,12 +208,12 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
             pivots[j] = d;
             inverse_pivots[j] = inv;
             for i in (j + 1)..N {
-                if !pattern[i][j] {
+                if !pattern.may_be_nonzero(i, j) {
                     continue;
                 }
                 let mut s = m[(i, j)];
                 for k in 0..j {
-                    if pattern[i][k] && pattern[j][k] {
+                    if pattern.may_be_nonzero(i, k) && pattern.may_be_nonzero(j, k) {
                         s -= lower[(i, k)] * lower[(j, k)] * pivots[k];
                     }
                 }
@@ -197,7 +223,7 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
         Ok(Ldlt {
             lower,
             inverse_pivots,
-            pattern: *pattern,
+            pattern,
         })
     }
 
@@ -209,7 +235,7 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
         for i in 0..N {
             let mut s = x[i];
             for k in 0..i {
-                if pattern[i][k] {
+                if pattern.may_be_nonzero(i, k) {
                     s -= l[(i, k)] * x[k];
                 }
             }
@@ -221,7 +247,7 @@ impl<S: Scalar, const N: usize> Ldlt<S, N> {
         for i in (0..N).rev() {
             let mut s = x[i];
             for k in (i + 1)..N {
-                if pattern[k][i] {
+                if pattern.may_be_nonzero(k, i) {
                     s -= l[(k, i)] * x[k];
                 }
             }

@@ -186,7 +186,7 @@ pub fn accelerations_in_mode<
     // entries of L that the declaration rules out (coordinates no massive row couples, and no
     // elimination fills in) are constants: never formed, in the factorisation or the C + 1 solves.
     let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
-    let l = Ldlt::with_pattern(&eom.mass_matrix, &pattern)
+    let l = Ldlt::with_pattern(&eom.mass_matrix, pattern)
         .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, S, N>(&eom.mass_matrix, e, t, q))?;
     let u = l.solve(&(eom.generalized_forces - eom.inertial_terms));
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));

@@ -111,7 +111,7 @@ mod tests {
         // The blocks stay apart.
         assert!(!l[3][0] && !l[4][2]);
         let b = SVector::<f64, 5>::from_fn(|i, _| 1.0 - 0.3 * i as f64);
-        let structured = Ldlt::with_pattern(&m, &l).unwrap().solve(&b);
+        let structured = Ldlt::with_pattern(&m, l).unwrap().solve(&b);
         let dense = Ldlt::new(&m).unwrap().solve(&b);
         // The terms left out are exact zeros: the same operations on the same values.
         assert_eq!(structured, dense);
@@ -119,7 +119,7 @@ mod tests {
         // And a pattern missing the fill-in would not solve the system.
         let mut short = l;
         short[2][1] = false;
-        let wrong = Ldlt::with_pattern(&m, &short).unwrap().solve(&b);
+        let wrong = Ldlt::with_pattern(&m, short).unwrap().solve(&b);
         assert!((m * wrong - b).norm() > 1e-6);
     }
 }
