@@ -21,10 +21,11 @@
 //! an index), and a tree whose widest body needs every coordinate anyway, keeps the dense assembly.
 
 use crate::check::{family_index, Body, Model, Shape};
+pub use crate::components::row_dependencies;
 use crate::names;
 use proc_macro2::Span;
 use quote::ToTokens;
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 use syn::visit_mut::{self, VisitMut};
 use syn::{BinOp, Block, Expr, Ident, Lit, Stmt};
 
@@ -447,69 +448,4 @@ fn strip(expr: &Expr) -> &Expr {
         Expr::Group(g) => strip(&g.expr),
         e => e,
     }
-}
-
-/// Which coordinates each row of x can depend on, as the declaration states it: a body's rows
-/// depend on the coordinates its function names (every element of an array coordinate it names)
-/// and on those of the bodies it names, transitively; where the body writes its components out
-/// (`vec2(x, y)`, `planar(centre, angle)`), each row on the names of its own component
-/// ([`crate::components`]). `None` when every row may depend on every
-/// coordinate (nothing for `Model::DEPENDS` to rule out).
-pub fn row_dependencies(model: &Model) -> Option<Vec<Vec<bool>>> {
-    let n = model.dof();
-    let mut slots_of: BTreeMap<String, Vec<usize>> = BTreeMap::new();
-    let mut slot = 0;
-    for field in model.coords {
-        slots_of.insert(
-            field.ident.to_string(),
-            (slot..slot + field.slots()).collect(),
-        );
-        slot += field.slots();
-    }
-    let mut body_deps: BTreeMap<String, Vec<bool>> = BTreeMap::new();
-    let mut rows = vec![vec![true; n]; model.rows];
-    // The coordinates a set of names can depend on, given the bodies read so far.
-    let deps_of = |names: &[Ident], own: &str, body_deps: &BTreeMap<String, Vec<bool>>| {
-        let mut deps = vec![false; n];
-        for free in names {
-            let free = free.to_string();
-            if let Some(slots) = slots_of.get(&free) {
-                slots.iter().for_each(|&j| deps[j] = true);
-            } else if let Some(other) = body_deps.get(&free) {
-                deps.iter_mut().zip(other).for_each(|(d, &o)| *d |= o);
-            } else if free != own && model.bodies.iter().any(|b| b.decl.ident() == free.as_str()) {
-                deps = vec![true; n];
-            }
-        }
-        deps
-    };
-    // Bodies name earlier bodies only, so one pass in declaration order sees each dependency
-    // complete; a name not yet known (impossible after the rules) counts as every coordinate.
-    for body in &model.bodies {
-        let name = body.decl.ident().to_string();
-        let free = model.free_names.get(&name).cloned().unwrap_or_default();
-        let deps = deps_of(&free, &name, &body_deps);
-        // A single body written component by component: each row its own names (`vec2(x, y)`,
-        // a planar body's angle).
-        let components = match body.count {
-            None => crate::components::component_names(&body.decl.block, body.shape),
-            Some(_) => None,
-        };
-        match components {
-            Some(components) => {
-                for (row, names) in (body.row..).zip(&components) {
-                    // Never wider than the body's own dependencies.
-                    let own = deps_of(names, &name, &body_deps);
-                    rows[row] = own.iter().zip(&deps).map(|(&o, &d)| o && d).collect();
-                }
-            }
-            None => {
-                for row in body.row..body.row + body.rows() {
-                    rows[row] = deps.clone();
-                }
-            }
-        }
-        body_deps.insert(name, deps);
-    }
-    rows.iter().any(|r| r.contains(&false)).then_some(rows)
 }
