@@ -206,8 +206,8 @@ pub fn accelerations_in_mode<
         Some(pass) => rows_from_pass(model, pass, t, q, v).0,
         None => constraint_rows(model, t, q, v),
     };
-    // A loop, not `array::from_fn`: measured, the closure stopped being inlined once the solve
-    // depended on a pattern, and the four-bar's call cost 1168 -> 1381 instructions.
+    // A loop, not `array::from_fn`, whose closure the compiler does not always inline here
+    // (BENCHMARKS.md, §4).
     let mut y = [SVector::<S, N>::zeros(); C];
     for i in 0..C {
         if enforced[i] || sliding[i] {

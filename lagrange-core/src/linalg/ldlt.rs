@@ -25,6 +25,13 @@ pub struct Ldlt<S: Scalar, const N: usize, P = Dense> {
 /// Which entries of L an [`Ldlt`] forms: [`Dense`] (every one), or a pattern of structural zeros
 /// (`[[bool; N]; N]`, `pattern[i][k]` for L_ik with i > k; see [`factor_pattern`](super::factor_pattern)), a constant
 /// of the declaration for the compiler to fold.
+///
+/// ```
+/// use lagrange_core::linalg::{Dense, FactorPattern};
+/// assert!(FactorPattern::<2>::may_be_nonzero(&Dense, 1, 0));
+/// let diagonal = [[false; 2]; 2];
+/// assert!(!diagonal.may_be_nonzero(1, 0));
+/// ```
 pub trait FactorPattern<const N: usize>: Copy {
     /// Whether L_ik (i > k) may be nonzero.
     fn may_be_nonzero(&self, i: usize, k: usize) -> bool;
