@@ -126,7 +126,7 @@ pub mod free {
             {
                 let m: f64 = self.m;
                 let __mass_ball: f64 = m;
-                if ((0.0 + self.m * 0.0) == 0.0) & (__mass_ball * 0.0 == 0.0)
+                if ((0.0 + self.m * 0.0 + __mass_ball * 0.0) == 0.0)
                     & (__mass_ball > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());

@@ -138,8 +138,8 @@ pub mod sliding_block {
                 let g: f64 = self.g;
                 let mu: f64 = self.mu;
                 let __mass_block: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.mu * 0.0) == 0.0)
-                    & (__mass_block * 0.0 == 0.0) & (__mass_block > 0.0)
+                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.mu * 0.0
+                    + __mass_block * 0.0) == 0.0) & (__mass_block > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());
                 }

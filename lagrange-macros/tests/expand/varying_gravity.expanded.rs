@@ -136,8 +136,8 @@ pub mod varying {
                 let g: f64 = self.g;
                 let w: f64 = self.w;
                 let __mass_ball: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.w * 0.0) == 0.0)
-                    & (__mass_ball * 0.0 == 0.0) & (__mass_ball > 0.0)
+                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.w * 0.0
+                    + __mass_ball * 0.0) == 0.0) & (__mass_ball > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());
                 }
