@@ -13,6 +13,11 @@
 use crate::geometry::Scalar;
 use nalgebra::{SMatrix, SVector};
 
+mod ldlt;
+mod pattern;
+pub use ldlt::{Dense, FactorPattern, Ldlt};
+pub use pattern::{factor_pattern, mass_pattern};
+
 /// Relative size (against the largest diagonal entry) under which a squared Cholesky pivot counts
 /// as zero. The squared pivots bound the smallest eigenvalue from above, so a pivot this small means
 /// κ(M) ≳ 1/(1e3·ε) ≈ 4.5e12: the solve would have lost all but three or four digits, and a
@@ -108,86 +113,6 @@ pub fn cholesky_substitute<S: Scalar, const N: usize>(
         y[i] = s / l[(i, i)];
     }
     y
-}
-
-/// The factorisation M = L D Lᵀ of a symmetric positive definite M (L unit lower triangular, D
-/// diagonal), stored with the reciprocals of D so a solve needs no division. Cheaper than Cholesky
-/// for the tiny systems of mechanisms: no square roots, N divisions in all (Golub & Van Loan,
-/// *Matrix Computations*, 4th ed., §4.1.2). This is the solve on the hot path of `accelerations`.
-#[derive(Clone, Copy, Debug)]
-pub struct Ldlt<S: Scalar, const N: usize> {
-    /// Strictly lower part: L (the unit diagonal is implicit).
-    lower: SMatrix<S, N, N>,
-    /// 1 / Dⱼⱼ.
-    inverse_pivots: SVector<S, N>,
-}
-
-impl<S: Scalar, const N: usize> Ldlt<S, N> {
-    /// Factorises M (only its lower triangle is read). Fails with the first pivot that is not
-    /// clearly positive (see [`SINGULAR_PIVOT`]); NaN never passes.
-    #[inline]
-    pub fn new(m: &SMatrix<S, N, N>) -> Result<Self, NotPositiveDefinite> {
-        let mut scale = 0.0f64;
-        for i in 0..N {
-            scale = scale.max(m[(i, i)].re().abs());
-        }
-        let tol = SINGULAR_PIVOT * scale;
-        let mut lower = SMatrix::<S, N, N>::zeros();
-        let mut pivots = SVector::<S, N>::zeros();
-        let mut inverse_pivots = SVector::<S, N>::zeros();
-        for j in 0..N {
-            // w_k = L_jk D_k, reused for the column below.
-            let mut d = m[(j, j)];
-            for k in 0..j {
-                d -= lower[(j, k)] * lower[(j, k)] * pivots[k];
-            }
-            if !(d.re() > tol) {
-                return Err(NotPositiveDefinite {
-                    index: j,
-                    pivot: d.re(),
-                });
-            }
-            let inv = d.recip();
-            pivots[j] = d;
-            inverse_pivots[j] = inv;
-            for i in (j + 1)..N {
-                let mut s = m[(i, j)];
-                for k in 0..j {
-                    s -= lower[(i, k)] * lower[(j, k)] * pivots[k];
-                }
-                lower[(i, j)] = s * inv;
-            }
-        }
-        Ok(Ldlt {
-            lower,
-            inverse_pivots,
-        })
-    }
-
-    /// Solves M x = b.
-    #[inline]
-    pub fn solve(&self, b: &SVector<S, N>) -> SVector<S, N> {
-        let l = &self.lower;
-        let mut x = *b;
-        for i in 0..N {
-            let mut s = x[i];
-            for k in 0..i {
-                s -= l[(i, k)] * x[k];
-            }
-            x[i] = s;
-        }
-        for i in 0..N {
-            x[i] *= self.inverse_pivots[i];
-        }
-        for i in (0..N).rev() {
-            let mut s = x[i];
-            for k in (i + 1)..N {
-                s -= l[(k, i)] * x[k];
-            }
-            x[i] = s;
-        }
-        x
-    }
 }
 
 /// Solves M x = b for symmetric positive definite M: the solve on the hot path of `accelerations`.

@@ -167,8 +167,10 @@ pub trait Model<const N: usize, const K: usize> {
     const HAS_FORCES: bool;
 
     /// `DEPENDS[i][j]`: row i of x may depend on coordinate j. `false` only where the declaration
-    /// shows it cannot (row i's body, and the bodies it is placed from, never name coordinate j):
-    /// a structural zero of the Jacobian, whose products the dense assembly of M, b and 𝓕 skips.
+    /// shows it cannot (row i's body, and the bodies it is placed from, never name coordinate j; or
+    /// the body writes its components out and row i's component does not): a structural zero of
+    /// the Jacobian, whose products the dense assembly of M, b and 𝓕 skips, and whose couplings the
+    /// constrained solve's factorisation of M leaves out ([`crate::linalg::mass_pattern`]).
     /// By default every row may depend on every coordinate.
     const DEPENDS: [[bool; N]; K] = [[true; N]; K];
 

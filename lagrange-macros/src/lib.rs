@@ -8,6 +8,7 @@
 mod ast;
 mod attr;
 mod check;
+mod components;
 mod ctxt;
 mod expand;
 mod lift;

@@ -21,10 +21,11 @@
 //! an index), and a tree whose widest body needs every coordinate anyway, keeps the dense assembly.
 
 use crate::check::{family_index, Body, Model, Shape};
+pub use crate::components::row_dependencies;
 use crate::names;
 use proc_macro2::Span;
 use quote::ToTokens;
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 use syn::visit_mut::{self, VisitMut};
 use syn::{BinOp, Block, Expr, Ident, Lit, Stmt};
 
@@ -447,44 +448,4 @@ fn strip(expr: &Expr) -> &Expr {
         Expr::Group(g) => strip(&g.expr),
         e => e,
     }
-}
-
-/// Which coordinates each row of x can depend on, as the declaration states it: a body's rows
-/// depend on the coordinates its function names (every element of an array coordinate it names)
-/// and on those of the bodies it names, transitively. `None` when every row may depend on every
-/// coordinate (nothing for `Model::DEPENDS` to rule out).
-pub fn row_dependencies(model: &Model) -> Option<Vec<Vec<bool>>> {
-    let n = model.dof();
-    let mut slots_of: BTreeMap<String, Vec<usize>> = BTreeMap::new();
-    let mut slot = 0;
-    for field in model.coords {
-        slots_of.insert(
-            field.ident.to_string(),
-            (slot..slot + field.slots()).collect(),
-        );
-        slot += field.slots();
-    }
-    let mut body_deps: BTreeMap<String, Vec<bool>> = BTreeMap::new();
-    let mut rows = vec![vec![true; n]; model.rows];
-    // Bodies name earlier bodies only, so one pass in declaration order sees each dependency
-    // complete; a name not yet known (impossible after the rules) counts as every coordinate.
-    for body in &model.bodies {
-        let name = body.decl.ident().to_string();
-        let mut deps = vec![false; n];
-        for free in model.free_names.get(&name).into_iter().flatten() {
-            let free = free.to_string();
-            if let Some(slots) = slots_of.get(&free) {
-                slots.iter().for_each(|&j| deps[j] = true);
-            } else if let Some(other) = body_deps.get(&free) {
-                deps.iter_mut().zip(other).for_each(|(d, &o)| *d |= o);
-            } else if free != name && model.bodies.iter().any(|b| b.decl.ident() == free.as_str()) {
-                deps = vec![true; n];
-            }
-        }
-        for row in body.row..body.row + body.rows() {
-            rows[row] = deps.clone();
-        }
-        body_deps.insert(name, deps);
-    }
-    rows.iter().any(|r| r.contains(&false)).then_some(rows)
 }

@@ -36,34 +36,69 @@ pub(super) fn gradient<S: Scalar, const N: usize>(x: &DualSVec<S, N>) -> SVector
     x.eps.0.unwrap_or_else(SVector::zeros)
 }
 
+/// What [`any_kind`] asks of a row.
+#[derive(Clone, Copy)]
+enum KindTest {
+    Position,
+    Velocity,
+    /// Enforced only in some modes: unilateral and friction rows.
+    ModeDependent,
+}
+
+/// Whether any row of `kinds` passes `test`, as a `const fn` (a loop: iterators and calls through
+/// function pointers are not `const`).
+const fn any_kind(kinds: &[ConstraintKind], test: KindTest) -> bool {
+    let mut i = 0;
+    while i < kinds.len() {
+        let k = kinds[i];
+        let pass = match test {
+            KindTest::Position => k.is_position(),
+            KindTest::Velocity => k.is_velocity(),
+            KindTest::ModeDependent => {
+                !matches!(k, ConstraintKind::Holonomic | ConstraintKind::Velocity)
+            }
+        };
+        if pass {
+            return true;
+        }
+        i += 1;
+    }
+    false
+}
+
+// The three predicates below are evaluated in `const` blocks: a constant of the declaration, so the
+// branches they guard fold away (as a runtime loop over `KINDS` they were not: measured with
+// scripts/callgrind, the loop ran on every call).
+
+#[inline(always)]
 pub(super) fn has_position<
     M: Constraints<N, K, C>,
     const N: usize,
     const K: usize,
     const C: usize,
 >() -> bool {
-    M::KINDS.iter().any(|k| k.is_position())
+    const { any_kind(&M::KINDS, KindTest::Position) }
 }
 
+#[inline(always)]
 pub(super) fn has_velocity<
     M: Constraints<N, K, C>,
     const N: usize,
     const K: usize,
     const C: usize,
 >() -> bool {
-    M::KINDS.iter().any(|k| k.is_velocity())
+    const { any_kind(&M::KINDS, KindTest::Velocity) }
 }
 
 /// Whether every row is always enforced (no unilateral, no friction rows): then no mode logic.
+#[inline(always)]
 pub(super) fn always_active<
     M: Constraints<N, K, C>,
     const N: usize,
     const K: usize,
     const C: usize,
 >() -> bool {
-    M::KINDS
-        .iter()
-        .all(|k| matches!(k, ConstraintKind::Holonomic | ConstraintKind::Velocity))
+    const { !any_kind(&M::KINDS, KindTest::ModeDependent) }
 }
 
 /// The rows and the Jacobian rows of x (for the mass matrix), at (t, q, q̇).

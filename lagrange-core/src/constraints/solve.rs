@@ -7,7 +7,7 @@ use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
 use crate::dynamics;
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::{Ldlt, NotPositiveDefinite};
+use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite};
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
@@ -182,8 +182,11 @@ pub fn accelerations_in_mode<
         Some(pass) => dynamics::equations_of_motion_from_pass(model, pass, t, q, v),
         None => dynamics::equations_of_motion(model, t, q, v),
     };
-    // LDLᵀ with reciprocal pivots: no square roots, no divisions in the solves (see `Ldlt`).
-    let l = Ldlt::new(&eom.mass_matrix)
+    // LDLᵀ with reciprocal pivots: no square roots, no divisions in the solves (see `Ldlt`). The
+    // entries of L that the declaration rules out (coordinates no massive row couples, and no
+    // elimination fills in) are constants: never formed, in the factorisation or the C + 1 solves.
+    let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
+    let l = Ldlt::with_pattern(&eom.mass_matrix, pattern)
         .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, S, N>(&eom.mass_matrix, e, t, q))?;
     let u = l.solve(&(eom.generalized_forces - eom.inertial_terms));
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
@@ -203,13 +206,14 @@ pub fn accelerations_in_mode<
         Some(pass) => rows_from_pass(model, pass, t, q, v).0,
         None => constraint_rows(model, t, q, v),
     };
-    let y: [SVector<S, N>; C] = std::array::from_fn(|i| {
+    // A loop, not `array::from_fn`, whose closure the compiler does not always inline here
+    // (BENCHMARKS.md, §4).
+    let mut y = [SVector::<S, N>::zeros(); C];
+    for i in 0..C {
         if enforced[i] || sliding[i] {
-            l.solve(&cr.rows[i])
-        } else {
-            SVector::zeros()
+            y[i] = l.solve(&cr.rows[i]);
         }
-    });
+    }
     let mut schur = SMatrix::<S, C, C>::zeros();
     let mut rhs = SVector::<S, C>::zeros();
     let mut diagonal = 0.0f64;
@@ -351,11 +355,15 @@ fn finish<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, co
     t: S,
     q: &[S; N],
 ) -> Result<ConstrainedAccelerations<S, N, C>> {
-    if qdd
-        .iter()
-        .chain(multipliers.iter())
-        .all(|a| a.re().is_finite())
-    {
+    // Branch-free on the common path (as `check_state`): x·0 is 0 exactly when x is finite.
+    let mut zero = 0.0f64;
+    for i in 0..N {
+        zero += qdd[i].re() * 0.0;
+    }
+    for multiplier in &multipliers {
+        zero += multiplier.re() * 0.0;
+    }
+    if zero == 0.0 {
         Ok(ConstrainedAccelerations {
             accelerations: qdd.into(),
             multipliers,

@@ -106,6 +106,9 @@ fn constrained_overrides(
             let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;
             #constraints::project::<Self, #n, #k, #c>(self, t, q, v, &mode)
         }
+        // Inlined (the mechanism is often declared in another crate than the caller): without
+        // velocity rows the check is a constant `Ok`.
+        #[inline]
         fn check_declaration_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
             #constraints::check_velocity_rows_affine::<Self, #n, #k, #c>(self, t, q, v)
         }

@@ -183,19 +183,26 @@ fn validate_fn(model: &Model) -> TokenStream {
     // body, whose moments have more to check) goes on to the checks that name the culprit.
     let fast = (!model.bodies.iter().any(|b| b.shape == Shape::Spatial)).then(|| {
         let fields = model.params.iter().map(|f| &f.ident);
-        let positive = model.bodies.iter().filter(|b| b.shape.has_mass()).map(|body| {
-            let mass = format_ident!("__mass_{}", body.decl.ident());
-            let inertia = format_ident!("__inertia_{}", body.decl.ident());
-            match body.shape {
-                Shape::Planar => quote!(& (#mass * 0.0 == 0.0) & (#mass > 0.0) & (#inertia * 0.0 == 0.0) & (#inertia > 0.0)),
-                _ => quote!(& (#mass * 0.0 == 0.0) & (#mass > 0.0)),
-            }
-        });
+        // Every mass and moment: one sum for their finiteness (with the parameters'), one
+        // comparison each for their sign.
+        let derived: Vec<_> = model
+            .bodies
+            .iter()
+            .filter(|b| b.shape.has_mass())
+            .flat_map(|body| {
+                let mass = format_ident!("__mass_{}", body.decl.ident());
+                let inertia = format_ident!("__inertia_{}", body.decl.ident());
+                match body.shape {
+                    Shape::Planar => vec![mass, inertia],
+                    _ => vec![mass],
+                }
+            })
+            .collect();
         let bindings = &bindings;
         quote! {
             {
                 #bindings
-                if ((0.0 #( + self.#fields * 0.0 )*) == 0.0) #(#positive)* {
+                if ((0.0 #( + self.#fields * 0.0 )* #( + #derived * 0.0 )*) == 0.0) #( & (#derived > 0.0) )* {
                     return #p::core::result::Result::Ok(());
                 }
             }

@@ -153,9 +153,8 @@ pub mod double_pendulum {
                 let __mass_bob1: f64 = m1;
                 let __mass_bob2: f64 = m2;
                 if ((0.0 + self.m1 * 0.0 + self.m2 * 0.0 + self.l1 * 0.0 + self.l2 * 0.0
-                    + self.g * 0.0) == 0.0) & (__mass_bob1 * 0.0 == 0.0)
-                    & (__mass_bob1 > 0.0) & (__mass_bob2 * 0.0 == 0.0)
-                    & (__mass_bob2 > 0.0)
+                    + self.g * 0.0 + __mass_bob1 * 0.0 + __mass_bob2 * 0.0) == 0.0)
+                    & (__mass_bob1 > 0.0) & (__mass_bob2 > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());
                 }

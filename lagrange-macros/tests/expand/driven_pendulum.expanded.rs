@@ -141,8 +141,7 @@ pub mod driven {
                 let g: f64 = self.g;
                 let __mass_bob: f64 = m;
                 if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.a * 0.0 + self.w * 0.0
-                    + self.g * 0.0) == 0.0) & (__mass_bob * 0.0 == 0.0)
-                    & (__mass_bob > 0.0)
+                    + self.g * 0.0 + __mass_bob * 0.0) == 0.0) & (__mass_bob > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());
                 }

@@ -120,12 +120,13 @@ pub mod free {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 2] = [[true, false], [false, true]];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {
                 let m: f64 = self.m;
                 let __mass_ball: f64 = m;
-                if ((0.0 + self.m * 0.0) == 0.0) & (__mass_ball * 0.0 == 0.0)
+                if ((0.0 + self.m * 0.0 + __mass_ball * 0.0) == 0.0)
                     & (__mass_ball > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());

@@ -130,6 +130,7 @@ pub mod sliding_block {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 2] = [[true, false], [false, true]];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {
@@ -137,8 +138,8 @@ pub mod sliding_block {
                 let g: f64 = self.g;
                 let mu: f64 = self.mu;
                 let __mass_block: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.mu * 0.0) == 0.0)
-                    & (__mass_block * 0.0 == 0.0) & (__mass_block > 0.0)
+                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.mu * 0.0
+                    + __mass_block * 0.0) == 0.0) & (__mass_block > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());
                 }
@@ -282,6 +283,7 @@ pub mod sliding_block {
                 2,
             >(self, t, q, v, &mode)
         }
+        #[inline]
         fn check_declaration_at(
             &self,
             t: f64,

@@ -128,6 +128,7 @@ pub mod varying {
         const RHEONOMIC: bool = true;
         const HAS_POTENTIAL: bool = true;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 1]; 2] = [[false], [true]];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {
@@ -135,8 +136,8 @@ pub mod varying {
                 let g: f64 = self.g;
                 let w: f64 = self.w;
                 let __mass_ball: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.w * 0.0) == 0.0)
-                    & (__mass_ball * 0.0 == 0.0) & (__mass_ball > 0.0)
+                if ((0.0 + self.m * 0.0 + self.g * 0.0 + self.w * 0.0
+                    + __mass_ball * 0.0) == 0.0) & (__mass_ball > 0.0)
                 {
                     return ::lagrange::__private::core::result::Result::Ok(());
                 }
