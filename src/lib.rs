@@ -75,7 +75,7 @@ pub use lagrange_core::validated::Validated;
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
     analysis, constraints, declaration, dynamics, error, geometry, integrate, linalg, mechanism,
-    model, scalar_ext, sensitivity, tree, validated,
+    model, parameters, scalar_ext, sensitivity, tree, validated,
 };
 /// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
 pub use lagrange_ffi as ffi;
@@ -104,6 +104,7 @@ pub mod __private {
     pub use lagrange_core::scalar_ext::ScalarExt;
     pub use lagrange_core::parameters;
     pub use lagrange_core::tree;
+    pub use lagrange_core::mechanism::Dynamics;
     pub use lagrange_core::{Error, Mechanism, Result, Scalar};
     pub use nalgebra;
     pub use num_dual;

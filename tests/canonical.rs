@@ -7,6 +7,7 @@
 
 use lagrange::integrate::momentum_rate;
 use lagrange::prelude::*;
+use lagrange::mechanism::Dynamics as _;
 use nalgebra::SVector;
 use num_dual::DualSVec;
 

@@ -94,15 +94,15 @@ fn the_declared_kinds_decide_which_constraints_rattle_refuses() {
         friction: 0,
     };
     assert_eq!(
-        <four_bar::four_bar::FourBar as Mechanism<3>>::CONSTRAINT_COUNTS,
+        <four_bar::four_bar::FourBar as lagrange::mechanism::Dynamics<3>>::CONSTRAINT_COUNTS,
         Some(counts(2, 0, 0))
     );
     assert_eq!(
-        <rail::Rail as Mechanism<2>>::CONSTRAINT_COUNTS,
+        <rail::Rail as lagrange::mechanism::Dynamics<2>>::CONSTRAINT_COUNTS,
         Some(counts(0, 1, 0))
     );
     assert_eq!(
-        <floor::Floor as Mechanism<2>>::CONSTRAINT_COUNTS,
+        <floor::Floor as lagrange::mechanism::Dynamics<2>>::CONSTRAINT_COUNTS,
         Some(counts(0, 0, 1))
     );
     // Refused at once, the state left alone; RK4 takes the same steps.

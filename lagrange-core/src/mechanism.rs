@@ -1,4 +1,5 @@
-//! [`Mechanism`]: what every generated mechanism offers its user.
+//! [`Mechanism`]: what every generated mechanism offers its user, over [`Dynamics`], the glue
+//! `#[mechanism]` generates.
 
 use crate::dynamics::EquationsOfMotion;
 use crate::error::{describe_configuration, Error, Result};
@@ -7,162 +8,17 @@ use crate::integrate::Integrator;
 use crate::model::{check_state, Coordinates, State};
 use nalgebra::SMatrix;
 
-/// A mechanism with `N` degrees of freedom, as `#[mechanism]` generates it.
+/// A mechanism with `N` degrees of freedom, as `#[mechanism]` generates it: what a user calls.
 ///
-/// What a user calls is here: [`accelerations`](Mechanism::accelerations), the energies and momenta,
+/// [`accelerations`](Mechanism::accelerations), the energies and momenta,
 /// [`step`](Mechanism::step) and [`simulate`](Mechanism::simulate), [`validated`](Mechanism::validated),
-/// with named coordinates in and out and typed errors. Beneath them sits the glue `#[mechanism]`
-/// generates (hidden from these docs): scalar-generic hooks on raw arrays that forward to the
-/// generic functions of [`crate::dynamics`], [`crate::tree`] and [`crate::constraints`], and that the
-/// integrators, the analyses and the sensitivities call.
-pub trait Mechanism<const N: usize>: Sized {
-    /// The named generalized coordinates (`Coords` of the declaration).
-    type Coords: Coordinates<N>;
-
-    /// The constraint rows the declaration has, by kind (`Some(ConstraintCounts::NONE)` for none),
-    /// or `None` when the implementation does not say. [`impl_mechanism!`](crate::impl_mechanism)
-    /// and `#[mechanism]` declare it. Integrators decide from it alone — never from the state, so a
-    /// constraint whose force happens to vanish (λ = 0) is treated as what it is:
-    /// Störmer–Verlet and the variational integrator enforce holonomic rows by RATTLE and refuse
-    /// velocity, unilateral and friction rows, and an undeclared implementation; implicit midpoint
-    /// and Gauss–Legendre add Jᵀλ at every stage unless the mechanism declares no rows.
-    ///
-    /// [`ConstraintCounts`]: crate::constraints::ConstraintCounts
-    const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = None;
-
-    /// The number of constraint rows the declaration has (`Some(0)` for none), or `None` when the
-    /// implementation does not say; by default the total of
-    /// [`CONSTRAINT_COUNTS`](Mechanism::CONSTRAINT_COUNTS).
-    const CONSTRAINTS: Option<usize> = match Self::CONSTRAINT_COUNTS {
-        Some(counts) => Some(counts.rows()),
-        None => None,
-    };
-
-    /// Whether x does not depend on time (`#[mechanism]` declares it; `false`, the safe default,
-    /// for an implementation that does not say). Then p = M(q) q̇ exactly, and the methods on (q, p)
-    /// recover q̇ from p by one solve with M instead of a Newton iteration.
-    #[doc(hidden)]
-    const SCLERONOMIC: bool = false;
-
-    /// Checks parameters: finite, masses and inertias positive.
-    fn validate(&self) -> Result<()>;
-    #[doc(hidden)]
-    /// M, 𝓕 and b at (t, q, q̇), for any scalar.
-    fn equations_of_motion_at<S: Scalar>(
-        &self,
-        t: S,
-        q: &[S; N],
-        v: &[S; N],
-    ) -> EquationsOfMotion<S, N>;
-    #[doc(hidden)]
-    /// T at (t, q, q̇), for any scalar.
-    fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> S;
-    #[doc(hidden)]
-    /// V at (t, q), for any scalar.
-    fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; N]) -> S;
-    #[doc(hidden)]
-    /// p = ∂L/∂q̇ at (t, q, q̇), for any scalar.
-    fn momenta_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [S; N];
-    #[doc(hidden)]
-    /// ∂L/∂t at fixed (q, q̇) (zero for a scleronomic mechanism).
-    fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> f64;
-
-    /// The canonical field (p, ṗ) = (∂L/∂q̇, ∂L/∂q + F_nc) at (t, q, q̇), for any scalar: what the
-    /// methods on (q, p) evaluate (see `integrate::canonical`). By default from the momenta and a
-    /// gradient of T of their own; `#[mechanism]` computes a scleronomic mechanism's from one
-    /// hyper-dual pass ([`crate::dynamics::canonical_field`]).
-    #[doc(hidden)]
-    #[inline]
-    fn canonical_field_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> ([S; N], [S; N]) {
-        (
-            self.momenta_at(t, q, v),
-            crate::integrate::momentum_rate(self, t, q, v),
-        )
-    }
-
-    #[doc(hidden)]
-    /// q̈ at (t, q, q̇) for any scalar: solves M q̈ = 𝓕 − b. No validation (the hot path of
-    /// integrators, which validate once per step).
-    #[inline]
-    fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
-        let eom = self.equations_of_motion_at(t, q, v);
-        crate::dynamics::solve_accelerations::<Self::Coords, S, N>(&eom, t, q)
-    }
-
-    #[doc(hidden)]
-    /// Hook for mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any
-    /// scalar, in declaration order and padded with zeros to N entries (see
-    /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation
-    /// does not provide them. RATTLE ([`StormerVerlet`](crate::StormerVerlet),
-    /// [`Variational`](crate::Variational)) differentiates them with dual numbers.
-    ///
-    /// ```
-    /// use lagrange_core::Mechanism;
-    /// # use lagrange_core::{vec2, Model, Scalar};
-    /// # struct Pendulum;
-    /// # impl Model<1, 2> for Pendulum {
-    /// #     type Coords = [f64; 1];
-    /// #     const RHEONOMIC: bool = false;
-    /// #     const HAS_POTENTIAL: bool = true;
-    /// #     const HAS_FORCES: bool = false;
-    /// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
-    /// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
-    /// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
-    /// #         vec2(q[0].sin(), -q[0].cos()).to_array()
-    /// #     }
-    /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
-    /// # }
-    /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-    /// // The pendulum in its angle has no constraint rows to provide.
-    /// assert_eq!(Pendulum.holonomic_constraints_at(0.0, &[0.3]), None);
-    /// ```
-    #[inline]
-    fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {
-        let _ = (t, q);
-        None
-    }
-
-    #[doc(hidden)]
-    /// Hook for mechanisms with unilateral or friction rows: integrates from `state` to `t_end`
-    /// with the embedded pair `method`, the contact mode held within each step and its switches
-    /// located ([`crate::constraints::ContactAdaptive`]), as `Dopri5::integrate` and
-    /// `Dop853::integrate` promise. `None` (the default) when the declaration has no such rows:
-    /// the pair then integrates the smooth system itself.
-    #[inline]
-    fn integrate_contacts<P, O>(
-        &self,
-        method: P,
-        state: &mut State<Self::Coords>,
-        t_end: f64,
-        events: &mut [crate::integrate::Event<'_, Self::Coords>],
-        observer: O,
-    ) -> Option<Result<crate::integrate::Outcome<Self::Coords>>>
-    where
-        P: crate::integrate::EmbeddedPair,
-        O: FnMut(crate::integrate::Observation<'_, Self::Coords, N>),
-    {
-        let _ = (method, state, t_end, events, observer);
-        None
-    }
-
-    #[doc(hidden)]
-    /// Hook for mechanisms with constraints: projects (q, q̇) at time `t` back onto the constraints
-    /// (see [`crate::constraints::project`]). Integrators call it after every step; the default does
-    /// nothing. On error `q` and `v` are unchanged.
-    #[inline]
-    fn project(&self, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {
-        let _ = (t, q, v);
-        Ok(())
-    }
-
-    #[doc(hidden)]
-    /// Hook for mechanisms with constraints: checks that (t, q, q̇) satisfies them within tolerance
-    /// (see [`crate::constraints::check_consistent`]), so a state violating them is refused rather
-    /// than silently projected. Integrators call it before every step; the default accepts.
-    #[inline]
-    fn check_constraints(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
-        let _ = (t, q, v);
-        Ok(())
+/// with named coordinates in and out and typed errors. Every type that implements the generated
+/// glue ([`Dynamics`], hidden from these docs) is a `Mechanism`.
+pub trait Mechanism<const N: usize>: Dynamics<N> {
+    /// Checks the parameters: finite, masses and inertias positive. Every call on a state does it
+    /// first; [`validated`](Mechanism::validated) does it once.
+    fn validate(&self) -> Result<()> {
+        self.check_parameters()
     }
 
     /// Checks the parameters once and returns a handle whose calls check only the state (see
@@ -172,26 +28,6 @@ pub trait Mechanism<const N: usize>: Sized {
         crate::validated::validate(self)
     }
 
-    #[doc(hidden)]
-    /// Hook for mechanisms with constraints: checks what the declaration promises but only a state
-    /// can show — that every velocity row is affine in q̇ (see
-    /// [`crate::constraints::check_velocity_rows_affine`]) — so every entry point refuses the same
-    /// declarations. The default accepts.
-    #[inline]
-    fn check_declaration_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
-        let _ = (t, q, v);
-        Ok(())
-    }
-
-    #[doc(hidden)]
-    /// Checks parameters and state; what every user-facing call does first.
-    fn check(&self, state: &State<Self::Coords>) -> Result<([f64; N], [f64; N])> {
-        self.validate()?;
-        let (q, v) = (state.q.to_array(), state.v.to_array());
-        check_state(&Self::Coords::NAMES, state.t, &q, &v)?;
-        Ok((q, v))
-    }
-
     /// The generalized accelerations q̈, by name.
     ///
     /// Errors: non-finite parameters or state, a singular mass matrix (the error names the
@@ -199,7 +35,7 @@ pub trait Mechanism<const N: usize>: Sized {
     ///
     /// A mechanism with constraints also refuses what its integrators refuse about the declaration
     /// itself (invalid friction coefficients, a velocity row that is not linear in q̇), but
-    /// evaluates states off the constraints (see `Mechanism::check_constraints`).
+    /// evaluates states off the constraints (see `Dynamics::check_constraints`).
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
         let (q, v) = self.check(state)?;
         self.check_declaration_at(state.t, &q, &v)?;
@@ -330,6 +166,191 @@ pub trait Mechanism<const N: usize>: Sized {
             observe(state);
         }
         Ok(())
+    }
+}
+
+impl<T: Dynamics<N>, const N: usize> Mechanism<N> for T {}
+
+/// The glue `#[mechanism]` generates beneath [`Mechanism`]: the named coordinates, what the
+/// declaration states (its constraint rows, whether it is scleronomic), and scalar-generic hooks on
+/// raw arrays that forward to the generic functions of [`crate::dynamics`], [`crate::tree`] and
+/// [`crate::constraints`], and that the integrators, the analyses and the sensitivities call.
+/// [`impl_mechanism!`](crate::impl_mechanism) writes it for a hand-written [`Model`](crate::Model).
+#[doc(hidden)]
+pub trait Dynamics<const N: usize>: Sized {
+    /// The named generalized coordinates (`Coords` of the declaration).
+    type Coords: Coordinates<N>;
+
+    /// The constraint rows the declaration has, by kind (`Some(ConstraintCounts::NONE)` for none),
+    /// or `None` when the implementation does not say. [`impl_mechanism!`](crate::impl_mechanism)
+    /// and `#[mechanism]` declare it. Integrators decide from it alone — never from the state, so a
+    /// constraint whose force happens to vanish (λ = 0) is treated as what it is:
+    /// Störmer–Verlet and the variational integrator enforce holonomic rows by RATTLE and refuse
+    /// velocity, unilateral and friction rows, and an undeclared implementation; implicit midpoint
+    /// and Gauss–Legendre add Jᵀλ at every stage unless the mechanism declares no rows.
+    ///
+    /// [`ConstraintCounts`]: crate::constraints::ConstraintCounts
+    const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = None;
+
+    /// The number of constraint rows the declaration has (`Some(0)` for none), or `None` when the
+    /// implementation does not say; by default the total of
+    /// [`CONSTRAINT_COUNTS`](Dynamics::CONSTRAINT_COUNTS).
+    const CONSTRAINTS: Option<usize> = match Self::CONSTRAINT_COUNTS {
+        Some(counts) => Some(counts.rows()),
+        None => None,
+    };
+
+    /// Whether x does not depend on time (`#[mechanism]` declares it; `false`, the safe default,
+    /// for an implementation that does not say). Then p = M(q) q̇ exactly, and the methods on (q, p)
+    /// recover q̇ from p by one solve with M instead of a Newton iteration.
+    #[doc(hidden)]
+    const SCLERONOMIC: bool = false;
+
+    /// Checks the parameters: finite, masses and inertias positive (what
+    /// [`Mechanism::validate`] calls).
+    fn check_parameters(&self) -> Result<()>;
+
+    #[doc(hidden)]
+    /// M, 𝓕 and b at (t, q, q̇), for any scalar.
+    fn equations_of_motion_at<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> EquationsOfMotion<S, N>;
+
+    #[doc(hidden)]
+    /// T at (t, q, q̇), for any scalar.
+    fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> S;
+
+    #[doc(hidden)]
+    /// V at (t, q), for any scalar.
+    fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; N]) -> S;
+
+    #[doc(hidden)]
+    /// p = ∂L/∂q̇ at (t, q, q̇), for any scalar.
+    fn momenta_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> [S; N];
+
+    #[doc(hidden)]
+    /// ∂L/∂t at fixed (q, q̇) (zero for a scleronomic mechanism).
+    fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> f64;
+
+    /// The canonical field (p, ṗ) = (∂L/∂q̇, ∂L/∂q + F_nc) at (t, q, q̇), for any scalar: what the
+    /// methods on (q, p) evaluate (see `integrate::canonical`). By default from the momenta and a
+    /// gradient of T of their own; `#[mechanism]` computes a scleronomic mechanism's from one
+    /// hyper-dual pass ([`crate::dynamics::canonical_field`]).
+    #[doc(hidden)]
+    #[inline]
+    fn canonical_field_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> ([S; N], [S; N]) {
+        (
+            self.momenta_at(t, q, v),
+            crate::integrate::momentum_rate(self, t, q, v),
+        )
+    }
+
+    #[doc(hidden)]
+    /// q̈ at (t, q, q̇) for any scalar: solves M q̈ = 𝓕 − b. No validation (the hot path of
+    /// integrators, which validate once per step).
+    #[inline]
+    fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
+        let eom = self.equations_of_motion_at(t, q, v);
+        crate::dynamics::solve_accelerations::<Self::Coords, S, N>(&eom, t, q)
+    }
+
+    #[doc(hidden)]
+    /// Hook for mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any
+    /// scalar, in declaration order and padded with zeros to N entries (see
+    /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation
+    /// does not provide them. RATTLE ([`StormerVerlet`](crate::StormerVerlet),
+    /// [`Variational`](crate::Variational)) differentiates them with dual numbers.
+    ///
+    /// ```
+    /// use lagrange_core::mechanism::Dynamics;
+    /// # use lagrange_core::{vec2, Model, Scalar};
+    /// # struct Pendulum;
+    /// # impl Model<1, 2> for Pendulum {
+    /// #     type Coords = [f64; 1];
+    /// #     const RHEONOMIC: bool = false;
+    /// #     const HAS_POTENTIAL: bool = true;
+    /// #     const HAS_FORCES: bool = false;
+    /// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    /// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+    /// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+    /// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+    /// #     }
+    /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+    /// # }
+    /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+    /// // The pendulum in its angle has no constraint rows to provide.
+    /// assert_eq!(Pendulum.holonomic_constraints_at(0.0, &[0.3]), None);
+    /// ```
+    #[inline]
+    fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {
+        let _ = (t, q);
+        None
+    }
+
+    #[doc(hidden)]
+    /// Hook for mechanisms with unilateral or friction rows: integrates from `state` to `t_end`
+    /// with the embedded pair `method`, the contact mode held within each step and its switches
+    /// located ([`crate::constraints::ContactAdaptive`]), as `Dopri5::integrate` and
+    /// `Dop853::integrate` promise. `None` (the default) when the declaration has no such rows:
+    /// the pair then integrates the smooth system itself.
+    #[inline]
+    fn integrate_contacts<P, O>(
+        &self,
+        method: P,
+        state: &mut State<Self::Coords>,
+        t_end: f64,
+        events: &mut [crate::integrate::Event<'_, Self::Coords>],
+        observer: O,
+    ) -> Option<Result<crate::integrate::Outcome<Self::Coords>>>
+    where
+        P: crate::integrate::EmbeddedPair,
+        O: FnMut(crate::integrate::Observation<'_, Self::Coords, N>),
+    {
+        let _ = (method, state, t_end, events, observer);
+        None
+    }
+
+    #[doc(hidden)]
+    /// Hook for mechanisms with constraints: projects (q, q̇) at time `t` back onto the constraints
+    /// (see [`crate::constraints::project`]). Integrators call it after every step; the default does
+    /// nothing. On error `q` and `v` are unchanged.
+    #[inline]
+    fn project(&self, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {
+        let _ = (t, q, v);
+        Ok(())
+    }
+
+    #[doc(hidden)]
+    /// Hook for mechanisms with constraints: checks that (t, q, q̇) satisfies them within tolerance
+    /// (see [`crate::constraints::check_consistent`]), so a state violating them is refused rather
+    /// than silently projected. Integrators call it before every step; the default accepts.
+    #[inline]
+    fn check_constraints(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+        let _ = (t, q, v);
+        Ok(())
+    }
+
+    #[doc(hidden)]
+    /// Hook for mechanisms with constraints: checks what the declaration promises but only a state
+    /// can show — that every velocity row is affine in q̇ (see
+    /// [`crate::constraints::check_velocity_rows_affine`]) — so every entry point refuses the same
+    /// declarations. The default accepts.
+    #[inline]
+    fn check_declaration_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {
+        let _ = (t, q, v);
+        Ok(())
+    }
+
+    #[doc(hidden)]
+    /// Checks parameters and state; what every user-facing call does first.
+    fn check(&self, state: &State<Self::Coords>) -> Result<([f64; N], [f64; N])> {
+        self.check_parameters()?;
+        let (q, v) = (state.q.to_array(), state.v.to_array());
+        check_state(&Self::Coords::NAMES, state.t, &q, &v)?;
+        Ok((q, v))
     }
 }
 
@@ -498,9 +519,9 @@ macro_rules! impl_mechanism {
                 <$ty as $crate::Model<$n, $k>>::cartesian(self, t, q)
             }
         }
-        impl $crate::Mechanism<$n> for $ty {
+        impl $crate::mechanism::Dynamics<$n> for $ty {
             type Coords = <$ty as $crate::Model<$n, $k>>::Coords;
-            fn validate(&self) -> $crate::Result<()> {
+            fn check_parameters(&self) -> $crate::Result<()> {
                 <$ty as $crate::Model<$n, $k>>::validate(self)
             }
             fn equations_of_motion_at<S: $crate::Scalar>(

@@ -5,7 +5,7 @@
 //! approximation of it.
 //!
 //! Seeded on initial values only, every evaluation is the mechanism's own scalar-generic
-//! `Mechanism::accelerations_at`. Seeded on a parameter, the parameters are dual numbers too
+//! `Dynamics::accelerations_at`. Seeded on a parameter, the parameters are dual numbers too
 //! ([`crate::parameters::Lifted`]) and the accelerations come from the generic dynamics of
 //! [`crate::dynamics`] on the lifted model. Every step is the integrator's own code on the dual
 //! type (the stages [`Rk4`](crate::Rk4) and [`Dopri5`] take), so the real parts are the plain f64
@@ -174,10 +174,10 @@ where
     /// ([`Error::UnknownParameter`]), a parameter that carries no derivative
     /// ([`Error::UnseedableParameter`]), a mechanism that declares constraints or does not say
     /// ([`Error::UnsuitableMethod`]: the projection onto the constraints is not differentiated).
-    pub fn new(mechanism: &'m M, state: &State<<M as Mechanism<N>>::Coords>, seeds: [Seed; P]) -> Result<Self> {
+    pub fn new(mechanism: &'m M, state: &State<<M as crate::mechanism::Dynamics<N>>::Coords>, seeds: [Seed; P]) -> Result<Self> {
         let (q0, v0) = mechanism.check(state)?;
         // Decided by the declaration alone, as the integrators decide.
-        if <M as Mechanism<N>>::CONSTRAINTS != Some(0) {
+        if <M as crate::mechanism::Dynamics<N>>::CONSTRAINTS != Some(0) {
             return Err(constrained());
         }
         let mut q: [DualSVec<f64, P>; N] = std::array::from_fn(|i| DualSVec::from_re(q0[i]));
@@ -187,11 +187,11 @@ where
         for (j, seed) in seeds.iter().enumerate() {
             match seed {
                 Seed::Coordinate(name) => {
-                    let i = coordinate::<<M as Mechanism<N>>::Coords, N>(name)?;
+                    let i = coordinate::<<M as crate::mechanism::Dynamics<N>>::Coords, N>(name)?;
                     q[i] = q[i].derivative(j);
                 }
                 Seed::Velocity(name) => {
-                    let i = coordinate::<<M as Mechanism<N>>::Coords, N>(name)?;
+                    let i = coordinate::<<M as crate::mechanism::Dynamics<N>>::Coords, N>(name)?;
                     v[i] = v[i].derivative(j);
                 }
                 Seed::Parameter(name) => {
@@ -261,24 +261,24 @@ where
         v: [DualSVec<f64, P>; N],
     ) -> Result<()> {
         let (qr, vr) = (q.map(|x| x.re), v.map(|x| x.re));
-        check_state(&<M as Mechanism<N>>::Coords::NAMES, self.t + h, &qr, &vr)?;
+        check_state(&<M as crate::mechanism::Dynamics<N>>::Coords::NAMES, self.t + h, &qr, &vr)?;
         (self.t, self.q, self.v) = (self.t + h, q, v);
         Ok(())
     }
 
     /// The current state (real parts).
-    pub fn state(&self) -> State<<M as Mechanism<N>>::Coords> {
+    pub fn state(&self) -> State<<M as crate::mechanism::Dynamics<N>>::Coords> {
         State::new(
             self.t,
-            <M as Mechanism<N>>::Coords::from_array(self.q.map(|x| x.re)),
-            <M as Mechanism<N>>::Coords::from_array(self.v.map(|x| x.re)),
+            <M as crate::mechanism::Dynamics<N>>::Coords::from_array(self.q.map(|x| x.re)),
+            <M as crate::mechanism::Dynamics<N>>::Coords::from_array(self.v.map(|x| x.re)),
         )
     }
 
     /// The state and its derivatives along every seed.
-    pub fn sensitivities(&self) -> Sensitivities<<M as Mechanism<N>>::Coords, P> {
-        let along = |x: &[DualSVec<f64, P>; N], j: usize| -> <M as Mechanism<N>>::Coords {
-            <M as Mechanism<N>>::Coords::from_array(std::array::from_fn(|i| {
+    pub fn sensitivities(&self) -> Sensitivities<<M as crate::mechanism::Dynamics<N>>::Coords, P> {
+        let along = |x: &[DualSVec<f64, P>; N], j: usize| -> <M as crate::mechanism::Dynamics<N>>::Coords {
+            <M as crate::mechanism::Dynamics<N>>::Coords::from_array(std::array::from_fn(|i| {
                 x[i].eps.0.as_ref().map_or(0.0, |d| d[j])
             }))
         };
@@ -333,11 +333,11 @@ pub fn integrate_dopri5<
     const P: usize,
 >(
     mechanism: &M,
-    state: &State<<M as Mechanism<N>>::Coords>,
+    state: &State<<M as crate::mechanism::Dynamics<N>>::Coords>,
     seeds: [Seed; P],
     settings: Dopri5,
     t_end: f64,
-) -> Result<Sensitivities<<M as Mechanism<N>>::Coords, P>> {
+) -> Result<Sensitivities<<M as crate::mechanism::Dynamics<N>>::Coords, P>> {
     let mut run = Tangent::new(mechanism, state, seeds)?;
     if !(t_end.is_finite() && t_end >= state.t) {
         return Err(Error::InvalidEndTime { t: state.t, t_end });

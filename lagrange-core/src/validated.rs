@@ -4,7 +4,7 @@
 use crate::dynamics::EquationsOfMotion;
 use crate::error::Result;
 use crate::geometry::Scalar;
-use crate::mechanism::Mechanism;
+use crate::mechanism::{Dynamics, Mechanism};
 use crate::model::Model;
 use crate::parameters::Parametrized;
 
@@ -85,7 +85,7 @@ pub(crate) fn validate<M: Mechanism<N>, const N: usize>(mechanism: M) -> Result<
     Ok(Validated(mechanism))
 }
 
-impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
+impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
     type Coords = M::Coords;
     const CONSTRAINTS: Option<usize> = M::CONSTRAINTS;
     const SCLERONOMIC: bool = M::SCLERONOMIC;
@@ -93,7 +93,7 @@ impl<M: Mechanism<N>, const N: usize> Mechanism<N> for Validated<M> {
 
     /// Checked when the handle was made.
     #[inline(always)]
-    fn validate(&self) -> Result<()> {
+    fn check_parameters(&self) -> Result<()> {
         Ok(())
     }
     #[inline(always)]

@@ -10,6 +10,7 @@ mod support;
 
 use lagrange_core::impl_mechanism;
 use lagrange_core::{Error, Mechanism, Model, Rk4, Scalar, State};
+use lagrange_core::mechanism::Dynamics as _;
 use nalgebra::SMatrix;
 use std::f64::consts::PI;
 

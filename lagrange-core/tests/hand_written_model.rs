@@ -2,6 +2,7 @@
 //! the closed-form equations of motion. This pins the runtime down independently of the macro.
 
 use lagrange_core::{vec2, Error, Mechanism, Model, Rk4, Scalar, State};
+use lagrange_core::mechanism::Dynamics as _;
 
 struct DoublePendulum {
     m1: f64,

@@ -6,6 +6,7 @@
 use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 use lagrange_core::dynamics::{self, EquationsOfMotion};
 use lagrange_core::integrate::Dop853;
+use lagrange_core::mechanism::Dynamics;
 use lagrange_core::{vec2, Model, Scalar};
 use lagrange_core::{
     Error, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, State, StormerVerlet,
@@ -277,7 +278,7 @@ fn undeclared_constraints_are_refused_at_the_first_step_whatever_lambda() {
     // The same pendulum through a hand-written Mechanism that does not declare its constraints:
     // RATTLE cannot know which rows to enforce, so both methods refuse it — at the first step, at
     // rest horizontally (λ = 0) exactly as from any other state, and leave the state alone.
-    assert_eq!(<Undeclared as Mechanism<2>>::CONSTRAINTS, None);
+    assert_eq!(<Undeclared as lagrange_core::mechanism::Dynamics<2>>::CONSTRAINTS, None);
     for start in [
         cartesian(std::f64::consts::FRAC_PI_2, 0.0),
         cartesian(0.5, 1.0),
@@ -342,7 +343,7 @@ fn rattle_refuses_velocity_constraints_by_the_declaration() {
     // A velocity row is not enforced by RATTLE: refused before any evaluation, naming the kind.
     let s = State::new(0.0, [0.0, 0.0], [1.0, 0.0]);
     assert_eq!(
-        <Rail as Mechanism<2>>::CONSTRAINT_COUNTS.map(|c| (c.holonomic, c.velocity)),
+        <Rail as lagrange_core::mechanism::Dynamics<2>>::CONSTRAINT_COUNTS.map(|c| (c.holonomic, c.velocity)),
         Some((0, 1))
     );
     for err in [
@@ -426,10 +427,10 @@ struct FreeFall;
 
 macro_rules! forward_pendulum {
     ($ty:ty, { $($extra:tt)* }) => {
-        impl Mechanism<2> for $ty {
+        impl Dynamics<2> for $ty {
             type Coords = [f64; 2];
             $($extra)*
-            fn validate(&self) -> lagrange_core::Result<()> {
+            fn check_parameters(&self) -> lagrange_core::Result<()> {
                 Ok(())
             }
             fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {

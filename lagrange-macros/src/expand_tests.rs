@@ -244,7 +244,7 @@ fn an_error_still_emits_the_items_and_stubs() {
     assert!(out.contains("pub struct Broken"));
     assert!(out.contains("pub struct Coords<T = f64>"));
     assert!(out.contains("pub type State"));
-    assert!(out.contains("Mechanism<1> for Broken"));
+    assert!(out.contains("Dynamics<1> for Broken"));
 }
 
 /// A block on a ramp held by a bilateral `#[constraint]`, optionally with friction on it.

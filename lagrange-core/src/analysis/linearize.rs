@@ -122,7 +122,7 @@ impl<const N: usize> Linearization<N> {
 
 /// Linearizes the equations of motion about `state` (any state, not only an equilibrium): the
 /// Jacobians of q̈(t, q, q̇) with respect to q and q̇, exact, by evaluating
-/// [`Mechanism::accelerations_at`] on gradient dual numbers (one pass seeded on q, one on q̇; the
+/// `Dynamics::accelerations_at` on gradient dual numbers (one pass seeded on q, one on q̇; the
 /// Cholesky solve of M q̈ = 𝓕 − b is differentiated along). See [`Linearization`] for the layout.
 ///
 /// Errors: non-finite parameters or state, a singular mass matrix at the state, non-finite

@@ -17,8 +17,8 @@
 //! ("centrifugal") force of a moving frame, e.g. the spinning hoop of a bead — so the same r covers
 //! relative equilibria in a steadily moving frame.
 //!
-//! Everything is computed from the mechanism's own `Mechanism::equations_of_motion_at` and
-//! `Mechanism::accelerations_at` evaluated on dual numbers (`num_dual::DualSVec`), so every
+//! Everything is computed from the mechanism's own `Dynamics::equations_of_motion_at` and
+//! `Dynamics::accelerations_at` evaluated on dual numbers (`num_dual::DualSVec`), so every
 //! Jacobian below is exact to rounding — no finite differences:
 //!
 //! - the **stiffness matrix** K = ∂(b − 𝓕)/∂q at rest (the Hessian of V when the forces are

@@ -436,7 +436,7 @@ fn integrate_contacts<
     Ok((outcome, solver.contact.events))
 }
 
-/// What the `Mechanism::integrate_contacts` hook of a constrained mechanism does: integrates with
+/// What the `Dynamics::integrate_contacts` hook of a constrained mechanism does: integrates with
 /// the contact mode held per step ([`ContactAdaptive`], default [`ContactOptions`]) when the
 /// declaration has unilateral or friction rows, and returns `None` otherwise (bilateral rows are
 /// smooth: the pair's own stepper integrates them).

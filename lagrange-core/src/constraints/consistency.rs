@@ -25,7 +25,7 @@ pub const CONSISTENCY_TOLERANCE: f64 = 1e-8;
 ///
 /// Cost: one first-order dual pass over x along (q̇, 1) for the residuals, and for velocity rows one
 /// more dual pass for J w and one second-order evaluation of h; cheap enough to run before every
-/// step ([`Mechanism::check_constraints`](crate::Mechanism::check_constraints)).
+/// step (`Dynamics::check_constraints`).
 ///
 /// Errors, in this order: invalid friction coefficients, [`Error::NonlinearVelocityConstraint`]
 /// (a property of the declaration, reported whether or not the state satisfies the rows),

@@ -76,7 +76,7 @@ impl Default for ContactOptions {
 
 /// The number of rows of a [`Constraints`] declaration, from its [`NAMES`](Constraints::NAMES):
 /// what [`impl_mechanism!`](crate::impl_mechanism) declares as
-/// [`Mechanism::CONSTRAINTS`](crate::Mechanism::CONSTRAINTS).
+/// `Dynamics::CONSTRAINTS`.
 pub const fn row_count<const C: usize>(_names: &[&'static str; C]) -> usize {
     C
 }

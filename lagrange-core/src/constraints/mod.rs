@@ -90,9 +90,9 @@
 //!
 //! # Integrators
 //!
-//! Every integrator must call [`Mechanism::check_constraints`](crate::Mechanism::check_constraints)
+//! Every integrator must call `Dynamics::check_constraints`
 //! on the state before a step (refusing a state that violates the constraints) and
-//! [`Mechanism::project`](crate::Mechanism::project) on the new (q, q̇) after it, before writing it
+//! `Dynamics::project` on the new (q, q̇) after it, before writing it
 //! back; both default to no-ops, so unconstrained mechanisms pay nothing. [`Rk4`](crate::Rk4) does.
 //! Unilateral contacts and friction should be integrated with [`ContactRk4`] (fixed step) or
 //! [`ContactDopri5`] (adaptive, [`Dopri5::integrate_contacts`](crate::integrate::Dopri5::integrate_contacts)),
@@ -123,12 +123,13 @@
 //!
 //! A planar pendulum in Cartesian coordinates: the bob (x, y) is kept at distance L from the pivot
 //! by a holonomic constraint written on the bob's position. The three impls are exactly the shape
-//! the `#[mechanism]` attribute generates; `Mechanism`'s three constraint overrides are what makes
-//! every integrator enforce the constraints.
+//! the `#[mechanism]` attribute generates; the three constraint overrides of `Dynamics` (the glue
+//! beneath `Mechanism`) are what makes every integrator enforce the constraints.
 //!
 //! ```
 //! use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 //! use lagrange_core::dynamics::{self, EquationsOfMotion};
+//! use lagrange_core::mechanism::Dynamics;
 //! use lagrange_core::{vec2, Mechanism, Model, Rk4, Scalar, State};
 //!
 //! struct Pendulum { m: f64, l: f64, g: f64 }
@@ -152,9 +153,9 @@
 //!     }
 //! }
 //!
-//! impl Mechanism<2> for Pendulum {
+//! impl Dynamics<2> for Pendulum {
 //!     type Coords = [f64; 2];
-//!     fn validate(&self) -> lagrange_core::Result<()> { Model::validate(self) }
+//!     fn check_parameters(&self) -> lagrange_core::Result<()> { Model::validate(self) }
 //!     fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
 //!         dynamics::equations_of_motion(self, t, q, v)
 //!     }
@@ -287,7 +288,7 @@ impl ConstraintKind {
 }
 
 /// How many rows of each [`ConstraintKind`] a declaration has: what
-/// [`Mechanism::CONSTRAINT_COUNTS`](crate::Mechanism::CONSTRAINT_COUNTS) declares, so integrators
+/// `Dynamics::CONSTRAINT_COUNTS` declares, so integrators
 /// decide from constants which constraints they can enforce.
 ///
 /// ```
@@ -443,9 +444,9 @@ impl<const C: usize> Mode<C> {
 ///   checks them (finite, 0 ≤ μₖ ≤ μₛ) and is called by the steppers.
 ///
 /// The generated `Mechanism` impl then overrides
-/// [`Mechanism::accelerations_at`](crate::Mechanism::accelerations_at) with [`accelerations`],
-/// [`Mechanism::project`](crate::Mechanism::project) with [`project`] in the [`infer_mode`]d mode, and
-/// [`Mechanism::check_constraints`](crate::Mechanism::check_constraints) with [`check_consistent`],
+/// `Dynamics::accelerations_at` with [`accelerations`],
+/// `Dynamics::project` with [`project`] in the [`infer_mode`]d mode, and
+/// `Dynamics::check_constraints` with [`check_consistent`],
 /// so every integrator that calls the hooks enforces the constraints; the [module example](self)
 /// shows the exact code. Contacts and friction need [`ContactRk4`] for located mode changes (plain
 /// integrators re-infer the mode at every evaluation, so a mode change falls inside a step).

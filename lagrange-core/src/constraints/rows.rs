@@ -375,11 +375,11 @@ pub(super) fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
 
 /// The holonomic rows' values g(q, t) at (t, q), for any scalar, in declaration order (other kinds
 /// of row skipped) and padded with zeros to N entries: what
-/// `Mechanism::holonomic_constraints_at` forwards to,
+/// `Dynamics::holonomic_constraints_at` forwards to,
 /// so integrators generic over `Mechanism<N>` (which cannot name C) can differentiate them.
 /// Independent holonomic rows number at most N; rows beyond the N-th are not returned (the
 /// integrators refuse such a declaration from
-/// [`Mechanism::CONSTRAINT_COUNTS`](crate::Mechanism::CONSTRAINT_COUNTS) before calling this).
+/// `Dynamics::CONSTRAINT_COUNTS` before calling this).
 ///
 /// ```
 /// use lagrange_core::constraints::{holonomic_values, ConstraintKind, Constraints};

@@ -375,7 +375,7 @@ fn finish<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, co
 
 /// q̈ at (t, q, q̇) with the mode read from the state ([`infer_mode`]); with only holonomic and
 /// velocity rows, every row is enforced and no inference runs. What a constrained mechanism's
-/// [`Mechanism::accelerations_at`](crate::Mechanism::accelerations_at) forwards to.
+/// `Dynamics::accelerations_at` forwards to.
 pub fn accelerations<
     M: Constraints<N, K, C>,
     S: Scalar,

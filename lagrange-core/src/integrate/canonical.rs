@@ -46,7 +46,7 @@ pub fn momentum_rate<M: Mechanism<N>, S: Scalar, const N: usize>(
 
 /// (p, ṗ) at (t, q, v), for any scalar: p = ∂L/∂q̇ and ṗ = [`momentum_rate`], plus, when
 /// `constrained`, the generalized constraint force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the mechanism's
-/// (constrained) `accelerations` (`Mechanism::accelerations_at`): for a mechanism with constraints,
+/// (constrained) `accelerations` (`Dynamics::accelerations_at`): for a mechanism with constraints,
 /// ṗ = d/dt ∂L/∂q̇ along its motion is ∂L/∂q + F_nc + Jᵀλ.
 #[inline]
 pub fn canonical_field<M: Mechanism<N>, S: Scalar, const N: usize>(

@@ -24,8 +24,8 @@
 //!   change and is missed: bound `h_max` if that matters.
 //!
 //! - Constraints: the start state must satisfy the mechanism's constraints
-//!   (`Mechanism::check_constraints`); every accepted step is projected onto them
-//!   (`Mechanism::project`, a no-op without constraints). The dense output interpolates the step
+//!   (`Dynamics::check_constraints`); every accepted step is projected onto them
+//!   (`Dynamics::project`, a no-op without constraints). The dense output interpolates the step
 //!   before projection, which moves the end point by about the local error.
 //!
 //! Integration is forward in time only.

@@ -57,9 +57,9 @@
 //! (q, p) (HLW §IV.2.1), e.g. angular momentum.
 //!
 //! **Constraints.** As every integrator, a step first checks that the state satisfies the
-//! mechanism's constraints (`Mechanism::check_constraints`) and ends by projecting onto them
-//! (`Mechanism::project`; a no-op without constraints). Unless the mechanism declares no
-//! constraint rows ([`Mechanism::CONSTRAINTS`] = `Some(0)`), G includes the generalized constraint
+//! mechanism's constraints (`Dynamics::check_constraints`) and ends by projecting onto them
+//! (`Dynamics::project`; a no-op without constraints). Unless the mechanism declares no
+//! constraint rows (`Dynamics::CONSTRAINTS` = `Some(0)`), G includes the generalized constraint
 //! force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the constrained accelerations, at every stage — a constant
 //! of the mechanism, never a test of λ, so also where λ vanishes at the start of the step (a
 //! pendulum released horizontally at rest). Projection is not symplectic: on a constrained
@@ -285,7 +285,7 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     let p0 = SVector::<f64, N>::from(mechanism.momenta_at(t, q, v));
     // The stages are predicted from the previous step when there is one (the solver's memory), else
     // Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀), O(h²) from the solution: one plain evaluation. Whether the
-    // field carries constraint forces is the declaration's (Mechanism::CONSTRAINTS): every stage
+    // field carries constraint forces is the declaration's (Dynamics::CONSTRAINTS): every stage
     // includes Jᵀλ unless the mechanism declares no rows, whatever λ is at the start of the step.
     let constrained = carries_constraint_forces::<M, N>();
     let predictor: [SVector<f64, N>; S] = match memory.previous {

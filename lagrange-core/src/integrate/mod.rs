@@ -29,15 +29,15 @@
 //! Every step is allocation-free (a test counts allocations) and leaves the caller's state
 //! unchanged on error. On a mechanism with constraints, RK4, Dopri5, Dop853, Radau5, implicit
 //! midpoint and Gauss–Legendre integrate the constrained accelerations, check the state against
-//! the constraints before a step (`Mechanism::check_constraints`) and project after it
-//! (`Mechanism::project`).
+//! the constraints before a step (`Dynamics::check_constraints`) and project after it
+//! (`Dynamics::project`).
 //! Störmer–Verlet and the variational integrator enforce holonomic constraints g(q, t) = 0 by
 //! RATTLE ([`rattle`]: the multipliers of a position stage solved by Newton with the step, then the
 //! velocity projection), which keeps them symplectic on the constraint manifold, and refuse
 //! velocity constraints, unilateral contacts and friction with
 //! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod) (use [`ContactRk4`](crate::ContactRk4)
 //! or [`ContactDopri5`](crate::ContactDopri5) for those). Which constraints a method enforces is decided by the declaration alone —
-//! [`Mechanism::CONSTRAINT_COUNTS`] and [`Mechanism::CONSTRAINTS`] — never by the multipliers at
+//! `Dynamics::CONSTRAINT_COUNTS` and `Dynamics::CONSTRAINTS` — never by the multipliers at
 //! some state (a pendulum released horizontally at rest has λ = 0 at its first step and is treated
 //! as constrained all the same): the symplectic methods refuse an implementation that does not
 //! declare its constraints, and implicit midpoint and Gauss–Legendre add the constraint force at

@@ -164,7 +164,7 @@ pub(crate) fn newton<U: Unknowns>(
 
 /// Whether the methods on the canonical equations (implicit midpoint, Gauss–Legendre) add the
 /// generalized constraint force Jᵀλ = M q̈ − (𝓕 − b) to ṗ at every stage: unless the mechanism
-/// declares no constraint rows ([`Mechanism::CONSTRAINTS`] = `Some(0)`). A constant of the
+/// declares no constraint rows (`Dynamics::CONSTRAINTS` = `Some(0)`). A constant of the
 /// mechanism, never a test of λ at some state: a constraint whose force vanishes at the start of a
 /// step (a pendulum released horizontally) still acts at the stages; for an implementation that
 /// does not declare its constraints the term is added too (it is zero, to round-off, without

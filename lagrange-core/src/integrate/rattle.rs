@@ -20,7 +20,7 @@
 //! implicit methods with exact Jacobians from dual numbers. The velocity stage is linear in μ: with
 //! p affine in q̇ with slope M(q₁) (every [`Model`](crate::Model)), q̇₁ = q̂̇₁ + M⁻¹Gᵀμ with
 //! μ = −(G M⁻¹ Gᵀ)⁻¹(G q̂̇₁ + ∂g/∂t) — the mass-weighted velocity projection the constraints module
-//! already implements, `Mechanism::project` (whose position part finds g(q₁) = 0 to round-off
+//! already implements, `Dynamics::project` (whose position part finds g(q₁) = 0 to round-off
 //! already and moves q₁ at most by round-off). Without non-conservative forces the step map
 //! (q₀, p₀) ↦ (q₁, p₁) is symplectic on the constraint manifold {g = 0, G q̇ + ∂g/∂t = 0},
 //! symmetric and of order 2 (HLW §VII.1.4, for RATTLE and for the discrete Euler–Lagrange
@@ -28,12 +28,12 @@
 //! tolerance (round-off) at every step, without drift.
 //!
 //! **Which constraints.** Only holonomic rows: the choice is the declaration's,
-//! [`Mechanism::CONSTRAINT_COUNTS`], never the state's ([`holonomic_rows`]). Velocity rows,
+//! `Dynamics::CONSTRAINT_COUNTS`, never the state's ([`holonomic_rows`]). Velocity rows,
 //! unilateral contacts and friction are refused with [`Error::UnsuitableMethod`], and so is an
 //! implementation that does not declare its constraints.
 //!
 //! **Rows as an N-vector.** The methods are generic over `Mechanism<N>`, which cannot name the
-//! number of rows C; the rows come from `Mechanism::holonomic_constraints_at` padded with zeros
+//! number of rows C; the rows come from `Dynamics::holonomic_constraints_at` padded with zeros
 //! to N entries (independent holonomic rows number at most N), and the multipliers are an
 //! N-vector whose entries beyond the declared rows are held at zero by identity rows in the Newton
 //! systems.
@@ -50,7 +50,7 @@ use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
 
 /// The number of holonomic rows `method` enforces by RATTLE, from the declaration
-/// ([`Mechanism::CONSTRAINT_COUNTS`], or [`Mechanism::CONSTRAINTS`] = `Some(0)`) alone: 0 for an
+/// (`Dynamics::CONSTRAINT_COUNTS`, or `Dynamics::CONSTRAINTS` = `Some(0)`) alone: 0 for an
 /// unconstrained mechanism. Refused with [`Error::UnsuitableMethod`]: velocity rows, unilateral
 /// contacts, friction, more holonomic rows than coordinates, and a mechanism that does not declare
 /// its constraints.
@@ -99,7 +99,7 @@ pub fn holonomic_rows<M: Mechanism<N>, const N: usize>(method: &'static str) -> 
             c.velocity, c.unilateral, c.friction
         )),
         (None, _) => refuse(
-            "the mechanism does not declare its constraints (Mechanism::CONSTRAINT_COUNTS; impl_mechanism! and \
+            "the mechanism does not declare its constraints (Dynamics::CONSTRAINT_COUNTS; impl_mechanism! and \
              #[mechanism] declare it), and whether constraint forces act is decided by the declaration, \
              never by a state"
                 .to_string(),
@@ -108,12 +108,12 @@ pub fn holonomic_rows<M: Mechanism<N>, const N: usize>(method: &'static str) -> 
 }
 
 /// The error for a mechanism that declares holonomic rows but does not provide them
-/// (`Mechanism::holonomic_constraints_at` returns `None`).
+/// (`Dynamics::holonomic_constraints_at` returns `None`).
 fn rows_not_provided(method: &'static str) -> Error {
     Error::UnsuitableMethod {
         method,
         reason: "the mechanism declares holonomic constraints but does not provide them \
-                 (Mechanism::holonomic_constraints_at)"
+                 (Dynamics::holonomic_constraints_at)"
             .to_string(),
     }
 }

@@ -46,9 +46,9 @@
 //! the first line solved for (v_m, Λ) together by the same Newton iteration (the 2N-square Jacobian
 //! [[∂R/∂v_m, −Dg(q₀)ᵀ], [Dg(q₁), 0]], exact from the same dual seeding of v_m), Λ₁ such that v₁
 //! satisfies Dg(q₁, t₁) v₁ + ∂g/∂t = 0: the mass-weighted velocity projection
-//! `Mechanism::project` applied to the velocity recovered from p₁ without Λ₁. Velocity rows,
+//! `Dynamics::project` applied to the velocity recovered from p₁ without Λ₁. Velocity rows,
 //! unilateral contacts and friction are refused by the declaration
-//! ([`Mechanism::CONSTRAINT_COUNTS`], see [`holonomic_rows`]), whatever the state.
+//! (`Dynamics::CONSTRAINT_COUNTS`, see [`holonomic_rows`]), whatever the state.
 
 use super::canonical;
 pub use super::canonical::momentum_rate;

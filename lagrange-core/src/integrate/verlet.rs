@@ -34,10 +34,10 @@
 //!
 //! q̈ the unconstrained accelerations M⁻¹(𝓕 − b). λ solves the nonlinear position stage by Newton
 //! with the exact Jacobian G(q₁) M⁻¹ G(q₀)ᵀ (dual numbers); μ is the mass-weighted velocity
-//! projection, `Mechanism::project` (see [`rattle`](super::rattle)). Symplectic and symmetric
+//! projection, `Dynamics::project` (see [`rattle`](super::rattle)). Symplectic and symmetric
 //! for a constant M and conservative forces, order 2, g and ġ kept at round-off. Velocity
 //! constraints, unilateral contacts and friction are refused, by the declaration
-//! ([`Mechanism::CONSTRAINT_COUNTS`], see [`holonomic_rows`]), as is an implementation that does not
+//! (`Dynamics::CONSTRAINT_COUNTS`, see [`holonomic_rows`]), as is an implementation that does not
 //! declare its constraints: whatever the state, never by testing the multipliers.
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.

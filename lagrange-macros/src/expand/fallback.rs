@@ -59,9 +59,9 @@ pub(crate) fn fallback(
         quote! {
             #s
             #bodies
-            impl #p::Mechanism<#n> for #ident {
+            impl #p::Dynamics<#n> for #ident {
                 type Coords = Coords;
-                fn validate(&self) -> #p::Result<()> { #unreachable }
+                fn check_parameters(&self) -> #p::Result<()> { #unreachable }
                 fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> { #unreachable }
                 fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S { #unreachable }
                 fn potential_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> S { #unreachable }

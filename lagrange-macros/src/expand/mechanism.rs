@@ -48,13 +48,13 @@ pub(super) fn mechanism_impl(
         None => quote!(#p::lagrange_core::constraints::ConstraintCounts::NONE),
     };
     quote! {
-        impl #p::Mechanism<#n> for #params {
+        impl #p::Dynamics<#n> for #params {
             type Coords = Coords;
             const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
                 #p::core::option::Option::Some(#counts);
             const SCLERONOMIC: bool = #scleronomic;
             #[inline]
-            fn validate(&self) -> #p::Result<()> {
+            fn check_parameters(&self) -> #p::Result<()> {
                 <Self as #p::Model<#n, #k>>::validate(self)?;
                 #validate_constraints
                 #p::core::result::Result::Ok(())

@@ -375,7 +375,7 @@ pub mod chain {
             __m
         }
     }
-    impl ::lagrange::__private::Mechanism<3> for Chain {
+    impl ::lagrange::__private::Dynamics<3> for Chain {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -384,7 +384,7 @@ pub mod chain {
         );
         const SCLERONOMIC: bool = true;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }

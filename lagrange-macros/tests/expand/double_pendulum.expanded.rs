@@ -364,7 +364,7 @@ pub mod double_pendulum {
             __m
         }
     }
-    impl ::lagrange::__private::Mechanism<2> for DoublePendulum {
+    impl ::lagrange::__private::Dynamics<2> for DoublePendulum {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -373,7 +373,7 @@ pub mod double_pendulum {
         );
         const SCLERONOMIC: bool = true;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }

@@ -227,7 +227,7 @@ pub mod driven {
             __weights
         }
     }
-    impl ::lagrange::__private::Mechanism<1> for Driven {
+    impl ::lagrange::__private::Dynamics<1> for Driven {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -236,7 +236,7 @@ pub mod driven {
         );
         const SCLERONOMIC: bool = false;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }

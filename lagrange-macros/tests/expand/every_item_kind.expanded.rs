@@ -482,7 +482,7 @@ pub mod everything {
             __weights
         }
     }
-    impl ::lagrange::__private::Mechanism<2> for Everything {
+    impl ::lagrange::__private::Dynamics<2> for Everything {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -491,7 +491,7 @@ pub mod everything {
         );
         const SCLERONOMIC: bool = true;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 17>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }

@@ -166,7 +166,7 @@ pub mod free {
             [__bodies.ball.x, __bodies.ball.y]
         }
     }
-    impl ::lagrange::__private::Mechanism<2> for Free {
+    impl ::lagrange::__private::Dynamics<2> for Free {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -175,7 +175,7 @@ pub mod free {
         );
         const SCLERONOMIC: bool = true;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }

@@ -254,7 +254,7 @@ pub mod pendulum {
             __weights
         }
     }
-    impl ::lagrange::__private::Mechanism<1> for Pendulum {
+    impl ::lagrange::__private::Dynamics<1> for Pendulum {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -263,7 +263,7 @@ pub mod pendulum {
         );
         const SCLERONOMIC: bool = true;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }

@@ -209,7 +209,7 @@ pub mod sliding_block {
             __weights
         }
     }
-    impl ::lagrange::__private::Mechanism<2> for SlidingBlock {
+    impl ::lagrange::__private::Dynamics<2> for SlidingBlock {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -224,7 +224,7 @@ pub mod sliding_block {
         );
         const SCLERONOMIC: bool = true;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
             <Self as ::lagrange::__private::lagrange_core::constraints::Constraints<
                 2,

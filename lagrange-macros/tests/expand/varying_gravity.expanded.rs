@@ -219,7 +219,7 @@ pub mod varying {
             __potential
         }
     }
-    impl ::lagrange::__private::Mechanism<1> for Varying {
+    impl ::lagrange::__private::Dynamics<1> for Varying {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
@@ -228,7 +228,7 @@ pub mod varying {
         );
         const SCLERONOMIC: bool = false;
         #[inline]
-        fn validate(&self) -> ::lagrange::__private::Result<()> {
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
