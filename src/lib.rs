@@ -44,6 +44,8 @@
 //! assert!(matches!(bad.validate(), Err(Error::NonFiniteParameter { name: "m", .. })));
 //! ```
 
+#![warn(missing_docs)]
+
 pub use lagrange_macros::mechanism;
 
 pub use lagrange_core::analysis::{

@@ -17,6 +17,8 @@
 //! Users depend on the `lagrange` facade crate, which exports the user-facing items by name and
 //! these modules as they are.
 
+#![warn(missing_docs)]
+
 pub mod analysis;
 pub mod constraints;
 pub mod declaration;

@@ -243,7 +243,9 @@ pub struct Outcome<C> {
 pub enum Observation<'a, C, const N: usize> {
     /// An accepted step: the state at its end and the dense output over it.
     Step {
+        /// The state at the end of the step.
         state: &'a State<C>,
+        /// The dense output over the step.
         dense: &'a DenseOutput<N>,
     },
     /// A located event (reported before the step it lies in).
