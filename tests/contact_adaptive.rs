@@ -673,3 +673,47 @@ fn bouncing_ball_comes_to_rest_at_the_accumulation_point() {
         assert!(outcome.stats.accepted < changes.len() + 10);
     }
 }
+
+/// The implicit methods refuse a declaration with a unilateral row up front (its mode switches
+/// inside a step, where a collocation polynomial has nothing to follow), by the declaration, with
+/// the state unchanged; the same sphere declared bilateral steps.
+#[test]
+fn implicit_methods_refuse_unilateral_declarations() {
+    let start = Start {
+        theta0: 0.0,
+        v0: 0.5,
+    };
+    let ([x, y], [vx, vy]) = start.state();
+    let sys = unilateral::Sphere { m: M, r: R, g: G };
+    let s0 = unilateral::State::new(
+        0.0,
+        unilateral::Coords { x, y },
+        unilateral::Coords { x: vx, y: vy },
+    );
+    let refused = |result: lagrange::Result<()>, method: &str| {
+        assert!(
+            matches!(&result, Err(lagrange::Error::UnsuitableMethod { method: m, reason })
+                if *m == method && reason.contains("unilateral")),
+            "{method}: {result:?}"
+        );
+    };
+    let mut s = s0;
+    refused(sys.step::<GaussLegendre2>(&mut s, 1e-3), "Gauss-Legendre 2");
+    refused(sys.step::<ImplicitMidpoint>(&mut s, 1e-3), "implicit midpoint");
+    refused(
+        Radau5::new(1e-8, 1e-8)
+            .integrate(&sys, &mut s, 1.0, &mut [], |_| {})
+            .map(|_| ()),
+        "Radau5",
+    );
+    assert_eq!(s, s0, "a refused step changes nothing");
+    let bilateral = bilateral::Sphere { m: M, r: R, g: G };
+    let mut b = bilateral::State::new(
+        0.0,
+        bilateral::Coords { x, y },
+        bilateral::Coords { x: vx, y: vy },
+    );
+    bilateral
+        .step::<GaussLegendre2>(&mut b, 1e-3)
+        .expect("the bilateral declaration steps");
+}

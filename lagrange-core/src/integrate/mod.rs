@@ -30,7 +30,11 @@
 //! unchanged on error. On a mechanism with constraints, RK4, Dopri5, Dop853, Radau5, implicit
 //! midpoint and Gauss–Legendre integrate the constrained accelerations, check the state against
 //! the constraints before a step (`Dynamics::check_constraints`) and project after it
-//! (`Dynamics::project`).
+//! (`Dynamics::project`). Unilateral contacts and friction switch their mode inside a step:
+//! Dopri5 and Dop853 then hold the mode per step and locate the switches
+//! ([`ContactDopri5`](crate::constraints::ContactDopri5)), RK4 has
+//! [`ContactRk4`](crate::ContactRk4), and Radau5, implicit midpoint and Gauss–Legendre refuse such a
+//! declaration with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
 //! Störmer–Verlet and the variational integrator enforce holonomic constraints g(q, t) = 0 by
 //! RATTLE ([`rattle`]: the multipliers of a position stage solved by Newton with the step, then the
 //! velocity projection), which keeps them symplectic on the constraint manifold, and refuse

@@ -173,6 +173,27 @@ pub(crate) const fn carries_constraint_forces<M: Mechanism<N>, const N: usize>()
     !matches!(M::CONSTRAINTS, Some(0))
 }
 
+/// Refuses, for the implicit methods, a declaration with unilateral or friction rows: their contact
+/// mode switches inside a step, where a collocation polynomial has no switch to follow, so the
+/// Newton iteration would chase a discontinuous field. Decided by the declaration
+/// (`Dynamics::CONSTRAINT_COUNTS`, a constant), never by a state. [`Dopri5`](super::Dopri5) and
+/// [`Dop853`](super::Dop853) hold the mode per step and locate its switches; so does
+/// [`ContactRk4`](crate::ContactRk4) with a fixed step.
+pub(crate) fn refuse_contacts<M: Mechanism<N>, const N: usize>(method: &'static str) -> Result<()> {
+    match M::CONSTRAINT_COUNTS {
+        Some(c) if c.unilateral + c.friction > 0 => Err(crate::Error::UnsuitableMethod {
+            method,
+            reason: format!(
+                "the declaration has {} unilateral and {} friction rows, whose contact mode switches \
+                 inside a step; Dopri5 and Dop853 (the mode held per step, switches located) or \
+                 ContactRk4 integrate them",
+                c.unilateral, c.friction
+            ),
+        }),
+        _ => Ok(()),
+    }
+}
+
 /// An LU factorisation with partial pivoting of a matrix of S×S blocks of size N×N (an
 /// (S·N)-square matrix; stable Rust cannot name S·N as an array length, so the blocks are
 /// indexed through r ↦ (r / N, r % N)): factorised once, solved many times — the simplified Newton

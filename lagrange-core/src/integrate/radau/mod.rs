@@ -155,6 +155,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Radau5Stepper<'m, M, N> {
     }
 
     fn start(mechanism: &'m M, settings: Radau5, t: f64, q: [f64; N], v: [f64; N]) -> Result<Self> {
+        crate::integrate::newton::refuse_contacts::<M, N>("Radau5")?;
         let a = mechanism
             .accelerations_at(t, &q, &v)
             .map_err(|e| diagnose(mechanism, t, &q, &v, e))?;
