@@ -27,8 +27,8 @@ mod common;
 
 use common::{interleave, mean_ns, print_interleaved, smoke_run};
 use criterion::{criterion_group, Criterion};
-use lagrange::prelude::*;
 use lagrange::mechanism::Dynamics as _;
+use lagrange::prelude::*;
 use std::hint::black_box;
 
 #[mechanism]

@@ -102,11 +102,11 @@ pub mod __private {
     pub use lagrange_core;
     pub use lagrange_core::dynamics;
     pub use lagrange_core::geometry;
-    pub use lagrange_core::model::{check_state, Coordinates, Model, State};
-    pub use lagrange_core::scalar_ext::ScalarExt;
-    pub use lagrange_core::parameters;
-    pub use lagrange_core::tree;
     pub use lagrange_core::mechanism::Dynamics;
+    pub use lagrange_core::model::{check_state, Coordinates, Model, State};
+    pub use lagrange_core::parameters;
+    pub use lagrange_core::scalar_ext::ScalarExt;
+    pub use lagrange_core::tree;
     pub use lagrange_core::{Error, Mechanism, Result, Scalar};
     pub use nalgebra;
     pub use num_dual;

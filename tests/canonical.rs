@@ -6,8 +6,8 @@
 //! (the implicit methods differentiate it for their Newton matrix).
 
 use lagrange::integrate::momentum_rate;
-use lagrange::prelude::*;
 use lagrange::mechanism::Dynamics as _;
+use lagrange::prelude::*;
 use nalgebra::SVector;
 use num_dual::DualSVec;
 

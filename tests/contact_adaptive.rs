@@ -508,7 +508,9 @@ fn cost_in_contact_table() {
     use unilateral::{Coords, Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
     let v0 = 0.5;
-    println!("| tol | unilateral, ContactDopri5 | unilateral, `Dopri5::integrate` | bilateral, Dopri5 |");
+    println!(
+        "| tol | unilateral, ContactDopri5 | unilateral, `Dopri5::integrate` | bilateral, Dopri5 |"
+    );
     println!("|---|---|---|---|");
     for tol in [1e-6, 1e-10, 1e-13] {
         let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: v0, y: 0.0 });
@@ -699,7 +701,10 @@ fn implicit_methods_refuse_unilateral_declarations() {
     };
     let mut s = s0;
     refused(sys.step::<GaussLegendre2>(&mut s, 1e-3), "Gauss-Legendre 2");
-    refused(sys.step::<ImplicitMidpoint>(&mut s, 1e-3), "implicit midpoint");
+    refused(
+        sys.step::<ImplicitMidpoint>(&mut s, 1e-3),
+        "implicit midpoint",
+    );
     refused(
         Radau5::new(1e-8, 1e-8)
             .integrate(&sys, &mut s, 1.0, &mut [], |_| {})

@@ -287,14 +287,9 @@ fn dopri5_by_a_parameter_matches_rk4() {
         theta2: 0.5,
     });
     let seeds = [Seed::Parameter("l2"), Seed::Parameter("c")];
-    let adaptive = lagrange::sensitivity::integrate_dopri5(
-        &sys,
-        &s0,
-        seeds,
-        Dopri5::new(1e-11, 1e-13),
-        2.0,
-    )
-    .unwrap();
+    let adaptive =
+        lagrange::sensitivity::integrate_dopri5(&sys, &s0, seeds, Dopri5::new(1e-11, 1e-13), 2.0)
+            .unwrap();
     let mut run = Tangent::new(&sys, &s0, seeds).unwrap();
     for _ in 0..2000 {
         run.rk4_step(1e-3).unwrap();
@@ -305,7 +300,11 @@ fn dopri5_by_a_parameter_matches_rk4() {
             .abs()
             .max((adaptive.dq[j].theta2 - fixed.dq[j].theta2).abs())
             .max((adaptive.dv[j].theta2 - fixed.dv[j].theta2).abs());
-        assert!(diff < 1e-7, "{}: Dopri5 and RK4 differ by {diff:e}", seed.label());
+        assert!(
+            diff < 1e-7,
+            "{}: Dopri5 and RK4 differ by {diff:e}",
+            seed.label()
+        );
     }
 }
 

@@ -37,13 +37,7 @@ pub trait Parametrized<const N: usize, const K: usize, const NP: usize>: Model<N
 
     /// V(q, t) with the parameters `p` (see [`Model::potential`]). The default is
     /// [`Model::potential`], right for a model whose potential reads no parameter.
-    fn potential_with<S: Scalar, D: Scalar>(
-        &self,
-        p: &[S; NP],
-        t: D,
-        q: &[D; N],
-        x: &[D; K],
-    ) -> D {
+    fn potential_with<S: Scalar, D: Scalar>(&self, p: &[S; NP], t: D, q: &[D; N], x: &[D; K]) -> D {
         let _ = p;
         self.potential(t, q, x)
     }
@@ -245,12 +239,14 @@ mod tests {
 
     #[test]
     fn lift_keeps_the_value_and_the_derivatives_at_every_level() {
-        let s = DualSVec::<f64, 2>::new(1.5, num_dual::Derivative::some(nalgebra::SVector::from([0.25, -2.0])));
+        let s = DualSVec::<f64, 2>::new(
+            1.5,
+            num_dual::Derivative::some(nalgebra::SVector::from([0.25, -2.0])),
+        );
         // The same type: a copy.
         assert_eq!(lift::<_, DualSVec<f64, 2>>(&s), s);
         // One level up: s is the real part, the new directions are zero.
-        let h: HyperDualVec<DualSVec<f64, 2>, nalgebra::Const<3>, nalgebra::Const<3>> =
-            lift(&s);
+        let h: HyperDualVec<DualSVec<f64, 2>, nalgebra::Const<3>, nalgebra::Const<3>> = lift(&s);
         assert_eq!(h.re, s);
         assert_eq!(h.eps1, num_dual::Derivative::none());
         // Two levels up.

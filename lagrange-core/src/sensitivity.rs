@@ -41,12 +41,12 @@
 //! # Ok::<(), lagrange_core::Error>(())
 //! ```
 
+use crate::dynamics::accelerations_generic;
 use crate::error::{Error, Result};
 use crate::integrate::dopri5::stages;
 use crate::integrate::rk4::rk4_step;
 use crate::integrate::{check_step_at, Dopri5, Dopri5Stepper};
 use crate::mechanism::{diagnose, Mechanism};
-use crate::dynamics::accelerations_generic;
 use crate::model::{check_state, Coordinates, State};
 use crate::parameters::{Lifted, Parametrized};
 use num_dual::DualSVec;
@@ -174,7 +174,11 @@ where
     /// ([`Error::UnknownParameter`]), a parameter that carries no derivative
     /// ([`Error::UnseedableParameter`]), a mechanism that declares constraints or does not say
     /// ([`Error::UnsuitableMethod`]: the projection onto the constraints is not differentiated).
-    pub fn new(mechanism: &'m M, state: &State<<M as crate::mechanism::Dynamics<N>>::Coords>, seeds: [Seed; P]) -> Result<Self> {
+    pub fn new(
+        mechanism: &'m M,
+        state: &State<<M as crate::mechanism::Dynamics<N>>::Coords>,
+        seeds: [Seed; P],
+    ) -> Result<Self> {
         let (q0, v0) = mechanism.check(state)?;
         // Decided by the declaration alone, as the integrators decide.
         if <M as crate::mechanism::Dynamics<N>>::CONSTRAINTS != Some(0) {
@@ -254,14 +258,14 @@ where
     }
 
     /// Moves to the end of a step of size `h` once its state is checked finite.
-    fn accept(
-        &mut self,
-        h: f64,
-        q: [DualSVec<f64, P>; N],
-        v: [DualSVec<f64, P>; N],
-    ) -> Result<()> {
+    fn accept(&mut self, h: f64, q: [DualSVec<f64, P>; N], v: [DualSVec<f64, P>; N]) -> Result<()> {
         let (qr, vr) = (q.map(|x| x.re), v.map(|x| x.re));
-        check_state(&<M as crate::mechanism::Dynamics<N>>::Coords::NAMES, self.t + h, &qr, &vr)?;
+        check_state(
+            &<M as crate::mechanism::Dynamics<N>>::Coords::NAMES,
+            self.t + h,
+            &qr,
+            &vr,
+        )?;
         (self.t, self.q, self.v) = (self.t + h, q, v);
         Ok(())
     }
@@ -277,11 +281,12 @@ where
 
     /// The state and its derivatives along every seed.
     pub fn sensitivities(&self) -> Sensitivities<<M as crate::mechanism::Dynamics<N>>::Coords, P> {
-        let along = |x: &[DualSVec<f64, P>; N], j: usize| -> <M as crate::mechanism::Dynamics<N>>::Coords {
-            <M as crate::mechanism::Dynamics<N>>::Coords::from_array(std::array::from_fn(|i| {
-                x[i].eps.0.as_ref().map_or(0.0, |d| d[j])
-            }))
-        };
+        let along =
+            |x: &[DualSVec<f64, P>; N], j: usize| -> <M as crate::mechanism::Dynamics<N>>::Coords {
+                <M as crate::mechanism::Dynamics<N>>::Coords::from_array(std::array::from_fn(|i| {
+                    x[i].eps.0.as_ref().map_or(0.0, |d| d[j])
+                }))
+            };
         Sensitivities {
             state: self.state(),
             seeds: self.seeds,

@@ -226,13 +226,7 @@ where
         self.0.cartesian_with(p, t, q)
     }
     #[inline(always)]
-    fn potential_with<S: Scalar, D: Scalar>(
-        &self,
-        p: &[S; NP],
-        t: D,
-        q: &[D; N],
-        x: &[D; K],
-    ) -> D {
+    fn potential_with<S: Scalar, D: Scalar>(&self, p: &[S; NP], t: D, q: &[D; N], x: &[D; K]) -> D {
         self.0.potential_with(p, t, q, x)
     }
     #[inline(always)]

@@ -9,8 +9,8 @@ use lagrange_core::analysis::{
 mod support;
 
 use lagrange_core::impl_mechanism;
-use lagrange_core::{Error, Mechanism, Model, Rk4, Scalar, State};
 use lagrange_core::mechanism::Dynamics as _;
+use lagrange_core::{Error, Mechanism, Model, Rk4, Scalar, State};
 use nalgebra::SMatrix;
 use std::f64::consts::PI;
 

@@ -278,7 +278,10 @@ fn undeclared_constraints_are_refused_at_the_first_step_whatever_lambda() {
     // The same pendulum through a hand-written Mechanism that does not declare its constraints:
     // RATTLE cannot know which rows to enforce, so both methods refuse it — at the first step, at
     // rest horizontally (λ = 0) exactly as from any other state, and leave the state alone.
-    assert_eq!(<Undeclared as lagrange_core::mechanism::Dynamics<2>>::CONSTRAINTS, None);
+    assert_eq!(
+        <Undeclared as lagrange_core::mechanism::Dynamics<2>>::CONSTRAINTS,
+        None
+    );
     for start in [
         cartesian(std::f64::consts::FRAC_PI_2, 0.0),
         cartesian(0.5, 1.0),
@@ -343,7 +346,8 @@ fn rattle_refuses_velocity_constraints_by_the_declaration() {
     // A velocity row is not enforced by RATTLE: refused before any evaluation, naming the kind.
     let s = State::new(0.0, [0.0, 0.0], [1.0, 0.0]);
     assert_eq!(
-        <Rail as lagrange_core::mechanism::Dynamics<2>>::CONSTRAINT_COUNTS.map(|c| (c.holonomic, c.velocity)),
+        <Rail as lagrange_core::mechanism::Dynamics<2>>::CONSTRAINT_COUNTS
+            .map(|c| (c.holonomic, c.velocity)),
         Some((0, 1))
     );
     for err in [

@@ -154,9 +154,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             c - truth.c
         );
     }
-    let times: Vec<f64> = (1..=SAMPLES)
-        .map(|i| (i * STRIDE) as f64 * H)
-        .collect();
+    let times: Vec<f64> = (1..=SAMPLES).map(|i| (i * STRIDE) as f64 * H).collect();
     let (at_guess, _) = trajectory(&guess, &s0).expect("guess");
     let series = |label: &str, values: &[f64]| {
         Series::new(
@@ -179,7 +177,19 @@ pub fn run(plots: &Path) -> Vec<Check> {
     // of ~1e-16 in θ move the parameters by ~1e-16 / (smallest singular value of J ≈ 1e-2), far
     // below the 1e-9 asserted.
     vec![
-        Check::new(SCENE, "length L recovered by Gauss–Newton", l, truth.l, 1e-9),
-        Check::new(SCENE, "friction c recovered by Gauss–Newton", c, truth.c, 1e-9),
+        Check::new(
+            SCENE,
+            "length L recovered by Gauss–Newton",
+            l,
+            truth.l,
+            1e-9,
+        ),
+        Check::new(
+            SCENE,
+            "friction c recovered by Gauss–Newton",
+            c,
+            truth.c,
+            1e-9,
+        ),
     ]
 }

@@ -2,7 +2,9 @@
 //! `bodies`, `body_velocities`, the generic `__lagrange_bodies`, and the conversions between bodies
 //! and rows of x (flatten, unflatten).
 
-use super::{bind_inputs_from, lit, optimized_blocks_from, position_type, prelude, private, Params};
+use super::{
+    bind_inputs_from, lit, optimized_blocks_from, position_type, prelude, private, Params,
+};
 use crate::check::{self, Body, Dim, Model, Shape};
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;

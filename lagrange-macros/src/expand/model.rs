@@ -324,7 +324,9 @@ pub(super) fn potential_fn(model: &Model, params: Params) -> TokenStream {
     let masses = (!model.gravities.is_empty())
         .then(|| quote!(let __masses = <Self as #p::Model<#n, #k>>::masses(self);));
     let signature = match params {
-        Params::Fields => quote!(fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D),
+        Params::Fields => {
+            quote!(fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D)
+        }
         Params::Array => {
             let np = lit(model.params.len());
             quote!(fn potential_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D)
