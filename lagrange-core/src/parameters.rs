@@ -14,7 +14,7 @@
 use crate::geometry::Scalar;
 use crate::model::Model;
 use num_dual::DualNum;
-use std::any::TypeId;
+use std::any::Any;
 
 /// A [`Model`] whose position, potential and force functions take their parameters as an array of
 /// any scalar. `#[mechanism]` implements it for every declaration (the parameters in the order of
@@ -88,14 +88,13 @@ pub fn lift<S: Scalar, D: Scalar>(s: &S) -> D {
 /// `f64` again, which `DualNum` alone does not state).
 #[inline(always)]
 fn lift_into<S: Scalar, D: DualNum>(s: &S) -> D {
-    if TypeId::of::<S>() == TypeId::of::<D>() {
-        // SAFETY: S and D are the same type (equal `TypeId`s of 'static types).
-        return unsafe { std::mem::transmute_copy::<S, D>(s) };
+    // The type tests are constants after monomorphisation: one branch is left.
+    if let Some(same) = (s as &dyn Any).downcast_ref::<D>() {
+        return same.clone();
     }
-    if TypeId::of::<D>() == TypeId::of::<f64>() {
-        let value: f64 = s.re();
-        // SAFETY: D is f64 (equal `TypeId`s).
-        return unsafe { std::mem::transmute_copy::<f64, D>(&value) };
+    let value: f64 = s.re();
+    if let Some(real) = (&value as &dyn Any).downcast_ref::<D>() {
+        return real.clone();
     }
     // D is a dual number whose parts are `D::InnerDual` (every scalar here has `f64` at the
     // bottom, where the recursion stops).
