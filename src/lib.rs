@@ -102,7 +102,7 @@ pub mod __private {
     pub use lagrange_core;
     pub use lagrange_core::dynamics;
     pub use lagrange_core::geometry;
-    pub use lagrange_core::mechanism::Dynamics;
+    pub use lagrange_core::mechanism::{Dynamics, Prepare};
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
     pub use lagrange_core::parameters;
     pub use lagrange_core::scalar_ext::ScalarExt;

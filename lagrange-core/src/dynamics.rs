@@ -42,7 +42,7 @@ pub struct EquationsOfMotion<S: Scalar, const N: usize> {
 
 /// Pass 1: x(q, t) seeded as a gradient over q. Returns the values and Jacobian rows.
 #[inline(always)]
-fn cartesian_with_jacobian<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+pub(crate) fn cartesian_with_jacobian<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
     t: S,
     q: &[S; N],
@@ -53,7 +53,7 @@ fn cartesian_with_jacobian<M: Model<N, K>, S: Scalar, const N: usize, const K: u
 }
 
 #[inline(always)]
-fn gradient<S: Scalar, const N: usize>(x: &DualSVec<S, N>) -> SVector<S, N> {
+pub(crate) fn gradient<S: Scalar, const N: usize>(x: &DualSVec<S, N>) -> SVector<S, N> {
     x.eps.0.unwrap_or_else(SVector::zeros)
 }
 
@@ -79,7 +79,7 @@ fn cartesian_along_motion<M: Model<N, K>, S: Scalar, const N: usize, const K: us
 /// the lower triangle, mirrored at the end. Only the entries [`Model::DEPENDS`] allows are
 /// formed: a row that depends on two of N coordinates costs three products, not N(N + 1)/2.
 #[inline(always)]
-fn assemble_mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+pub(crate) fn assemble_mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     masses: &[f64; K],
     rows: &[Option<SVector<S, N>>; K],
 ) -> SMatrix<S, N, N> {
@@ -225,7 +225,7 @@ fn assemble<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
 /// `sum += s·row` for row i of x: the whole row, or, where [`Model::DEPENDS`] rules entries out,
 /// only the others.
 #[inline(always)]
-fn add_row<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+pub(crate) fn add_row<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     sum: &mut Option<SVector<S, N>>,
     i: usize,
     row: &SVector<S, N>,
@@ -246,7 +246,7 @@ fn add_row<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
 
 /// `sum += term`, where an absent sum is an exact zero (so the first term is not added to zeros).
 #[inline(always)]
-fn accumulate<S: Scalar, const N: usize>(sum: &mut Option<SVector<S, N>>, term: SVector<S, N>) {
+pub(crate) fn accumulate<S: Scalar, const N: usize>(sum: &mut Option<SVector<S, N>>, term: SVector<S, N>) {
     match sum {
         Some(s) => *s += term,
         None => *sum = Some(term),
@@ -336,16 +336,7 @@ fn kinematics_of_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>
     let x = std::array::from_fn(|i| xh[i].re);
     let x_dot = std::array::from_fn(|i| xh[i].eps2.0.map_or(S::zero(), |d| d[0]));
     let accelerations = std::array::from_fn(|i| along_motion(&xh[i], v, &M::DEPENDS[i]));
-    // ∇V needs only first derivatives: evaluate V on gradient duals rebuilt from the same pass.
-    let potential_forces = if M::HAS_POTENTIAL {
-        let qd: [DualSVec<S, N>; N] =
-            std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
-        let xd: [DualSVec<S, N>; K] =
-            std::array::from_fn(|i| DualSVec::new(x[i], Derivative::new(rows[i])));
-        Some(-gradient(&model.potential(DualSVec::from_re(t), &qd, &xd)))
-    } else {
-        None
-    };
+    let potential_forces = potential_forces(model, t, q, &x, &rows);
     Kinematics {
         rows,
         x,
@@ -353,6 +344,26 @@ fn kinematics_of_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>
         accelerations,
         potential_forces,
     }
+}
+
+/// −∇V at (t, q) from the positions x and their Jacobian rows, already known: V is evaluated on
+/// gradient duals rebuilt from them (q seeded, xᵢ carrying its row), so x(q) is not evaluated again
+/// and ∇V = ∂V/∂q + Jᵀ ∂V/∂x by the chain rule. `None` without a potential.
+#[inline(always)]
+pub(crate) fn potential_forces<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    x: &[S; K],
+    rows: &[Option<SVector<S, N>>; K],
+) -> Option<SVector<S, N>> {
+    if !M::HAS_POTENTIAL {
+        return None;
+    }
+    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let xd: [DualSVec<S, N>; K] =
+        std::array::from_fn(|i| DualSVec::new(x[i], Derivative::new(rows[i])));
+    Some(-gradient(&model.potential(DualSVec::from_re(t), &qd, &xd)))
 }
 
 /// Rheonomic: a gradient pass for J and ∇V, a second-order pass along (q̇, 1) for ẋ and a.
@@ -403,6 +414,16 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
         Ok(qdd) => qdd,
         Err(e) => return Err(mass_matrix_failure::<C, S, N>(&eom.mass_matrix, e, t, q)),
     };
+    finite_accelerations::<C, S, N>(qdd, t, q)
+}
+
+/// `qdd` when every entry is finite, otherwise [`Error::NonFiniteDynamics`] at (t, q).
+#[inline(always)]
+pub(crate) fn finite_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
+    qdd: SVector<S, N>,
+    t: S,
+    q: &[S; N],
+) -> Result<[S; N]> {
     // Branch-free on the common path: a·0 is 0 exactly when a is finite.
     let mut zero = 0.0;
     for a in qdd.iter() {

@@ -19,6 +19,7 @@
 
 #![warn(missing_docs)]
 
+pub mod affine;
 pub mod analysis;
 pub mod constraints;
 pub mod declaration;

@@ -171,13 +171,31 @@ pub trait Mechanism<const N: usize>: Dynamics<N> {
 
 impl<T: Dynamics<N>, const N: usize> Mechanism<N> for T {}
 
+/// What a mechanism computes once from its parameters, when it is validated, so that every
+/// evaluation of a simulation reuses it: [`Validated`](crate::Validated) stores it next to the
+/// parameters (which cannot change while the handle exists) and passes it to
+/// [`Dynamics::accelerations_prepared_at`].
+///
+/// `#[mechanism]` prepares the constants of a declaration whose positions are affine in the
+/// coordinates (x = A q + c: J = A and M = Aᵀ diag(μ) A constant, see [`crate::affine`]) and
+/// nothing, `()`, for any other; [`impl_mechanism!`](crate::impl_mechanism) likewise
+/// (`affine` for the former).
+#[doc(hidden)]
+pub trait Prepare {
+    /// The constants (`()` when there are none).
+    type Prepared: Copy + std::fmt::Debug + PartialEq;
+    /// Computes them from valid parameters. Fails only where the parameters alone decide the
+    /// equations of motion are singular (a constant mass matrix that is not positive definite).
+    fn prepare(&self) -> Result<Self::Prepared>;
+}
+
 /// The glue `#[mechanism]` generates beneath [`Mechanism`]: the named coordinates, what the
 /// declaration states (its constraint rows, whether it is scleronomic), and scalar-generic hooks on
 /// raw arrays that forward to the generic functions of [`crate::dynamics`], [`crate::tree`] and
 /// [`crate::constraints`], and that the integrators, the analyses and the sensitivities call.
 /// [`impl_mechanism!`](crate::impl_mechanism) writes it for a hand-written [`Model`](crate::Model).
 #[doc(hidden)]
-pub trait Dynamics<const N: usize>: Sized {
+pub trait Dynamics<const N: usize>: Prepare + Sized {
     /// The named generalized coordinates (`Coords` of the declaration).
     type Coords: Coordinates<N>;
 
@@ -255,6 +273,22 @@ pub trait Dynamics<const N: usize>: Sized {
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
         let eom = self.equations_of_motion_at(t, q, v);
         crate::dynamics::solve_accelerations::<Self::Coords, S, N>(&eom, t, q)
+    }
+
+    #[doc(hidden)]
+    /// q̈ as [`accelerations_at`](Dynamics::accelerations_at), with the constants
+    /// [`Prepare::prepare`] computed when the mechanism was validated: what a
+    /// [`Validated`](crate::Validated) handle calls. By default the constants are not used.
+    #[inline]
+    fn accelerations_prepared_at<S: Scalar>(
+        &self,
+        prepared: &Self::Prepared,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> Result<[S; N]> {
+        let _ = prepared;
+        self.accelerations_at(t, q, v)
     }
 
     #[doc(hidden)]
@@ -445,6 +479,12 @@ pub fn diagnose<M: Mechanism<N>, const N: usize>(
 /// `impl_mechanism!(Type, N, K, constraints)` is the same for a model that also implements
 /// [`Constraints`](crate::constraints::Constraints): accelerations solve the constrained system,
 /// integrators project after every step and refuse inconsistent states.
+///
+/// `impl_mechanism!(Type, N, K, affine)` is for a model without constraints whose x is affine in
+/// q with constant coefficients and independent of t (x = A q + c; [`crate::affine`]): its
+/// [`Validated`](crate::Validated) handle computes J = A and the factorisation of the constant
+/// mass matrix once. The model promises it; a position that is not affine gives wrong
+/// accelerations through the handle.
 #[macro_export]
 macro_rules! impl_mechanism {
     ($ty:ty, $n:tt, $k:tt, constraints) => {
@@ -495,12 +535,43 @@ macro_rules! impl_mechanism {
                 $crate::constraints::integrate_declared_contacts(method, self, state, t_end, events, observer)
             }
         });
+        $crate::impl_mechanism!(@prepare_nothing $ty);
+    };
+    ($ty:ty, $n:tt, $k:tt, affine) => {
+        $crate::impl_mechanism!(@impl $ty, $n, $k, {
+            const CONSTRAINT_COUNTS: Option<$crate::constraints::ConstraintCounts> =
+                Some($crate::constraints::ConstraintCounts::NONE);
+            fn accelerations_prepared_at<S: $crate::Scalar>(
+                &self,
+                prepared: &Self::Prepared,
+                t: S,
+                q: &[S; $n],
+                v: &[S; $n],
+            ) -> $crate::Result<[S; $n]> {
+                $crate::affine::accelerations::<$ty, S, $n, $k>(self, prepared, t, q, v)
+            }
+        });
+        impl $crate::mechanism::Prepare for $ty {
+            type Prepared = $crate::affine::AffineConstants<$n, $k>;
+            fn prepare(&self) -> $crate::Result<Self::Prepared> {
+                $crate::affine::AffineConstants::of::<$ty>(self)
+            }
+        }
     };
     ($ty:ty, $n:tt, $k:tt) => {
         $crate::impl_mechanism!(@impl $ty, $n, $k, {
             const CONSTRAINT_COUNTS: Option<$crate::constraints::ConstraintCounts> =
                 Some($crate::constraints::ConstraintCounts::NONE);
         });
+        $crate::impl_mechanism!(@prepare_nothing $ty);
+    };
+    (@prepare_nothing $ty:ty) => {
+        impl $crate::mechanism::Prepare for $ty {
+            type Prepared = ();
+            fn prepare(&self) -> $crate::Result<()> {
+                Ok(())
+            }
+        }
     };
     (@impl $ty:ty, $n:tt, $k:tt, { $($extra:tt)* }) => {
         // A hand-written model reads no parameter through an array: there is nothing to seed.

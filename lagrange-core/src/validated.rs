@@ -4,14 +4,20 @@
 use crate::dynamics::EquationsOfMotion;
 use crate::error::Result;
 use crate::geometry::Scalar;
-use crate::mechanism::{Dynamics, Mechanism};
+use crate::mechanism::{Dynamics, Mechanism, Prepare};
 use crate::model::Model;
 use crate::parameters::Parametrized;
 
 /// A mechanism whose parameters (finite, masses and inertias positive, constraint declarations
 /// well formed) were checked when it was made. Parameters do not change during a simulation, so
-/// every call through the handle skips that check and validates only its state; results are the
-/// same as the mechanism's own, bit for bit.
+/// every call through the handle skips that check and validates only its state.
+///
+/// What the parameters alone decide is computed once, when the handle is made
+/// ([`Prepare`](crate::mechanism::Prepare)): for a mechanism whose positions are affine in the
+/// coordinates (a block on a wedge, particles in Cartesian coordinates, see [`crate::affine`]) the
+/// Jacobian and the factorisation of the constant mass matrix, so an evaluation of q̈ forms
+/// neither; its results agree with the mechanism's own to round-off. For any other mechanism
+/// nothing is prepared and the results are the same as the mechanism's own, bit for bit.
 ///
 /// The handle owns a copy of the parameters and gives them out read-only ([`Validated::get`]), so
 /// they cannot become invalid after the check. Every integrator and analysis that takes a
@@ -57,9 +63,9 @@ use crate::parameters::Parametrized;
 /// # }
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Validated<M>(M);
+pub struct Validated<M: Prepare>(M, M::Prepared);
 
-impl<M> Validated<M> {
+impl<M: Prepare> Validated<M> {
     /// The parameters.
     pub fn get(&self) -> &M {
         &self.0
@@ -72,17 +78,27 @@ impl<M> Validated<M> {
     }
 }
 
-impl<M> std::ops::Deref for Validated<M> {
+impl<M: Prepare> std::ops::Deref for Validated<M> {
     type Target = M;
     fn deref(&self) -> &M {
         &self.0
     }
 }
 
-/// Checks `mechanism`'s parameters and wraps it.
+/// Checks `mechanism`'s parameters, prepares what they alone decide, and wraps both.
 pub(crate) fn validate<M: Mechanism<N>, const N: usize>(mechanism: M) -> Result<Validated<M>> {
     mechanism.validate()?;
-    Ok(Validated(mechanism))
+    let prepared = mechanism.prepare()?;
+    Ok(Validated(mechanism, prepared))
+}
+
+/// The handle has prepared its mechanism's constants already.
+impl<M: Prepare> Prepare for Validated<M> {
+    type Prepared = ();
+    #[inline(always)]
+    fn prepare(&self) -> Result<()> {
+        Ok(())
+    }
 }
 
 impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
@@ -127,7 +143,7 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
     }
     #[inline(always)]
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
-        self.0.accelerations_at(t, q, v)
+        self.0.accelerations_prepared_at(&self.1, t, q, v)
     }
     #[inline(always)]
     fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {
@@ -165,7 +181,7 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
 
 /// The model behind the handle, for the generic code that works on a [`Model`] (the parameter
 /// sensitivities lift it; see [`crate::parameters`]).
-impl<M: Model<N, K>, const N: usize, const K: usize> Model<N, K> for Validated<M> {
+impl<M: Model<N, K> + Prepare, const N: usize, const K: usize> Model<N, K> for Validated<M> {
     type Coords = M::Coords;
     const INERTIAL: usize = M::INERTIAL;
     const RHEONOMIC: bool = M::RHEONOMIC;
@@ -213,7 +229,7 @@ impl<M: Model<N, K>, const N: usize, const K: usize> Model<N, K> for Validated<M
 
 impl<M, const N: usize, const K: usize, const NP: usize> Parametrized<N, K, NP> for Validated<M>
 where
-    M: Parametrized<N, K, NP>,
+    M: Parametrized<N, K, NP> + Prepare,
 {
     const PARAMETER_NAMES: [&'static str; NP] = M::PARAMETER_NAMES;
     const SEEDABLE: [bool; NP] = M::SEEDABLE;

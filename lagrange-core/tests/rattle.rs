@@ -431,6 +431,12 @@ struct FreeFall;
 
 macro_rules! forward_pendulum {
     ($ty:ty, { $($extra:tt)* }) => {
+        impl lagrange_core::mechanism::Prepare for $ty {
+            type Prepared = ();
+            fn prepare(&self) -> lagrange_core::Result<()> {
+                Ok(())
+            }
+        }
         impl Dynamics<2> for $ty {
             type Coords = [f64; 2];
             $($extra)*

@@ -414,3 +414,30 @@ fn no_depends_table_when_every_row_names_every_coordinate() {
     let out = pretty(expand(TokenStream::new(), pendulum()));
     assert!(!out.contains("const DEPENDS"));
 }
+
+#[test]
+fn an_affine_declaration_prepares_its_mass_matrix_once() {
+    // A block on a wedge that slides on the floor: every row is a coordinate times a constant
+    // of the parameters, so J and M are constants, prepared when the handle is validated.
+    let out = snapshot(
+        "wedge_block",
+        quote! {
+            pub mod wedge_block {
+                pub struct Coords { pub x: f64, pub d: f64 }
+                pub struct WedgeBlock { pub big_m: f64, pub m: f64, pub alpha: f64, pub g: f64 }
+                #[particle(mass = big_m)]
+                fn wedge() -> Vec2 { vec2(x, 0.0) }
+                #[particle(mass = m)]
+                fn block() -> Vec2 { wedge + vec2(d * alpha.cos(), -d * alpha.sin()) }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+            }
+        },
+    );
+    assert!(out.contains("affine::AffineConstants<") && out.contains("AffineConstants::of::<"));
+    assert!(out.contains("fn accelerations_prepared_at"));
+    // A pendulum's rows are sines and cosines of its angle: nothing to prepare.
+    let pendulum = pretty(expand(TokenStream::new(), pendulum()));
+    assert!(pendulum.contains("type Prepared = ();"));
+    assert!(!pendulum.contains("fn accelerations_prepared_at"));
+}

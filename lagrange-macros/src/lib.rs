@@ -5,6 +5,7 @@
 //! (`expand`). On error (`expand::fallback`) the user's items are still emitted, with stubs for what the rest of their
 //! code names, so one mistake gives one message.
 
+mod affine;
 mod ast;
 mod attr;
 mod check;

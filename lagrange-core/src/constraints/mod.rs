@@ -129,7 +129,7 @@
 //! ```
 //! use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 //! use lagrange_core::dynamics::{self, EquationsOfMotion};
-//! use lagrange_core::mechanism::Dynamics;
+//! use lagrange_core::mechanism::{Dynamics, Prepare};
 //! use lagrange_core::{vec2, Mechanism, Model, Rk4, Scalar, State};
 //!
 //! struct Pendulum { m: f64, l: f64, g: f64 }
@@ -151,6 +151,12 @@
 //!     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
 //!         [vec2(x[0], x[1]).norm() - self.l]
 //!     }
+//! }
+//!
+//! // Nothing to prepare once from the parameters (see `Prepare`).
+//! impl Prepare for Pendulum {
+//!     type Prepared = ();
+//!     fn prepare(&self) -> lagrange_core::Result<()> { Ok(()) }
 //! }
 //!
 //! impl Dynamics<2> for Pendulum {

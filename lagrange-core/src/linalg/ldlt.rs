@@ -12,7 +12,7 @@ use nalgebra::{SMatrix, SVector};
 /// diagonal), stored with the reciprocals of D so a solve needs no division. Cheaper than Cholesky
 /// for the tiny systems of mechanisms: no square roots, N divisions in all (Golub & Van Loan,
 /// *Matrix Computations*, 4th ed., §4.1.2). This is the solve on the hot path of `accelerations`.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ldlt<S: Scalar, const N: usize, P = Dense> {
     /// Strictly lower part: L (the unit diagonal is implicit).
     lower: SMatrix<S, N, N>,
@@ -129,28 +129,44 @@ impl<S: Scalar, const N: usize, P: FactorPattern<N>> Ldlt<S, N, P> {
         })
     }
 
-    /// Solves M x = b.
+    /// Solves M x = b, for a right-hand side of the factors' scalar or, when the factors are
+    /// plain `f64` constants (a mass matrix factorised once), of any scalar.
     #[inline]
-    pub fn solve(&self, b: &SVector<S, N>) -> SVector<S, N> {
-        let (l, pattern) = (&self.lower, &self.pattern);
+    pub fn solve<T>(&self, b: &SVector<T, N>) -> SVector<T, N>
+    where
+        T: Scalar + std::ops::Mul<S, Output = T>,
+    {
+        self.solve_in(b, self.pattern)
+    }
+
+    /// [`solve`](Self::solve), skipping the entries of L that `pattern` rules out: for factors
+    /// stored once (dense) and solved with a pattern that is a constant where they are used.
+    /// The pattern must hold every nonzero of L (true of the pattern the matrix's structural zeros
+    /// imply, whose ruled-out entries a dense factorisation leaves exactly zero).
+    #[inline]
+    pub fn solve_in<T, Q: FactorPattern<N>>(&self, b: &SVector<T, N>, pattern: Q) -> SVector<T, N>
+    where
+        T: Scalar + std::ops::Mul<S, Output = T>,
+    {
+        let l = &self.lower;
         let mut x = *b;
         for i in 0..N {
             let mut s = x[i];
             for k in 0..i {
                 if pattern.may_be_nonzero(i, k) {
-                    s -= l[(i, k)] * x[k];
+                    s -= x[k] * l[(i, k)];
                 }
             }
             x[i] = s;
         }
         for i in 0..N {
-            x[i] *= self.inverse_pivots[i];
+            x[i] = x[i] * self.inverse_pivots[i];
         }
         for i in (0..N).rev() {
             let mut s = x[i];
             for k in (i + 1)..N {
                 if pattern.may_be_nonzero(k, i) {
-                    s -= l[(k, i)] * x[k];
+                    s -= x[k] * l[(k, i)];
                 }
             }
             x[i] = s;

@@ -59,6 +59,10 @@ pub(crate) fn fallback(
         quote! {
             #s
             #bodies
+            impl #p::Prepare for #ident {
+                type Prepared = ();
+                fn prepare(&self) -> #p::Result<()> { #unreachable }
+            }
             impl #p::Dynamics<#n> for #ident {
                 type Coords = Coords;
                 fn check_parameters(&self) -> #p::Result<()> { #unreachable }

@@ -12,8 +12,19 @@ pub(super) fn mechanism_impl(
     constrained: Option<usize>,
     tree: Option<(usize, usize)>,
     rheonomic: bool,
+    affine: bool,
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
+    let prepare = prepare_impl(params, &n, &k, affine);
+    // Through a validated handle, an affine mechanism's q̈ uses the constants prepared once.
+    let prepared_accelerations = affine.then(|| {
+        quote! {
+            #[inline]
+            fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+                #p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v)
+            }
+        }
+    });
     let scleronomic = !rheonomic;
     // A scleronomic mechanism's canonical field comes from one hyper-dual pass.
     let canonical = (!rheonomic).then(|| {
@@ -48,6 +59,7 @@ pub(super) fn mechanism_impl(
         None => quote!(#p::lagrange_core::constraints::ConstraintCounts::NONE),
     };
     quote! {
+        #prepare
         impl #p::Dynamics<#n> for #params {
             type Coords = Coords;
             const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
@@ -81,6 +93,38 @@ pub(super) fn mechanism_impl(
                 #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
             }
             #canonical
+            #prepared_accelerations
+        }
+    }
+}
+
+/// The `Prepare` impl: for a declaration whose positions are affine in the coordinates
+/// (`crate::affine`), J and the factors of the constant mass matrix; nothing otherwise.
+fn prepare_impl(
+    params: &Ident,
+    n: &proc_macro2::Literal,
+    k: &proc_macro2::Literal,
+    affine: bool,
+) -> TokenStream {
+    let p = private();
+    if affine {
+        quote! {
+            impl #p::Prepare for #params {
+                type Prepared = #p::lagrange_core::affine::AffineConstants<#n, #k>;
+                fn prepare(&self) -> #p::Result<Self::Prepared> {
+                    #p::lagrange_core::affine::AffineConstants::of::<Self>(self)
+                }
+            }
+        }
+    } else {
+        quote! {
+            impl #p::Prepare for #params {
+                type Prepared = ();
+                #[inline(always)]
+                fn prepare(&self) -> #p::Result<()> {
+                    #p::core::result::Result::Ok(())
+                }
+            }
         }
     }
 }

@@ -127,6 +127,8 @@ fn generate(model: &Model) -> TokenStream {
         constrained,
         tree.map(|tree| (tree.width, tree.bodies.len())),
         model.rheonomic,
+        // The constrained solve has its own path; affine constants serve the unconstrained one.
+        constrained.is_none() && crate::affine::is_affine(model),
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);

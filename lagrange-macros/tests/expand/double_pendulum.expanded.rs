@@ -364,6 +364,13 @@ pub mod double_pendulum {
             __m
         }
     }
+    impl ::lagrange::__private::Prepare for DoublePendulum {
+        type Prepared = ();
+        #[inline(always)]
+        fn prepare(&self) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+    }
     impl ::lagrange::__private::Dynamics<2> for DoublePendulum {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<

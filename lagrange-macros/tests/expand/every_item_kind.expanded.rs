@@ -482,6 +482,13 @@ pub mod everything {
             __weights
         }
     }
+    impl ::lagrange::__private::Prepare for Everything {
+        type Prepared = ();
+        #[inline(always)]
+        fn prepare(&self) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+    }
     impl ::lagrange::__private::Dynamics<2> for Everything {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<

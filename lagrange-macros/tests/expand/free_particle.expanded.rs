@@ -166,6 +166,17 @@ pub mod free {
             [__bodies.ball.x, __bodies.ball.y]
         }
     }
+    impl ::lagrange::__private::Prepare for Free {
+        type Prepared = ::lagrange::__private::lagrange_core::affine::AffineConstants<
+            2,
+            2,
+        >;
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::lagrange_core::affine::AffineConstants::of::<
+                Self,
+            >(self)
+        }
+    }
     impl ::lagrange::__private::Dynamics<2> for Free {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
@@ -255,6 +266,21 @@ pub mod free {
                 2,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            ::lagrange::__private::lagrange_core::affine::accelerations::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, prepared, t, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Free {

@@ -254,6 +254,13 @@ pub mod pendulum {
             __weights
         }
     }
+    impl ::lagrange::__private::Prepare for Pendulum {
+        type Prepared = ();
+        #[inline(always)]
+        fn prepare(&self) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+    }
     impl ::lagrange::__private::Dynamics<1> for Pendulum {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<

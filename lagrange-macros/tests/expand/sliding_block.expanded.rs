@@ -209,6 +209,13 @@ pub mod sliding_block {
             __weights
         }
     }
+    impl ::lagrange::__private::Prepare for SlidingBlock {
+        type Prepared = ();
+        #[inline(always)]
+        fn prepare(&self) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+    }
     impl ::lagrange::__private::Dynamics<2> for SlidingBlock {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<

@@ -219,6 +219,13 @@ pub mod varying {
             __potential
         }
     }
+    impl ::lagrange::__private::Prepare for Varying {
+        type Prepared = ();
+        #[inline(always)]
+        fn prepare(&self) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+    }
     impl ::lagrange::__private::Dynamics<1> for Varying {
         type Coords = Coords;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<

@@ -1,0 +1,154 @@
+//! Mechanisms whose positions are affine in the coordinates: x(q) = A q + c, with A and c
+//! functions of the parameters alone (a block sliding on a wedge, an Atwood machine, particles in
+//! Cartesian coordinates with springs between them).
+//!
+//! Then, in the notation of [`crate::dynamics`], J = A is constant, so is
+//! M = Aᵀ diag(μ) A, the velocity-product terms b = Aᵀ diag(μ) ẍ|_{q̈=0} vanish, and a uniform
+//! field's generalized force Aᵀ w is constant too. What is left of M q̈ = 𝓕 − b at a state is
+//!
+//! ```text
+//! q̈ = M⁻¹ (Aᵀ w − ∇V + Aᵀ F + Q),
+//! ```
+//!
+//! with M⁻¹ applied by its LDLᵀ factors. [`AffineConstants`] holds A, the factors and Aᵀ w,
+//! computed once when the mechanism is validated ([`crate::Validated`], through
+//! [`Prepare`](crate::mechanism::Prepare)); [`accelerations`] is an evaluation with them: x(q)
+//! in plain arithmetic when a potential or a force needs it, ∇V on gradient duals, no pass of
+//! second derivatives, no assembly and no factorisation. `#[mechanism]` decides affinity from the
+//! declaration's expressions, at compile time.
+
+use crate::dynamics::{
+    accumulate, add_row, assemble_mass_matrix, cartesian_with_jacobian, finite_accelerations,
+    gradient, mass_matrix_failure, potential_forces,
+};
+use crate::error::Result;
+use crate::geometry::Scalar;
+use crate::linalg::{factor_pattern, mass_pattern, Ldlt};
+use crate::model::Model;
+use nalgebra::SVector;
+
+/// The constants of an affine mechanism's equations of motion (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AffineConstants<const N: usize, const K: usize> {
+    /// Row i of A = J (`None` where row i of x is constant).
+    jacobian: [Option<SVector<f64, N>>; K],
+    /// M = Aᵀ diag(μ) A, factorised.
+    mass_matrix: Ldlt<f64, N>,
+    /// Aᵀ w, the generalized force of a uniform field (zero without one).
+    field_forces: SVector<f64, N>,
+}
+
+impl<const N: usize, const K: usize> AffineConstants<N, K> {
+    /// A, the factors of M and Aᵀ w of `model`, whose x must be affine in q and independent of t
+    /// (`#[mechanism]` decides it from the declaration; checked in debug builds).
+    ///
+    /// Fails with [`Error::SingularMassMatrix`](crate::Error::SingularMassMatrix) when the
+    /// constant mass matrix is not positive definite (a coordinate that moves no mass), naming
+    /// the configuration q = 0.
+    pub fn of<M: Model<N, K>>(model: &M) -> Result<Self> {
+        let jacobian = jacobian_at(model, &[0.0; N]);
+        debug_assert!(
+            jacobian == jacobian_at(model, &std::array::from_fn(|j| 0.5 + 0.25 * j as f64)),
+            "a mechanism prepared as affine has a Jacobian that changes with q"
+        );
+        let masses = model.masses();
+        let mass_matrix = assemble_mass_matrix::<M, f64, N, K>(&masses, &jacobian);
+        let factors = Ldlt::new(&mass_matrix).map_err(|e| {
+            mass_matrix_failure::<M::Coords, f64, N>(&mass_matrix, e, 0.0, &[0.0; N])
+        })?;
+        let mut field_forces = None;
+        if M::HAS_GRAVITY {
+            let weights = model.weights();
+            for (i, row) in jacobian.iter().enumerate() {
+                if let Some(row) = row {
+                    add_row::<M, f64, N, K>(&mut field_forces, i, row, weights[i]);
+                }
+            }
+        }
+        Ok(AffineConstants {
+            jacobian,
+            mass_matrix: factors,
+            field_forces: field_forces.unwrap_or_else(SVector::zeros),
+        })
+    }
+}
+
+/// J at (t = 0, q) by one gradient pass; `None` for the rows that do not depend on q.
+fn jacobian_at<M: Model<N, K>, const N: usize, const K: usize>(
+    model: &M,
+    q: &[f64; N],
+) -> [Option<SVector<f64, N>>; K] {
+    let (x, _, _) = cartesian_with_jacobian(model, 0.0, q);
+    std::array::from_fn(|i| x[i].eps.0.map(|_| gradient(&x[i])))
+}
+
+/// q̈ of an affine mechanism at (t, q, q̇) from its prepared constants, for any scalar (see the
+/// [module docs](self)).
+///
+/// ```
+/// use lagrange_core::{affine, impl_mechanism, Mechanism, Model, Scalar, State};
+///
+/// /// A unit mass on a spring of stiffness 4 along a line, written by hand: x = q.
+/// struct Spring;
+/// impl Model<1, 1> for Spring {
+///     type Coords = [f64; 1];
+///     const RHEONOMIC: bool = false;
+///     const HAS_POTENTIAL: bool = true;
+///     const HAS_FORCES: bool = false;
+///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+///     fn masses(&self) -> [f64; 1] { [1.0] }
+///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] { [q[0]] }
+///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D { x[0] * x[0] * 2.0 }
+/// }
+/// impl_mechanism!(Spring, 1, 1, affine);
+///
+/// let constants = affine::AffineConstants::of(&Spring)?;
+/// let a = affine::accelerations(&Spring, &constants, 0.0, &[0.5], &[0.0])?;
+/// assert_eq!(a, [-2.0]);
+/// // The validated handle evaluates the same way, with the constants it prepared.
+/// let sys = Spring.validated()?;
+/// assert_eq!(sys.accelerations(&State::at_rest([0.5]))?, [-2.0]);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+#[inline]
+pub fn accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    constants: &AffineConstants<N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Result<[S; N]> {
+    let mut forces: Option<SVector<S, N>> = None;
+    if M::HAS_GRAVITY {
+        forces = Some(constants.field_forces.map(S::from));
+    }
+    if M::HAS_POTENTIAL || M::HAS_FORCES {
+        let rows: [Option<SVector<S, N>>; K] =
+            std::array::from_fn(|i| constants.jacobian[i].map(|row| row.map(S::from)));
+        let x = model.cartesian(t, q);
+        if let Some(gradient_forces) = potential_forces(model, t, q, &x, &rows) {
+            accumulate(&mut forces, gradient_forces);
+        }
+        if M::HAS_FORCES {
+            // ẋ = A q̇; then 𝓕 += Aᵀ F + Q by virtual work.
+            let velocity = SVector::from(*v);
+            let x_dot: [S; K] =
+                std::array::from_fn(|i| rows[i].map_or(S::zero(), |row| row.dot(&velocity)));
+            let mut cartesian_force = [S::zero(); K];
+            let mut direct = [S::zero(); N];
+            model.applied_forces(t, q, v, &x, &x_dot, &mut cartesian_force, &mut direct);
+            for (i, row) in rows.iter().enumerate() {
+                if let Some(row) = row {
+                    add_row::<M, S, N, K>(&mut forces, i, row, cartesian_force[i]);
+                }
+            }
+            accumulate(&mut forces, SVector::from(direct));
+        }
+    }
+    // The couplings M has by the declaration (none between the coordinates of separate particles).
+    let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
+    let qdd = constants
+        .mass_matrix
+        .solve_in(&forces.unwrap_or_else(SVector::zeros), pattern);
+    finite_accelerations::<M::Coords, S, N>(qdd, t, q)
+}

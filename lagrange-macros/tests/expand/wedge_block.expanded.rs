@@ -1,0 +1,550 @@
+pub mod wedge_block {
+    pub struct WedgeBlock {
+        pub big_m: f64,
+        pub m: f64,
+        pub alpha: f64,
+        pub g: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq,
+        ::lagrange::__private::core::default::Default
+    )]
+    pub struct Coords<T = f64> {
+        pub x: T,
+        pub d: T,
+    }
+    impl ::lagrange::__private::Coordinates<2> for Coords<f64> {
+        const NAMES: [&'static str; 2] = ["x", "d"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 2] {
+            [self.x, self.d]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 2]) -> Self {
+            Coords {
+                x: values[0],
+                d: values[1],
+            }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 2;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's centre of mass and orientation.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub wedge: ::lagrange::__private::geometry::Vec2<T>,
+        pub block: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub wedge: ::lagrange::__private::geometry::Vec2<T>,
+        pub block: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    impl WedgeBlock {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.v);
+            let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                2,
+                4,
+            >(self, state.t, &q, &v);
+            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [x, d] = *__q;
+            let alpha = <__D>::from(self.alpha);
+            let __param_0: __D = <__D>::from({
+                let alpha: f64 = self.alpha;
+                alpha.cos()
+            });
+            let __param_1: __D = <__D>::from({
+                let alpha: f64 = self.alpha;
+                alpha.sin()
+            });
+            let wedge: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(x, <__D>::from(0.0))
+            };
+            let block: ::lagrange::__private::geometry::Vec2<__D> = {
+                wedge + vec2(d * __param_0, -d * __param_1)
+            };
+            Bodies { wedge, block }
+        }
+        #[inline(always)]
+        #[allow(unused_variables)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x: &[__D; 4],
+            __x_dot: &[__D; 4],
+        ) -> BodyVelocities<__D> {
+            BodyVelocities {
+                wedge: ::lagrange::__private::geometry::vec2(__x_dot[0], __x_dot[1]),
+                block: ::lagrange::__private::geometry::vec2(__x_dot[2], __x_dot[3]),
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<2, 4> for WedgeBlock {
+        type Coords = Coords;
+        const INERTIAL: usize = 4;
+        const RHEONOMIC: bool = false;
+        const HAS_POTENTIAL: bool = false;
+        const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 4] = [
+            [true, false],
+            [false, false],
+            [true, true],
+            [true, true],
+        ];
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let big_m: f64 = self.big_m;
+                let m: f64 = self.m;
+                let alpha: f64 = self.alpha;
+                let g: f64 = self.g;
+                let __mass_wedge: f64 = big_m;
+                let __mass_block: f64 = m;
+                if ((0.0 + self.big_m * 0.0 + self.m * 0.0 + self.alpha * 0.0
+                    + self.g * 0.0 + __mass_wedge * 0.0 + __mass_block * 0.0) == 0.0)
+                    & (__mass_wedge > 0.0) & (__mass_block > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
+            if !self.big_m.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "big_m",
+                    value: self.big_m,
+                });
+            }
+            if !self.m.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m",
+                    value: self.m,
+                });
+            }
+            if !self.alpha.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "alpha",
+                    value: self.alpha,
+                });
+            }
+            if !self.g.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "g",
+                    value: self.g,
+                });
+            }
+            let big_m: f64 = self.big_m;
+            let m: f64 = self.m;
+            let alpha: f64 = self.alpha;
+            let g: f64 = self.g;
+            let __mass_wedge: f64 = big_m;
+            let __mass_block: f64 = m;
+            if !(__mass_wedge.is_finite() && __mass_wedge > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "wedge",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_wedge
+                    ),
+                });
+            }
+            if !(__mass_block.is_finite() && __mass_block > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "block",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_block
+                    ),
+                });
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 4] {
+            let big_m: f64 = self.big_m;
+            let m: f64 = self.m;
+            let alpha: f64 = self.alpha;
+            let g: f64 = self.g;
+            let __mass_wedge: f64 = big_m;
+            let __mass_block: f64 = m;
+            [__mass_wedge, __mass_wedge, __mass_block, __mass_block]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> [__D; 4] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [__bodies.wedge.x, __bodies.wedge.y, __bodies.block.x, __bodies.block.y]
+        }
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; 4] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<2, 4>>::masses(self);
+            let mut __weights = [0.0; 4];
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<f64> = {
+                vec2(0.0, -g)
+            };
+            __weights[0] += __gravity_down.x * __masses[0];
+            __weights[1] += __gravity_down.y * __masses[1];
+            __weights[2] += __gravity_down.x * __masses[2];
+            __weights[3] += __gravity_down.y * __masses[3];
+            __weights
+        }
+    }
+    impl WedgeBlock {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_wedge<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            x: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            { vec2(x, <__D>::from(0.0)) }
+        }
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_displacement_block<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            d: __D,
+        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let alpha = <__D>::from(self.alpha);
+            let __param_0: __D = <__D>::from({
+                let alpha: f64 = self.alpha;
+                alpha.cos()
+            });
+            let __param_1: __D = <__D>::from({
+                let alpha: f64 = self.alpha;
+                alpha.sin()
+            });
+            { vec2(d * __param_0, -d * __param_1) }
+        }
+    }
+    impl ::lagrange::__private::tree::Tree<2, 4, 1, 2> for WedgeBlock {
+        const BODIES: [::lagrange::__private::tree::Body<1>; 2] = [
+            ::lagrange::__private::tree::Body {
+                row: 0,
+                dim: 2,
+                parent: ::lagrange::__private::core::option::Option::None,
+                seeds: [::lagrange::__private::tree::Seed::Coordinate(0)],
+            },
+            ::lagrange::__private::tree::Body {
+                row: 2,
+                dim: 2,
+                parent: ::lagrange::__private::core::option::Option::Some(0),
+                seeds: [::lagrange::__private::tree::Seed::Coordinate(1)],
+            },
+        ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn displacements<S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+        ) -> [::lagrange::__private::tree::Seeded<S, 1>; 4] {
+            let __body_0 = self
+                .__lagrange_displacement_wedge(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
+                );
+            let __body_1 = self
+                .__lagrange_displacement_block(
+                    ::lagrange::__private::tree::time(
+                        __t,
+                        ::lagrange::__private::core::option::Option::None,
+                    ),
+                    ::lagrange::__private::tree::seed(__q[1], __v[1], 0),
+                );
+            [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
+        }
+        #[inline(always)]
+        fn mass_matrix<S: ::lagrange::__private::Scalar>(
+            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 2>,
+            __composite: &[f64; 2],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 2, 2>::zeros();
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 0, 0);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 1);
+            ::lagrange::__private::tree::couple::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(&mut __m, __jacobian, __composite, 1, 0);
+            __m
+        }
+    }
+    impl ::lagrange::__private::Prepare for WedgeBlock {
+        type Prepared = ::lagrange::__private::lagrange_core::affine::AffineConstants<
+            2,
+            4,
+        >;
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::lagrange_core::affine::AffineConstants::of::<
+                Self,
+            >(self)
+        }
+    }
+    impl ::lagrange::__private::Dynamics<2> for WedgeBlock {
+        type Coords = Coords;
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
+        );
+        const SCLERONOMIC: bool = true;
+        #[inline]
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            ::lagrange::__private::tree::equations_of_motion::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                2,
+                4,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                2,
+                4,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 4>(self, t, q, v)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                2,
+                4,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                4,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            ::lagrange::__private::lagrange_core::affine::accelerations::<
+                Self,
+                S,
+                2,
+                4,
+            >(self, prepared, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for WedgeBlock {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["big_m", "m", "alpha", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(WedgeBlock {
+                big_m: values[0],
+                m: values[1],
+                alpha: values[2],
+                g: values[3],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.big_m, self.m, self.alpha, self.g]
+        }
+    }
+    impl WedgeBlock {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 4], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [x, d] = *__q;
+            let alpha: __D = ::lagrange::__private::parameters::lift::<
+                __S,
+                __D,
+            >(&__p[2]);
+            let wedge: ::lagrange::__private::geometry::Vec2<__D> = {
+                vec2(x, <__D>::from(0.0))
+            };
+            let block: ::lagrange::__private::geometry::Vec2<__D> = {
+                wedge + vec2(d * alpha.cos(), -d * alpha.sin())
+            };
+            Bodies { wedge, block }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 4, 4> for WedgeBlock {
+        const PARAMETER_NAMES: [&'static str; 4] = ["big_m", "m", "alpha", "g"];
+        const SEEDABLE: [bool; 4] = [false, false, true, false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 4] {
+            [self.big_m, self.m, self.alpha, self.g]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 4], __t: __D, __q: &[__D; 2]) -> [__D; 4] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.wedge.x, __bodies.wedge.y, __bodies.block.x, __bodies.block.y]
+        }
+    }
+}
