@@ -246,7 +246,10 @@ pub(crate) fn add_row<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>
 
 /// `sum += term`, where an absent sum is an exact zero (so the first term is not added to zeros).
 #[inline(always)]
-pub(crate) fn accumulate<S: Scalar, const N: usize>(sum: &mut Option<SVector<S, N>>, term: SVector<S, N>) {
+pub(crate) fn accumulate<S: Scalar, const N: usize>(
+    sum: &mut Option<SVector<S, N>>,
+    term: SVector<S, N>,
+) {
     match sum {
         Some(s) => *s += term,
         None => *sum = Some(term),

@@ -82,7 +82,9 @@ fn block_degree(block: &Block, scope: &mut HashMap<String, Degree>) -> Degree {
                 };
                 scope.insert(pat.ident.to_string(), degree);
             }
-            Stmt::Expr(expr, None) if k + 1 == block.stmts.len() => value = expr_degree(expr, scope),
+            Stmt::Expr(expr, None) if k + 1 == block.stmts.len() => {
+                value = expr_degree(expr, scope)
+            }
             _ => return Other,
         }
     }
@@ -206,10 +208,16 @@ mod tests {
             degree("{ vec2(x + d * alpha.cos(), h - d * alpha.sin()) }", &c, &p),
             Affine
         );
-        assert_eq!(degree("{ let s = alpha.sin(); vec2(x, -d / s) * 2.0 }", &c, &p), Affine);
+        assert_eq!(
+            degree("{ let s = alpha.sin(); vec2(x, -d / s) * 2.0 }", &c, &p),
+            Affine
+        );
         assert_eq!(degree("{ vec2(h, alpha) }", &c, &p), Constant);
         assert_eq!(degree("{ planar(vec2(x, 0.0), d) }", &c, &p), Affine);
-        assert_eq!(degree("{ vec2(std::f64::consts::PI * x, -x) }", &c, &p), Affine);
+        assert_eq!(
+            degree("{ vec2(std::f64::consts::PI * x, -x) }", &c, &p),
+            Affine
+        );
     }
 
     #[test]
@@ -223,8 +231,18 @@ mod tests {
         assert_eq!(degree("{ let y = x; vec2(y * y, 0.0) }", &c, &p), Other);
         // Time, closures, macros and conditions on coordinates are not read as affine.
         assert_eq!(degree("{ vec2(x + t, 0.0) }", &c, &p), Other);
-        assert_eq!(degree("{ let f = |s: f64| s; vec2(f(x), 0.0) }", &c, &p), Other);
-        assert_eq!(degree("{ if x > 0.0 { vec2(x, 0.0) } else { vec2(-x, 0.0) } }", &c, &p), Other);
+        assert_eq!(
+            degree("{ let f = |s: f64| s; vec2(f(x), 0.0) }", &c, &p),
+            Other
+        );
+        assert_eq!(
+            degree(
+                "{ if x > 0.0 { vec2(x, 0.0) } else { vec2(-x, 0.0) } }",
+                &c,
+                &p
+            ),
+            Other
+        );
         assert_eq!(degree("{ vec2(x.abs(), 0.0) }", &c, &p), Other);
         assert_eq!(degree("{ vec2(x as f64, 0.0) }", &c, &p), Other);
     }
@@ -238,9 +256,10 @@ mod tests {
         scope.insert("l".into(), Constant);
         scope.insert("i".into(), Constant);
         scope.insert("bead".into(), Affine);
-        let block: Block =
-            syn::parse_str("{ if i == 0 { vec2(q[i], 0.0) } else { bead[i - 1] + vec2(q[i] * l, 0.0) } }")
-                .unwrap();
+        let block: Block = syn::parse_str(
+            "{ if i == 0 { vec2(q[i], 0.0) } else { bead[i - 1] + vec2(q[i] * l, 0.0) } }",
+        )
+        .unwrap();
         assert_eq!(block_degree(&block, &mut scope), Affine);
         // An index that is a coordinate is not a constant index.
         assert_eq!(degree("{ vec2(q[q[0] as usize], 0.0) }", &c, &p), Other);
