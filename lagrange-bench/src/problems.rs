@@ -102,7 +102,8 @@ impl Model<2, 2> for Kepler {
         -(x[0] * x[0] + x[1] * x[1]).sqrt().recip()
     }
 }
-lagrange_core::impl_mechanism!(Kepler, 2, 2);
+// x is affine in q: its validated handle prepares J and the factors of M once.
+lagrange_core::impl_mechanism!(Kepler, 2, 2, affine);
 
 pub const KEPLER_E: f64 = 0.6;
 
@@ -215,7 +216,8 @@ impl Model<6, 6> for Fpu {
         v
     }
 }
-lagrange_core::impl_mechanism!(Fpu, 6, 6);
+// x is affine in q: its validated handle prepares J and the factors of M once.
+lagrange_core::impl_mechanism!(Fpu, 6, 6, affine);
 
 /// HLW's initial values x₀,₁ = 1, ẋ₀,₁ = 1, x₁,₁ = ω⁻¹, ẋ₁,₁ = 1 (centre and elongation of the first
 /// stiff spring, x₀ = (q₂ + q₁)/√2, x₁ = (q₂ − q₁)/√2 in their 1-based numbering), all else zero.
@@ -287,7 +289,8 @@ impl Model<2, 4> for WedgeBlock {
         x[3] * (BLOCK_MASS * WEDGE_G)
     }
 }
-lagrange_core::impl_mechanism!(WedgeBlock, 2, 4);
+// x is affine in q: its validated handle prepares J and the factors of M once.
+lagrange_core::impl_mechanism!(WedgeBlock, 2, 4, affine);
 
 /// The constant accelerations (ẍ, d̈): [[M + m, m cos α], [m cos α, m]] q̈ = (0, m g sin α).
 pub fn wedge_accelerations() -> [f64; 2] {

@@ -90,6 +90,54 @@ pub mod wedge_block {
     }
 }
 
+/// The Fermi–Pasta–Ulam chain of the work-precision report (Hairer, Lubich & Wanner, *Geometric
+/// Numerical Integration*, §I.5.1): six unit masses between walls, joined alternately by stiff
+/// linear springs (energy ω²/4 Δ²) and soft cubic ones (energy Δ⁴).
+#[mechanism]
+pub mod fpu {
+    pub const MASSES: usize = 6;
+    pub struct Coords {
+        pub q: [f64; MASSES],
+    }
+    pub struct Fpu {
+        pub m: f64,
+        pub omega: f64,
+    }
+    #[particle(mass = m, count = MASSES)]
+    fn mass(i: usize) -> Vec2 {
+        vec2(q[i], 0.0)
+    }
+    #[potential]
+    fn springs() -> f64 {
+        let (s1, s2, s3) = (q[1] - q[0], q[3] - q[2], q[5] - q[4]);
+        let (w1, w2) = (q[2] - q[1], q[4] - q[3]);
+        omega * omega / 4.0 * (s1 * s1 + s2 * s2 + s3 * s3)
+            + q[0].powi(4)
+            + w1.powi(4)
+            + w2.powi(4)
+            + q[5].powi(4)
+    }
+}
+
+/// The FPU chain's accelerations written by hand (unit masses).
+fn hw_fpu(omega: f64, q: &[f64; 6]) -> [f64; 6] {
+    let w2 = omega * omega;
+    let mut f = [0.0; 6];
+    for i in 0..3 {
+        let d = q[2 * i + 1] - q[2 * i];
+        f[2 * i] += 0.5 * w2 * d;
+        f[2 * i + 1] -= 0.5 * w2 * d;
+    }
+    f[0] -= 4.0 * q[0].powi(3);
+    for (a, b) in [(1, 2), (3, 4)] {
+        let d = q[b] - q[a];
+        f[a] += 4.0 * d.powi(3);
+        f[b] -= 4.0 * d.powi(3);
+    }
+    f[5] -= 4.0 * q[5].powi(3);
+    f
+}
+
 #[mechanism]
 pub mod cart_pendulum {
     pub struct Coords {
@@ -601,6 +649,21 @@ fn main() {
             let (q, v) = (s.q.to_array(), s.v.to_array());
             for _ in 0..n {
                 acc += constrained::four_bar(black_box(&hand), black_box(q), black_box(v))[0];
+            }
+        }
+        "fpu" => {
+            let sys = fpu::Fpu { m: 1.0, omega: 50.0 };
+            let s = State::new(
+                0.0,
+                fpu::Coords { q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1] },
+                fpu::Coords { q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2] },
+            );
+            acc += calls(sys, &s, n, validated);
+        }
+        "hw_fpu" => {
+            let q = [0.1, 0.2, -0.3, 0.05, 0.4, -0.1];
+            for _ in 0..n {
+                acc += hw_fpu(black_box(50.0), black_box(&q)).iter().sum::<f64>();
             }
         }
         "hw_cartesian_pendulum" => {
