@@ -30,8 +30,8 @@ use nalgebra::SVector;
 /// The constants of an affine mechanism's equations of motion (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AffineConstants<const N: usize, const K: usize> {
-    /// Row i of A = J (`None` where row i of x is constant).
-    jacobian: [Option<SVector<f64, N>>; K],
+    /// Row i of A = J (zero where row i of x is constant).
+    jacobian: [SVector<f64, N>; K],
     /// M = Aᵀ diag(μ) A, factorised.
     mass_matrix: Ldlt<f64, N>,
     /// Aᵀ w, the generalized force of a uniform field (zero without one).
@@ -46,31 +46,46 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
     /// constant mass matrix is not positive definite (a coordinate that moves no mass), naming
     /// the configuration q = 0.
     pub fn of<M: Model<N, K>>(model: &M) -> Result<Self> {
-        let jacobian = jacobian_at(model, &[0.0; N]);
+        let rows = jacobian_at(model, &[0.0; N]);
         debug_assert!(
-            jacobian == jacobian_at(model, &std::array::from_fn(|j| 0.5 + 0.25 * j as f64)),
+            rows == jacobian_at(model, &std::array::from_fn(|j| 0.5 + 0.25 * j as f64)),
             "a mechanism prepared as affine has a Jacobian that changes with q"
         );
         let masses = model.masses();
-        let mass_matrix = assemble_mass_matrix::<M, f64, N, K>(&masses, &jacobian);
+        let mass_matrix = assemble_mass_matrix::<M, f64, N, K>(&masses, &rows);
         let factors = Ldlt::new(&mass_matrix).map_err(|e| {
             mass_matrix_failure::<M::Coords, f64, N>(&mass_matrix, e, 0.0, &[0.0; N])
         })?;
         let mut field_forces = None;
         if M::HAS_GRAVITY {
             let weights = model.weights();
-            for (i, row) in jacobian.iter().enumerate() {
+            for (i, row) in rows.iter().enumerate() {
                 if let Some(row) = row {
                     add_row::<M, f64, N, K>(&mut field_forces, i, row, weights[i]);
                 }
             }
         }
         Ok(AffineConstants {
-            jacobian,
+            jacobian: rows.map(|row| row.unwrap_or_else(SVector::zeros)),
             mass_matrix: factors,
             field_forces: field_forces.unwrap_or_else(SVector::zeros),
         })
     }
+}
+
+/// Whether row i of x may depend on q at all, by the declaration.
+const fn moving_rows<const N: usize, const K: usize>(depends: &[[bool; N]; K]) -> [bool; K] {
+    let mut moving = [false; K];
+    let mut i = 0;
+    while i < K {
+        let mut j = 0;
+        while j < N {
+            moving[i] |= depends[i][j];
+            j += 1;
+        }
+        i += 1;
+    }
+    moving
 }
 
 /// J at (t = 0, q) by one gradient pass; `None` for the rows that do not depend on q.
@@ -123,8 +138,11 @@ pub fn accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
         forces = Some(constants.field_forces.map(S::from));
     }
     if M::HAS_POTENTIAL || M::HAS_FORCES {
+        // Which rows move is a constant of the declaration, so the compiler knows every row's
+        // presence (stored `Option`s would be branched on in every dual operation).
+        let moving = const { moving_rows(&M::DEPENDS) };
         let rows: [Option<SVector<S, N>>; K] =
-            std::array::from_fn(|i| constants.jacobian[i].map(|row| row.map(S::from)));
+            std::array::from_fn(|i| moving[i].then(|| constants.jacobian[i].map(S::from)));
         let x = model.cartesian(t, q);
         if let Some(gradient_forces) = potential_forces(model, t, q, &x, &rows) {
             accumulate(&mut forces, gradient_forces);
