@@ -13,7 +13,7 @@ use crate::parameters::Parametrized;
 /// every call through the handle skips that check and validates only its state.
 ///
 /// What the parameters alone decide is computed once, when the handle is made
-/// ([`Prepare`](crate::mechanism::Prepare)): for a mechanism whose positions are affine in the
+/// ([`crate::mechanism::Prepare`]): for a mechanism whose positions are affine in the
 /// coordinates (a block on a wedge, particles in Cartesian coordinates, see [`crate::affine`]) the
 /// Jacobian and the factorisation of the constant mass matrix, so an evaluation of q̈ forms
 /// neither; its results agree with the mechanism's own to round-off. For any other mechanism
