@@ -5,129 +5,158 @@ use super::signatures::{expect_return_type, vector_dim};
 use crate::ast::Decl;
 use crate::attr::Kind;
 use crate::ctxt::Ctxt;
+use syn::Ident;
 
-/// The body or coordinate a force acts on, checked against its kind and return type.
-pub(super) fn check_force_target<'a>(
-    cx: &Ctxt,
-    model: &Model<'a>,
-    decl: &'a Decl,
-) -> Option<Force<'a>> {
-    let kind = decl.kind();
-    let dim = match kind {
-        // `#[force(on = bob)] fn push() -> f64`: a Cartesian force is a vector.
+/// A force, torque or generalized force, checked against its return type and its target. Returns
+/// the force to record when its target is known.
+pub(super) fn check_force<'a>(cx: &Ctxt, model: &Model<'a>, decl: &'a Decl) -> Option<Force<'a>> {
+    let dim = check_force_return_type(cx, decl);
+    let on = check_names_a_target(cx, decl)?;
+    let target = check_target(cx, model, decl, on)?;
+    match decl.kind() {
+        Kind::Torque => check_torque_on_rigid_body(cx, model.bodies[target].shape, decl, on),
+        Kind::Force => check_force_dimension(cx, model.bodies[target].shape.dim(), decl, on, dim),
+        _ => {}
+    }
+    let count = family_count(cx, model.mechanism, decl);
+    if decl.kind() != Kind::GeneralizedForce {
+        check_families_match(cx, model.bodies[target].count, count, decl, on);
+    }
+    Some(Force {
+        decl,
+        target,
+        kind: decl.kind(),
+        count,
+    })
+}
+
+/// A Cartesian force is a vector (`#[force(on = bob)] fn push() -> f64` is not one), a generalized
+/// force a scalar. Returns a force's dimension. (A torque's type depends on its body: checked with
+/// the body.)
+fn check_force_return_type(cx: &Ctxt, decl: &Decl) -> Option<Dim> {
+    match decl.kind() {
         Kind::Force => Some(vector_dim(expect_return_type(
             cx,
             decl,
             &["Vec2", "Vec3"],
             "the force vector",
         ))),
-        // `#[torque(on = bar)] fn motor() -> Vec2`: a planar torque is a scalar, a spatial one a
-        // vector; which one the body decides, below.
         Kind::Torque => None,
         _ => expect_return_type(cx, decl, &["f64"], "its magnitude").map(|_| Dim::Two),
-    };
-    // `#[force] fn drag() -> Vec2`: what does it act on?
-    let Some(on) = decl.args.on.as_ref().filter(|_| !decl.args.malformed) else {
-        if decl.args.malformed {
-            return None;
-        }
+    }
+}
+
+/// A force acts on something: `#[force] fn drag() -> Vec2` names no target. Returns the target's
+/// name. (Malformed arguments were reported while parsing.)
+fn check_names_a_target<'d>(cx: &Ctxt, decl: &'d Decl) -> Option<&'d Ident> {
+    if decl.args.malformed {
+        return None;
+    }
+    let on = decl.args.on.as_ref();
+    if on.is_none() {
         cx.error_spanned_by(
             &decl.args.attr,
-            format!("missing `on = ...`: `#[{}(on = name)]`", kind.name()),
+            format!("missing `on = ...`: `#[{}(on = name)]`", decl.kind().name()),
         );
-        return None;
-    };
-    let target = match kind {
-        Kind::GeneralizedForce => {
-            let field = model.coords.iter().position(|c| c.ident == *on);
-            // `#[generalized_force(on = theta)]` with `theta: [f64; N]`: one element is meant.
-            if let Some(f) = field.filter(|&f| model.coords[f].array.is_some()) {
-                cx.error_spanned_by(
-                    on,
-                    format!("`{on}` is an array of coordinates: a generalized force acts on a scalar coordinate"),
-                );
-                let _ = f;
-                return None;
-            }
-            field.map(|f| crate::ast::slot_count(&model.coords[..f]))
+    }
+    on
+}
+
+/// The target exists: a body or point of the mechanism, or for a generalized force a scalar
+/// coordinate (an array's elements are not named one by one). Returns the body's index, or the
+/// coordinate's slot.
+fn check_target(cx: &Ctxt, model: &Model, decl: &Decl, on: &Ident) -> Option<usize> {
+    let generalized = decl.kind() == Kind::GeneralizedForce;
+    let target = if generalized {
+        let field = model.coords.iter().position(|c| c.ident == *on);
+        // `#[generalized_force(on = theta)]` with `theta: [f64; N]`: one element is meant.
+        if field.is_some_and(|f| model.coords[f].array.is_some()) {
+            cx.error_spanned_by(
+                on,
+                format!("`{on}` is an array of coordinates: a generalized force acts on a scalar coordinate"),
+            );
+            return None;
         }
-        _ => model.bodies.iter().position(|b| b.decl.ident() == on),
+        field.map(|f| crate::ast::slot_count(&model.coords[..f]))
+    } else {
+        model.bodies.iter().position(|b| b.decl.ident() == on)
     };
-    let Some(target) = target else {
+    if target.is_none() {
         // `#[force(on = bobb)]`: a typo in the target.
-        let what = if kind == Kind::GeneralizedForce {
+        let what = if generalized {
             "coordinate"
         } else {
             "body or point"
         };
         cx.error_spanned_by(on, format!("`{on}` is not a {what} of this mechanism"));
-        return None;
+    }
+    target
+}
+
+/// A torque twists an orientation, so it acts on a rigid body: a scalar about the plane's normal
+/// on a `Planar` body, a vector on a `Spatial` one.
+fn check_torque_on_rigid_body(cx: &Ctxt, shape: Shape, decl: &Decl, on: &Ident) {
+    match shape {
+        // `#[torque(on = bar)] fn motor() -> Vec2` on a planar body.
+        Shape::Planar => {
+            expect_return_type(cx, decl, &["f64"], "its magnitude about the plane's normal");
+        }
+        // `#[torque(on = top)] fn drive() -> f64` on a spatial body.
+        Shape::Spatial => {
+            expect_return_type(cx, decl, &["Vec3"], "the torque vector, in the world frame");
+        }
+        // `#[torque(on = bob)]` on a particle: it has no orientation to twist.
+        _ => cx.error_spanned_by(
+            on,
+            format!("`{on}` is not a rigid body: a torque acts on a `Planar` or `Spatial` body"),
+        ),
+    }
+}
+
+/// A force has the dimension of the body it pushes: `#[force(on = bob3d)] fn push() -> Vec2` is
+/// not a force in space.
+fn check_force_dimension(cx: &Ctxt, body: Dim, decl: &Decl, on: &Ident, force: Option<Dim>) {
+    if force == Some(body) {
+        return;
+    }
+    let (want, moves) = match body {
+        Dim::Two => ("Vec2", "the plane"),
+        Dim::Three => ("Vec3", "space"),
     };
-    if kind == Kind::Torque {
-        match model.bodies[target].shape {
-            // `#[torque(on = bar)] fn motor() -> Vec2` on a planar body: the torque about the plane's
-            // normal is a scalar.
-            Shape::Planar => {
-                expect_return_type(cx, decl, &["f64"], "its magnitude about the plane's normal");
-            }
-            // `#[torque(on = top)] fn drive() -> f64` on a spatial body: the torque is a vector.
-            Shape::Spatial => {
-                expect_return_type(cx, decl, &["Vec3"], "the torque vector, in the world frame");
-            }
-            // `#[torque(on = bob)]` on a particle: only a rigid body has an orientation to twist.
-            _ => cx.error_spanned_by(
-                on,
-                format!(
-                    "`{on}` is not a rigid body: a torque acts on a `Planar` or `Spatial` body"
-                ),
-            ),
-        }
+    cx.error_spanned_by(
+        decl.output(),
+        format!("`{on}` moves in {moves}: the force on it is a `{want}`"),
+    );
+}
+
+/// A family of forces acts on a family of bodies of the same length, one force per member; a
+/// force on a family is a family too; torques on families are not supported.
+fn check_families_match(
+    cx: &Ctxt,
+    members: Option<usize>,
+    count: Option<usize>,
+    decl: &Decl,
+    on: &Ident,
+) {
+    let kind = decl.kind();
+    match (members, count) {
+        // `#[force(on = bob, count = 4)]` on a family of 8.
+        (Some(n), Some(m)) if n != m => cx.error_spanned_by(
+            decl.args.count.as_ref(),
+            format!("mismatched family length: `{on}` has {n} members, this family of forces has {m}"),
+        ),
+        (Some(n), None) if kind == Kind::Force && !decl.args.malformed => cx.error_spanned_by(
+            on,
+            format!("`{on}` is a family of {n}: the force on it is a family too, `#[force(on = {on}, count = {n})] fn {}(i: usize)`", decl.ident()),
+        ),
+        (Some(_), _) if kind == Kind::Torque => cx.error_spanned_by(
+            on,
+            format!("`{on}` is a family: torques on families are not supported"),
+        ),
+        (None, Some(_)) => cx.error_spanned_by(
+            decl.args.count.as_ref(),
+            format!("`{on}` is a single body: a family of forces acts on a family of bodies"),
+        ),
+        _ => {}
     }
-    if kind == Kind::Force && dim != Some(model.bodies[target].shape.dim()) {
-        // `#[force(on = bob3d)] fn push() -> Vec2`: the force has the dimension of its body.
-        let want = if model.bodies[target].shape.dim() == Dim::Two {
-            "Vec2"
-        } else {
-            "Vec3"
-        };
-        cx.error_spanned_by(
-            decl.output(),
-            format!(
-                "`{on}` moves in {}: the force on it is a `{want}`",
-                if want == "Vec2" { "the plane" } else { "space" }
-            ),
-        );
-    }
-    let count = family_count(cx, model.mechanism, decl);
-    if kind != Kind::GeneralizedForce {
-        let members = model.bodies[target].count;
-        match (members, count) {
-            (Some(n), Some(m)) if n != m => {
-                // `#[force(on = bob, count = 4)]` on a family of 8: one force per member.
-                cx.error_spanned_by(
-                    decl.args.count.as_ref(),
-                    format!("mismatched family length: `{on}` has {n} members, this family of forces has {m}"),
-                );
-            }
-            (Some(n), None) if kind == Kind::Force && !decl.args.malformed => cx.error_spanned_by(
-                on,
-                format!("`{on}` is a family of {n}: the force on it is a family too, `#[force(on = {on}, count = {n})] fn {}(i: usize)`", decl.ident()),
-            ),
-            (Some(_), _) if kind == Kind::Torque => cx.error_spanned_by(
-                on,
-                format!("`{on}` is a family: torques on families are not supported"),
-            ),
-            (None, Some(_)) => cx.error_spanned_by(
-                decl.args.count.as_ref(),
-                format!("`{on}` is a single body: a family of forces acts on a family of bodies"),
-            ),
-            _ => {}
-        }
-    }
-    Some(Force {
-        decl,
-        target,
-        kind,
-        count,
-    })
 }

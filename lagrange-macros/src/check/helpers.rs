@@ -1,6 +1,7 @@
 //! Calls from a declaration's functions to helper functions of the module.
 
 use super::model::Model;
+use crate::ast::Mechanism;
 use crate::ctxt::Ctxt;
 use syn::{Ident, Type};
 
@@ -10,20 +11,7 @@ use syn::{Ident, Type};
 /// types. One message at the call says what to write instead. (In an attribute, `mass = helper(m)`,
 /// everything is `f64` and the call is fine.)
 pub(super) fn check_helper_calls(cx: &Ctxt, model: &Model) {
-    let helpers: Vec<&Ident> = model
-        .mechanism
-        .other_items
-        .iter()
-        .filter_map(|item| match item {
-            syn::Item::Fn(f) if f.sig.generics.params.is_empty() => f
-                .sig
-                .inputs
-                .iter()
-                .any(|arg| matches!(arg, syn::FnArg::Typed(t) if is_f64_type(&t.ty)))
-                .then_some(&f.sig.ident),
-            _ => None,
-        })
-        .collect();
+    let helpers = f64_helpers(model.mechanism);
     if helpers.is_empty() {
         return;
     }
@@ -44,6 +32,24 @@ pub(super) fn check_helper_calls(cx: &Ctxt, model: &Model) {
     }
 }
 
+/// The module's non-generic functions that take an `f64` argument.
+fn f64_helpers(mechanism: &Mechanism) -> Vec<&Ident> {
+    mechanism
+        .other_items
+        .iter()
+        .filter_map(|item| match item {
+            syn::Item::Fn(f) if f.sig.generics.params.is_empty() => f
+                .sig
+                .inputs
+                .iter()
+                .any(|arg| matches!(arg, syn::FnArg::Typed(t) if is_f64_type(&t.ty)))
+                .then_some(&f.sig.ident),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Whether `ty` is `f64`, looking through invisible groups and parentheses.
 fn is_f64_type(ty: &Type) -> bool {
     match ty {
         Type::Path(p) => p.qself.is_none() && p.path.is_ident("f64"),

@@ -1,7 +1,7 @@
 //! The checked model: bodies laid out in x, forces, constraint rows, and what the functions name.
 //! Construction reports only what it cannot lay out without: a body's shape and a family's count.
 
-use super::signatures::{expect_return_type, vector_dim};
+use super::signatures::{expect_return_type, return_type_name, vector_dim};
 use crate::ast::{Decl, Field, Mechanism};
 use crate::attr::{Inertia, Kind};
 use crate::ctxt::Ctxt;
@@ -125,6 +125,63 @@ pub struct Model<'a> {
 }
 
 impl<'a> Model<'a> {
+    /// The model before its functions are checked: bodies laid out in x and the constraint rows;
+    /// potentials, gravities, forces, friction contacts and free names are added function by
+    /// function.
+    pub(super) fn new(
+        cx: &Ctxt,
+        mechanism: &'a Mechanism,
+        params_ident: &'a Ident,
+        coords: &'a [Field],
+        params: &'a [Field],
+    ) -> Self {
+        let bodies = lay_out_bodies(cx, mechanism);
+        Model {
+            mechanism,
+            params_ident,
+            coords,
+            params,
+            potentials: Vec::new(),
+            gravities: Vec::new(),
+            uniform_gravities: Vec::new(),
+            forces: Vec::new(),
+            constraints: constraint_rows(mechanism),
+            free_names: HashMap::new(),
+            rheonomic: false,
+            rows: bodies.iter().map(|b| b.rows()).sum(),
+            inertial_rows: bodies
+                .iter()
+                .filter(|b| b.shape.has_mass())
+                .map(|b| b.rows())
+                .sum(),
+            bodies,
+        }
+    }
+
+    /// The index of a body's or point's declaration among `bodies`.
+    pub(super) fn body_index(&self, decl: &Decl) -> usize {
+        self.bodies
+            .iter()
+            .position(|b| std::ptr::eq(b.decl, decl))
+            .expect("every position declaration is laid out as a body")
+    }
+
+    /// The index of a constraint's declaration among `constraints`.
+    pub(super) fn constraint_index(&self, decl: &Decl) -> usize {
+        self.constraints
+            .iter()
+            .position(|c| std::ptr::eq(c.decl, decl))
+            .expect("every constraint declaration has a row")
+    }
+
+    /// Whether some body with mass moves in `dim` (the plane or space): what a gravity field of
+    /// that dimension acts on.
+    pub(super) fn has_massive_body_in(&self, dim: Dim) -> bool {
+        self.bodies
+            .iter()
+            .any(|b| b.shape.has_mass() && b.shape.dim() == dim)
+    }
+
     /// The first runtime constraint row of constraint item `item` (a friction cone takes two).
     pub fn constraint_row(&self, item: usize) -> usize {
         self.constraints[..item]
@@ -158,8 +215,23 @@ impl<'a> Model<'a> {
     }
 }
 
+/// Constraint rows in declaration order, their contacts not yet known.
+fn constraint_rows(mechanism: &Mechanism) -> Vec<ConstraintRow<'_>> {
+    mechanism
+        .decls
+        .iter()
+        .filter(|d| d.kind().is_constraint())
+        .map(|decl| ConstraintRow {
+            decl,
+            normal: None,
+            cone: decl.kind() == Kind::Friction
+                && return_type_name(decl).as_deref() == Some("Vec2"),
+        })
+        .collect()
+}
+
 /// Bodies and points with their shapes, massive ones first in x, points last.
-pub(super) fn lay_out_bodies<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Vec<Body<'a>> {
+fn lay_out_bodies<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Vec<Body<'a>> {
     let mut bodies: Vec<Body> = mechanism
         .decls
         .iter()
