@@ -307,6 +307,8 @@ fn body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
     }
 }
 
+/// A rigid body is `Planar` with one moment of inertia and `Spatial` with three principal moments;
+/// a return type that disagrees with the inertia is reported (and the body taken as `Spatial`).
 fn rigid_body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
     let principal = matches!(decl.args.inertia, Some(Inertia::Principal(_)));
     // `#[rigid_body(..)] fn bar() -> Vec2`: a rigid body has an orientation too.
