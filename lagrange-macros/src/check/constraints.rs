@@ -8,8 +8,8 @@ use crate::attr::{Args, Kind};
 use crate::ctxt::Ctxt;
 use syn::Ident;
 
-/// A holonomic or unilateral constraint row is one scalar function of the configuration (`#[constraint]
-/// fn rod() -> Vec2` is two rows: declare each), and a value rather than a comparison.
+/// A holonomic or unilateral constraint row is one scalar function of the configuration
+/// (`#[constraint] fn rod() -> Vec2` is not), and a value rather than a comparison.
 pub(super) fn check_position_constraint(cx: &Ctxt, decl: &Decl) {
     expect_return_type(
         cx,
