@@ -280,7 +280,7 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     h: f64,
     stats: &mut Stats,
 ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
-    super::newton::refuse_contacts::<M, N>(tableau.name)?;
+    super::newton::refuse_contacts::<M, N>(tableau.name, super::newton::CONTACT_METHODS)?;
     let v0 = SVector::<f64, N>::from(*v);
     let q0 = SVector::<f64, N>::from(*q);
     let p0 = SVector::<f64, N>::from(mechanism.momenta_at(t, q, v));
