@@ -585,6 +585,13 @@ fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
 /// [module docs](self)). Per step: N unknowns, a simplified Newton iteration with one plain
 /// evaluation of (p, ṗ) per iteration.
 ///
+/// Refuses a declaration with `#[unilateral]` or `#[friction]` rows up front
+/// ([`Error::UnsuitableMethod`], the state unchanged): their contact mode switches inside a step.
+/// [`ContactRk4`](crate::ContactRk4) (fixed step) and [`Dopri5`](super::Dopri5),
+/// [`Dop853`](super::Dop853) and [`Radau5`](super::Radau5) (adaptive; their `integrate` takes
+/// [`ContactAdaptive`](crate::constraints::ContactAdaptive)) integrate such declarations, the mode
+/// held per step and its switches located.
+///
 /// ```
 /// use lagrange_core::{ImplicitMidpoint, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
@@ -619,6 +626,9 @@ pub struct ImplicitMidpoint;
 /// The 2-stage Gauss–Legendre method on y = (q, p): order 4, symmetric, A-stable, symplectic for
 /// any Lagrangian, conserves quadratic invariants (see the [module docs](self)). Per step: 2N
 /// unknowns, a simplified Newton iteration with two plain evaluations of (p, ṗ) per iteration.
+///
+/// Refuses a declaration with `#[unilateral]` or `#[friction]` rows up front, as
+/// [`ImplicitMidpoint`] does (see there for the methods that integrate them).
 ///
 /// ```
 /// use lagrange_core::{GaussLegendre2, Mechanism, State};
