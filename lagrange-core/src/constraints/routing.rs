@@ -82,7 +82,7 @@ pub fn integrate_declared_contacts<
 
 impl Dopri5 {
     /// Integrates a mechanism with unilateral contacts or friction from `state` to `t_end` with the
-    /// mode changes located ([`ContactDopri5`]), calling `observer` after every step and for every
+    /// mode changes located ([`ContactDopri5`](super::ContactDopri5)), calling `observer` after every step and for every
     /// located user event, as [`Dopri5::integrate`] does. On success `state` is the final state; on
     /// error it is unchanged. Returns the outcome and the mode changes.
     ///
@@ -140,7 +140,7 @@ impl Dopri5 {
 }
 
 impl Dop853 {
-    /// [`Dopri5::integrate_contacts`] with Dormand–Prince 8(5,3) ([`ContactDop853`]).
+    /// [`Dopri5::integrate_contacts`] with Dormand–Prince 8(5,3) ([`ContactDop853`](super::ContactDop853)).
     ///
     /// ```
     /// use lagrange_core::constraints::{ConstraintKind, ContactOptions, Constraints, RowMode};

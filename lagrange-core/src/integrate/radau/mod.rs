@@ -5,7 +5,7 @@
 //!   Table 5.6; the implementation follows §IV.8 and Hairer's code `radau5.f`, version of 1996–2002).
 //!   It is applied to the first-order system y = (q, v), y' = f(t, y) = (v, q̈(t, q, v)), with q̈
 //!   the mechanism's accelerations (on a constrained mechanism these include the constraint forces,
-//!   as for [`Dopri5`]).
+//!   as for [`Dopri5`](super::Dopri5)).
 //! - Stage equations: for Z = (Z₁, Z₂, Z₃), Zᵢ = yᵢ − y₀, the collocation equations
 //!   Zᵢ = h Σⱼ aᵢⱼ f(t₀ + cⱼh, y₀ + Zⱼ) are solved by the **simplified Newton iteration** of HW II
 //!   §IV.8, (8.5)–(8.17): with W = T⁻¹Z (T the eigenvector matrix of A⁻¹, eigenvalues γ̂ and
@@ -17,7 +17,7 @@
 //!   M1, M2). The real matrix is factorised as an N-square block LU (the one the Gauss methods use), the complex one in its real
 //!   form [[Re K, −Im K], [Im K, Re K]] as a 2N-square one: about 3N³ flops per
 //!   factorisation against (6N)³/3 = 72N³ for the unsplit system.
-//! - Reuse: the Jacobians ∂q̈/∂q, ∂q̈/∂v (exact, by dual numbers, [`acceleration_jacobians`]) are
+//! - Reuse: the Jacobians ∂q̈/∂q, ∂q̈/∂v (exact, by dual numbers, [`acceleration_jacobians`](super::acceleration_jacobians)) are
 //!   kept across iterations and steps while the Newton contraction rate θ stays below
 //!   [`Radau5::jacobian_theta`], and the factorisation too while moreover the proposed step changes
 //!   by less than the factors in [`Radau5::keep_step`] (then the step is kept as it is);
@@ -42,7 +42,7 @@
 //! - Events, the observer and the statistics are those of every solver ([`Stepper::integrate`]).
 //!   [`Stats::factorizations`] counts one per refactorisation (the real and the complex matrix
 //!   together, as `radau5.f`'s NDEC).
-//! - Constraints: as [`Dopri5`], the start state must satisfy them and every
+//! - Constraints: as [`Dopri5`](super::Dopri5), the start state must satisfy them and every
 //!   accepted step is projected onto them; the dense output interpolates the step before
 //!   projection.
 //!

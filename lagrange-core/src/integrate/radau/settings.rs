@@ -118,7 +118,7 @@ impl Radau5 {
         Ok(())
     }
 
-    /// Integrates from `state` to `t_end` as [`Dopri5::integrate`](super::Dopri5::integrate) does:
+    /// Integrates from `state` to `t_end` as [`Dopri5::integrate`](crate::integrate::Dopri5::integrate) does:
     /// on success `state` is the final state, on error it is unchanged. A declaration with
     /// unilateral contacts or friction is integrated with its contact mode held per step and the
     /// switches located ([`ContactRadau5`](crate::constraints::ContactRadau5), default
