@@ -206,6 +206,7 @@ mod cone;
 mod consistency;
 mod contact;
 mod forces;
+mod held;
 mod mode;
 mod projection;
 mod routing;

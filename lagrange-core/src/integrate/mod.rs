@@ -34,8 +34,10 @@
 //! Dopri5, Dop853 and Radau5 then hold the mode per step and locate the switches
 //! ([`ContactDopri5`](crate::constraints::ContactDopri5),
 //! [`ContactRadau5`](crate::constraints::ContactRadau5): their `integrate` and `sys.step` take
-//! them by themselves), RK4 has [`ContactRk4`](crate::ContactRk4), and implicit midpoint and
-//! Gauss–Legendre (and the plain [`Radau5Stepper`]) refuse such a declaration with
+//! them by themselves), RK4 has [`ContactRk4`](crate::ContactRk4), whose event loop also steps
+//! with implicit midpoint or Gauss–Legendre
+//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with)); stepped on their own (and the plain
+//! [`Radau5Stepper`]) they refuse such a declaration with
 //! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
 //! Störmer–Verlet and the variational integrator enforce holonomic constraints g(q, t) = 0 by
 //! RATTLE ([`rattle`]: the multipliers of a position stage solved by Newton with the step, then the
