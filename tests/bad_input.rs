@@ -432,6 +432,30 @@ fn constrained_cases<M, const N: usize, const K: usize, const C: usize>(
         },
     );
     tally.run(
+        || label("ContactRk4 step_with GaussLegendre2"),
+        || {
+            // As "ContactRk4 step", with Gauss–Legendre 2 in the event loop.
+            let Ok(mut stepper) = ContactRk4::new(sys, good, ContactOptions::default()) else {
+                return Outcome::Error {
+                    state_changed: false,
+                };
+            };
+            stepper.options = set.contact;
+            let (mode, events) = (stepper.mode(), stepper.events.len());
+            let step = |state: &mut State<<M as Model<N, K>>::Coords>| {
+                stepper.step_with::<GaussLegendre2, M, N, K>(sys, state, set.h)
+            };
+            match stepping(s, step) {
+                Outcome::Error { state_changed } => Outcome::Error {
+                    state_changed: state_changed
+                        || stepper.mode() != mode
+                        || stepper.events.len() != events,
+                },
+                ok => ok,
+            }
+        },
+    );
+    tally.run(
         || label("Dopri5::integrate_contacts"),
         || {
             let t_end = s.t + set.h;
