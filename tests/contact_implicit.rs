@@ -707,6 +707,9 @@ fn cost_in_contact_table() {
     }
 }
 
+/// The release time as a function of the step size.
+type ReleaseTime<'a> = dyn Fn(f64) -> f64 + 'a;
+
 /// Fixed-step implicit methods with contacts: [`ContactRk4::step_with`] takes Gauss–Legendre 2 or
 /// implicit midpoint for RK4 in the contact stepper's event loop.
 fn release_with_fixed_step<I: lagrange::Integrator>(start: Start, h: f64) -> f64 {
@@ -741,7 +744,7 @@ fn unilateral_sphere_with_gauss_legendre_and_implicit_midpoint_releases_at_their
         let (t_star, _) = start.release();
         let gauss = |h| release_with_fixed_step::<GaussLegendre2>(start, h);
         let midpoint = |h| release_with_fixed_step::<ImplicitMidpoint>(start, h);
-        let methods: [(&str, i32, &dyn Fn(f64) -> f64); 2] = [
+        let methods: [(&str, i32, &ReleaseTime); 2] = [
             ("Gauss-Legendre 2", 4, &gauss),
             ("implicit midpoint", 2, &midpoint),
         ];
