@@ -87,6 +87,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::excessive_precision)]
 
 mod algebra;
+mod iteration;
 mod settings;
 mod step;
 
