@@ -14,12 +14,11 @@
 //! - A block sent up a rough ramp (`#[friction]`, the gallery's `rough_ramp`): it stops at
 //!   t_s = u/(g(sin α + μₖ cos α)) and sticks or slides back, as μₛ decides; a puck on a rough
 //!   plane (the friction cone) stops at the closed-form time and point.
-//! - Implicit midpoint and Gauss–Legendre 2 in the contact stepper's event loop
-//!   (`ContactRk4::step_with`): the sphere's release at their orders, the ball's landings and the
-//!   block's stop on time.
 //! - A stiff case: a lander (a foot on a unilateral floor, a top mass on a stiff, overdamped
 //!   spring above it) dropped on the floor, against a tight ContactDopri5 reference and its static
 //!   equilibrium; Radau5 takes far fewer steps than Dopri5 at the same tolerance.
+//!
+//! The fixed-step implicit methods with contacts: tests/contact_fixed_step.rs.
 
 use lagrange::constraints::{
     constraint_forces, ContactDopri5, ContactOptions, ContactRadau5, RowMode,
@@ -27,7 +26,7 @@ use lagrange::constraints::{
 use lagrange::integrate::{Direction, Event, Stats, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
-use lagrange_gallery::scenes::sphere_release::{gauss_legendre, sphere_release as unilateral};
+use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
 
 /// The sphere of the gallery's `sphere_release` as a bilateral constraint: its multiplier is the
 /// normal force it would need.
@@ -148,54 +147,25 @@ const M: f64 = 0.7;
 const R: f64 = 1.5;
 const G: f64 = 9.81;
 
-/// Where the particle starts: at angle θ₀ from the top, with speed v₀ along the sphere.
-#[derive(Clone, Copy, Debug)]
-struct Start {
-    theta0: f64,
-    v0: f64,
-}
+/// Where the particle starts (at angle θ₀ from the top, with speed v₀ along the sphere), with the
+/// closed form of its release: the gallery's `sphere_release::Release`.
+type Start = Release;
 
-impl Start {
-    /// (position, velocity) in the plane of the great circle.
-    fn state(self) -> ([f64; 2], [f64; 2]) {
-        let (sin, cos) = self.theta0.sin_cos();
-        ([R * sin, R * cos], [self.v0 * cos, -self.v0 * sin])
-    }
-
-    /// The speed at angle θ, by energy: v² = v₀² + 2gR(cos θ₀ − cos θ), the difference written
-    /// 2 sin((θ + θ₀)/2) sin((θ − θ₀)/2) so that it keeps its relative accuracy near θ₀.
-    fn speed(self, theta: f64) -> f64 {
-        let drop = 2.0 * (0.5 * (theta + self.theta0)).sin() * (0.5 * (theta - self.theta0)).sin();
-        (self.v0 * self.v0 + 2.0 * G * R * drop).sqrt()
-    }
-
-    /// The closed form of the release: (t*, cos θ*). The normal force m(g cos θ − v²/R) vanishes
-    /// at cos θ* = (2 cos θ₀ + v₀²/(gR))/3, reached at t* = ∫_θ₀^θ* R dθ / v(θ); with θ = θ₀ + u²
-    /// the integrand 2uR/v(θ₀ + u²) is analytic also from rest, so 400 panels of 5-point
-    /// Gauss–Legendre are exact to round-off.
-    fn release(self) -> (f64, f64) {
-        let cos_star = (2.0 * self.theta0.cos() + self.v0 * self.v0 / (G * R)) / 3.0;
-        let theta_star = cos_star.acos();
-        let integrand = |u: f64| 2.0 * u * R / self.speed(self.theta0 + u * u);
-        let end = (theta_star - self.theta0).sqrt();
-        (gauss_legendre(integrand, 0.0, end, 400), cos_star)
+/// A start on this sphere (radius R, gravity G).
+const fn on_sphere(theta0: f64, v0: f64) -> Start {
+    Release {
+        r: R,
+        g: G,
+        theta0,
+        v0,
     }
 }
 
 /// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
 const STARTS: [Start; 3] = [
-    Start {
-        theta0: 0.1,
-        v0: 0.0,
-    },
-    Start {
-        theta0: 0.0,
-        v0: 0.5,
-    },
-    Start {
-        theta0: 0.0,
-        v0: 1.2,
-    },
+    on_sphere(0.1, 0.0),
+    on_sphere(0.0, 0.5),
+    on_sphere(0.0, 1.2),
 ];
 
 /// The bilateral sphere in Radau5 from `start`, stopped where its multiplier falls through 0 (a
@@ -248,7 +218,7 @@ fn unilateral_release(start: Start, tol: f64) -> (f64, Stats, f64) {
 fn unilateral_sphere_in_radau5_releases_on_time_at_the_cost_of_the_bilateral_one() {
     let tol = 1e-13;
     for start in STARTS {
-        let Start { theta0, v0 } = start;
+        let Start { theta0, v0, .. } = start;
         let (t_star, _) = start.release();
         let (t_u, uni, longest) = unilateral_release(start, tol);
         let (t_b, bil) = bilateral_release(start, tol);
@@ -660,10 +630,7 @@ fn cost_in_contact_table() {
     };
     println!("| tol | declaration | steps (acc. + rej.) | Newton iterations | evaluations | Jacobians / factorisations |");
     println!("|---|---|---|---|---|---|");
-    let start = Start {
-        theta0: 0.0,
-        v0: 0.5,
-    };
+    let start = on_sphere(0.0, 0.5);
     for tol in [1e-6, 1e-10, 1e-13] {
         let (_, uni, _) = unilateral_release(start, tol);
         let (_, bil) = bilateral_release(start, tol);
@@ -705,138 +672,4 @@ fn cost_in_contact_table() {
         println!("| {tol:.0e} | ContactRadau5 | {} |", show(r.stats()));
         println!("| {tol:.0e} | ContactDopri5 | {} |", show(d.stats()));
     }
-}
-
-/// The release time as a function of the step size.
-type ReleaseTime<'a> = dyn Fn(f64) -> f64 + 'a;
-
-/// Fixed-step implicit methods with contacts: [`ContactRk4::step_with`] takes Gauss–Legendre 2 or
-/// implicit midpoint for RK4 in the contact stepper's event loop.
-fn release_with_fixed_step<I: lagrange::Integrator>(start: Start, h: f64) -> f64 {
-    use lagrange::constraints::ContactRk4;
-    use unilateral::{Coords, SphereRelease, State};
-    let sys = SphereRelease { m: M, r: R, g: G };
-    let ([x, y], [vx, vy]) = start.state();
-    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
-    let mut contact = ContactRk4::new(&sys, &s, ContactOptions::default()).expect("stepper");
-    while contact.events.is_empty() {
-        contact
-            .step_with::<I, _, 2, 2>(&sys, &mut s, h)
-            .expect("step");
-    }
-    let change = contact.events[0];
-    assert_eq!(
-        (change.constraint, change.from, change.to),
-        ("surface", RowMode::Active, RowMode::Inactive)
-    );
-    change.t
-}
-
-#[test]
-fn unilateral_sphere_with_gauss_legendre_and_implicit_midpoint_releases_at_their_order() {
-    // The release time's error is the method's global error carried to λ (its event is located
-    // on the method's own steps, to the event tolerance 1e-13·(|t| + h)): O(h⁴) for Gauss–Legendre
-    // 2, O(h²) for implicit midpoint. Checked: halving h from 1e-2 divides the error by 2⁴ and 2²
-    // (within [0.6, 1.6] of it: the next term of the error expansion at these h), and at h = 1e-3
-    // the error is within what h = 1e-2's error, scaled by the order, predicts (×2 for the next
-    // term) plus the event tolerance (2.2e-13).
-    for start in STARTS {
-        let (t_star, _) = start.release();
-        let gauss = |h| release_with_fixed_step::<GaussLegendre2>(start, h);
-        let midpoint = |h| release_with_fixed_step::<ImplicitMidpoint>(start, h);
-        let methods: [(&str, i32, &ReleaseTime); 2] = [
-            ("Gauss-Legendre 2", 4, &gauss),
-            ("implicit midpoint", 2, &midpoint),
-        ];
-        for (name, order, error) in methods {
-            let [e1, e2, e3] = [1e-2, 5e-3, 1e-3].map(|h| error(h) - t_star);
-            let ratio = e1 / e2;
-            let expected = 2f64.powi(order);
-            eprintln!(
-                "{name}, {start:?}: release error {e1:+.2e} (h = 1e-2), {e2:+.2e} (5e-3), \
-                 {e3:+.2e} (1e-3); ratio {ratio:.2} (2^{order} = {expected})"
-            );
-            assert!(
-                ratio > 0.6 * expected && ratio < 1.6 * expected,
-                "{name}: ratio {ratio}"
-            );
-            let predicted = 2.0 * e1.abs() * 0.1f64.powi(order) + 2.2e-13;
-            assert!(e3.abs() < predicted, "{name}: {e3:e} against {predicted:e}");
-        }
-    }
-}
-
-#[test]
-fn ball_lands_and_block_stops_on_time_with_the_fixed_step_implicit_methods() {
-    use lagrange::constraints::ContactRk4;
-    // Constant accelerations between events: q is quadratic in t and p linear, which both Gauss
-    // methods on (q, p) integrate exactly; the events are located to the event tolerance
-    // 1e-13·(|t| + h) on exact steps. Asserted to 1e-12 (landing and stop times, positions).
-    fn ball_run<I: lagrange::Integrator>(restitution: f64) -> (Vec<f64>, ball::State) {
-        use ball::{Ball, Coords, State};
-        let sys = Ball { m: 0.3, g: G };
-        let mut s = State::new(0.0, Coords { x: 0.2, y: 1.3 }, Coords { x: 0.5, y: 0.0 });
-        let options = ContactOptions {
-            restitution,
-            ..Default::default()
-        };
-        let mut contact = ContactRk4::new(&sys, &s, options).expect("stepper");
-        for _ in 0..150 {
-            contact
-                .step_with::<I, _, 2, 2>(&sys, &mut s, 1e-2)
-                .expect("step");
-        }
-        (contact.events.iter().map(|c| c.t).collect(), s)
-    }
-    let t1 = (2.0 * 1.3 / G).sqrt();
-    for (name, run) in [
-        (
-            "Gauss-Legendre 2",
-            ball_run::<GaussLegendre2> as fn(f64) -> (Vec<f64>, ball::State),
-        ),
-        ("implicit midpoint", ball_run::<ImplicitMidpoint>),
-    ] {
-        let (landings, s) = run(0.0);
-        assert_eq!(landings.len(), 1, "{name}: {landings:?}");
-        assert!((landings[0] - t1).abs() < 1e-12, "{name}: {landings:?}");
-        assert!(s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12 && (s.q.x - 0.95).abs() < 1e-12);
-        // Bounces with e = 0.6: landings at t₁(1 + 2e + … + 2eᵏ⁻¹).
-        let (landings, _) = run(0.6);
-        let (mut landing, mut flight) = (t1, 1.2 * t1);
-        for t in landings.iter().take(3) {
-            assert!((t - landing).abs() < 1e-12, "{name}: {t} against {landing}");
-            landing += flight;
-            flight *= 0.6;
-        }
-    }
-    // The block sent up the rough ramp stops at u/(g(sin α + μₖ cos α)) and sticks.
-    use rough_ramp::{Coords, RoughRamp, State};
-    let (alpha, u) = (0.5f64, 2.0);
-    let (sn, cs) = alpha.sin_cos();
-    let sys = RoughRamp {
-        m: 2.0,
-        alpha,
-        g: G,
-        mu_k: 0.5,
-        mu_s: 0.6,
-    };
-    let t_stop = u / (G * (sn + 0.5 * cs));
-    let mut s = State::new(
-        0.0,
-        Coords { x: 0.0, y: 0.0 },
-        Coords {
-            x: u * cs,
-            y: u * sn,
-        },
-    );
-    let mut contact = ContactRk4::new(&sys, &s, ContactOptions::default()).expect("stepper");
-    for _ in 0..50 {
-        contact
-            .step_with::<GaussLegendre2, _, 2, 2>(&sys, &mut s, 1e-2)
-            .expect("step");
-    }
-    assert_eq!(contact.events.len(), 1, "{:?}", contact.events);
-    assert_eq!(contact.events[0].to, RowMode::Stick);
-    assert!((contact.events[0].t - t_stop).abs() < 1e-12);
-    assert!(s.v.x.hypot(s.v.y) < 1e-12);
 }
