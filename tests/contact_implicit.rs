@@ -13,7 +13,8 @@
 //!   with restitution (its landings at the closed-form times).
 //! - A block sent up a rough ramp (`#[friction]`, the gallery's `rough_ramp`): it stops at
 //!   t_s = u/(g(sin α + μₖ cos α)) and sticks or slides back, as μₛ decides; a puck on a rough
-//!   plane (the friction cone) stops at the closed-form time and point.
+//!   plane (the friction cone) stops at the closed-form time and point, straight and pushed
+//!   sideways (its path curving, the errors falling with the tolerance).
 //! - A stiff case: a lander (a foot on a unilateral floor, a top mass on a stiff, overdamped
 //!   spring above it) dropped on the floor, against a tight ContactDopri5 reference and its static
 //!   equilibrium; Radau5 takes far fewer steps than Dopri5 at the same tolerance.
@@ -493,6 +494,70 @@ fn puck_on_a_rough_plane_stops_at_the_closed_form_point_in_radau5() {
     assert!(s.v.x.hypot(s.v.y) < 1e-12, "{:?}", s.v);
     assert!((changes[0].t - t_s).abs() < 1e-12);
     assert!((s.q.x - x_s).abs() < 1e-12 && (s.q.y - y_s).abs() < 1e-12);
+}
+
+#[test]
+fn pushed_puck_on_a_rough_plane_curves_and_stops_at_the_closed_form_point_in_radau5() {
+    use lagrange_gallery::scenes::rough_plane::rough_plane::{Coords, RoughPlane, State};
+    use lagrange_gallery::scenes::rough_plane::stop;
+    // Pushed sideways (F < μmg) the path curves and the slip direction turns ever faster near the
+    // stop: the errors are the integration's, which Radau5 keeps about proportional to the
+    // tolerance (radau5.f's conversion of the tolerances, HW II §IV.8), plus the direction held
+    // along the step's initial slip in the step that reaches the stop, O(h·θ(h)), which falls
+    // faster than h. Asserted: each 100× smaller tolerance divides the errors of the stop time and
+    // point by at least 30 (proportionality with a margin of 3 for its constant).
+    let sys = RoughPlane {
+        m: 1.5,
+        g: G,
+        mu_k: 0.5,
+        mu_s: 0.6,
+        push: 3.0,
+    };
+    let v0 = 3.0;
+    let zero = Coords {
+        x: 0.0,
+        y: 0.0,
+        z: 0.0,
+    };
+    let (t_s, x_s, y_s) = stop(&sys, v0);
+    let mut previous: Option<[f64; 3]> = None;
+    for tol in [1e-6, 1e-8, 1e-10] {
+        let mut s = State::new(0.0, zero, Coords { x: v0, ..zero });
+        let (outcome, changes) = Radau5::new(tol, tol)
+            .integrate_contacts(
+                &sys,
+                &mut s,
+                1.5,
+                ContactOptions::default(),
+                &mut [],
+                |_| {},
+            )
+            .expect("integration");
+        // One stop, decided once (no chattering), from sliding to sticking for good.
+        assert_eq!(changes.len(), 1, "{changes:?}");
+        assert_eq!(
+            (changes[0].from, changes[0].to),
+            (RowMode::Sliding, RowMode::Stick)
+        );
+        let errors = [
+            (changes[0].t - t_s).abs(),
+            (s.q.x - x_s).abs(),
+            (s.q.y - y_s).abs(),
+        ];
+        eprintln!(
+            "pushed, tol {tol:.0e}: stop time {:.1e}, point ({:.1e}, {:.1e}) off; {:?}",
+            errors[0], errors[1], errors[2], outcome.stats
+        );
+        if let Some(p) = previous {
+            for (e, p) in errors.iter().zip(p) {
+                assert!(
+                    *e < p / 30.0,
+                    "tol {tol:.0e}: errors {errors:?} after {p:?}"
+                );
+            }
+        }
+        previous = Some(errors);
+    }
 }
 
 /// The lander's parameters: a stiff (k = 10⁶ N/m), heavily overdamped (c = 2·10⁴ N·s/m) leg; its
