@@ -738,3 +738,74 @@ fn cost_in_contact_table() {
         println!("| {tol:.0e} | ContactDopri5 | {} |", show(d.stats()));
     }
 }
+
+#[test]
+fn stiff_lander_with_a_critically_damped_leg_hops_once_in_radau5() {
+    use lander::{Coords, Lander, State};
+    // The leg critically damped (c = 2√(k m₂) = 2000 N·s/m) on the floor: as the top rebounds
+    // after the landing, the leg pulls the foot up harder than the weights hold it down (the
+    // contact force reaches zero), the foot lifts off, flies a few centimetres' worth of time and
+    // lands again for good. Three events, each against a ContactDopri5 run at 1e-12: a release
+    // during a stiff transient (rates up to 10³ s⁻¹) and two impacts.
+    let sys = Lander { c: 2e3, ..LANDER };
+    let start = State::new(
+        0.0,
+        Coords {
+            foot: 0.4,
+            top: 0.9,
+        },
+        Coords {
+            foot: 0.0,
+            top: 0.0,
+        },
+    );
+    let mut reference = ContactDopri5::new(
+        &sys,
+        Dopri5::new(1e-12, 1e-12),
+        &start,
+        ContactOptions::default(),
+    )
+    .expect("solver");
+    reference
+        .integrate(1.0, &mut [], |_| {})
+        .expect("reference");
+    let modes = [RowMode::Active, RowMode::Inactive, RowMode::Active];
+    let reference_modes: Vec<RowMode> = reference.events().iter().map(|e| e.to).collect();
+    assert_eq!(reference_modes, modes, "{:?}", reference.events());
+    for tol in [1e-6, 1e-8, 1e-10] {
+        let mut solver = ContactRadau5::new(
+            &sys,
+            Radau5::new(tol, tol),
+            &start,
+            ContactOptions::default(),
+        )
+        .expect("solver");
+        let outcome = solver.integrate(1.0, &mut [], |_| {}).expect("Radau5");
+        let events = solver.events();
+        eprintln!(
+            "tol {tol:.0e}: events {:?} (reference {:?}); {:?}",
+            events.iter().map(|e| e.t).collect::<Vec<_>>(),
+            reference.events().iter().map(|e| e.t).collect::<Vec<_>>(),
+            outcome.stats
+        );
+        assert_eq!(events.iter().map(|e| e.to).collect::<Vec<_>>(), modes);
+        // Each event time is off by the solution's error at it divided by the event function's
+        // rate: for the impacts the gap c = foot, whose error Radau5 holds to about
+        // tol·(1 + |y|) ≤ 1.5·tol, over the landing speed (3.1 m/s, then 0.167 m/s for the hop's
+        // landing, leg and foot moving together by then); the release's λ moves at the stiff
+        // leg's rate, far faster. So ≤ 1.5/0.167·tol < 10·tol, plus the
+        // reference's own error at 1e-12 (1e-10 with the same argument).
+        for (e, r) in events.iter().zip(reference.events()) {
+            assert!(
+                (e.t - r.t).abs() < 10.0 * tol + 1e-10,
+                "tol {tol:.0e}: {} against {}",
+                e.t,
+                r.t
+            );
+        }
+        // At rest at the end, as the reference (see the settling lander above).
+        let (s, r) = (solver.state(), reference.state());
+        assert!(s.q.foot.abs() < 1e-12);
+        assert!((s.q.top - r.q.top).abs() < 4.0 * tol && (s.v.top - r.v.top).abs() < 4.0 * tol);
+    }
+}
