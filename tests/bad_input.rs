@@ -266,6 +266,7 @@ fn stepping<C: Coordinates<N>, const N: usize, T>(
 struct Settings {
     h: f64,
     dopri5: Dopri5,
+    radau5: Radau5,
     equilibrium: EquilibriumOptions,
     contact: ContactOptions,
 }
@@ -279,6 +280,10 @@ impl Default for Settings {
             dopri5: Dopri5 {
                 max_steps: 40,
                 ..Dopri5::default()
+            },
+            radau5: Radau5 {
+                max_steps: 40,
+                ..Radau5::default()
             },
             equilibrium: EquilibriumOptions::default(),
             contact: ContactOptions::default(),
@@ -340,6 +345,15 @@ fn mechanism_cases<M: Mechanism<N> + Debug, const N: usize>(
             stepping(s, |state| {
                 let t_end = state.t + 10.0 * h;
                 set.dopri5.integrate(sys, state, t_end, &mut [], |_| {})
+            })
+        },
+    );
+    tally.run(
+        || label("Radau5 integrate"),
+        || {
+            stepping(s, |state| {
+                let t_end = state.t + 10.0 * h;
+                set.radau5.integrate(sys, state, t_end, &mut [], |_| {})
             })
         },
     );
@@ -418,11 +432,45 @@ fn constrained_cases<M, const N: usize, const K: usize, const C: usize>(
         },
     );
     tally.run(
+        || label("ContactRk4 step_with GaussLegendre2"),
+        || {
+            // As "ContactRk4 step", with Gauss–Legendre 2 in the event loop.
+            let Ok(mut stepper) = ContactRk4::new(sys, good, ContactOptions::default()) else {
+                return Outcome::Error {
+                    state_changed: false,
+                };
+            };
+            stepper.options = set.contact;
+            let (mode, events) = (stepper.mode(), stepper.events.len());
+            let step = |state: &mut State<<M as Model<N, K>>::Coords>| {
+                stepper.step_with::<GaussLegendre2, M, N, K>(sys, state, set.h)
+            };
+            match stepping(s, step) {
+                Outcome::Error { state_changed } => Outcome::Error {
+                    state_changed: state_changed
+                        || stepper.mode() != mode
+                        || stepper.events.len() != events,
+                },
+                ok => ok,
+            }
+        },
+    );
+    tally.run(
         || label("Dopri5::integrate_contacts"),
         || {
             let t_end = s.t + set.h;
             stepping(s, |state| {
                 set.dopri5
+                    .integrate_contacts(sys, state, t_end, set.contact, &mut [], |_| {})
+            })
+        },
+    );
+    tally.run(
+        || label("Radau5::integrate_contacts"),
+        || {
+            let t_end = s.t + set.h;
+            stepping(s, |state| {
+                set.radau5
                     .integrate_contacts(sys, state, t_end, set.contact, &mut [], |_| {})
             })
         },
@@ -478,6 +526,10 @@ fn matrix<P: Copy + Debug, C: Coordinates<N>, const N: usize>(
         with("Dopri5.fac_min", &|s| s.dopri5.fac_min = bad);
         with("Dopri5.fac_max", &|s| s.dopri5.fac_max = bad);
         with("Dopri5.beta", &|s| s.dopri5.beta = bad);
+        with("Radau5.rtol", &|s| s.radau5.rtol = bad);
+        with("Radau5.atol", &|s| s.radau5.atol = bad);
+        with("Radau5.h_init", &|s| s.radau5.h_init = Some(bad));
+        with("Radau5.h_max", &|s| s.radau5.h_max = bad);
         with("EquilibriumOptions.residual_tolerance", &|s| {
             s.equilibrium.residual_tolerance = bad
         });
@@ -502,6 +554,7 @@ fn matrix<P: Copy + Debug, C: Coordinates<N>, const N: usize>(
     // The counts of the options are bad only at zero.
     let mut set0 = set;
     set0.dopri5.max_steps = 0;
+    set0.radau5.max_steps = 0;
     set0.equilibrium.max_iterations = 0;
     set0.contact.max_events_per_step = 0;
     cases(

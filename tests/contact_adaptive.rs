@@ -22,7 +22,7 @@ use lagrange::constraints::{
 use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
-use lagrange_gallery::scenes::sphere_release::gauss_legendre;
+use lagrange_gallery::scenes::sphere_release::Release;
 
 /// The sphere as a contact that only pushes.
 #[mechanism]
@@ -118,55 +118,25 @@ const M: f64 = 0.7;
 const R: f64 = 1.5;
 const G: f64 = 9.81;
 
-/// Where the particle starts: at angle θ₀ from the top, with speed v₀ along the sphere.
-#[derive(Clone, Copy, Debug)]
-struct Start {
-    theta0: f64,
-    v0: f64,
-}
+/// Where the particle starts (at angle θ₀ from the top, with speed v₀ along the sphere), with the
+/// closed form of its release: the gallery's `sphere_release::Release`.
+type Start = Release;
 
-impl Start {
-    /// (position, velocity) in the plane of the great circle.
-    fn state(self) -> ([f64; 2], [f64; 2]) {
-        let (sin, cos) = self.theta0.sin_cos();
-        ([R * sin, R * cos], [self.v0 * cos, -self.v0 * sin])
-    }
-
-    /// The speed at angle θ, by energy: v² = v₀² + 2gR(cos θ₀ − cos θ), the difference written
-    /// 2 sin((θ + θ₀)/2) sin((θ − θ₀)/2) so that it keeps its relative accuracy near θ₀.
-    fn speed(self, theta: f64) -> f64 {
-        let drop = 2.0 * (0.5 * (theta + self.theta0)).sin() * (0.5 * (theta - self.theta0)).sin();
-        (self.v0 * self.v0 + 2.0 * G * R * drop).sqrt()
-    }
-
-    /// The closed form of the release: (t*, cos θ*). The normal force m(g cos θ − v²/R) vanishes
-    /// at cos θ* = (2 cos θ₀ + v₀²/(gR))/3, reached at t* = ∫_θ₀^θ* R dθ / v(θ).
-    fn release(self) -> (f64, f64) {
-        let cos_star = (2.0 * self.theta0.cos() + self.v0 * self.v0 / (G * R)) / 3.0;
-        let theta_star = cos_star.acos();
-        // With θ = θ₀ + u², dθ = 2u du: the integrand 2uR/v(θ₀ + u²) is analytic in u also from
-        // rest (v² = u²·(2gR sin θ₀ + O(u²)) then), so 400 panels of 5-point Gauss–Legendre are
-        // exact to round-off.
-        let integrand = |u: f64| 2.0 * u * R / self.speed(self.theta0 + u * u);
-        let end = (theta_star - self.theta0).sqrt();
-        (gauss_legendre(integrand, 0.0, end, 400), cos_star)
+/// A start on this sphere (radius R, gravity G).
+const fn on_sphere(theta0: f64, v0: f64) -> Start {
+    Release {
+        r: R,
+        g: G,
+        theta0,
+        v0,
     }
 }
 
 /// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
 const STARTS: [Start; 3] = [
-    Start {
-        theta0: 0.1,
-        v0: 0.0,
-    },
-    Start {
-        theta0: 0.0,
-        v0: 0.5,
-    },
-    Start {
-        theta0: 0.0,
-        v0: 1.2,
-    },
+    on_sphere(0.1, 0.0),
+    on_sphere(0.0, 0.5),
+    on_sphere(0.0, 1.2),
 ];
 
 /// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
@@ -244,7 +214,7 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
     // for Dopri5 (and ~1e-11 for Dop853, which takes fewer steps).
     let rate = (G / R).sqrt();
     for start in STARTS {
-        let Start { theta0, v0 } = start;
+        let Start { theta0, v0, .. } = start;
         let (t_star, cos_star) = start.release();
         let ([x, y], [vx, vy]) = start.state();
         let state = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
@@ -532,7 +502,7 @@ fn cost_in_contact_table() {
             .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
             .expect("integration")
             .stats;
-        let (_, bil) = bilateral_release(Start { theta0: 0.0, v0 }, tol);
+        let (_, bil) = bilateral_release(on_sphere(0.0, v0), tol);
         let show = |s: Stats| {
             format!(
                 "{} accepted + {} rejected, {} evaluations",
@@ -676,15 +646,13 @@ fn bouncing_ball_comes_to_rest_at_the_accumulation_point() {
     }
 }
 
-/// The implicit methods refuse a declaration with a unilateral row up front (its mode switches
-/// inside a step, where a collocation polynomial has nothing to follow), by the declaration, with
-/// the state unchanged; the same sphere declared bilateral steps.
+/// The fixed-step implicit methods and the plain Radau5 stepper refuse a declaration with a
+/// unilateral row up front (its mode switches inside a step, where a collocation polynomial has
+/// nothing to follow), by the declaration, with the state unchanged; the same sphere declared
+/// bilateral steps.
 #[test]
 fn implicit_methods_refuse_unilateral_declarations() {
-    let start = Start {
-        theta0: 0.0,
-        v0: 0.5,
-    };
+    let start = on_sphere(0.0, 0.5);
     let ([x, y], [vx, vy]) = start.state();
     let sys = unilateral::Sphere { m: M, r: R, g: G };
     let s0 = unilateral::State::new(
@@ -705,10 +673,10 @@ fn implicit_methods_refuse_unilateral_declarations() {
         sys.step::<ImplicitMidpoint>(&mut s, 1e-3),
         "implicit midpoint",
     );
+    // The plain Radau5 stepper (its mode re-inferred at every evaluation) refuses it too;
+    // `Radau5::integrate` takes the contact solver instead (tests/contact_implicit.rs).
     refused(
-        Radau5::new(1e-8, 1e-8)
-            .integrate(&sys, &mut s, 1.0, &mut [], |_| {})
-            .map(|_| ()),
+        lagrange::integrate::Radau5Stepper::new(&sys, Radau5::new(1e-8, 1e-8), &s).map(|_| ()),
         "Radau5",
     );
     assert_eq!(s, s0, "a refused step changes nothing");

@@ -326,10 +326,11 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
 
     #[doc(hidden)]
     /// Hook for mechanisms with unilateral or friction rows: integrates from `state` to `t_end`
-    /// with the embedded pair `method`, the contact mode held within each step and its switches
-    /// located ([`crate::constraints::ContactAdaptive`]), as `Dopri5::integrate` and
-    /// `Dop853::integrate` promise. `None` (the default) when the declaration has no such rows:
-    /// the pair then integrates the smooth system itself.
+    /// with the adaptive method `method` (Dopri5, Dop853 or Radau5), the contact mode held within
+    /// each step and its switches located ([`crate::constraints::ContactAdaptive`]), as
+    /// `Dopri5::integrate`, `Dop853::integrate` and `Radau5::integrate` promise. `None` (the
+    /// default) when the declaration has no such rows: the method then integrates the smooth
+    /// system itself.
     #[inline]
     fn integrate_contacts<P, O>(
         &self,

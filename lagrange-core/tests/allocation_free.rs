@@ -296,3 +296,23 @@ fn the_adaptive_contact_solver_steps_without_allocating() {
     assert_eq!(n, 0, "ContactDopri5 step allocated {n} times");
     assert!(solver.events().is_empty() && solver.stats().accepted > 10);
 }
+
+#[test]
+fn the_implicit_contact_solver_steps_without_allocating() {
+    use lagrange_core::constraints::{ContactOptions, ContactRadau5};
+    // The same run in Radau5: Jacobians of the mode's accelerations by dual numbers,
+    // factorisations and Newton iterations, the event functions and the projection.
+    let start = State::new(0.0, [1.0, 0.0], [0.0, 0.0]);
+    let settings = Radau5::new(1e-9, 1e-9);
+    let mut solver =
+        ContactRadau5::new(&SlidingOnFloor, settings, &start, ContactOptions::default()).unwrap();
+    solver.step(10.0).unwrap();
+    let n = allocations(|| {
+        while solver.t() < 10.0 {
+            solver.step(10.0).unwrap();
+            std::hint::black_box(solver.dense().eval(solver.t()));
+        }
+    });
+    assert_eq!(n, 0, "ContactRadau5 step allocated {n} times");
+    assert!(solver.events().is_empty() && solver.stats().accepted > 10);
+}

@@ -83,6 +83,52 @@ pub fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> 
     0.5 * width * sum
 }
 
+/// A start on the sphere and its closed-form release, for the tests that check a located release:
+/// the particle at angle θ₀ from the top with speed v₀ along the sphere (radius r, gravity g).
+#[derive(Clone, Copy, Debug)]
+pub struct Release {
+    /// The sphere's radius.
+    pub r: f64,
+    /// Gravity.
+    pub g: f64,
+    /// The start's angle from the top.
+    pub theta0: f64,
+    /// The start's speed along the sphere.
+    pub v0: f64,
+}
+
+impl Release {
+    /// (position, velocity) in the plane of the great circle, sphere centre at the origin.
+    pub fn state(self) -> ([f64; 2], [f64; 2]) {
+        let (sin, cos) = self.theta0.sin_cos();
+        (
+            [self.r * sin, self.r * cos],
+            [self.v0 * cos, -self.v0 * sin],
+        )
+    }
+
+    /// The speed at angle θ, by energy: v² = v₀² + 2gr(cos θ₀ − cos θ), the difference written
+    /// 2 sin((θ + θ₀)/2) sin((θ − θ₀)/2) so that it keeps its relative accuracy near θ₀.
+    pub fn speed(self, theta: f64) -> f64 {
+        let drop = 2.0 * (0.5 * (theta + self.theta0)).sin() * (0.5 * (theta - self.theta0)).sin();
+        (self.v0 * self.v0 + 2.0 * self.g * self.r * drop).sqrt()
+    }
+
+    /// The closed form of the release: (t*, cos θ*). The normal force m(g cos θ − v²/r) vanishes
+    /// at cos θ* = (2 cos θ₀ + v₀²/(gr))/3, reached at t* = ∫_θ₀^θ* r dθ / v(θ). With θ = θ₀ + u²,
+    /// dθ = 2u du: the integrand 2ur/v(θ₀ + u²) is analytic in u also from rest
+    /// (v² = u²·(2gr sin θ₀ + O(u²)) then), so 400 panels of 5-point Gauss–Legendre are exact to
+    /// round-off.
+    pub fn release(self) -> (f64, f64) {
+        let (r, g) = (self.r, self.g);
+        let cos_star = (2.0 * self.theta0.cos() + self.v0 * self.v0 / (g * r)) / 3.0;
+        let theta_star = cos_star.acos();
+        let integrand = |u: f64| 2.0 * u * r / self.speed(self.theta0 + u * u);
+        let end = (theta_star - self.theta0).sqrt();
+        (gauss_legendre(integrand, 0.0, end, 400), cos_star)
+    }
+}
+
 pub fn run(plots: &Path) -> Vec<Check> {
     use sphere_release::{Coords, SphereRelease, State};
     let sys = SphereRelease {

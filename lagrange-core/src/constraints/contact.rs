@@ -155,6 +155,10 @@ fn substep<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usi
     Ok((qn, vn))
 }
 
+/// A (sub)step of length τ from (t, q, q̇) in a held mode, projected onto its rows: (q, q̇) at t + τ.
+pub(super) type Substep<'a, const N: usize, const C: usize> =
+    dyn Fn(f64, &[f64; N], &[f64; N], f64, &Mode<C>) -> Result<([f64; N], [f64; N])> + 'a;
+
 /// The event function of every row in `mode` (+∞ for rows without one).
 pub(super) fn event_values<
     M: Constraints<N, K, C>,
@@ -303,6 +307,21 @@ impl<const C: usize> ContactRk4<C> {
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<()> {
+        self.step_by(model, state, h, &|t, q, v, tau, mode| {
+            substep(model, t, q, v, tau, mode)
+        })
+    }
+
+    /// [`step`](Self::step) with `substep(t, q, v, τ, mode)` as the (sub)step of length τ in a
+    /// held mode, projected onto the mode's rows: RK4 for [`step`](Self::step), another one-step
+    /// method for [`step_with`](Self::step_with).
+    pub(super) fn step_by<M: Constraints<N, K, C>, const N: usize, const K: usize>(
+        &mut self,
+        model: &M,
+        state: &mut State<M::Coords>,
+        h: f64,
+        substep: &Substep<'_, N, C>,
+    ) -> Result<()> {
         check_step_at(state.t, h)?;
         self.options.validate()?;
         model.validate()?;
@@ -322,7 +341,7 @@ impl<const C: usize> ContactRk4<C> {
             let span = t_end - t;
             // A sliding cone continues its slip direction of this (sub)step's start.
             cone::refresh_references(model, t, &q, &v, span, &mut mode)?;
-            let (q1, v1) = substep(model, t, &q, &v, span, &mode)?;
+            let (q1, v1) = substep(t, &q, &v, span, &mode)?;
             let phi1 = event_values(model, t_end, &q1, &v1, &mode)?;
             let triggered = triggered_rows(model, t, &q, &v, &mode, &armed, &phi1);
             if !triggered.iter().any(|&b| b) {
@@ -336,8 +355,8 @@ impl<const C: usize> ContactRk4<C> {
             let mut first: Option<(f64, usize, [f64; N], [f64; N])> = None;
             for i in 0..C {
                 if triggered[i] {
-                    let hit =
-                        self.locate(model, t, &q, &v, span, &mode, i, phi0[i], phi1[i], (q1, v1))?;
+                    let (mode, phi, end) = (&mode, (phi0[i], phi1[i]), (q1, v1));
+                    let hit = self.locate(model, substep, (t, &q, &v), span, mode, i, phi, end)?;
                     if first.is_none_or(|f| hit.0 < f.0) {
                         first = Some((hit.0, i, hit.1, hit.2));
                     }
@@ -394,14 +413,12 @@ impl<const C: usize> ContactRk4<C> {
     fn locate<M: Constraints<N, K, C>, const N: usize, const K: usize>(
         &self,
         model: &M,
-        t: f64,
-        q: &[f64; N],
-        v: &[f64; N],
+        substep: &Substep<'_, N, C>,
+        (t, q, v): (f64, &[f64; N], &[f64; N]),
         span: f64,
         mode: &Mode<C>,
         row: usize,
-        phi_start: f64,
-        phi_end: f64,
+        (phi_start, phi_end): (f64, f64),
         end: ([f64; N], [f64; N]),
     ) -> Result<(f64, [f64; N], [f64; N])> {
         let (mut a, mut fa) = (0.0, phi_start);
@@ -411,7 +428,7 @@ impl<const C: usize> ContactRk4<C> {
             let mut found = false;
             for k in (1..=40).rev() {
                 let tau = span * 0.5f64.powi(k);
-                let sample = substep(model, t, q, v, tau, mode)?;
+                let sample = substep(t, q, v, tau, mode)?;
                 let f = event_values(model, t + tau, &sample.0, &sample.1, mode)?[row];
                 if f > 0.0 {
                     (a, fa, found) = (tau, f, true);
@@ -433,7 +450,7 @@ impl<const C: usize> ContactRk4<C> {
             if !(c > a && c < b) {
                 c = 0.5 * (a + b);
             }
-            let sc = substep(model, t, q, v, c, mode)?;
+            let sc = substep(t, q, v, c, mode)?;
             let fc = event_values(model, t + c, &sc.0, &sc.1, mode)?[row];
             if fc <= 0.0 {
                 (b, fb, sb) = (c, fc, sc);

@@ -212,12 +212,14 @@ mod cone;
 mod consistency;
 mod contact;
 mod forces;
+mod held;
 mod mode;
 mod projection;
+mod routing;
 mod rows;
 mod solve;
 
-pub use adaptive::{integrate_declared_contacts, ContactAdaptive, ContactDop853, ContactDopri5};
+pub use adaptive::{ContactAdaptive, ContactDop853, ContactDopri5, ContactRadau5};
 pub use consistency::{
     check_consistent, check_velocity_rows_affine, consistent_state, consistent_state_holding,
     CONSISTENCY_TOLERANCE,
@@ -226,6 +228,7 @@ pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChan
 pub use forces::{constraint_forces, ConstraintForces};
 pub use mode::infer_mode;
 pub use projection::project;
+pub use routing::integrate_declared_contacts;
 pub use rows::{constraint_rows, holonomic_values, ConstraintRows};
 pub use solve::{accelerations, accelerations_in_mode, ConstrainedAccelerations};
 

@@ -476,11 +476,13 @@ pub(crate) fn initial_step_on<const N: usize>(
     }
 }
 
-/// The step size and the previous error of an embedded pair's controller.
+/// The step size and the previous error of an explicit embedded pair's controller: the memory
+/// ([`EmbeddedPair::Memory`](super::EmbeddedPair::Memory)) of [`Dopri5`] and
+/// [`Dop853`](super::Dop853) from one step to the next.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Controller {
-    pub h: f64,
-    pub fac_old: f64,
+pub struct Controller {
+    pub(crate) h: f64,
+    pub(crate) fac_old: f64,
 }
 
 /// The step loop and PI step-size controller shared by the embedded pairs (Dopri5, Dop853):

@@ -280,7 +280,7 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     h: f64,
     stats: &mut Stats,
 ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
-    super::newton::refuse_contacts::<M, N>(tableau.name)?;
+    super::newton::refuse_contacts::<M, N>(tableau.name, super::newton::CONTACT_METHODS)?;
     let v0 = SVector::<f64, N>::from(*v);
     let q0 = SVector::<f64, N>::from(*q);
     let p0 = SVector::<f64, N>::from(mechanism.momenta_at(t, q, v));
@@ -585,6 +585,16 @@ fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
 /// [module docs](self)). Per step: N unknowns, a simplified Newton iteration with one plain
 /// evaluation of (p, ṗ) per iteration.
 ///
+/// Stepped on its own (`sys.step::<ImplicitMidpoint>`, [`FixedStepper`](super::FixedStepper)), it
+/// refuses a declaration with `#[unilateral]` or `#[friction]` rows up front
+/// ([`Error::UnsuitableMethod`], the state unchanged): their contact mode switches inside a step.
+/// Such a declaration is integrated with the mode held per step and its switches located by
+/// [`ContactRk4::step_with::<ImplicitMidpoint, …>`](crate::ContactRk4::step_with) (this method in
+/// the contact stepper's event loop: a step cut at an event and the rest taken as a shorter step),
+/// by [`ContactRk4`](crate::ContactRk4) with RK4, and by the adaptive [`Dopri5`](super::Dopri5),
+/// [`Dop853`](super::Dop853) and [`Radau5`](super::Radau5) (their `integrate` takes
+/// [`ContactAdaptive`](crate::constraints::ContactAdaptive)).
+///
 /// ```
 /// use lagrange_core::{ImplicitMidpoint, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
@@ -619,6 +629,10 @@ pub struct ImplicitMidpoint;
 /// The 2-stage Gauss–Legendre method on y = (q, p): order 4, symmetric, A-stable, symplectic for
 /// any Lagrangian, conserves quadratic invariants (see the [module docs](self)). Per step: 2N
 /// unknowns, a simplified Newton iteration with two plain evaluations of (p, ṗ) per iteration.
+///
+/// Stepped on its own it refuses a declaration with `#[unilateral]` or `#[friction]` rows up front,
+/// as [`ImplicitMidpoint`] does; [`ContactRk4::step_with::<GaussLegendre2, …>`](crate::ContactRk4::step_with)
+/// integrates them (see [`ImplicitMidpoint`] for the other methods that do).
 ///
 /// ```
 /// use lagrange_core::{GaussLegendre2, Mechanism, State};

@@ -3,15 +3,15 @@
 //! output and events, [`Stats`] — implemented by [`FixedStepper`] for every [`Integrator`], by
 //! [`Dopri5Stepper`], [`Dop853Stepper`] and [`Radau5Stepper`], and by the contact solvers
 //! [`ContactSolver`](crate::constraints::ContactSolver) (RK4) and
-//! [`ContactDopri5`](crate::constraints::ContactDopri5) (adaptive)); `sys.step::<I>(&mut s, h)` is
-//! one validated step.
+//! [`ContactAdaptive`](crate::constraints::ContactAdaptive) (Dopri5, Dop853, Radau5));
+//! `sys.step::<I>(&mut s, h)` is one validated step.
 //!
 //! | method | order | steps | evaluations of q̈ per step | geometric properties |
 //! |---|---|---|---|---|
 //! | [`Rk4`] | 4 | fixed | 4 | none (energy drifts) |
 //! | [`Dopri5`] | 5(4) | adaptive, dense output (order 4), events | 6 (FSAL) | none |
 //! | [`Dop853`] | 8(5,3) | adaptive, dense output (order 7), events | 12 (FSAL), + 3 for the dense output | none |
-//! | [`Radau5`] | 5 | adaptive, dense output (order 3), events; for stiff mechanisms | simplified Newton: 3 per iteration (usually 1–4 iterations), + 1 at the new point; one Jacobian of q̈ (2 dual passes) and one factorisation reused across steps while the iteration contracts well | L-stable |
+//! | [`Radau5`] | 5 | adaptive, dense output (order 3), events, contacts; for stiff mechanisms | simplified Newton: 3 per iteration (usually 1–4 iterations), + 1 at the new point; one Jacobian of q̈ (2 dual passes) and one factorisation reused across steps while the iteration contracts well | L-stable |
 //! | [`ImplicitMidpoint`] | 2 | fixed | simplified Newton: 1 plain evaluation of (p, ṗ) per iteration; one Jacobian, reused across steps while the iteration contracts well | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`GaussLegendre2`] | 4 | fixed | simplified Newton: 2 plain evaluations of (p, ṗ) per iteration; Jacobian reused as above | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations (with the multipliers of holonomic constraints: RATTLE) | symplectic in (q, p) for any Lagrangian, also with holonomic constraints; refuses velocity constraints, contacts and friction |
@@ -31,10 +31,14 @@
 //! midpoint and Gauss–Legendre integrate the constrained accelerations, check the state against
 //! the constraints before a step (`Dynamics::check_constraints`) and project after it
 //! (`Dynamics::project`). Unilateral contacts and friction switch their mode inside a step:
-//! Dopri5 and Dop853 then hold the mode per step and locate the switches
-//! ([`ContactDopri5`](crate::constraints::ContactDopri5)), RK4 has
-//! [`ContactRk4`](crate::ContactRk4), and Radau5, implicit midpoint and Gauss–Legendre refuse such a
-//! declaration with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
+//! Dopri5, Dop853 and Radau5 then hold the mode per step and locate the switches
+//! ([`ContactDopri5`](crate::constraints::ContactDopri5),
+//! [`ContactRadau5`](crate::constraints::ContactRadau5): their `integrate` and `sys.step` take
+//! them by themselves), RK4 has [`ContactRk4`](crate::ContactRk4), whose event loop also steps
+//! with implicit midpoint or Gauss–Legendre
+//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with)); stepped on their own (and the plain
+//! [`Radau5Stepper`]) they refuse such a declaration with
+//! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
 //! Störmer–Verlet and the variational integrator enforce holonomic constraints g(q, t) = 0 by
 //! RATTLE ([`rattle`]: the multipliers of a position stage solved by Newton with the step, then the
 //! velocity projection), which keeps them symplectic on the constraint manifold, and refuse
@@ -51,7 +55,7 @@ mod canonical;
 pub mod dop853;
 pub mod dopri5;
 pub mod implicit;
-mod newton;
+pub(crate) mod newton;
 pub mod pair;
 pub mod radau;
 pub mod rattle;
@@ -64,8 +68,8 @@ pub use dop853::{Dop853, Dop853Stepper};
 pub use dopri5::{DenseOutput, Dopri5, Dopri5Outcome, Dopri5Stats, Dopri5Stepper};
 pub use implicit::{GaussLegendre2, ImplicitMidpoint, ImplicitStepStats, NewtonMemory};
 pub use newton::{acceleration_jacobians, MAX_NEWTON_ITERATIONS};
-pub use pair::EmbeddedPair;
-pub use radau::{Radau5, Radau5Stepper};
+pub use pair::{AccelerationField, Accepted, EmbeddedPair, StepStart};
+pub use radau::{Radau5, Radau5Memory, Radau5Stepper};
 pub use rattle::holonomic_rows;
 pub use rk4::Rk4;
 pub use solver::{

@@ -24,12 +24,29 @@ pub fn acceleration_jacobians<M: Mechanism<N>, const N: usize>(
     q: &[f64; N],
     v: &[f64; N],
 ) -> Result<([f64; N], SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
+    jacobians_by_duals(t, q, v, |t, q, v| mechanism.accelerations_at(t, q, v))
+}
+
+/// f(t, q, q̇) and its exact Jacobians ∂f/∂q and ∂f/∂q̇ for any f(t, q, q̇) ∈ Rᴺ evaluated
+/// on gradient dual numbers (the accelerations of a mechanism, or of a constrained one with its
+/// contact mode held): two passes, seeded on q and then on q̇.
+#[allow(clippy::type_complexity)]
+pub(crate) fn jacobians_by_duals<const N: usize>(
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    f: impl Fn(
+        DualSVec<f64, N>,
+        &[DualSVec<f64, N>; N],
+        &[DualSVec<f64, N>; N],
+    ) -> Result<[DualSVec<f64, N>; N]>,
+) -> Result<([f64; N], SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
     let td = DualSVec::<f64, N>::from_re(t);
     let plain: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]));
-    let by_q = mechanism.accelerations_at(td, &seeded(q), &plain)?;
+    let by_q = f(td, &seeded(q), &plain)?;
     let plain_q: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
     let seeded_v = seeded(v);
-    let by_v = mechanism.accelerations_at(td, &plain_q, &seeded_v)?;
+    let by_v = f(td, &plain_q, &seeded_v)?;
     let value = std::array::from_fn(|i| by_q[i].re);
     Ok((value, jacobian_rows(&by_q), jacobian_rows(&by_v)))
 }
@@ -173,26 +190,36 @@ pub(crate) const fn carries_constraint_forces<M: Mechanism<N>, const N: usize>()
     !matches!(M::CONSTRAINTS, Some(0))
 }
 
-/// Refuses, for the implicit methods, a declaration with unilateral or friction rows: their contact
-/// mode switches inside a step, where a collocation polynomial has no switch to follow, so the
-/// Newton iteration would chase a discontinuous field. Decided by the declaration
-/// (`Dynamics::CONSTRAINT_COUNTS`, a constant), never by a state. [`Dopri5`](super::Dopri5) and
-/// [`Dop853`](super::Dop853) hold the mode per step and locate its switches; so does
-/// [`ContactRk4`](crate::ContactRk4) with a fixed step.
-pub(crate) fn refuse_contacts<M: Mechanism<N>, const N: usize>(method: &'static str) -> Result<()> {
+/// Refuses a declaration with unilateral or friction rows for a method that would integrate their
+/// contact mode re-inferred at every evaluation: it switches inside a step, where a collocation
+/// polynomial has no switch to follow, so the Newton iteration would chase a discontinuous field.
+/// Decided by the declaration (`Dynamics::CONSTRAINT_COUNTS`, a constant), never by a state.
+/// `handled_by` names what integrates them instead (the fixed-step implicit methods: the adaptive
+/// methods, [`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853) and [`Radau5`](super::Radau5),
+/// hold the mode per step and locate its switches; so does [`ContactRk4`](crate::ContactRk4) with
+/// a fixed step, also with implicit midpoint or Gauss–Legendre as its one-step method
+/// ([`ContactRk4::step_with`](crate::ContactRk4::step_with))).
+pub(crate) fn refuse_contacts<M: Mechanism<N>, const N: usize>(
+    method: &'static str,
+    handled_by: &str,
+) -> Result<()> {
     match M::CONSTRAINT_COUNTS {
         Some(c) if c.unilateral + c.friction > 0 => Err(crate::Error::UnsuitableMethod {
             method,
             reason: format!(
                 "the declaration has {} unilateral and {} friction rows, whose contact mode switches \
-                 inside a step; Dopri5 and Dop853 (the mode held per step, switches located) or \
-                 ContactRk4 integrate them",
+                 inside a step; {handled_by}",
                 c.unilateral, c.friction
             ),
         }),
         _ => Ok(()),
     }
 }
+
+/// What integrates contacts instead of a fixed-step implicit method, for [`refuse_contacts`].
+pub(crate) const CONTACT_METHODS: &str = "Dopri5, Dop853 and Radau5 (the mode held per step, \
+     switches located) or ContactRk4 integrate them, ContactRk4::step_with also with implicit \
+     midpoint or Gauss-Legendre 2 as its one-step method";
 
 /// An LU factorisation with partial pivoting of a matrix of S×S blocks of size N×N (an
 /// (S·N)-square matrix; stable Rust cannot name S·N as an array length, so the blocks are

@@ -1,29 +1,186 @@
-//! [`EmbeddedPair`]: the adaptive explicit Runge–Kutta pairs ([`Dopri5`], [`Dop853`]) as one
-//! interface over an acceleration closure, for a solver that evaluates its own right-hand side:
-//! the contact solver [`ContactAdaptive`](crate::constraints::ContactAdaptive), which freezes the
-//! constraint mode over each step.
+//! [`EmbeddedPair`]: the adaptive methods with an embedded error estimate and a dense output — the
+//! explicit Runge–Kutta pairs [`Dopri5`] and [`Dop853`] and the implicit [`Radau5`] — as one
+//! interface that takes accepted steps on any [`AccelerationField`], for a solver that evaluates
+//! its own right-hand side: the contact solver
+//! [`ContactAdaptive`](crate::constraints::ContactAdaptive), which holds the constraint mode over
+//! each step.
 
 use super::dop853::{self, Dop853};
-use super::dopri5::{self, DenseOutput, Dopri5};
+use super::dopri5::{self, adaptive_step, initial_step_on, Controller, DenseOutput, Dopri5};
+use super::newton::acceleration_jacobians;
+use super::radau::Radau5;
 use super::Stats;
 use crate::error::Result;
+use crate::mechanism::{diagnose, Mechanism};
 use crate::model::Coordinates;
+use nalgebra::SMatrix;
 
 mod sealed {
     pub trait Sealed {}
     impl Sealed for super::Dopri5 {}
     impl Sealed for super::Dop853 {}
+    impl Sealed for super::Radau5 {}
 }
 
-/// An adaptive embedded Runge–Kutta pair with dense output: [`Dopri5`] or [`Dop853`] (sealed).
-/// Its step-size control is the shared PI controller of both (their settings), its attempts and
-/// dense output are evaluated on any accelerations q̈(t, q, q̇).
+/// The right-hand side a step of an [`EmbeddedPair`] integrates: the accelerations q̈(t, q, q̇) of
+/// the first-order system y = (q, q̇), y' = (q̇, q̈), and their exact Jacobians for the Newton
+/// iteration of an implicit method. A mechanism's own accelerations are one; the accelerations of a
+/// constrained mechanism with its contact mode held fixed
+/// ([`accelerations_in_mode`](crate::constraints::accelerations_in_mode)) are another.
+///
+/// ```
+/// use lagrange_core::integrate::{AccelerationField, EmbeddedPair, Radau5, Stats};
+/// use nalgebra::SMatrix;
+///
+/// /// The harmonic oscillator q̈ = −q.
+/// struct Oscillator;
+/// impl AccelerationField<1> for Oscillator {
+///     fn accelerations(&self, _t: f64, q: &[f64; 1], _v: &[f64; 1]) -> lagrange_core::Result<[f64; 1]> {
+///         Ok([-q[0]])
+///     }
+///     fn jacobians(
+///         &self, _t: f64, _q: &[f64; 1], _v: &[f64; 1],
+///     ) -> lagrange_core::Result<(SMatrix<f64, 1, 1>, SMatrix<f64, 1, 1>)> {
+///         Ok((SMatrix::from([[-1.0]]), SMatrix::zeros()))
+///     }
+/// }
+///
+/// // Radau5 steps on it from q = 1 at rest up to t = 1, where q = cos 1.
+/// let method = Radau5::new(1e-10, 1e-10);
+/// let mut stats = Stats::default();
+/// let (mut t, mut q, mut v, mut a) = (0.0, [1.0], [0.0], [-1.0]);
+/// let mut memory = method.start(&Oscillator, (t, &q, &v, &a), &mut stats);
+/// while t < 1.0 {
+///     let step = method.step::<[f64; 1], 1>(&mut memory, &Oscillator, (t, &q, &v, &a), 1.0, &mut stats)?;
+///     (t, q, v) = (step.t, step.q, step.v);
+///     a = step.a.unwrap_or(Oscillator.accelerations(t, &q, &v)?);
+/// }
+/// assert!((q[0] - 1f64.cos()).abs() < 1e-9 && t == 1.0);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+pub trait AccelerationField<const N: usize> {
+    /// q̈ at (t, q, q̇).
+    fn accelerations(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<[f64; N]>;
+
+    /// The exact Jacobians ∂q̈/∂q and ∂q̈/∂q̇ at (t, q, q̇).
+    #[allow(clippy::type_complexity)]
+    fn jacobians(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+    ) -> Result<(SMatrix<f64, N, N>, SMatrix<f64, N, N>)>;
+}
+
+/// A mechanism's own accelerations ([`Mechanism`]'s, with the constraint forces of a constrained
+/// one), failures diagnosed; Jacobians by dual numbers ([`acceleration_jacobians`]).
+pub(crate) struct OfMechanism<'m, M>(pub(crate) &'m M);
+
+impl<M: Mechanism<N>, const N: usize> AccelerationField<N> for OfMechanism<'_, M> {
+    #[inline]
+    fn accelerations(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<[f64; N]> {
+        let m = self.0;
+        m.accelerations_at(t, q, v)
+            .map_err(|e| diagnose(m, t, q, v, e))
+    }
+
+    fn jacobians(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+    ) -> Result<(SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
+        let m = self.0;
+        let (_, by_q, by_v) =
+            acceleration_jacobians(m, t, q, v).map_err(|e| diagnose(m, t, q, v, e))?;
+        Ok((by_q, by_v))
+    }
+}
+
+/// The start of a step: (t, q, q̇, q̈).
+pub type StepStart<'a, const N: usize> = (f64, &'a [f64; N], &'a [f64; N], &'a [f64; N]);
+
+/// One accepted step of an [`EmbeddedPair`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Accepted<const N: usize> {
+    /// Its end time.
+    pub t: f64,
+    /// q at its end.
+    pub q: [f64; N],
+    /// q̇ at its end.
+    pub v: [f64; N],
+    /// q̈ at its end when the method evaluated it anyway (the explicit pairs: first stage of the
+    /// next step), `None` when it did not (Radau5).
+    pub a: Option<[f64; N]>,
+    /// The step's dense output.
+    pub dense: DenseOutput<N>,
+}
+
+/// An adaptive method with an embedded error estimate and a dense output: [`Dopri5`], [`Dop853`]
+/// or [`Radau5`] (sealed). Its steps are taken on any [`AccelerationField`] and accepted by its own
+/// error control; what it keeps from one step to the next (its step-size controller, and Radau5's
+/// Jacobian, factorisation and last collocation polynomial) is its [`Memory`](Self::Memory).
 pub trait EmbeddedPair: Copy + sealed::Sealed {
     /// The method's name.
     const NAME: &'static str;
+    /// What the method keeps from one step to the next.
+    type Memory<const N: usize>: Copy;
+
+    /// Checks the settings ([`Dopri5::validate`], [`Dop853::validate`], [`Radau5::validate`]).
+    fn validate(&self) -> Result<()>;
+
+    /// Most step attempts of one integration.
+    fn max_steps(&self) -> usize;
+
+    /// The memory at the start (t, q, q̇) with q̈ = `a` there: the first step chosen (HNW I §II.4)
+    /// unless the settings give it. Adds its evaluations to `stats`.
+    fn start<const N: usize>(
+        &self,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        stats: &mut Stats,
+    ) -> Self::Memory<N>;
+
+    /// The step the controller proposes next.
+    fn proposed_step<const N: usize>(memory: &Self::Memory<N>) -> f64;
+
+    /// One accepted step from `start` on `field`, not past `t_limit` (> t), rejecting and shrinking
+    /// as the method's error control requires; a step within 1 % of `t_limit` lands on it. The end
+    /// point is checked to be finite; it is not projected onto constraints. Adds its cost to
+    /// `stats`. On error the memory may have changed (a smaller step proposed), nothing else.
+    fn step<C: Coordinates<N>, const N: usize>(
+        &self,
+        memory: &mut Self::Memory<N>,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        t_limit: f64,
+        stats: &mut Stats,
+    ) -> Result<Accepted<N>>;
+
+    /// The step just accepted from `start`, recomputed as one step of the shorter length `h` (the
+    /// step cut at an event): its local error is within the tolerance as the longer one's was. The
+    /// controller's proposal for the next step is kept.
+    fn shorten<C: Coordinates<N>, const N: usize>(
+        &self,
+        memory: &mut Self::Memory<N>,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<Accepted<N>>;
+
+    /// The field changes at the current point (a contact mode switched): forgets what was
+    /// computed on the old one (Radau5's Jacobian, factorisation and the polynomial its Newton
+    /// iteration extrapolates); keeps the proposed step.
+    fn field_changed<const N: usize>(memory: &mut Self::Memory<N>);
+}
+
+/// What the explicit pairs differ in, below [`EmbeddedPair`]: their trials and dense outputs.
+trait ExplicitPair: Copy {
+    const NAME: &'static str;
     /// The order of the propagated solution, for the choice of the first step (HNW I §II.4).
     const ORDER: i32;
-    /// The controller's exponents (p, w): err^(p − β·w) (see the adaptive step loop).
+    /// The controller's exponents (p, w): err^(p − β·w) (see [`adaptive_step`]).
     const EXPONENTS: (f64, f64);
     /// What an attempted step hands to [`accept`](Self::accept): the new point and the stages.
     type Attempt<const N: usize>;
@@ -31,15 +188,11 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
     /// The step-control settings, in the form both methods share.
     fn controls(&self) -> Dopri5;
 
-    /// Checks the settings ([`Dopri5::validate`], [`Dop853::validate`]).
-    fn validate(&self) -> Result<()>;
-
-    /// One trial step of size h from (t, q, q̇) with q̈ = `a` there, on `acc`: (q₁, q̇₁), the error
-    /// norm, and what [`accept`](Self::accept) needs. Adds its evaluations to `stats`.
+    /// One trial step of size h: (q₁, q̇₁), the error norm, and what `accept` needs.
     #[allow(clippy::type_complexity)]
     fn attempt<C: Coordinates<N>, const N: usize>(
         &self,
-        start: (f64, &[f64; N], &[f64; N], &[f64; N]),
+        start: StepStart<'_, N>,
         h: f64,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
@@ -48,7 +201,7 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
     /// Completes an accepted attempt: q̈₁ at the new point and the step's dense output.
     fn accept<const N: usize>(
         &self,
-        start: (f64, &[f64; N], &[f64; N], &[f64; N]),
+        start: StepStart<'_, N>,
         h: f64,
         attempt: Self::Attempt<N>,
         stats: &mut Stats,
@@ -56,7 +209,7 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
     ) -> Result<([f64; N], DenseOutput<N>)>;
 }
 
-impl EmbeddedPair for Dopri5 {
+impl ExplicitPair for Dopri5 {
     const NAME: &'static str = "Dopri5";
     const ORDER: i32 = 5;
     const EXPONENTS: (f64, f64) = (0.2, 0.75);
@@ -67,13 +220,9 @@ impl EmbeddedPair for Dopri5 {
         *self
     }
 
-    fn validate(&self) -> Result<()> {
-        Dopri5::validate(self)
-    }
-
     fn attempt<C: Coordinates<N>, const N: usize>(
         &self,
-        start: (f64, &[f64; N], &[f64; N], &[f64; N]),
+        start: StepStart<'_, N>,
         h: f64,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
@@ -84,7 +233,7 @@ impl EmbeddedPair for Dopri5 {
 
     fn accept<const N: usize>(
         &self,
-        (t, q, v, _): (f64, &[f64; N], &[f64; N], &[f64; N]),
+        (t, q, v, _): StepStart<'_, N>,
         h: f64,
         (q1, v1, a1, k): Self::Attempt<N>,
         _stats: &mut Stats,
@@ -94,7 +243,7 @@ impl EmbeddedPair for Dopri5 {
     }
 }
 
-impl EmbeddedPair for Dop853 {
+impl ExplicitPair for Dop853 {
     const NAME: &'static str = "Dop853";
     const ORDER: i32 = 8;
     const EXPONENTS: (f64, f64) = (1.0 / 8.0, 0.2);
@@ -104,13 +253,9 @@ impl EmbeddedPair for Dop853 {
         self.shared()
     }
 
-    fn validate(&self) -> Result<()> {
-        Dop853::validate(self)
-    }
-
     fn attempt<C: Coordinates<N>, const N: usize>(
         &self,
-        start: (f64, &[f64; N], &[f64; N], &[f64; N]),
+        start: StepStart<'_, N>,
         h: f64,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
@@ -121,7 +266,7 @@ impl EmbeddedPair for Dop853 {
 
     fn accept<const N: usize>(
         &self,
-        start: (f64, &[f64; N], &[f64; N], &[f64; N]),
+        start: StepStart<'_, N>,
         h: f64,
         mut attempt: Self::Attempt<N>,
         stats: &mut Stats,
@@ -130,3 +275,137 @@ impl EmbeddedPair for Dop853 {
         dop853::accept(self, start, h, &mut attempt, stats, acc)
     }
 }
+
+/// [`EmbeddedPair::start`] of an explicit pair: the controller at the first step.
+fn explicit_start<P: ExplicitPair, const N: usize>(
+    method: &P,
+    field: &impl AccelerationField<N>,
+    start: StepStart<'_, N>,
+    stats: &mut Stats,
+) -> Controller {
+    let settings = method.controls();
+    let h = match settings.h_init {
+        Some(h) => h.min(settings.h_max),
+        None => initial_step_on(
+            |t, q, v| field.accelerations(t, q, v),
+            &settings,
+            start,
+            P::ORDER,
+            stats,
+        ),
+    };
+    Controller { h, fac_old: 1e-4 }
+}
+
+/// [`EmbeddedPair::step`] of an explicit pair: the shared step loop and PI controller
+/// ([`adaptive_step`]) over its trials, then its dense output.
+fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
+    method: &P,
+    control: &mut Controller,
+    field: &impl AccelerationField<N>,
+    start: StepStart<'_, N>,
+    t_limit: f64,
+    stats: &mut Stats,
+) -> Result<Accepted<N>> {
+    let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+    let ((q, v, attempt), h, t) = adaptive_step(
+        P::NAME,
+        &method.controls(),
+        P::EXPONENTS,
+        start.0,
+        t_limit,
+        control,
+        stats,
+        |h, stats| {
+            method
+                .attempt::<C, N>(start, h, stats, &acc)
+                .map(|(q1, v1, err, attempt)| ((q1, v1, attempt), err))
+        },
+    )?;
+    let (a, dense) = method.accept(start, h, attempt, stats, &acc)?;
+    Ok(Accepted {
+        t,
+        q,
+        v,
+        a: Some(a),
+        dense,
+    })
+}
+
+/// [`EmbeddedPair::shorten`] of an explicit pair: one trial of length h, accepted.
+fn explicit_shorten<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
+    method: &P,
+    field: &impl AccelerationField<N>,
+    start: StepStart<'_, N>,
+    h: f64,
+    stats: &mut Stats,
+) -> Result<Accepted<N>> {
+    let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+    let (q, v, _, attempt) = method.attempt::<C, N>(start, h, stats, &acc)?;
+    let (a, dense) = method.accept(start, h, attempt, stats, &acc)?;
+    Ok(Accepted {
+        t: start.0 + h,
+        q,
+        v,
+        a: Some(a),
+        dense,
+    })
+}
+
+/// The [`EmbeddedPair`] implementation of an explicit pair (the same for both).
+macro_rules! explicit_embedded_pair {
+    ($method:ty) => {
+        impl EmbeddedPair for $method {
+            const NAME: &'static str = <$method as ExplicitPair>::NAME;
+            type Memory<const N: usize> = Controller;
+
+            fn validate(&self) -> Result<()> {
+                <$method>::validate(self)
+            }
+
+            fn max_steps(&self) -> usize {
+                self.controls().max_steps
+            }
+
+            fn start<const N: usize>(
+                &self,
+                field: &impl AccelerationField<N>,
+                start: StepStart<'_, N>,
+                stats: &mut Stats,
+            ) -> Controller {
+                explicit_start(self, field, start, stats)
+            }
+
+            fn proposed_step<const N: usize>(memory: &Controller) -> f64 {
+                memory.h
+            }
+
+            fn step<C: Coordinates<N>, const N: usize>(
+                &self,
+                memory: &mut Controller,
+                field: &impl AccelerationField<N>,
+                start: StepStart<'_, N>,
+                t_limit: f64,
+                stats: &mut Stats,
+            ) -> Result<Accepted<N>> {
+                explicit_step::<Self, C, N>(self, memory, field, start, t_limit, stats)
+            }
+
+            fn shorten<C: Coordinates<N>, const N: usize>(
+                &self,
+                _memory: &mut Controller,
+                field: &impl AccelerationField<N>,
+                start: StepStart<'_, N>,
+                h: f64,
+                stats: &mut Stats,
+            ) -> Result<Accepted<N>> {
+                explicit_shorten::<Self, C, N>(self, field, start, h, stats)
+            }
+
+            fn field_changed<const N: usize>(_memory: &mut Controller) {}
+        }
+    };
+}
+
+explicit_embedded_pair!(Dopri5);
+explicit_embedded_pair!(Dop853);

@@ -118,18 +118,27 @@ impl Radau5 {
         Ok(())
     }
 
-    /// Integrates from `state` to `t_end` as [`Dopri5::integrate`](super::Dopri5::integrate) does:
-    /// on success `state` is the final state, on error it is unchanged.
+    /// Integrates from `state` to `t_end` as [`Dopri5::integrate`](crate::integrate::Dopri5::integrate) does:
+    /// on success `state` is the final state, on error it is unchanged. A declaration with
+    /// unilateral contacts or friction is integrated with its contact mode held per step and the
+    /// switches located ([`ContactRadau5`](crate::constraints::ContactRadau5), default
+    /// [`ContactOptions`](crate::constraints::ContactOptions)), as Dopri5 does.
     pub fn integrate<M: Mechanism<N>, const N: usize>(
         &self,
         mechanism: &M,
         state: &mut State<M::Coords>,
         t_end: f64,
         events: &mut [Event<'_, M::Coords>],
-        observer: impl FnMut(Observation<'_, M::Coords, N>),
+        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
     ) -> Result<Outcome<M::Coords>> {
         if !(t_end.is_finite() && t_end >= state.t) {
             return Err(Error::InvalidEndTime { t: state.t, t_end });
+        }
+        // Unilateral and friction rows: the mode held per step, its switches located.
+        if let Some(outcome) =
+            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
+        {
+            return outcome;
         }
         let mut stepper = Radau5Stepper::new(mechanism, *self, state)?;
         let outcome = stepper.integrate(t_end, events, observer)?;

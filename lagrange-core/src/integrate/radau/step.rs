@@ -1,0 +1,347 @@
+//! One accepted step of [`Radau5`] on any [`AccelerationField`] ([`EmbeddedPair`]): the step-size
+//! control of the [parent module](super) around the Newton iteration of
+//! [`iteration`](super::iteration), shared by the plain [`Radau5Stepper`](super::Radau5Stepper) and the contact solver
+//! [`ContactRadau5`](crate::constraints::ContactRadau5).
+
+// `!(a <= b)` comparisons are deliberate (they also catch NaN).
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use super::algebra::*;
+use super::iteration::Attempt;
+use super::Radau5;
+use crate::error::{Error, Result};
+use crate::integrate::dopri5::{initial_step_on, DenseOutput, Dopri5};
+use crate::integrate::pair::{AccelerationField, Accepted, EmbeddedPair, StepStart};
+use crate::integrate::Stats;
+use crate::model::{check_state, Coordinates};
+use nalgebra::SVector;
+
+/// What [`Radau5`] keeps from one step to the next ([`EmbeddedPair::Memory`]): the converted
+/// tolerances, the proposed step and the controller's history, the Jacobian and factorisation
+/// being reused, the Newton iteration's contraction estimates, and the last step's collocation
+/// polynomial (the next iteration's starting values).
+#[derive(Clone, Copy, Debug)]
+pub struct Radau5Memory<const N: usize> {
+    /// The converted tolerances (rtol′, atol′) and the Newton tolerance κ·tol.
+    pub(super) rtol: f64,
+    pub(super) atol: f64,
+    pub(super) newton_tol: f64,
+    pub(super) h: f64,
+    pub(super) jacobians: Option<Jacobians<N>>,
+    /// Whether the Jacobian was evaluated at the current point (no accepted step since).
+    pub(super) jacobian_current: bool,
+    pub(super) factors: Option<Factors<N>>,
+    /// Contraction rate of the last Newton iteration, and η of HW II (8.10).
+    pub(super) theta: f64,
+    pub(super) faccon: f64,
+    /// No step accepted yet.
+    pub(super) first: bool,
+    /// Gustafsson's controller: the last accepted step and its error.
+    pub(super) h_acc: f64,
+    pub(super) err_acc: f64,
+    /// The last accepted step's collocation polynomial; `None` at the start and after the field
+    /// changed (then the Newton iteration starts from Z = 0).
+    pub(super) last: Option<DenseOutput<N>>,
+}
+
+impl<const N: usize> Radau5Memory<N> {
+    /// After a failed attempt: a Jacobian not evaluated at the current point is evaluated anew.
+    pub(super) fn renew_jacobian_if_old(&mut self) {
+        if !self.jacobian_current {
+            self.jacobians = None;
+        }
+    }
+
+    /// scᵢ = atol′ + rtol′·|y₀ᵢ|.
+    pub(super) fn scale(&self, y: &Pair<N>) -> Pair<N> {
+        Pair {
+            q: y.q.map(|x| self.atol + self.rtol * x.abs()),
+            v: y.v.map(|x| self.atol + self.rtol * x.abs()),
+        }
+    }
+}
+
+/// The start of a step as first-order vectors: y₀ = (q₀, v₀) and f(y₀) = (v₀, q̈₀).
+fn first_order<const N: usize>((_, q, v, a): StepStart<'_, N>) -> (Pair<N>, Pair<N>) {
+    let (q, v) = (SVector::from(*q), SVector::from(*v));
+    (
+        Pair { q, v },
+        Pair {
+            q: v,
+            v: SVector::from(*a),
+        },
+    )
+}
+
+impl Radau5 {
+    /// The end of a converged step of h from (t, y₀): y₀ + Z₃, checked, and the collocation
+    /// polynomial through (0, y₀), (cᵢ, y₀ + Zᵢ) as the dense output, in the form
+    /// y₀ + θ r₂ + θ(1−θ) r₃ + θ²(1−θ) r₄: r₂ = Z₃, and with gᵢ = (Zᵢ − cᵢZ₃)/(cᵢ(1 − cᵢ)) = r₃ + cᵢr₄
+    /// (i = 1, 2), r₄ = (g₂ − g₁)/(c₂ − c₁), r₃ = g₁ − c₁r₄ (`radau5.f`'s CONTR5).
+    fn accepted<C: Coordinates<N>, const N: usize>(
+        (t, y0): (f64, &Pair<N>),
+        t_new: f64,
+        h: f64,
+        z: &[Pair<N>; 3],
+    ) -> Result<Accepted<N>> {
+        let y1 = Pair::combine([1.0, 1.0], [y0, &z[2]]);
+        let (q1, v1): ([f64; N], [f64; N]) = (y1.q.into(), y1.v.into());
+        check_state(&C::NAMES, t_new, &q1, &v1)?;
+        let make = |y0: &SVector<f64, N>, z: [&SVector<f64, N>; 3]| {
+            let mut r = [[0.0; N]; 8];
+            for i in 0..N {
+                let g1 = (z[0][i] - C1 * z[2][i]) / (C1 * (1.0 - C1));
+                let g2 = (z[1][i] - C2 * z[2][i]) / (C2 * (1.0 - C2));
+                let r4 = (g2 - g1) / (C2 - C1);
+                r[0][i] = y0[i];
+                r[1][i] = z[2][i];
+                r[2][i] = g1 - C1 * r4;
+                r[3][i] = r4;
+            }
+            r
+        };
+        let dense = DenseOutput::from_coefficients(
+            t,
+            h,
+            make(&y0.q, [&z[0].q, &z[1].q, &z[2].q]),
+            make(&y0.v, [&z[0].v, &z[1].v, &z[2].v]),
+        );
+        Ok(Accepted {
+            t: t_new,
+            q: q1,
+            v: v1,
+            a: None,
+            dense,
+        })
+    }
+}
+
+impl EmbeddedPair for Radau5 {
+    const NAME: &'static str = "Radau5";
+    type Memory<const N: usize> = Radau5Memory<N>;
+
+    fn validate(&self) -> Result<()> {
+        Radau5::validate(self)
+    }
+
+    fn max_steps(&self) -> usize {
+        self.max_steps
+    }
+
+    fn start<const N: usize>(
+        &self,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        stats: &mut Stats,
+    ) -> Radau5Memory<N> {
+        // `radau5.f`: rtol′ = 0.1·rtol^(2/3), atol′ = rtol′·atol/rtol; the Newton tolerance.
+        let rtol = 0.1 * self.rtol.powf(2.0 / 3.0);
+        let atol = rtol * (self.atol / self.rtol);
+        let newton_tol = self
+            .newton_tolerance
+            .unwrap_or((10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt())));
+        let h = match self.h_init {
+            Some(h) => h.min(self.h_max),
+            None => {
+                let dopri = Dopri5 {
+                    rtol,
+                    atol,
+                    h_max: self.h_max,
+                    ..Dopri5::default()
+                };
+                let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+                initial_step_on(acc, &dopri, start, 5, stats)
+            }
+        };
+        Radau5Memory {
+            rtol,
+            atol,
+            newton_tol,
+            h,
+            jacobians: None,
+            jacobian_current: false,
+            factors: None,
+            theta: self.jacobian_theta,
+            faccon: 1.0,
+            first: true,
+            h_acc: h,
+            err_acc: 1e-2,
+            last: None,
+        }
+    }
+
+    fn proposed_step<const N: usize>(memory: &Radau5Memory<N>) -> f64 {
+        memory.h
+    }
+
+    /// One accepted step, rejecting and shrinking as needed (`radau5.f`'s RADCOR). When the step
+    /// can no longer shrink (0.1·h below round-off of t) the last failure is returned
+    /// ([`Error::StepSizeUnderflow`] if steps were rejected only for accuracy or slow Newton
+    /// convergence).
+    fn step<C: Coordinates<N>, const N: usize>(
+        &self,
+        memory: &mut Radau5Memory<N>,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        t_limit: f64,
+        stats: &mut Stats,
+    ) -> Result<Accepted<N>> {
+        let t = start.0;
+        if !(t_limit > t) || !t_limit.is_finite() {
+            return Err(Error::InvalidEndTime { t, t_end: t_limit });
+        }
+        let (y0, f0) = first_order(start);
+        let mut reject = false;
+        let mut last_error: Option<Error> = None;
+        let nit = self.max_newton_iterations as f64;
+        loop {
+            let mut h = memory.h.min(self.h_max);
+            let last = t + 1.01 * h >= t_limit;
+            if last {
+                h = t_limit - t;
+            }
+            if !(t + 0.1 * h > t) {
+                return Err(last_error.unwrap_or(Error::StepSizeUnderflow {
+                    method: "Radau5",
+                    t,
+                    h,
+                }));
+            }
+            let (jac, factors) = Self::newton_matrices(memory, field, start, h, stats)?;
+            memory.factors = factors;
+            let attempt = match factors {
+                Some(f) => self.newton(memory, field, (t, &y0), h, &jac, &f, stats),
+                None => Attempt::Failed(
+                    0.5,
+                    Some(Error::NewtonBreakdown {
+                        method: "Radau5",
+                        t,
+                        h,
+                        iteration: 0,
+                        reason: "the Newton matrix is singular or not finite".to_string(),
+                    }),
+                ),
+            };
+            let (z, newt) = match attempt {
+                Attempt::Converged(z, newt) => (z, newt),
+                Attempt::Failed(factor, error) => {
+                    // `radau5.f` label 78 / the slow-convergence exit: shrink, refresh an old Jacobian.
+                    last_error = error.or(last_error);
+                    memory.h = h * factor;
+                    memory.renew_jacobian_if_old();
+                    reject = true;
+                    stats.rejected += 1;
+                    continue;
+                }
+            };
+            let f = factors.expect("converged with a factorisation");
+            let refine = memory.first || reject;
+            let err = Self::error(
+                memory,
+                field,
+                (t, &y0, &f0),
+                h,
+                &z,
+                (&jac, &f),
+                refine,
+                stats,
+            );
+            // h_new = h·fac·err^(−1/4) (`radau5.f`): fac falls with the Newton iterations taken.
+            let fac = SAFETY.min(SAFETY * (1.0 + 2.0 * nit) / (newt as f64 + 2.0 * nit));
+            let mut quot = (err.powf(0.25) / fac).clamp(0.125, 5.0);
+            if !(err < 1.0) {
+                memory.h = if memory.first { 0.1 * h } else { h / quot };
+                memory.renew_jacobian_if_old();
+                reject = true;
+                stats.rejected += 1;
+                continue;
+            }
+            // Accepted. Gustafsson's predictive controller (HW II (8.25)).
+            if !memory.first {
+                let gus = ((memory.h_acc / h) * (err * err / memory.err_acc).powf(0.25) / SAFETY)
+                    .clamp(0.125, 5.0);
+                quot = quot.max(gus);
+            }
+            memory.h_acc = h;
+            memory.err_acc = err.max(1e-2);
+            let t_new = if last { t_limit } else { t + h };
+            let accepted = Self::accepted::<C, N>((t, &y0), t_new, h, &z)?;
+            stats.accepted += 1;
+            memory.last = Some(accepted.dense);
+            memory.first = false;
+            memory.jacobian_current = false;
+            // The next step: keep h and the factorisation when the proposal is within keep_step and
+            // the Newton iteration converged fast; keep the Jacobian when it converged fast.
+            let mut h_new = (h / quot).min(self.h_max);
+            if reject {
+                h_new = h_new.min(h);
+            }
+            let fast = memory.theta <= self.jacobian_theta;
+            let (lo, hi) = self.keep_step;
+            let ratio = h_new / h;
+            memory.h = if fast && ratio >= lo && ratio <= hi && !last {
+                h
+            } else {
+                h_new
+            };
+            if !fast {
+                memory.jacobians = None;
+            }
+            return Ok(accepted);
+        }
+    }
+
+    /// The collocation equations solved anew for the shorter h, from the accepted step's
+    /// polynomial (excellent starting values: it interpolates there), with the Jacobian kept (or
+    /// evaluated at the step's start if none is) and a factorisation for h. Should the iteration
+    /// fail with a kept Jacobian, it is retried with one evaluated at the start; a second failure
+    /// is [`Error::NewtonBreakdown`].
+    fn shorten<C: Coordinates<N>, const N: usize>(
+        &self,
+        memory: &mut Radau5Memory<N>,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<Accepted<N>> {
+        let t = start.0;
+        let (y0, _) = first_order(start);
+        let mut fresh = memory.jacobians.is_none();
+        loop {
+            // The factorisation for h is not kept: the next step starts from the proposed one.
+            let (jac, factors) = Self::newton_matrices(memory, field, start, h, stats)?;
+            let attempt = match factors {
+                Some(f) => self.newton(memory, field, (t, &y0), h, &jac, &f, stats),
+                None => Attempt::Failed(0.5, None),
+            };
+            match attempt {
+                Attempt::Converged(z, _) => {
+                    let accepted = Self::accepted::<C, N>((t, &y0), t + h, h, &z)?;
+                    memory.last = Some(accepted.dense);
+                    memory.jacobian_current = false;
+                    return Ok(accepted);
+                }
+                Attempt::Failed(_, error) if fresh => {
+                    return Err(error.unwrap_or(Error::NewtonBreakdown {
+                        method: "Radau5",
+                        t,
+                        h,
+                        iteration: self.max_newton_iterations,
+                        reason: "the step cut at an event did not converge".to_string(),
+                    }))
+                }
+                Attempt::Failed(..) => {
+                    memory.jacobians = None;
+                    fresh = true;
+                }
+            }
+        }
+    }
+
+    fn field_changed<const N: usize>(memory: &mut Radau5Memory<N>) {
+        memory.jacobians = None;
+        memory.jacobian_current = false;
+        memory.factors = None;
+        memory.last = None;
+    }
+}
