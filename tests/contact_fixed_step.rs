@@ -201,3 +201,61 @@ fn ball_lands_and_block_stops_on_time_with_the_fixed_step_implicit_methods() {
     assert!((contact.events[0].t - t_stop).abs() < 1e-12);
     assert!(s.v.x.hypot(s.v.y) < 1e-12);
 }
+
+#[test]
+fn a_single_step_of_the_fixed_step_implicit_methods_holds_the_contact_mode() {
+    // `sys.step::<I>` on a declaration with unilateral or friction rows takes one step of
+    // `ContactRk4::step_with::<I>` from the state's own mode (default options: plastic impacts).
+    // The ball's fall is a quadratic, integrated exactly by both Gauss methods, and its landing is
+    // located to the event tolerance: after 1.5 s it rests on the floor at x = 0.2 + 0.5·1.5,
+    // to 1e-12, as the persistent stepper's run above.
+    fn ball_steps<I: lagrange::Integrator>() -> ball::State {
+        use ball::{Ball, Coords, State};
+        let sys = Ball { m: 0.3, g: G };
+        let mut s = State::new(0.0, Coords { x: 0.2, y: 1.3 }, Coords { x: 0.5, y: 0.0 });
+        for _ in 0..150 {
+            sys.step::<I>(&mut s, 1e-2).expect("step");
+        }
+        s
+    }
+    for (name, s) in [
+        ("Gauss-Legendre 2", ball_steps::<GaussLegendre2>()),
+        ("implicit midpoint", ball_steps::<ImplicitMidpoint>()),
+    ] {
+        assert!((s.t - 1.5).abs() < 1e-12, "{name}: t = {}", s.t);
+        assert!(
+            s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12 && (s.q.x - 0.95).abs() < 1e-12,
+            "{name}: {s:?}"
+        );
+    }
+    // The block sent up the rough ramp stops at u/(g(sin α + μₖ cos α)) and sticks: after 0.5 s
+    // (past the stop at 0.316 s) it is at rest where the closed form puts it,
+    // s = u²/(2g(sin α + μₖ cos α)) along the slope, to 1e-12 (exact steps, located stop).
+    use rough_ramp::{Coords, RoughRamp, State};
+    let (alpha, u) = (0.5f64, 2.0);
+    let (sn, cs) = alpha.sin_cos();
+    let sys = RoughRamp {
+        m: 2.0,
+        alpha,
+        g: G,
+        mu_k: 0.5,
+        mu_s: 0.6,
+    };
+    let mut s = State::new(
+        0.0,
+        Coords { x: 0.0, y: 0.0 },
+        Coords {
+            x: u * cs,
+            y: u * sn,
+        },
+    );
+    for _ in 0..50 {
+        sys.step::<GaussLegendre2>(&mut s, 1e-2).expect("step");
+    }
+    let reach = u * u / (2.0 * G * (sn + 0.5 * cs));
+    assert!(
+        (s.q.x - reach * cs).abs() < 1e-12 && (s.q.y - reach * sn).abs() < 1e-12,
+        "{s:?}"
+    );
+    assert!(s.v.x.abs() < 1e-12 && s.v.y.abs() < 1e-12, "{s:?}");
+}

@@ -325,6 +325,23 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     }
 
     #[doc(hidden)]
+    /// Hook for mechanisms with unilateral or friction rows: one step of `h` with the fixed-step
+    /// method `I`, the contact mode held over it and its switches located and applied
+    /// ([`ContactRk4::step_with`](crate::constraints::ContactRk4::step_with)), as
+    /// `sys.step::<ImplicitMidpoint>` and `sys.step::<GaussLegendre2>` promise (those
+    /// [`Integrator::HOLDS_CONTACT_MODE`](crate::integrate::Integrator::HOLDS_CONTACT_MODE)).
+    /// `None` (the default) when the declaration has no such rows.
+    #[inline]
+    fn step_contacts<I: crate::integrate::Integrator>(
+        &self,
+        state: &mut State<Self::Coords>,
+        h: f64,
+    ) -> Option<Result<()>> {
+        let _ = (state, h);
+        None
+    }
+
+    #[doc(hidden)]
     /// Hook for mechanisms with unilateral or friction rows: integrates from `state` to `t_end`
     /// with the adaptive method `method` (Dopri5, Dop853 or Radau5), the contact mode held within
     /// each step and its switches located ([`crate::constraints::ContactAdaptive`]), as
@@ -520,6 +537,13 @@ macro_rules! impl_mechanism {
                     v,
                     $crate::constraints::CONSISTENCY_TOLERANCE,
                 )
+            }
+            fn step_contacts<I: $crate::integrate::Integrator>(
+                &self,
+                state: &mut $crate::State<Self::Coords>,
+                h: f64,
+            ) -> Option<$crate::Result<()>> {
+                $crate::constraints::step_declared_contacts::<I, Self, $n, $k, _>(self, state, h)
             }
             fn integrate_contacts<P, O>(
                 &self,

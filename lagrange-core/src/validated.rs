@@ -162,6 +162,14 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
         self.0.check_constraints(t, q, v)
     }
     #[inline(always)]
+    fn step_contacts<I: crate::integrate::Integrator>(
+        &self,
+        state: &mut crate::model::State<Self::Coords>,
+        h: f64,
+    ) -> Option<Result<()>> {
+        self.0.step_contacts::<I>(state, h)
+    }
+    #[inline(always)]
     fn integrate_contacts<P, O>(
         &self,
         method: P,

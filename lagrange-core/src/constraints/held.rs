@@ -21,6 +21,14 @@ struct HeldMode<'m, M, const K: usize, const C: usize> {
     mode: Mode<C>,
 }
 
+/// Nothing is prepared: a held mode lives for one step.
+impl<M, const K: usize, const C: usize> crate::mechanism::Prepare for HeldMode<'_, M, K, C> {
+    type Prepared = ();
+    fn prepare(&self) -> Result<()> {
+        Ok(())
+    }
+}
+
 impl<M, const N: usize, const K: usize, const C: usize> Dynamics<N> for HeldMode<'_, M, K, C>
 where
     M: Dynamics<N> + Constraints<N, K, C>,
@@ -78,7 +86,7 @@ impl<const C: usize> ContactRk4<C> {
     /// mechanism with the step's mode held, projected onto the mode's rows; a step is cut at a
     /// located event, the mode switched, and the rest of h taken as a shorter step in the new mode.
     /// This is how implicit midpoint and Gauss–Legendre integrate unilateral contacts and friction
-    /// (`sys.step::<GaussLegendre2>` refuses such declarations). The methods on (q, p) stay
+    /// (a single `sys.step::<GaussLegendre2>` on such a declaration is one of these steps from the state's own mode; their steppers that keep working memory refuse it). The methods on (q, p) stay
     /// symmetric within a held mode only up to the projection, as on any constrained mechanism.
     ///
     /// ```

@@ -228,7 +228,7 @@ pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChan
 pub use forces::{constraint_forces, ConstraintForces};
 pub use mode::infer_mode;
 pub use projection::project;
-pub use routing::integrate_declared_contacts;
+pub use routing::{integrate_declared_contacts, step_declared_contacts};
 pub use rows::{constraint_rows, holonomic_values, ConstraintRows};
 pub use solve::{accelerations, accelerations_in_mode, ConstrainedAccelerations};
 

@@ -250,3 +250,31 @@ impl Radau5 {
         integrate_contacts(*self, model, state, t_end, options, events, observer)
     }
 }
+
+/// What the `Dynamics::step_contacts` hook of a constrained mechanism does: one step of `h` with
+/// the fixed-step method `I`, the contact mode held over it and its switches located and applied
+/// as [`ContactRk4`](super::ContactRk4) does ([`ContactRk4::step_with`](super::ContactRk4::step_with),
+/// default [`ContactOptions`], the mode inferred from `state`), when the declaration has
+/// unilateral or friction rows; `None` otherwise. On error `state` is unchanged.
+#[doc(hidden)]
+pub fn step_declared_contacts<I, M, const N: usize, const K: usize, const C: usize>(
+    model: &M,
+    state: &mut State<<M as crate::model::Model<N, K>>::Coords>,
+    h: f64,
+) -> Option<Result<()>>
+where
+    I: crate::integrate::Integrator,
+    M: Constraints<N, K, C> + crate::mechanism::Mechanism<N>,
+{
+    let counts = super::ConstraintCounts::of(&M::KINDS);
+    if counts.unilateral + counts.friction == 0 {
+        return None;
+    }
+    let step = || {
+        let mut contact = super::ContactRk4::new(model, state, ContactOptions::default())?;
+        let mut next = *state;
+        contact.step_with::<I, M, N, K>(model, &mut next, h)?;
+        Ok(next)
+    };
+    Some(step().map(|next| *state = next))
+}

@@ -585,10 +585,12 @@ fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
 /// [module docs](self)). Per step: N unknowns, a simplified Newton iteration with one plain
 /// evaluation of (p, ṗ) per iteration.
 ///
-/// Stepped on its own (`sys.step::<ImplicitMidpoint>`, [`FixedStepper`](super::FixedStepper)), it
-/// refuses a declaration with `#[unilateral]` or `#[friction]` rows up front
-/// ([`Error::UnsuitableMethod`], the state unchanged): their contact mode switches inside a step.
-/// Such a declaration is integrated with the mode held per step and its switches located by
+/// On a declaration with `#[unilateral]` or `#[friction]` rows, whose contact mode switches
+/// inside a step, a single `sys.step::<ImplicitMidpoint>` holds the mode of the step's start and
+/// locates its switches (one step of `ContactRk4::step_with`, below); its solver
+/// ([`FixedStepper`](super::FixedStepper), which keeps the Newton matrix between steps) refuses
+/// such a declaration up front ([`Error::UnsuitableMethod`], the state unchanged). Such a
+/// declaration is integrated with the mode held per step and its switches located by
 /// [`ContactRk4::step_with::<ImplicitMidpoint, …>`](crate::ContactRk4::step_with) (this method in
 /// the contact stepper's event loop: a step cut at an event and the rest taken as a shorter step),
 /// by [`ContactRk4`](crate::ContactRk4) with RK4, and by the adaptive [`Dopri5`](super::Dopri5),
@@ -630,9 +632,10 @@ pub struct ImplicitMidpoint;
 /// any Lagrangian, conserves quadratic invariants (see the [module docs](self)). Per step: 2N
 /// unknowns, a simplified Newton iteration with two plain evaluations of (p, ṗ) per iteration.
 ///
-/// Stepped on its own it refuses a declaration with `#[unilateral]` or `#[friction]` rows up front,
-/// as [`ImplicitMidpoint`] does; [`ContactRk4::step_with::<GaussLegendre2, …>`](crate::ContactRk4::step_with)
-/// integrates them (see [`ImplicitMidpoint`] for the other methods that do).
+/// On a declaration with `#[unilateral]` or `#[friction]` rows a single `sys.step` holds the
+/// contact mode over the step and its solver refuses the declaration, as for [`ImplicitMidpoint`];
+/// [`ContactRk4::step_with::<GaussLegendre2, …>`](crate::ContactRk4::step_with) integrates them
+/// (see [`ImplicitMidpoint`] for the other methods that do).
 ///
 /// ```
 /// use lagrange_core::{GaussLegendre2, Mechanism, State};
@@ -725,6 +728,7 @@ macro_rules! collocation_method {
         impl Integrator for $ty {
             const NAME: &'static str = $tableau.name;
             type Memory<const N: usize> = NewtonMemory<N, $stages>;
+            const HOLDS_CONTACT_MODE: bool = true;
 
             fn advance<M: Mechanism<N>, const N: usize>(
                 mechanism: &M,

@@ -86,12 +86,20 @@ use crate::model::State;
 /// A one-step method, as a type: `sys.step::<Rk4>(&mut state, h)` ([`Mechanism::step`]) is one
 /// validated step with it, and [`FixedStepper`] makes a solver of it. Implementations do not
 /// allocate and leave the state unchanged on error.
-pub trait Integrator {
+pub trait Integrator: Sized {
     /// The method's name, for reports and errors.
     const NAME: &'static str;
     /// Working memory a solver keeps from one step to the next: the implicit methods' factorised
     /// Newton matrix ([`NewtonMemory`]), nothing (`()`) for the others.
     type Memory<const N: usize>: Default + Copy;
+
+    /// Whether [`step`](Self::step) integrates a declaration with unilateral or friction rows by
+    /// holding the contact mode over the step and locating its switches
+    /// ([`ContactRk4::step_with`](crate::constraints::ContactRk4::step_with)): the implicit
+    /// collocation methods, whose Newton iteration needs one smooth right-hand side over a step.
+    /// The others evaluate such declarations with the mode read from each stage's state, or
+    /// refuse them (Störmer–Verlet, the variational integrator).
+    const HOLDS_CONTACT_MODE: bool = false;
 
     /// One step of h from (t, q, q̇) on raw arrays, without validation or projection, adding its
     /// cost to `stats`: (q, q̇) at t + h.
@@ -113,6 +121,11 @@ pub trait Integrator {
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<()> {
+        if Self::HOLDS_CONTACT_MODE {
+            if let Some(result) = mechanism.step_contacts::<Self>(state, h) {
+                return result;
+            }
+        }
         let mut memory = Self::Memory::<N>::default();
         let mut stats = Stats::default();
         solver::validated_step(mechanism, state, h, |t, q, v| {

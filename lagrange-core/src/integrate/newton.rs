@@ -219,7 +219,8 @@ pub(crate) fn refuse_contacts<M: Mechanism<N>, const N: usize>(
 /// What integrates contacts instead of a fixed-step implicit method, for [`refuse_contacts`].
 pub(crate) const CONTACT_METHODS: &str = "Dopri5, Dop853 and Radau5 (the mode held per step, \
      switches located) or ContactRk4 integrate them, ContactRk4::step_with also with implicit \
-     midpoint or Gauss-Legendre 2 as its one-step method";
+     midpoint or Gauss-Legendre 2 as its one-step method (what a single sys.step with either \
+     does)";
 
 /// An LU factorisation with partial pivoting of a matrix of S×S blocks of size N×N (an
 /// (S·N)-square matrix; stable Rust cannot name S·N as an array length, so the blocks are

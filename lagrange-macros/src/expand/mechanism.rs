@@ -159,6 +159,13 @@ fn constrained_overrides(
         fn check_constraints(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
             #constraints::check_consistent::<Self, #n, #k, #c>(self, t, q, v, #constraints::CONSISTENCY_TOLERANCE)
         }
+        fn step_contacts<__I: #p::lagrange_core::integrate::Integrator>(
+            &self,
+            state: &mut #p::State<Coords>,
+            h: f64,
+        ) -> #p::core::option::Option<#p::Result<()>> {
+            #constraints::step_declared_contacts::<__I, Self, #n, #k, #c>(self, state, h)
+        }
         fn integrate_contacts<__P, __O>(
             &self,
             method: __P,

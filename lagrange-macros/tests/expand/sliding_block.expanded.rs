@@ -323,6 +323,23 @@ pub mod sliding_block {
                 ::lagrange::__private::lagrange_core::constraints::CONSISTENCY_TOLERANCE,
             )
         }
+        fn step_contacts<
+            __I: ::lagrange::__private::lagrange_core::integrate::Integrator,
+        >(
+            &self,
+            state: &mut ::lagrange::__private::State<Coords>,
+            h: f64,
+        ) -> ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::Result<()>,
+        > {
+            ::lagrange::__private::lagrange_core::constraints::step_declared_contacts::<
+                __I,
+                Self,
+                2,
+                2,
+                2,
+            >(self, state, h)
+        }
         fn integrate_contacts<__P, __O>(
             &self,
             method: __P,
