@@ -363,6 +363,9 @@ pub(crate) fn potential_forces<M: Model<N, K>, S: Scalar, const N: usize, const 
     if !M::HAS_POTENTIAL {
         return None;
     }
+    if let Some(gradient) = model.potential_gradient(t, q, x, rows) {
+        return Some(-gradient);
+    }
     let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
     let xd: [DualSVec<S, N>; K] =
         std::array::from_fn(|i| DualSVec::new(x[i], Derivative::new(rows[i])));

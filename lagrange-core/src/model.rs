@@ -200,6 +200,24 @@ pub trait Model<const N: usize, const K: usize> {
         D::zero()
     }
 
+    /// ∇V at (t, q) taken potential by potential, each on dual numbers seeded only on the
+    /// coordinates it depends on, from x and its Jacobian rows J (already known to the caller);
+    /// `None` (the default) when the model does not provide it and ∇V is taken on all N at once.
+    /// `#[mechanism]` writes it when every declared potential names fewer than N coordinates (a
+    /// spring between two masses of a chain): the cost of the gradient is then proportional to
+    /// the potentials' own coordinates, not to N per potential.
+    #[inline(always)]
+    fn potential_gradient<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        x: &[S; K],
+        rows: &[Option<nalgebra::SVector<S, N>>; K],
+    ) -> Option<nalgebra::SVector<S, N>> {
+        let _ = (t, q, x, rows);
+        None
+    }
+
     /// Adds applied forces at (t, q, q̇): Cartesian components on the rows of x they act on
     /// (`cartesian_force`), and forces directly on coordinates (`generalized_force`).
     /// `x` and `x_dot` are the Cartesian positions and velocities at the same state.

@@ -32,7 +32,7 @@ use crate::dynamics::EquationsOfMotion;
 use crate::geometry::Scalar;
 use crate::model::Model;
 use nalgebra::{Const, SMatrix, SVector, U1};
-use num_dual::{Derivative, DualSVec, HyperDualVec};
+use num_dual::{Derivative, HyperDualVec};
 
 /// A hyper-dual number with a `W`-wide first part (the seeded coordinates of one body) and a scalar
 /// second part (the direction of motion (q̇, 1)).
@@ -383,11 +383,8 @@ fn potential_gradient<
             rows[i] = row;
         }
     }
-    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
-    let xd: [DualSVec<S, N>; K] =
-        std::array::from_fn(|i| DualSVec::new(x[i], Derivative::some(rows[i])));
-    let v = model.potential(DualSVec::from_re(t), &qd, &xd);
-    v.eps.0.unwrap_or_else(SVector::zeros)
+    let rows: [Option<SVector<S, N>>; K] = rows.map(Some);
+    crate::dynamics::potential_forces(model, t, q, x, &rows).map_or_else(SVector::zeros, |f| -f)
 }
 
 #[cfg(test)]

@@ -220,6 +220,16 @@ impl<M: Model<N, K> + Prepare, const N: usize, const K: usize> Model<N, K> for V
         self.0.potential(t, q, x)
     }
     #[inline(always)]
+    fn potential_gradient<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        x: &[S; K],
+        rows: &[Option<nalgebra::SVector<S, N>>; K],
+    ) -> Option<nalgebra::SVector<S, N>> {
+        self.0.potential_gradient(t, q, x, rows)
+    }
+    #[inline(always)]
     fn applied_forces<D: Scalar>(
         &self,
         t: D,

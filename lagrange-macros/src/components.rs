@@ -22,7 +22,12 @@ use syn::{BinOp, Block, Expr, Ident, Stmt};
 /// ([`component_names`]). `None` when every row may depend on every
 /// coordinate (nothing for `Model::DEPENDS` to rule out).
 pub fn row_dependencies(model: &Model) -> Option<Vec<Vec<bool>>> {
-    let n = model.dof();
+    let (rows, _) = dependencies(model);
+    rows.iter().any(|r| r.contains(&false)).then_some(rows)
+}
+
+/// The slots of each coordinate, by name (an array coordinate holds several).
+pub fn coordinate_slots(model: &Model) -> BTreeMap<String, Vec<usize>> {
     let mut slots_of: BTreeMap<String, Vec<usize>> = BTreeMap::new();
     let mut slot = 0;
     for field in model.coords {
@@ -32,6 +37,14 @@ pub fn row_dependencies(model: &Model) -> Option<Vec<Vec<bool>>> {
         );
         slot += field.slots();
     }
+    slots_of
+}
+
+/// Which coordinates each row of x and each body (by name, all members of a family together) can
+/// depend on: see [`row_dependencies`].
+pub fn dependencies(model: &Model) -> (Vec<Vec<bool>>, BTreeMap<String, Vec<bool>>) {
+    let n = model.dof();
+    let slots_of = coordinate_slots(model);
     let mut body_deps: BTreeMap<String, Vec<bool>> = BTreeMap::new();
     let mut rows = vec![vec![true; n]; model.rows];
     // The coordinates a set of names can depend on, given the bodies read so far.
@@ -77,7 +90,7 @@ pub fn row_dependencies(model: &Model) -> Option<Vec<Vec<bool>>> {
         }
         body_deps.insert(name, deps);
     }
-    rows.iter().any(|r| r.contains(&false)).then_some(rows)
+    (rows, body_deps)
 }
 
 /// The names each row of a body of `shape` (one member, not a family) depends on, with the block's

@@ -15,6 +15,7 @@ mod expand;
 mod lift;
 mod names;
 mod optimize;
+mod potentials;
 mod structure;
 
 #[cfg(test)]

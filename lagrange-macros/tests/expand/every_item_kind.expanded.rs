@@ -208,6 +208,30 @@ pub mod everything {
             }
         }
     }
+    impl Everything {
+        #[doc(hidden)]
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __potential_spring<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+            __x: &[__D; 17],
+        ) -> __D {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta, phi] = *__q;
+            let k = <__D>::from(self.k);
+            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
+            let __value: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
+            __value
+        }
+    }
     impl ::lagrange::__private::Model<2, 17> for Everything {
         type Coords = Coords;
         const INERTIAL: usize = 15;
@@ -418,6 +442,69 @@ pub mod everything {
             let __potential_spring: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
             __potential += __potential_spring;
             __potential
+        }
+        #[inline]
+        fn potential_gradient<__S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __S,
+            __q: &[__S; 2],
+            __x: &[__S; 17],
+            __rows: &[::lagrange::__private::core::option::Option<
+                ::lagrange::__private::nalgebra::SVector<__S, 2>,
+            >; 17],
+        ) -> ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::nalgebra::SVector<__S, 2>,
+        > {
+            let mut __gradient = ::lagrange::__private::nalgebra::SVector::<
+                __S,
+                2,
+            >::zeros();
+            {
+                let __qn: [::lagrange::__private::num_dual::DualSVec<__S, 1>; 2] = [
+                    <::lagrange::__private::num_dual::DualSVec<
+                        __S,
+                        1,
+                    >>::from_re(__q[0usize]),
+                    <::lagrange::__private::num_dual::DualSVec<
+                        __S,
+                        1,
+                    >>::from_re(__q[1usize])
+                        .derivative(0),
+                ];
+                let __xn: [::lagrange::__private::num_dual::DualSVec<__S, 1>; 17] = ::lagrange::__private::core::array::from_fn(|
+                    __i|
+                {
+                    <::lagrange::__private::num_dual::DualSVec<
+                        __S,
+                        1,
+                    >>::new(
+                        __x[__i],
+                        ::lagrange::__private::num_dual::Derivative::new(
+                            __rows[__i]
+                                .map(|__r| {
+                                    ::lagrange::__private::nalgebra::SVector::<
+                                        __S,
+                                        1,
+                                    >::from([__r[1]])
+                                }),
+                        ),
+                    )
+                });
+                let __v = self
+                    .__potential_spring(
+                        <::lagrange::__private::num_dual::DualSVec<
+                            __S,
+                            1,
+                        >>::from_re(__t),
+                        &__qn,
+                        &__xn,
+                    );
+                if let ::lagrange::__private::core::option::Option::Some(__g) = __v.eps.0
+                {
+                    __gradient[1] += __g[0];
+                }
+            }
+            ::lagrange::__private::core::option::Option::Some(__gradient)
         }
         #[allow(unused_variables, clippy::all)]
         fn applied_forces<__D: ::lagrange::__private::Scalar>(

@@ -119,6 +119,52 @@ pub mod fpu {
     }
 }
 
+/// The same chain with each spring declared as a potential of its own: each gradient is taken
+/// on dual numbers seeded on the spring's own two coordinates.
+#[mechanism]
+pub mod fpu_springs {
+    pub const MASSES: usize = 6;
+    pub struct Coords {
+        pub q: [f64; MASSES],
+    }
+    pub struct Fpu {
+        pub m: f64,
+        pub omega: f64,
+    }
+    #[particle(mass = m, count = MASSES)]
+    fn mass(i: usize) -> Vec2 {
+        vec2(q[i], 0.0)
+    }
+    #[potential]
+    fn stiff1() -> f64 {
+        omega * omega / 4.0 * (q[1] - q[0]).powi(2)
+    }
+    #[potential]
+    fn stiff2() -> f64 {
+        omega * omega / 4.0 * (q[3] - q[2]).powi(2)
+    }
+    #[potential]
+    fn stiff3() -> f64 {
+        omega * omega / 4.0 * (q[5] - q[4]).powi(2)
+    }
+    #[potential]
+    fn wall_left() -> f64 {
+        q[0].powi(4)
+    }
+    #[potential]
+    fn soft1() -> f64 {
+        (q[2] - q[1]).powi(4)
+    }
+    #[potential]
+    fn soft2() -> f64 {
+        (q[4] - q[3]).powi(4)
+    }
+    #[potential]
+    fn wall_right() -> f64 {
+        q[5].powi(4)
+    }
+}
+
 /// The FPU chain's accelerations written by hand (unit masses).
 fn hw_fpu(omega: f64, q: &[f64; 6]) -> [f64; 6] {
     let w2 = omega * omega;
@@ -657,6 +703,15 @@ fn main() {
                 0.0,
                 fpu::Coords { q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1] },
                 fpu::Coords { q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2] },
+            );
+            acc += calls(sys, &s, n, validated);
+        }
+        "fpu_springs" => {
+            let sys = fpu_springs::Fpu { m: 1.0, omega: 50.0 };
+            let s = State::new(
+                0.0,
+                fpu_springs::Coords { q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1] },
+                fpu_springs::Coords { q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2] },
             );
             acc += calls(sys, &s, n, validated);
         }
