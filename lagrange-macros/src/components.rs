@@ -1,4 +1,4 @@
-//! Which coordinates each Cartesian row can depend on ([`row_dependencies`], the generated
+//! Which coordinates each Cartesian row can depend on ([`dependencies`]; the generated
 //! `Model::DEPENDS`), from the names each row of a body's position can depend on, read component by
 //! component where the declaration writes the components out. `vec2(x, y)` gives rows depending on `x` and
 //! on `y` alone; `planar(centre, angle)` gives the angle row the names of `angle` alone. What is
@@ -15,17 +15,6 @@ use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::{BinOp, Block, Expr, Ident, Stmt};
 
-/// Which coordinates each row of x can depend on, as the declaration states it: a body's rows
-/// depend on the coordinates its function names (every element of an array coordinate it names)
-/// and on those of the bodies it names, transitively; where the body writes its components out
-/// (`vec2(x, y)`, `planar(centre, angle)`), each row on the names of its own component
-/// ([`component_names`]). `None` when every row may depend on every
-/// coordinate (nothing for `Model::DEPENDS` to rule out).
-pub fn row_dependencies(model: &Model) -> Option<Vec<Vec<bool>>> {
-    let (rows, _) = dependencies(model);
-    rows.iter().any(|r| r.contains(&false)).then_some(rows)
-}
-
 /// The slots of each coordinate, by name (an array coordinate holds several).
 pub fn coordinate_slots(model: &Model) -> BTreeMap<String, Vec<usize>> {
     let mut slots_of: BTreeMap<String, Vec<usize>> = BTreeMap::new();
@@ -40,8 +29,11 @@ pub fn coordinate_slots(model: &Model) -> BTreeMap<String, Vec<usize>> {
     slots_of
 }
 
-/// Which coordinates each row of x and each body (by name, all members of a family together) can
-/// depend on: see [`row_dependencies`].
+/// Which coordinates each row of x can depend on, as the declaration states it: a body's rows
+/// depend on the coordinates its function names (every element of an array coordinate it names)
+/// and on those of the bodies it names, transitively; where the body writes its components out
+/// (`vec2(x, y)`, `planar(centre, angle)`), each row on the names of its own component
+/// ([`component_names`]); and each body's, by name (all members of a family together).
 pub fn dependencies(model: &Model) -> (Vec<Vec<bool>>, BTreeMap<String, Vec<bool>>) {
     let n = model.dof();
     let slots_of = coordinate_slots(model);

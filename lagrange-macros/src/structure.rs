@@ -21,7 +21,6 @@
 //! an index), and a tree whose widest body needs every coordinate anyway, keeps the dense assembly.
 
 use crate::check::{family_index, Body, Model, Shape};
-pub use crate::components::row_dependencies;
 use crate::names;
 use proc_macro2::Span;
 use quote::ToTokens;
@@ -69,6 +68,31 @@ pub struct Tree {
     pub bodies: Vec<TreeBody>,
     pub functions: Vec<Displacement>,
     pub width: usize,
+}
+
+/// Which coordinates each row of x can depend on (the generated `Model::DEPENDS`):
+/// [`crate::components::dependencies`] (body by body, component by component), narrowed member by member where
+/// the declaration is a tree of translations — a family member's rows depend on the elements it
+/// names (`q[i]` for member i, not the whole array) and on its parent's. `None` when every row may
+/// depend on every coordinate.
+pub fn rows_depend_on(model: &Model) -> Option<Vec<Vec<bool>>> {
+    let (mut rows, _) = crate::components::dependencies(model);
+    if let Some(tree) = tree(model) {
+        let mut body_deps: Vec<Vec<bool>> = Vec::with_capacity(tree.bodies.len());
+        for member in &tree.bodies {
+            let mut deps = member
+                .parent
+                .map_or_else(|| vec![false; model.dof()], |p| body_deps[p].clone());
+            member.slots.iter().for_each(|&s| deps[s] = true);
+            let body = &model.bodies[member.body];
+            let first = body.row + member.member.unwrap_or(0) * body.shape.rows();
+            for row in &mut rows[first..first + body.shape.rows()] {
+                row.iter_mut().zip(&deps).for_each(|(r, &d)| *r &= d);
+            }
+            body_deps.push(deps);
+        }
+    }
+    rows.iter().any(|r| r.contains(&false)).then_some(rows)
 }
 
 /// The tree of translations the declaration states, if it states one.

@@ -36,12 +36,12 @@ fn mass_bindings(model: &Model) -> TokenStream {
 const MAX_DEPENDS_ENTRIES: usize = 1024;
 
 /// `const DEPENDS` when the declaration rules some entries of J out (see
-/// [`crate::structure::row_dependencies`]).
+/// [`crate::structure::rows_depend_on`]).
 fn depends_const(model: &Model) -> Option<TokenStream> {
     if model.rows * model.dof() > MAX_DEPENDS_ENTRIES {
         return None;
     }
-    let rows = crate::structure::row_dependencies(model)?;
+    let rows = crate::structure::rows_depend_on(model)?;
     let (n, k) = (lit(model.dof()), lit(model.rows));
     let rows = rows.iter().map(|r| quote!([#(#r),*]));
     Some(quote!(const DEPENDS: [[bool; #n]; #k] = [#(#rows),*];))

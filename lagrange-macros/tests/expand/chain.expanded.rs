@@ -147,6 +147,14 @@ pub mod chain {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 3]; 6] = [
+            [true, false, false],
+            [true, false, false],
+            [true, true, false],
+            [true, true, false],
+            [true, true, true],
+            [true, true, true],
+        ];
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
             {
