@@ -184,11 +184,9 @@ pub fn double_pendulum_rhs(_t: f64, q: &[f64; 2], v: &[f64; 2]) -> [f64; 2] {
 // ---------------------------------------------------------------------------------------------
 // 4. Fermi–Pasta–Ulam chain.
 
-/// Stiff-spring frequency.
+/// Stiff-spring frequency. The chain itself is declared with `#[mechanism]` in [`crate::stiff`]
+/// ([`crate::stiff::FPU`]), each spring a potential of its own.
 pub const FPU_OMEGA: f64 = 50.0;
-
-/// The chain itself is declared with `#[mechanism]` in [`crate::stiff`] ([`crate::stiff::FPU`]),
-/// each spring a potential of its own.
 
 /// HLW's initial values x₀,₁ = 1, ẋ₀,₁ = 1, x₁,₁ = ω⁻¹, ẋ₁,₁ = 1 (centre and elongation of the first
 /// stiff spring, x₀ = (q₂ + q₁)/√2, x₁ = (q₂ − q₁)/√2 in their 1-based numbering), all else zero.
