@@ -1,6 +1,7 @@
-//! Potentials declared one by one have their gradients taken each on dual numbers seeded on its
-//! own coordinates (`Model::potential_gradient`). The same physics written as one potential over
-//! every coordinate takes the dense gradient: the two must agree to round-off — on the dense
+//! Potentials declared one by one, or a potential written as a sum, have their gradients taken
+//! part by part on dual numbers seeded on each part's own coordinates (`Model::potential_gradient`).
+//! The same physics written as one potential through a local over every coordinate takes the
+//! dense gradient: they must agree to round-off — on the dense
 //! pass, on the prepared pass of an affine mechanism, on the tree pass, and through the dual
 //! numbers of Radau5's Newton matrix.
 
@@ -65,11 +66,39 @@ pub mod springs_together {
     }
     #[potential]
     fn springs() -> f64 {
-        k_wall * x[0] * x[0] / 2.0
+        // Through a local: one term, on every coordinate (the dense gradient, for reference).
+        let total = k_wall * x[0] * x[0] / 2.0
             + k * (x[1] - x[0]).powi(2) / 2.0
             + k * (x[2] - x[1]).powi(2) / 2.0
             + k * (x[3] - x[2]).powi(2) / 2.0
-            + a * x[3].powi(4)
+            + a * x[3].powi(4);
+        total
+    }
+}
+
+/// The same, one potential written as a sum with constant factors around inner sums: read term by
+/// term (k/2 and the division distributed over the springs), each term on its own coordinates.
+#[mechanism]
+pub mod springs_summed {
+    pub const MASSES: usize = 4;
+    pub struct Coords {
+        pub x: [f64; MASSES],
+    }
+    pub struct Chain {
+        pub m: f64,
+        pub k: f64,
+        pub k_wall: f64,
+        pub a: f64,
+    }
+    #[particle(mass = m, count = MASSES)]
+    fn mass(i: usize) -> Vec2 {
+        vec2(x[i], 0.0)
+    }
+    #[potential]
+    fn springs() -> f64 {
+        let (d1, d2) = (x[1] - x[0], x[2] - x[1]);
+        let d3 = x[3] - x[2];
+        k_wall * x[0] * x[0] / 2.0 + k * (d1 * d1 + d2 * d2 + d3 * d3) / 2.0 - a * -x[3].powi(4)
     }
 }
 
@@ -138,7 +167,8 @@ pub mod sprung_together {
     }
     #[potential]
     fn springs() -> f64 {
-        c1 * theta1 * theta1 / 2.0 + c2 * (theta2 - 0.3).powi(2) / 2.0
+        let total = c1 * theta1 * theta1 / 2.0 + c2 * (theta2 - 0.3).powi(2) / 2.0;
+        total
     }
 }
 
@@ -218,7 +248,8 @@ pub mod cart_together {
     }
     #[potential]
     fn springs() -> f64 {
-        k * (slider.x - cart.x - 0.5).powi(2) / 2.0 + c * theta * theta / 2.0
+        let total = k * (slider.x - cart.x - 0.5).powi(2) / 2.0 + c * theta * theta / 2.0;
+        total
     }
 }
 
@@ -271,6 +302,12 @@ fn separate_springs_agree_with_one_potential() {
         a: 0.7,
     };
     assert!(narrow(&apart) && !narrow(&together));
+    assert!(narrow(&springs_summed::Chain {
+        m: 0.5,
+        k: 30.0,
+        k_wall: 2.0,
+        a: 0.7
+    }));
     for i in 0..10 {
         let [q, v] = chain_state(i);
         let a = apart
@@ -298,6 +335,20 @@ fn separate_springs_agree_with_one_potential() {
             ))
             .unwrap();
         assert_close(&a.x, &b.x, "prepared pass");
+        let summed = springs_summed::Chain {
+            m: 0.5,
+            k: 30.0,
+            k_wall: 2.0,
+            a: 0.7,
+        };
+        let c = summed
+            .accelerations(&springs_summed::State::new(
+                0.0,
+                springs_summed::Coords { x: q },
+                springs_summed::Coords { x: v },
+            ))
+            .unwrap();
+        assert_close(&c.x, &b.x, "one potential read term by term");
     }
 }
 

@@ -1,59 +1,262 @@
-//! Which coordinates each declared potential can depend on ([`narrow_potentials`]), so that its
-//! gradient is taken on dual numbers seeded on those alone: a spring between two masses of a
-//! chain of N costs a 2-wide gradient, not an N-wide one.
+//! Which coordinates each declared potential, and each term of its sum, can depend on
+//! ([`narrow_potentials`]), so that its gradient is taken on dual numbers seeded on those alone:
+//! a spring between two masses of a chain of N costs a 2-wide gradient, not an N-wide one.
 //!
-//! A potential depends on the coordinates it names — an element `q[3]` of an array coordinate
-//! indexed by an integer literal names that element, any other use of the array names all of
-//! it — and on those of the bodies it names ([`crate::components::dependencies`]). The reading is
-//! conservative: a set may be wider than the truth, never narrower; a potential written with a
-//! macro invocation (whose tokens are not read) counts as depending on every coordinate.
+//! A potential's value written as a sum, `k/2·(q[1] − q[0])² + (q[2] − q[1])⁴ + …`, is read term
+//! by term ([`terms`]): the sum is split at its top-level `+` and `−`, and a constant factor
+//! (`ω²/4 · (a² + b²)`) or divisor is distributed over a sum it multiplies. Each term keeps the
+//! block's `let`s and depends on what it names, its locals through the names of their values.
+//!
+//! A term depends on the coordinates it names — an element `q[3]` of an array coordinate indexed by
+//! an integer literal names that element, any other use of the array names all of it — and on those
+//! of the bodies it names ([`crate::components::dependencies`]). The reading is conservative: a set
+//! may be wider than the truth, never narrower; a potential written with a macro invocation
+//! (whose tokens are not read), a `return`, or a `let` that binds anything but names is not split
+//! and counts as depending on every coordinate it could.
 
 use crate::check::Model;
 use crate::components::{coordinate_slots, dependencies};
+use crate::names;
 use std::collections::{BTreeMap, BTreeSet};
 use syn::visit::{self, Visit};
-use syn::{Expr, Lit};
+use syn::{BinOp, Block, Expr, Lit, Pat, Stmt};
 
-/// The coordinate slots (sorted) each potential in `model.potentials` can depend on, when the
-/// declaration allows narrow gradients: at least one potential, no field that varies in space
-/// (its potential is not declared function by function), and every potential narrower than all
-/// N coordinates. `None` otherwise (the dense gradient is as narrow).
-pub fn narrow_potentials(model: &Model) -> Option<Vec<Vec<usize>>> {
+/// One part of the potential whose gradient is taken on its own: a declared potential or a term
+/// of its sum, as a block (the potential's `let`s, the term as its value) and the coordinate slots
+/// (sorted) it can depend on.
+pub struct Part {
+    /// Index into `model.potentials`.
+    pub potential: usize,
+    pub block: Block,
+    pub slots: Vec<usize>,
+}
+
+/// The parts of the declared potentials, when the declaration allows narrow gradients: at least
+/// one potential, no field that varies in space (its potential is not declared function by
+/// function), and every part narrower than all N coordinates. `None` otherwise (the dense
+/// gradient is as narrow).
+pub fn narrow_potentials(model: &Model) -> Option<Vec<Part>> {
     let n = model.dof();
     if model.potentials.is_empty() || !model.gravities.is_empty() || n < 2 {
         return None;
     }
     let slots_of = coordinate_slots(model);
     let (_, body_deps) = dependencies(model);
-    let sets: Vec<Vec<usize>> = model
-        .potentials
-        .iter()
-        .map(|decl| {
-            let mut uses = Uses {
-                arrays: &slots_of,
-                elements: BTreeSet::new(),
-                whole: BTreeSet::new(),
-                opaque: false,
+    let parameters: BTreeSet<String> = model.params.iter().map(|p| p.ident.to_string()).collect();
+    let mut parts = Vec::new();
+    for (potential, decl) in model.potentials.iter().enumerate() {
+        let locals = local_values(&decl.block);
+        let blocks = match (&locals, terms_of(&decl.block, locals.as_ref(), &parameters)) {
+            (Some(_), Some(terms)) => terms,
+            _ => vec![decl.block.clone()],
+        };
+        for block in blocks {
+            let slots = match &locals {
+                Some(locals) => {
+                    let Some(Stmt::Expr(value, None)) = block.stmts.last() else {
+                        unreachable!("a part's block ends in its value");
+                    };
+                    term_slots(value, locals, &slots_of, &body_deps, n)
+                }
+                None => block_slots(&block, &slots_of, &body_deps, n),
             };
-            uses.visit_block(&decl.block);
-            if uses.opaque {
-                return (0..n).collect();
+            parts.push(Part {
+                potential,
+                block,
+                slots,
+            });
+        }
+    }
+    parts.iter().all(|p| p.slots.len() < n).then_some(parts)
+}
+
+/// The coordinate slots a whole block's uses can depend on.
+fn block_slots(
+    block: &Block,
+    slots_of: &BTreeMap<String, Vec<usize>>,
+    body_deps: &BTreeMap<String, Vec<bool>>,
+    n: usize,
+) -> Vec<usize> {
+    let mut uses = Uses::new(slots_of);
+    uses.visit_block(block);
+    uses.slots(slots_of, body_deps, n)
+}
+
+/// The coordinate slots a term can depend on: its own uses, and those of the values of the locals
+/// it names, transitively.
+fn term_slots(
+    term: &Expr,
+    locals: &BTreeMap<String, Expr>,
+    slots_of: &BTreeMap<String, Vec<usize>>,
+    body_deps: &BTreeMap<String, Vec<bool>>,
+    n: usize,
+) -> Vec<usize> {
+    let mut uses = Uses::new(slots_of);
+    uses.visit_expr(term);
+    let mut seen = BTreeSet::new();
+    let mut pending: Vec<String> = uses.whole.iter().cloned().collect();
+    while let Some(name) = pending.pop() {
+        if !seen.insert(name.clone()) {
+            continue;
+        }
+        if let Some(value) = locals.get(&name) {
+            let mut inner = Uses::new(slots_of);
+            inner.visit_expr(value);
+            uses.elements.extend(inner.elements);
+            uses.opaque |= inner.opaque;
+            pending.extend(inner.whole.iter().cloned());
+            uses.whole.extend(inner.whole);
+        }
+    }
+    uses.slots(slots_of, body_deps, n)
+}
+
+/// The block's `let`s as name → value (a tuple pattern bound to a tuple of the same length, by
+/// position; any other tuple pattern, each name to the whole value). `None` when the block has a
+/// statement other than simple `let`s and its final value, or a `return`: it is not split.
+fn local_values(block: &Block) -> Option<BTreeMap<String, Expr>> {
+    if names::first_return(block).is_some() {
+        return None;
+    }
+    let mut locals = BTreeMap::new();
+    let (value, lets) = block.stmts.split_last()?;
+    if !matches!(value, Stmt::Expr(_, None)) {
+        return None;
+    }
+    for stmt in lets {
+        let Stmt::Local(local) = stmt else {
+            return None;
+        };
+        let init = local.init.as_ref().filter(|i| i.diverge.is_none())?;
+        match strip_type(&local.pat) {
+            Pat::Ident(ident) if ident.subpat.is_none() => {
+                locals.insert(ident.ident.to_string(), (*init.expr).clone());
             }
-            let mut deps = vec![false; n];
-            for slot in uses.elements {
-                deps[slot] = true;
-            }
-            for name in &uses.whole {
-                if let Some(slots) = slots_of.get(name) {
-                    slots.iter().for_each(|&j| deps[j] = true);
-                } else if let Some(body) = body_deps.get(name) {
-                    deps.iter_mut().zip(body).for_each(|(d, &b)| *d |= b);
+            Pat::Tuple(tuple) => {
+                let parts = match &*init.expr {
+                    Expr::Tuple(t) if t.elems.len() == tuple.elems.len() => {
+                        t.elems.iter().cloned().collect()
+                    }
+                    other => vec![other.clone(); tuple.elems.len()],
+                };
+                for (pat, value) in tuple.elems.iter().zip(parts) {
+                    let Pat::Ident(ident) = strip_type(pat) else {
+                        return None;
+                    };
+                    locals.insert(ident.ident.to_string(), value);
                 }
             }
-            (0..n).filter(|&j| deps[j]).collect()
+            _ => return None,
+        }
+    }
+    Some(locals)
+}
+
+/// `x: f64` as a pattern: the `x`.
+fn strip_type(pat: &Pat) -> &Pat {
+    match pat {
+        Pat::Type(typed) => &typed.pat,
+        other => other,
+    }
+}
+
+/// The block once per term of its value's sum ([`terms`]), each with the block's `let`s; `None`
+/// when the value is a single term.
+fn terms_of(
+    block: &Block,
+    locals: Option<&BTreeMap<String, Expr>>,
+    parameters: &BTreeSet<String>,
+) -> Option<Vec<Block>> {
+    let locals = locals?;
+    let Some(Stmt::Expr(value, None)) = block.stmts.last() else {
+        return None;
+    };
+    let parts = terms(value, &Scope { locals, parameters });
+    (parts.len() > 1).then(|| {
+        parts
+            .into_iter()
+            .map(|term| {
+                let mut part = block.clone();
+                *part.stmts.last_mut().unwrap() = Stmt::Expr(term, None);
+                part
+            })
+            .collect()
+    })
+}
+
+/// The terms of a sum: split at top-level `+` and `−` (a subtracted term negated), through
+/// parentheses, and through a product with, or a quotient by, a factor that names no local and
+/// no name of the declaration but parameters and constants (distributed over each term).
+fn terms(expr: &Expr, scope: &Scope) -> Vec<Expr> {
+    match expr {
+        Expr::Paren(p) => terms(&p.expr, scope),
+        Expr::Binary(b) => {
+            let (lhs, rhs) = (&*b.left, &*b.right);
+            match b.op {
+                BinOp::Add(_) => [terms(lhs, scope), terms(rhs, scope)].concat(),
+                BinOp::Sub(_) => {
+                    let mut out = terms(lhs, scope);
+                    out.extend(
+                        terms(rhs, scope)
+                            .into_iter()
+                            .map(|t| syn::parse_quote!(-(#t))),
+                    );
+                    out
+                }
+                BinOp::Mul(_) if constant(lhs, scope) => {
+                    let factor = operand(lhs);
+                    terms(rhs, scope)
+                        .into_iter()
+                        .map(|t| syn::parse_quote!(#factor * (#t)))
+                        .collect()
+                }
+                BinOp::Mul(_) if constant(rhs, scope) => {
+                    let factor = operand(rhs);
+                    terms(lhs, scope)
+                        .into_iter()
+                        .map(|t| syn::parse_quote!((#t) * #factor))
+                        .collect()
+                }
+                BinOp::Div(_) if constant(rhs, scope) => {
+                    let divisor = operand(rhs);
+                    terms(lhs, scope)
+                        .into_iter()
+                        .map(|t| syn::parse_quote!((#t) / #divisor))
+                        .collect()
+                }
+                _ => vec![expr.clone()],
+            }
+        }
+        _ => vec![expr.clone()],
+    }
+}
+
+/// A constant factor as an operand: a literal or a name as written (so the lifting of literals to
+/// the scalar type still sees a literal), anything else in parentheses.
+fn operand(expr: &Expr) -> Expr {
+    match expr {
+        Expr::Lit(_) | Expr::Path(_) => expr.clone(),
+        _ => syn::parse_quote!((#expr)),
+    }
+}
+
+/// Whether `expr` is a constant factor: no macro, and every name in it a parameter (a local of
+/// the block, a coordinate, a body, `t` or a module constant makes it not one, conservatively).
+fn constant(expr: &Expr, scope: &Scope) -> bool {
+    let no_arrays = BTreeMap::new();
+    let mut uses = Uses::new(&no_arrays);
+    uses.visit_expr(expr);
+    !uses.opaque
+        && names::free_names_of_expr(expr).iter().all(|name| {
+            let name = name.to_string();
+            !scope.locals.contains_key(&name) && scope.parameters.contains(&name)
         })
-        .collect();
-    sets.iter().all(|s| s.len() < n).then_some(sets)
+}
+
+/// What [`terms`] reads a sum in: the block's locals and the declaration's parameters.
+struct Scope<'a> {
+    locals: &'a BTreeMap<String, Expr>,
+    parameters: &'a BTreeSet<String>,
 }
 
 /// The names a block uses, with the literal-indexed elements of array coordinates apart.
@@ -65,6 +268,42 @@ struct Uses<'m> {
     whole: BTreeSet<String>,
     /// Whether the block holds tokens that are not read (a macro invocation).
     opaque: bool,
+}
+
+impl<'m> Uses<'m> {
+    fn new(arrays: &'m BTreeMap<String, Vec<usize>>) -> Self {
+        Uses {
+            arrays,
+            elements: BTreeSet::new(),
+            whole: BTreeSet::new(),
+            opaque: false,
+        }
+    }
+
+    /// The coordinate slots (sorted) the uses can depend on: the elements, every slot of a
+    /// coordinate used whole, a body's dependencies; all N when something was not read.
+    fn slots(
+        &self,
+        slots_of: &BTreeMap<String, Vec<usize>>,
+        body_deps: &BTreeMap<String, Vec<bool>>,
+        n: usize,
+    ) -> Vec<usize> {
+        if self.opaque {
+            return (0..n).collect();
+        }
+        let mut deps = vec![false; n];
+        for &slot in &self.elements {
+            deps[slot] = true;
+        }
+        for name in &self.whole {
+            if let Some(slots) = slots_of.get(name) {
+                slots.iter().for_each(|&j| deps[j] = true);
+            } else if let Some(body) = body_deps.get(name) {
+                deps.iter_mut().zip(body).for_each(|(d, &b)| *d |= b);
+            }
+        }
+        (0..n).filter(|&j| deps[j]).collect()
+    }
 }
 
 impl<'ast> Visit<'ast> for Uses<'_> {
@@ -116,12 +355,7 @@ mod tests {
         ]
         .into();
         let block: syn::Block = syn::parse_str(src).unwrap();
-        let mut u = Uses {
-            arrays: &arrays,
-            elements: BTreeSet::new(),
-            whole: BTreeSet::new(),
-            opaque: false,
-        };
+        let mut u = Uses::new(&arrays);
         u.visit_block(&block);
         (
             u.elements.into_iter().collect(),
@@ -150,6 +384,54 @@ mod tests {
             let (_, whole, _) = uses(src);
             assert!(whole.contains(&"q".to_string()), "{src}");
         }
+    }
+
+    /// The terms of `src` (an expression) as strings, with `k` a parameter and `d` a local.
+    fn split(src: &str) -> Vec<String> {
+        let expr: Expr = syn::parse_str(src).unwrap();
+        let locals: BTreeMap<String, Expr> =
+            [("d".to_string(), syn::parse_str("q[1]").unwrap())].into();
+        let parameters: BTreeSet<String> = ["k".to_string()].into();
+        let scope = Scope {
+            locals: &locals,
+            parameters: &parameters,
+        };
+        terms(&expr, &scope)
+            .iter()
+            .map(|t| quote::quote!(#t).to_string())
+            .collect()
+    }
+
+    #[test]
+    fn a_sum_is_read_term_by_term() {
+        // Constant factors and divisors are distributed, a subtracted term negated.
+        assert_eq!(
+            split("k * (q[0] + q[1] * q[1]) / 2.0 - q[2]"),
+            vec![
+                "(k * (q [0])) / 2.0",
+                "(k * (q [1] * q [1])) / 2.0",
+                "- (q [2])"
+            ]
+        );
+        // A factor naming a local, a coordinate or an unknown name is not distributed.
+        assert_eq!(split("d * (q[0] + q[1])").len(), 1);
+        assert_eq!(split("q[3] * (q[0] + q[1])").len(), 1);
+        assert_eq!(split("LINKS * (q[0] + q[1])").len(), 1);
+        // Nor is a product of two sums.
+        assert_eq!(split("(q[0] + q[1]) * (q[2] + q[3])").len(), 1);
+    }
+
+    #[test]
+    fn a_block_with_a_return_or_a_complex_let_is_not_split() {
+        let block: Block =
+            syn::parse_str("{ if q[0] > 0.0 { return q[0]; } q[1] + q[2] }").unwrap();
+        assert!(local_values(&block).is_none());
+        let block: Block = syn::parse_str("{ let [a, b] = [q[0], q[1]]; a + b }").unwrap();
+        assert!(local_values(&block).is_none());
+        let block: Block = syn::parse_str("{ let (a, b) = (q[0], q[1]); a + b }").unwrap();
+        let locals = local_values(&block).unwrap();
+        let b = &locals["b"];
+        assert_eq!(quote::quote!(#b).to_string(), "q [1]");
     }
 
     #[test]

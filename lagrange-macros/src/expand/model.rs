@@ -9,6 +9,7 @@ use super::{
 use crate::attr::{Inertia, Kind};
 use crate::check::{self, Body, Dim, Model, Shape};
 use crate::lift;
+use crate::potentials::Part;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
@@ -68,9 +69,9 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     let depends = depends_const(model);
     let narrow = crate::potentials::narrow_potentials(model);
     let (potential_gradient, potential_methods) = match &narrow {
-        Some(sets) => (
-            Some(potential_gradient_fn(model, sets)),
-            Some(potential_methods(model)),
+        Some(parts) => (
+            Some(potential_gradient_fn(model, parts)),
+            Some(potential_methods(model, parts)),
         ),
         None => (None, None),
     };
@@ -94,22 +95,34 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     }
 }
 
-/// Each declared potential as a method of its own, `__potential_NAME`, on any scalar: what
-/// [`potential_gradient_fn`] evaluates on narrow dual numbers.
-fn potential_methods(model: &Model) -> TokenStream {
+/// The name of part `index` of the potential (see [`crate::potentials::Part`]).
+fn part_method(model: &Model, parts: &[Part], index: usize) -> proc_macro2::Ident {
+    let decl = model.potentials[parts[index].potential];
+    let term = parts[..index]
+        .iter()
+        .filter(|p| p.potential == parts[index].potential)
+        .count();
+    format_ident!("__potential_{}_{}", decl.ident(), term)
+}
+
+/// Each part of the potential (a declared potential, or a term of its sum) as a method of its
+/// own on any scalar: what [`potential_gradient_fn`] evaluates on narrow dual numbers.
+fn potential_methods(model: &Model, parts: &[Part]) -> TokenStream {
     let p = private();
     let (params, n, k) = (model.params_ident, lit(model.dof()), lit(model.rows));
     let prelude = prelude();
     let bodies = bind_bodies(model);
-    let methods = model.potentials.iter().map(|decl| {
-        let ident = format_ident!("__potential_{}", decl.ident());
+    // A part that depends on no coordinate adds nothing to the gradient and is not evaluated.
+    let methods = parts.iter().enumerate().filter(|(_, part)| !part.slots.is_empty()).map(|(index, part)| {
+        let decl = model.potentials[part.potential];
+        let ident = part_method(model, parts, index);
         let inputs = bind_inputs_from(
             model,
-            &model.names_used_by([*decl]),
+            &model.names_used_by([decl]),
             quote!(__q),
             Params::Fields,
         );
-        let (shared, blocks) = optimized_blocks_from(model, [&decl.block], Params::Fields);
+        let (shared, blocks) = optimized_blocks_from(model, [&part.block], Params::Fields);
         let block = &blocks[0];
         quote! {
             #[doc(hidden)]
@@ -132,20 +145,20 @@ fn potential_methods(model: &Model) -> TokenStream {
     }
 }
 
-/// `Model::potential_gradient`: each potential on dual numbers seeded only on its own coordinate
-/// slots (`sets`, from [`crate::potentials::narrow_potentials`]); x's rows carry their Jacobian
-/// rows restricted to those slots (a body a potential names depends on no other coordinate).
-fn potential_gradient_fn(model: &Model, sets: &[Vec<usize>]) -> TokenStream {
+/// `Model::potential_gradient`: each part of the potential on dual numbers seeded only on its own
+/// coordinate slots (from [`crate::potentials::narrow_potentials`]); x's rows carry their Jacobian
+/// rows restricted to those slots (a body a part names depends on no other coordinate).
+fn potential_gradient_fn(model: &Model, parts: &[Part]) -> TokenStream {
     let p = private();
     let (n, k) = (model.dof(), model.rows);
     let (n_lit, k_lit) = (lit(n), lit(k));
-    let terms = model
-        .potentials
+    let terms = parts
         .iter()
-        .zip(sets)
-        .filter(|(_, set)| !set.is_empty())
-        .map(|(decl, set)| {
-            let ident = format_ident!("__potential_{}", decl.ident());
+        .enumerate()
+        .filter(|(_, part)| !part.slots.is_empty())
+        .map(|(index, part)| {
+            let set = &part.slots;
+            let ident = part_method(model, parts, index);
             let w = lit(set.len());
             let dual = quote!(#p::num_dual::DualSVec<__S, #w>);
             let seeds = (0..n).map(|j| match set.iter().position(|&s| s == j) {

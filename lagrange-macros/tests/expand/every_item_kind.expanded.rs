@@ -212,7 +212,7 @@ pub mod everything {
         #[doc(hidden)]
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
-        fn __potential_spring<__D: ::lagrange::__private::Scalar>(
+        fn __potential_spring_0<__D: ::lagrange::__private::Scalar>(
             &self,
             __t: __D,
             __q: &[__D; 2],
@@ -491,7 +491,7 @@ pub mod everything {
                     )
                 });
                 let __v = self
-                    .__potential_spring(
+                    .__potential_spring_0(
                         <::lagrange::__private::num_dual::DualSVec<
                             __S,
                             1,
