@@ -113,7 +113,8 @@ fn term_slots(
 
 /// The block's `let`s as name → value (a tuple pattern bound to a tuple of the same length, by
 /// position; any other tuple pattern, each name to the whole value). `None` when the block has a
-/// statement other than simple `let`s and its final value, or a `return`: it is not split.
+/// statement other than simple `let`s and its final value, a `return`, or a name bound twice: it
+/// is not split.
 fn local_values(block: &Block) -> Option<BTreeMap<String, Expr>> {
     if names::first_return(block).is_some() {
         return None;
@@ -130,7 +131,13 @@ fn local_values(block: &Block) -> Option<BTreeMap<String, Expr>> {
         let init = local.init.as_ref().filter(|i| i.diverge.is_none())?;
         match strip_type(&local.pat) {
             Pat::Ident(ident) if ident.subpat.is_none() => {
-                locals.insert(ident.ident.to_string(), (*init.expr).clone());
+                // A name bound twice would resolve to its last value only: not split.
+                if locals
+                    .insert(ident.ident.to_string(), (*init.expr).clone())
+                    .is_some()
+                {
+                    return None;
+                }
             }
             Pat::Tuple(tuple) => {
                 let parts = match &*init.expr {
@@ -143,7 +150,9 @@ fn local_values(block: &Block) -> Option<BTreeMap<String, Expr>> {
                     let Pat::Ident(ident) = strip_type(pat) else {
                         return None;
                     };
-                    locals.insert(ident.ident.to_string(), value);
+                    if locals.insert(ident.ident.to_string(), value).is_some() {
+                        return None;
+                    }
                 }
             }
             _ => return None,
@@ -427,6 +436,9 @@ mod tests {
             syn::parse_str("{ if q[0] > 0.0 { return q[0]; } q[1] + q[2] }").unwrap();
         assert!(local_values(&block).is_none());
         let block: Block = syn::parse_str("{ let [a, b] = [q[0], q[1]]; a + b }").unwrap();
+        assert!(local_values(&block).is_none());
+        // A name bound twice (its first value would be lost to the reading).
+        let block: Block = syn::parse_str("{ let d = q[0]; let d = d * q[1]; d + q[2] }").unwrap();
         assert!(local_values(&block).is_none());
         let block: Block = syn::parse_str("{ let (a, b) = (q[0], q[1]); a + b }").unwrap();
         let locals = local_values(&block).unwrap();
