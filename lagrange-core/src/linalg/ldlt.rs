@@ -82,7 +82,7 @@ impl<S: Scalar, const N: usize, P: FactorPattern<N>> Ldlt<S, N, P> {
     /// let x = Ldlt::with_pattern(&m, PATTERN).unwrap().solve(&b);
     /// assert_eq!(x, Ldlt::new(&m).unwrap().solve(&b));
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn with_pattern(m: &SMatrix<S, N, N>, pattern: P) -> Result<Self, NotPositiveDefinite> {
         let mut scale = 0.0f64;
         for i in 0..N {
