@@ -88,8 +88,8 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
     }
 
     /// Takes one accepted step, not past `t_limit` (> current time), rejecting and shrinking as
-    /// needed, as [`Dopri5Stepper::step`](crate::integrate::Dopri5Stepper::step) does. On error the accepted
-    /// state is unchanged.
+    /// needed, as [`Dopri5Stepper::step`](crate::integrate::Dopri5Stepper::step) does. On error
+    /// the accepted state is unchanged.
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
         let mut control = Controller {
             h: self.h,
