@@ -1,0 +1,214 @@
+//! Adaptive Dormand–Prince 8(5,3) — Hairer's DOP853 — with its continuous extension of order 7
+//! and event location.
+//!
+//! - Method: Prince & Dormand, *High order embedded Runge–Kutta formulae*, J. Comput. Appl. Math. 7
+//!   (1981); Hairer, Nørsett & Wanner, *Solving ODEs I* (HNW I), §II.10 (Table 10.3 and the
+//!   surrounding text). The coefficients below are those of Hairer's published Fortran code
+//!   `dop853.f` (E. Hairer and G. Wanner, Université de Genève, version of 2004, distributed with
+//!   HNW I), to the digits printed there. Twelve stages; the FSAL evaluation at the new point is
+//!   the next step's first stage, so an accepted step costs 12 evaluations (plus 3 for the dense
+//!   output).
+//! - Error estimate (HNW I §II.10, and `dop853.f`): the 5th-order estimate err₅ and the 3rd-order
+//!   estimate err₃ are combined as err = err₅² / √(err₅² + 0.01·err₃²) (norms as in
+//!   [`Dopri5`], over all q and v components), which behaves like O(h⁸).
+//! - Step-size control: the PI controller of HNW I §II.4 / Hairer & Wanner, *Solving ODEs II*,
+//!   §IV.2 (Gustafsson), h_new = h·min(fac_max, max(fac_min, err^(−1/8 + 0.2β)·err_old^β / safety)),
+//!   the form of `dop853.f`; β = 0.04 here by default (Hairer's code defaults to β = 0, the classical
+//!   controller, which `beta: 0.0` selects).
+//! - Dense output: the continuous extension of order 7 of `dop853.f` (CONTD8), three more
+//!   evaluations per accepted step (`dense: false` skips them and interpolates by cubic Hermite
+//!   instead, order 3).
+//! - Events, the observer and the statistics are those of every solver ([`Stepper::integrate`]).
+//! - Constraints: as [`Dopri5`], the start state must satisfy them and every
+//!   accepted step is projected onto them.
+//!
+//! Integration is forward in time only.
+
+// Coefficients carry the digits printed in dop853.f; stage loops index several arrays;
+// `!(a <= b)` comparisons are deliberate (they also catch NaN).
+#![allow(
+    clippy::excessive_precision,
+    clippy::needless_range_loop,
+    clippy::neg_cmp_op_on_partial_ord,
+    clippy::unreadable_literal
+)]
+
+use super::dopri5::Dopri5;
+use super::solver::{Event, Observation, Outcome, Stats, Stepper, StopReason};
+use super::Integrator;
+use crate::error::{Error, Result};
+use crate::mechanism::Mechanism;
+use crate::model::{Coordinates, State};
+
+mod dense;
+mod stepper;
+mod tableau;
+
+pub(crate) use dense::accept;
+pub(crate) use stepper::attempt;
+pub use stepper::{Dop853Stepper, Trial};
+
+/// Settings of the adaptive Dormand–Prince 8(5,3) method (see the [module docs](self)).
+///
+/// ```
+/// use lagrange_core::integrate::Dop853;
+/// use lagrange_core::{Mechanism, State};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&s)?;
+/// let out = Dop853::new(1e-12, 1e-14).integrate(&Pendulum, &mut s, 10.0, &mut [], |_| {})?;
+/// // Tolerance 1e-12 per step over ≈ 100 steps: the energy (4.3 J) is kept to ≈ 1e-10 relative.
+/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-9);
+/// assert!(out.stats.accepted < 300);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dop853 {
+    /// Relative tolerance (per component, against max(|y₀|, |y₁|)).
+    pub rtol: f64,
+    /// Absolute tolerance (per component).
+    pub atol: f64,
+    /// First step; `None` chooses it (HNW I §II.4).
+    pub h_init: Option<f64>,
+    /// Largest step.
+    pub h_max: f64,
+    /// Most step attempts (accepted + rejected) of one [`Dop853::integrate`] call.
+    pub max_steps: usize,
+    /// Safety factor of the step-size controller.
+    pub safety: f64,
+    /// Smallest factor by which a step may shrink.
+    pub fac_min: f64,
+    /// Largest factor by which a step may grow.
+    pub fac_max: f64,
+    /// PI stabilisation exponent β (0: classical controller).
+    pub beta: f64,
+    /// Whether accepted steps build the 7th-order dense output (three more evaluations each);
+    /// otherwise the dense output is the cubic Hermite interpolant.
+    pub dense: bool,
+}
+
+impl Default for Dop853 {
+    /// rtol = 1e-6, atol = 1e-9, `dop853.f`'s controller constants (safety 0.9, factors 1/3…6) with
+    /// β = 0.04, dense output on.
+    fn default() -> Self {
+        Dop853 {
+            rtol: 1e-6,
+            atol: 1e-9,
+            h_init: None,
+            h_max: f64::INFINITY,
+            max_steps: 1_000_000,
+            safety: 0.9,
+            fac_min: 1.0 / 3.0,
+            fac_max: 6.0,
+            beta: 0.04,
+            dense: true,
+        }
+    }
+}
+
+impl Dop853 {
+    /// The default settings with these tolerances.
+    pub fn new(rtol: f64, atol: f64) -> Self {
+        Dop853 {
+            rtol,
+            atol,
+            ..Dop853::default()
+        }
+    }
+
+    /// The settings as the shared embedded-pair settings.
+    pub(crate) fn shared(&self) -> Dopri5 {
+        Dopri5 {
+            rtol: self.rtol,
+            atol: self.atol,
+            h_init: self.h_init,
+            h_max: self.h_max,
+            max_steps: self.max_steps,
+            safety: self.safety,
+            fac_min: self.fac_min,
+            fac_max: self.fac_max,
+            beta: self.beta,
+        }
+    }
+
+    /// Checks the settings as [`Dopri5::validate`] does.
+    pub fn validate(&self) -> Result<()> {
+        self.shared().validate_as("Dop853")
+    }
+
+    /// Integrates from `state` to `t_end` (≥ state.t) with events and an observer, as
+    /// [`Dopri5::integrate`]. On success `state` is the final state (at t_end, at the terminal event,
+    /// or the last accepted one); on error `state` is unchanged. No allocation.
+    pub fn integrate<M: Mechanism<N>, const N: usize>(
+        &self,
+        mechanism: &M,
+        state: &mut State<M::Coords>,
+        t_end: f64,
+        events: &mut [Event<'_, M::Coords>],
+        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
+    ) -> Result<Outcome<M::Coords>> {
+        if !(t_end.is_finite() && t_end >= state.t) {
+            return Err(Error::InvalidEndTime { t: state.t, t_end });
+        }
+        // Unilateral and friction rows: the mode held per step, its switches located.
+        if let Some(outcome) =
+            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
+        {
+            return outcome;
+        }
+        let mut stepper = Dop853Stepper::new(mechanism, *self, state)?;
+        let outcome = stepper.integrate(t_end, events, observer)?;
+        *state = match outcome.reason {
+            StopReason::Event(hit) => hit.state,
+            _ => Stepper::state(&stepper),
+        };
+        Ok(outcome)
+    }
+}
+
+/// `sys.step::<Dop853>(&mut state, h)`: integrates over [t, t + h] with the
+/// [default](Dop853::default) tolerances, landing exactly on t + h (as `Dopri5` does).
+impl Integrator for Dop853 {
+    const NAME: &'static str = "Dop853";
+    type Memory<const N: usize> = ();
+
+    fn advance<M: Mechanism<N>, const N: usize>(
+        mechanism: &M,
+        _memory: &mut (),
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])> {
+        let start = State::new(t, M::Coords::from_array(*q), M::Coords::from_array(*v));
+        let settings = Dop853 {
+            dense: false,
+            ..Dop853::default()
+        };
+        let mut stepper = Dop853Stepper::new(mechanism, settings, &start)?;
+        let t_end = t + h;
+        let result = (|| {
+            while stepper.t < t_end {
+                stepper.step(t_end)?;
+            }
+            Ok((stepper.q, stepper.v))
+        })();
+        *stats += stepper.stats;
+        result
+    }
+}

@@ -1,0 +1,274 @@
+//! One Dormand–Prince 8(5,3) step: the stages, the trial step with its error norm, and the
+//! [`Dop853Stepper`] that strings accepted steps together.
+
+use super::dense::accept;
+use super::tableau::{A, B, BHH, C, E};
+use super::Dop853;
+use crate::error::{Error, Result};
+use crate::integrate::dopri5::{
+    adaptive_step, initial_step, project_accepted, ratio, Controller, DenseOutput,
+};
+use crate::integrate::solver::{Stats, Stepper};
+use crate::mechanism::{diagnose, Mechanism};
+use crate::model::{check_state, Coordinates, State};
+
+/// Step-by-step use of [`Dop853`]: holds the current state, the proposed next step and the dense
+/// output of the last accepted step; implements [`Stepper`].
+pub struct Dop853Stepper<'m, M: Mechanism<N>, const N: usize> {
+    mechanism: &'m M,
+    settings: Dop853,
+    pub(super) t: f64,
+    pub(super) q: [f64; N],
+    pub(super) v: [f64; N],
+    a: [f64; N],
+    h: f64,
+    fac_old: f64,
+    dense: DenseOutput<N>,
+    pub(super) stats: Stats,
+}
+
+/// One trial step of [`Dop853`]: the new (q, v), the error norm and the stages (position and
+/// velocity parts).
+#[derive(Clone, Copy, Debug)]
+pub struct Trial<const N: usize> {
+    pub(crate) q1: [f64; N],
+    pub(crate) v1: [f64; N],
+    pub(crate) err: f64,
+    pub(crate) kq: [[f64; N]; 16],
+    pub(crate) ka: [[f64; N]; 16],
+}
+
+impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
+    /// Starts at `state`: validates settings, mechanism and state, evaluates q̈ and chooses the
+    /// first step.
+    pub fn new(mechanism: &'m M, settings: Dop853, state: &State<M::Coords>) -> Result<Self> {
+        settings.validate()?;
+        let (q, v) = mechanism.check(state)?;
+        mechanism.check_constraints(state.t, &q, &v)?;
+        let t = state.t;
+        let a = mechanism
+            .accelerations_at(t, &q, &v)
+            .map_err(|e| diagnose(mechanism, t, &q, &v, e))?;
+        let mut stats = Stats {
+            evaluations: 1,
+            ..Stats::default()
+        };
+        let h = match settings.h_init {
+            Some(h) => h.min(settings.h_max),
+            None => initial_step(
+                mechanism,
+                &settings.shared(),
+                (t, &q, &v, &a),
+                8,
+                &mut stats,
+            ),
+        };
+        Ok(Dop853Stepper {
+            mechanism,
+            settings,
+            t,
+            q,
+            v,
+            a,
+            h,
+            fac_old: 1e-4,
+            dense: DenseOutput::constant(t, &q, &v),
+            stats,
+        })
+    }
+
+    /// The step the controller proposes next.
+    pub fn proposed_step(&self) -> f64 {
+        self.h
+    }
+
+    /// Length of the last accepted step.
+    pub fn last_step(&self) -> f64 {
+        self.dense.t_end() - self.dense.t_start()
+    }
+
+    /// Takes one accepted step, not past `t_limit` (> current time), rejecting and shrinking as
+    /// needed, as [`Dopri5Stepper::step`](crate::integrate::Dopri5Stepper::step) does. On error
+    /// the accepted state is unchanged.
+    pub fn step(&mut self, t_limit: f64) -> Result<()> {
+        let mut control = Controller {
+            h: self.h,
+            fac_old: self.fac_old,
+        };
+        let mut stats = self.stats;
+        let acc = mechanism_accelerations(self.mechanism);
+        let start = (self.t, &self.q, &self.v, &self.a);
+        let settings = self.settings;
+        let (mut trial, h, t_new) = adaptive_step(
+            "Dop853",
+            &settings.shared(),
+            (1.0 / 8.0, 0.2),
+            self.t,
+            t_limit,
+            &mut control,
+            &mut stats,
+            |h, stats| {
+                attempt::<M::Coords, N>(&settings, start, h, stats, &acc).map(|trial| {
+                    let err = trial.err;
+                    (trial, err)
+                })
+            },
+        )?;
+        // FSAL: q̈ at the new point (stage 13), then the dense output, then the projection.
+        let (a1, dense) = accept(&settings, start, h, &mut trial, &mut stats, &acc)?;
+        let (qp, vp, ap) =
+            project_accepted(self.mechanism, t_new, (trial.q1, trial.v1, a1), &mut stats)?;
+        self.dense = dense;
+        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
+        (self.h, self.fac_old, self.stats) = (control.h, control.fac_old, stats);
+        Ok(())
+    }
+}
+
+/// q̈ of a mechanism, as the stages evaluate it.
+fn mechanism_accelerations<M: Mechanism<N>, const N: usize>(
+    m: &M,
+) -> impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]> + '_ {
+    move |t, q, v| {
+        m.accelerations_at(t, q, v)
+            .map_err(|e| diagnose(m, t, q, v, e))
+    }
+}
+
+/// (q, v) at stage i (0-based) from the stages before it: y + h Σⱼ aᵢⱼ kⱼ.
+fn stage_point<const N: usize>(
+    (q0, v0): (&[f64; N], &[f64; N]),
+    h: f64,
+    i: usize,
+    kq: &[[f64; N]; 16],
+    ka: &[[f64; N]; 16],
+) -> ([f64; N], [f64; N]) {
+    let mut q = *q0;
+    let mut v = *v0;
+    for j in 0..i {
+        let a = A[i][j];
+        if a != 0.0 {
+            for n in 0..N {
+                q[n] += h * a * kq[j][n];
+                v[n] += h * a * ka[j][n];
+            }
+        }
+    }
+    (q, v)
+}
+
+/// Evaluates stage i (0-based) of a step of size h from (t, q, v) into kq[i], ka[i].
+#[allow(clippy::too_many_arguments)]
+pub(super) fn evaluate_stage<const N: usize>(
+    (t, q, v): (f64, &[f64; N], &[f64; N]),
+    h: f64,
+    i: usize,
+    kq: &mut [[f64; N]; 16],
+    ka: &mut [[f64; N]; 16],
+    stats: &mut Stats,
+    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+) -> Result<()> {
+    let (qi, vi) = stage_point((q, v), h, i, kq, ka);
+    stats.evaluations += 1;
+    ka[i] = acc(t + C[i] * h, &qi, &vi)?;
+    kq[i] = vi;
+    Ok(())
+}
+
+/// One trial step of size h from (t, q, v) with q̈ = `a` there, on the accelerations `acc`
+/// (stages 1…12, the 8th-order solution and the error norm): what [`Dop853Stepper`] attempts on a
+/// mechanism's accelerations, and the contact solver on those of a frozen constraint mode.
+pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
+    st: &Dop853,
+    (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    h: f64,
+    stats: &mut Stats,
+    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+) -> Result<Trial<N>> {
+    let mut kq = [[0.0; N]; 16];
+    let mut ka = [[0.0; N]; 16];
+    kq[0] = *v;
+    ka[0] = *a;
+    for i in 1..12 {
+        evaluate_stage((t, q, v), h, i, &mut kq, &mut ka, stats, acc)?;
+    }
+    let mut q1 = *q;
+    let mut v1 = *v;
+    for j in 0..12 {
+        if B[j] != 0.0 {
+            for n in 0..N {
+                q1[n] += h * B[j] * kq[j][n];
+                v1[n] += h * B[j] * ka[j][n];
+            }
+        }
+    }
+    check_state(&Q::NAMES, t + h, &q1, &v1)?;
+    let (mut err5, mut err3) = (0.0, 0.0);
+    let mut component = |e5: f64, e3: f64, y0: f64, y1: f64| {
+        let sc = st.atol + st.rtol * y0.abs().max(y1.abs());
+        err5 += ratio(e5, sc).powi(2);
+        err3 += ratio(e3, sc).powi(2);
+    };
+    for n in 0..N {
+        for (k, y0, y1) in [(&kq, q[n], q1[n]), (&ka, v[n], v1[n])] {
+            let mut e5 = 0.0;
+            let mut bsum = 0.0;
+            for j in 0..12 {
+                e5 += E[j] * k[j][n];
+                bsum += B[j] * k[j][n];
+            }
+            let e3 = bsum - BHH[0] * k[0][n] - BHH[1] * k[8][n] - BHH[2] * k[11][n];
+            component(e5, e3, y0, y1);
+        }
+    }
+    // dop853.f: err = |h|·err₅² / √(n·(err₅² + 0.01·err₃²)), with sums of squares.
+    let mut deno = err5 + 0.01 * err3;
+    if !(deno > 0.0) {
+        deno = 1.0;
+    }
+    let err = h.abs() * err5 * (1.0 / (deno * (2 * N) as f64)).sqrt();
+    if err.is_nan() {
+        return Err(Error::NonFiniteDynamics {
+            t: t + h,
+            configuration: crate::error::describe_configuration(&Q::NAMES, &q1),
+        });
+    }
+    Ok(Trial {
+        q1,
+        v1,
+        err,
+        kq,
+        ka,
+    })
+}
+
+impl<M: Mechanism<N>, const N: usize> Stepper<M::Coords, N> for Dop853Stepper<'_, M, N> {
+    fn name(&self) -> &'static str {
+        "Dop853"
+    }
+    fn t(&self) -> f64 {
+        self.t
+    }
+    fn state(&self) -> State<M::Coords> {
+        State::new(
+            self.t,
+            M::Coords::from_array(self.q),
+            M::Coords::from_array(self.v),
+        )
+    }
+    fn step(&mut self, t_limit: f64) -> Result<()> {
+        Dop853Stepper::step(self, t_limit)
+    }
+    fn dense(&self) -> &DenseOutput<N> {
+        &self.dense
+    }
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+    fn count_event_evaluations(&mut self, n: usize) {
+        self.stats.event_evaluations += n;
+    }
+    fn max_steps(&self) -> usize {
+        self.settings.max_steps
+    }
+}

@@ -1,0 +1,180 @@
+//! Step-size control shared by the explicit embedded pairs: the starting step, the PI controller
+//! and its step loop, the projection of an accepted step, and the scaled error component.
+
+use super::Dopri5;
+use crate::error::{Error, Result};
+use crate::integrate::solver::Stats;
+use crate::mechanism::{diagnose, Mechanism};
+use crate::model::{check_state, Coordinates};
+
+/// The starting step of an embedded pair of order `order` (HNW I §II.4, "Starting step size";
+/// Hairer's HINIT): one extra evaluation of q̈.
+pub(crate) fn initial_step<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    st: &Dopri5,
+    start: (f64, &[f64; N], &[f64; N], &[f64; N]),
+    order: i32,
+    stats: &mut Stats,
+) -> f64 {
+    initial_step_on(
+        |t, q, v| mechanism.accelerations_at(t, q, v),
+        st,
+        start,
+        order,
+        stats,
+    )
+}
+
+/// [`initial_step`] on the accelerations `acc` (those of a frozen constraint mode, say).
+pub(crate) fn initial_step_on<const N: usize>(
+    acc: impl FnOnce(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+    st: &Dopri5,
+    (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    order: i32,
+    stats: &mut Stats,
+) -> f64 {
+    let (mut dnf, mut dny) = (0.0, 0.0);
+    for i in 0..N {
+        let sq = st.atol + st.rtol * q[i].abs();
+        let sv = st.atol + st.rtol * v[i].abs();
+        dnf += (v[i] / sq).powi(2) + (a[i] / sv).powi(2);
+        dny += (q[i] / sq).powi(2) + (v[i] / sv).powi(2);
+    }
+    let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
+        1e-6
+    } else {
+        (dny / dnf).sqrt() * 0.01
+    };
+    h = h.min(st.h_max);
+    let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * v[i]);
+    let v1: [f64; N] = std::array::from_fn(|i| v[i] + h * a[i]);
+    stats.evaluations += 1;
+    let Ok(a1) = acc(t + h, &q1, &v1) else {
+        return h;
+    };
+    let mut der2 = 0.0;
+    for i in 0..N {
+        let sq = st.atol + st.rtol * q[i].abs();
+        let sv = st.atol + st.rtol * v[i].abs();
+        der2 += ((v1[i] - v[i]) / sq).powi(2) + ((a1[i] - a[i]) / sv).powi(2);
+    }
+    let der2 = der2.sqrt() / h;
+    let der12 = der2.max(dnf.sqrt());
+    let h1 = if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(1.0 / order as f64)
+    };
+    let h = (100.0 * h).min(h1).min(st.h_max);
+    if h.is_finite() && h > 0.0 {
+        h
+    } else {
+        1e-6
+    }
+}
+
+/// The step size and the previous error of an explicit embedded pair's controller: the memory
+/// ([`EmbeddedPair::Memory`](crate::integrate::EmbeddedPair::Memory)) of [`Dopri5`] and
+/// [`Dop853`](crate::integrate::Dop853) from one step to the next.
+#[derive(Clone, Copy, Debug)]
+pub struct Controller {
+    pub(crate) h: f64,
+    pub(crate) fac_old: f64,
+}
+
+/// The step loop and PI step-size controller shared by the embedded pairs (Dopri5, Dop853):
+/// attempts steps of the controller's size (the last one shortened to land on `t_limit`, and
+/// steps within 1 % of it stretched to it), rejecting and shrinking until `attempt` reports an
+/// error norm ≤ 1, and returns the accepted trial, its h and its end time. The controller is
+/// h_new = h·min(1/fac_min, max(1/fac_max, safety⁻¹·err^(p − β·w)·err_old^(−β)))⁻¹ with
+/// (p, w) = `exponents` = (1/5, 0.75) for Dopri5 and (1/8, 0.2) for Dop853 (HNW I §II.4;
+/// Hairer & Wanner, *Solving ODEs II*, §IV.2; the forms of Hairer's DOPRI5 and DOP853); after a
+/// rejection the step does not grow. A failing attempt (singular mass matrix, non-finite
+/// dynamics) counts as a rejection with the step cut by `fac_min`; when the step can no longer
+/// shrink (0.1·h below round-off of t) the last failure is returned
+/// ([`Error::StepSizeUnderflow`] if steps were rejected only for accuracy).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn adaptive_step<T>(
+    method: &'static str,
+    st: &Dopri5,
+    (exponent, weight): (f64, f64),
+    t: f64,
+    t_limit: f64,
+    control: &mut Controller,
+    stats: &mut Stats,
+    mut attempt: impl FnMut(f64, &mut Stats) -> Result<(T, f64)>,
+) -> Result<(T, f64, f64)> {
+    if !(t_limit > t) || !t_limit.is_finite() {
+        return Err(Error::InvalidEndTime { t, t_end: t_limit });
+    }
+    let expo1 = exponent - st.beta * weight;
+    let mut last_rejected = false;
+    let mut last_error: Option<Error> = None;
+    loop {
+        let mut h = control.h.min(st.h_max);
+        let last = t + 1.01 * h >= t_limit;
+        if last {
+            h = t_limit - t;
+        }
+        if !(t + 0.1 * h > t) {
+            return Err(last_error.unwrap_or(Error::StepSizeUnderflow { method, t, h }));
+        }
+        match attempt(h, stats) {
+            Ok((trial, err)) => {
+                let fac11 = err.powf(expo1);
+                if err <= 1.0 {
+                    let fac = (fac11 / control.fac_old.powf(st.beta) / st.safety)
+                        .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
+                    let mut h_new = h / fac;
+                    if last_rejected {
+                        h_new = h_new.min(h);
+                    }
+                    control.fac_old = err.max(1e-4);
+                    control.h = h_new;
+                    stats.accepted += 1;
+                    let t_new = if last { t_limit } else { t + h };
+                    return Ok((trial, h, t_new));
+                }
+                control.h = h / (1.0 / st.fac_min).min(fac11 / st.safety);
+            }
+            Err(e) => {
+                control.h = h * st.fac_min;
+                last_error = Some(e);
+            }
+        }
+        last_rejected = true;
+        stats.rejected += 1;
+    }
+}
+
+/// Projects an accepted step's end onto the constraints (a no-op without any); if that moved it,
+/// checks it and re-evaluates q̈ there. Returns (q, v, q̈) at the projected state.
+#[allow(clippy::type_complexity)]
+pub(crate) fn project_accepted<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    (q1, v1, a1): ([f64; N], [f64; N], [f64; N]),
+    stats: &mut Stats,
+) -> Result<([f64; N], [f64; N], [f64; N])> {
+    let (mut qp, mut vp, mut ap) = (q1, v1, a1);
+    mechanism.project(t, &mut qp, &mut vp)?;
+    if qp != q1 || vp != v1 {
+        check_state(&M::Coords::NAMES, t, &qp, &vp)?;
+        stats.evaluations += 1;
+        ap = mechanism
+            .accelerations_at(t, &qp, &vp)
+            .map_err(|e| diagnose(mechanism, t, &qp, &vp, e))?;
+    }
+    Ok((qp, vp, ap))
+}
+
+/// e/sc of the error norm, with 0/0 = 0 (an exact component with a zero scale, possible when
+/// atol = 0) and e/0 = ∞ otherwise.
+#[inline(always)]
+pub(crate) fn ratio(e: f64, scale: f64) -> f64 {
+    if e == 0.0 {
+        0.0
+    } else {
+        e / scale
+    }
+}

@@ -1,0 +1,208 @@
+//! The dense output of one step ([`DenseOutput`]), the location of an event's root on it, and the
+//! order-4 continuous extension of a Dormand–Prince step.
+
+/// Width under which an event's bracket counts as located (absolute, in time units; widened to
+/// 4 ulp of t for large t).
+pub const EVENT_TIME_TOLERANCE: f64 = 1e-13;
+
+/// The dense output of one step: a polynomial in time for q and v over [t₀, t₀ + h], in the form
+/// of Hairer's CONTD5, y(t₀ + θh) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))): of order 4 for
+/// Dopri5, and the cubic Hermite interpolant (r₅ = 0) of the end values and derivatives for the
+/// other methods.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DenseOutput<const N: usize> {
+    t0: f64,
+    pub(super) h: f64,
+    q: [[f64; N]; 8],
+    v: [[f64; N]; 8],
+    /// Coefficients in use: 5 (Dopri5, Hermite) or 8 (Dop853).
+    terms: usize,
+}
+
+impl<const N: usize> DenseOutput<N> {
+    pub(crate) fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
+        let mut d = DenseOutput {
+            t0: t,
+            h: 0.0,
+            q: [[0.0; N]; 8],
+            v: [[0.0; N]; 8],
+            terms: 5,
+        };
+        d.q[0] = *q;
+        d.v[0] = *v;
+        d
+    }
+
+    /// The cubic Hermite interpolant over [t₀, t₀ + h] of (q, v) with derivatives (v, q̈) at both
+    /// ends (`start` and `end` are (q, v, q̈)): order 3 (HNW I §II.6, (6.7)).
+    pub(crate) fn hermite(
+        t0: f64,
+        h: f64,
+        start: (&[f64; N], &[f64; N], &[f64; N]),
+        end: (&[f64; N], &[f64; N], &[f64; N]),
+    ) -> Self {
+        let make = |y0: &[f64; N], y1: &[f64; N], d0: &[f64; N], d1: &[f64; N]| {
+            let mut r = [[0.0; N]; 8];
+            for i in 0..N {
+                let diff = y1[i] - y0[i];
+                let bspl = h * d0[i] - diff;
+                r[0][i] = y0[i];
+                r[1][i] = diff;
+                r[2][i] = bspl;
+                r[3][i] = diff - h * d1[i] - bspl;
+            }
+            r
+        };
+        DenseOutput {
+            t0,
+            h,
+            q: make(start.0, end.0, start.1, end.1),
+            v: make(start.1, end.1, start.2, end.2),
+            terms: 5,
+        }
+    }
+
+    /// Dop853's continuous extension of order 7 (Hairer's CONTD8): r₁…r₈ for q and for v.
+    pub(crate) fn from_coefficients(t0: f64, h: f64, q: [[f64; N]; 8], v: [[f64; N]; 8]) -> Self {
+        DenseOutput {
+            t0,
+            h,
+            q,
+            v,
+            terms: 8,
+        }
+    }
+
+    /// Start of the step.
+    pub fn t_start(&self) -> f64 {
+        self.t0
+    }
+
+    /// End of the step.
+    pub fn t_end(&self) -> f64 {
+        self.t0 + self.h
+    }
+
+    /// (q, v) at time t (meant for t in the step; outside it this extrapolates).
+    pub fn eval(&self, t: f64) -> ([f64; N], [f64; N]) {
+        if self.h == 0.0 {
+            return (self.q[0], self.v[0]);
+        }
+        let th = (t - self.t0) / self.h;
+        let th1 = 1.0 - th;
+        let terms = self.terms;
+        let f = |r: &[[f64; N]; 8]| -> [f64; N] {
+            std::array::from_fn(|i| {
+                // r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ)(r₅ + θ(r₆ + (1−θ)(r₇ + θ r₈)))))), from the
+                // innermost term out, alternating the factors θ and 1 − θ.
+                let mut acc = 0.0;
+                for k in (1..terms).rev() {
+                    acc = (r[k][i] + acc) * if k % 2 == 1 { th } else { th1 };
+                }
+                r[0][i] + acc
+            })
+        };
+        (f(&self.q), f(&self.v))
+    }
+
+    /// The root in (t_start, t_end] of g(t, q(t), v(t)) given its values at both ends (of opposite
+    /// signs, or zero at the end), by the Illinois method to within [`EVENT_TIME_TOLERANCE`]. The
+    /// returned time is on the far side of the bracket (g has its end-of-step sign there or is zero).
+    /// Also returns the number of evaluations of g.
+    pub fn find_root(
+        &self,
+        g: impl FnMut(f64, &[f64; N], &[f64; N]) -> f64,
+        g_start: f64,
+        g_end: f64,
+    ) -> (f64, usize) {
+        self.find_root_between(g, (self.t0, g_start), (self.t_end(), g_end))
+    }
+
+    /// [`find_root`](Self::find_root) on a bracket [a, b] inside the step, given g there.
+    pub(crate) fn find_root_between(
+        &self,
+        mut g: impl FnMut(f64, &[f64; N], &[f64; N]) -> f64,
+        (mut a, mut fa): (f64, f64),
+        (mut b, mut fb): (f64, f64),
+    ) -> (f64, usize) {
+        if fb == 0.0 {
+            return (b, 0);
+        }
+        let tol = EVENT_TIME_TOLERANCE.max(4.0 * f64::EPSILON * b.abs());
+        let mut side = 0i8;
+        let mut evaluations = 0;
+        for _ in 0..200 {
+            if (b - a).abs() <= tol {
+                break;
+            }
+            let mut c = (a * fb - b * fa) / (fb - fa);
+            if !(c > a.min(b) && c < a.max(b)) {
+                c = 0.5 * (a + b);
+            }
+            let (q, v) = self.eval(c);
+            let fc = g(c, &q, &v);
+            evaluations += 1;
+            if fc == 0.0 {
+                return (c, evaluations);
+            }
+            if !fc.is_finite() {
+                // Cannot judge the sign: bisect towards the start, keeping the bracket.
+                b = c;
+                continue;
+            }
+            if (fc > 0.0) == (fb > 0.0) {
+                b = c;
+                fb = fc;
+                if side == -1 {
+                    fa *= 0.5;
+                }
+                side = -1;
+            } else {
+                a = c;
+                fa = fc;
+                if side == 1 {
+                    fb *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        (b, evaluations)
+    }
+}
+
+/// The dense output of an accepted [`trial`](super::trial) of size h from (t₀, q₀, v₀) to
+/// (q₁, v₁): Hairer's CONTD5 (HNW I §II.6), order 4, no extra evaluation.
+pub(crate) fn dense_output<const N: usize>(
+    t0: f64,
+    h: f64,
+    (q0, v0): (&[f64; N], &[f64; N]),
+    (q1, v1): (&[f64; N], &[f64; N]),
+    k: &[[f64; N]; 8],
+) -> DenseOutput<N> {
+    let [kq1, ka1, kq7, ka7, dq, dv, _, _] = k;
+    let make = |y0: &[f64; N],
+                y1: &[f64; N],
+                k1: &[f64; N],
+                k7: &[f64; N],
+                d: &[f64; N]|
+     -> [[f64; N]; 8] {
+        let mut r = [[0.0; N]; 8];
+        for i in 0..N {
+            let diff = y1[i] - y0[i];
+            let bspl = h * k1[i] - diff;
+            r[0][i] = y0[i];
+            r[1][i] = diff;
+            r[2][i] = bspl;
+            r[3][i] = diff - h * k7[i] - bspl;
+            r[4][i] = h * d[i];
+        }
+        r
+    };
+    DenseOutput {
+        t0,
+        h,
+        q: make(q0, q1, kq1, kq7, dq),
+        v: make(v0, v1, ka1, ka7, dv),
+        terms: 5,
+    }
+}
