@@ -22,97 +22,10 @@ use lagrange::constraints::{
 use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
-use lagrange_gallery::scenes::sphere_release::Release;
+use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
 
-/// The sphere as a contact that only pushes.
-#[mechanism]
-pub mod unilateral {
-    /// The particle in the plane of its great circle, sphere centre at the origin, y up.
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct Sphere {
-        pub m: f64,
-        pub r: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn particle() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn surface() -> f64 {
-        particle.norm() - r
-    }
-}
-
-/// The same sphere as a bilateral constraint: its multiplier is the normal force it would need.
-#[mechanism]
-pub mod bilateral {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct Sphere {
-        pub m: f64,
-        pub r: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn particle() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[constraint]
-    fn surface() -> f64 {
-        particle.norm() - r
-    }
-}
-
-/// A ball above a floor y ≥ 0.
-#[mechanism]
-pub mod ball {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct Ball {
-        pub m: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn ball() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn floor() -> f64 {
-        y
-    }
-}
+mod contact_scenes;
+use contact_scenes::{ball, bilateral};
 
 const M: f64 = 0.7;
 const R: f64 = 1.5;
@@ -200,7 +113,7 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
     tol: f64,
     bilateral: impl Fn(Start) -> (f64, Stats),
 ) {
-    use unilateral::{Coords, Sphere, State};
+    use unilateral::{Coords, SphereRelease as Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
     // What bounds the located release time |t − t*| (the analysis of tests/sphere_event.rs,
     // for Dopri5): the root finder stops within 1e-13, and λ on the dense output is off by the
@@ -426,7 +339,7 @@ fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
 /// bit.
 #[test]
 fn integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
-    use unilateral::{Coords, Sphere, State};
+    use unilateral::{Coords, SphereRelease as Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
     let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: 0.5, y: 0.0 });
     // Past the release (from the top at 0.5 m/s it leaves within 2 s): one mode change.
@@ -475,7 +388,7 @@ fn integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
 #[test]
 #[ignore = "prints the cost table of BENCHMARKS.md"]
 fn cost_in_contact_table() {
-    use unilateral::{Coords, Sphere, State};
+    use unilateral::{Coords, SphereRelease as Sphere, State};
     let sys = Sphere { m: M, r: R, g: G };
     let v0 = 0.5;
     println!(
@@ -654,7 +567,7 @@ fn bouncing_ball_comes_to_rest_at_the_accumulation_point() {
 fn implicit_steppers_refuse_unilateral_declarations() {
     let start = on_sphere(0.0, 0.5);
     let ([x, y], [vx, vy]) = start.state();
-    let sys = unilateral::Sphere { m: M, r: R, g: G };
+    let sys = unilateral::SphereRelease { m: M, r: R, g: G };
     let s0 = unilateral::State::new(
         0.0,
         unilateral::Coords { x, y },

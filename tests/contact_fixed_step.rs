@@ -15,34 +15,8 @@ use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
 
-/// A ball above a floor y ≥ 0.
-#[mechanism]
-pub mod ball {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct Ball {
-        pub m: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn ball() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn floor() -> f64 {
-        y
-    }
-}
+mod contact_scenes;
+use contact_scenes::ball;
 
 const M: f64 = 0.7;
 const R: f64 = 1.5;

@@ -29,65 +29,8 @@ use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
 
-/// The sphere of the gallery's `sphere_release` as a bilateral constraint: its multiplier is the
-/// normal force it would need.
-#[mechanism]
-pub mod bilateral {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct Sphere {
-        pub m: f64,
-        pub r: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn particle() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[constraint]
-    fn surface() -> f64 {
-        particle.norm() - r
-    }
-}
-
-/// A ball above a floor y ≥ 0.
-#[mechanism]
-pub mod ball {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct Ball {
-        pub m: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn ball() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn floor() -> f64 {
-        y
-    }
-}
+mod contact_scenes;
+use contact_scenes::{ball, bilateral};
 
 /// A lander: a foot of mass m₁ on the floor (unilateral), a top mass m₂ above it on a spring of
 /// stiffness k and rest length l with a damper c between them: a stiff, overdamped leg.
