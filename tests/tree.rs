@@ -233,8 +233,9 @@ fn a_family_read_member_by_member_equals_the_dense_assembly() {
     }
 }
 
-/// A branching tree in space: a hub on a plane, two arms hung from it (one with a second link), so
-/// bodies have siblings and pairs of bodies on different branches do not couple.
+/// A branching tree in space: a hub on a plane, two arms hung from it (one with a second link) and
+/// drag on the last, so bodies have siblings and pairs of bodies on different branches do not
+/// couple. (The drag is a force: without one, these positions would be derived in closed form.)
 macro_rules! branching {
     ($name:ident $(, $scale:literal)?) => {
         #[mechanism]
@@ -250,10 +251,15 @@ macro_rules! branching {
                 pub m: f64,
                 pub l: f64,
                 pub g: f64,
+                pub k: f64,
             }
             #[particle(mass = m * 3.0)]
             fn hub() -> Vec3 {
                 vec3(x, y, 0.0)
+            }
+            #[force(on = tip)]
+            fn drag() -> Vec3 {
+                -tip_dot * k
             }
             #[particle(mass = m)]
             fn left() -> Vec3 {
@@ -283,9 +289,9 @@ const _: usize = <branching_tree::Params as lagrange::tree::Tree<5, 12, 2, 4>>::
 
 #[test]
 fn a_branching_tree_in_space_equals_the_dense_assembly() {
-    let (m, l, g) = (1.0, 0.7, 9.81);
-    let tree = branching_tree::Params { m, l, g };
-    let dense = branching_dense::Params { m, l, g };
+    let (m, l, g, k) = (1.0, 0.7, 9.81, 0.3);
+    let tree = branching_tree::Params { m, l, g, k };
+    let dense = branching_dense::Params { m, l, g, k };
     for (t, q, v) in states::<5>() {
         let s1 = branching_tree::State::new(
             t,

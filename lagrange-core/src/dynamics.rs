@@ -40,6 +40,30 @@ pub struct EquationsOfMotion<S: Scalar, const N: usize> {
     pub inertial_terms: SVector<S, N>,
 }
 
+impl<S: Scalar, const N: usize> EquationsOfMotion<S, N> {
+    /// The terms from arrays: M by columns (`mass_matrix[j]` is column j), 𝓕 and b. What the
+    /// closed-form equations `#[mechanism]` derives are returned as.
+    ///
+    /// ```
+    /// use lagrange_core::dynamics::EquationsOfMotion;
+    /// let eom = EquationsOfMotion::from_columns([[2.0, 1.0], [1.0, 3.0]], [1.0, 0.0], [0.0, 0.5]);
+    /// assert_eq!(eom.mass_matrix[(0, 1)], 1.0);
+    /// assert_eq!(eom.inertial_terms[1], 0.5);
+    /// ```
+    #[inline(always)]
+    pub fn from_columns(
+        mass_matrix: [[S; N]; N],
+        generalized_forces: [S; N],
+        inertial_terms: [S; N],
+    ) -> Self {
+        EquationsOfMotion {
+            mass_matrix: SMatrix::from(mass_matrix),
+            generalized_forces: SVector::from(generalized_forces),
+            inertial_terms: SVector::from(inertial_terms),
+        }
+    }
+}
+
 /// Pass 1: x(q, t) seeded as a gradient over q. Returns the values and Jacobian rows.
 #[inline(always)]
 pub(crate) fn cartesian_with_jacobian<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(

@@ -224,6 +224,12 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     #[doc(hidden)]
     const SCLERONOMIC: bool = false;
 
+    /// Whether `#[mechanism]` derived M, 𝓕 and b in closed form (straight-line code from the
+    /// positions read as polynomials in the coordinates, their sines and cosines) rather than by
+    /// the dual-number passes of [`crate::dynamics`].
+    #[doc(hidden)]
+    const CLOSED_FORM: bool = false;
+
     /// Checks the parameters: finite, masses and inertias positive (what
     /// [`Mechanism::validate`] calls).
     fn check_parameters(&self) -> Result<()>;

@@ -336,6 +336,39 @@ fn array_coordinates_and_a_family_of_bodies() {
 
 #[test]
 fn a_body_translated_from_another_is_seeded_on_its_own_angle() {
+    // Drag on the second bob: a force, so the equations are not derived in closed form and the
+    // tree of translations serves.
+    let out = pretty(expand(
+        TokenStream::new(),
+        quote! {
+            pub mod double_pendulum {
+                pub struct Coords { pub theta1: f64, pub theta2: f64 }
+                pub struct DoublePendulum { pub m1: f64, pub m2: f64, pub l1: f64, pub l2: f64, pub g: f64, pub c: f64 }
+                #[particle(mass = m1)]
+                fn bob1() -> Vec2 { vec2(theta1.sin(), -theta1.cos()) * l1 }
+                #[particle(mass = m2)]
+                fn bob2() -> Vec2 { bob1 + vec2(theta2.sin(), -theta2.cos()) * l2 }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+                #[force(on = bob2)]
+                fn drag() -> Vec2 { -bob2_dot * c }
+            }
+        },
+    ));
+    // Compared without whitespace: the pretty-printer breaks lines where it likes.
+    let out: String = out.split_whitespace().collect();
+    assert!(!out.contains("__lagrange_closed_form"));
+    // Two coordinates, four rows, seeds one wide, two bodies: bob2 is bob1 plus its own arm.
+    assert!(out.contains("Tree<2,4,1,2>forDoublePendulum"));
+    assert!(out.contains("tree::equations_of_motion::<Self,S,2,4,1,2,>"));
+    assert!(out.contains("parent:::lagrange::__private::core::option::Option::Some(0)"));
+    // The arm alone, seeded on theta2 only: bob1 is not evaluated again on the seeds.
+    assert!(out.contains("fn__lagrange_displacement_bob2<__D:::lagrange::__private::Scalar>(&self,__t:__D,theta2:__D,)"));
+    assert!(out.contains("tree::seed(__q[1],__v[1],0)"));
+}
+
+#[test]
+fn a_double_pendulum_is_derived_in_closed_form() {
     let out = snapshot(
         "double_pendulum",
         quote! {
@@ -351,23 +384,28 @@ fn a_body_translated_from_another_is_seeded_on_its_own_angle() {
             }
         },
     );
-    // Compared without whitespace: the pretty-printer breaks lines where it likes.
     let out: String = out.split_whitespace().collect();
-    // Two coordinates, four rows, seeds one wide, two bodies: bob2 is bob1 plus its own arm.
-    assert!(out.contains("Tree<2,4,1,2>forDoublePendulum"));
-    assert!(out.contains("tree::equations_of_motion::<Self,S,2,4,1,2,>"));
-    assert!(out.contains("parent:::lagrange::__private::core::option::Option::Some(0)"));
-    // The arm alone, seeded on theta2 only: bob1 is not evaluated again on the seeds.
-    assert!(out.contains("fn__lagrange_displacement_bob2<__D:::lagrange::__private::Scalar>(&self,__t:__D,theta2:__D,)"));
-    assert!(out.contains("tree::seed(__q[1],__v[1],0)"));
+    assert!(!out.contains("tree::Tree<"));
+    assert!(out.contains("self.__lagrange_closed_form::<S>(q,v)"));
+    // One sin_cos per angle; M₁₁ and M₂₂ constant (sin² + cos² = 1), M₁₂ through
+    // cos(θ₁ − θ₂) = sin θ₁ sin θ₂ + cos θ₁ cos θ₂ scaled once.
+    assert!(out.contains("let(__sin_0,__cos_0)=__q[0].sin_cos();"));
+    assert!(out.contains("let(__sin_1,__cos_1)=__q[1].sin_cos();"));
+    assert!(out.contains("let__coefficient_0:f64=l1*l1*__masses[0]+l1*l1*__masses[2];"));
+    assert!(out.contains("(__product_0+__product_1)*__coefficient_1"));
 }
 
 #[test]
-fn a_pendulum_keeps_the_dense_pass() {
-    // One coordinate: seeds cannot be narrower than the dense pass's.
+fn a_pendulum_is_derived_in_closed_form() {
+    // M = m l² (sin² θ + cos² θ) = m l², b = 0, 𝓕 = −m g l sin θ: one sine, no cosine.
     let out = snapshot("pendulum", pendulum());
-    assert!(!out.contains("tree::Tree<"));
-    assert!(out.contains("dynamics::equations_of_motion::<"));
+    let out: String = out.split_whitespace().collect();
+    assert!(!out.contains("dynamics::equations_of_motion::<"));
+    assert!(out.contains("let__sin_0=__q[0].sin();"));
+    assert!(!out.contains("__cos_0"));
+    assert!(out.contains(
+        "[[<__D>::from(__coefficient_0)]],[-__sin_0*__coefficient_1],[<__D>::from(0.0)],"
+    ));
 }
 
 /// The structural zeros of J a declaration states: each row depends on the coordinates its body

@@ -17,6 +17,7 @@ mod names;
 mod optimize;
 mod potentials;
 mod structure;
+mod symbolic;
 
 #[cfg(test)]
 mod expand_tests;

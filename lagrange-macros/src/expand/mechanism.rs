@@ -4,13 +4,23 @@ use super::{lit, private};
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
+/// How `equations_of_motion_at` forms M, 𝓕 and b.
+pub(super) enum Equations {
+    /// The straight-line code of `expand::closed_form`.
+    ClosedForm,
+    /// `lagrange_core::tree` over a tree of translations (seed width, bodies).
+    Tree(usize, usize),
+    /// The dual-number passes of `lagrange_core::dynamics`.
+    Dense,
+}
+
 /// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
 pub(super) fn mechanism_impl(
     params: &Ident,
     n: usize,
     k: usize,
     constrained: Option<usize>,
-    tree: Option<(usize, usize)>,
+    equations: Equations,
     rheonomic: bool,
     affine: bool,
 ) -> TokenStream {
@@ -35,13 +45,16 @@ pub(super) fn mechanism_impl(
             }
         }
     });
-    // A tree of translations is assembled from each body's own seeds; anything else densely.
-    let equations_of_motion = match tree {
-        Some((w, b)) => {
+    let closed_form = matches!(equations, Equations::ClosedForm);
+    let equations_of_motion = match equations {
+        Equations::ClosedForm => quote!(self.__lagrange_closed_form::<S>(q, v)),
+        Equations::Tree(w, b) => {
             let (w, b) = (lit(w), lit(b));
             quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
         }
-        None => quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v)),
+        Equations::Dense => {
+            quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v))
+        }
     };
     let overrides = constrained.map(|c| constrained_overrides(n.clone(), k.clone(), lit(c)));
     let validate_constraints = constrained.map(|c| {
@@ -65,6 +78,7 @@ pub(super) fn mechanism_impl(
             const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
                 #p::core::option::Option::Some(#counts);
             const SCLERONOMIC: bool = #scleronomic;
+            const CLOSED_FORM: bool = #closed_form;
             #[inline]
             fn check_parameters(&self) -> #p::Result<()> {
                 <Self as #p::Model<#n, #k>>::validate(self)?;

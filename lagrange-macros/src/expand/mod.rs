@@ -18,6 +18,7 @@
 //! others share.
 
 mod bodies;
+mod closed_form;
 mod constraints;
 mod coords;
 mod declaration;
@@ -31,7 +32,7 @@ use bodies::{bodies_structs, inherent_impl};
 use constraints::constraints_impl;
 use coords::coords_items;
 use declaration::declaration_impl;
-use mechanism::mechanism_impl;
+use mechanism::{mechanism_impl, Equations};
 use model::model_impl;
 use parametrized::parametrized_items;
 
@@ -118,17 +119,34 @@ fn generate(model: &Model) -> TokenStream {
     let inherent = inherent_impl(model);
     let model_impl = model_impl(model);
     let constrained = (!model.constraints.is_empty()).then_some(model.constraint_row_count());
-    let tree = crate::structure::tree(model);
+    // The constrained solve has its own path; affine constants serve the unconstrained one.
+    let affine = constrained.is_none() && crate::affine::is_affine(model);
+    // Otherwise the equations in closed form where the positions are read, a tree of
+    // translations from each body's own seeds, or the dense pass.
+    let closed_form = (!affine)
+        .then(|| crate::symbolic::equations(model))
+        .flatten();
+    let tree = closed_form
+        .is_none()
+        .then(|| crate::structure::tree(model))
+        .flatten();
     let tree_items = tree.as_ref().map(|tree| tree::tree_items(model, tree));
+    let equations = match (&closed_form, &tree) {
+        (Some(_), _) => Equations::ClosedForm,
+        (None, Some(tree)) => Equations::Tree(tree.width, tree.bodies.len()),
+        (None, None) => Equations::Dense,
+    };
+    let closed_form_impl = closed_form
+        .as_ref()
+        .map(|equations| closed_form::closed_form_impl(model, equations));
     let mechanism_impl = mechanism_impl(
         model.params_ident,
         model.dof(),
         model.rows,
         constrained,
-        tree.map(|tree| (tree.width, tree.bodies.len())),
+        equations,
         model.rheonomic,
-        // The constrained solve has its own path; affine constants serve the unconstrained one.
-        constrained.is_none() && crate::affine::is_affine(model),
+        affine,
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);
@@ -143,6 +161,7 @@ fn generate(model: &Model) -> TokenStream {
             #inherent
             #model_impl
             #tree_items
+            #closed_form_impl
             #mechanism_impl
             #constraints_impl
             #declaration_impl

@@ -398,6 +398,7 @@ pub mod chain {
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = false;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;

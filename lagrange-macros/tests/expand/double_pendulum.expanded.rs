@@ -255,11 +255,11 @@ pub mod double_pendulum {
     impl DoublePendulum {
         #[inline(always)]
         #[allow(unused_variables, non_snake_case, clippy::all)]
-        fn __lagrange_displacement_bob1<__D: ::lagrange::__private::Scalar>(
+        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
             &self,
-            __t: __D,
-            theta1: __D,
-        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
                 planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
@@ -267,101 +267,42 @@ pub mod double_pendulum {
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
-            let l1 = <__D>::from(self.l1);
-            let (__sin_theta1, __cos_theta1) = theta1.sin_cos();
-            { vec2(__sin_theta1, -__cos_theta1) * l1 }
-        }
-        #[inline(always)]
-        #[allow(unused_variables, non_snake_case, clippy::all)]
-        fn __lagrange_displacement_bob2<__D: ::lagrange::__private::Scalar>(
-            &self,
-            __t: __D,
-            theta2: __D,
-        ) -> ::lagrange::__private::geometry::Vec2<__D> {
-            #[allow(unused_imports)]
-            use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
-            };
-            #[allow(unused_imports)]
-            use ::lagrange::__private::DualNum as _;
-            let l2 = <__D>::from(self.l2);
-            let (__sin_theta2, __cos_theta2) = theta2.sin_cos();
-            { vec2(__sin_theta2, -__cos_theta2) * l2 }
-        }
-    }
-    impl ::lagrange::__private::tree::Tree<2, 4, 1, 2> for DoublePendulum {
-        const BODIES: [::lagrange::__private::tree::Body<1>; 2] = [
-            ::lagrange::__private::tree::Body {
-                row: 0,
-                dim: 2,
-                parent: ::lagrange::__private::core::option::Option::None,
-                seeds: [::lagrange::__private::tree::Seed::Coordinate(0)],
-            },
-            ::lagrange::__private::tree::Body {
-                row: 2,
-                dim: 2,
-                parent: ::lagrange::__private::core::option::Option::Some(0),
-                seeds: [::lagrange::__private::tree::Seed::Coordinate(1)],
-            },
-        ];
-        #[inline(always)]
-        #[allow(unused_variables, clippy::all)]
-        fn displacements<S: ::lagrange::__private::Scalar>(
-            &self,
-            __t: S,
-            __q: &[S; 2],
-            __v: &[S; 2],
-        ) -> [::lagrange::__private::tree::Seeded<S, 1>; 4] {
-            let __body_0 = self
-                .__lagrange_displacement_bob1(
-                    ::lagrange::__private::tree::time(
-                        __t,
-                        ::lagrange::__private::core::option::Option::None,
-                    ),
-                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
-                );
-            let __body_1 = self
-                .__lagrange_displacement_bob2(
-                    ::lagrange::__private::tree::time(
-                        __t,
-                        ::lagrange::__private::core::option::Option::None,
-                    ),
-                    ::lagrange::__private::tree::seed(__q[1], __v[1], 0),
-                );
-            [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
-        }
-        #[inline(always)]
-        fn mass_matrix<S: ::lagrange::__private::Scalar>(
-            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 2>,
-            __composite: &[f64; 2],
-        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
-            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 2, 2>::zeros();
-            ::lagrange::__private::tree::couple::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(&mut __m, __jacobian, __composite, 0, 0);
-            ::lagrange::__private::tree::couple::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(&mut __m, __jacobian, __composite, 1, 1);
-            ::lagrange::__private::tree::couple::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(&mut __m, __jacobian, __composite, 1, 0);
-            __m
+            let m1: f64 = self.m1;
+            let m2: f64 = self.m2;
+            let l1: f64 = self.l1;
+            let l2: f64 = self.l2;
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<2, 4>>::masses(self);
+            let (__sin_0, __cos_0) = __q[0].sin_cos();
+            let (__sin_1, __cos_1) = __q[1].sin_cos();
+            let __coefficient_0: f64 = l1 * l1 * __masses[0] + l1 * l1 * __masses[2];
+            let __product_0: __D = __sin_0 * __sin_1;
+            let __product_1: __D = __cos_0 * __cos_1;
+            let __coefficient_1: f64 = l1 * l2 * __masses[2];
+            let __coefficient_2: f64 = l2 * l2 * __masses[2];
+            let __coefficient_3: f64 = l1 * g * __masses[0] + l1 * g * __masses[2];
+            let __coefficient_4: f64 = l2 * g * __masses[2];
+            let __product_2: __D = __v[1] * __v[1];
+            let __product_3: __D = __sin_0 * __cos_1;
+            let __product_4: __D = __sin_1 * __cos_0;
+            let __product_5: __D = __v[0] * __v[0];
+            ::lagrange::__private::dynamics::EquationsOfMotion::from_columns(
+                [
+                    [
+                        <__D>::from(__coefficient_0),
+                        (__product_0 + __product_1) * __coefficient_1,
+                    ],
+                    [
+                        (__product_0 + __product_1) * __coefficient_1,
+                        <__D>::from(__coefficient_2),
+                    ],
+                ],
+                [-__sin_0 * __coefficient_3, -__sin_1 * __coefficient_4],
+                [
+                    (__product_3 - __product_4) * __coefficient_1 * __product_2,
+                    (-__product_3 + __product_4) * __coefficient_1 * __product_5,
+                ],
+            )
         }
     }
     impl ::lagrange::__private::Prepare for DoublePendulum {
@@ -379,6 +320,7 @@ pub mod double_pendulum {
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = true;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
@@ -391,14 +333,7 @@ pub mod double_pendulum {
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
-            ::lagrange::__private::tree::equations_of_motion::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(self, t, q, v)
+            self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(

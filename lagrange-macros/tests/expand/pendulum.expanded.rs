@@ -200,6 +200,35 @@ pub mod pendulum {
             __weights
         }
     }
+    impl Pendulum {
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 1> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
+            let __sin_0 = __q[0].sin();
+            let __coefficient_0: f64 = l * l * __masses[0];
+            let __coefficient_1: f64 = l * g * __masses[0];
+            ::lagrange::__private::dynamics::EquationsOfMotion::from_columns(
+                [[<__D>::from(__coefficient_0)]],
+                [-__sin_0 * __coefficient_1],
+                [<__D>::from(0.0)],
+            )
+        }
+    }
     impl ::lagrange::__private::Prepare for Pendulum {
         type Prepared = ();
         #[inline(always)]
@@ -215,6 +244,7 @@ pub mod pendulum {
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = true;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;
@@ -227,12 +257,7 @@ pub mod pendulum {
             q: &[S; 1],
             v: &[S; 1],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 1> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
-                Self,
-                S,
-                1,
-                2,
-            >(self, t, q, v)
+            self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(

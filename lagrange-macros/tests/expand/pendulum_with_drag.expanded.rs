@@ -269,6 +269,7 @@ pub mod pendulum {
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = false;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<1, 2>>::validate(self)?;

@@ -230,6 +230,7 @@ pub mod sliding_block {
             ),
         );
         const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = false;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;

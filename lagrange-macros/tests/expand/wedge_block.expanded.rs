@@ -383,6 +383,7 @@ pub mod wedge_block {
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = false;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;

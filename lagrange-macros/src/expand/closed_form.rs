@@ -1,0 +1,303 @@
+//! The closed-form equations of motion ([`crate::symbolic`]) as straight-line code: an inherent
+//! `__lagrange_closed_form(q, q̇)` returning M, 𝓕 and b, which `equations_of_motion_at` calls.
+//!
+//! Constant factors (parameters, masses, constants as written) are `f64`, each distinct
+//! coefficient computed once; the sines and cosines of the coordinates are evaluated once each,
+//! as one `sin_cos` where both appear; each distinct product of variables is one `let`.
+
+use super::{lit, private, scalar};
+use crate::check::Model;
+use crate::symbolic::poly::{Atom, Monomial, Poly};
+use crate::symbolic::Equations;
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote, ToTokens};
+use std::collections::{BTreeMap, BTreeSet};
+
+/// The inherent impl holding `__lagrange_closed_form`.
+pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> TokenStream {
+    let (p, d) = (private(), scalar());
+    let params_ident = model.params_ident;
+    let n = model.dof();
+    let mut out = Writer {
+        params: model
+            .params
+            .iter()
+            .map(|f| f.ident.to_token_stream())
+            .collect(),
+        lets: Vec::new(),
+        coefficients: BTreeMap::new(),
+        products: BTreeMap::new(),
+        atoms: BTreeSet::new(),
+    };
+    let lower: Vec<Vec<TokenStream>> = equations
+        .mass_matrix
+        .iter()
+        .map(|row| row.iter().map(|m| out.entry(m)).collect())
+        .collect();
+    let forces: Vec<TokenStream> = equations
+        .generalized_forces
+        .iter()
+        .map(|f| out.entry(f))
+        .collect();
+    let inertial: Vec<TokenStream> = equations
+        .inertial_terms
+        .iter()
+        .map(|b| out.entry(b))
+        .collect();
+    // Column j of the symmetric M: Mᵢⱼ from the lower triangle.
+    let columns = (0..n).map(|j| {
+        let column = (0..n).map(|i| {
+            let (r, c) = if i >= j { (i, j) } else { (j, i) };
+            &lower[r][c]
+        });
+        quote!([#(#column),*])
+    });
+    let inputs = out.inputs(model, equations);
+    let Writer { lets, .. } = out;
+    let n = lit(n);
+    let prelude = super::prelude();
+    quote! {
+        impl #params_ident {
+            #[inline(always)]
+            #[allow(unused_variables, non_snake_case, clippy::all)]
+            fn __lagrange_closed_form<#d: #p::Scalar>(
+                &self,
+                __q: &[#d; #n],
+                __v: &[#d; #n],
+            ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
+                #prelude
+                #inputs
+                #(#lets)*
+                #p::dynamics::EquationsOfMotion::from_columns(
+                    [#(#columns),*],
+                    [#(#forces),*],
+                    [#(#inertial),*],
+                )
+            }
+        }
+    }
+}
+
+/// The `let`s written so far, shared between entries: coefficients by their constant polynomial,
+/// products by their variable monomial.
+struct Writer {
+    /// The parameters' names, by index.
+    params: Vec<TokenStream>,
+    lets: Vec<TokenStream>,
+    coefficients: BTreeMap<String, TokenStream>,
+    products: BTreeMap<Monomial, TokenStream>,
+    atoms: BTreeSet<Atom>,
+}
+
+impl Writer {
+    /// An entry on `__D`, factored as Σ (± products of sines, cosines and coordinates) ×
+    /// coefficient × product of velocities: the terms that share a velocity product and a
+    /// coefficient up to its sign are summed before they are scaled (the double pendulum's
+    /// M₁₂ = m₂ l₁ l₂ (sin θ₁ sin θ₂ + cos θ₁ cos θ₂): one product by the coefficient, not two).
+    fn entry(&mut self, poly: &Poly) -> TokenStream {
+        let d = scalar();
+        type Members = Vec<(bool, Monomial)>;
+        let mut groups: BTreeMap<(Monomial, String), (Poly, Members)> = BTreeMap::new();
+        for (variables, coefficient) in poly.by_variables() {
+            let (velocities, positions): (Monomial, Monomial) = variables
+                .into_iter()
+                .partition(|(a, _)| matches!(a, Atom::Vel(_)));
+            let negative = coefficient.terms.values().next().is_some_and(|&c| c < 0.0);
+            let coefficient = if negative {
+                coefficient.scale(-1.0)
+            } else {
+                coefficient
+            };
+            let key = (velocities, format!("{coefficient:?}"));
+            groups
+                .entry(key)
+                .or_insert_with(|| (coefficient, Vec::new()))
+                .1
+                .push((negative, positions));
+        }
+        let terms: Vec<TokenStream> = groups
+            .into_iter()
+            .map(|((velocities, _), (coefficient, members))| {
+                let velocities = self.product(&velocities);
+                if let [(negative, positions)] = &members[..] {
+                    if positions.is_empty() {
+                        // A constant times the velocities.
+                        let sign = if *negative { -1.0 } else { 1.0 };
+                        let c = self.coefficient(&coefficient.scale(sign));
+                        let c = quote!(<#d>::from(#c));
+                        return velocities.map_or(c.clone(), |v| quote!(#v * #c));
+                    }
+                }
+                let mut sum = TokenStream::new();
+                for (k, (negative, positions)) in members.iter().enumerate() {
+                    let x = self
+                        .product(positions)
+                        .unwrap_or_else(|| quote!(<#d>::from(1.0)));
+                    sum.extend(match (k, negative) {
+                        (0, false) => quote!(#x),
+                        (0, true) => quote!(-#x),
+                        (_, false) => quote!(+ #x),
+                        (_, true) => quote!(- #x),
+                    });
+                }
+                let mut term = if members.len() > 1 {
+                    quote!((#sum))
+                } else {
+                    sum
+                };
+                if coefficient.as_number() != Some(1.0) {
+                    let c = self.coefficient(&coefficient);
+                    term = quote!(#term * #c);
+                }
+                if let Some(v) = velocities {
+                    term = quote!(#term * #v);
+                }
+                term
+            })
+            .collect();
+        match terms.split_first() {
+            None => quote!(<#d>::from(0.0)),
+            Some((first, rest)) => quote!(#first #(+ #rest)*),
+        }
+    }
+
+    /// The `f64` value of a constant polynomial: a literal, or a `let` shared by every use.
+    fn coefficient(&mut self, coefficient: &Poly) -> TokenStream {
+        if let Some(c) = coefficient.as_number() {
+            return number(c);
+        }
+        let key = format!("{coefficient:?}");
+        if let Some(ident) = self.coefficients.get(&key) {
+            return ident.clone();
+        }
+        let ident = format_ident!("__coefficient_{}", self.coefficients.len());
+        let value = self.constant_expr(coefficient);
+        self.lets.push(quote!(let #ident: f64 = #value;));
+        self.coefficients.insert(key, quote!(#ident));
+        quote!(#ident)
+    }
+
+    /// Σ c Π atomᵉ in `f64`, a negative exponent as a quotient.
+    fn constant_expr(&mut self, poly: &Poly) -> TokenStream {
+        let terms: Vec<TokenStream> = poly
+            .terms
+            .iter()
+            .map(|(monomial, &c)| {
+                let mut term = (c != 1.0 || monomial.is_empty()).then(|| number(c));
+                for &(atom, e) in monomial {
+                    let a = self.atom(atom);
+                    for _ in 0..e.abs() {
+                        term = Some(match (term, e > 0) {
+                            (None, true) => quote!(#a),
+                            (None, false) => quote!(1.0 / #a),
+                            (Some(t), true) => quote!(#t * #a),
+                            (Some(t), false) => quote!(#t / #a),
+                        });
+                    }
+                }
+                term.expect("a term has a factor")
+            })
+            .collect();
+        let (first, rest) = terms.split_first().expect("a coefficient is not zero");
+        quote!(#first #(+ #rest)*)
+    }
+
+    /// A product of variables on `__D` (`None` for the empty product), shared by every use; a
+    /// negative exponent (1/r) as a quotient.
+    fn product(&mut self, variables: &Monomial) -> Option<TokenStream> {
+        let mut factors: Vec<(TokenStream, bool)> = Vec::new();
+        for &(atom, e) in variables {
+            let a = self.atom(atom);
+            factors.extend(std::iter::repeat_n((a, e > 0), e.unsigned_abs() as usize));
+        }
+        if let [(a, true)] = &factors[..] {
+            return Some(a.clone());
+        }
+        if factors.is_empty() {
+            return None;
+        }
+        if let Some(ident) = self.products.get(variables) {
+            return Some(ident.clone());
+        }
+        let d = scalar();
+        let mut value = quote!(<#d>::from(1.0));
+        for (k, (a, multiply)) in factors.iter().enumerate() {
+            value = match (k, multiply) {
+                (0, true) => quote!(#a),
+                (_, true) => quote!(#value * #a),
+                (_, false) => quote!(#value / #a),
+            };
+        }
+        let ident = format_ident!("__product_{}", self.products.len());
+        self.lets.push(quote!(let #ident: #d = #value;));
+        self.products.insert(variables.clone(), quote!(#ident));
+        Some(quote!(#ident))
+    }
+
+    /// The name an atom is bound to (see [`Writer::inputs`]).
+    fn atom(&mut self, atom: Atom) -> TokenStream {
+        self.atoms.insert(atom);
+        match atom {
+            Atom::Param(i) => self.params[i].clone(),
+            Atom::Constant(i) => format_ident!("__constant_{}", i).into_token_stream(),
+            Atom::Mass(r) => {
+                let r = lit(r);
+                quote!(__masses[#r])
+            }
+            Atom::Sin(j) => format_ident!("__sin_{}", j).into_token_stream(),
+            Atom::Cos(j) => format_ident!("__cos_{}", j).into_token_stream(),
+            Atom::Coord(j) => {
+                let j = lit(j);
+                quote!(__q[#j])
+            }
+            Atom::Vel(j) => {
+                let j = lit(j);
+                quote!(__v[#j])
+            }
+        }
+    }
+
+    /// The bindings of the atoms used: the parameters and masses, the constants as written (with
+    /// the parameters bound by name), one `sin_cos` per coordinate whose sine and cosine both
+    /// appear.
+    fn inputs(&self, model: &Model, equations: &Equations) -> TokenStream {
+        let (p, n, k) = (private(), lit(model.dof()), lit(model.rows));
+        let mut out = TokenStream::new();
+        // By name: the constants as written name them.
+        let named = model.params.iter().map(|f| &f.ident);
+        out.extend(quote!(#(let #named: f64 = self.#named;)*));
+        for (i, constant) in equations.constants.iter().enumerate() {
+            if self.atoms.contains(&Atom::Constant(i)) {
+                let ident = format_ident!("__constant_{}", i);
+                out.extend(quote!(let #ident: f64 = #constant;));
+            }
+        }
+        if self.atoms.iter().any(|a| matches!(a, Atom::Mass(_))) {
+            out.extend(quote!(let __masses = <Self as #p::Model<#n, #k>>::masses(self);));
+        }
+        for j in 0..model.dof() {
+            let (sin, cos) = (format_ident!("__sin_{}", j), format_ident!("__cos_{}", j));
+            let jl = lit(j);
+            match (
+                self.atoms.contains(&Atom::Sin(j)),
+                self.atoms.contains(&Atom::Cos(j)),
+            ) {
+                (true, true) => out.extend(quote!(let (#sin, #cos) = __q[#jl].sin_cos();)),
+                (true, false) => out.extend(quote!(let #sin = __q[#jl].sin();)),
+                (false, true) => out.extend(quote!(let #cos = __q[#jl].cos();)),
+                (false, false) => {}
+            }
+        }
+        out
+    }
+}
+
+/// An `f64` literal, negative ones parenthesised.
+fn number(c: f64) -> TokenStream {
+    let literal = Literal::f64_unsuffixed(c.abs());
+    if c < 0.0 {
+        quote!((-#literal))
+    } else {
+        quote!(#literal)
+    }
+}

@@ -1,0 +1,213 @@
+//! The equations of motion in closed form, derived by the macro when every position is a
+//! polynomial in the coordinates and their sines and cosines (a pendulum, a double pendulum, a
+//! pendulum on a cart, a chain of links declared one by one).
+//!
+//! With x(q) read as polynomials ([`read`]), the terms of M q̈ = 𝓕 − b (Goldstein, Poole & Safko,
+//! *Classical Mechanics*, 3rd ed., §1.4; the notation of `lagrange_core::dynamics`) are
+//! polynomials too, formed here by exact differentiation:
+//!
+//! ```text
+//! Jᵣⱼ = ∂xᵣ/∂qⱼ,   Mᵢⱼ = Σᵣ μᵣ Jᵣᵢ Jᵣⱼ,   aᵣ = Σⱼₖ ∂²xᵣ/∂qⱼ∂qₖ q̇ⱼ q̇ₖ,   bᵢ = Σᵣ μᵣ Jᵣᵢ aᵣ,
+//! 𝓕ᵢ = Σᵣ wᵣ Jᵣᵢ − ∂V/∂qᵢ   (a uniform field g: wᵣ = μᵣ gₖ on the k-th position row of a body;
+//!                         V the sum of the potentials),
+//! ```
+//!
+//! each brought to its normal form modulo sin² + cos² = 1 ([`poly::Poly::reduce`]). The
+//! simplification is what dual numbers cannot do: the pendulum's M = m l² (cos² θ + sin² θ) is the
+//! constant m l², its b = m l² θ̇² (−sin θ cos θ + cos θ sin θ) vanishes, and only sin θ is left to
+//! evaluate, as in θ̈ = −(g/l) sin θ written by hand. `expand::closed_form` writes the
+//! polynomials out as straight-line code.
+//!
+//! The path is taken when the declaration is scleronomic and unconstrained, its bodies are
+//! particles, points and planar bodies declared one by one (no family, no spatial body), its
+//! coordinates are scalars, its only field is uniform and it has no force; and every position and
+//! potential is read. Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
+
+pub mod poly;
+pub mod read;
+
+use crate::check::{Dim, Model, Shape};
+use poly::{Atom, Poly};
+use proc_macro2::TokenStream;
+use read::{Reader, Value};
+
+/// The closed-form terms of M q̈ = 𝓕 − b.
+pub struct Equations {
+    /// Mᵢⱼ for j ≤ i (the lower triangle, row by row).
+    pub mass_matrix: Vec<Vec<Poly>>,
+    /// 𝓕: a uniform field's generalized forces and −∇V.
+    pub generalized_forces: Vec<Poly>,
+    /// b: the velocity-product terms.
+    pub inertial_terms: Vec<Poly>,
+    /// The opaque constants the positions name, as written ([`Atom::Constant`]).
+    pub constants: Vec<TokenStream>,
+}
+
+/// The closed-form equations of `model`, or `None` when the declaration is not of the kind read
+/// (see the module docs).
+pub fn equations(model: &Model) -> Option<Equations> {
+    let applies = !model.rheonomic
+        && model.constraints.is_empty()
+        && model.gravities.is_empty()
+        && model.forces.is_empty()
+        && !model.bodies.is_empty()
+        && model.coords.iter().all(|c| c.array.is_none())
+        && model
+            .bodies
+            .iter()
+            .all(|b| b.count.is_none() && b.shape != Shape::Spatial);
+    if !applies {
+        return None;
+    }
+    let coords = model
+        .coords
+        .iter()
+        .enumerate()
+        .map(|(j, c)| (c.ident.to_string(), j))
+        .collect();
+    let params = model
+        .params
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (p.ident.to_string(), i))
+        .collect();
+    let mut reader = Reader::new(coords, params);
+    // The uniform fields, summed by dimension: constant vectors, their zero components known.
+    let mut fields: [Option<Vec<Poly>>; 2] = [None, None];
+    for (decl, dim) in &model.uniform_gravities {
+        let Value::Vector(g) = reader.block(&decl.block)? else {
+            return None;
+        };
+        if !g.iter().all(Poly::is_constant) {
+            return None;
+        }
+        let field = &mut fields[(*dim == Dim::Three) as usize];
+        *field = Some(match field.take() {
+            Some(sum) => sum.iter().zip(&g).map(|(a, b)| a.add(b)).collect(),
+            None => g,
+        });
+    }
+    let mut rows: Vec<Row> = Vec::new();
+    for body in &model.bodies {
+        let value = reader.block(&body.decl.block)?;
+        let components = match (&value, body.shape) {
+            (Value::Vector(v), Shape::Particle(d) | Shape::Point(d))
+                if v.len() == Shape::Particle(d).rows() =>
+            {
+                v.clone()
+            }
+            (Value::Planar(position, angle), Shape::Planar) => {
+                let mut rows = position.clone();
+                rows.push(angle.clone());
+                rows
+            }
+            _ => return None,
+        };
+        let field = &fields[(body.shape.dim() == Dim::Three) as usize];
+        for (k, x) in components.into_iter().enumerate() {
+            let angle = body.shape == Shape::Planar && k == 2;
+            let mass = Atom::Mass(if angle { body.row + k } else { body.row });
+            // wᵣ = μᵣ gₖ on a position row of a massive body.
+            let weight = match field {
+                Some(g) if body.shape.has_mass() && !angle => Some(Poly::atom(mass).mul(&g[k])),
+                _ => None,
+            };
+            rows.push(Row {
+                x,
+                mass: body.shape.has_mass().then_some(mass),
+                weight,
+            });
+        }
+        reader.define_body(body.decl.ident().to_string(), value);
+    }
+    // V = Σ potentials, each read with the bodies in scope.
+    let mut potential = Poly::zero();
+    for decl in &model.potentials {
+        let Value::Scalar(v) = reader.block(&decl.block)? else {
+            return None;
+        };
+        potential = potential.add(&v);
+    }
+    Some(assemble(model, &rows, &potential, reader.constants))
+}
+
+/// A row of x as read.
+struct Row {
+    x: Poly,
+    /// The atom of its mass, for a row that carries mass: one per body's position, so a
+    /// particle's rows share it and sin² + cos² can meet.
+    mass: Option<Atom>,
+    /// Its weight μᵣ gₖ, for a position row of a massive body in a uniform field.
+    weight: Option<Poly>,
+}
+
+/// M, 𝓕 and b from the rows of x (see the module docs).
+fn assemble(
+    model: &Model,
+    rows: &[Row],
+    potential: &Poly,
+    constants: Vec<TokenStream>,
+) -> Equations {
+    let n = model.dof();
+    let jacobian: Vec<Vec<Poly>> = rows
+        .iter()
+        .map(|row| (0..n).map(|j| row.x.derivative(j)).collect())
+        .collect();
+    // aᵣ = d/ds (Σⱼ Jᵣⱼ q̇ⱼ) along q̇: the second derivative of xᵣ along the motion at q̈ = 0.
+    let velocity = |j: usize| Poly::atom(Atom::Vel(j));
+    let accelerations: Vec<Poly> = jacobian
+        .iter()
+        .map(|row| {
+            let x_dot = (0..n).fold(Poly::zero(), |sum, j| sum.add(&row[j].mul(&velocity(j))));
+            (0..n).fold(Poly::zero(), |sum, k| {
+                sum.add(&x_dot.derivative(k).mul(&velocity(k)))
+            })
+        })
+        .collect();
+    let massive: Vec<(usize, Poly)> = rows
+        .iter()
+        .enumerate()
+        .filter_map(|(r, row)| row.mass.map(|m| (r, Poly::atom(m))))
+        .collect();
+    let mass_matrix = (0..n)
+        .map(|i| {
+            (0..=i)
+                .map(|j| {
+                    massive
+                        .iter()
+                        .fold(Poly::zero(), |sum, (r, mu)| {
+                            sum.add(&mu.mul(&jacobian[*r][i].mul(&jacobian[*r][j])))
+                        })
+                        .reduce()
+                })
+                .collect()
+        })
+        .collect();
+    let inertial_terms = (0..n)
+        .map(|i| {
+            massive
+                .iter()
+                .fold(Poly::zero(), |sum, (r, mu)| {
+                    sum.add(&mu.mul(&jacobian[*r][i].mul(&accelerations[*r])))
+                })
+                .reduce()
+        })
+        .collect();
+    let generalized_forces = (0..n)
+        .map(|i| {
+            rows.iter()
+                .zip(&jacobian)
+                .filter_map(|(row, j)| Some(row.weight.as_ref()?.mul(&j[i])))
+                .fold(potential.derivative(i).scale(-1.0), |sum, term| {
+                    sum.add(&term)
+                })
+                .reduce()
+        })
+        .collect();
+    Equations {
+        mass_matrix,
+        generalized_forces,
+        inertial_terms,
+        constants,
+    }
+}

@@ -1,0 +1,226 @@
+//! Mechanisms whose positions are polynomials in the coordinates and their sines and cosines get
+//! M, 𝓕 and b in closed form, derived by the macro; they must agree with the dual-number passes
+//! (`dynamics::equations_of_motion`) at every state, on `f64` and through an integrator that
+//! differentiates q̈ with dual numbers.
+
+use lagrange::__private::{dynamics, Dynamics, Model};
+use lagrange::prelude::*;
+
+/// A pendulum hanging from a cart on a rail.
+#[mechanism]
+pub mod cart_pendulum {
+    pub struct Coords {
+        pub x: f64,
+        pub theta: f64,
+    }
+    pub struct CartPendulum {
+        pub cart_mass: f64,
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = cart_mass)]
+    fn cart() -> Vec2 {
+        vec2(x, 0.0)
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        cart + vec2(theta.sin(), -theta.cos()) * l
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+/// A two-link arm in relative angles with a rod as a planar body, a marker point at its tip and a
+/// field at an angle `tilt` (written as `tilt.sin()`: a constant as written).
+#[mechanism]
+pub mod arm {
+    pub struct Coords {
+        pub shoulder: f64,
+        pub elbow: f64,
+    }
+    pub struct Arm {
+        pub m: f64,
+        pub inertia: f64,
+        pub l: f64,
+        pub g: f64,
+        pub tilt: f64,
+    }
+    #[rigid_body(mass = m, inertia = inertia)]
+    fn upper() -> Planar {
+        planar(vec2(shoulder.cos(), shoulder.sin()) * (l / 2.0), shoulder)
+    }
+    #[particle(mass = m)]
+    fn hand() -> Vec2 {
+        let elbow_at = upper.position * 2.0;
+        elbow_at + vec2((shoulder + elbow).cos(), (shoulder + elbow).sin()) * l
+    }
+    #[point]
+    fn tip() -> Vec2 {
+        hand + vec2((shoulder + 2.0 * elbow).cos(), 0.0) * 0.1
+    }
+    #[gravity]
+    fn field() -> Vec2 {
+        vec2(g * tilt.sin(), -g * tilt.cos())
+    }
+}
+
+/// A spherical pendulum in polar and azimuthal angles, and a particle in polar coordinates in the
+/// plane z = 0 of the same space: products of a coordinate with sines and cosines, and
+/// sin² θ (cos² φ + sin² φ) + cos² θ to simplify.
+#[mechanism]
+pub mod spherical {
+    pub struct Coords {
+        pub theta: f64,
+        pub phi: f64,
+        pub r: f64,
+        pub psi: f64,
+    }
+    pub struct Spherical {
+        pub m: f64,
+        pub m2: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec3 {
+        vec3(
+            theta.sin() * phi.cos(),
+            theta.sin() * phi.sin(),
+            -theta.cos(),
+        ) * l
+    }
+    #[particle(mass = m2)]
+    fn orbiter() -> Vec3 {
+        vec3(r * psi.cos(), r * psi.sin(), 0.0)
+    }
+    #[gravity]
+    fn down() -> Vec3 {
+        vec3(0.0, 0.0, -g)
+    }
+}
+
+fn cart_pendulum() -> cart_pendulum::CartPendulum {
+    cart_pendulum::CartPendulum {
+        cart_mass: 2.0,
+        m: 0.5,
+        l: 0.8,
+        g: 9.81,
+    }
+}
+
+fn arm() -> arm::Arm {
+    arm::Arm {
+        m: 1.3,
+        inertia: 0.07,
+        l: 0.6,
+        g: 9.81,
+        tilt: 0.2,
+    }
+}
+
+fn spherical() -> spherical::Spherical {
+    spherical::Spherical {
+        m: 0.9,
+        m2: 1.7,
+        l: 1.1,
+        g: 9.81,
+    }
+}
+
+/// States spread over the configuration space: angles over several turns, velocities of both signs.
+fn states<const N: usize>() -> impl Iterator<Item = ([f64; N], [f64; N])> {
+    (0..25).map(|i| {
+        let f = i as f64;
+        (
+            std::array::from_fn(|j| 0.4 + (0.9 * f + 1.7 * j as f64).sin() * 4.0),
+            std::array::from_fn(|j| (1.3 * f - 0.6 * j as f64).cos() * 3.0),
+        )
+    })
+}
+
+/// The closed form against the dual-number passes at every state: M, 𝓕 and b entry by entry.
+fn agrees_with_the_dual_passes<M: Model<N, K> + Dynamics<N>, const N: usize, const K: usize>(
+    sys: &M,
+) {
+    assert!(
+        M::CLOSED_FORM,
+        "the declaration is not derived in closed form"
+    );
+    for (q, v) in states::<N>() {
+        let closed = sys.equations_of_motion_at(0.0, &q, &v);
+        let dual = dynamics::equations_of_motion::<M, f64, N, K>(sys, 0.0, &q, &v);
+        // The same sums of products in another order (the closed form simplified by
+        // sin² + cos² = 1 before evaluating): agreement to a few ulps of each term's scale.
+        let close = |a: f64, b: f64, scale: f64| (a - b).abs() <= 1e-13 * scale.max(1.0);
+        let m_scale = dual.mass_matrix.amax();
+        for (a, b) in closed.mass_matrix.iter().zip(dual.mass_matrix.iter()) {
+            assert!(close(*a, *b, m_scale), "M at {q:?}: {a} vs {b}");
+        }
+        let f_scale = dual.generalized_forces.amax();
+        for (a, b) in closed
+            .generalized_forces
+            .iter()
+            .zip(dual.generalized_forces.iter())
+        {
+            assert!(close(*a, *b, f_scale), "𝓕 at {q:?}: {a} vs {b}");
+        }
+        let b_scale = dual.inertial_terms.amax();
+        for (a, b) in closed.inertial_terms.iter().zip(dual.inertial_terms.iter()) {
+            assert!(close(*a, *b, b_scale), "b at {q:?}, {v:?}: {a} vs {b}");
+        }
+    }
+}
+
+#[test]
+fn a_cart_pendulum_agrees_with_the_dual_passes() {
+    agrees_with_the_dual_passes(&cart_pendulum());
+}
+
+#[test]
+fn a_planar_arm_with_angle_sums_agrees_with_the_dual_passes() {
+    agrees_with_the_dual_passes(&arm());
+}
+
+#[test]
+fn a_spherical_pendulum_and_polar_coordinates_agree_with_the_dual_passes() {
+    agrees_with_the_dual_passes(&spherical());
+}
+
+#[test]
+fn the_gallery_pendulums_are_derived_in_closed_form() {
+    use lagrange_gallery::scenes::double_pendulum::double_pendulum;
+    use lagrange_gallery::scenes::pendulum::pendulum;
+    assert!(<pendulum::Pendulum as Dynamics<1>>::CLOSED_FORM);
+    assert!(<double_pendulum::DoublePendulum as Dynamics<2>>::CLOSED_FORM);
+}
+
+#[test]
+fn closed_form_accelerations_differentiate_like_the_dual_passes() {
+    // Radau5 differentiates q̈ with dual numbers for its Newton matrix: the closed form's
+    // straight-line code on duals. Integrated against RK4 on a fine step (error ≈ h⁴ ≈ 1e-12 over
+    // the run) from the same start, the end states agree to Radau5's tolerance.
+    let sys = cart_pendulum();
+    let start = cart_pendulum::State::new(
+        0.0,
+        cart_pendulum::Coords { x: 0.1, theta: 2.5 },
+        cart_pendulum::Coords {
+            x: -0.4,
+            theta: 1.0,
+        },
+    );
+    let mut implicit = start;
+    Radau5::new(1e-10, 1e-10)
+        .integrate(&sys, &mut implicit, 2.0, &mut [], |_| {})
+        .unwrap();
+    let mut reference = start;
+    for _ in 0..2000 {
+        sys.step::<Rk4>(&mut reference, 1e-3).unwrap();
+    }
+    let (a, b) = (implicit.q.to_array(), reference.q.to_array());
+    for j in 0..2 {
+        assert!((a[j] - b[j]).abs() < 1e-7, "{a:?} vs {b:?}");
+    }
+}
