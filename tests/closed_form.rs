@@ -224,3 +224,27 @@ fn closed_form_accelerations_differentiate_like_the_dual_passes() {
         assert!((a[j] - b[j]).abs() < 1e-7, "{a:?} vs {b:?}");
     }
 }
+
+#[test]
+fn a_validated_handle_prepares_the_coefficients_once() {
+    // The handle computes the closed form's constant factors when it is made and evaluates the
+    // same expressions with them: the same operations in the same order, so the same bits.
+    fn same<M: Mechanism<N>, const N: usize>(sys: M, states: impl Iterator<Item = State<M::Coords>>) {
+        assert!(std::mem::size_of::<<M as lagrange::__private::Prepare>::Prepared>() > 0);
+        let validated = sys.validated().unwrap();
+        for s in states {
+            let plain = validated.get().accelerations(&s).unwrap().to_array();
+            let prepared = validated.accelerations(&s).unwrap().to_array();
+            assert_eq!(plain, prepared, "at {s:?}");
+        }
+    }
+    let at = |(q, v): ([f64; 2], [f64; 2])| {
+        arm::State::new(0.0, arm::Coords::from_array(q), arm::Coords::from_array(v))
+    };
+    same(arm(), states::<2>().map(at));
+    let at = |(q, v): ([f64; 4], [f64; 4])| {
+        let q = [q[0], q[1], 1.0 + q[2].abs(), q[3]];
+        spherical::State::new(0.0, spherical::Coords::from_array(q), spherical::Coords::from_array(v))
+    };
+    same(spherical(), states::<4>().map(at));
+}

@@ -1,20 +1,23 @@
-//! The closed-form equations of motion ([`crate::symbolic`]) as straight-line code: an inherent
-//! `__lagrange_closed_form(q, q̇)` returning M, 𝓕 and b, which `equations_of_motion_at` calls.
-//!
-//! Constant factors (parameters, masses, constants as written) are `f64`, each distinct
-//! coefficient computed once; the sines and cosines of the coordinates are evaluated once each,
-//! as one `sin_cos` where both appear; each distinct product of variables is one `let`.
+//! The closed-form equations of motion ([`crate::symbolic`]) as straight-line code, in three
+//! inherent functions:
+//! - `__lagrange_coefficients()`: every distinct constant factor (of parameters, masses and
+//!   constants as written) as an `f64` array — what a validated handle prepares once
+//!   (`Prepare::Prepared`), since parameters do not change while it exists;
+//! - `__lagrange_closed_form_with(k, q, q̇)`: M, 𝓕 and b from those coefficients, the sines and
+//!   cosines of the coordinates evaluated once each (one `sin_cos` where both appear) and each
+//!   distinct product of variables once;
+//! - `__lagrange_closed_form(q, q̇)`: the two together, what `equations_of_motion_at` calls.
 
 use super::{lit, private, scalar};
 use crate::check::Model;
 use crate::symbolic::poly::{Atom, Monomial, Poly};
 use crate::symbolic::Equations;
-use proc_macro2::{Literal, TokenStream};
+use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote, ToTokens};
 use std::collections::{BTreeMap, BTreeSet};
 
-/// The inherent impl holding `__lagrange_closed_form`.
-pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> TokenStream {
+/// The inherent impl holding the three functions, and the number of coefficients.
+pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenStream, usize) {
     let (p, d) = (private(), scalar());
     let params_ident = model.params_ident;
     let n = model.dof();
@@ -24,7 +27,8 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> TokenStr
             .iter()
             .map(|f| f.ident.to_token_stream())
             .collect(),
-        lets: Vec::new(),
+        coefficient_values: Vec::new(),
+        product_lets: Vec::new(),
         coefficients: BTreeMap::new(),
         products: BTreeMap::new(),
         atoms: BTreeSet::new(),
@@ -52,22 +56,45 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> TokenStr
         });
         quote!([#(#column),*])
     });
-    let inputs = out.inputs(model, equations);
-    let Writer { lets, .. } = out;
+    let constants = out.constant_inputs(model, equations);
+    let variables = out.variable_inputs(model);
+    // One `let` for the products: each `let` opens a scope, and thousands of nested scopes (a
+    // chain of 64 links) overflow the compiler's stack when it writes debug information.
+    let products = tuple_let(&out.product_lets);
+    let coefficients = out.coefficient_values.iter();
+    let coefficient_count = out.coefficient_values.len();
+    let count = lit(coefficient_count);
     let n = lit(n);
     let prelude = super::prelude();
-    quote! {
+    let tokens = quote! {
         impl #params_ident {
+            /// The constant factors of the closed-form equations of motion.
             #[inline(always)]
             #[allow(unused_variables, non_snake_case, clippy::all)]
+            fn __lagrange_coefficients(&self) -> [f64; #count] {
+                #prelude
+                #constants
+                [#(#coefficients),*]
+            }
+            #[inline(always)]
             fn __lagrange_closed_form<#d: #p::Scalar>(
                 &self,
                 __q: &[#d; #n],
                 __v: &[#d; #n],
             ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
+                self.__lagrange_closed_form_with(&self.__lagrange_coefficients(), __q, __v)
+            }
+            #[inline(always)]
+            #[allow(unused_variables, non_snake_case, clippy::all)]
+            fn __lagrange_closed_form_with<#d: #p::Scalar>(
+                &self,
+                __k: &[f64; #count],
+                __q: &[#d; #n],
+                __v: &[#d; #n],
+            ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
                 #prelude
-                #inputs
-                #(#lets)*
+                #variables
+                #products
                 #p::dynamics::EquationsOfMotion::from_columns(
                     [#(#columns),*],
                     [#(#forces),*],
@@ -75,7 +102,8 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> TokenStr
                 )
             }
         }
-    }
+    };
+    (tokens, coefficient_count)
 }
 
 /// The `let`s written so far, shared between entries: coefficients by their constant polynomial,
@@ -83,7 +111,10 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> TokenStr
 struct Writer {
     /// The parameters' names, by index.
     params: Vec<TokenStream>,
-    lets: Vec<TokenStream>,
+    /// The `f64` coefficients' values, `__k[i]` in the equations.
+    coefficient_values: Vec<TokenStream>,
+    /// Products of variables on `__D`, by name.
+    product_lets: Vec<(Ident, TokenStream)>,
     coefficients: BTreeMap<String, TokenStream>,
     products: BTreeMap<Monomial, TokenStream>,
     atoms: BTreeSet<Atom>,
@@ -161,20 +192,20 @@ impl Writer {
         }
     }
 
-    /// The `f64` value of a constant polynomial: a literal, or a `let` shared by every use.
+    /// The `f64` value of a constant polynomial: a literal, or `__k[i]`, shared by every use.
     fn coefficient(&mut self, coefficient: &Poly) -> TokenStream {
         if let Some(c) = coefficient.as_number() {
             return number(c);
         }
         let key = format!("{coefficient:?}");
-        if let Some(ident) = self.coefficients.get(&key) {
-            return ident.clone();
+        if let Some(k) = self.coefficients.get(&key) {
+            return k.clone();
         }
-        let ident = format_ident!("__coefficient_{}", self.coefficients.len());
+        let i = lit(self.coefficient_values.len());
         let value = self.constant_expr(coefficient);
-        self.lets.push(quote!(let #ident: f64 = #value;));
-        self.coefficients.insert(key, quote!(#ident));
-        quote!(#ident)
+        self.coefficient_values.push(value);
+        self.coefficients.insert(key, quote!(__k[#i]));
+        quote!(__k[#i])
     }
 
     /// Σ c Π atomᵉ in `f64`, a negative exponent as a quotient.
@@ -229,7 +260,7 @@ impl Writer {
             };
         }
         let ident = format_ident!("__product_{}", self.products.len());
-        self.lets.push(quote!(let #ident: #d = #value;));
+        self.product_lets.push((ident.clone(), value));
         self.products.insert(variables.clone(), quote!(#ident));
         Some(quote!(#ident))
     }
@@ -257,13 +288,11 @@ impl Writer {
         }
     }
 
-    /// The bindings of the atoms used: the parameters and masses, the constants as written (with
-    /// the parameters bound by name), one `sin_cos` per coordinate whose sine and cosine both
-    /// appear.
-    fn inputs(&self, model: &Model, equations: &Equations) -> TokenStream {
+    /// The bindings the coefficients use: the parameters by name, the constants as written and
+    /// the masses.
+    fn constant_inputs(&self, model: &Model, equations: &Equations) -> TokenStream {
         let (p, n, k) = (private(), lit(model.dof()), lit(model.rows));
         let mut out = TokenStream::new();
-        // By name: the constants as written name them.
         let named = model.params.iter().map(|f| &f.ident);
         out.extend(quote!(#(let #named: f64 = self.#named;)*));
         for (i, constant) in equations.constants.iter().enumerate() {
@@ -275,6 +304,13 @@ impl Writer {
         if self.atoms.iter().any(|a| matches!(a, Atom::Mass(_))) {
             out.extend(quote!(let __masses = <Self as #p::Model<#n, #k>>::masses(self);));
         }
+        out
+    }
+
+    /// The sines and cosines used: one `sin_cos` per coordinate whose sine and cosine both
+    /// appear.
+    fn variable_inputs(&self, model: &Model) -> TokenStream {
+        let mut out = TokenStream::new();
         for j in 0..model.dof() {
             let (sin, cos) = (format_ident!("__sin_{}", j), format_ident!("__cos_{}", j));
             let jl = lit(j);
@@ -290,6 +326,15 @@ impl Writer {
         }
         out
     }
+}
+
+/// `let (a, b, …) = (value of a, value of b, …);`, nothing for no names.
+fn tuple_let(lets: &[(Ident, TokenStream)]) -> TokenStream {
+    if lets.is_empty() {
+        return TokenStream::new();
+    }
+    let (names, values): (Vec<_>, Vec<_>) = lets.iter().cloned().unzip();
+    quote!(let (#(#names,)*) = (#(#values,)*);)
 }
 
 /// An `f64` literal, negative ones parenthesised.

@@ -6,8 +6,9 @@ use quote::quote;
 
 /// How `equations_of_motion_at` forms M, 𝓕 and b.
 pub(super) enum Equations {
-    /// The straight-line code of `expand::closed_form`.
-    ClosedForm,
+    /// The straight-line code of `expand::closed_form`, with its number of coefficients (what a
+    /// validated handle prepares).
+    ClosedForm(usize),
     /// `lagrange_core::tree` over a tree of translations (seed width, bodies).
     Tree(usize, usize),
     /// The dual-number passes of `lagrange_core::dynamics`.
@@ -25,16 +26,30 @@ pub(super) fn mechanism_impl(
     affine: bool,
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
-    let prepare = prepare_impl(params, &n, &k, affine);
-    // Through a validated handle, an affine mechanism's q̈ uses the constants prepared once.
-    let prepared_accelerations = affine.then(|| {
-        quote! {
+    let prepared = match equations {
+        _ if affine => Prepared::Affine,
+        Equations::ClosedForm(count) => Prepared::Coefficients(count),
+        _ => Prepared::Nothing,
+    };
+    let prepare = prepare_impl(params, &n, &k, prepared);
+    // Through a validated handle, q̈ uses the constants prepared once: an affine mechanism's J and
+    // factors of M, the closed form's coefficients.
+    let prepared_accelerations = match prepared {
+        Prepared::Affine => Some(quote! {
             #[inline]
             fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
                 #p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v)
             }
-        }
-    });
+        }),
+        Prepared::Coefficients(_) => Some(quote! {
+            #[inline]
+            fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+                let eom = self.__lagrange_closed_form_with::<S>(prepared, q, v);
+                #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
+            }
+        }),
+        Prepared::Nothing => None,
+    };
     let scleronomic = !rheonomic;
     // A scleronomic mechanism's canonical field comes from one hyper-dual pass.
     let canonical = (!rheonomic).then(|| {
@@ -45,9 +60,9 @@ pub(super) fn mechanism_impl(
             }
         }
     });
-    let closed_form = matches!(equations, Equations::ClosedForm);
+    let closed_form = matches!(equations, Equations::ClosedForm(_));
     let equations_of_motion = match equations {
-        Equations::ClosedForm => quote!(self.__lagrange_closed_form::<S>(q, v)),
+        Equations::ClosedForm(_) => quote!(self.__lagrange_closed_form::<S>(q, v)),
         Equations::Tree(w, b) => {
             let (w, b) = (lit(w), lit(b));
             quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
@@ -112,16 +127,37 @@ pub(super) fn mechanism_impl(
     }
 }
 
-/// The `Prepare` impl: for a declaration whose positions are affine in the coordinates
-/// (`crate::affine`), J and the factors of the constant mass matrix; nothing otherwise.
+/// What a validated handle prepares.
+#[derive(Clone, Copy)]
+enum Prepared {
+    /// J and the factors of the constant mass matrix (`crate::affine`).
+    Affine,
+    /// The closed form's coefficients (`expand::closed_form`).
+    Coefficients(usize),
+    Nothing,
+}
+
+/// The `Prepare` impl (see [`Prepared`]).
 fn prepare_impl(
     params: &Ident,
     n: &proc_macro2::Literal,
     k: &proc_macro2::Literal,
-    affine: bool,
+    prepared: Prepared,
 ) -> TokenStream {
     let p = private();
-    if affine {
+    if let Prepared::Coefficients(count) = prepared {
+        let count = lit(count);
+        return quote! {
+            impl #p::Prepare for #params {
+                type Prepared = [f64; #count];
+                #[inline]
+                fn prepare(&self) -> #p::Result<Self::Prepared> {
+                    #p::core::result::Result::Ok(self.__lagrange_coefficients())
+                }
+            }
+        };
+    }
+    if let Prepared::Affine = prepared {
         quote! {
             impl #p::Prepare for #params {
                 type Prepared = #p::lagrange_core::affine::AffineConstants<#n, #k>;

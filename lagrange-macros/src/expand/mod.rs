@@ -131,14 +131,15 @@ fn generate(model: &Model) -> TokenStream {
         .then(|| crate::structure::tree(model))
         .flatten();
     let tree_items = tree.as_ref().map(|tree| tree::tree_items(model, tree));
-    let equations = match (&closed_form, &tree) {
-        (Some(_), _) => Equations::ClosedForm,
-        (None, Some(tree)) => Equations::Tree(tree.width, tree.bodies.len()),
-        (None, None) => Equations::Dense,
-    };
     let closed_form_impl = closed_form
         .as_ref()
         .map(|equations| closed_form::closed_form_impl(model, equations));
+    let equations = match (&closed_form_impl, &tree) {
+        (Some((_, coefficients)), _) => Equations::ClosedForm(*coefficients),
+        (None, Some(tree)) => Equations::Tree(tree.width, tree.bodies.len()),
+        (None, None) => Equations::Dense,
+    };
+    let closed_form_impl = closed_form_impl.map(|(tokens, _)| tokens);
     let mechanism_impl = mechanism_impl(
         model.params_ident,
         model.dof(),

@@ -253,13 +253,10 @@ pub mod double_pendulum {
         }
     }
     impl DoublePendulum {
+        /// The constant factors of the closed-form equations of motion.
         #[inline(always)]
         #[allow(unused_variables, non_snake_case, clippy::all)]
-        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
-            &self,
-            __q: &[__D; 2],
-            __v: &[__D; 2],
-        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
+        fn __lagrange_coefficients(&self) -> [f64; 5] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
                 planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
@@ -273,43 +270,74 @@ pub mod double_pendulum {
             let l2: f64 = self.l2;
             let g: f64 = self.g;
             let __masses = <Self as ::lagrange::__private::Model<2, 4>>::masses(self);
+            [
+                l1 * l1 * __masses[0] + l1 * l1 * __masses[2],
+                l1 * l2 * __masses[2],
+                l2 * l2 * __masses[2],
+                l1 * g * __masses[0] + l1 * g * __masses[2],
+                l2 * g * __masses[2],
+            ]
+        }
+        #[inline(always)]
+        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
+            self.__lagrange_closed_form_with(&self.__lagrange_coefficients(), __q, __v)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_closed_form_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &[f64; 5],
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
             let (__sin_0, __cos_0) = __q[0].sin_cos();
             let (__sin_1, __cos_1) = __q[1].sin_cos();
-            let __coefficient_0: f64 = l1 * l1 * __masses[0] + l1 * l1 * __masses[2];
-            let __product_0: __D = __sin_0 * __sin_1;
-            let __product_1: __D = __cos_0 * __cos_1;
-            let __coefficient_1: f64 = l1 * l2 * __masses[2];
-            let __coefficient_2: f64 = l2 * l2 * __masses[2];
-            let __coefficient_3: f64 = l1 * g * __masses[0] + l1 * g * __masses[2];
-            let __coefficient_4: f64 = l2 * g * __masses[2];
-            let __product_2: __D = __v[1] * __v[1];
-            let __product_3: __D = __sin_0 * __cos_1;
-            let __product_4: __D = __sin_1 * __cos_0;
-            let __product_5: __D = __v[0] * __v[0];
+            let (
+                __product_0,
+                __product_1,
+                __product_2,
+                __product_3,
+                __product_4,
+                __product_5,
+            ) = (
+                __sin_0 * __sin_1,
+                __cos_0 * __cos_1,
+                __v[1] * __v[1],
+                __sin_0 * __cos_1,
+                __sin_1 * __cos_0,
+                __v[0] * __v[0],
+            );
             ::lagrange::__private::dynamics::EquationsOfMotion::from_columns(
                 [
-                    [
-                        <__D>::from(__coefficient_0),
-                        (__product_0 + __product_1) * __coefficient_1,
-                    ],
-                    [
-                        (__product_0 + __product_1) * __coefficient_1,
-                        <__D>::from(__coefficient_2),
-                    ],
+                    [<__D>::from(__k[0]), (__product_0 + __product_1) * __k[1]],
+                    [(__product_0 + __product_1) * __k[1], <__D>::from(__k[2])],
                 ],
-                [-__sin_0 * __coefficient_3, -__sin_1 * __coefficient_4],
+                [-__sin_0 * __k[3], -__sin_1 * __k[4]],
                 [
-                    (__product_3 - __product_4) * __coefficient_1 * __product_2,
-                    (-__product_3 + __product_4) * __coefficient_1 * __product_5,
+                    (__product_3 - __product_4) * __k[1] * __product_2,
+                    (-__product_3 + __product_4) * __k[1] * __product_5,
                 ],
             )
         }
     }
     impl ::lagrange::__private::Prepare for DoublePendulum {
-        type Prepared = ();
-        #[inline(always)]
-        fn prepare(&self) -> ::lagrange::__private::Result<()> {
-            ::lagrange::__private::core::result::Result::Ok(())
+        type Prepared = [f64; 5];
+        #[inline]
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::core::result::Result::Ok(
+                self.__lagrange_coefficients(),
+            )
         }
     }
     impl ::lagrange::__private::Dynamics<2> for DoublePendulum {
@@ -397,6 +425,21 @@ pub mod double_pendulum {
                 2,
                 4,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            let eom = self.__lagrange_closed_form_with::<S>(prepared, q, v);
+            ::lagrange::__private::dynamics::solve_accelerations::<
+                Coords,
+                S,
+                2,
+            >(&eom, t, q)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration

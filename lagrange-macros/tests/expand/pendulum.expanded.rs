@@ -201,13 +201,10 @@ pub mod pendulum {
         }
     }
     impl Pendulum {
+        /// The constant factors of the closed-form equations of motion.
         #[inline(always)]
         #[allow(unused_variables, non_snake_case, clippy::all)]
-        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
-            &self,
-            __q: &[__D; 1],
-            __v: &[__D; 1],
-        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 1> {
+        fn __lagrange_coefficients(&self) -> [f64; 2] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
                 planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
@@ -219,21 +216,46 @@ pub mod pendulum {
             let l: f64 = self.l;
             let g: f64 = self.g;
             let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
+            [l * l * __masses[0], l * g * __masses[0]]
+        }
+        #[inline(always)]
+        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 1> {
+            self.__lagrange_closed_form_with(&self.__lagrange_coefficients(), __q, __v)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_closed_form_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &[f64; 2],
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 1> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
             let __sin_0 = __q[0].sin();
-            let __coefficient_0: f64 = l * l * __masses[0];
-            let __coefficient_1: f64 = l * g * __masses[0];
             ::lagrange::__private::dynamics::EquationsOfMotion::from_columns(
-                [[<__D>::from(__coefficient_0)]],
-                [-__sin_0 * __coefficient_1],
+                [[<__D>::from(__k[0])]],
+                [-__sin_0 * __k[1]],
                 [<__D>::from(0.0)],
             )
         }
     }
     impl ::lagrange::__private::Prepare for Pendulum {
-        type Prepared = ();
-        #[inline(always)]
-        fn prepare(&self) -> ::lagrange::__private::Result<()> {
-            ::lagrange::__private::core::result::Result::Ok(())
+        type Prepared = [f64; 2];
+        #[inline]
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::core::result::Result::Ok(
+                self.__lagrange_coefficients(),
+            )
         }
     }
     impl ::lagrange::__private::Dynamics<1> for Pendulum {
@@ -321,6 +343,21 @@ pub mod pendulum {
                 1,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ::lagrange::__private::Result<[S; 1]> {
+            let eom = self.__lagrange_closed_form_with::<S>(prepared, q, v);
+            ::lagrange::__private::dynamics::solve_accelerations::<
+                Coords,
+                S,
+                1,
+            >(&eom, t, q)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {
