@@ -260,6 +260,7 @@ fn a_taut_string_keeps_the_energy_bounded_over_many_periods() {
             step(&sys, &mut state, h).unwrap();
             let half = k / 10_000;
             worst[half] = worst[half].max((sys.energy(&state).unwrap() - e0).abs());
+            // Taut: RATTLE solves |x| = l with the step by Newton to round-off, every step.
             let r = state.q.x.hypot(state.q.y);
             assert!(
                 (r - l).abs() < 1e-12,
