@@ -331,6 +331,38 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     }
 
     #[doc(hidden)]
+    /// Hook for a mechanism that holds a contact mode over a step (the contact loop's held mode):
+    /// how many leading rows of [`holonomic_constraints_at`](Dynamics::holonomic_constraints_at)
+    /// are enforced over it — its holonomic rows and its closed unilateral contacts, which RATTLE
+    /// enforces as holonomic rows while the mode is held. `None` (the default): every holonomic
+    /// row [`CONSTRAINT_COUNTS`](Dynamics::CONSTRAINT_COUNTS) declares.
+    ///
+    /// ```
+    /// use lagrange_core::mechanism::Dynamics;
+    /// # use lagrange_core::{vec2, Model, Scalar};
+    /// # struct Pendulum;
+    /// # impl Model<1, 2> for Pendulum {
+    /// #     type Coords = [f64; 1];
+    /// #     const RHEONOMIC: bool = false;
+    /// #     const HAS_POTENTIAL: bool = true;
+    /// #     const HAS_FORCES: bool = false;
+    /// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    /// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+    /// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+    /// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+    /// #     }
+    /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+    /// # }
+    /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+    /// // A declared mechanism holds no mode: its declaration says which rows are enforced.
+    /// assert_eq!(Pendulum.enforced_holonomic_rows(), None);
+    /// ```
+    #[inline]
+    fn enforced_holonomic_rows(&self) -> Option<usize> {
+        None
+    }
+
+    #[doc(hidden)]
     /// Hook for mechanisms with unilateral or friction rows: one step of `h` with the fixed-step
     /// method `I`, the contact mode held over it and its switches located and applied
     /// ([`ContactRk4::step_with`](crate::constraints::ContactRk4::step_with)), as

@@ -136,6 +136,8 @@ pub struct ContactRk4<const C: usize> {
     pub options: ContactOptions,
     /// Every mode change so far, in order (grows only when an event happens).
     pub events: Vec<ModeChange>,
+    /// What the steps so far cost (see [`ContactRk4::stats`]).
+    pub(super) stats: Stats,
 }
 
 /// One RK4 step of length `h` in `mode` ([`rk4_step`] on the mode's accelerations), then the
@@ -273,6 +275,7 @@ impl<const C: usize> ContactRk4<C> {
             armed: std::array::from_fn(|i| phi[i] > 0.0),
             options,
             events: Vec::new(),
+            stats: Stats::default(),
         })
     }
 
@@ -294,6 +297,47 @@ impl<const C: usize> ContactRk4<C> {
         self.mode
     }
 
+    /// What the successful steps so far cost: `accepted` counts the (sub)steps whose end was kept
+    /// (one per step and one more per mode change), `evaluations` (and, for the implicit and
+    /// RATTLE methods of [`step_with`](Self::step_with), the Newton counts) every (sub)step taken,
+    /// the trial steps of the event location included. RK4 ([`step`](Self::step)) evaluates q̈
+    /// four times per (sub)step.
+    ///
+    /// ```
+    /// use lagrange_core::constraints::{ConstraintKind, ContactOptions, ContactRk4, Constraints};
+    /// use lagrange_core::{Model, Scalar, State};
+    ///
+    /// /// A unit mass falling onto the floor y ≥ 0.
+    /// struct Ball;
+    /// impl Model<1, 1> for Ball {
+    ///     type Coords = [f64; 1];
+    ///     const RHEONOMIC: bool = false;
+    ///     const HAS_POTENTIAL: bool = true;
+    ///     const HAS_FORCES: bool = false;
+    ///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    ///     fn masses(&self) -> [f64; 1] { [1.0] }
+    ///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] { [q[0]] }
+    ///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D { x[0] * 9.81 }
+    /// }
+    /// impl Constraints<1, 1, 1> for Ball {
+    ///     const NAMES: [&'static str; 1] = ["floor"];
+    ///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Unilateral];
+    ///     fn position_constraints<D: Scalar>(&self, _t: D, q: &[D; 1], _x: &[D; 1]) -> [D; 1] { [q[0]] }
+    /// }
+    ///
+    /// let mut s = State::new(0.0, [1.0], [0.0]);
+    /// let mut contact = ContactRk4::new(&Ball, &s, ContactOptions::default())?;
+    /// for _ in 0..10 {
+    ///     contact.step(&Ball, &mut s, 1e-2)?;
+    /// }
+    /// // Ten RK4 steps in flight: 4 evaluations each.
+    /// assert_eq!((contact.stats().accepted, contact.stats().evaluations), (10, 40));
+    /// # Ok::<(), lagrange_core::Error>(())
+    /// ```
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
     /// Advances `state` by exactly `h`, switching modes at located events. On error the state, the
     /// mode and the event list are unchanged.
     ///
@@ -307,9 +351,13 @@ impl<const C: usize> ContactRk4<C> {
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<()> {
+        let substeps = std::cell::Cell::new(0);
         self.step_by(model, state, h, &|t, q, v, tau, mode| {
+            substeps.set(substeps.get() + 1);
             substep(model, t, q, v, tau, mode)
-        })
+        })?;
+        self.stats.evaluations += 4 * substeps.get();
+        Ok(())
     }
 
     /// [`step`](Self::step) with `substep(t, q, v, τ, mode)` as the (sub)step of length τ in a
@@ -403,6 +451,7 @@ impl<const C: usize> ContactRk4<C> {
         state.v = M::Coords::from_array(v);
         self.mode = mode;
         self.armed = armed;
+        self.stats.accepted += events.len() + 1;
         self.events.extend(events);
         Ok(())
     }

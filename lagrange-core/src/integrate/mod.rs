@@ -14,8 +14,8 @@
 //! | [`Radau5`] | 5 | adaptive, dense output (order 3), events, contacts; for stiff mechanisms | simplified Newton: 3 per iteration (usually 1–4 iterations), + 1 at the new point; one Jacobian of q̈ (2 dual passes) and one factorisation reused across steps while the iteration contracts well | L-stable |
 //! | [`ImplicitMidpoint`] | 2 | fixed | simplified Newton: 1 plain evaluation of (p, ṗ) per iteration; one Jacobian, reused across steps while the iteration contracts well | symmetric; symplectic in (q, p) for any Lagrangian |
 //! | [`GaussLegendre2`] | 4 | fixed | simplified Newton: 2 plain evaluations of (p, ṗ) per iteration; Jacobian reused as above | symmetric; symplectic in (q, p) for any Lagrangian |
-//! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations (with the multipliers of holonomic constraints: RATTLE) | symplectic in (q, p) for any Lagrangian, also with holonomic constraints; refuses velocity constraints, contacts and friction |
-//! | [`StormerVerlet`] | 2 | fixed | 2 with M (+ Newton on the multipliers of holonomic constraints: RATTLE) | symplectic, also with holonomic constraints; refuses a non-constant mass matrix, velocity constraints, contacts and friction |
+//! | [`Variational`] | 2 | fixed | Newton on the discrete Euler–Lagrange equations (with the multipliers of holonomic constraints: RATTLE) | symplectic in (q, p) for any Lagrangian, also with holonomic constraints and, in the contact loop, with the closed unilateral contacts of a held mode; refuses velocity constraints and friction |
+//! | [`StormerVerlet`] | 2 | fixed | 2 with M (+ Newton on the multipliers of holonomic constraints: RATTLE) | symplectic, also with holonomic constraints and, in the contact loop, with the closed unilateral contacts of a held mode; refuses a non-constant mass matrix, velocity constraints and friction |
 //!
 //! Implicit midpoint, Gauss–Legendre and the variational integrator integrate the canonical
 //! equations in (q, p), p = ∂L/∂q̇ (converting at both ends of a step, so the public state stays
@@ -35,16 +35,19 @@
 //! ([`ContactDopri5`](crate::constraints::ContactDopri5),
 //! [`ContactRadau5`](crate::constraints::ContactRadau5): their `integrate` and `sys.step` take
 //! them by themselves), RK4 has [`ContactRk4`](crate::ContactRk4), whose event loop also steps
-//! with implicit midpoint or Gauss–Legendre
-//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with)); stepped on their own (and the plain
-//! [`Radau5Stepper`]) they refuse such a declaration with
-//! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
+//! with implicit midpoint, Gauss–Legendre, Störmer–Verlet or the variational integrator
+//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single `sys.step` with any of
+//! these four takes); stepped on their own ([`FixedStepper`], and the plain [`Radau5Stepper`]) they
+//! refuse such a declaration with [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod).
 //! Störmer–Verlet and the variational integrator enforce holonomic constraints g(q, t) = 0 by
 //! RATTLE ([`rattle`]: the multipliers of a position stage solved by Newton with the step, then the
-//! velocity projection), which keeps them symplectic on the constraint manifold, and refuse
-//! velocity constraints, unilateral contacts and friction with
-//! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod) (use [`ContactRk4`](crate::ContactRk4)
-//! or [`ContactDopri5`](crate::ContactDopri5) for those). Which constraints a method enforces is decided by the declaration alone —
+//! velocity projection), which keeps them symplectic on the constraint manifold. In the contact
+//! loop a held mode's closed unilateral contacts are such rows for the step (released where their
+//! multiplier crosses 0, closed where their gap does): symplectic on the manifold of the contacts
+//! that hold. They refuse velocity constraints and friction, whose rows constrain q̇, with
+//! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod) (use [`ContactRk4`](crate::ContactRk4),
+//! `step_with` with implicit midpoint or Gauss–Legendre, or [`ContactDopri5`](crate::ContactDopri5)
+//! for those). Which constraints a method enforces is decided by the declaration alone —
 //! `Dynamics::CONSTRAINT_COUNTS` and `Dynamics::CONSTRAINTS` — never by the multipliers at
 //! some state (a pendulum released horizontally at rest has λ = 0 at its first step and is treated
 //! as constrained all the same): the symplectic methods refuse an implementation that does not
@@ -96,10 +99,22 @@ pub trait Integrator: Sized {
     /// Whether [`step`](Self::step) integrates a declaration with unilateral or friction rows by
     /// holding the contact mode over the step and locating its switches
     /// ([`ContactRk4::step_with`](crate::constraints::ContactRk4::step_with)): the implicit
-    /// collocation methods, whose Newton iteration needs one smooth right-hand side over a step.
-    /// The others evaluate such declarations with the mode read from each stage's state, or
-    /// refuse them (Störmer–Verlet, the variational integrator).
+    /// collocation methods, whose Newton iteration needs one smooth right-hand side over a step,
+    /// and Störmer–Verlet and the variational integrator, whose RATTLE enforces a closed contact
+    /// as a holonomic row over the step. The others evaluate such declarations with the mode read
+    /// from each stage's state.
     const HOLDS_CONTACT_MODE: bool = false;
+
+    /// Whether the method enforces only position rows g(q, t) = 0 (RATTLE: Störmer–Verlet and the
+    /// variational integrator), so that a declaration with velocity or friction rows is refused,
+    /// also in the contact loop ([`ContactRk4::step_with`](crate::constraints::ContactRk4::step_with)).
+    ///
+    /// ```
+    /// use lagrange_core::{GaussLegendre2, Integrator, StormerVerlet, Variational};
+    /// assert!(StormerVerlet::POSITION_ROWS_ONLY && Variational::POSITION_ROWS_ONLY);
+    /// assert!(!GaussLegendre2::POSITION_ROWS_ONLY && GaussLegendre2::HOLDS_CONTACT_MODE);
+    /// ```
+    const POSITION_ROWS_ONLY: bool = false;
 
     /// One step of h from (t, q, q̇) on raw arrays, without validation or projection, adding its
     /// cost to `stats`: (q, q̇) at t + h.

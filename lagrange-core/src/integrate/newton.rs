@@ -197,7 +197,8 @@ pub(crate) const fn carries_constraint_forces<M: Mechanism<N>, const N: usize>()
 /// `handled_by` names what integrates them instead (the fixed-step implicit methods: the adaptive
 /// methods, [`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853) and [`Radau5`](super::Radau5),
 /// hold the mode per step and locate its switches; so does [`ContactRk4`](crate::ContactRk4) with
-/// a fixed step, also with implicit midpoint or Gauss–Legendre as its one-step method
+/// a fixed step, also with implicit midpoint or Gauss–Legendre as its one-step method, and with
+/// Störmer–Verlet or the variational integrator for unilateral contacts
 /// ([`ContactRk4::step_with`](crate::ContactRk4::step_with))).
 pub(crate) fn refuse_contacts<M: Mechanism<N>, const N: usize>(
     method: &'static str,
@@ -220,7 +221,8 @@ pub(crate) fn refuse_contacts<M: Mechanism<N>, const N: usize>(
 pub(crate) const CONTACT_METHODS: &str = "Dopri5, Dop853 and Radau5 (the mode held per step, \
      switches located) or ContactRk4 integrate them, ContactRk4::step_with also with implicit \
      midpoint or Gauss-Legendre 2 as its one-step method (what a single sys.step with either \
-     does)";
+     does), and with Stormer-Verlet or the variational integrator for unilateral contacts without \
+     friction";
 
 /// An LU factorisation with partial pivoting of a matrix of S×S blocks of size N×N (an
 /// (S·N)-square matrix; stable Rust cannot name S·N as an array length, so the blocks are

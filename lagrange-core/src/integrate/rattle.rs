@@ -30,7 +30,13 @@
 //! **Which constraints.** Only holonomic rows: the choice is the declaration's,
 //! `Dynamics::CONSTRAINT_COUNTS`, never the state's ([`holonomic_rows`]). Velocity rows,
 //! unilateral contacts and friction are refused with [`Error::UnsuitableMethod`], and so is an
-//! implementation that does not declare its constraints.
+//! implementation that does not declare its constraints. Unilateral contacts are integrated through
+//! the contact loop ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single
+//! `sys.step` takes): with the contact mode held over a step, a closed contact c(q, t) ≥ 0 is the
+//! holonomic row c(q, t) = 0 for that step, and the held mode hands RATTLE its holonomic rows and
+//! its closed contacts (`Dynamics::enforced_holonomic_rows` says how many); the loop releases a
+//! contact where its multiplier crosses 0 and closes one where its gap does. Friction is refused
+//! there too: a sticking friction row constrains q̇, not q, and cannot be a RATTLE row.
 //!
 //! **Rows as an N-vector.** The methods are generic over `Mechanism<N>`, which cannot name the
 //! number of rows C; the rows come from `Dynamics::holonomic_constraints_at` padded with zeros
@@ -77,34 +83,72 @@ use num_dual::DualSVec;
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
 pub fn holonomic_rows<M: Mechanism<N>, const N: usize>(method: &'static str) -> Result<usize> {
-    let refuse = |reason: String| {
-        Err(Error::UnsuitableMethod {
-            method,
-            reason: format!(
-                "{reason}; use RK4, Dopri5, Dop853, implicit midpoint or Gauss-Legendre, which integrate the \
-                 constrained accelerations and project (ContactRk4 for contacts and friction)"
-            ),
-        })
-    };
-    match (M::CONSTRAINT_COUNTS, M::CONSTRAINTS) {
-        (_, Some(0)) => Ok(0),
-        (Some(c), _) if c.only_holonomic() && c.holonomic <= N => Ok(c.holonomic),
-        (Some(c), _) if c.only_holonomic() => refuse(format!(
-            "it declares {} holonomic constraints on {N} coordinates (at most {N} can be independent)",
-            c.holonomic
-        )),
-        (Some(c), _) => refuse(format!(
-            "only holonomic constraints are enforced (by RATTLE), and the mechanism declares {} velocity, {} \
-             unilateral and {} friction rows",
-            c.velocity, c.unilateral, c.friction
-        )),
-        (None, _) => refuse(
-            "the mechanism does not declare its constraints (Dynamics::CONSTRAINT_COUNTS; impl_mechanism! and \
-             #[mechanism] declare it), and whether constraint forces act is decided by the declaration, \
-             never by a state"
-                .to_string(),
+    at_most_coordinates::<N>(method, declared_rows::<M, N>(method)?)
+}
+
+/// [`Error::UnsuitableMethod`] for a mechanism RATTLE cannot integrate, saying what can.
+fn unsuitable(method: &'static str, reason: &str) -> Error {
+    Error::UnsuitableMethod {
+        method,
+        reason: format!(
+            "{reason}; use RK4, Dopri5, Dop853, implicit midpoint or Gauss-Legendre, which integrate the \
+             constrained accelerations and project (ContactRk4 for contacts and friction); unilateral \
+             contacts (without friction) are integrated by {method} through the contact loop, \
+             ContactRk4::step_with or a single sys.step, which holds the contact mode over a step"
         ),
     }
+}
+
+/// The holonomic rows the declaration has, refusing every other kind of row and an
+/// implementation that does not declare its constraints (see [`holonomic_rows`]).
+fn declared_rows<M: Mechanism<N>, const N: usize>(method: &'static str) -> Result<usize> {
+    match (M::CONSTRAINT_COUNTS, M::CONSTRAINTS) {
+        (_, Some(0)) => Ok(0),
+        (Some(c), _) if c.only_holonomic() => Ok(c.holonomic),
+        (Some(c), _) => Err(unsuitable(
+            method,
+            &format!(
+                "only holonomic constraints are enforced (by RATTLE), and the mechanism declares {} velocity, {} \
+                 unilateral and {} friction rows",
+                c.velocity, c.unilateral, c.friction
+            ),
+        )),
+        (None, _) => Err(unsuitable(
+            method,
+            "the mechanism does not declare its constraints (Dynamics::CONSTRAINT_COUNTS; impl_mechanism! and \
+             #[mechanism] declare it), and whether constraint forces act is decided by the declaration, \
+             never by a state",
+        )),
+    }
+}
+
+/// `rows` if at most N (more holonomic rows than coordinates cannot be independent).
+fn at_most_coordinates<const N: usize>(method: &'static str, rows: usize) -> Result<usize> {
+    if rows <= N {
+        return Ok(rows);
+    }
+    Err(unsuitable(
+        method,
+        &format!(
+            "it enforces {rows} holonomic constraints on {N} coordinates (at most {N} can be independent)"
+        ),
+    ))
+}
+
+/// The number of holonomic rows `method` enforces over the coming step: [`holonomic_rows`] of the
+/// declaration, or fewer when the mechanism holds a contact mode over the step
+/// (`Dynamics::enforced_holonomic_rows`: the contact loop's held mode, whose leading rows are its
+/// holonomic rows and its closed unilateral contacts; it may declare more contacts than
+/// coordinates, a particle in a box, as long as those closed at once are at most N).
+pub(crate) fn rows_in_force<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    method: &'static str,
+) -> Result<usize> {
+    let declared = declared_rows::<M, N>(method)?;
+    let enforced = mechanism
+        .enforced_holonomic_rows()
+        .map_or(declared, |held| held.min(declared));
+    at_most_coordinates::<N>(method, enforced)
 }
 
 /// The error for a mechanism that declares holonomic rows but does not provide them

@@ -46,14 +46,18 @@
 //! the first line solved for (v_m, Λ) together by the same Newton iteration (the 2N-square Jacobian
 //! [[∂R/∂v_m, −Dg(q₀)ᵀ], [Dg(q₁), 0]], exact from the same dual seeding of v_m), Λ₁ such that v₁
 //! satisfies Dg(q₁, t₁) v₁ + ∂g/∂t = 0: the mass-weighted velocity projection
-//! `Dynamics::project` applied to the velocity recovered from p₁ without Λ₁. Velocity rows,
-//! unilateral contacts and friction are refused by the declaration
-//! (`Dynamics::CONSTRAINT_COUNTS`, see [`holonomic_rows`]), whatever the state.
+//! `Dynamics::project` applied to the velocity recovered from p₁ without Λ₁. Velocity rows and
+//! friction are refused by the declaration (`Dynamics::CONSTRAINT_COUNTS`, see
+//! [`holonomic_rows`](super::holonomic_rows)), whatever the state. Unilateral contacts are
+//! integrated through the contact loop with the mode held over each step
+//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single `sys.step` takes): a
+//! closed contact is a RATTLE row for the step (see [`rattle`](super::rattle)); stepped on its own
+//! ([`FixedStepper`](super::FixedStepper)) the method refuses them.
 
 use super::canonical;
 pub use super::canonical::momentum_rate;
 use super::newton::{jacobian_rows, max_norm, newton, seeded, NewtonEnd, MAX_NEWTON_ITERATIONS};
-use super::rattle::{breakdown, holonomic_rows, rows_and_jacobian, rows_on};
+use super::rattle::{breakdown, rows_and_jacobian, rows_in_force, rows_on};
 use super::solver::validated_step;
 use super::{Integrator, Stats};
 use crate::error::{Error, Result};
@@ -136,7 +140,7 @@ impl Variational {
         h: f64,
     ) -> Result<([f64; N], [f64; N], [f64; N], usize)> {
         let mut stats = Stats::default();
-        let rows = holonomic_rows::<M, N>(Self::NAME)?;
+        let rows = rows_in_force(mechanism, Self::NAME)?;
         let (q1, p1, vm, iterations) =
             Self::momenta_step(mechanism, rows, t, q0, p0, v_guess, h, &mut stats)?;
         if rows == 0 {
@@ -350,7 +354,7 @@ impl Variational {
         counts: &mut VariationalStepStats,
     ) -> Result<([f64; N], [f64; N])> {
         // Which constraints are enforced is the declaration's, decided before anything is evaluated.
-        let rows = holonomic_rows::<M, N>(Self::NAME)?;
+        let rows = rows_in_force(mechanism, Self::NAME)?;
         let p0 = mechanism.momenta_at(t, q, v);
         // Predictor v_m = v₀ + (h/2) q̈(t₀, q₀, v₀), O(h²) from the solution (q̈ with the constraint
         // forces, for a constrained mechanism).
@@ -392,6 +396,9 @@ impl Variational {
 impl Integrator for Variational {
     const NAME: &'static str = "variational midpoint";
     type Memory<const N: usize> = ();
+    // Unilateral contacts through the contact loop, a closed contact a RATTLE row for the step.
+    const HOLDS_CONTACT_MODE: bool = true;
+    const POSITION_ROWS_ONLY: bool = true;
 
     fn advance<M: Mechanism<N>, const N: usize>(
         mechanism: &M,

@@ -36,14 +36,18 @@
 //! with the exact Jacobian G(q₁) M⁻¹ G(q₀)ᵀ (dual numbers); μ is the mass-weighted velocity
 //! projection, `Dynamics::project` (see [`rattle`](super::rattle)). Symplectic and symmetric
 //! for a constant M and conservative forces, order 2, g and ġ kept at round-off. Velocity
-//! constraints, unilateral contacts and friction are refused, by the declaration
-//! (`Dynamics::CONSTRAINT_COUNTS`, see [`holonomic_rows`]), as is an implementation that does not
-//! declare its constraints: whatever the state, never by testing the multipliers.
+//! constraints and friction are refused, by the declaration (`Dynamics::CONSTRAINT_COUNTS`, see
+//! [`holonomic_rows`](super::holonomic_rows)), as is an implementation that does not declare its
+//! constraints: whatever the state, never by testing the multipliers. Unilateral contacts are
+//! integrated through the contact loop with the mode held over each step
+//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single `sys.step` takes): a
+//! closed contact is a RATTLE row for the step (see [`rattle`](super::rattle)); stepped on its own
+//! ([`FixedStepper`](super::FixedStepper)) the method refuses them.
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
-use super::rattle::{holonomic_rows, position_stage, rows_and_jacobian};
+use super::rattle::{position_stage, rows_and_jacobian, rows_in_force};
 use super::{Integrator, Stats};
 use crate::dynamics::{mass_matrix_failure, solve_accelerations};
 use crate::error::{Error, Result};
@@ -113,7 +117,7 @@ impl StormerVerlet {
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N])> {
         // Which constraints are enforced is the declaration's, decided before anything is evaluated.
-        let rows = holonomic_rows::<M, N>(Self::NAME)?;
+        let rows = rows_in_force(mechanism, Self::NAME)?;
         let eom0 = mechanism.equations_of_motion_at(t, q, v);
         let a0 = solve_accelerations::<M::Coords, f64, N>(&eom0, t, q)?;
         stats.evaluations += 1;
@@ -190,6 +194,9 @@ impl StormerVerlet {
 impl Integrator for StormerVerlet {
     const NAME: &'static str = "Stormer-Verlet";
     type Memory<const N: usize> = ();
+    // Unilateral contacts through the contact loop, a closed contact a RATTLE row for the step.
+    const HOLDS_CONTACT_MODE: bool = true;
+    const POSITION_ROWS_ONLY: bool = true;
 
     fn advance<M: Mechanism<N>, const N: usize>(
         mechanism: &M,
