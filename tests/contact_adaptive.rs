@@ -592,7 +592,7 @@ fn implicit_steppers_refuse_unilateral_declarations() {
         "implicit midpoint",
     );
     // The plain Radau5 stepper (its mode re-inferred at every evaluation) refuses it too;
-    // `Radau5::integrate` takes the contact solver instead (tests/contact_implicit.rs).
+    // `Radau5::integrate` takes the contact solver instead (tests/contact_implicit/).
     refused(
         lagrange::integrate::Radau5Stepper::new(&sys, Radau5::new(1e-8, 1e-8), &s).map(|_| ()),
         "Radau5",
