@@ -22,35 +22,10 @@ use lagrange::constraints::{
 use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
-use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
+use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
 
 mod contact_scenes;
-use contact_scenes::{ball, bilateral};
-
-const M: f64 = 0.7;
-const R: f64 = 1.5;
-const G: f64 = 9.81;
-
-/// Where the particle starts (at angle θ₀ from the top, with speed v₀ along the sphere), with the
-/// closed form of its release: the gallery's `sphere_release::Release`.
-type Start = Release;
-
-/// A start on this sphere (radius R, gravity G).
-const fn on_sphere(theta0: f64, v0: f64) -> Start {
-    Release {
-        r: R,
-        g: G,
-        theta0,
-        v0,
-    }
-}
-
-/// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
-const STARTS: [Start; 3] = [
-    on_sphere(0.1, 0.0),
-    on_sphere(0.0, 0.5),
-    on_sphere(0.0, 1.2),
-];
+use contact_scenes::{ball, bilateral, bilateral_release_in, on_sphere, Start, G, M, R, STARTS};
 
 /// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
 fn cost(stats: Stats) -> (usize, usize) {
@@ -63,28 +38,6 @@ fn bilateral_release(start: Start, tol: f64) -> (f64, Stats) {
     bilateral_release_in(start, |sys, s, events| {
         Dopri5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
     })
-}
-
-/// [`bilateral_release`] with the integration `integrate` (Dopri5 or Dop853).
-fn bilateral_release_in(
-    start: Start,
-    integrate: impl FnOnce(
-        &bilateral::Sphere,
-        &mut bilateral::State,
-        &mut [Event<'_, bilateral::Coords>],
-    ) -> lagrange::Result<lagrange::integrate::Outcome<bilateral::Coords>>,
-) -> (f64, Stats) {
-    use bilateral::{Coords, Sphere, State};
-    let sys = Sphere { m: M, r: R, g: G };
-    let ([x, y], [vx, vy]) = start.state();
-    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
-    let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
-    let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
-    let outcome = integrate(&sys, &mut s, &mut events).expect("integration");
-    let StopReason::Event(hit) = outcome.reason else {
-        panic!("the particle did not leave: {:?}", outcome.reason)
-    };
-    (hit.state.t, outcome.stats)
 }
 
 #[test]

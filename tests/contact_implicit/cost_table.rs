@@ -1,6 +1,7 @@
 //! The cost tables of BENCHMARKS.md.
 
-use super::sphere::{bilateral_release, on_sphere, unilateral_release};
+use super::contact_scenes::on_sphere;
+use super::sphere::{bilateral_release, unilateral_release};
 use super::stiff_lander::{lander, LANDER};
 use lagrange::constraints::{ContactDopri5, ContactOptions, ContactRadau5};
 use lagrange::integrate::Stats;

@@ -2,7 +2,7 @@
 //! user events beside the contact events.
 
 use super::contact_scenes::ball;
-use super::G;
+use super::contact_scenes::G;
 use lagrange::constraints::{ContactOptions, RowMode};
 use lagrange::integrate::{Direction, Event, StopReason};
 use lagrange::prelude::*;

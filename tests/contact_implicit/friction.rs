@@ -1,6 +1,6 @@
 //! Friction rows: a block sent up a rough ramp, a puck on a rough plane (the friction cone).
 
-use super::G;
+use super::contact_scenes::G;
 use lagrange::constraints::{ContactOptions, ContactRadau5, RowMode};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;

@@ -31,5 +31,3 @@ mod dropped_ball;
 mod friction;
 mod sphere;
 mod stiff_lander;
-
-const G: f64 = 9.81;

@@ -1,53 +1,18 @@
 //! A particle sliding off a sphere declared `#[unilateral]`, against the same sphere declared
 //! `#[constraint]`; one interface for the contact solver.
 
-use super::contact_scenes::bilateral;
-use super::G;
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRadau5, RowMode};
-use lagrange::integrate::{Direction, Event, Stats, StopReason};
+use super::contact_scenes::{bilateral_release_in, Start, G, M, R, STARTS};
+use lagrange::constraints::{ContactOptions, ContactRadau5, RowMode};
+use lagrange::integrate::Stats;
 use lagrange::prelude::*;
-use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
-
-const M: f64 = 0.7;
-const R: f64 = 1.5;
-
-/// Where the particle starts (at angle θ₀ from the top, with speed v₀ along the sphere), with the
-/// closed form of its release: the gallery's `sphere_release::Release`.
-type Start = Release;
-
-/// A start on this sphere (radius R, gravity G).
-pub(super) const fn on_sphere(theta0: f64, v0: f64) -> Start {
-    Release {
-        r: R,
-        g: G,
-        theta0,
-        v0,
-    }
-}
-
-/// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
-const STARTS: [Start; 3] = [
-    on_sphere(0.1, 0.0),
-    on_sphere(0.0, 0.5),
-    on_sphere(0.0, 1.2),
-];
+use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
 
 /// The bilateral sphere in Radau5 from `start`, stopped where its multiplier falls through 0 (a
 /// user event, located on the same collocation polynomials): the release time and the cost.
 pub(super) fn bilateral_release(start: Start, tol: f64) -> (f64, Stats) {
-    use bilateral::{Coords, Sphere, State};
-    let sys = Sphere { m: M, r: R, g: G };
-    let ([x, y], [vx, vy]) = start.state();
-    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
-    let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
-    let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
-    let outcome = Radau5::new(tol, tol)
-        .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
-        .expect("integration");
-    let StopReason::Event(hit) = outcome.reason else {
-        panic!("the particle did not leave: {:?}", outcome.reason)
-    };
-    (hit.state.t, outcome.stats)
+    bilateral_release_in(start, |sys, s, events| {
+        Radau5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+    })
 }
 
 /// The unilateral sphere in [`ContactRadau5`] from `start` up to its release: the release time,

@@ -1,6 +1,6 @@
 //! A stiff case: a lander on a unilateral floor, its leg a stiff, damped spring.
 
-use super::G;
+use super::contact_scenes::G;
 use lagrange::constraints::{ContactDopri5, ContactOptions, ContactRadau5, RowMode};
 use lagrange::prelude::*;
 
