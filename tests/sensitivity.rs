@@ -4,26 +4,7 @@ use lagrange::prelude::*;
 use lagrange::sensitivity::{Seed, Tangent};
 
 mod common;
-
-#[mechanism]
-pub mod pendulum {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Pendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use common::pendulum;
 
 #[mechanism]
 pub mod double_pendulum {
@@ -66,14 +47,6 @@ fn double_pendulum() -> lagrange::Validated<double_pendulum::DoublePendulum> {
     .unwrap()
 }
 
-/// The plain RK4 run: (θ₁, θ₂, θ̇₁, θ̇₂) after `steps` steps of `h`.
-fn rk4_end(s0: double_pendulum::State, h: f64, steps: usize) -> [f64; 4] {
-    let sys = double_pendulum();
-    let mut s = s0;
-    sys.simulate::<Rk4>(&mut s, h, steps, |_| {}).unwrap();
-    [s.q.theta1, s.q.theta2, s.v.theta1, s.v.theta2]
-}
-
 /// On the double pendulum (2 s of RK4, h = 1e-3, released with velocity; sensitivities up to ~4)
 /// every derivative of the end state by every initial value agrees with finite differences of the
 /// same discrete map, to the differences' own error (estimated in
@@ -105,7 +78,7 @@ fn double_pendulum_matches_finite_differences() {
     }
     let ad = run.sensitivities();
     // The real parts are the plain run, bit for bit.
-    let plain = rk4_end(s0, h, steps);
+    let plain = common::rk4_end(&sys, s0, h, steps);
     assert_eq!(
         [
             ad.state.q.theta1,
@@ -135,7 +108,7 @@ fn double_pendulum_matches_finite_differences() {
                 2 => s.v.theta1 += d,
                 _ => s.v.theta2 += d,
             }
-            rk4_end(s, h, steps)
+            common::rk4_end(&sys, s, h, steps)
         };
         let (plus, minus) = (shifted(1.0), shifted(-1.0));
         std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * delta))
@@ -203,35 +176,9 @@ fn large_amplitude_period_derivative_matches_elliptic_integrals() {
     let (l, theta0) = (1.5, 2.0);
     let sys = pendulum::Pendulum { m: 1.0, l, g: G }.validated().unwrap();
     let s0 = pendulum::State::at_rest(pendulum::Coords { theta: theta0 });
-    let mut run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta")]).unwrap();
-    let h = 1e-3;
-    // Whole steps while θ stays positive, then the partial step τ that lands on θ = 0, found by
-    // the secant method on the plain RK4 step (θ(τ) is smooth in τ).
-    loop {
-        let mut next = run.clone();
-        next.rk4_step(h).unwrap();
-        if next.state().q.theta <= 0.0 {
-            break;
-        }
-        run = next;
-    }
-    let theta_after = |tau: f64| {
-        let mut s = run.state();
-        sys.step::<Rk4>(&mut s, tau).unwrap();
-        s.q.theta
-    };
-    let (mut a, mut b): (f64, f64) = (0.5 * h, h);
-    let (mut fa, mut fb) = (theta_after(a), theta_after(b));
-    for _ in 0..50 {
-        if fb == 0.0 || (b - a).abs() < 1e-16 {
-            break;
-        }
-        let c = b - fb * (b - a) / (fb - fa);
-        (a, fa) = (b, fb);
-        (b, fb) = (c, theta_after(c));
-    }
-    run.rk4_step(b).unwrap();
-    let at_bottom = run.sensitivities();
+    let run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta")]).unwrap();
+    // The first passage through θ = 0, RK4 steps of h = 1e-3.
+    let at_bottom = common::first_passage(&sys, run, 1e-3);
     let quarter = at_bottom.state.t;
     let dquarter = -at_bottom.dq[0].theta / at_bottom.state.v.theta;
 

@@ -1,4 +1,78 @@
-//! What several test files share.
+//! What several test files share: the simple pendulum, its first passage through the bottom
+//! carried with its sensitivities, the plain RK4 run a tangent is compared with, and the check
+//! of sensitivities against finite differences.
+
+use lagrange::parameters::Parametrized;
+use lagrange::prelude::*;
+use lagrange::sensitivity::{Sensitivities, Tangent};
+
+#[mechanism]
+pub mod pendulum {
+    pub struct Coords {
+        pub theta: f64,
+    }
+    pub struct Pendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(theta.sin(), -theta.cos()) * l
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+/// Carries `run`, a tangent of the pendulum `sys` started at θ > 0, to its first passage through
+/// θ = 0: whole RK4 steps of `h` while θ stays positive, then the partial step τ that lands on
+/// θ = 0, found by the secant method on the plain RK4 step (θ(τ) is smooth in τ). Returns the
+/// sensitivities there.
+pub fn first_passage<'m, M, const K: usize, const NP: usize, const P: usize>(
+    sys: &'m M,
+    mut run: Tangent<'m, M, 1, K, NP, P>,
+    h: f64,
+) -> Sensitivities<pendulum::Coords, P>
+where
+    M: Mechanism<1, Coords = pendulum::Coords> + Parametrized<1, K, NP>,
+{
+    loop {
+        let mut next = run.clone();
+        next.rk4_step(h).unwrap();
+        if next.state().q.theta <= 0.0 {
+            break;
+        }
+        run = next;
+    }
+    let theta_after = |tau: f64| {
+        let mut s = run.state();
+        sys.step::<Rk4>(&mut s, tau).unwrap();
+        s.q.theta
+    };
+    let (mut a, mut b): (f64, f64) = (0.5 * h, h);
+    let (mut fa, mut fb) = (theta_after(a), theta_after(b));
+    for _ in 0..50 {
+        if fb == 0.0 || (b - a).abs() < 1e-16 {
+            break;
+        }
+        let c = b - fb * (b - a) / (fb - fa);
+        (a, fa) = (b, fb);
+        (b, fb) = (c, theta_after(c));
+    }
+    run.rk4_step(b).unwrap();
+    run.sensitivities()
+}
+
+/// The plain RK4 run of the two-coordinate `sys` from `s0`: (q₁, q₂, q̇₁, q̇₂) after `steps` steps
+/// of `h`.
+pub fn rk4_end<M: Mechanism<2>>(sys: &M, s0: State<M::Coords>, h: f64, steps: usize) -> [f64; 4] {
+    let mut s = s0;
+    sys.simulate::<Rk4>(&mut s, h, steps, |_| {}).unwrap();
+    let ([q1, q2], [v1, v2]) = (s.q.to_array(), s.v.to_array());
+    [q1, q2, v1, v2]
+}
 
 /// Checks forward-mode sensitivities of an end state against finite differences of the same
 /// discrete map, to the differences' own error, and returns the worst ratio of the difference to
