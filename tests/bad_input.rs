@@ -16,6 +16,8 @@ use lagrange::constraints::{
 use lagrange::model::Model;
 use lagrange::prelude::*;
 use lagrange::{Dopri5, GaussLegendre2, ImplicitMidpoint, StormerVerlet, Variational};
+use lagrange_gallery::scenes::rough_ramp::rough_ramp;
+use lagrange_gallery::scenes::sphere_release::sphere_release as sphere;
 use std::fmt::Debug;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Mutex;
@@ -79,73 +81,6 @@ pub mod cartesian_pendulum {
     #[constraint]
     fn rod() -> f64 {
         bob.norm() - l
-    }
-}
-
-#[mechanism]
-pub mod sphere {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    #[derive(Clone, Copy, Debug)]
-    pub struct Sphere {
-        pub m: f64,
-        pub r: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn particle() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn surface() -> f64 {
-        particle.norm() - r
-    }
-}
-
-#[mechanism]
-pub mod rough_ramp {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    #[derive(Clone, Copy, Debug)]
-    pub struct RoughRamp {
-        pub m: f64,
-        pub alpha: f64,
-        pub g: f64,
-        pub mu_k: f64,
-        pub mu_s: f64,
-    }
-
-    #[particle(mass = m)]
-    fn block() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn ramp() -> f64 {
-        block.y * alpha.cos() - block.x * alpha.sin()
-    }
-
-    #[friction(on = ramp, kinetic = mu_k, stiction = mu_s)]
-    fn ramp_friction() -> f64 {
-        block_dot.x * alpha.cos() + block_dot.y * alpha.sin()
     }
 }
 
@@ -630,7 +565,7 @@ fn bad_input_matrix() {
         );
     }
     {
-        use sphere::{Coords, Sphere, State};
+        use sphere::{Coords, SphereRelease as Sphere, State};
         let base = Sphere {
             m: 1.0,
             r: 1.0,
