@@ -21,11 +21,13 @@ use lagrange::constraints::{
 };
 use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
 use lagrange::prelude::*;
-use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
 
 mod contact_scenes;
-use contact_scenes::{ball, bilateral, bilateral_release_in, on_sphere, Start, G, M, R, STARTS};
+use contact_scenes::{
+    ball, bilateral, bilateral_release_in, check_ball_dropped_on_the_floor,
+    check_block_sent_up_the_rough_ramp, on_sphere, Start, G, M, R, STARTS,
+};
 
 /// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
 fn cost(stats: Stats) -> (usize, usize) {
@@ -167,123 +169,29 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
 
 #[test]
 fn ball_dropped_on_a_unilateral_floor_lands_at_the_closed_form_time() {
-    use ball::{Ball, Coords, State};
-    let sys = Ball { m: 0.3, g: G };
-    let height = 1.3;
-    let t1 = (2.0 * height / G).sqrt();
     // Free fall and flight are quadratic in t, which Dopri5 (order 5) integrates exactly: the only
     // errors are the root finder's 1e-13 and round-off over a few steps. Asserted to 1e-12.
-    for restitution in [0.0, 0.6] {
-        let mut s = State::new(0.0, Coords { x: 0.2, y: height }, Coords { x: 0.5, y: 0.0 });
-        let options = ContactOptions {
-            restitution,
-            ..Default::default()
-        };
-        let (outcome, changes) = Dopri5::new(1e-10, 1e-10)
-            .integrate_contacts(&sys, &mut s, 2.0, options, &mut [], |_| {})
-            .expect("integration");
-        eprintln!(
-            "e = {restitution}: {} steps ({} rejected), {} evaluations, mode changes at {:?}",
-            outcome.stats.accepted,
-            outcome.stats.rejected,
-            outcome.stats.evaluations,
-            changes.iter().map(|c| c.t).collect::<Vec<_>>()
-        );
-        assert!(
-            (changes[0].t - t1).abs() < 1e-12,
-            "landed at {}, closed form {t1}",
-            changes[0].t
-        );
-        assert_eq!(changes[0].from, RowMode::Inactive);
-        if restitution == 0.0 {
-            // A plastic impact: it stays on the floor, sliding on at 0.5 m/s (frictionless).
-            assert_eq!((changes.len(), changes[0].to), (1, RowMode::Active));
-            assert!(s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12);
-            assert!((s.q.x - (0.2 + 0.5 * 2.0)).abs() < 1e-12);
-        } else {
-            // Bounces: leaves at e·g·t₁, so the k-th landing is at t₁(1 + 2e + … + 2eᵏ⁻¹).
-            assert_eq!(changes[0].to, RowMode::Inactive);
-            let mut landing = t1;
-            let mut flight = 2.0 * restitution * t1;
-            for change in changes.iter().take_while(|c| c.t < 1.5) {
-                assert!(
-                    (change.t - landing).abs() < 1e-12,
-                    "landed at {}, closed form {landing}",
-                    change.t
-                );
-                landing += flight;
-                flight *= restitution;
-            }
-            assert!(changes.len() >= 3);
-        }
-        // Few steps: a polynomial motion has no error to control, and each landing cuts one step.
-        assert!(outcome.stats.accepted < 20 * changes.len().max(1));
-    }
+    check_ball_dropped_on_the_floor(|sys, s, options| {
+        Dopri5::new(1e-10, 1e-10).integrate_contacts(sys, s, 2.0, options, &mut [], |_| {})
+    });
 }
 
 #[test]
 fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
-    use rough_ramp::{Coords, RoughRamp, State};
-    let (alpha, u) = (0.5f64, 2.0);
-    let (sn, cs) = alpha.sin_cos();
-    let up = Coords {
-        x: u * cs,
-        y: u * sn,
-    };
     // Piecewise constant accelerations: each phase is a quadratic in t, integrated exactly by
     // Dopri5; the stop is located to the root finder's 1e-13 and round-off. Asserted to 1e-12.
-    for (mu_k, mu_s) in [(0.5, 0.6), (0.3, 0.4)] {
-        let sys = RoughRamp {
-            m: 2.0,
-            alpha,
-            g: G,
-            mu_k,
-            mu_s,
-        };
-        let start = State::new(0.0, Coords { x: 0.0, y: 0.0 }, up);
+    check_block_sent_up_the_rough_ramp(|sys, start| {
         let mut solver = ContactDopri5::new(
-            &sys,
+            sys,
             Dopri5::new(1e-10, 1e-10),
-            &start,
+            start,
             ContactOptions::default(),
         )
         .expect("solver");
         assert_eq!(solver.mode().rows, [RowMode::Active, RowMode::SlipPositive]);
         let outcome = solver.integrate(1.5, &mut [], |_| {}).expect("integration");
-        let t_stop = u / (G * (sn + mu_k * cs));
-        let d_stop = u * u / (2.0 * G * (sn + mu_k * cs));
-        let s = solver.state();
-        let distance = s.q.x * cs + s.q.y * sn;
-        eprintln!(
-            "μₖ = {mu_k}, μₛ = {mu_s}: {:?}; {} steps ({} rejected), {} evaluations",
-            solver.events(),
-            outcome.stats.accepted,
-            outcome.stats.rejected,
-            outcome.stats.evaluations
-        );
-        let stop = solver.events()[0];
-        assert!(
-            (stop.t - t_stop).abs() < 1e-12,
-            "stopped at {}, closed form {t_stop}",
-            stop.t
-        );
-        if alpha.tan() <= mu_s {
-            // Sticks where it stopped, for good: one mode change.
-            assert_eq!(solver.events().len(), 1);
-            assert_eq!(stop.to, RowMode::Stick);
-            assert!(
-                (distance - d_stop).abs() < 1e-12,
-                "{distance} against {d_stop}"
-            );
-        } else {
-            // Slides back down from the stop with a = g(sin α − μₖ cos α).
-            assert_eq!(stop.to, RowMode::SlipNegative);
-            let tau = 1.5 - t_stop;
-            let back = d_stop - 0.5 * G * (sn - mu_k * cs) * tau * tau;
-            assert!((distance - back).abs() < 1e-11, "{distance} against {back}");
-        }
-        assert!(outcome.stats.rejected == 0 && outcome.stats.accepted < 20);
-    }
+        (solver.events().to_vec(), solver.state(), outcome.stats)
+    });
 }
 
 /// One interface: `Dopri5::integrate` and `Dop853::integrate` on a declaration with a unilateral

@@ -1,11 +1,13 @@
 //! Contact mechanisms several contact tests share (the unilateral sphere is the gallery's
 //! `sphere_release`), with the sphere's parameters, its starts, and its release located on the
-//! bilateral declaration's multiplier.
+//! bilateral declaration's multiplier; and the checks the adaptive methods share on the ball and
+//! on the gallery's rough ramp.
 #![allow(dead_code)]
 
-use lagrange::constraints::constraint_forces;
+use lagrange::constraints::{constraint_forces, ContactOptions, ModeChange, RowMode};
 use lagrange::integrate::{Direction, Event, Outcome, Stats, StopReason};
 use lagrange::prelude::*;
+use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::Release;
 
 /// The particle's mass on the sphere.
@@ -117,5 +119,124 @@ pub mod ball {
     #[unilateral]
     fn floor() -> f64 {
         y
+    }
+}
+
+/// The ball (m = 0.3) dropped from 1.3 m, moving at 0.5 m/s along the floor, run to t = 2 by
+/// `integrate_contacts` (a method's `integrate_contacts` with the options given), plastic (e = 0)
+/// and with restitution (e = 0.6): its landings at the closed-form times, asserted to 1e-12 — the
+/// caller says why its method integrates the free fall, a quadratic in t, exactly, leaving the root
+/// finder's 1e-13 and round-off over a few steps.
+pub fn check_ball_dropped_on_the_floor(
+    integrate_contacts: impl Fn(
+        &ball::Ball,
+        &mut ball::State,
+        ContactOptions,
+    ) -> lagrange::Result<(Outcome<ball::Coords>, Vec<ModeChange>)>,
+) {
+    use ball::{Ball, Coords, State};
+    let sys = Ball { m: 0.3, g: G };
+    let height = 1.3;
+    let t1 = (2.0 * height / G).sqrt();
+    for restitution in [0.0, 0.6] {
+        let mut s = State::new(0.0, Coords { x: 0.2, y: height }, Coords { x: 0.5, y: 0.0 });
+        let options = ContactOptions {
+            restitution,
+            ..Default::default()
+        };
+        let (outcome, changes) = integrate_contacts(&sys, &mut s, options).expect("integration");
+        eprintln!(
+            "e = {restitution}: {:?}, mode changes at {:?}",
+            outcome.stats,
+            changes.iter().map(|c| c.t).collect::<Vec<_>>()
+        );
+        assert!(
+            (changes[0].t - t1).abs() < 1e-12,
+            "landed at {}, closed form {t1}",
+            changes[0].t
+        );
+        assert_eq!(changes[0].from, RowMode::Inactive);
+        if restitution == 0.0 {
+            // A plastic impact: it stays on the floor, sliding on at 0.5 m/s (frictionless).
+            assert_eq!((changes.len(), changes[0].to), (1, RowMode::Active));
+            assert!(s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12);
+            assert!((s.q.x - (0.2 + 0.5 * 2.0)).abs() < 1e-12);
+        } else {
+            // Bounces: leaves at e·g·t₁, so the k-th landing is at t₁(1 + 2e + … + 2eᵏ⁻¹).
+            assert_eq!(changes[0].to, RowMode::Inactive);
+            let mut landing = t1;
+            let mut flight = 2.0 * restitution * t1;
+            for change in changes.iter().take_while(|c| c.t < 1.5) {
+                assert!(
+                    (change.t - landing).abs() < 1e-12,
+                    "landed at {}, closed form {landing}",
+                    change.t
+                );
+                landing += flight;
+                flight *= restitution;
+            }
+            assert!(changes.len() >= 3);
+        }
+        // Few steps: a polynomial motion has no error to control, and each landing cuts one step.
+        assert!(outcome.stats.accepted < 20 * changes.len().max(1));
+    }
+}
+
+/// A block (m = 2) sent up the gallery's rough ramp (α = 0.5) at u = 2 m/s, run to t = 1.5 by
+/// `run` (a contact solver from the start given: its mode changes, end state and cost), with
+/// (μₖ, μₛ) = (0.5, 0.6) and (0.3, 0.4): it stops at t_s = u/(g(sin α + μₖ cos α)), then sticks
+/// or slides back with a = g(sin α − μₖ cos α), as μₛ decides. Piecewise constant accelerations:
+/// each phase is a quadratic in t, which the caller's method integrates exactly (it says why); the
+/// stop is located to the root finder's 1e-13 and round-off. Asserted to 1e-12 (the position
+/// after sliding back to 1e-11).
+pub fn check_block_sent_up_the_rough_ramp(
+    run: impl Fn(
+        &rough_ramp::RoughRamp,
+        &rough_ramp::State,
+    ) -> (Vec<ModeChange>, rough_ramp::State, Stats),
+) {
+    use rough_ramp::{Coords, RoughRamp, State};
+    let (alpha, u) = (0.5f64, 2.0);
+    let (sn, cs) = alpha.sin_cos();
+    let up = Coords {
+        x: u * cs,
+        y: u * sn,
+    };
+    for (mu_k, mu_s) in [(0.5, 0.6), (0.3, 0.4)] {
+        let sys = RoughRamp {
+            m: 2.0,
+            alpha,
+            g: G,
+            mu_k,
+            mu_s,
+        };
+        let start = State::new(0.0, Coords { x: 0.0, y: 0.0 }, up);
+        let (events, s, stats) = run(&sys, &start);
+        let t_stop = u / (G * (sn + mu_k * cs));
+        let d_stop = u * u / (2.0 * G * (sn + mu_k * cs));
+        let distance = s.q.x * cs + s.q.y * sn;
+        eprintln!("μₖ = {mu_k}, μₛ = {mu_s}: {events:?}; {stats:?}");
+        let stop = events[0];
+        assert!(
+            (stop.t - t_stop).abs() < 1e-12,
+            "stopped at {}, closed form {t_stop}",
+            stop.t
+        );
+        if alpha.tan() <= mu_s {
+            // Sticks where it stopped, for good: one mode change.
+            assert_eq!(events.len(), 1);
+            assert_eq!(stop.to, RowMode::Stick);
+            assert!(
+                (distance - d_stop).abs() < 1e-12,
+                "{distance} against {d_stop}"
+            );
+        } else {
+            // Slides back down from the stop with a = g(sin α − μₖ cos α).
+            assert_eq!(stop.to, RowMode::SlipNegative);
+            let tau = 1.5 - t_stop;
+            let back = d_stop - 0.5 * G * (sn - mu_k * cs) * tau * tau;
+            assert!((distance - back).abs() < 1e-11, "{distance} against {back}");
+        }
+        assert!(stats.rejected == 0 && stats.accepted < 20);
     }
 }
