@@ -121,18 +121,8 @@ fn damped_double_pendulum_by_parameters_matches_finite_differences() {
         Seed::Parameter("c"),
     ];
     let (h, steps) = (1e-3, 2000);
-    let mut run = Tangent::new(&sys, &s0, seeds).unwrap();
-    for _ in 0..steps {
-        run.rk4_step(h).unwrap();
-    }
-    let ad = run.sensitivities();
+    let (real, jacobian) = common::rk4_tangent_end(&sys, s0, seeds, h, steps);
     let plain = common::rk4_end(&sys, s0, h, steps);
-    let real = [
-        ad.state.q.theta1,
-        ad.state.q.theta2,
-        ad.state.v.theta1,
-        ad.state.v.theta2,
-    ];
     for i in 0..4 {
         // Rounding only: the same steps through two orderings of the same arithmetic.
         assert!(
@@ -142,16 +132,6 @@ fn damped_double_pendulum_by_parameters_matches_finite_differences() {
             plain[i]
         );
     }
-    let jacobian: Vec<[f64; 4]> = (0..3)
-        .map(|j| {
-            [
-                ad.dq[j].theta1,
-                ad.dq[j].theta2,
-                ad.dv[j].theta1,
-                ad.dv[j].theta2,
-            ]
-        })
-        .collect();
     let central = |seed: usize, delta: f64| -> [f64; 4] {
         let shifted = |sign: f64| {
             let mut p = damped();

@@ -1,9 +1,9 @@
 //! The Fermi–Pasta–Ulam chain of Hairer, Lubich & Wanner, *Geometric Numerical Integration*,
 //! §I.5.1: six unit masses between fixed walls, joined alternately by soft cubic springs (energy
 //! (Δq)⁴) and stiff linear springs (energy ω²/4 (Δq)²):
-//! V = ω²/4 Σᵢ (q₂ᵢ₊₁ − q₂ᵢ)² + Σᵢ (q₂ᵢ − q₂ᵢ₋₁)⁴ (0-based, q₋₁ = q₆ = 0), each spring declared as a
-//! potential of its own (so each gradient is taken on its own two coordinates); and its forces
-//! written by hand. The callgrind driver (`scripts/callgrind/`) compiles this file as well, so
+//! V = ω²/4 Σᵢ (q₂ᵢ₊₁ − q₂ᵢ)² + Σᵢ (q₂ᵢ − q₂ᵢ₋₁)⁴ (0-based, q₋₁ = q₆ = 0), each spring declared
+//! as a potential of its own (so each gradient is taken on its own two coordinates); and its
+//! forces written by hand. The callgrind driver (`scripts/callgrind/`) compiles this file as well, so
 //! the report and the instruction counts measure one declaration.
 
 use lagrange::prelude::*;

@@ -2,9 +2,10 @@
 //! carried with its sensitivities, the plain RK4 run a tangent is compared with, and the check
 //! of sensitivities against finite differences.
 
+use lagrange::mechanism::Dynamics;
 use lagrange::parameters::Parametrized;
 use lagrange::prelude::*;
-use lagrange::sensitivity::{Sensitivities, Tangent};
+use lagrange::sensitivity::{Seed, Sensitivities, Tangent};
 
 #[mechanism]
 pub mod pendulum {
@@ -63,6 +64,31 @@ where
     }
     run.rk4_step(b).unwrap();
     run.sensitivities()
+}
+
+/// The tangent of the two-coordinate `sys` from `s0`, seeded on `seeds`, after `steps` RK4 steps
+/// of `h`: its real parts x = (q₁, q₂, q̇₁, q̇₂) and, per seed j, their derivatives ∂x/∂(seed j).
+pub fn rk4_tangent_end<M, const K: usize, const NP: usize, const P: usize>(
+    sys: &M,
+    s0: State<<M as Dynamics<2>>::Coords>,
+    seeds: [Seed; P],
+    h: f64,
+    steps: usize,
+) -> ([f64; 4], Vec<[f64; 4]>)
+where
+    M: Mechanism<2> + Parametrized<2, K, NP>,
+{
+    let mut run = Tangent::new(sys, &s0, seeds).unwrap();
+    for _ in 0..steps {
+        run.rk4_step(h).unwrap();
+    }
+    let ad = run.sensitivities();
+    let row = |q: <M as Dynamics<2>>::Coords, v: <M as Dynamics<2>>::Coords| {
+        let ([q1, q2], [v1, v2]) = (q.to_array(), v.to_array());
+        [q1, q2, v1, v2]
+    };
+    let jacobian = (0..P).map(|j| row(ad.dq[j], ad.dv[j])).collect();
+    (row(ad.state.q, ad.state.v), jacobian)
 }
 
 /// The plain RK4 run of the two-coordinate `sys` from `s0`: (q₁, q₂, q̇₁, q̇₂) after `steps` steps
