@@ -26,7 +26,8 @@ use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
 mod contact_scenes;
 use contact_scenes::{
     ball, bilateral, bilateral_release_in, check_ball_dropped_on_the_floor,
-    check_block_sent_up_the_rough_ramp, on_sphere, Start, G, M, R, STARTS,
+    check_block_sent_up_the_rough_ramp, check_pushed_puck_errors_fall_with_the_tolerance,
+    on_sphere, puck_stop_errors, Start, G, M, R, STARTS,
 };
 
 /// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
@@ -294,86 +295,30 @@ fn cost_in_contact_table() {
 
 #[test]
 fn puck_on_a_rough_plane_stops_at_the_closed_form_point() {
-    use lagrange_gallery::scenes::rough_plane::rough_plane::{Coords, RoughPlane, State};
-    use lagrange_gallery::scenes::rough_plane::stop;
     // The friction cone (`#[friction]` with a `Vec2` slip velocity) in the adaptive method: the
     // puck of the gallery's `rough_plane` from 3 m/s, straight and pushed sideways; closed forms of
     // the stop (time and point) in `stop`.
-    let straight = RoughPlane {
-        m: 1.5,
-        g: G,
-        mu_k: 0.5,
-        mu_s: 0.6,
-        push: 0.0,
-    };
-    let v0 = 3.0;
-    let run = |sys: &RoughPlane, tol: f64| {
-        let mut s = State::new(
-            0.0,
-            Coords {
-                x: 0.0,
-                y: 0.0,
-                z: 0.0,
-            },
-            Coords {
-                x: v0,
-                y: 0.0,
-                z: 0.0,
-            },
-        );
-        let (outcome, changes) = Dopri5::new(tol, tol)
-            .integrate_contacts(sys, &mut s, 1.5, ContactOptions::default(), &mut [], |_| {})
-            .expect("integration");
-        // One stop, decided once (no chattering), from sliding to sticking for good.
-        assert_eq!(changes.len(), 1, "{changes:?}");
-        assert_eq!(
-            (changes[0].from, changes[0].to),
-            (RowMode::Sliding, RowMode::Stick)
-        );
-        // Sticking is enforced as a velocity constraint: at rest to round-off.
-        assert!(s.v.x.hypot(s.v.y) < 1e-12, "{:?}", s.v);
-        (changes[0].t, s.q.x, s.q.y, outcome.stats)
+    let run = |sys: &_, s: &mut _, tol: f64| {
+        Dopri5::new(tol, tol).integrate_contacts(
+            sys,
+            s,
+            1.5,
+            ContactOptions::default(),
+            &mut [],
+            |_| {},
+        )
     };
     // Straight: a constant deceleration, integrated exactly (quadratic in t); the stop is located
     // to the root finder's 1e-13 and round-off. Asserted to 1e-12.
-    let (t_s, x_s, y_s) = stop(&straight, v0);
-    let (t, x, y, stats) = run(&straight, 1e-10);
-    eprintln!(
-        "straight: stop at {t:.15} ({:+.1e}), {} steps",
-        t - t_s,
-        stats.accepted
-    );
-    assert!((t - t_s).abs() < 1e-12 && (x - x_s).abs() < 1e-12 && (y - y_s).abs() < 1e-12);
+    let (errors, _) = puck_stop_errors(0.0, 1e-10, run);
+    assert!(errors.iter().all(|e| *e < 1e-12), "{errors:?}");
     // Pushed sideways: the path curves and the slip direction turns ever faster near the stop, so
     // the errors are the integration's, which Dopri5 keeps proportional to the tolerance (HNW I
     // §II.4: the global error of a tolerance-controlled method is proportional to tol), plus the
     // direction held along the step's initial slip in the step that reaches the stop, O(h·θ(h)),
     // which falls faster than h. Asserted: each 100× smaller tolerance divides the errors of the
     // stop time and point by at least 30 (proportionality with a margin of 3 for its constant).
-    let pushed = RoughPlane {
-        push: 3.0,
-        ..straight
-    };
-    let (t_s, x_s, y_s) = stop(&pushed, v0);
-    let mut previous: Option<[f64; 3]> = None;
-    for tol in [1e-6, 1e-8, 1e-10] {
-        let (t, x, y, stats) = run(&pushed, tol);
-        let errors = [(t - t_s).abs(), (x - x_s).abs(), (y - y_s).abs()];
-        eprintln!(
-            "pushed, tol {tol:.0e}: stop time {:.1e}, point ({:.1e}, {:.1e}) off; {} accepted, {} \
-             rejected, {} evaluations",
-            errors[0], errors[1], errors[2], stats.accepted, stats.rejected, stats.evaluations
-        );
-        if let Some(p) = previous {
-            for (e, p) in errors.iter().zip(p) {
-                assert!(
-                    *e < p / 30.0,
-                    "tol {tol:.0e}: errors {errors:?} after {p:?}"
-                );
-            }
-        }
-        previous = Some(errors);
-    }
+    check_pushed_puck_errors_fall_with_the_tolerance(run);
 }
 
 #[test]

@@ -1,12 +1,13 @@
 //! Contact mechanisms several contact tests share (the unilateral sphere is the gallery's
 //! `sphere_release`), with the sphere's parameters, its starts, and its release located on the
-//! bilateral declaration's multiplier; and the checks the adaptive methods share on the ball and
-//! on the gallery's rough ramp.
+//! bilateral declaration's multiplier; and the checks the adaptive methods share on the ball, on
+//! the gallery's rough ramp and on its puck on a rough plane.
 #![allow(dead_code)]
 
 use lagrange::constraints::{constraint_forces, ContactOptions, ModeChange, RowMode};
 use lagrange::integrate::{Direction, Event, Outcome, Stats, StopReason};
 use lagrange::prelude::*;
+use lagrange_gallery::scenes::rough_plane::{rough_plane, stop};
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::Release;
 
@@ -238,5 +239,82 @@ pub fn check_block_sent_up_the_rough_ramp(
             assert!((distance - back).abs() < 1e-11, "{distance} against {back}");
         }
         assert!(stats.rejected == 0 && stats.accepted < 20);
+    }
+}
+
+/// The gallery's puck (m = 1.5, μₖ = 0.5, μₛ = 0.6) on its rough plane (the friction cone:
+/// `#[friction]` with a `Vec2` slip velocity), sent at 3 m/s along x and pushed sideways by
+/// `push`, run to t = 1.5 by `integrate_contacts` (a method's `integrate_contacts` at the tolerance
+/// given). It stops once, decided once (no chattering), from sliding to sticking for good, and is
+/// at rest to round-off (sticking is enforced as a velocity constraint). Returns the errors of the
+/// stop time and point against the closed forms of the gallery's `rough_plane::stop`, and the cost.
+pub fn puck_stop_errors(
+    push: f64,
+    tol: f64,
+    integrate_contacts: impl Fn(
+        &rough_plane::RoughPlane,
+        &mut rough_plane::State,
+        f64,
+    )
+        -> lagrange::Result<(Outcome<rough_plane::Coords>, Vec<ModeChange>)>,
+) -> ([f64; 3], Stats) {
+    use rough_plane::{Coords, RoughPlane, State};
+    let sys = RoughPlane {
+        m: 1.5,
+        g: G,
+        mu_k: 0.5,
+        mu_s: 0.6,
+        push,
+    };
+    let v0 = 3.0;
+    let zero = Coords {
+        x: 0.0,
+        y: 0.0,
+        z: 0.0,
+    };
+    let mut s = State::new(0.0, zero, Coords { x: v0, ..zero });
+    let (outcome, changes) = integrate_contacts(&sys, &mut s, tol).expect("integration");
+    assert_eq!(changes.len(), 1, "{changes:?}");
+    assert_eq!(
+        (changes[0].from, changes[0].to),
+        (RowMode::Sliding, RowMode::Stick)
+    );
+    assert!(s.v.x.hypot(s.v.y) < 1e-12, "{:?}", s.v);
+    let (t_s, x_s, y_s) = stop(&sys, v0);
+    let errors = [
+        (changes[0].t - t_s).abs(),
+        (s.q.x - x_s).abs(),
+        (s.q.y - y_s).abs(),
+    ];
+    eprintln!(
+        "push {push}, tol {tol:.0e}: stop time {:.1e}, point ({:.1e}, {:.1e}) off; {:?}",
+        errors[0], errors[1], errors[2], outcome.stats
+    );
+    (errors, outcome.stats)
+}
+
+/// The puck of [`puck_stop_errors`] pushed sideways by 3 N (< μₛmg) at tolerances 1e-6, 1e-8 and
+/// 1e-10: each 100× smaller tolerance must divide the errors of the stop time and point by at
+/// least 30. The caller says why its method's errors fall in proportion to the tolerance.
+pub fn check_pushed_puck_errors_fall_with_the_tolerance(
+    integrate_contacts: impl Fn(
+        &rough_plane::RoughPlane,
+        &mut rough_plane::State,
+        f64,
+    )
+        -> lagrange::Result<(Outcome<rough_plane::Coords>, Vec<ModeChange>)>,
+) {
+    let mut previous: Option<[f64; 3]> = None;
+    for tol in [1e-6, 1e-8, 1e-10] {
+        let (errors, _) = puck_stop_errors(3.0, tol, &integrate_contacts);
+        if let Some(p) = previous {
+            for (e, p) in errors.iter().zip(p) {
+                assert!(
+                    *e < p / 30.0,
+                    "tol {tol:.0e}: errors {errors:?} after {p:?}"
+                );
+            }
+        }
+        previous = Some(errors);
     }
 }
