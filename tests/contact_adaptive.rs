@@ -26,8 +26,9 @@ use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
 mod contact_scenes;
 use contact_scenes::{
     ball, bilateral, bilateral_release_in, check_ball_dropped_on_the_floor,
-    check_block_sent_up_the_rough_ramp, check_pushed_puck_errors_fall_with_the_tolerance,
-    on_sphere, puck_stop_errors, Start, G, M, R, STARTS,
+    check_block_sent_up_the_rough_ramp, check_integrate_takes_the_contact_solver,
+    check_pushed_puck_errors_fall_with_the_tolerance, on_sphere, puck_stop_errors, Start, G, M, R,
+    STARTS,
 };
 
 /// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
@@ -201,46 +202,32 @@ fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
 /// bit.
 #[test]
 fn integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
-    use unilateral::{Coords, SphereRelease as Sphere, State};
-    let sys = Sphere { m: M, r: R, g: G };
-    let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: 0.5, y: 0.0 });
-    // Past the release (from the top at 0.5 m/s it leaves within 2 s): one mode change.
-    let t_end = 2.5;
-    let mut routed = start;
-    let via_integrate = Dopri5::new(1e-9, 1e-9)
-        .integrate(&sys, &mut routed, t_end, &mut [], |_| {})
-        .expect("integrate");
-    let mut direct = start;
-    let (via_contacts, changes) = Dopri5::new(1e-9, 1e-9)
-        .integrate_contacts(
-            &sys,
-            &mut direct,
-            t_end,
-            ContactOptions::default(),
-            &mut [],
-            |_| {},
-        )
-        .expect("integrate_contacts");
-    assert_eq!(changes.len(), 1, "one release");
-    assert_eq!(via_integrate.stats, via_contacts.stats);
-    assert_eq!(routed, direct);
-    let mut routed = start;
-    let via_integrate = Dop853::new(1e-9, 1e-9)
-        .integrate(&sys, &mut routed, t_end, &mut [], |_| {})
-        .expect("integrate");
-    let mut direct = start;
-    let (via_contacts, _) = Dop853::new(1e-9, 1e-9)
-        .integrate_contacts(
-            &sys,
-            &mut direct,
-            t_end,
-            ContactOptions::default(),
-            &mut [],
-            |_| {},
-        )
-        .expect("integrate_contacts");
-    assert_eq!(via_integrate.stats, via_contacts.stats);
-    assert_eq!(routed, direct);
+    check_integrate_takes_the_contact_solver(
+        |sys, s, t_end| Dopri5::new(1e-9, 1e-9).integrate(sys, s, t_end, &mut [], |_| {}),
+        |sys, s, t_end| {
+            Dopri5::new(1e-9, 1e-9).integrate_contacts(
+                sys,
+                s,
+                t_end,
+                ContactOptions::default(),
+                &mut [],
+                |_| {},
+            )
+        },
+    );
+    check_integrate_takes_the_contact_solver(
+        |sys, s, t_end| Dop853::new(1e-9, 1e-9).integrate(sys, s, t_end, &mut [], |_| {}),
+        |sys, s, t_end| {
+            Dop853::new(1e-9, 1e-9).integrate_contacts(
+                sys,
+                s,
+                t_end,
+                ContactOptions::default(),
+                &mut [],
+                |_| {},
+            )
+        },
+    );
 }
 
 /// The figures of BENCHMARKS.md: steps and evaluations in contact, up to the release, for the

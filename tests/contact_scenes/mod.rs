@@ -1,7 +1,8 @@
 //! Contact mechanisms several contact tests share (the unilateral sphere is the gallery's
 //! `sphere_release`), with the sphere's parameters, its starts, and its release located on the
-//! bilateral declaration's multiplier; and the checks the adaptive methods share on the ball, on
-//! the gallery's rough ramp and on its puck on a rough plane.
+//! bilateral declaration's multiplier; and the checks the adaptive methods share: their
+//! `integrate` routed to the contact solver, the ball, the gallery's rough ramp and its puck on a
+//! rough plane.
 #![allow(dead_code)]
 
 use lagrange::constraints::{constraint_forces, ContactOptions, ModeChange, RowMode};
@@ -9,7 +10,7 @@ use lagrange::integrate::{Direction, Event, Outcome, Stats, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_plane::{rough_plane, stop};
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
-use lagrange_gallery::scenes::sphere_release::Release;
+use lagrange_gallery::scenes::sphere_release::{sphere_release, Release};
 
 /// The particle's mass on the sphere.
 pub const M: f64 = 0.7;
@@ -121,6 +122,38 @@ pub mod ball {
     fn floor() -> f64 {
         y
     }
+}
+
+/// One interface: a method's `integrate` on a declaration with a unilateral row takes the contact
+/// solver, so it is the same run as its `integrate_contacts` — same steps, same evaluations, same
+/// end state, bit for bit. Checked on the unilateral sphere from the top at 0.5 m/s to t = 2.5,
+/// past its one release (within 2 s). `integrate` and `integrate_contacts` run the method at the
+/// same tolerances to the end time given.
+pub fn check_integrate_takes_the_contact_solver(
+    integrate: impl Fn(
+        &sphere_release::SphereRelease,
+        &mut sphere_release::State,
+        f64,
+    ) -> lagrange::Result<Outcome<sphere_release::Coords>>,
+    integrate_contacts: impl Fn(
+        &sphere_release::SphereRelease,
+        &mut sphere_release::State,
+        f64,
+    )
+        -> lagrange::Result<(Outcome<sphere_release::Coords>, Vec<ModeChange>)>,
+) {
+    use sphere_release::{Coords, SphereRelease, State};
+    let sys = SphereRelease { m: M, r: R, g: G };
+    let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: 0.5, y: 0.0 });
+    let t_end = 2.5;
+    let mut routed = start;
+    let via_integrate = integrate(&sys, &mut routed, t_end).expect("integrate");
+    let mut direct = start;
+    let (via_contacts, changes) =
+        integrate_contacts(&sys, &mut direct, t_end).expect("integrate_contacts");
+    assert_eq!(changes.len(), 1, "one release");
+    assert_eq!(via_integrate.stats, via_contacts.stats);
+    assert_eq!(routed, direct);
 }
 
 /// The ball (m = 0.3) dropped from 1.3 m, moving at 0.5 m/s along the floor, run to t = 2 by
