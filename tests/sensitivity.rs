@@ -5,33 +5,8 @@ use lagrange::sensitivity::{Seed, Tangent};
 
 mod common;
 use common::pendulum;
-
-#[mechanism]
-pub mod double_pendulum {
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-    pub struct DoublePendulum {
-        pub m1: f64,
-        pub m2: f64,
-        pub l1: f64,
-        pub l2: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m1)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l1
-    }
-    #[particle(mass = m2)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::cartesian_pendulum::cartesian_pendulum;
+use lagrange_gallery::scenes::double_pendulum::double_pendulum;
 
 const G: f64 = 9.81;
 
@@ -250,31 +225,6 @@ fn dopri5_with_frozen_steps_matches_rk4() {
     }
     eprintln!("largest |Dopri5 − RK4| sensitivity difference: {worst:e}");
     assert!(worst < 1e-7);
-}
-
-#[mechanism]
-pub mod cartesian_pendulum {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-    pub struct CartesianPendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(x, y)
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-    #[constraint]
-    fn rod() -> f64 {
-        bob.norm() - l
-    }
 }
 
 /// The projection onto constraints after each step is not differentiated: refused up front.

@@ -1,31 +1,12 @@
-//! What several test files share: the simple pendulum, its first passage through the bottom
-//! carried with its sensitivities, the plain RK4 run a tangent is compared with, and the check
-//! of sensitivities against finite differences.
+//! What several test files share: the gallery's simple pendulum, its first passage through the
+//! bottom carried with its sensitivities, the plain RK4 run a tangent is compared with, and the
+//! check of sensitivities against finite differences.
 
 use lagrange::mechanism::Dynamics;
 use lagrange::parameters::Parametrized;
 use lagrange::prelude::*;
 use lagrange::sensitivity::{Seed, Sensitivities, Tangent};
-
-#[mechanism]
-pub mod pendulum {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Pendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+pub use lagrange_gallery::scenes::pendulum::pendulum;
 
 /// Carries `run`, a tangent of the pendulum `sys` started at θ > 0, to its first passage through
 /// θ = 0: whole RK4 steps of `h` while θ stays positive, then the partial step τ that lands on
