@@ -74,7 +74,12 @@ where
 
 /// The plain RK4 run of the two-coordinate `sys` from `s0`: (q₁, q₂, q̇₁, q̇₂) after `steps` steps
 /// of `h`.
-pub fn rk4_end<M: Mechanism<2>>(sys: &M, s0: State<M::Coords>, h: f64, steps: usize) -> [f64; 4] {
+pub fn rk4_end<M: Mechanism<2>>(
+    sys: &M,
+    s0: State<<M as Dynamics<2>>::Coords>,
+    h: f64,
+    steps: usize,
+) -> [f64; 4] {
     let mut s = s0;
     sys.simulate::<Rk4>(&mut s, h, steps, |_| {}).unwrap();
     let ([q1, q2], [v1, v2]) = (s.q.to_array(), s.v.to_array());
