@@ -16,138 +16,13 @@ use lagrange::constraints::{
 use lagrange::model::Model;
 use lagrange::prelude::*;
 use lagrange::{Dopri5, GaussLegendre2, ImplicitMidpoint, StormerVerlet, Variational};
+use lagrange_gallery::scenes::cartesian_pendulum::cartesian_pendulum;
+use lagrange_gallery::scenes::double_pendulum::double_pendulum;
+use lagrange_gallery::scenes::rough_ramp::rough_ramp;
+use lagrange_gallery::scenes::sphere_release::sphere_release as sphere;
 use std::fmt::Debug;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Mutex;
-
-#[mechanism]
-pub mod double_pendulum {
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-
-    #[derive(Clone, Copy, Debug)]
-    pub struct DoublePendulum {
-        pub m1: f64,
-        pub m2: f64,
-        pub l1: f64,
-        pub l2: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m1)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l1
-    }
-
-    #[particle(mass = m2)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-#[mechanism]
-pub mod cartesian_pendulum {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    #[derive(Clone, Copy, Debug)]
-    pub struct CartesianPendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[constraint]
-    fn rod() -> f64 {
-        bob.norm() - l
-    }
-}
-
-#[mechanism]
-pub mod sphere {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    #[derive(Clone, Copy, Debug)]
-    pub struct Sphere {
-        pub m: f64,
-        pub r: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn particle() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn surface() -> f64 {
-        particle.norm() - r
-    }
-}
-
-#[mechanism]
-pub mod rough_ramp {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    #[derive(Clone, Copy, Debug)]
-    pub struct RoughRamp {
-        pub m: f64,
-        pub alpha: f64,
-        pub g: f64,
-        pub mu_k: f64,
-        pub mu_s: f64,
-    }
-
-    #[particle(mass = m)]
-    fn block() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[unilateral]
-    fn ramp() -> f64 {
-        block.y * alpha.cos() - block.x * alpha.sin()
-    }
-
-    #[friction(on = ramp, kinetic = mu_k, stiction = mu_s)]
-    fn ramp_friction() -> f64 {
-        block_dot.x * alpha.cos() + block_dot.y * alpha.sin()
-    }
-}
 
 /// The bad values: NaN, ±∞, huge of both signs, zero, a plain negative, the smallest subnormal.
 const BAD: [f64; 8] = [
@@ -630,7 +505,7 @@ fn bad_input_matrix() {
         );
     }
     {
-        use sphere::{Coords, Sphere, State};
+        use sphere::{Coords, SphereRelease as Sphere, State};
         let base = Sphere {
             m: 1.0,
             r: 1.0,

@@ -21,36 +21,15 @@ use lagrange::constraints::{
 };
 use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
 use lagrange::prelude::*;
-use lagrange_gallery::scenes::rough_ramp::rough_ramp;
-use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
+use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
 
 mod contact_scenes;
-use contact_scenes::{ball, bilateral};
-
-const M: f64 = 0.7;
-const R: f64 = 1.5;
-const G: f64 = 9.81;
-
-/// Where the particle starts (at angle θ₀ from the top, with speed v₀ along the sphere), with the
-/// closed form of its release: the gallery's `sphere_release::Release`.
-type Start = Release;
-
-/// A start on this sphere (radius R, gravity G).
-const fn on_sphere(theta0: f64, v0: f64) -> Start {
-    Release {
-        r: R,
-        g: G,
-        theta0,
-        v0,
-    }
-}
-
-/// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
-const STARTS: [Start; 3] = [
-    on_sphere(0.1, 0.0),
-    on_sphere(0.0, 0.5),
-    on_sphere(0.0, 1.2),
-];
+use contact_scenes::{
+    ball, bilateral, bilateral_release_in, check_ball_dropped_on_the_floor,
+    check_block_sent_up_the_rough_ramp, check_integrate_takes_the_contact_solver,
+    check_pushed_puck_errors_fall_with_the_tolerance, on_sphere, puck_stop_errors, Start, G, M, R,
+    STARTS,
+};
 
 /// Cost of a run: (steps = accepted + rejected, evaluations of q̈).
 fn cost(stats: Stats) -> (usize, usize) {
@@ -63,28 +42,6 @@ fn bilateral_release(start: Start, tol: f64) -> (f64, Stats) {
     bilateral_release_in(start, |sys, s, events| {
         Dopri5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
     })
-}
-
-/// [`bilateral_release`] with the integration `integrate` (Dopri5 or Dop853).
-fn bilateral_release_in(
-    start: Start,
-    integrate: impl FnOnce(
-        &bilateral::Sphere,
-        &mut bilateral::State,
-        &mut [Event<'_, bilateral::Coords>],
-    ) -> lagrange::Result<lagrange::integrate::Outcome<bilateral::Coords>>,
-) -> (f64, Stats) {
-    use bilateral::{Coords, Sphere, State};
-    let sys = Sphere { m: M, r: R, g: G };
-    let ([x, y], [vx, vy]) = start.state();
-    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
-    let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
-    let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
-    let outcome = integrate(&sys, &mut s, &mut events).expect("integration");
-    let StopReason::Event(hit) = outcome.reason else {
-        panic!("the particle did not leave: {:?}", outcome.reason)
-    };
-    (hit.state.t, outcome.stats)
 }
 
 #[test]
@@ -214,123 +171,29 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
 
 #[test]
 fn ball_dropped_on_a_unilateral_floor_lands_at_the_closed_form_time() {
-    use ball::{Ball, Coords, State};
-    let sys = Ball { m: 0.3, g: G };
-    let height = 1.3;
-    let t1 = (2.0 * height / G).sqrt();
     // Free fall and flight are quadratic in t, which Dopri5 (order 5) integrates exactly: the only
     // errors are the root finder's 1e-13 and round-off over a few steps. Asserted to 1e-12.
-    for restitution in [0.0, 0.6] {
-        let mut s = State::new(0.0, Coords { x: 0.2, y: height }, Coords { x: 0.5, y: 0.0 });
-        let options = ContactOptions {
-            restitution,
-            ..Default::default()
-        };
-        let (outcome, changes) = Dopri5::new(1e-10, 1e-10)
-            .integrate_contacts(&sys, &mut s, 2.0, options, &mut [], |_| {})
-            .expect("integration");
-        eprintln!(
-            "e = {restitution}: {} steps ({} rejected), {} evaluations, mode changes at {:?}",
-            outcome.stats.accepted,
-            outcome.stats.rejected,
-            outcome.stats.evaluations,
-            changes.iter().map(|c| c.t).collect::<Vec<_>>()
-        );
-        assert!(
-            (changes[0].t - t1).abs() < 1e-12,
-            "landed at {}, closed form {t1}",
-            changes[0].t
-        );
-        assert_eq!(changes[0].from, RowMode::Inactive);
-        if restitution == 0.0 {
-            // A plastic impact: it stays on the floor, sliding on at 0.5 m/s (frictionless).
-            assert_eq!((changes.len(), changes[0].to), (1, RowMode::Active));
-            assert!(s.q.y.abs() < 1e-12 && s.v.y.abs() < 1e-12);
-            assert!((s.q.x - (0.2 + 0.5 * 2.0)).abs() < 1e-12);
-        } else {
-            // Bounces: leaves at e·g·t₁, so the k-th landing is at t₁(1 + 2e + … + 2eᵏ⁻¹).
-            assert_eq!(changes[0].to, RowMode::Inactive);
-            let mut landing = t1;
-            let mut flight = 2.0 * restitution * t1;
-            for change in changes.iter().take_while(|c| c.t < 1.5) {
-                assert!(
-                    (change.t - landing).abs() < 1e-12,
-                    "landed at {}, closed form {landing}",
-                    change.t
-                );
-                landing += flight;
-                flight *= restitution;
-            }
-            assert!(changes.len() >= 3);
-        }
-        // Few steps: a polynomial motion has no error to control, and each landing cuts one step.
-        assert!(outcome.stats.accepted < 20 * changes.len().max(1));
-    }
+    check_ball_dropped_on_the_floor(|sys, s, options| {
+        Dopri5::new(1e-10, 1e-10).integrate_contacts(sys, s, 2.0, options, &mut [], |_| {})
+    });
 }
 
 #[test]
 fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
-    use rough_ramp::{Coords, RoughRamp, State};
-    let (alpha, u) = (0.5f64, 2.0);
-    let (sn, cs) = alpha.sin_cos();
-    let up = Coords {
-        x: u * cs,
-        y: u * sn,
-    };
     // Piecewise constant accelerations: each phase is a quadratic in t, integrated exactly by
     // Dopri5; the stop is located to the root finder's 1e-13 and round-off. Asserted to 1e-12.
-    for (mu_k, mu_s) in [(0.5, 0.6), (0.3, 0.4)] {
-        let sys = RoughRamp {
-            m: 2.0,
-            alpha,
-            g: G,
-            mu_k,
-            mu_s,
-        };
-        let start = State::new(0.0, Coords { x: 0.0, y: 0.0 }, up);
+    check_block_sent_up_the_rough_ramp(|sys, start| {
         let mut solver = ContactDopri5::new(
-            &sys,
+            sys,
             Dopri5::new(1e-10, 1e-10),
-            &start,
+            start,
             ContactOptions::default(),
         )
         .expect("solver");
         assert_eq!(solver.mode().rows, [RowMode::Active, RowMode::SlipPositive]);
         let outcome = solver.integrate(1.5, &mut [], |_| {}).expect("integration");
-        let t_stop = u / (G * (sn + mu_k * cs));
-        let d_stop = u * u / (2.0 * G * (sn + mu_k * cs));
-        let s = solver.state();
-        let distance = s.q.x * cs + s.q.y * sn;
-        eprintln!(
-            "μₖ = {mu_k}, μₛ = {mu_s}: {:?}; {} steps ({} rejected), {} evaluations",
-            solver.events(),
-            outcome.stats.accepted,
-            outcome.stats.rejected,
-            outcome.stats.evaluations
-        );
-        let stop = solver.events()[0];
-        assert!(
-            (stop.t - t_stop).abs() < 1e-12,
-            "stopped at {}, closed form {t_stop}",
-            stop.t
-        );
-        if alpha.tan() <= mu_s {
-            // Sticks where it stopped, for good: one mode change.
-            assert_eq!(solver.events().len(), 1);
-            assert_eq!(stop.to, RowMode::Stick);
-            assert!(
-                (distance - d_stop).abs() < 1e-12,
-                "{distance} against {d_stop}"
-            );
-        } else {
-            // Slides back down from the stop with a = g(sin α − μₖ cos α).
-            assert_eq!(stop.to, RowMode::SlipNegative);
-            let tau = 1.5 - t_stop;
-            let back = d_stop - 0.5 * G * (sn - mu_k * cs) * tau * tau;
-            assert!((distance - back).abs() < 1e-11, "{distance} against {back}");
-        }
-        assert!(outcome.stats.rejected == 0 && outcome.stats.accepted < 20);
-    }
+        (solver.events().to_vec(), solver.state(), outcome.stats)
+    });
 }
 
 /// One interface: `Dopri5::integrate` and `Dop853::integrate` on a declaration with a unilateral
@@ -339,46 +202,32 @@ fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
 /// bit.
 #[test]
 fn integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
-    use unilateral::{Coords, SphereRelease as Sphere, State};
-    let sys = Sphere { m: M, r: R, g: G };
-    let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: 0.5, y: 0.0 });
-    // Past the release (from the top at 0.5 m/s it leaves within 2 s): one mode change.
-    let t_end = 2.5;
-    let mut routed = start;
-    let via_integrate = Dopri5::new(1e-9, 1e-9)
-        .integrate(&sys, &mut routed, t_end, &mut [], |_| {})
-        .expect("integrate");
-    let mut direct = start;
-    let (via_contacts, changes) = Dopri5::new(1e-9, 1e-9)
-        .integrate_contacts(
-            &sys,
-            &mut direct,
-            t_end,
-            ContactOptions::default(),
-            &mut [],
-            |_| {},
-        )
-        .expect("integrate_contacts");
-    assert_eq!(changes.len(), 1, "one release");
-    assert_eq!(via_integrate.stats, via_contacts.stats);
-    assert_eq!(routed, direct);
-    let mut routed = start;
-    let via_integrate = Dop853::new(1e-9, 1e-9)
-        .integrate(&sys, &mut routed, t_end, &mut [], |_| {})
-        .expect("integrate");
-    let mut direct = start;
-    let (via_contacts, _) = Dop853::new(1e-9, 1e-9)
-        .integrate_contacts(
-            &sys,
-            &mut direct,
-            t_end,
-            ContactOptions::default(),
-            &mut [],
-            |_| {},
-        )
-        .expect("integrate_contacts");
-    assert_eq!(via_integrate.stats, via_contacts.stats);
-    assert_eq!(routed, direct);
+    check_integrate_takes_the_contact_solver(
+        |sys, s, t_end| Dopri5::new(1e-9, 1e-9).integrate(sys, s, t_end, &mut [], |_| {}),
+        |sys, s, t_end| {
+            Dopri5::new(1e-9, 1e-9).integrate_contacts(
+                sys,
+                s,
+                t_end,
+                ContactOptions::default(),
+                &mut [],
+                |_| {},
+            )
+        },
+    );
+    check_integrate_takes_the_contact_solver(
+        |sys, s, t_end| Dop853::new(1e-9, 1e-9).integrate(sys, s, t_end, &mut [], |_| {}),
+        |sys, s, t_end| {
+            Dop853::new(1e-9, 1e-9).integrate_contacts(
+                sys,
+                s,
+                t_end,
+                ContactOptions::default(),
+                &mut [],
+                |_| {},
+            )
+        },
+    );
 }
 
 /// The figures of BENCHMARKS.md: steps and evaluations in contact, up to the release, for the
@@ -433,86 +282,30 @@ fn cost_in_contact_table() {
 
 #[test]
 fn puck_on_a_rough_plane_stops_at_the_closed_form_point() {
-    use lagrange_gallery::scenes::rough_plane::rough_plane::{Coords, RoughPlane, State};
-    use lagrange_gallery::scenes::rough_plane::stop;
     // The friction cone (`#[friction]` with a `Vec2` slip velocity) in the adaptive method: the
     // puck of the gallery's `rough_plane` from 3 m/s, straight and pushed sideways; closed forms of
     // the stop (time and point) in `stop`.
-    let straight = RoughPlane {
-        m: 1.5,
-        g: G,
-        mu_k: 0.5,
-        mu_s: 0.6,
-        push: 0.0,
-    };
-    let v0 = 3.0;
-    let run = |sys: &RoughPlane, tol: f64| {
-        let mut s = State::new(
-            0.0,
-            Coords {
-                x: 0.0,
-                y: 0.0,
-                z: 0.0,
-            },
-            Coords {
-                x: v0,
-                y: 0.0,
-                z: 0.0,
-            },
-        );
-        let (outcome, changes) = Dopri5::new(tol, tol)
-            .integrate_contacts(sys, &mut s, 1.5, ContactOptions::default(), &mut [], |_| {})
-            .expect("integration");
-        // One stop, decided once (no chattering), from sliding to sticking for good.
-        assert_eq!(changes.len(), 1, "{changes:?}");
-        assert_eq!(
-            (changes[0].from, changes[0].to),
-            (RowMode::Sliding, RowMode::Stick)
-        );
-        // Sticking is enforced as a velocity constraint: at rest to round-off.
-        assert!(s.v.x.hypot(s.v.y) < 1e-12, "{:?}", s.v);
-        (changes[0].t, s.q.x, s.q.y, outcome.stats)
+    let run = |sys: &_, s: &mut _, tol: f64| {
+        Dopri5::new(tol, tol).integrate_contacts(
+            sys,
+            s,
+            1.5,
+            ContactOptions::default(),
+            &mut [],
+            |_| {},
+        )
     };
     // Straight: a constant deceleration, integrated exactly (quadratic in t); the stop is located
     // to the root finder's 1e-13 and round-off. Asserted to 1e-12.
-    let (t_s, x_s, y_s) = stop(&straight, v0);
-    let (t, x, y, stats) = run(&straight, 1e-10);
-    eprintln!(
-        "straight: stop at {t:.15} ({:+.1e}), {} steps",
-        t - t_s,
-        stats.accepted
-    );
-    assert!((t - t_s).abs() < 1e-12 && (x - x_s).abs() < 1e-12 && (y - y_s).abs() < 1e-12);
+    let (errors, _) = puck_stop_errors(0.0, 1e-10, run);
+    assert!(errors.iter().all(|e| *e < 1e-12), "{errors:?}");
     // Pushed sideways: the path curves and the slip direction turns ever faster near the stop, so
     // the errors are the integration's, which Dopri5 keeps proportional to the tolerance (HNW I
     // §II.4: the global error of a tolerance-controlled method is proportional to tol), plus the
     // direction held along the step's initial slip in the step that reaches the stop, O(h·θ(h)),
     // which falls faster than h. Asserted: each 100× smaller tolerance divides the errors of the
     // stop time and point by at least 30 (proportionality with a margin of 3 for its constant).
-    let pushed = RoughPlane {
-        push: 3.0,
-        ..straight
-    };
-    let (t_s, x_s, y_s) = stop(&pushed, v0);
-    let mut previous: Option<[f64; 3]> = None;
-    for tol in [1e-6, 1e-8, 1e-10] {
-        let (t, x, y, stats) = run(&pushed, tol);
-        let errors = [(t - t_s).abs(), (x - x_s).abs(), (y - y_s).abs()];
-        eprintln!(
-            "pushed, tol {tol:.0e}: stop time {:.1e}, point ({:.1e}, {:.1e}) off; {} accepted, {} \
-             rejected, {} evaluations",
-            errors[0], errors[1], errors[2], stats.accepted, stats.rejected, stats.evaluations
-        );
-        if let Some(p) = previous {
-            for (e, p) in errors.iter().zip(p) {
-                assert!(
-                    *e < p / 30.0,
-                    "tol {tol:.0e}: errors {errors:?} after {p:?}"
-                );
-            }
-        }
-        previous = Some(errors);
-    }
+    check_pushed_puck_errors_fall_with_the_tolerance(run);
 }
 
 #[test]
@@ -592,7 +385,7 @@ fn implicit_steppers_refuse_unilateral_declarations() {
         "implicit midpoint",
     );
     // The plain Radau5 stepper (its mode re-inferred at every evaluation) refuses it too;
-    // `Radau5::integrate` takes the contact solver instead (tests/contact_implicit.rs).
+    // `Radau5::integrate` takes the contact solver instead (tests/contact_implicit/).
     refused(
         lagrange::integrate::Radau5Stepper::new(&sys, Radau5::new(1e-8, 1e-8), &s).map(|_| ()),
         "Radau5",

@@ -16,33 +16,7 @@ use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
 
 mod contact_scenes;
-use contact_scenes::ball;
-
-const M: f64 = 0.7;
-const R: f64 = 1.5;
-const G: f64 = 9.81;
-
-/// Released at rest near the top (cos θ* = ⅔ cos θ₀), and from the top at two speeds.
-const STARTS: [Release; 3] = [
-    Release {
-        r: R,
-        g: G,
-        theta0: 0.1,
-        v0: 0.0,
-    },
-    Release {
-        r: R,
-        g: G,
-        theta0: 0.0,
-        v0: 0.5,
-    },
-    Release {
-        r: R,
-        g: G,
-        theta0: 0.0,
-        v0: 1.2,
-    },
-];
+use contact_scenes::{ball, G, M, R, STARTS};
 
 /// The release time as a function of the step size.
 type ReleaseTime<'a> = dyn Fn(f64) -> f64 + 'a;

@@ -5,26 +5,7 @@ use lagrange::prelude::*;
 use lagrange::sensitivity::{Seed, Tangent};
 
 mod common;
-
-#[mechanism]
-pub mod pendulum {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Pendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use common::pendulum;
 
 /// A double pendulum with viscous friction c in both joints (the relative rate of the second).
 #[mechanism]
@@ -65,53 +46,14 @@ pub mod damped {
 
 const G: f64 = 9.81;
 
-/// K(k) by the arithmetic–geometric mean (Abramowitz & Stegun 17.6.1–17.6.4): K = π / (2 a_∞).
-fn elliptic_k(k: f64) -> f64 {
-    let (mut a, mut b) = (1.0f64, (1.0 - k * k).sqrt());
-    // Quadratic convergence: a handful of rounds reach rounding, where a and b may keep
-    // differing in the last bit; 64 rounds bound the loop.
-    for _ in 0..64 {
-        if (a - b).abs() <= 4.0 * f64::EPSILON * a {
-            break;
-        }
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    std::f64::consts::PI / (2.0 * a)
-}
-
-/// The first passage through θ = 0 of a pendulum of length `l` released at rest from `theta0`,
-/// carried with the sensitivity by `l`: (t*, ∂θ/∂l and θ̇ at t*). Whole RK4 steps of `h` while θ
-/// stays positive, then the partial step that lands on θ = 0, found by the secant method on the
-/// plain RK4 step.
+/// The first passage through θ = 0 of a pendulum of length `l` released at rest from `theta0`
+/// (RK4 steps of `h`, [`common::first_passage`]), carried with the sensitivity by `l`: (t*, ∂θ/∂l
+/// and θ̇ at t*).
 fn first_passage(l: f64, theta0: f64, h: f64) -> (f64, f64, f64) {
     let sys = pendulum::Pendulum { m: 1.0, l, g: G };
     let s0 = pendulum::State::at_rest(pendulum::Coords { theta: theta0 });
-    let mut run = Tangent::new(&sys, &s0, [Seed::Parameter("l")]).unwrap();
-    loop {
-        let mut next = run.clone();
-        next.rk4_step(h).unwrap();
-        if next.state().q.theta <= 0.0 {
-            break;
-        }
-        run = next;
-    }
-    let theta_after = |tau: f64| {
-        let mut s = run.state();
-        sys.step::<Rk4>(&mut s, tau).unwrap();
-        s.q.theta
-    };
-    let (mut a, mut b): (f64, f64) = (0.5 * h, h);
-    let (mut fa, mut fb) = (theta_after(a), theta_after(b));
-    for _ in 0..50 {
-        if fb == 0.0 || (b - a).abs() < 1e-16 {
-            break;
-        }
-        let c = b - fb * (b - a) / (fb - fa);
-        (a, fa) = (b, fb);
-        (b, fb) = (c, theta_after(c));
-    }
-    run.rk4_step(b).unwrap();
-    let out = run.sensitivities();
+    let run = Tangent::new(&sys, &s0, [Seed::Parameter("l")]).unwrap();
+    let out = common::first_passage(&sys, run, h);
     (out.state.t, out.dq[0].theta, out.state.v.theta)
 }
 
@@ -125,7 +67,7 @@ fn first_passage(l: f64, theta0: f64, h: f64) -> (f64, f64, f64) {
 fn period_derivative_by_length_matches_the_closed_form() {
     for (l, theta0) in [(1.5, 2.0), (0.8, 1e-3)] {
         let (quarter, dtheta_dl, rate) = first_passage(l, theta0, 1e-3);
-        let period = 4.0 * (l / G).sqrt() * elliptic_k((theta0 / 2.0).sin());
+        let period = 4.0 * (l / G).sqrt() * lagrange_gallery::elliptic_k((theta0 / 2.0).sin());
         let dperiod = 4.0 * (-dtheta_dl / rate);
         eprintln!(
             "L = {l}, θ₀ = {theta0}: T = {:.12} (closed form {period:.12}), dT/dL = {dperiod:.12} \
@@ -154,13 +96,6 @@ fn damped() -> damped::Damped {
     }
 }
 
-/// The plain RK4 run of `sys`: (θ₁, θ₂, θ̇₁, θ̇₂) after `steps` steps of `h`.
-fn rk4_end(sys: &damped::Damped, s0: damped::State, h: f64, steps: usize) -> [f64; 4] {
-    let mut s = s0;
-    sys.simulate::<Rk4>(&mut s, h, steps, |_| {}).unwrap();
-    [s.q.theta1, s.q.theta2, s.v.theta1, s.v.theta2]
-}
-
 /// On the damped double pendulum (2 s of RK4, h = 1e-3) the derivatives of the end state by the
 /// lengths (in the positions) and by the friction coefficient (in the forces) agree with finite
 /// differences of the same discrete map, to the differences' own error (estimated in
@@ -186,18 +121,8 @@ fn damped_double_pendulum_by_parameters_matches_finite_differences() {
         Seed::Parameter("c"),
     ];
     let (h, steps) = (1e-3, 2000);
-    let mut run = Tangent::new(&sys, &s0, seeds).unwrap();
-    for _ in 0..steps {
-        run.rk4_step(h).unwrap();
-    }
-    let ad = run.sensitivities();
-    let plain = rk4_end(&sys, s0, h, steps);
-    let real = [
-        ad.state.q.theta1,
-        ad.state.q.theta2,
-        ad.state.v.theta1,
-        ad.state.v.theta2,
-    ];
+    let (real, jacobian) = common::rk4_tangent_end(&sys, s0, seeds, h, steps);
+    let plain = common::rk4_end(&sys, s0, h, steps);
     for i in 0..4 {
         // Rounding only: the same steps through two orderings of the same arithmetic.
         assert!(
@@ -207,16 +132,6 @@ fn damped_double_pendulum_by_parameters_matches_finite_differences() {
             plain[i]
         );
     }
-    let jacobian: Vec<[f64; 4]> = (0..3)
-        .map(|j| {
-            [
-                ad.dq[j].theta1,
-                ad.dq[j].theta2,
-                ad.dv[j].theta1,
-                ad.dv[j].theta2,
-            ]
-        })
-        .collect();
     let central = |seed: usize, delta: f64| -> [f64; 4] {
         let shifted = |sign: f64| {
             let mut p = damped();
@@ -226,7 +141,7 @@ fn damped_double_pendulum_by_parameters_matches_finite_differences() {
                 1 => p.l2 += d,
                 _ => p.c += d,
             }
-            rk4_end(&p, s0, h, steps)
+            common::rk4_end(&p, s0, h, steps)
         };
         let (plus, minus) = (shifted(1.0), shifted(-1.0));
         std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * delta))

@@ -4,53 +4,9 @@ use lagrange::prelude::*;
 use lagrange::sensitivity::{Seed, Tangent};
 
 mod common;
-
-#[mechanism]
-pub mod pendulum {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Pendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-#[mechanism]
-pub mod double_pendulum {
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-    pub struct DoublePendulum {
-        pub m1: f64,
-        pub m2: f64,
-        pub l1: f64,
-        pub l2: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m1)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l1
-    }
-    #[particle(mass = m2)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use common::pendulum;
+use lagrange_gallery::scenes::cartesian_pendulum::cartesian_pendulum;
+use lagrange_gallery::scenes::double_pendulum::double_pendulum;
 
 const G: f64 = 9.81;
 
@@ -64,14 +20,6 @@ fn double_pendulum() -> lagrange::Validated<double_pendulum::DoublePendulum> {
     }
     .validated()
     .unwrap()
-}
-
-/// The plain RK4 run: (θ₁, θ₂, θ̇₁, θ̇₂) after `steps` steps of `h`.
-fn rk4_end(s0: double_pendulum::State, h: f64, steps: usize) -> [f64; 4] {
-    let sys = double_pendulum();
-    let mut s = s0;
-    sys.simulate::<Rk4>(&mut s, h, steps, |_| {}).unwrap();
-    [s.q.theta1, s.q.theta2, s.v.theta1, s.v.theta2]
 }
 
 /// On the double pendulum (2 s of RK4, h = 1e-3, released with velocity; sensitivities up to ~4)
@@ -99,32 +47,10 @@ fn double_pendulum_matches_finite_differences() {
         Seed::Velocity("theta2"),
     ];
     let (h, steps) = (1e-3, 2000);
-    let mut run = Tangent::new(&sys, &s0, seeds).unwrap();
-    for _ in 0..steps {
-        run.rk4_step(h).unwrap();
-    }
-    let ad = run.sensitivities();
+    let (real, jacobian) = common::rk4_tangent_end(&sys, s0, seeds, h, steps);
     // The real parts are the plain run, bit for bit.
-    let plain = rk4_end(s0, h, steps);
-    assert_eq!(
-        [
-            ad.state.q.theta1,
-            ad.state.q.theta2,
-            ad.state.v.theta1,
-            ad.state.v.theta2
-        ],
-        plain
-    );
-    let jacobian: Vec<[f64; 4]> = (0..4)
-        .map(|j| {
-            [
-                ad.dq[j].theta1,
-                ad.dq[j].theta2,
-                ad.dv[j].theta1,
-                ad.dv[j].theta2,
-            ]
-        })
-        .collect();
+    let plain = common::rk4_end(&sys, s0, h, steps);
+    assert_eq!(real, plain);
     let central = |seed: usize, delta: f64| -> [f64; 4] {
         let shifted = |sign: f64| {
             let mut s = s0;
@@ -135,7 +61,7 @@ fn double_pendulum_matches_finite_differences() {
                 2 => s.v.theta1 += d,
                 _ => s.v.theta2 += d,
             }
-            rk4_end(s, h, steps)
+            common::rk4_end(&sys, s, h, steps)
         };
         let (plus, minus) = (shifted(1.0), shifted(-1.0));
         std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * delta))
@@ -203,35 +129,9 @@ fn large_amplitude_period_derivative_matches_elliptic_integrals() {
     let (l, theta0) = (1.5, 2.0);
     let sys = pendulum::Pendulum { m: 1.0, l, g: G }.validated().unwrap();
     let s0 = pendulum::State::at_rest(pendulum::Coords { theta: theta0 });
-    let mut run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta")]).unwrap();
-    let h = 1e-3;
-    // Whole steps while θ stays positive, then the partial step τ that lands on θ = 0, found by
-    // the secant method on the plain RK4 step (θ(τ) is smooth in τ).
-    loop {
-        let mut next = run.clone();
-        next.rk4_step(h).unwrap();
-        if next.state().q.theta <= 0.0 {
-            break;
-        }
-        run = next;
-    }
-    let theta_after = |tau: f64| {
-        let mut s = run.state();
-        sys.step::<Rk4>(&mut s, tau).unwrap();
-        s.q.theta
-    };
-    let (mut a, mut b): (f64, f64) = (0.5 * h, h);
-    let (mut fa, mut fb) = (theta_after(a), theta_after(b));
-    for _ in 0..50 {
-        if fb == 0.0 || (b - a).abs() < 1e-16 {
-            break;
-        }
-        let c = b - fb * (b - a) / (fb - fa);
-        (a, fa) = (b, fb);
-        (b, fb) = (c, theta_after(c));
-    }
-    run.rk4_step(b).unwrap();
-    let at_bottom = run.sensitivities();
+    let run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta")]).unwrap();
+    // The first passage through θ = 0, RK4 steps of h = 1e-3.
+    let at_bottom = common::first_passage(&sys, run, 1e-3);
     let quarter = at_bottom.state.t;
     let dquarter = -at_bottom.dq[0].theta / at_bottom.state.v.theta;
 
@@ -325,31 +225,6 @@ fn dopri5_with_frozen_steps_matches_rk4() {
     }
     eprintln!("largest |Dopri5 − RK4| sensitivity difference: {worst:e}");
     assert!(worst < 1e-7);
-}
-
-#[mechanism]
-pub mod cartesian_pendulum {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-    pub struct CartesianPendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(x, y)
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-    #[constraint]
-    fn rod() -> f64 {
-        bob.norm() - l
-    }
 }
 
 /// The projection onto constraints after each step is not differentiated: refused up front.

@@ -15,6 +15,7 @@
 //! `reports/work-precision/` (or `--out DIR`).
 
 mod diffsol_peer;
+mod fpu;
 mod plot;
 mod problems;
 mod stiff;

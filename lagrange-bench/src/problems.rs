@@ -184,7 +184,7 @@ pub fn double_pendulum_rhs(_t: f64, q: &[f64; 2], v: &[f64; 2]) -> [f64; 2] {
 // ---------------------------------------------------------------------------------------------
 // 4. Fermi–Pasta–Ulam chain.
 
-/// Stiff-spring frequency. The chain itself is declared with `#[mechanism]` in [`crate::stiff`]
+/// Stiff-spring frequency. The chain itself is declared with `#[mechanism]` in [`crate::fpu`]
 /// ([`crate::stiff::FPU`]), each spring a potential of its own.
 pub const FPU_OMEGA: f64 = 50.0;
 
@@ -206,24 +206,9 @@ pub fn fpu_start() -> State<[f64; 6]> {
     )
 }
 
+/// q̈ of the chain (unit masses), by hand: [`crate::fpu::fpu_forces`].
 pub fn fpu_rhs(_t: f64, q: &[f64; 6], _v: &[f64; 6]) -> [f64; 6] {
-    let w2 = FPU_OMEGA * FPU_OMEGA;
-    let mut f = [0.0; 6];
-    for i in 0..3 {
-        // ω²/4 (q₂ᵢ₊₁ − q₂ᵢ)²: force ∓ ω²/2 (q₂ᵢ₊₁ − q₂ᵢ).
-        let d = q[2 * i + 1] - q[2 * i];
-        f[2 * i] += 0.5 * w2 * d;
-        f[2 * i + 1] -= 0.5 * w2 * d;
-    }
-    // (Δ)⁴: force ∓ 4Δ³.
-    f[0] -= 4.0 * q[0].powi(3);
-    for (a, b) in [(1, 2), (3, 4)] {
-        let d = q[b] - q[a];
-        f[a] += 4.0 * d.powi(3);
-        f[b] -= 4.0 * d.powi(3);
-    }
-    f[5] += 4.0 * (-q[5]).powi(3);
-    f
+    crate::fpu::fpu_forces(FPU_OMEGA, q)
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -2,11 +2,7 @@
 //! and the constrained problem), with hand-written right-hand sides for the peers and their
 //! closed-form solutions.
 //!
-//! - The Fermi–Pasta–Ulam chain of Hairer, Lubich & Wanner, *Geometric Numerical Integration*,
-//!   §I.5.1: six unit masses between fixed walls, joined alternately by soft cubic springs
-//!   (energy (Δq)⁴) and stiff linear springs (energy ω²/4 (Δq)²), ω = 50:
-//!   V = ω²/4 Σᵢ (q₂ᵢ₊₁ − q₂ᵢ)² + Σᵢ (q₂ᵢ − q₂ᵢ₋₁)⁴ (0-based, q₋₁ = q₆ = 0), each spring declared as a
-//!   potential of its own (so each gradient is taken on its own two coordinates).
+//! - The Fermi–Pasta–Ulam chain of [`crate::fpu`], with ω = 50 ([`FPU`]).
 //! - A stiff chain: four unit masses on a line, the first tied to a wall by a soft spring
 //!   (k₀ = 1), neighbours joined by stiff springs (k = 2·10⁶). Its three stiff modes have
 //!   ω ≈ 1082, 2000 and 2613, its slow mode ω ≈ 0.5 (the whole chain on the soft spring). Started
@@ -20,60 +16,7 @@ use crate::problems::{pendulum_exact, FPU_OMEGA, PENDULUM_K};
 use lagrange::prelude::*;
 use nalgebra::{SMatrix, SymmetricEigen};
 
-#[mechanism]
-pub mod fpu_chain {
-    pub const MASSES: usize = 6;
-
-    /// Positions of the masses along the line (from their rest positions).
-    pub struct Coords {
-        pub q: [f64; MASSES],
-    }
-
-    #[derive(Clone, Copy, Debug)]
-    pub struct Fpu {
-        /// Each mass.
-        pub m: f64,
-        /// The stiff springs' frequency.
-        pub omega: f64,
-    }
-
-    #[particle(mass = m, count = MASSES)]
-    fn mass(i: usize) -> Vec2 {
-        vec2(q[i], 0.0)
-    }
-
-    /// The stiff springs, ω²/4 (Δq)².
-    #[potential]
-    fn stiff1() -> f64 {
-        omega * omega / 4.0 * (q[1] - q[0]).powi(2)
-    }
-    #[potential]
-    fn stiff2() -> f64 {
-        omega * omega / 4.0 * (q[3] - q[2]).powi(2)
-    }
-    #[potential]
-    fn stiff3() -> f64 {
-        omega * omega / 4.0 * (q[5] - q[4]).powi(2)
-    }
-
-    /// The soft springs, (Δq)⁴, two of them to the walls.
-    #[potential]
-    fn wall_left() -> f64 {
-        q[0].powi(4)
-    }
-    #[potential]
-    fn soft1() -> f64 {
-        (q[2] - q[1]).powi(4)
-    }
-    #[potential]
-    fn soft2() -> f64 {
-        (q[4] - q[3]).powi(4)
-    }
-    #[potential]
-    fn wall_right() -> f64 {
-        q[5].powi(4)
-    }
-}
+pub use crate::fpu::fpu_chain;
 
 /// The chain of the report.
 pub const FPU: fpu_chain::Fpu = fpu_chain::Fpu {

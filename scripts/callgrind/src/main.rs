@@ -15,6 +15,11 @@ mod constrained;
 #[path = "../../../benches/chains/mod.rs"]
 #[allow(dead_code)]
 mod chains;
+// The FPU chain of the work-precision report, each spring a potential of its own, and its forces
+// written by hand.
+#[path = "../../../lagrange-bench/src/fpu.rs"]
+mod fpu_report;
+use fpu_report::{fpu_chain, fpu_forces};
 
 #[mechanism]
 pub mod pendulum {
@@ -90,9 +95,9 @@ pub mod wedge_block {
     }
 }
 
-/// The Fermi–Pasta–Ulam chain of the work-precision report (Hairer, Lubich & Wanner, *Geometric
-/// Numerical Integration*, §I.5.1): six unit masses between walls, joined alternately by stiff
-/// linear springs (energy ω²/4 Δ²) and soft cubic ones (energy Δ⁴).
+/// The FPU chain of the work-precision report (`fpu_report`) with its potential written as one sum
+/// instead of spring by spring: the mode `fpu` counts the macro's term-by-term reading of a sum
+/// against the declaration of the report (`fpu_springs`).
 #[mechanism]
 pub mod fpu {
     pub const MASSES: usize = 6;
@@ -117,71 +122,6 @@ pub mod fpu {
             + w2.powi(4)
             + q[5].powi(4)
     }
-}
-
-/// The same chain with each spring declared as a potential of its own: each gradient is taken
-/// on dual numbers seeded on the spring's own two coordinates.
-#[mechanism]
-pub mod fpu_springs {
-    pub const MASSES: usize = 6;
-    pub struct Coords {
-        pub q: [f64; MASSES],
-    }
-    pub struct Fpu {
-        pub m: f64,
-        pub omega: f64,
-    }
-    #[particle(mass = m, count = MASSES)]
-    fn mass(i: usize) -> Vec2 {
-        vec2(q[i], 0.0)
-    }
-    #[potential]
-    fn stiff1() -> f64 {
-        omega * omega / 4.0 * (q[1] - q[0]).powi(2)
-    }
-    #[potential]
-    fn stiff2() -> f64 {
-        omega * omega / 4.0 * (q[3] - q[2]).powi(2)
-    }
-    #[potential]
-    fn stiff3() -> f64 {
-        omega * omega / 4.0 * (q[5] - q[4]).powi(2)
-    }
-    #[potential]
-    fn wall_left() -> f64 {
-        q[0].powi(4)
-    }
-    #[potential]
-    fn soft1() -> f64 {
-        (q[2] - q[1]).powi(4)
-    }
-    #[potential]
-    fn soft2() -> f64 {
-        (q[4] - q[3]).powi(4)
-    }
-    #[potential]
-    fn wall_right() -> f64 {
-        q[5].powi(4)
-    }
-}
-
-/// The FPU chain's accelerations written by hand (unit masses).
-fn hw_fpu(omega: f64, q: &[f64; 6]) -> [f64; 6] {
-    let w2 = omega * omega;
-    let mut f = [0.0; 6];
-    for i in 0..3 {
-        let d = q[2 * i + 1] - q[2 * i];
-        f[2 * i] += 0.5 * w2 * d;
-        f[2 * i + 1] -= 0.5 * w2 * d;
-    }
-    f[0] -= 4.0 * q[0].powi(3);
-    for (a, b) in [(1, 2), (3, 4)] {
-        let d = q[b] - q[a];
-        f[a] += 4.0 * d.powi(3);
-        f[b] -= 4.0 * d.powi(3);
-    }
-    f[5] -= 4.0 * q[5].powi(3);
-    f
 }
 
 #[mechanism]
@@ -707,18 +647,18 @@ fn main() {
             acc += calls(sys, &s, n, validated);
         }
         "fpu_springs" => {
-            let sys = fpu_springs::Fpu { m: 1.0, omega: 50.0 };
+            let sys = fpu_chain::Fpu { m: 1.0, omega: 50.0 };
             let s = State::new(
                 0.0,
-                fpu_springs::Coords { q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1] },
-                fpu_springs::Coords { q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2] },
+                fpu_chain::Coords { q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1] },
+                fpu_chain::Coords { q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2] },
             );
             acc += calls(sys, &s, n, validated);
         }
         "hw_fpu" => {
             let q = [0.1, 0.2, -0.3, 0.05, 0.4, -0.1];
             for _ in 0..n {
-                acc += hw_fpu(black_box(50.0), black_box(&q)).iter().sum::<f64>();
+                acc += fpu_forces(black_box(50.0), black_box(&q)).iter().sum::<f64>();
             }
         }
         "hw_cartesian_pendulum" => {
