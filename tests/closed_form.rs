@@ -229,7 +229,10 @@ fn closed_form_accelerations_differentiate_like_the_dual_passes() {
 fn a_validated_handle_prepares_the_coefficients_once() {
     // The handle computes the closed form's constant factors when it is made and evaluates the
     // same expressions with them: the same operations in the same order, so the same bits.
-    fn same<M: Mechanism<N>, const N: usize>(sys: M, states: impl Iterator<Item = State<M::Coords>>) {
+    fn same<M: Mechanism<N>, const N: usize>(
+        sys: M,
+        states: impl Iterator<Item = State<M::Coords>>,
+    ) {
         assert!(std::mem::size_of::<<M as lagrange::__private::Prepare>::Prepared>() > 0);
         let validated = sys.validated().unwrap();
         for s in states {
@@ -244,7 +247,11 @@ fn a_validated_handle_prepares_the_coefficients_once() {
     same(arm(), states::<2>().map(at));
     let at = |(q, v): ([f64; 4], [f64; 4])| {
         let q = [q[0], q[1], 1.0 + q[2].abs(), q[3]];
-        spherical::State::new(0.0, spherical::Coords::from_array(q), spherical::Coords::from_array(v))
+        spherical::State::new(
+            0.0,
+            spherical::Coords::from_array(q),
+            spherical::Coords::from_array(v),
+        )
     };
     same(spherical(), states::<4>().map(at));
 }

@@ -406,9 +406,7 @@ fn a_pendulum_is_derived_in_closed_form() {
     assert!(!out.contains("dynamics::equations_of_motion::<"));
     assert!(out.contains("let__sin_0=__q[0].sin();"));
     assert!(!out.contains("__cos_0"));
-    assert!(out.contains(
-        "[[<__D>::from(__k[0])]],[-__sin_0*__k[1]],[<__D>::from(0.0)],"
-    ));
+    assert!(out.contains("[[<__D>::from(__k[0])]],[-__sin_0*__k[1]],[<__D>::from(0.0)],"));
 }
 
 /// The structural zeros of J a declaration states: each row depends on the coordinates its body

@@ -8,8 +8,7 @@
 //!
 //! ```text
 //! Jᵣⱼ = ∂xᵣ/∂qⱼ,   Mᵢⱼ = Σᵣ μᵣ Jᵣᵢ Jᵣⱼ,   aᵣ = Σⱼₖ ∂²xᵣ/∂qⱼ∂qₖ q̇ⱼ q̇ₖ,   bᵢ = Σᵣ μᵣ Jᵣᵢ aᵣ,
-//! 𝓕ᵢ = Σᵣ wᵣ Jᵣᵢ − ∂V/∂qᵢ   (a uniform field g: wᵣ = μᵣ gₖ on the k-th position row of a body;
-//!                         V the sum of the potentials),
+//! 𝓕ᵢ = Σᵣ wᵣ Jᵣᵢ   (a uniform field g: wᵣ = μᵣ gₖ on the k-th position row of a body),
 //! ```
 //!
 //! each brought to its normal form modulo sin² + cos² = 1 ([`poly::Poly::reduce`]). The
@@ -20,8 +19,15 @@
 //!
 //! The path is taken when the declaration is scleronomic and unconstrained, its bodies are
 //! particles, points and planar bodies declared one by one (no family, no spatial body), its
-//! coordinates are scalars, its only field is uniform and it has no force; and every position and
-//! potential is read. Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
+//! coordinates are scalars, its only field is uniform and it has no potential and no force; and
+//! every position is read, with no sum of coordinates multiplying the same factor.
+//!
+//! That last rule, and leaving potentials to the dual numbers, keep the closed form as accurate as
+//! the dual-number passes. Expanded, a polynomial in a difference of coordinates cancels: a spring's
+//! ¼ k (q₂ − q₁)⁴ has the gradient k (q₂ − q₁)³, whose expansion q₂³ − 3 q₂² q₁ + … loses every
+//! digit the difference has below the coordinates' size; so would a pendulum of length q₂ − q₁,
+//! whose M has (q₂ − q₁)². Sines and cosines expand safely: sin θ₁ sin θ₂ + cos θ₁ cos θ₂ is
+//! cos(θ₁ − θ₂) to an error of the size of M's entries, as in the hand-derived forms. Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
 
 pub mod poly;
 pub mod read;
@@ -35,7 +41,7 @@ use read::{Reader, Value};
 pub struct Equations {
     /// Mᵢⱼ for j ≤ i (the lower triangle, row by row).
     pub mass_matrix: Vec<Vec<Poly>>,
-    /// 𝓕: a uniform field's generalized forces and −∇V.
+    /// 𝓕: a uniform field's generalized forces (zero without one).
     pub generalized_forces: Vec<Poly>,
     /// b: the velocity-product terms.
     pub inertial_terms: Vec<Poly>,
@@ -48,6 +54,7 @@ pub struct Equations {
 pub fn equations(model: &Model) -> Option<Equations> {
     let applies = !model.rheonomic
         && model.constraints.is_empty()
+        && model.potentials.is_empty()
         && model.gravities.is_empty()
         && model.forces.is_empty()
         && !model.bodies.is_empty()
@@ -120,15 +127,35 @@ pub fn equations(model: &Model) -> Option<Equations> {
         }
         reader.define_body(body.decl.ident().to_string(), value);
     }
-    // V = Σ potentials, each read with the bodies in scope.
-    let mut potential = Poly::zero();
-    for decl in &model.potentials {
-        let Value::Scalar(v) = reader.block(&decl.block)? else {
-            return None;
-        };
-        potential = potential.add(&v);
+    if !rows.iter().all(|row| free_of_cancellation(&row.x)) {
+        return None;
     }
-    Some(assemble(model, &rows, &potential, reader.constants))
+    Some(assemble(model, &rows, reader.constants))
+}
+
+/// Whether no two terms of `x` share their sines and cosines while they multiply different
+/// coordinates: (q₂ − q₁) sin θ would, and its products in M would cancel (see the module docs).
+fn free_of_cancellation(x: &Poly) -> bool {
+    let mut seen: Vec<Vec<(Atom, i32)>> = Vec::new();
+    for monomial in x.terms.keys() {
+        let coordinates = monomial
+            .iter()
+            .filter(|(a, _)| matches!(a, Atom::Coord(_)))
+            .count();
+        if coordinates == 0 {
+            continue;
+        }
+        let rest: Vec<(Atom, i32)> = monomial
+            .iter()
+            .copied()
+            .filter(|(a, _)| matches!(a, Atom::Sin(_) | Atom::Cos(_)))
+            .collect();
+        if seen.contains(&rest) {
+            return false;
+        }
+        seen.push(rest);
+    }
+    true
 }
 
 /// A row of x as read.
@@ -142,12 +169,7 @@ struct Row {
 }
 
 /// M, 𝓕 and b from the rows of x (see the module docs).
-fn assemble(
-    model: &Model,
-    rows: &[Row],
-    potential: &Poly,
-    constants: Vec<TokenStream>,
-) -> Equations {
+fn assemble(model: &Model, rows: &[Row], constants: Vec<TokenStream>) -> Equations {
     let n = model.dof();
     let jacobian: Vec<Vec<Poly>> = rows
         .iter()
@@ -198,9 +220,7 @@ fn assemble(
             rows.iter()
                 .zip(&jacobian)
                 .filter_map(|(row, j)| Some(row.weight.as_ref()?.mul(&j[i])))
-                .fold(potential.derivative(i).scale(-1.0), |sum, term| {
-                    sum.add(&term)
-                })
+                .fold(Poly::zero(), |sum, term| sum.add(&term))
                 .reduce()
         })
         .collect();
@@ -209,5 +229,23 @@ fn assemble(
         generalized_forces,
         inertial_terms,
         constants,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sums_of_coordinates_under_one_factor_are_refused() {
+        let (q1, q2) = (Poly::atom(Atom::Coord(1)), Poly::atom(Atom::Coord(2)));
+        let s = Poly::atom(Atom::Sin(0));
+        // (q₂ − q₁) sin θ: its square in M would cancel.
+        assert!(!free_of_cancellation(&q2.sub(&q1).mul(&s)));
+        assert!(!free_of_cancellation(&q2.sub(&q1)));
+        // A cart plus an arm, polar coordinates: one coordinate per factor.
+        let c = Poly::atom(Atom::Cos(0));
+        assert!(free_of_cancellation(&q1.add(&s)));
+        assert!(free_of_cancellation(&q1.mul(&c).add(&q2.mul(&s))));
     }
 }
