@@ -5,7 +5,7 @@
 
 use crate::expand::expand;
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 use std::path::PathBuf;
 
 fn pretty(tokens: TokenStream) -> String {
@@ -480,4 +480,42 @@ fn an_affine_declaration_prepares_its_mass_matrix_once() {
     let pendulum = pretty(expand(TokenStream::new(), pendulum()));
     assert!(pendulum.contains("type Prepared = [f64; 2];"));
     assert!(!pendulum.contains("AffineConstants"));
+}
+
+/// A chain of `links` pendulum links declared one by one.
+fn chain_declared_link_by_link(links: usize) -> TokenStream {
+    let angles: Vec<_> = (0..links).map(|k| format_ident!("theta{}", k)).collect();
+    let bobs: Vec<_> = (0..links).map(|k| format_ident!("bob{}", k)).collect();
+    let bodies = (0..links).map(|k| {
+        let (bob, angle) = (&bobs[k], &angles[k]);
+        let parent = (k > 0).then(|| {
+            let parent = &bobs[k - 1];
+            quote!(#parent +)
+        });
+        quote! {
+            #[particle(mass = m)]
+            fn #bob() -> Vec2 { #parent vec2(#angle.sin(), -#angle.cos()) * l }
+        }
+    });
+    quote! {
+        pub mod chain {
+            pub struct Coords { #(pub #angles: f64),* }
+            pub struct Chain { pub m: f64, pub l: f64, pub g: f64 }
+            #(#bodies)*
+            #[gravity]
+            fn down() -> Vec2 { vec2(0.0, -g) }
+        }
+    }
+}
+
+#[test]
+fn long_chains_keep_the_tree() {
+    // 16 links: 752 terms in M, 𝓕 and b, written out; 20 links: past the budget of 1024, so the
+    // tree's sweeps serve (measured faster from 32 links on).
+    let sixteen = pretty(expand(TokenStream::new(), chain_declared_link_by_link(16)));
+    assert!(sixteen.contains("fn __lagrange_closed_form<"));
+    assert!(!sixteen.contains("tree::Tree<"));
+    let twenty = pretty(expand(TokenStream::new(), chain_declared_link_by_link(20)));
+    assert!(!twenty.contains("fn __lagrange_closed_form<"));
+    assert!(twenty.contains("tree::Tree<"));
 }

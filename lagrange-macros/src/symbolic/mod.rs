@@ -130,7 +130,24 @@ pub fn equations(model: &Model) -> Option<Equations> {
     if !rows.iter().all(|row| free_of_cancellation(&row.x)) {
         return None;
     }
-    Some(assemble(model, &rows, reader.constants))
+    let equations = assemble(model, &rows, reader.constants);
+    (equations.terms() <= MAX_TERMS).then_some(equations)
+}
+
+/// At most this many terms in M, 𝓕 and b together: a chain of 16 links declared one by one has
+/// 752, one of 32 has 3 040. Beyond it the straight-line code outgrows what it saves, and the
+/// sweeps of `lagrange_core::tree` are faster (BENCHMARKS.md §2).
+const MAX_TERMS: usize = 1024;
+
+impl Equations {
+    /// The number of terms evaluated at a state: products of sines, cosines, coordinates and
+    /// velocities, each with its constant coefficient.
+    fn terms(&self) -> usize {
+        let count = |polys: &[Poly]| polys.iter().map(|p| p.by_variables().len()).sum::<usize>();
+        self.mass_matrix.iter().map(|row| count(row)).sum::<usize>()
+            + count(&self.generalized_forces)
+            + count(&self.inertial_terms)
+    }
 }
 
 /// Whether no two terms of `x` share their sines and cosines while they multiply different
