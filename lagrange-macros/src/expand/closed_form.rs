@@ -146,7 +146,7 @@ impl Writer {
                 .1
                 .push((negative, positions));
         }
-        let terms: Vec<TokenStream> = groups
+        let terms: Vec<(bool, TokenStream)> = groups
             .into_iter()
             .map(|((velocities, _), (coefficient, members))| {
                 let velocities = self.product(&velocities);
@@ -156,17 +156,20 @@ impl Writer {
                         let sign = if *negative { -1.0 } else { 1.0 };
                         let c = self.coefficient(&coefficient.scale(sign));
                         let c = quote!(<#d>::from(#c));
-                        return velocities.map_or(c.clone(), |v| quote!(#v * #c));
+                        return (false, velocities.map_or(c.clone(), |v| quote!(#v * #c)));
                     }
                 }
+                // The group's sign taken out so that its first member is positive: b has
+                // sin θ₁ cos θ₂ − cos θ₁ sin θ₂ in one entry and its negative in another, and
+                // the compiler evaluates the one difference once.
+                let negative = members[0].0;
                 let mut sum = TokenStream::new();
-                for (k, (negative, positions)) in members.iter().enumerate() {
+                for (k, (member_negative, positions)) in members.iter().enumerate() {
                     let x = self
                         .product(positions)
                         .unwrap_or_else(|| quote!(<#d>::from(1.0)));
-                    sum.extend(match (k, negative) {
-                        (0, false) => quote!(#x),
-                        (0, true) => quote!(-#x),
+                    sum.extend(match (k, member_negative != &negative) {
+                        (0, _) => quote!(#x),
                         (_, false) => quote!(+ #x),
                         (_, true) => quote!(- #x),
                     });
@@ -183,13 +186,22 @@ impl Writer {
                 if let Some(v) = velocities {
                     term = quote!(#term * #v);
                 }
-                term
+                (negative, term)
             })
             .collect();
-        match terms.split_first() {
-            None => quote!(<#d>::from(0.0)),
-            Some((first, rest)) => quote!(#first #(+ #rest)*),
+        let mut out = TokenStream::new();
+        for (k, (negative, term)) in terms.iter().enumerate() {
+            out.extend(match (k, negative) {
+                (0, false) => quote!(#term),
+                (0, true) => quote!(-#term),
+                (_, false) => quote!(+ #term),
+                (_, true) => quote!(- #term),
+            });
         }
+        if terms.is_empty() {
+            out = quote!(<#d>::from(0.0));
+        }
+        out
     }
 
     /// The `f64` value of a constant polynomial: a literal, or `__k[i]`, shared by every use.

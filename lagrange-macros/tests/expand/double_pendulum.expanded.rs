@@ -326,7 +326,7 @@ pub mod double_pendulum {
                 [-__sin_0 * __k[3], -__sin_1 * __k[4]],
                 [
                     (__product_3 - __product_4) * __k[1] * __product_2,
-                    (-__product_3 + __product_4) * __k[1] * __product_5,
+                    -(__product_3 - __product_4) * __k[1] * __product_5,
                 ],
             )
         }
