@@ -1,7 +1,9 @@
-//! The report's problems as hand-written [`Model`]s (what `#[mechanism]` generates), their
-//! hand-written right-hand sides for the peer solvers, and their exact or reference solutions.
+//! The report's problems: Kepler and the wedge as hand-written [`Model`]s (what `#[mechanism]`
+//! generates), every problem's hand-written right-hand side for the peer solvers, and their exact
+//! or reference solutions. The pendulums are declared in [`crate::pendulums`], the chains and the
+//! constrained pendulum in [`crate::stiff`].
 
-use lagrange_core::{vec2, Model, Scalar, State};
+use lagrange_core::{Model, Scalar, State};
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
 
 // ---------------------------------------------------------------------------------------------
@@ -42,28 +44,7 @@ pub fn jacobi_sn_cn(u: f64, k: f64) -> (f64, f64) {
 // ---------------------------------------------------------------------------------------------
 // 1. Large-amplitude pendulum.
 
-/// q̈ = −sin q (unit mass and length, g = 1).
-pub struct Pendulum;
-
-impl Model<1, 2> for Pendulum {
-    type Coords = [f64; 1];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Ok(())
-    }
-    fn masses(&self) -> [f64; 2] {
-        [1.0, 1.0]
-    }
-    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
-        [q[0].sin(), -q[0].cos()]
-    }
-    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D {
-        x[1]
-    }
-}
-lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+// The mechanism: `crate::pendulums::PENDULUM`, q̈ = −sin q.
 
 /// Modulus of the pendulum problem.
 pub const PENDULUM_K: f64 = 0.999;
@@ -140,30 +121,7 @@ pub fn kepler_rhs(_t: f64, q: &[f64; 2], _v: &[f64; 2]) -> [f64; 2] {
 // ---------------------------------------------------------------------------------------------
 // 3. Double pendulum.
 
-/// m = l = g = 1.
-pub struct DoublePendulum;
-
-impl Model<2, 4> for DoublePendulum {
-    type Coords = [f64; 2];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Ok(())
-    }
-    fn masses(&self) -> [f64; 4] {
-        [1.0; 4]
-    }
-    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 4] {
-        let bob1 = vec2(q[0].sin(), -q[0].cos());
-        let bob2 = bob1 + vec2(q[1].sin(), -q[1].cos());
-        [bob1.x, bob1.y, bob2.x, bob2.y]
-    }
-    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 4]) -> D {
-        x[1] + x[3]
-    }
-}
-lagrange_core::impl_mechanism!(DoublePendulum, 2, 4);
+// The mechanism: `crate::pendulums::DOUBLE_PENDULUM`.
 
 /// Closed form of the double pendulum with m₁ = m₂ = l₁ = l₂ = g = 1 (the standard derivation, as
 /// in `lagrange-core/tests/hand_written_model.rs`).
@@ -284,7 +242,9 @@ mod tests {
             }
         };
         check(
-            &Pendulum.accelerations_at(0.0, &[0.7], &[0.3]).unwrap(),
+            &crate::pendulums::PENDULUM
+                .accelerations_at(0.0, &[0.7], &[0.3])
+                .unwrap(),
             &pendulum_rhs(0.0, &[0.7], &[0.3]),
         );
         check(
@@ -295,7 +255,9 @@ mod tests {
         );
         let (q, v) = ([1.1, -0.4], [0.5, 2.0]);
         check(
-            &DoublePendulum.accelerations_at(0.0, &q, &v).unwrap(),
+            &crate::pendulums::DOUBLE_PENDULUM
+                .accelerations_at(0.0, &q, &v)
+                .unwrap(),
             &double_pendulum_rhs(0.0, &q, &v),
         );
         let q6 = [0.1, 0.3, -0.2, 0.05, 0.4, -0.1];
