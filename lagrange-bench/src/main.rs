@@ -29,11 +29,11 @@ use lagrange_core::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Radau5, Rk4, State,
     StormerVerlet, Variational,
 };
+use pendulums::*;
 use problems::*;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
-use pendulums::*;
 use stiff::*;
 
 /// One measured run.
