@@ -256,3 +256,39 @@ fn a_validated_handle_prepares_the_coefficients_once() {
     };
     same(spherical(), states::<4>().map(at));
 }
+
+/// The double pendulum with its angles as an array coordinate, read element by element.
+#[mechanism]
+pub mod array_pendulum {
+    pub struct Coords {
+        pub theta: [f64; 2],
+    }
+    pub struct ArrayPendulum {
+        pub m1: f64,
+        pub m2: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[particle(mass = m1)]
+    fn upper() -> Vec2 {
+        vec2(theta[0].sin(), -theta[0].cos()) * l
+    }
+    #[particle(mass = m2)]
+    fn lower() -> Vec2 {
+        upper + vec2(theta[1].sin(), -theta[1].cos()) * (0.5 * l)
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[test]
+fn array_coordinates_read_by_literal_index_agree_with_the_dual_passes() {
+    agrees_with_the_dual_passes(&array_pendulum::ArrayPendulum {
+        m1: 1.2,
+        m2: 0.8,
+        l: 0.9,
+        g: 9.81,
+    });
+}

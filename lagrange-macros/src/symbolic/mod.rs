@@ -18,16 +18,17 @@
 //! polynomials out as straight-line code.
 //!
 //! The path is taken when the declaration is scleronomic and unconstrained, its bodies are
-//! particles, points and planar bodies declared one by one (no family, no spatial body), its
-//! coordinates are scalars, its only field is uniform and it has no potential and no force; and
-//! every position is read, with no sum of coordinates multiplying the same factor.
+//! particles, points and planar bodies declared one by one (no family, no spatial body), its only
+//! field is uniform and it has no potential and no force; and every position is read (an array
+//! coordinate by literal indices), with no sum of coordinates multiplying the same factor.
+//! Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
 //!
 //! That last rule, and leaving potentials to the dual numbers, keep the closed form as accurate as
 //! the dual-number passes. Expanded, a polynomial in a difference of coordinates cancels: a spring's
 //! ¼ k (q₂ − q₁)⁴ has the gradient k (q₂ − q₁)³, whose expansion q₂³ − 3 q₂² q₁ + … loses every
 //! digit the difference has below the coordinates' size; so would a pendulum of length q₂ − q₁,
 //! whose M has (q₂ − q₁)². Sines and cosines expand safely: sin θ₁ sin θ₂ + cos θ₁ cos θ₂ is
-//! cos(θ₁ − θ₂) to an error of the size of M's entries, as in the hand-derived forms. Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
+//! cos(θ₁ − θ₂) to an error of the size of M's entries, as in the hand-derived forms.
 
 pub mod poly;
 pub mod read;
@@ -36,6 +37,7 @@ use crate::check::{Dim, Model, Shape};
 use poly::{Atom, Poly};
 use proc_macro2::TokenStream;
 use read::{Reader, Value};
+use std::collections::HashMap;
 
 /// The closed-form terms of M q̈ = 𝓕 − b.
 pub struct Equations {
@@ -58,7 +60,6 @@ pub fn equations(model: &Model) -> Option<Equations> {
         && model.gravities.is_empty()
         && model.forces.is_empty()
         && !model.bodies.is_empty()
-        && model.coords.iter().all(|c| c.array.is_none())
         && model
             .bodies
             .iter()
@@ -66,19 +67,24 @@ pub fn equations(model: &Model) -> Option<Equations> {
     if !applies {
         return None;
     }
-    let coords = model
-        .coords
-        .iter()
-        .enumerate()
-        .map(|(j, c)| (c.ident.to_string(), j))
-        .collect();
+    // Each coordinate's first slot in q: scalars one slot, arrays their length.
+    let (mut coords, mut arrays) = (HashMap::new(), HashMap::new());
+    let mut slot = 0;
+    for c in model.coords {
+        if c.array.is_some() {
+            arrays.insert(c.ident.to_string(), (slot, c.slots()));
+        } else {
+            coords.insert(c.ident.to_string(), slot);
+        }
+        slot += c.slots();
+    }
     let params = model
         .params
         .iter()
         .enumerate()
         .map(|(i, p)| (p.ident.to_string(), i))
         .collect();
-    let mut reader = Reader::new(coords, params);
+    let mut reader = Reader::new(coords, arrays, params);
     // The uniform fields, summed by dimension: constant vectors, their zero components known.
     let mut fields: [Option<Vec<Poly>>; 2] = [None, None];
     for (decl, dim) in &model.uniform_gravities {

@@ -4,7 +4,8 @@
 //! differences, negation, products, quotients by one monomial in constants and coordinates, `powi` with a literal
 //! exponent, `sin`/`cos` of an integer combination of coordinates (expanded by the angle-sum
 //! formulas, so sin(θ₁ − θ₂) = sin θ₁ cos θ₂ − cos θ₁ sin θ₂), the vector constructors `vec2`,
-//! `vec3`, `planar`, and the fields `x`, `y`, `z`, `position`, `angle`. Any other expression is
+//! `vec3`, `planar`, the fields `x`, `y`, `z`, `position`, `angle`, and an element of an array
+//! coordinate at an integer literal (`theta[1]`). Any other expression is
 //! read as an opaque constant when it names no coordinate, body, local or `t` (`alpha.cos()`,
 //! `std::f64::consts::PI`), and otherwise not at all: the declaration then keeps the dual-number
 //! path.
@@ -26,7 +27,10 @@ pub enum Value {
 
 /// The names in scope and the constants met so far.
 pub struct Reader {
+    /// Scalar coordinates, by slot in q.
     coords: HashMap<String, usize>,
+    /// Array coordinates: first slot and length (`theta[1]` with a literal index is a coordinate).
+    arrays: HashMap<String, (usize, usize)>,
     params: HashMap<String, usize>,
     bodies: HashMap<String, Value>,
     locals: Vec<HashMap<String, Value>>,
@@ -38,9 +42,14 @@ pub struct Reader {
 const MAX_TERMS: usize = 256;
 
 impl Reader {
-    pub fn new(coords: HashMap<String, usize>, params: HashMap<String, usize>) -> Self {
+    pub fn new(
+        coords: HashMap<String, usize>,
+        arrays: HashMap<String, (usize, usize)>,
+        params: HashMap<String, usize>,
+    ) -> Self {
         Reader {
             coords,
+            arrays,
             params,
             bodies: HashMap::new(),
             locals: Vec::new(),
@@ -125,6 +134,10 @@ impl Reader {
                 Some(value) => value,
                 None => self.constant(expr)?,
             },
+            Expr::Index(index) => match self.element(index) {
+                Some(j) => Value::Scalar(Poly::atom(Atom::Coord(j))),
+                None => self.constant(expr)?,
+            },
             _ => self.constant(expr)?,
         };
         let size = match &value {
@@ -184,6 +197,22 @@ impl Reader {
         }
     }
 
+    /// The slot of `theta[k]`: an array coordinate indexed by an integer literal in range.
+    fn element(&self, index: &syn::ExprIndex) -> Option<usize> {
+        let Expr::Path(path) = &*index.expr else {
+            return None;
+        };
+        let &(first, len) = self.arrays.get(&path.path.get_ident()?.to_string())?;
+        let Expr::Lit(syn::ExprLit {
+            lit: Lit::Int(k), ..
+        }) = &*index.index
+        else {
+            return None;
+        };
+        let k: usize = k.base10_parse().ok().filter(|&k| k < len)?;
+        Some(first + k)
+    }
+
     /// `v.x`, `v.y`, `v.z`, `pose.position`, `pose.angle`.
     fn field(&mut self, field: &syn::ExprField) -> Option<Value> {
         let syn::Member::Named(member) = &field.member else {
@@ -225,6 +254,7 @@ impl Reader {
                 name != "t"
                     && name != "self"
                     && !self.coords.contains_key(&name)
+                    && !self.arrays.contains_key(&name)
                     && !self.bodies.contains_key(&name)
                     && self.local(&name).is_none()
             }
@@ -337,8 +367,24 @@ mod tests {
 
     fn reader() -> Reader {
         let coords = [("a".to_string(), 0), ("b".to_string(), 1)].into();
+        let arrays = [("phi".to_string(), (2, 2))].into();
         let params = [("l".to_string(), 0)].into();
-        Reader::new(coords, params)
+        Reader::new(coords, arrays, params)
+    }
+
+    #[test]
+    fn array_elements_with_literal_indices_are_coordinates() {
+        assert_eq!(
+            read("{ vec2(phi[1].sin(), phi[0]) }"),
+            Some(Value::Vector(vec![
+                Poly::atom(Atom::Sin(3)),
+                Poly::atom(Atom::Coord(2))
+            ]))
+        );
+        // Out of range, or an index that is not a literal: not read.
+        assert_eq!(read("{ vec2(phi[2], 0.0) }"), None);
+        assert_eq!(read("{ let k = 1; vec2(phi[k], 0.0) }"), None);
+        assert_eq!(read("{ vec2(phi.len() as f64, 0.0) }"), None);
     }
 
     fn read(src: &str) -> Option<Value> {
