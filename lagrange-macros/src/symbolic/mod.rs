@@ -136,9 +136,14 @@ pub fn equations(model: &Model) -> Option<Equations> {
     if !rows.iter().all(|row| free_of_cancellation(&row.x)) {
         return None;
     }
-    let equations = assemble(model, &rows, reader.constants);
+    let equations = assemble(model, &rows, reader.constants)?;
     (equations.terms() <= MAX_TERMS).then_some(equations)
 }
+
+/// At most this many products of terms in forming M and b (an estimate from the sizes of J's rows):
+/// beyond it the equations would be past [`MAX_TERMS`] anyway, and forming them would only make the
+/// build slow (a chain of 16 links: 4·10⁴; of 32 links: 6·10⁵; of 64 links: 9·10⁶).
+const MAX_WORK: usize = 1_000_000;
 
 /// At most this many terms in M, 𝓕 and b together: a chain of 16 links declared one by one has
 /// 752, one of 32 has 3 040. Beyond it the straight-line code outgrows what it saves, and the
@@ -192,12 +197,23 @@ struct Row {
 }
 
 /// M, 𝓕 and b from the rows of x (see the module docs).
-fn assemble(model: &Model, rows: &[Row], constants: Vec<TokenStream>) -> Equations {
+fn assemble(model: &Model, rows: &[Row], constants: Vec<TokenStream>) -> Option<Equations> {
     let n = model.dof();
     let jacobian: Vec<Vec<Poly>> = rows
         .iter()
         .map(|row| (0..n).map(|j| row.x.derivative(j)).collect())
         .collect();
+    // Row r's share of M costs about (Σᵢ |Jᵣᵢ|)² products, of b that times the size of aᵣ.
+    let work: usize = jacobian
+        .iter()
+        .map(|row| {
+            let size: usize = row.iter().map(|p| p.terms.len()).sum();
+            size * size * (1 + size)
+        })
+        .sum();
+    if work > MAX_WORK {
+        return None;
+    }
     // aᵣ = d/ds (Σⱼ Jᵣⱼ q̇ⱼ) along q̇: the second derivative of xᵣ along the motion at q̈ = 0.
     let velocity = |j: usize| Poly::atom(Atom::Vel(j));
     let accelerations: Vec<Poly> = jacobian
@@ -247,12 +263,12 @@ fn assemble(model: &Model, rows: &[Row], constants: Vec<TokenStream>) -> Equatio
                 .reduce()
         })
         .collect();
-    Equations {
+    Some(Equations {
         mass_matrix,
         generalized_forces,
         inertial_terms,
         constants,
-    }
+    })
 }
 
 #[cfg(test)]
