@@ -106,8 +106,8 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
     (tokens, coefficient_count)
 }
 
-/// The `let`s written so far, shared between entries: coefficients by their constant polynomial,
-/// products by their variable monomial.
+/// What the entries written so far share: the coefficients (`__k[i]`) by their constant
+/// polynomial, the products of variables by their monomial, and the atoms they name.
 struct Writer {
     /// The parameters' names, by index.
     params: Vec<TokenStream>,

@@ -39,7 +39,7 @@ pub struct Reader {
 }
 
 /// At most this many terms in any polynomial read: beyond it the dual-number path is kept.
-const MAX_TERMS: usize = 256;
+const MAX_VALUE_TERMS: usize = 256;
 
 impl Reader {
     pub fn new(
@@ -145,7 +145,7 @@ impl Reader {
             Value::Vector(ps) => ps.iter().map(|p| p.terms.len()).sum(),
             Value::Planar(ps, a) => ps.iter().map(|p| p.terms.len()).sum::<usize>() + a.terms.len(),
         };
-        (size <= MAX_TERMS).then_some(value)
+        (size <= MAX_VALUE_TERMS).then_some(value)
     }
 
     /// A name: a local, a coordinate, a body, a parameter, or a constant of the module.
