@@ -292,3 +292,73 @@ fn array_coordinates_read_by_literal_index_agree_with_the_dual_passes() {
         g: 9.81,
     });
 }
+
+/// The closed form checks a call in one branch; where it fails, the checks one at a time must say
+/// what failed, exactly as for equations that are not in closed form, through the plain mechanism
+/// and through a validated handle alike.
+#[test]
+fn one_branch_checks_fall_back_to_errors_that_name_the_failure() {
+    use spherical::{Coords, State};
+    let sys = spherical();
+    let handle = spherical().validated().unwrap();
+    let at =
+        |q: [f64; 4], v: [f64; 4]| State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+    for bad in [
+        at([0.5, 0.1, f64::NAN, 0.0], [0.0; 4]),
+        at([0.5, 0.1, 1.0, 0.0], [0.0, f64::INFINITY, 0.0, 0.0]),
+        State::new(
+            f64::NAN,
+            Coords::from_array([0.5, 0.1, 1.0, 0.0]),
+            Coords::default(),
+        ),
+    ] {
+        for result in [sys.accelerations(&bad), handle.accelerations(&bad)] {
+            assert!(
+                matches!(result, Err(Error::NonFiniteState { .. })),
+                "{result:?}"
+            );
+        }
+    }
+    // At the pole the azimuth does not move the bob, M = diag(m l², m l² sin² θ, …) is singular.
+    let pole = at([0.0, 0.3, 1.0, 0.0], [0.1, 0.0, 0.0, 0.0]);
+    for result in [sys.accelerations(&pole), handle.accelerations(&pole)] {
+        match result {
+            Err(Error::SingularMassMatrix { coordinate, .. }) => assert_eq!(coordinate, "phi"),
+            other => panic!("expected a singular mass matrix, got {other:?}"),
+        }
+    }
+    // A negative mass makes M indefinite, but the parameters are refused first.
+    let negative = spherical::Spherical {
+        m: -1.0,
+        ..spherical()
+    };
+    assert!(matches!(
+        negative.accelerations(&at([0.5, 0.1, 1.0, 0.0], [0.0; 4])),
+        Err(Error::InvalidInertia { .. })
+    ));
+}
+
+/// The one branch tests the sum of the state and q̈: finite values whose sum overflows take the
+/// checked path, which returns q̈ as the dual passes give it (the cart's position and speed do not
+/// enter q̈).
+#[test]
+fn a_finite_state_whose_sum_overflows_is_accepted() {
+    use cart_pendulum::{Coords, State};
+    let sys = cart_pendulum();
+    let (q, v) = ([1.5e308, 0.7], [1.5e308, -1.1]);
+    let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+    let dual = dynamics::accelerations_generic::<_, f64, 2, 4>(&sys, 0.0, &q, &v).unwrap();
+    for qdd in [
+        sys.accelerations(&s),
+        cart_pendulum().validated().unwrap().accelerations(&s),
+    ] {
+        let qdd = qdd.unwrap().to_array();
+        // The closed form and the dual passes round the same formula differently: a few ulps.
+        for j in 0..2 {
+            assert!(
+                (qdd[j] - dual[j]).abs() <= 1e-13 * dual[j].abs().max(1.0),
+                "{qdd:?} vs {dual:?}"
+            );
+        }
+    }
+}

@@ -19,7 +19,7 @@
 
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::{solve_spd, NotPositiveDefinite};
+use crate::linalg::{solve_spd, solve_spd_flagged, NotPositiveDefinite};
 use crate::model::{Coordinates, Model};
 use nalgebra::{Const, U1};
 use nalgebra::{SMatrix, SVector};
@@ -445,6 +445,45 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
         Err(e) => return Err(mass_matrix_failure::<C, S, N>(&eom.mass_matrix, e, t, q)),
     };
     finite_accelerations::<C, S, N>(qdd, t, q)
+}
+
+/// q̈ from M q̈ = 𝓕 − b with every check of a call in one branch: `Some(q̈)` when t, q, q̇ and q̈
+/// are all finite and M's pivots pass [`solve_spd`]'s test, `None` otherwise — the caller then takes
+/// the checked path ([`solve_accelerations`] after the state check), which says what failed.
+///
+/// For equations whose evaluation is straight-line arithmetic (the closed form `#[mechanism]`
+/// derives), so that evaluating them at a state that turns out non-finite costs nothing but the
+/// wasted arithmetic: no user code runs, nothing can panic or loop.
+///
+/// ```
+/// use lagrange_core::dynamics::{regular_accelerations, EquationsOfMotion};
+/// use nalgebra::{matrix, vector};
+/// let eom = EquationsOfMotion {
+///     mass_matrix: matrix![2.0],
+///     generalized_forces: vector![-4.0],
+///     inertial_terms: vector![0.0],
+/// };
+/// assert_eq!(regular_accelerations(&eom, 0.0, &[0.1], &[0.0]), Some([-2.0]));
+/// assert_eq!(regular_accelerations(&eom, 0.0, &[0.1], &[f64::NAN]), None);
+/// ```
+#[inline(always)]
+pub fn regular_accelerations<const N: usize>(
+    eom: &EquationsOfMotion<f64, N>,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> Option<[f64; N]> {
+    let rhs = eom.generalized_forces - eom.inertial_terms;
+    let (qdd, pivots_pass) = solve_spd_flagged(&eom.mass_matrix, &rhs);
+    // The sum of every value is finite when they all are, and s·0 is 0 exactly when s is finite.
+    // A sum that overflows although every term is finite only sends the call down the checked
+    // path, which then returns the same q̈.
+    let mut sum = t;
+    for j in 0..N {
+        sum += q[j] + v[j] + qdd[j];
+    }
+    // `&`, not `&&`: one branch for both.
+    (pivots_pass & (sum * 0.0 == 0.0)).then(|| qdd.into())
 }
 
 /// `qdd` when every entry is finite, otherwise [`Error::NonFiniteDynamics`] at (t, q).

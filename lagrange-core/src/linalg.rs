@@ -140,41 +140,95 @@ pub fn solve_spd<S: Scalar, const N: usize>(
     m: &SMatrix<S, N, N>,
     b: &SVector<S, N>,
 ) -> Result<SVector<S, N>, NotPositiveDefinite> {
+    match solve_spd_flagged(m, b) {
+        (x, true) => Ok(x),
+        (_, false) => Err(first_failed_pivot(m)),
+    }
+}
+
+/// [`solve_spd`] without a branch for one or two coordinates: x, and whether every pivot passed
+/// (x is meaningless when one did not). For a caller that folds the test into one branch with
+/// others (`dynamics::regular_accelerations`).
+///
+/// ```
+/// use lagrange_core::linalg::solve_spd_flagged;
+/// use nalgebra::{matrix, vector};
+/// let (x, regular) = solve_spd_flagged(&matrix![4.0, 2.0; 2.0, 3.0], &vector![2.0, 1.0]);
+/// assert!(regular && (x - vector![0.5, 0.0]).norm() < 1e-15);
+/// assert!(!solve_spd_flagged(&matrix![1.0, 2.0; 2.0, 4.0], &vector![1.0, 1.0]).1);
+/// ```
+#[inline(always)]
+pub fn solve_spd_flagged<S: Scalar, const N: usize>(
+    m: &SMatrix<S, N, N>,
+    b: &SVector<S, N>,
+) -> (SVector<S, N>, bool) {
+    let mut x = *b;
     if N == 1 {
         let d0 = m[(0, 0)];
-        if !(d0.re() > SINGULAR_PIVOT * d0.re().abs()) {
-            return Err(NotPositiveDefinite {
-                index: 0,
-                pivot: d0.re(),
-            });
-        }
-        let mut x = *b;
         x[0] = b[0] / d0;
-        return Ok(x);
+        return (x, first_pivot_passes(d0.re(), d0.re().abs()));
     }
     if N == 2 {
         let (m00, m10, m11) = (m[(0, 0)], m[(1, 0)], m[(1, 1)]);
-        let tol = SINGULAR_PIVOT * m00.re().abs().max(m11.re().abs());
-        if !(m00.re() > tol) {
-            return Err(NotPositiveDefinite {
-                index: 0,
-                pivot: m00.re(),
-            });
-        }
         let det = m00 * m11 - m10 * m10;
-        if !(det.re() > tol * m00.re()) {
-            return Err(NotPositiveDefinite {
-                index: 1,
-                pivot: det.re() / m00.re(),
-            });
-        }
         let inv_det = det.recip();
-        let mut x = *b;
         x[0] = (m11 * b[0] - m10 * b[1]) * inv_det;
         x[1] = (m00 * b[1] - m10 * b[0]) * inv_det;
-        return Ok(x);
+        let (first, second) = pivots_2x2_pass(m00.re(), m11.re(), det.re());
+        // `&`, not `&&`: both tests are cheap, and one branch is what the caller wants.
+        return (x, first & second);
     }
-    Ok(Ldlt::new(m)?.solve(b))
+    match Ldlt::new(m) {
+        Ok(factors) => (factors.solve(b), true),
+        Err(_) => (x, false),
+    }
+}
+
+/// The first pivot's test: `!(d₀ > tol)` rejects NaN too.
+#[inline(always)]
+fn first_pivot_passes(d0: f64, scale: f64) -> bool {
+    d0 > SINGULAR_PIVOT * scale
+}
+
+/// The two pivot tests of a 2×2 M (see [`solve_spd`]): d₀ = M₀₀ > tol, and d₁ = det/d₀ > tol
+/// written as det > tol·d₀.
+#[inline(always)]
+fn pivots_2x2_pass(m00: f64, m11: f64, det: f64) -> (bool, bool) {
+    // max(|M₀₀|, |M₁₁|) as `Ldlt` takes it (a NaN M₁₁ is passed over, and then fails the second
+    // test), without `f64::max`'s branches for NaN.
+    let (a, b) = (m00.abs(), m11.abs());
+    let scale = if b > a { b } else { a };
+    (
+        first_pivot_passes(m00, scale),
+        det > SINGULAR_PIVOT * scale * m00,
+    )
+}
+
+/// Which pivot of M failed [`solve_spd_flagged`]'s tests, and its value.
+#[cold]
+#[inline(never)]
+fn first_failed_pivot<S: Scalar, const N: usize>(m: &SMatrix<S, N, N>) -> NotPositiveDefinite {
+    let d0 = m[(0, 0)].re();
+    if N == 2 {
+        let (m11, m10) = (m[(1, 1)].re(), m[(1, 0)].re());
+        let det = d0 * m11 - m10 * m10;
+        if pivots_2x2_pass(d0, m11, det).0 {
+            return NotPositiveDefinite {
+                index: 1,
+                pivot: det / d0,
+            };
+        }
+    }
+    if N <= 2 {
+        return NotPositiveDefinite {
+            index: 0,
+            pivot: d0,
+        };
+    }
+    match Ldlt::new(m) {
+        Err(e) => e,
+        Ok(_) => unreachable!("the factorisation failed a moment ago on the same matrix"),
+    }
 }
 
 /// Solves A x = b for a general square A by LU with partial pivoting; `None` when a pivot vanishes

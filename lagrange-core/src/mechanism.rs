@@ -36,12 +36,19 @@ pub trait Mechanism<const N: usize>: Dynamics<N> {
     /// A mechanism with constraints also refuses what its integrators refuse about the declaration
     /// itself (invalid friction coefficients, a velocity row that is not linear in q̇), but
     /// evaluates states off the constraints (see `Dynamics::check_constraints`).
+    #[inline]
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
-        let (q, v) = self.check(state)?;
-        self.check_declaration_at(state.t, &q, &v)?;
-        self.accelerations_at(state.t, &q, &v)
-            .map(Self::Coords::from_array)
-            .map_err(|e| diagnose(self, state.t, &q, &v, e))
+        // Equations in closed form are checked in one branch, inline in the caller (the hook is
+        // `None` otherwise); everything else, and a state where that branch fails, goes through
+        // the checks one at a time, which say what failed.
+        if Self::CLOSED_FORM {
+            self.check_parameters()?;
+            let (q, v) = (state.q.to_array(), state.v.to_array());
+            if let Some(qdd) = self.regular_accelerations_at(state.t, &q, &v) {
+                return Ok(Self::Coords::from_array(qdd));
+            }
+        }
+        checked_accelerations(self, state)
     }
 
     /// M(q, t): the mass matrix, row and column k for coordinate k in declaration order.
@@ -298,6 +305,34 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     }
 
     #[doc(hidden)]
+    /// q̈ at (t, q, q̇) with every check in one branch, for equations that are straight-line code
+    /// ([`CLOSED_FORM`](Dynamics::CLOSED_FORM), see [`crate::dynamics::regular_accelerations`]):
+    /// `Some(q̈)` when the state and q̈ are finite and M is regular, `None` otherwise — and
+    /// always `None` (the default) for equations that run user code, which is never evaluated at
+    /// a state before the state is checked.
+    #[inline(always)]
+    fn regular_accelerations_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Option<[f64; N]> {
+        let _ = (t, q, v);
+        None
+    }
+
+    #[doc(hidden)]
+    /// [`regular_accelerations_at`](Dynamics::regular_accelerations_at) with the constants
+    /// [`Prepare::prepare`] computed when the mechanism was validated: what a
+    /// [`Validated`](crate::Validated) handle calls.
+    #[inline(always)]
+    fn regular_accelerations_prepared_at(
+        &self,
+        prepared: &Self::Prepared,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+    ) -> Option<[f64; N]> {
+        let _ = prepared;
+        self.regular_accelerations_at(t, q, v)
+    }
+
+    #[doc(hidden)]
     /// Hook for mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any
     /// scalar, in declaration order and padded with zeros to N entries (see
     /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation
@@ -442,6 +477,21 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
         check_state(&Self::Coords::NAMES, state.t, &q, &v)?;
         Ok((q, v))
     }
+}
+
+/// [`Mechanism::accelerations`] with one check at a time: parameters, state, the declaration, then
+/// the solve, whose failure is diagnosed against the declaration.
+#[inline(never)]
+fn checked_accelerations<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    state: &State<M::Coords>,
+) -> Result<M::Coords> {
+    let (q, v) = mechanism.check(state)?;
+    mechanism.check_declaration_at(state.t, &q, &v)?;
+    mechanism
+        .accelerations_at(state.t, &q, &v)
+        .map(M::Coords::from_array)
+        .map_err(|e| diagnose(mechanism, state.t, &q, &v, e))
 }
 
 /// `Ok` when every value is finite, otherwise [`Error::NonFiniteDynamics`] at (t, q), naming the

@@ -106,6 +106,7 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
     const CONSTRAINTS: Option<usize> = M::CONSTRAINTS;
     const SCLERONOMIC: bool = M::SCLERONOMIC;
     const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = M::CONSTRAINT_COUNTS;
+    const CLOSED_FORM: bool = M::CLOSED_FORM;
 
     /// Checked when the handle was made.
     #[inline(always)]
@@ -144,6 +145,10 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
     #[inline(always)]
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
         self.0.accelerations_prepared_at(&self.1, t, q, v)
+    }
+    #[inline(always)]
+    fn regular_accelerations_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Option<[f64; N]> {
+        self.0.regular_accelerations_prepared_at(&self.1, t, q, v)
     }
     #[inline(always)]
     fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {

@@ -41,11 +41,21 @@ pub(super) fn mechanism_impl(
                 #p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v)
             }
         }),
+        // Straight-line code: `accelerations` checks a call in one branch.
         Prepared::Coefficients(_) => Some(quote! {
             #[inline]
             fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
                 let eom = self.__lagrange_closed_form_with::<S>(prepared, q, v);
                 #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
+            }
+            #[inline(always)]
+            fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+                self.regular_accelerations_prepared_at(&self.__lagrange_coefficients(), t, q, v)
+            }
+            #[inline(always)]
+            fn regular_accelerations_prepared_at(&self, prepared: &Self::Prepared, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+                let eom = self.__lagrange_closed_form_with::<f64>(prepared, q, v);
+                #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v)
             }
         }),
         Prepared::Nothing => None,

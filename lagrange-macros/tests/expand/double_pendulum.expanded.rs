@@ -441,6 +441,31 @@ pub mod double_pendulum {
                 2,
             >(&eom, t, q)
         }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            self.regular_accelerations_prepared_at(
+                &self.__lagrange_coefficients(),
+                t,
+                q,
+                v,
+            )
+        }
+        #[inline(always)]
+        fn regular_accelerations_prepared_at(
+            &self,
+            prepared: &Self::Prepared,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            let eom = self.__lagrange_closed_form_with::<f64>(prepared, q, v);
+            ::lagrange::__private::dynamics::regular_accelerations::<2>(&eom, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration
     for DoublePendulum {

@@ -359,6 +359,31 @@ pub mod pendulum {
                 1,
             >(&eom, t, q)
         }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            t: f64,
+            q: &[f64; 1],
+            v: &[f64; 1],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
+            self.regular_accelerations_prepared_at(
+                &self.__lagrange_coefficients(),
+                t,
+                q,
+                v,
+            )
+        }
+        #[inline(always)]
+        fn regular_accelerations_prepared_at(
+            &self,
+            prepared: &Self::Prepared,
+            t: f64,
+            q: &[f64; 1],
+            v: &[f64; 1],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
+            let eom = self.__lagrange_closed_form_with::<f64>(prepared, q, v);
+            ::lagrange::__private::dynamics::regular_accelerations::<1>(&eom, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {
         const DOF: usize = 1;
