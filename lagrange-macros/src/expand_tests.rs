@@ -509,13 +509,15 @@ fn chain_declared_link_by_link(links: usize) -> TokenStream {
 }
 
 #[test]
-fn long_chains_keep_the_tree() {
-    // 16 links: 752 terms in M, 𝓕 and b, written out; 20 links: past the budget of 1024, so the
-    // tree's sweeps serve (measured faster from 32 links on).
-    let sixteen = pretty(expand(TokenStream::new(), chain_declared_link_by_link(16)));
-    assert!(sixteen.contains("fn __lagrange_closed_form<"));
-    assert!(!sixteen.contains("tree::Tree<"));
-    let twenty = pretty(expand(TokenStream::new(), chain_declared_link_by_link(20)));
-    assert!(!twenty.contains("fn __lagrange_closed_form<"));
-    assert!(twenty.contains("tree::Tree<"));
+fn chains_past_a_few_links_take_the_articulated_recursion() {
+    // 4 links: 44 terms in M, 𝓕 and b (11 per body), written out. 8 links: 184 (23 per body),
+    // past what the articulated-body recursion of the tree costs, so the tree serves, with q̈ from
+    // the recursion (each angle moves one link).
+    let four = pretty(expand(TokenStream::new(), chain_declared_link_by_link(4)));
+    assert!(four.contains("fn __lagrange_closed_form<"));
+    assert!(!four.contains("tree::Tree<"));
+    let eight = pretty(expand(TokenStream::new(), chain_declared_link_by_link(8)));
+    assert!(!eight.contains("fn __lagrange_closed_form<"));
+    assert!(eight.contains("tree::Tree<"));
+    assert!(eight.contains("tree::accelerations::<"));
 }

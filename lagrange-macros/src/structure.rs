@@ -44,6 +44,17 @@ pub struct TreeBody {
     pub names_time: bool,
 }
 
+impl Tree {
+    /// Whether each of the `dof` coordinates is a seed of exactly one body
+    /// (`lagrange_core::tree::Tree::JOINTS`): then q̈ comes from the articulated-body recursion.
+    pub fn moves_each_coordinate_once(&self, dof: usize) -> bool {
+        (0..dof).all(|c| {
+            let owners = self.bodies.iter().flat_map(|b| &b.slots);
+            owners.filter(|&&slot| slot == c).count() == 1
+        })
+    }
+}
+
 impl TreeBody {
     /// Seeds this body uses: its coordinates and, if it names `t`, time.
     pub fn seeds(&self) -> usize {

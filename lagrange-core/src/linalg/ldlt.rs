@@ -88,6 +88,27 @@ impl<S: Scalar, const N: usize, P: FactorPattern<N>> Ldlt<S, N, P> {
         for i in 0..N {
             scale = scale.max(m[(i, i)].re().abs());
         }
+        Self::with_scale(m, pattern, scale)
+    }
+
+    /// [`with_pattern`](Self::with_pattern) with the pivots tested against `scale` instead of
+    /// M's own largest diagonal entry: for a block of a larger matrix, whose singularity is
+    /// judged against the whole (the articulated-body recursion, `crate::tree`).
+    ///
+    /// ```
+    /// use lagrange_core::linalg::{Dense, Ldlt};
+    /// use nalgebra::matrix;
+    /// // A pivot of 1e-14 is singular against a whole of scale 1, not on its own.
+    /// let block = matrix![1e-14];
+    /// assert!(Ldlt::with_scale(&block, Dense, 1e-14).is_ok());
+    /// assert!(Ldlt::with_scale(&block, Dense, 1.0).is_err());
+    /// ```
+    #[inline(always)]
+    pub fn with_scale(
+        m: &SMatrix<S, N, N>,
+        pattern: P,
+        scale: f64,
+    ) -> Result<Self, NotPositiveDefinite> {
         let tol = SINGULAR_PIVOT * scale;
         let mut lower = SMatrix::<S, N, N>::zeros();
         let mut pivots = SVector::<S, N>::zeros();

@@ -82,6 +82,19 @@ pub(super) fn mechanism_impl(
         }
     };
     let overrides = constrained.map(|c| constrained_overrides(n.clone(), k.clone(), lit(c)));
+    // A tree's q̈ by the articulated-body recursion where each coordinate moves one body.
+    let tree_accelerations = match (&equations, constrained) {
+        (Equations::Tree(w, b), None) => {
+            let (w, b) = (lit(*w), lit(*b));
+            Some(quote! {
+                #[inline]
+                fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+                    #p::tree::accelerations::<Self, S, #n, #k, #w, #b>(self, t, q, v)
+                }
+            })
+        }
+        _ => None,
+    };
     let validate_constraints = constrained.map(|c| {
         let c = lit(c);
         quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
@@ -111,6 +124,7 @@ pub(super) fn mechanism_impl(
                 #p::core::result::Result::Ok(())
             }
             #overrides
+            #tree_accelerations
             #[inline(always)]
             fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
                 #equations_of_motion

@@ -108,6 +108,25 @@ pub(crate) fn prelude() -> TokenStream {
     }
 }
 
+/// Terms of the closed form per body beyond which the articulated-body recursion of a tree is
+/// cheaper (measured on the link-by-link chains, BENCHMARKS.md §2: 4 links, 11 terms per body, cost
+/// less in closed form; 8 links, 23 per body, by the recursion).
+const RECURSION_TERMS_PER_BODY: usize = 16;
+
+/// Whether `tree`'s articulated-body recursion (each coordinate moves one body) beats the closed
+/// form's `equations`: the closed form's terms grow with the square of the bodies, the
+/// recursion's work with the bodies.
+fn recursion_is_cheaper(
+    model: &Model,
+    equations: &crate::symbolic::Equations,
+    tree: Option<&crate::structure::Tree>,
+) -> bool {
+    tree.is_some_and(|tree| {
+        tree.moves_each_coordinate_once(model.dof())
+            && equations.terms() > RECURSION_TERMS_PER_BODY * tree.bodies.len()
+    })
+}
+
 /// The whole module for a declaration that passed every check.
 fn generate(model: &Model) -> TokenStream {
     let mechanism = model.mechanism;
@@ -123,13 +142,12 @@ fn generate(model: &Model) -> TokenStream {
     let affine = constrained.is_none() && crate::affine::is_affine(model);
     // Otherwise the equations in closed form where the positions are read, a tree of
     // translations from each body's own seeds, or the dense pass.
+    let tree = crate::structure::tree(model);
     let closed_form = (!affine)
         .then(|| crate::symbolic::equations(model))
-        .flatten();
-    let tree = closed_form
-        .is_none()
-        .then(|| crate::structure::tree(model))
-        .flatten();
+        .flatten()
+        .filter(|equations| !recursion_is_cheaper(model, equations, tree.as_ref()));
+    let tree = tree.filter(|_| closed_form.is_none());
     let tree_items = tree.as_ref().map(|tree| tree::tree_items(model, tree));
     let closed_form_impl = closed_form
         .as_ref()

@@ -137,7 +137,7 @@ pub fn equations(model: &Model) -> Option<Equations> {
         return None;
     }
     let equations = assemble(model, &rows, reader.constants)?;
-    (equations.terms() <= MAX_TERMS).then_some(equations)
+    (equations.terms() <= MAX_TERMS && equations.has_finite_factors()).then_some(equations)
 }
 
 /// At most this many products of terms in forming M and b (an estimate from the sizes of J's rows):
@@ -147,13 +147,24 @@ const MAX_WORK: usize = 1_000_000;
 
 /// At most this many terms in M, 𝓕 and b together: a chain of 16 links declared one by one has
 /// 752, one of 32 has 3 040. Beyond it the straight-line code outgrows what it saves, and the
-/// sweeps of `lagrange_core::tree` are faster (BENCHMARKS.md §2).
+/// sweeps of `lagrange_core::tree` are faster (BENCHMARKS.md §2). (A tree whose coordinates each
+/// move one body leaves the closed form far earlier, for the articulated-body recursion: see
+/// `expand::recursion_is_cheaper`.)
 const MAX_TERMS: usize = 1024;
 
 impl Equations {
+    /// Whether every numeric factor is finite: a literal past `f64`'s range, or a product of
+    /// large ones, cannot be written as a constant (the dual-number passes take the declaration).
+    fn has_finite_factors(&self) -> bool {
+        let finite = |p: &Poly| p.terms.values().all(|c| c.is_finite());
+        self.mass_matrix.iter().flatten().all(finite)
+            && self.generalized_forces.iter().all(finite)
+            && self.inertial_terms.iter().all(finite)
+    }
+
     /// The number of terms evaluated at a state: products of sines, cosines, coordinates and
     /// velocities, each with its constant coefficient.
-    fn terms(&self) -> usize {
+    pub(crate) fn terms(&self) -> usize {
         let count = |polys: &[Poly]| polys.iter().map(|p| p.by_variables().len()).sum::<usize>();
         self.mass_matrix.iter().map(|row| count(row)).sum::<usize>()
             + count(&self.generalized_forces)

@@ -404,6 +404,22 @@ pub mod chain {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> ::lagrange::__private::Result<[S; 3]> {
+            ::lagrange::__private::tree::accelerations::<
+                Self,
+                S,
+                3,
+                6,
+                1,
+                3,
+            >(self, t, q, v)
+        }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,

@@ -389,6 +389,22 @@ pub mod wedge_block {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            ::lagrange::__private::tree::accelerations::<
+                Self,
+                S,
+                2,
+                4,
+                1,
+                2,
+            >(self, t, q, v)
+        }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
