@@ -12,6 +12,7 @@ use crate::integrate::solver::Stats;
 /// in `k`: the FSAL evaluation q̈₁ at the new point (stage 13), and the dense output — the
 /// 7th-order continuous extension of `dop853.f` (CONTD8, stages 14–16 evaluated here), or the
 /// cubic Hermite interpolant with `dense: false`.
+#[inline]
 pub(crate) fn accept<const N: usize>(
     st: &Dop853,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
