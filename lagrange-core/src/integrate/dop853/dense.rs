@@ -53,11 +53,7 @@ pub(crate) fn accept<const N: usize>(
         }
         r
     };
-    let dense = DenseOutput::from_coefficients(
-        t,
-        h,
-        make(q, &trial.q1, &k.kq),
-        make(v, &trial.v1, &k.ka),
-    );
+    let dense =
+        DenseOutput::from_coefficients(t, h, make(q, &trial.q1, &k.kq), make(v, &trial.v1, &k.ka));
     Ok((a1, dense))
 }

@@ -27,8 +27,8 @@ pub struct Dop853Stepper<'m, M: Mechanism<N>, const N: usize> {
     pub(super) stats: Stats,
 }
 
-/// One trial step of [`Dop853`]: the new (q, v) and the error norm (its stages are in the
-/// [`Stages`] it was computed into).
+/// One trial step of [`Dop853`]: the new (q, v) and the error norm (its stages are kept apart, in
+/// the buffer it was computed into).
 #[derive(Clone, Copy, Debug)]
 pub struct Trial<const N: usize> {
     pub(crate) q1: [f64; N],
@@ -40,7 +40,7 @@ pub struct Trial<const N: usize> {
 /// ka (the stage accelerations): stages 1…12 of the trial, 13 the FSAL evaluation at the new point,
 /// 14…16 those of the dense output. A step computes them in place, without copying them around.
 #[derive(Clone, Copy, Debug)]
-pub struct Stages<const N: usize> {
+pub(crate) struct Stages<const N: usize> {
     pub(crate) kq: [[f64; N]; 16],
     pub(crate) ka: [[f64; N]; 16],
 }
@@ -152,8 +152,8 @@ fn mechanism_accelerations<M: Mechanism<N>, const N: usize>(
 }
 
 /// Evaluates stage I (0-based) of a step of size h from (t, q, v) into kq[I], ka[I]: the stage
-/// point (q, v) + h Σ_{j<I} a_Ij (kqⱼ, kaⱼ), its velocity and q̈ there. The stage is a constant, so the
-/// sum is unrolled over its nonzero aᵢⱼ alone.
+/// point (q, v) + h Σ_{j<I} a_Ij (kqⱼ, kaⱼ), its velocity and q̈ there. The stage is a constant,
+/// so the sum is unrolled over its nonzero aᵢⱼ alone.
 #[inline(always)]
 pub(super) fn evaluate_stage<const I: usize, const N: usize>(
     (t, q, v): (f64, &[f64; N], &[f64; N]),
