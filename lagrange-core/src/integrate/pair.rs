@@ -247,7 +247,8 @@ impl ExplicitPair for Dop853 {
     const NAME: &'static str = "Dop853";
     const ORDER: i32 = 8;
     const EXPONENTS: (f64, f64) = (1.0 / 8.0, 0.2);
-    type Attempt<const N: usize> = dop853::Trial<N>;
+    /// (the new point and error norm, the stages).
+    type Attempt<const N: usize> = (dop853::Trial<N>, dop853::Stages<N>);
 
     fn controls(&self) -> Dopri5 {
         self.shared()
@@ -260,19 +261,20 @@ impl ExplicitPair for Dop853 {
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
     ) -> Result<([f64; N], [f64; N], f64, Self::Attempt<N>)> {
-        let trial = dop853::attempt::<C, N>(self, start, h, stats, acc)?;
-        Ok((trial.q1, trial.v1, trial.err, trial))
+        let mut stages = dop853::Stages::new();
+        let trial = dop853::attempt::<C, N>(self, start, h, &mut stages, stats, acc)?;
+        Ok((trial.q1, trial.v1, trial.err, (trial, stages)))
     }
 
     fn accept<const N: usize>(
         &self,
         start: StepStart<'_, N>,
         h: f64,
-        mut attempt: Self::Attempt<N>,
+        (trial, mut stages): Self::Attempt<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
     ) -> Result<([f64; N], DenseOutput<N>)> {
-        dop853::accept(self, start, h, &mut attempt, stats, acc)
+        dop853::accept(self, start, h, &trial, &mut stages, stats, acc)
     }
 }
 

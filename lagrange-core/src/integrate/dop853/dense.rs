@@ -1,36 +1,39 @@
 //! Completion of an accepted Dormand–Prince 8(5,3) step: the FSAL evaluation and the continuous
 //! extension of order 7 (or the cubic Hermite interpolant).
 
-use super::stepper::{evaluate_stage, Trial};
+use super::stepper::{evaluate_stage, Stages, Trial};
 use super::tableau::D;
 use super::Dop853;
 use crate::error::Result;
 use crate::integrate::dopri5::DenseOutput;
 use crate::integrate::solver::Stats;
 
-/// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈): the FSAL
-/// evaluation q̈₁ at the new point (stage 13), and the dense output — the 7th-order continuous
-/// extension of `dop853.f` (CONTD8, stages 14–16 evaluated here), or the cubic Hermite interpolant
-/// with `dense: false`.
+/// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈), whose stages are
+/// in `k`: the FSAL evaluation q̈₁ at the new point (stage 13), and the dense output — the
+/// 7th-order continuous extension of `dop853.f` (CONTD8, stages 14–16 evaluated here), or the
+/// cubic Hermite interpolant with `dense: false`.
+#[inline]
 pub(crate) fn accept<const N: usize>(
     st: &Dop853,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
     h: f64,
-    trial: &mut Trial<N>,
+    trial: &Trial<N>,
+    k: &mut Stages<N>,
     stats: &mut Stats,
     acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
 ) -> Result<([f64; N], DenseOutput<N>)> {
     stats.evaluations += 1;
     let a1 = acc(t + h, &trial.q1, &trial.v1)?;
-    trial.kq[12] = trial.v1;
-    trial.ka[12] = a1;
+    k.kq[12] = trial.v1;
+    k.ka[12] = a1;
     if !st.dense {
         let dense = DenseOutput::hermite(t, h, (q, v, a), (&trial.q1, &trial.v1, &a1));
         return Ok((a1, dense));
     }
-    for i in 13..16 {
-        evaluate_stage((t, q, v), h, i, &mut trial.kq, &mut trial.ka, stats, acc)?;
-    }
+    let y = (t, q, v);
+    evaluate_stage::<13, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<14, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<15, N>(y, h, k, stats, acc)?;
     let make = |y0: &[f64; N], y1: &[f64; N], k: &[[f64; N]; 16]| {
         let mut r = [[0.0; N]; 8];
         for n in 0..N {
@@ -50,11 +53,7 @@ pub(crate) fn accept<const N: usize>(
         }
         r
     };
-    let dense = DenseOutput::from_coefficients(
-        t,
-        h,
-        make(q, &trial.q1, &trial.kq),
-        make(v, &trial.v1, &trial.ka),
-    );
+    let dense =
+        DenseOutput::from_coefficients(t, h, make(q, &trial.q1, &k.kq), make(v, &trial.v1, &k.ka));
     Ok((a1, dense))
 }

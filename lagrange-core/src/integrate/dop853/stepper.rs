@@ -27,15 +27,32 @@ pub struct Dop853Stepper<'m, M: Mechanism<N>, const N: usize> {
     pub(super) stats: Stats,
 }
 
-/// One trial step of [`Dop853`]: the new (q, v), the error norm and the stages (position and
-/// velocity parts).
+/// One trial step of [`Dop853`]: the new (q, v) and the error norm (its stages are kept apart, in
+/// the buffer it was computed into).
 #[derive(Clone, Copy, Debug)]
 pub struct Trial<const N: usize> {
     pub(crate) q1: [f64; N],
     pub(crate) v1: [f64; N],
     pub(crate) err: f64,
+}
+
+/// The stages of one [`Dop853`] step, position parts kq (the stage velocities) and velocity parts
+/// ka (the stage accelerations): stages 1…12 of the trial, 13 the FSAL evaluation at the new point,
+/// 14…16 those of the dense output. A step computes them in place, without copying them around.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Stages<const N: usize> {
     pub(crate) kq: [[f64; N]; 16],
     pub(crate) ka: [[f64; N]; 16],
+}
+
+impl<const N: usize> Stages<N> {
+    /// All stages zero, to be filled by [`attempt`] and [`accept`].
+    pub(crate) fn new() -> Self {
+        Stages {
+            kq: [[0.0; N]; 16],
+            ka: [[0.0; N]; 16],
+        }
+    }
 }
 
 impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
@@ -99,7 +116,8 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
         let acc = mechanism_accelerations(self.mechanism);
         let start = (self.t, &self.q, &self.v, &self.a);
         let settings = self.settings;
-        let (mut trial, h, t_new) = adaptive_step(
+        let mut stages = Stages::new();
+        let (trial, h, t_new) = adaptive_step(
             "Dop853",
             &settings.shared(),
             (1.0 / 8.0, 0.2),
@@ -108,14 +126,12 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
             &mut control,
             &mut stats,
             |h, stats| {
-                attempt::<M::Coords, N>(&settings, start, h, stats, &acc).map(|trial| {
-                    let err = trial.err;
-                    (trial, err)
-                })
+                attempt::<M::Coords, N>(&settings, start, h, &mut stages, stats, &acc)
+                    .map(|trial| (trial, trial.err))
             },
         )?;
         // FSAL: q̈ at the new point (stage 13), then the dense output, then the projection.
-        let (a1, dense) = accept(&settings, start, h, &mut trial, &mut stats, &acc)?;
+        let (a1, dense) = accept(&settings, start, h, &trial, &mut stages, &mut stats, &acc)?;
         let (qp, vp, ap) =
             project_accepted(self.mechanism, t_new, (trial.q1, trial.v1, a1), &mut stats)?;
         self.dense = dense;
@@ -135,92 +151,86 @@ fn mechanism_accelerations<M: Mechanism<N>, const N: usize>(
     }
 }
 
-/// (q, v) at stage i (0-based) from the stages before it: y + h Σⱼ aᵢⱼ kⱼ.
-fn stage_point<const N: usize>(
-    (q0, v0): (&[f64; N], &[f64; N]),
-    h: f64,
-    i: usize,
-    kq: &[[f64; N]; 16],
-    ka: &[[f64; N]; 16],
-) -> ([f64; N], [f64; N]) {
-    let mut q = *q0;
-    let mut v = *v0;
-    for j in 0..i {
-        let a = A[i][j];
-        if a != 0.0 {
-            for n in 0..N {
-                q[n] += h * a * kq[j][n];
-                v[n] += h * a * ka[j][n];
-            }
-        }
-    }
-    (q, v)
-}
-
-/// Evaluates stage i (0-based) of a step of size h from (t, q, v) into kq[i], ka[i].
-#[allow(clippy::too_many_arguments)]
-pub(super) fn evaluate_stage<const N: usize>(
+/// Evaluates stage I (0-based) of a step of size h from (t, q, v) into kq[I], ka[I]: the stage
+/// point (q, v) + h Σ_{j<I} a_Ij (kqⱼ, kaⱼ), its velocity and q̈ there. The stage is a constant,
+/// so the sum is unrolled over its nonzero aᵢⱼ alone.
+#[inline(always)]
+pub(super) fn evaluate_stage<const I: usize, const N: usize>(
     (t, q, v): (f64, &[f64; N], &[f64; N]),
     h: f64,
-    i: usize,
-    kq: &mut [[f64; N]; 16],
-    ka: &mut [[f64; N]; 16],
+    k: &mut Stages<N>,
     stats: &mut Stats,
     acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
 ) -> Result<()> {
-    let (qi, vi) = stage_point((q, v), h, i, kq, ka);
+    let (mut qi, mut vi) = (*q, *v);
+    for j in 0..I {
+        let a = A[I][j];
+        if a != 0.0 {
+            for n in 0..N {
+                qi[n] += h * a * k.kq[j][n];
+                vi[n] += h * a * k.ka[j][n];
+            }
+        }
+    }
     stats.evaluations += 1;
-    ka[i] = acc(t + C[i] * h, &qi, &vi)?;
-    kq[i] = vi;
+    k.ka[I] = acc(t + C[I] * h, &qi, &vi)?;
+    k.kq[I] = vi;
     Ok(())
 }
 
-/// One trial step of size h from (t, q, v) with q̈ = `a` there, on the accelerations `acc`
-/// (stages 1…12, the 8th-order solution and the error norm): what [`Dop853Stepper`] attempts on a
+/// Σⱼ wⱼ kⱼ[n] over stages 1…12 (0-based 0…11), the zero weights skipped.
+#[inline(always)]
+fn weighted<const N: usize>(w: &[f64; 12], k: &[[f64; N]; 16], n: usize) -> f64 {
+    let mut s = 0.0;
+    for j in 0..12 {
+        if w[j] != 0.0 {
+            s += w[j] * k[j][n];
+        }
+    }
+    s
+}
+
+/// One trial step of size h from (t, q, v) with q̈ = `a` there, on the accelerations `acc`: stages
+/// 1…12 into `k`, the 8th-order solution and the error norm. What [`Dop853Stepper`] attempts on a
 /// mechanism's accelerations, and the contact solver on those of a frozen constraint mode.
 pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
     st: &Dop853,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
     h: f64,
+    k: &mut Stages<N>,
     stats: &mut Stats,
     acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
 ) -> Result<Trial<N>> {
-    let mut kq = [[0.0; N]; 16];
-    let mut ka = [[0.0; N]; 16];
-    kq[0] = *v;
-    ka[0] = *a;
-    for i in 1..12 {
-        evaluate_stage((t, q, v), h, i, &mut kq, &mut ka, stats, acc)?;
-    }
-    let mut q1 = *q;
-    let mut v1 = *v;
-    for j in 0..12 {
-        if B[j] != 0.0 {
-            for n in 0..N {
-                q1[n] += h * B[j] * kq[j][n];
-                v1[n] += h * B[j] * ka[j][n];
-            }
+    k.kq[0] = *v;
+    k.ka[0] = *a;
+    let y = (t, q, v);
+    evaluate_stage::<1, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<2, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<3, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<4, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<5, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<6, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<7, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<8, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<9, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<10, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<11, N>(y, h, k, stats, acc)?;
+    // dop853.f: k₄ = Σⱼ bⱼ kⱼ and y₁ = y₀ + h·k₄; the 5th-order error h·Σⱼ eⱼ kⱼ and the 3rd-order
+    // one h·(k₄ − bhh₁k₁ − bhh₂k₉ − bhh₃k₁₂) (the factor h is applied to the norm below).
+    let (mut q1, mut v1) = (*q, *v);
+    let (mut err5, mut err3) = (0.0, 0.0);
+    for n in 0..N {
+        for (kx, y0, y1) in [(&k.kq, q[n], &mut q1[n]), (&k.ka, v[n], &mut v1[n])] {
+            let bsum = weighted(&B, kx, n);
+            *y1 = y0 + h * bsum;
+            let e5 = weighted(&E, kx, n);
+            let e3 = bsum - BHH[0] * kx[0][n] - BHH[1] * kx[8][n] - BHH[2] * kx[11][n];
+            let sc = st.atol + st.rtol * y0.abs().max(y1.abs());
+            err5 += ratio(e5, sc).powi(2);
+            err3 += ratio(e3, sc).powi(2);
         }
     }
     check_state(&Q::NAMES, t + h, &q1, &v1)?;
-    let (mut err5, mut err3) = (0.0, 0.0);
-    let mut component = |e5: f64, e3: f64, y0: f64, y1: f64| {
-        let sc = st.atol + st.rtol * y0.abs().max(y1.abs());
-        err5 += ratio(e5, sc).powi(2);
-        err3 += ratio(e3, sc).powi(2);
-    };
-    for n in 0..N {
-        for (k, y0, y1) in [(&kq, q[n], q1[n]), (&ka, v[n], v1[n])] {
-            let mut e5 = 0.0;
-            let mut bsum = 0.0;
-            for j in 0..12 {
-                e5 += E[j] * k[j][n];
-                bsum += B[j] * k[j][n];
-            }
-            let e3 = bsum - BHH[0] * k[0][n] - BHH[1] * k[8][n] - BHH[2] * k[11][n];
-            component(e5, e3, y0, y1);
-        }
-    }
     // dop853.f: err = |h|·err₅² / √(n·(err₅² + 0.01·err₃²)), with sums of squares.
     let mut deno = err5 + 0.01 * err3;
     if !(deno > 0.0) {
@@ -233,13 +243,7 @@ pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
             configuration: crate::error::describe_configuration(&Q::NAMES, &q1),
         });
     }
-    Ok(Trial {
-        q1,
-        v1,
-        err,
-        kq,
-        ka,
-    })
+    Ok(Trial { q1, v1, err })
 }
 
 impl<M: Mechanism<N>, const N: usize> Stepper<M::Coords, N> for Dop853Stepper<'_, M, N> {

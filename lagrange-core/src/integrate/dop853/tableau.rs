@@ -288,8 +288,8 @@ pub(super) const C: [f64; 16] = [
     0.2e+00,
     0.777777777777777777777777777778e+00,
 ];
-/// Weights of the 5th-order error estimate (stages 1…12; the rest zero).
-pub(super) const E: [f64; 16] = [
+/// Weights of the 5th-order error estimate (stages 1…12).
+pub(super) const E: [f64; 12] = [
     0.1312004499419488073250102996e-01,
     0.0,
     0.0,
@@ -302,10 +302,6 @@ pub(super) const E: [f64; 16] = [
     0.3341791187130174790297318841e+00,
     0.8192320648511571246570742613e-01,
     -0.2235530786388629525884427845e-01,
-    0.0,
-    0.0,
-    0.0,
-    0.0,
 ];
 /// d₄…d₇ of the continuous extension (CONTD8), over stages 1…16.
 pub(super) const D: [[f64; 16]; 4] = [

@@ -94,6 +94,7 @@ pub struct Controller {
 /// shrink (0.1·h below round-off of t) the last failure is returned
 /// ([`Error::StepSizeUnderflow`] if steps were rejected only for accuracy).
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 pub(crate) fn adaptive_step<T>(
     method: &'static str,
     st: &Dopri5,

@@ -171,7 +171,9 @@ impl<const N: usize> DenseOutput<N> {
 }
 
 /// The dense output of an accepted [`trial`](super::trial) of size h from (t₀, q₀, v₀) to
-/// (q₁, v₁): Hairer's CONTD5 (HNW I §II.6), order 4, no extra evaluation.
+/// (q₁, v₁): Hairer's CONTD5 (HNW I §II.6), order 4, no extra evaluation. Inlined, so that the
+/// output is built where it is stored.
+#[inline]
 pub(crate) fn dense_output<const N: usize>(
     t0: f64,
     h: f64,
