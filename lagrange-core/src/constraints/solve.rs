@@ -250,7 +250,8 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
     });
     let mut multipliers = [S::zero(); C];
     if !enforced.iter().any(|&e| e) {
-        return finish::<M, S, N, K, C>(u, multipliers, t, q);
+        // No row enforced: every λ is zero.
+        return finish::<M, S, N, K, C>(u, multipliers, t, q, true);
     }
     let cr = rows();
     // A loop, not `array::from_fn`, whose closure the compiler does not always inline here
@@ -294,7 +295,9 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
                 multipliers[k] = lambda[k];
             }
         }
-        return finish::<M, S, N, K, C>(qdd, multipliers, t, q);
+        // Each λₖ entered q̈ through M⁻¹rₖ·λₖ, every entry of which is non-finite with λₖ (0·∞ is
+        // NaN): q̈ finite implies λ finite, so q̈ alone is checked.
+        return finish::<M, S, N, K, C>(qdd, multipliers, t, q, true);
     }
     // Sliding friction: the generalized force of normal row n becomes λₙ(rₙ − Σⱼ μₖ σⱼ sₙ Sⱼ), with
     // sₙ = sign(λₙ) (+1 for a unilateral contact, whose λ ≥ 0 while active). The sign of a bilateral
@@ -393,22 +396,27 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
             multipliers[j] = lambda[normal] * direction[j] * S::from(-mu * sign_n[normal]);
         }
     }
-    finish::<M, S, N, K, C>(qdd, multipliers, t, q)
+    finish::<M, S, N, K, C>(qdd, multipliers, t, q, false)
 }
 
+/// q̈ and λ when they are finite, otherwise [`Error::NonFiniteDynamics`]; `implied` when λ is finite
+/// whenever q̈ is (then q̈ alone is checked).
 fn finish<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
     qdd: SVector<S, N>,
     multipliers: [S; C],
     t: S,
     q: &[S; N],
+    implied: bool,
 ) -> Result<ConstrainedAccelerations<S, N, C>> {
     // Branch-free on the common path (as `check_state`): x·0 is 0 exactly when x is finite.
     let mut zero = 0.0f64;
     for i in 0..N {
         zero += qdd[i].re() * 0.0;
     }
-    for multiplier in &multipliers {
-        zero += multiplier.re() * 0.0;
+    if !implied {
+        for multiplier in &multipliers {
+            zero += multiplier.re() * 0.0;
+        }
     }
     if zero == 0.0 {
         Ok(ConstrainedAccelerations {
