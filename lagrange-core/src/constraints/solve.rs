@@ -8,7 +8,7 @@ use crate::affine::{self, AffineConstants};
 use crate::dynamics;
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite};
+use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite, SINGULAR_PIVOT};
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
@@ -150,6 +150,26 @@ fn lu_solve_generic<S: Scalar, const C: usize>(
     Some(x)
 }
 
+/// λ from (R M⁻¹ Rᵀ) λ = rhs by LDLᵀ, with its relative pivot test. One row (C is a constant of the
+/// declaration) is one division: the 1×1 factorisation's test, s > SINGULAR_PIVOT·|s|, then rhs/s.
+#[inline(always)]
+fn schur_solve<S: Scalar, const C: usize>(
+    schur: &SMatrix<S, C, C>,
+    rhs: &SVector<S, C>,
+) -> std::result::Result<SVector<S, C>, NotPositiveDefinite> {
+    if C == 1 {
+        let s = schur[(0, 0)];
+        if !(s.re() > SINGULAR_PIVOT * s.re().abs()) {
+            return Err(NotPositiveDefinite {
+                index: 0,
+                pivot: s.re(),
+            });
+        }
+        return Ok(rhs / s);
+    }
+    Ok(Ldlt::new(schur)?.solve(rhs))
+}
+
 fn slip_sign(mode: RowMode) -> f64 {
     match mode {
         RowMode::SlipPositive => 1.0,
@@ -284,9 +304,8 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
             schur[(i, i)] = S::from(filler);
         }
     }
-    let ls = Ldlt::new(&schur)
+    let mut lambda = schur_solve(&schur, &rhs)
         .map_err(|e| singular_constraints::<M, S, N, K, C>(e, &schur, &enforced, t, q))?;
-    let mut lambda = ls.solve(&rhs);
     if !sliding.iter().any(|&s| s) {
         let mut qdd = u;
         for k in 0..C {
