@@ -6,9 +6,7 @@
 
 use lagrange::__private::{Dynamics, Prepare};
 use lagrange::prelude::*;
-use lagrange_gallery::scenes::cartesian_pendulum::cartesian_pendulum::{
-    self, CartesianPendulum,
-};
+use lagrange_gallery::scenes::cartesian_pendulum::cartesian_pendulum::{self, CartesianPendulum};
 use lagrange_gallery::scenes::rough_plane::rough_plane::{self, RoughPlane};
 use lagrange_gallery::scenes::rough_ramp::rough_ramp::{self, RoughRamp};
 use lagrange_gallery::scenes::sphere_release::sphere_release::{self, SphereRelease};
@@ -126,14 +124,26 @@ fn holonomic_rows_agree_with_the_general_path() {
         // On the circle, moving along it.
         let state = cartesian_pendulum::State::new(
             0.0,
-            cartesian_pendulum::Coords { x: 0.8 * s, y: -0.8 * c },
-            cartesian_pendulum::Coords { x: 1.7 * c, y: 1.7 * s },
+            cartesian_pendulum::Coords {
+                x: 0.8 * s,
+                y: -0.8 * c,
+            },
+            cartesian_pendulum::Coords {
+                x: 1.7 * c,
+                y: 1.7 * s,
+            },
         );
         assert_agree(pendulum, &state);
         let state = sprung_bead::State::new(
             0.0,
-            sprung_bead::Coords { x: 1.3 * c, y: 1.3 * s },
-            sprung_bead::Coords { x: -0.9 * s, y: 0.9 * c },
+            sprung_bead::Coords {
+                x: 1.3 * c,
+                y: 1.3 * s,
+            },
+            sprung_bead::Coords {
+                x: -0.9 * s,
+                y: 0.9 * c,
+            },
         );
         assert_agree(BEAD, &state);
     }
@@ -150,13 +160,22 @@ fn contact_and_friction_rows_agree_with_the_general_path() {
         // In contact (on the sphere, moving along it) and separated (outside, moving away).
         let on = sphere_release::State::new(
             0.0,
-            sphere_release::Coords { x: 1.5 * s, y: 1.5 * c },
-            sphere_release::Coords { x: 0.4 * c, y: -0.4 * s },
+            sphere_release::Coords {
+                x: 1.5 * s,
+                y: 1.5 * c,
+            },
+            sphere_release::Coords {
+                x: 0.4 * c,
+                y: -0.4 * s,
+            },
         );
         assert_agree(sphere, &on);
         let off = sphere_release::State::new(
             0.0,
-            sphere_release::Coords { x: 2.0 * s, y: 2.0 * c },
+            sphere_release::Coords {
+                x: 2.0 * s,
+                y: 2.0 * c,
+            },
             sphere_release::Coords { x: s, y: c },
         );
         assert_agree(sphere, &off);
@@ -173,8 +192,14 @@ fn contact_and_friction_rows_agree_with_the_general_path() {
     for speed in [-1.5, 0.8, 0.0] {
         let state = rough_ramp::State::new(
             0.0,
-            rough_ramp::Coords { x: 2.0 * ca, y: 2.0 * sa },
-            rough_ramp::Coords { x: speed * ca, y: speed * sa },
+            rough_ramp::Coords {
+                x: 2.0 * ca,
+                y: 2.0 * sa,
+            },
+            rough_ramp::Coords {
+                x: speed * ca,
+                y: speed * sa,
+            },
         );
         assert_agree(ramp, &state);
     }
@@ -189,8 +214,16 @@ fn contact_and_friction_rows_agree_with_the_general_path() {
     for (vx, vy) in [(1.0, 0.5), (-0.2, 0.7), (0.0, 0.0)] {
         let state = rough_plane::State::new(
             0.0,
-            rough_plane::Coords { x: 0.3, y: -0.2, z: 0.0 },
-            rough_plane::Coords { x: vx, y: vy, z: 0.0 },
+            rough_plane::Coords {
+                x: 0.3,
+                y: -0.2,
+                z: 0.0,
+            },
+            rough_plane::Coords {
+                x: vx,
+                y: vy,
+                z: 0.0,
+            },
         );
         assert_agree(plane, &state);
     }
@@ -212,10 +245,15 @@ fn prepared_accelerations_differentiate_like_the_general_path() {
         let t = Dual64::from(0.0);
         let a = Dynamics::accelerations_at(&BEAD, t, &q, &v).unwrap();
         let b = Dynamics::accelerations_at(&validated, t, &q, &v).unwrap();
-        let scale = a.iter().fold(1.0f64, |m, x| m.max(x.re.abs()).max(x.eps.abs()));
+        let scale = a
+            .iter()
+            .fold(1.0f64, |m, x| m.max(x.re.abs()).max(x.eps.abs()));
         for j in 0..2 {
             assert!((a[j].re - b[j].re).abs() <= 1e-14 * scale, "{a:?} vs {b:?}");
-            assert!((a[j].eps - b[j].eps).abs() <= 1e-14 * scale, "{a:?} vs {b:?}");
+            assert!(
+                (a[j].eps - b[j].eps).abs() <= 1e-14 * scale,
+                "{a:?} vs {b:?}"
+            );
         }
     }
 }

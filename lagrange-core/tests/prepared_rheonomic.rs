@@ -54,7 +54,8 @@ fn a_driven_constraint_on_affine_positions_agrees_with_the_general_path() {
             rate * angle.sin() + 1.1 * angle.cos(),
             -rate * angle.cos() + 1.1 * angle.sin(),
         ];
-        let prepared = constraints::accelerations_prepared(&DrivenRod, &constants, t, &q, &v).unwrap();
+        let prepared =
+            constraints::accelerations_prepared(&DrivenRod, &constants, t, &q, &v).unwrap();
         let direct = constraints::accelerations(&DrivenRod, t, &q, &v).unwrap();
         // The same Schur solve; the constraint's ∂²g/∂t² term (−L̈ ≈ 1.8 sin 3t) enters β either way.
         // M = 0.8 I is factorised with the same operations, so agreement is to a few ulps of |q̈| ≈ 10.

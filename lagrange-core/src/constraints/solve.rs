@@ -243,7 +243,15 @@ pub(crate) fn accelerations_in_mode_prepared<
         true => constraint_rows(model, t, q, v),
         false => rows_from_pass(model, &dynamics::motion_pass(model, t, q, v), t, q, v).0,
     };
-    solve_kkt(model, t, q, mode, |b| constants.solve_mass::<M, S>(b), u, rows)
+    solve_kkt(
+        model,
+        t,
+        q,
+        mode,
+        |b| constants.solve_mass::<M, S>(b),
+        u,
+        rows,
+    )
 }
 
 /// The Schur-complement solve shared by [`accelerations_in_mode`] and

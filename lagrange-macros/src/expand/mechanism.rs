@@ -42,7 +42,9 @@ pub(super) fn mechanism_impl(
                     let c = lit(c);
                     quote!(#p::lagrange_core::constraints::accelerations_prepared::<Self, S, #n, #k, #c>(self, prepared, t, q, v))
                 }
-                None => quote!(#p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v)),
+                None => {
+                    quote!(#p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v))
+                }
             };
             Some(quote! {
                 #[inline]
