@@ -16,6 +16,11 @@
 //! in plain arithmetic when a potential or a force needs it, ∇V on gradient duals, no pass of
 //! second derivatives, no assembly and no factorisation. `#[mechanism]` decides affinity from the
 //! declaration's expressions, at compile time.
+//!
+//! A constrained mechanism with affine positions (a particle in Cartesian coordinates on a rod, a
+//! sphere or a rough plane) starts its Schur-complement solve from the same constants
+//! ([`crate::constraints::accelerations_prepared`]): u = M⁻¹𝓕, then M⁻¹rᵢ for each constraint row by
+//! the prepared factors. With a uniform field as the only force u = M⁻¹Aᵀw is itself prepared.
 
 use crate::dynamics::{
     accumulate, add_row, assemble_mass_matrix, cartesian_with_jacobian, finite_accelerations,
@@ -36,6 +41,8 @@ pub struct AffineConstants<const N: usize, const K: usize> {
     mass_matrix: Ldlt<f64, N>,
     /// Aᵀ w, the generalized force of a uniform field (zero without one).
     field_forces: SVector<f64, N>,
+    /// M⁻¹ Aᵀ w: q̈ of a mechanism on which the field is the only force.
+    field_accelerations: SVector<f64, N>,
 }
 
 impl<const N: usize, const K: usize> AffineConstants<N, K> {
@@ -65,11 +72,21 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
                 }
             }
         }
+        let field_forces = field_forces.unwrap_or_else(SVector::zeros);
         Ok(AffineConstants {
             jacobian: rows.map(|row| row.unwrap_or_else(SVector::zeros)),
             mass_matrix: factors,
-            field_forces: field_forces.unwrap_or_else(SVector::zeros),
+            field_forces,
+            field_accelerations: factors.solve(&field_forces),
         })
+    }
+
+    /// M⁻¹ b by the prepared factors, for any scalar, skipping the couplings `M` rules out by
+    /// its declaration ([`Model::DEPENDS`]).
+    #[inline(always)]
+    pub(crate) fn solve_mass<M: Model<N, K>, S: Scalar>(&self, b: &SVector<S, N>) -> SVector<S, N> {
+        let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
+        self.mass_matrix.solve_in(b, pattern)
     }
 }
 
@@ -133,40 +150,51 @@ pub fn accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     q: &[S; N],
     v: &[S; N],
 ) -> Result<[S; N]> {
+    let qdd = free_accelerations(model, constants, t, q, v);
+    finite_accelerations::<M::Coords, S, N>(qdd, t, q)
+}
+
+/// M⁻¹ 𝓕 at (t, q, q̇) from the prepared constants (b = 0), unchecked: q̈ of the mechanism without
+/// its constraints, which the constrained solve starts from. With a uniform field as the only force
+/// it is the prepared M⁻¹ Aᵀ w, a constant.
+#[inline(always)]
+pub(crate) fn free_accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    constants: &AffineConstants<N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> SVector<S, N> {
+    if !(M::HAS_POTENTIAL || M::HAS_FORCES) {
+        return constants.field_accelerations.map(S::from);
+    }
     let mut forces: Option<SVector<S, N>> = None;
     if M::HAS_GRAVITY {
         forces = Some(constants.field_forces.map(S::from));
     }
-    if M::HAS_POTENTIAL || M::HAS_FORCES {
-        // Which rows move is a constant of the declaration, so the compiler knows every row's
-        // presence (stored `Option`s would be branched on in every dual operation).
-        let moving = const { moving_rows(&M::DEPENDS) };
-        let rows: [Option<SVector<S, N>>; K] =
-            std::array::from_fn(|i| moving[i].then(|| constants.jacobian[i].map(S::from)));
-        let x = model.cartesian(t, q);
-        if let Some(gradient_forces) = potential_forces(model, t, q, &x, &rows) {
-            accumulate(&mut forces, gradient_forces);
-        }
-        if M::HAS_FORCES {
-            // ẋ = A q̇; then 𝓕 += Aᵀ F + Q by virtual work.
-            let velocity = SVector::from(*v);
-            let x_dot: [S; K] =
-                std::array::from_fn(|i| rows[i].map_or(S::zero(), |row| row.dot(&velocity)));
-            let mut cartesian_force = [S::zero(); K];
-            let mut direct = [S::zero(); N];
-            model.applied_forces(t, q, v, &x, &x_dot, &mut cartesian_force, &mut direct);
-            for (i, row) in rows.iter().enumerate() {
-                if let Some(row) = row {
-                    add_row::<M, S, N, K>(&mut forces, i, row, cartesian_force[i]);
-                }
-            }
-            accumulate(&mut forces, SVector::from(direct));
-        }
+    // Which rows move is a constant of the declaration, so the compiler knows every row's
+    // presence (stored `Option`s would be branched on in every dual operation).
+    let moving = const { moving_rows(&M::DEPENDS) };
+    let rows: [Option<SVector<S, N>>; K] =
+        std::array::from_fn(|i| moving[i].then(|| constants.jacobian[i].map(S::from)));
+    let x = model.cartesian(t, q);
+    if let Some(gradient_forces) = potential_forces(model, t, q, &x, &rows) {
+        accumulate(&mut forces, gradient_forces);
     }
-    // The couplings M has by the declaration (none between the coordinates of separate particles).
-    let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
-    let qdd = constants
-        .mass_matrix
-        .solve_in(&forces.unwrap_or_else(SVector::zeros), pattern);
-    finite_accelerations::<M::Coords, S, N>(qdd, t, q)
+    if M::HAS_FORCES {
+        // ẋ = A q̇; then 𝓕 += Aᵀ F + Q by virtual work.
+        let velocity = SVector::from(*v);
+        let x_dot: [S; K] =
+            std::array::from_fn(|i| rows[i].map_or(S::zero(), |row| row.dot(&velocity)));
+        let mut cartesian_force = [S::zero(); K];
+        let mut direct = [S::zero(); N];
+        model.applied_forces(t, q, v, &x, &x_dot, &mut cartesian_force, &mut direct);
+        for (i, row) in rows.iter().enumerate() {
+            if let Some(row) = row {
+                add_row::<M, S, N, K>(&mut forces, i, row, cartesian_force[i]);
+            }
+        }
+        accumulate(&mut forces, SVector::from(direct));
+    }
+    constants.solve_mass::<M, S>(&forces.unwrap_or_else(SVector::zeros))
 }

@@ -109,7 +109,9 @@
 //! scleronomic mechanism, the position rows are evaluated once on the hyper-dual numbers that
 //! already carry x(q) for M, 𝓕 and b, so G, ġ and β come with no second evaluation of x; then
 //! one LDLᵀ factorisation of M reused for M⁻¹(𝓕 − b) and M⁻¹Rᵀ, and one of the C×C Schur matrix.
-//! A rheonomic mechanism evaluates x and g twice more (gradient, then along the motion). Each step
+//! A rheonomic mechanism evaluates x and g twice more (gradient, then along the motion). Through a
+//! validated handle, a mechanism whose positions are affine in q (x = A q + c) has M factorised
+//! once and no b ([`crate::affine`], [`accelerations_prepared`]). Each step
 //! adds the projection (one or two Newton corrections and one velocity correction) and the
 //! consistency check.
 //!
@@ -230,7 +232,9 @@ pub use mode::infer_mode;
 pub use projection::project;
 pub use routing::{integrate_declared_contacts, step_declared_contacts};
 pub use rows::{constraint_rows, holonomic_values, ConstraintRows};
-pub use solve::{accelerations, accelerations_in_mode, ConstrainedAccelerations};
+pub use solve::{
+    accelerations, accelerations_in_mode, accelerations_prepared, ConstrainedAccelerations,
+};
 
 use crate::geometry::Scalar;
 use crate::model::Model;

@@ -2,12 +2,13 @@
 //! [`accelerations_in_mode`] (sliding friction included) and [`accelerations`].
 
 use super::cone;
-use super::rows::{always_active, constraint_rows, real, rows_from_pass};
+use super::rows::{always_active, constraint_rows, real, rows_from_pass, ConstraintRows};
 use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
+use crate::affine::{self, AffineConstants};
 use crate::dynamics;
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
-use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite};
+use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite, SINGULAR_PIVOT};
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
@@ -149,6 +150,26 @@ fn lu_solve_generic<S: Scalar, const C: usize>(
     Some(x)
 }
 
+/// λ from (R M⁻¹ Rᵀ) λ = rhs by LDLᵀ, with its relative pivot test. One row (C is a constant of the
+/// declaration) is one division: the 1×1 factorisation's test, s > SINGULAR_PIVOT·|s|, then rhs/s.
+#[inline(always)]
+fn schur_solve<S: Scalar, const C: usize>(
+    schur: &SMatrix<S, C, C>,
+    rhs: &SVector<S, C>,
+) -> std::result::Result<SVector<S, C>, NotPositiveDefinite> {
+    if C == 1 {
+        let s = schur[(0, 0)];
+        if !(s.re() > SINGULAR_PIVOT * s.re().abs()) {
+            return Err(NotPositiveDefinite {
+                index: 0,
+                pivot: s.re(),
+            });
+        }
+        return Ok(rhs / s);
+    }
+    Ok(Ldlt::new(schur)?.solve(rhs))
+}
+
 fn slip_sign(mode: RowMode) -> f64 {
     match mode {
         RowMode::SlipPositive => 1.0,
@@ -189,6 +210,63 @@ pub fn accelerations_in_mode<
     let l = Ldlt::with_pattern(&eom.mass_matrix, pattern)
         .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, S, N>(&eom.mass_matrix, e, t, q))?;
     let u = l.solve(&(eom.generalized_forces - eom.inertial_terms));
+    let rows = || match &pass {
+        Some(pass) => rows_from_pass(model, pass, t, q, v).0,
+        None => constraint_rows(model, t, q, v),
+    };
+    solve_kkt(model, t, q, mode, |b| l.solve(b), u, rows)
+}
+
+/// [`accelerations_in_mode`] of a mechanism whose positions are affine in the coordinates, with
+/// the constants a validated handle prepared ([`crate::affine`]): M is factorised once, b = 0, and
+/// M⁻¹𝓕 is a constant where a uniform field is the only force. The constraint rows take one
+/// hyper-dual evaluation of g on x(q), which for affine x costs its products with the seeds and no
+/// more. The Schur solve is the same.
+#[inline(always)]
+pub(crate) fn accelerations_in_mode_prepared<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    constants: &AffineConstants<N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    mode: &Mode<C>,
+) -> Result<ConstrainedAccelerations<S, N, C>> {
+    let u = affine::free_accelerations(model, constants, t, q, v);
+    let rows = || match M::RHEONOMIC {
+        // Constraints that read t (x itself cannot, to be affine): ∂/∂t seeded as well.
+        true => constraint_rows(model, t, q, v),
+        false => rows_from_pass(model, &dynamics::motion_pass(model, t, q, v), t, q, v).0,
+    };
+    solve_kkt(
+        model,
+        t,
+        q,
+        mode,
+        |b| constants.solve_mass::<M, S>(b),
+        u,
+        rows,
+    )
+}
+
+/// The Schur-complement solve shared by [`accelerations_in_mode`] and
+/// [`accelerations_in_mode_prepared`], from u = M⁻¹(𝓕 − b), M⁻¹ as `solve_mass`, and the
+/// constraint rows (formed only when some row is enforced).
+#[inline(always)]
+fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    mode: &Mode<C>,
+    solve_mass: impl Fn(&SVector<S, N>) -> SVector<S, N>,
+    u: SVector<S, N>,
+    rows: impl FnOnce() -> ConstraintRows<S, N, C>,
+) -> Result<ConstrainedAccelerations<S, N, C>> {
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
     // A sliding row acts when its contact is enforced.
     let sliding: [bool; C] = std::array::from_fn(|j| match M::KINDS[j] {
@@ -200,18 +278,16 @@ pub fn accelerations_in_mode<
     });
     let mut multipliers = [S::zero(); C];
     if !enforced.iter().any(|&e| e) {
-        return finish::<M, S, N, K, C>(u, multipliers, t, q);
+        // No row enforced: every λ is zero.
+        return finish::<M, S, N, K, C>(u, multipliers, t, q, true);
     }
-    let cr = match &pass {
-        Some(pass) => rows_from_pass(model, pass, t, q, v).0,
-        None => constraint_rows(model, t, q, v),
-    };
+    let cr = rows();
     // A loop, not `array::from_fn`, whose closure the compiler does not always inline here
     // (BENCHMARKS.md, §4).
     let mut y = [SVector::<S, N>::zeros(); C];
     for i in 0..C {
         if enforced[i] || sliding[i] {
-            y[i] = l.solve(&cr.rows[i]);
+            y[i] = solve_mass(&cr.rows[i]);
         }
     }
     let mut schur = SMatrix::<S, C, C>::zeros();
@@ -236,9 +312,8 @@ pub fn accelerations_in_mode<
             schur[(i, i)] = S::from(filler);
         }
     }
-    let ls = Ldlt::new(&schur)
+    let mut lambda = schur_solve(&schur, &rhs)
         .map_err(|e| singular_constraints::<M, S, N, K, C>(e, &schur, &enforced, t, q))?;
-    let mut lambda = ls.solve(&rhs);
     if !sliding.iter().any(|&s| s) {
         let mut qdd = u;
         for k in 0..C {
@@ -247,7 +322,9 @@ pub fn accelerations_in_mode<
                 multipliers[k] = lambda[k];
             }
         }
-        return finish::<M, S, N, K, C>(qdd, multipliers, t, q);
+        // Each λₖ entered q̈ through M⁻¹rₖ·λₖ, every entry of which is non-finite with λₖ (0·∞ is
+        // NaN): q̈ finite implies λ finite, so q̈ alone is checked.
+        return finish::<M, S, N, K, C>(qdd, multipliers, t, q, true);
     }
     // Sliding friction: the generalized force of normal row n becomes λₙ(rₙ − Σⱼ μₖ σⱼ sₙ Sⱼ), with
     // sₙ = sign(λₙ) (+1 for a unilateral contact, whose λ ≥ 0 while active). The sign of a bilateral
@@ -346,22 +423,27 @@ pub fn accelerations_in_mode<
             multipliers[j] = lambda[normal] * direction[j] * S::from(-mu * sign_n[normal]);
         }
     }
-    finish::<M, S, N, K, C>(qdd, multipliers, t, q)
+    finish::<M, S, N, K, C>(qdd, multipliers, t, q, false)
 }
 
+/// q̈ and λ when they are finite, otherwise [`Error::NonFiniteDynamics`]; `implied` when λ is finite
+/// whenever q̈ is (then q̈ alone is checked).
 fn finish<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
     qdd: SVector<S, N>,
     multipliers: [S; C],
     t: S,
     q: &[S; N],
+    implied: bool,
 ) -> Result<ConstrainedAccelerations<S, N, C>> {
     // Branch-free on the common path (as `check_state`): x·0 is 0 exactly when x is finite.
     let mut zero = 0.0f64;
     for i in 0..N {
         zero += qdd[i].re() * 0.0;
     }
-    for multiplier in &multipliers {
-        zero += multiplier.re() * 0.0;
+    if !implied {
+        for multiplier in &multipliers {
+            zero += multiplier.re() * 0.0;
+        }
     }
     if zero == 0.0 {
         Ok(ConstrainedAccelerations {
@@ -393,5 +475,66 @@ pub fn accelerations<
     } else {
         infer_mode(model, t.re(), &real(q), &real(v))?
     };
-    Ok(accelerations_in_mode(model, t, q, v, &mode)?.accelerations)
+    accelerations_in_mode(model, t, q, v, &mode).map(|a| a.accelerations)
+}
+
+/// [`accelerations`] of a mechanism whose positions are affine in the coordinates (x = A q + c,
+/// see [`crate::affine`]), with the constants prepared once from its parameters: what a
+/// constrained affine mechanism's validated handle evaluates. Agrees with [`accelerations`] to
+/// round-off.
+///
+/// ```
+/// use lagrange_core::affine::AffineConstants;
+/// use lagrange_core::constraints::{self, ConstraintKind, Constraints};
+/// use lagrange_core::{vec2, Model, Scalar};
+///
+/// /// A pendulum in Cartesian coordinates: x = q, affine; the rod |x| = 2 a constraint.
+/// struct Pendulum;
+/// impl Model<2, 2> for Pendulum {
+///     type Coords = [f64; 2];
+///     const RHEONOMIC: bool = false;
+///     const HAS_POTENTIAL: bool = false;
+///     const HAS_FORCES: bool = false;
+///     const HAS_GRAVITY: bool = true;
+///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+///     fn masses(&self) -> [f64; 2] { [1.5, 1.5] }
+///     fn weights(&self) -> [f64; 2] { [0.0, -1.5 * 9.81] }
+///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
+///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], _x: &[D; 2]) -> D { D::zero() }
+/// }
+/// impl Constraints<2, 2, 1> for Pendulum {
+///     const NAMES: [&'static str; 1] = ["rod"];
+///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+///         [vec2(x[0], x[1]).norm() - 2.0]
+///     }
+/// }
+///
+/// let constants = AffineConstants::of(&Pendulum)?;
+/// let (q, v) = ([1.2, -1.6], [0.8, 0.6]);
+/// let prepared = constraints::accelerations_prepared(&Pendulum, &constants, 0.0, &q, &v)?;
+/// let direct = constraints::accelerations(&Pendulum, 0.0, &q, &v)?;
+/// assert!((prepared[0] - direct[0]).abs() < 1e-14 && (prepared[1] - direct[1]).abs() < 1e-14);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+#[inline]
+pub fn accelerations_prepared<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    constants: &AffineConstants<N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Result<[S; N]> {
+    let mode = if always_active::<M, N, K, C>() {
+        Mode::all_active::<M, N, K>()
+    } else {
+        infer_mode(model, t.re(), &real(q), &real(v))?
+    };
+    accelerations_in_mode_prepared(model, constants, t, q, v, &mode).map(|a| a.accelerations)
 }

@@ -35,12 +35,24 @@ pub(super) fn mechanism_impl(
     // Through a validated handle, q̈ uses the constants prepared once: an affine mechanism's J and
     // factors of M, the closed form's coefficients.
     let prepared_accelerations = match prepared {
-        Prepared::Affine => Some(quote! {
-            #[inline]
-            fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-                #p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v)
-            }
-        }),
+        Prepared::Affine => {
+            // A constrained mechanism starts its Schur solve from the same constants.
+            let body = match constrained {
+                Some(c) => {
+                    let c = lit(c);
+                    quote!(#p::lagrange_core::constraints::accelerations_prepared::<Self, S, #n, #k, #c>(self, prepared, t, q, v))
+                }
+                None => {
+                    quote!(#p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v))
+                }
+            };
+            Some(quote! {
+                #[inline]
+                fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+                    #body
+                }
+            })
+        }
         // Straight-line code: `accelerations` checks a call in one branch.
         Prepared::Coefficients(_) => Some(quote! {
             #[inline]

@@ -138,8 +138,8 @@ fn generate(model: &Model) -> TokenStream {
     let inherent = inherent_impl(model);
     let model_impl = model_impl(model);
     let constrained = (!model.constraints.is_empty()).then_some(model.constraint_row_count());
-    // The constrained solve has its own path; affine constants serve the unconstrained one.
-    let affine = constrained.is_none() && crate::affine::is_affine(model);
+    // Affine positions: J and M's factors prepared once, for the free and the constrained solve.
+    let affine = crate::affine::is_affine(model);
     // Otherwise the equations in closed form where the positions are read, a tree of
     // translations from each body's own seeds, or the dense pass.
     let tree = crate::structure::tree(model);

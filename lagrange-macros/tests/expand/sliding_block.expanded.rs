@@ -210,10 +210,14 @@ pub mod sliding_block {
         }
     }
     impl ::lagrange::__private::Prepare for SlidingBlock {
-        type Prepared = ();
-        #[inline(always)]
-        fn prepare(&self) -> ::lagrange::__private::Result<()> {
-            ::lagrange::__private::core::result::Result::Ok(())
+        type Prepared = ::lagrange::__private::lagrange_core::affine::AffineConstants<
+            2,
+            2,
+        >;
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::lagrange_core::affine::AffineConstants::of::<
+                Self,
+            >(self)
         }
     }
     impl ::lagrange::__private::Dynamics<2> for SlidingBlock {
@@ -450,6 +454,22 @@ pub mod sliding_block {
                 2,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            ::lagrange::__private::lagrange_core::constraints::accelerations_prepared::<
+                Self,
+                S,
+                2,
+                2,
+                2,
+            >(self, prepared, t, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::constraints::Constraints<2, 2, 2>
