@@ -1,0 +1,539 @@
+//! Expressions as written, kept as a tree (a graph with shared nodes), differentiated in forward
+//! mode by the chain rule and written out as straight-line code: one `let` per node.
+//!
+//! Nothing is expanded: a spring's ω²/4 (q₁ − q₀)² keeps the difference q₁ − q₀ as a node, and its
+//! derivative by q₁ is ω²/4 · (2 (q₁ − q₀)) computed from that same difference; by q₀ the same
+//! value negated. The derivative applies the rules of the dual numbers (Griewank & Walther,
+//! *Evaluating Derivatives*, 2nd ed., 2008, §2.2 and Table 2.3, the tangent of each elementary
+//! operation) to the same operands, so it rounds as the dual numbers do, without their products
+//! by a zero or unit seed. The only rewritings are exact in floating point: adding a zero,
+//! multiplying by one, a sign moved out of a product, literals folded.
+//!
+//! Nodes are interned ([`Graph::node`]): a subexpression built twice is one node, so a derivative
+//! reuses the values it shares with the function (the √ of a distance, the quotient of a
+//! reciprocal) and with the other derivatives.
+
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+use std::collections::HashMap;
+
+/// A node's index in its [`Graph`].
+pub type Id = usize;
+
+/// What a node is.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Node {
+    /// A number (its bits): `2.0`, `0.5`.
+    Literal(u64),
+    /// A constant as written (a parameter, `alpha.cos()`, `PI`), evaluated in `f64`.
+    Constant(TokenStream2),
+    /// Time.
+    Time,
+    /// A coordinate's slot in q.
+    Coordinate(usize),
+    /// A row of x (a component of a body's position, a planar body's angle).
+    Row(usize),
+    Add(Id, Id),
+    Sub(Id, Id),
+    Mul(Id, Id),
+    Div(Id, Id),
+    Neg(Id),
+    Powi(Id, i32),
+    Sqrt(Id),
+    Sin(Id),
+    Cos(Id),
+    Exp(Id),
+    Ln(Id),
+}
+
+/// Tokens compared and hashed by their text (two constants written alike are one node).
+#[derive(Clone, Debug)]
+pub struct TokenStream2(pub TokenStream, String);
+
+impl TokenStream2 {
+    pub fn new(tokens: TokenStream) -> Self {
+        let text = tokens.to_string();
+        TokenStream2(tokens, text)
+    }
+}
+
+impl PartialEq for TokenStream2 {
+    fn eq(&self, other: &Self) -> bool {
+        self.1 == other.1
+    }
+}
+impl Eq for TokenStream2 {}
+impl std::hash::Hash for TokenStream2 {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.1.hash(state)
+    }
+}
+
+/// A variable a derivative is taken by: a coordinate or a row of x.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Variable {
+    Coordinate(usize),
+    Row(usize),
+}
+
+/// At most this many nodes: beyond it a potential keeps the dual numbers (the build would slow).
+pub const MAX_NODES: usize = 4096;
+
+/// The nodes, each built after its operands (so their order is an evaluation order).
+#[derive(Default)]
+pub struct Graph {
+    nodes: Vec<Node>,
+    /// Whether each node depends on a coordinate, a row or time (is evaluated on the scalar; the
+    /// others are constants evaluated in `f64`).
+    varies: Vec<bool>,
+    index: HashMap<Node, Id>,
+    derivatives: HashMap<(Id, Variable), Id>,
+}
+
+impl Graph {
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// The node, interned: an equal node built before is returned as it is.
+    pub fn node(&mut self, node: Node) -> Id {
+        if let Some(&id) = self.index.get(&node) {
+            return id;
+        }
+        let varies = match &node {
+            Node::Literal(_) | Node::Constant(_) => false,
+            Node::Time | Node::Coordinate(_) | Node::Row(_) => true,
+            Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+                self.varies[*a] || self.varies[*b]
+            }
+            Node::Neg(a)
+            | Node::Powi(a, _)
+            | Node::Sqrt(a)
+            | Node::Sin(a)
+            | Node::Cos(a)
+            | Node::Exp(a)
+            | Node::Ln(a) => self.varies[*a],
+        };
+        let id = self.nodes.len();
+        self.nodes.push(node.clone());
+        self.varies.push(varies);
+        self.index.insert(node, id);
+        id
+    }
+
+    pub fn literal(&mut self, value: f64) -> Id {
+        // −0 and 0 are one value for what is built here.
+        self.node(Node::Literal((value + 0.0).to_bits()))
+    }
+
+    fn value(&self, id: Id) -> Option<f64> {
+        match self.nodes[id] {
+            Node::Literal(bits) => Some(f64::from_bits(bits)),
+            _ => None,
+        }
+    }
+
+    fn is(&self, id: Id, value: f64) -> bool {
+        self.value(id) == Some(value)
+    }
+
+    /// The operand of a negation.
+    fn negated(&self, id: Id) -> Option<Id> {
+        match self.nodes[id] {
+            Node::Neg(a) => Some(a),
+            _ => None,
+        }
+    }
+
+    pub fn add(&mut self, a: Id, b: Id) -> Id {
+        match (self.value(a), self.value(b)) {
+            (Some(x), Some(y)) => self.literal(x + y),
+            (Some(x), _) if x == 0.0 => b,
+            (_, Some(y)) if y == 0.0 => a,
+            _ => match self.negated(b) {
+                // a + (−b) = a − b, exactly.
+                Some(b) => self.sub(a, b),
+                None => self.node(Node::Add(a, b)),
+            },
+        }
+    }
+
+    pub fn sub(&mut self, a: Id, b: Id) -> Id {
+        match (self.value(a), self.value(b)) {
+            (Some(x), Some(y)) => self.literal(x - y),
+            (Some(x), _) if x == 0.0 => self.neg(b),
+            (_, Some(y)) if y == 0.0 => a,
+            _ => self.node(Node::Sub(a, b)),
+        }
+    }
+
+    pub fn mul(&mut self, a: Id, b: Id) -> Id {
+        if let (Some(x), Some(y)) = (self.value(a), self.value(b)) {
+            return self.literal(x * y);
+        }
+        if self.is(a, 0.0) || self.is(b, 0.0) {
+            return self.literal(0.0);
+        }
+        if self.is(a, 1.0) {
+            return b;
+        }
+        if self.is(b, 1.0) {
+            return a;
+        }
+        if self.is(a, -1.0) {
+            return self.neg(b);
+        }
+        if self.is(b, -1.0) {
+            return self.neg(a);
+        }
+        // (−a) b = −(a b) and a (−b) = −(a b), exactly: the sign moves out to meet its twin.
+        if let Some(a) = self.negated(a) {
+            let product = self.mul(a, b);
+            return self.neg(product);
+        }
+        if let Some(b) = self.negated(b) {
+            let product = self.mul(a, b);
+            return self.neg(product);
+        }
+        self.node(Node::Mul(a, b))
+    }
+
+    pub fn div(&mut self, a: Id, b: Id) -> Id {
+        if let (Some(x), Some(y)) = (self.value(a), self.value(b)) {
+            if y != 0.0 {
+                return self.literal(x / y);
+            }
+        }
+        if self.is(a, 0.0) && !self.is(b, 0.0) {
+            return self.literal(0.0);
+        }
+        if self.is(b, 1.0) {
+            return a;
+        }
+        if let Some(a) = self.negated(a) {
+            let quotient = self.div(a, b);
+            return self.neg(quotient);
+        }
+        self.node(Node::Div(a, b))
+    }
+
+    pub fn neg(&mut self, a: Id) -> Id {
+        if let Some(x) = self.value(a) {
+            return self.literal(-x);
+        }
+        match self.negated(a) {
+            Some(inner) => inner,
+            None => self.node(Node::Neg(a)),
+        }
+    }
+
+    pub fn powi(&mut self, a: Id, n: i32) -> Id {
+        match n {
+            0 => self.literal(1.0),
+            1 => a,
+            _ => self.node(Node::Powi(a, n)),
+        }
+    }
+
+    /// ∂node/∂variable, by the chain rule (the tangent rules in the module docs).
+    pub fn derivative(&mut self, id: Id, by: Variable) -> Id {
+        if !self.varies[id] {
+            return self.literal(0.0);
+        }
+        if let Some(&d) = self.derivatives.get(&(id, by)) {
+            return d;
+        }
+        let d = match self.nodes[id].clone() {
+            Node::Literal(_) | Node::Constant(_) | Node::Time => self.literal(0.0),
+            Node::Coordinate(j) => self.literal((by == Variable::Coordinate(j)) as u8 as f64),
+            Node::Row(r) => self.literal((by == Variable::Row(r)) as u8 as f64),
+            Node::Add(a, b) => {
+                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
+                self.add(da, db)
+            }
+            Node::Sub(a, b) => {
+                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
+                self.sub(da, db)
+            }
+            // (a b)' = a' b + a b'.
+            Node::Mul(a, b) => {
+                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
+                let (l, r) = (self.mul(da, b), self.mul(a, db));
+                self.add(l, r)
+            }
+            // (a / b)' = (a' − (a / b) b') / b.
+            Node::Div(a, b) => {
+                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
+                let v_db = self.mul(id, db);
+                let numerator = self.sub(da, v_db);
+                self.div(numerator, b)
+            }
+            Node::Neg(a) => {
+                let da = self.derivative(a, by);
+                self.neg(da)
+            }
+            // (aⁿ)' = n aⁿ⁻¹ a'.
+            Node::Powi(a, n) => {
+                let da = self.derivative(a, by);
+                let (n, lower) = (self.literal(n as f64), self.powi(a, n - 1));
+                let slope = self.mul(n, lower);
+                self.mul(slope, da)
+            }
+            // (√a)' = a' / (2 √a).
+            Node::Sqrt(a) => {
+                let da = self.derivative(a, by);
+                let two = self.literal(2.0);
+                let twice = self.mul(two, id);
+                self.div(da, twice)
+            }
+            Node::Sin(a) => {
+                let da = self.derivative(a, by);
+                let cos = self.node(Node::Cos(a));
+                self.mul(cos, da)
+            }
+            Node::Cos(a) => {
+                let da = self.derivative(a, by);
+                let sin = self.node(Node::Sin(a));
+                let product = self.mul(sin, da);
+                self.neg(product)
+            }
+            Node::Exp(a) => {
+                let da = self.derivative(a, by);
+                self.mul(id, da)
+            }
+            Node::Ln(a) => {
+                let da = self.derivative(a, by);
+                self.div(da, a)
+            }
+        };
+        self.derivatives.insert((id, by), d);
+        d
+    }
+
+    /// The variables the node depends on, sorted.
+    pub fn variables(&self, id: Id) -> Vec<Variable> {
+        let mut seen = vec![false; self.nodes.len()];
+        let mut stack = vec![id];
+        let mut out = Vec::new();
+        while let Some(n) = stack.pop() {
+            if std::mem::replace(&mut seen[n], true) || !self.varies[n] {
+                continue;
+            }
+            match &self.nodes[n] {
+                Node::Coordinate(j) => out.push(Variable::Coordinate(*j)),
+                Node::Row(r) => out.push(Variable::Row(*r)),
+                node => stack.extend(operands(node)),
+            }
+        }
+        out.sort();
+        out.dedup();
+        out
+    }
+
+    /// A node as an operand on scalar `S` (or in `f64` where `in_f64`).
+    fn operand(&self, id: Id, in_f64: bool, s: &TokenStream) -> TokenStream {
+        match (&self.nodes[id], in_f64 || self.varies[id]) {
+            (Node::Literal(bits), true) => {
+                let l = Literal::f64_unsuffixed(f64::from_bits(*bits));
+                quote!(#l)
+            }
+            (Node::Literal(bits), false) => {
+                let l = Literal::f64_unsuffixed(f64::from_bits(*bits));
+                quote!(<#s>::from(#l))
+            }
+            (_, true) => {
+                let n = name(id);
+                quote!(#n)
+            }
+            (_, false) => {
+                let n = name(id);
+                quote!(<#s>::from(#n))
+            }
+        }
+    }
+
+    /// `let`s for every node `outputs` need, in order: constants in `f64`, the others on `s`.
+    /// Literals are written where they are used.
+    pub fn emit(&self, outputs: &[Id], s: &TokenStream) -> TokenStream {
+        let mut needed = vec![false; self.nodes.len()];
+        let mut stack: Vec<Id> = outputs.to_vec();
+        while let Some(n) = stack.pop() {
+            if !std::mem::replace(&mut needed[n], true) {
+                stack.extend(operands(&self.nodes[n]));
+            }
+        }
+        let mut out = TokenStream::new();
+        for (id, node) in self.nodes.iter().enumerate() {
+            if !needed[id] || matches!(node, Node::Literal(_)) {
+                continue;
+            }
+            let in_f64 = !self.varies[id];
+            let op = |a: Id| self.operand(a, in_f64, s);
+            // A binary operation with a constant on the right takes the `f64` as it is
+            // (`DualNum` is closed under operations with its primitive); a commutative one with
+            // the constant on the left is written the other way round (exact).
+            let binary = |a: Id, b: Id, symbol: TokenStream, commutes: bool| {
+                if !in_f64 && !self.varies[b] {
+                    let (a, b) = (op(a), self.operand(b, true, s));
+                    quote!(#a #symbol #b)
+                } else if !in_f64 && !self.varies[a] && commutes {
+                    let (a, b) = (self.operand(a, true, s), op(b));
+                    quote!(#b #symbol #a)
+                } else {
+                    let (a, b) = (op(a), op(b));
+                    quote!(#a #symbol #b)
+                }
+            };
+            let value = match node {
+                Node::Literal(_) => unreachable!("literals are written in place"),
+                Node::Constant(tokens) => tokens.0.clone(),
+                Node::Time => quote!(__t),
+                Node::Coordinate(j) => {
+                    let j = Literal::usize_unsuffixed(*j);
+                    quote!(__q[#j])
+                }
+                Node::Row(r) => {
+                    let r = Literal::usize_unsuffixed(*r);
+                    quote!(__x[#r])
+                }
+                Node::Add(a, b) => binary(*a, *b, quote!(+), true),
+                Node::Sub(a, b) => binary(*a, *b, quote!(-), false),
+                Node::Mul(a, b) => binary(*a, *b, quote!(*), true),
+                Node::Div(a, b) => binary(*a, *b, quote!(/), false),
+                Node::Neg(a) => {
+                    let a = op(*a);
+                    quote!(-#a)
+                }
+                Node::Powi(a, n) => {
+                    let a = op(*a);
+                    quote!(#a.powi(#n))
+                }
+                Node::Sqrt(a) => method(op(*a), "sqrt"),
+                Node::Sin(a) => method(op(*a), "sin"),
+                Node::Cos(a) => method(op(*a), "cos"),
+                Node::Exp(a) => method(op(*a), "exp"),
+                Node::Ln(a) => method(op(*a), "ln"),
+            };
+            let ty = if in_f64 { quote!(f64) } else { s.clone() };
+            let n = name(id);
+            out.extend(quote!(let #n: #ty = #value;));
+        }
+        out
+    }
+
+    /// The node as a value on `s`: its name, a literal lifted, a constant lifted.
+    pub fn scalar(&self, id: Id, s: &TokenStream) -> TokenStream {
+        self.operand(id, false, s)
+    }
+
+    /// The operand of a negation, for writing `g -= a` instead of `g += −a`.
+    pub fn negation_of(&self, id: Id) -> Option<Id> {
+        self.negated(id)
+    }
+
+    pub fn is_zero(&self, id: Id) -> bool {
+        self.is(id, 0.0)
+    }
+}
+
+fn method(receiver: TokenStream, name: &str) -> TokenStream {
+    let name = format_ident!("{}", name);
+    quote!(#receiver.#name())
+}
+
+/// `__e12`: the name of node 12.
+fn name(id: Id) -> proc_macro2::Ident {
+    format_ident!("__e{}", id)
+}
+
+fn operands(node: &Node) -> Vec<Id> {
+    match node {
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => vec![*a, *b],
+        Node::Neg(a)
+        | Node::Powi(a, _)
+        | Node::Sqrt(a)
+        | Node::Sin(a)
+        | Node::Cos(a)
+        | Node::Exp(a)
+        | Node::Ln(a) => vec![*a],
+        _ => vec![],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_spring_keeps_its_difference() {
+        // ω²/4 (q₁ − q₀)²: both derivatives from one node 2 (q₁ − q₀), one the other's negation.
+        let mut g = Graph::default();
+        let c = g.node(Node::Constant(TokenStream2::new(quote!(omega * omega / 4.0))));
+        let (q0, q1) = (g.node(Node::Coordinate(0)), g.node(Node::Coordinate(1)));
+        let d = g.sub(q1, q0);
+        let square = g.powi(d, 2);
+        let v = g.mul(c, square);
+        let d1 = g.derivative(v, Variable::Coordinate(1));
+        let d0 = g.derivative(v, Variable::Coordinate(0));
+        assert_eq!(g.negation_of(d0), Some(d1));
+        let two = g.literal(2.0);
+        let twice = g.mul(two, d);
+        assert_eq!(d1, g.mul(c, twice));
+        assert_eq!(g.variables(v), vec![Variable::Coordinate(0), Variable::Coordinate(1)]);
+    }
+
+    #[test]
+    fn exact_rewritings_only() {
+        let mut g = Graph::default();
+        let (a, b) = (g.node(Node::Coordinate(0)), g.node(Node::Row(3)));
+        let (zero, one) = (g.literal(0.0), g.literal(1.0));
+        assert_eq!(g.add(a, zero), a);
+        assert_eq!(g.mul(one, a), a);
+        let vanished = g.mul(zero, b);
+        assert!(g.is_zero(vanished));
+        let nb = g.neg(b);
+        assert_eq!(g.neg(nb), b);
+        let diff = g.sub(a, b);
+        assert_eq!(g.add(a, nb), diff);
+        // a (−b) is −(a b); nothing else is reassociated.
+        let ab = g.mul(a, b);
+        let product = g.mul(a, nb);
+        assert_eq!(g.negation_of(product), Some(ab));
+        let three = g.literal(3.0);
+        let left = g.mul(three, ab);
+        let three_a = g.mul(three, a);
+        let right = g.mul(three_a, b);
+        assert_ne!(left, right);
+    }
+
+    #[test]
+    fn quotients_and_roots_reuse_their_value() {
+        // d(1/√r)/dr = (0 − (1/√r) · (1 / (2√r))) / √r.
+        let mut g = Graph::default();
+        let r = g.node(Node::Row(0));
+        let root = g.node(Node::Sqrt(r));
+        let one = g.literal(1.0);
+        let v = g.div(one, root);
+        let d = g.derivative(v, Variable::Row(0));
+        let two = g.literal(2.0);
+        let twice = g.mul(two, root);
+        let droot = g.div(one, twice);
+        let v_droot = g.mul(v, droot);
+        let expected = g.div(v_droot, root);
+        assert_eq!(g.negation_of(d), Some(expected));
+    }
+
+    #[test]
+    fn constants_are_f64_and_lifted_where_a_scalar_needs_them() {
+        let mut g = Graph::default();
+        let k = g.node(Node::Constant(TokenStream2::new(quote!(k))));
+        let half = g.literal(0.5);
+        let c = g.mul(k, half);
+        let x = g.node(Node::Coordinate(0));
+        let v = g.sub(c, x);
+        let code = g.emit(&[v], &quote!(S)).to_string();
+        assert!(code.contains("let __e0 : f64 = k ;"), "{code}");
+        assert!(code.contains("let __e2 : f64 = __e0 * 0.5 ;"), "{code}");
+        assert!(code.contains("let __e4 : S = < S > :: from (__e2) - __e3 ;"), "{code}");
+    }
+}
