@@ -123,6 +123,7 @@ pub mod tied {
         let (d, r2) = (a - plate.position, (a - b).norm_squared());
         e * (1.0 + d.dot(&d)).ln() + alpha.cos() * (0.1 * ay).exp() / (1.0 + r2)
             - e * theta.cos().recip().sqrt() * std::f64::consts::FRAC_1_SQRT_2
+            + e * (1.0 + r2).powi(-2)
     }
 }
 

@@ -186,6 +186,20 @@ impl Graph {
         if self.is(b, -1.0) {
             return self.neg(a);
         }
+        // c (2ᵏ x) = (c 2ᵏ) x for a constant c: a power of two scales without rounding (short of
+        // overflow), so the factor joins the constant, computed once in `f64`.
+        if !self.varies[a] {
+            if let Some((power, x)) = self.scaled(b) {
+                let constant = self.mul(a, power);
+                return self.mul(constant, x);
+            }
+        }
+        if !self.varies[b] {
+            if let Some((power, x)) = self.scaled(a) {
+                let constant = self.mul(b, power);
+                return self.mul(constant, x);
+            }
+        }
         // (−a) b = −(a b) and a (−b) = −(a b), exactly: the sign moves out to meet its twin.
         if let Some(a) = self.negated(a) {
             let product = self.mul(a, b);
@@ -196,6 +210,19 @@ impl Graph {
             return self.neg(product);
         }
         self.node(Node::Mul(a, b))
+    }
+
+    /// (2ᵏ, x) for a node 2ᵏ x (either order) with x varying.
+    fn scaled(&self, id: Id) -> Option<(Id, Id)> {
+        let Node::Mul(a, b) = self.nodes[id] else {
+            return None;
+        };
+        let power_of_two = |v: f64| v.is_normal() && v.to_bits() & ((1u64 << 52) - 1) == 0;
+        match (self.value(a), self.value(b)) {
+            (Some(v), _) if power_of_two(v) && self.varies[b] => Some((a, b)),
+            (_, Some(v)) if power_of_two(v) && self.varies[a] => Some((b, a)),
+            _ => None,
+        }
     }
 
     pub fn div(&mut self, a: Id, b: Id) -> Id {
@@ -255,13 +282,27 @@ impl Graph {
                 let (da, db) = (self.derivative(a, by), self.derivative(b, by));
                 self.sub(da, db)
             }
+            // (a a)' = 2 a a': the dual numbers' a' a + a a', whose two terms are equal.
+            Node::Mul(a, b) if a == b => {
+                let da = self.derivative(a, by);
+                let two = self.literal(2.0);
+                let twice = self.mul(two, a);
+                self.mul(twice, da)
+            }
             // (a b)' = a' b + a b'.
             Node::Mul(a, b) => {
                 let (da, db) = (self.derivative(a, by), self.derivative(b, by));
                 let (l, r) = (self.mul(da, b), self.mul(a, db));
                 self.add(l, r)
             }
-            // (a / b)' = (a' − (a / b) b') / b.
+            // (a / b)' = (a' − (a / b) b') / b; for a constant a, −((a / b) / b) b', the factor
+            // (a / b) / b shared by every variable.
+            Node::Div(a, b) if !self.varies[a] => {
+                let db = self.derivative(b, by);
+                let factor = self.div(id, b);
+                let product = self.mul(factor, db);
+                self.neg(product)
+            }
             Node::Div(a, b) => {
                 let (da, db) = (self.derivative(a, by), self.derivative(b, by));
                 let v_db = self.mul(id, db);
@@ -279,12 +320,18 @@ impl Graph {
                 let slope = self.mul(n, lower);
                 self.mul(slope, da)
             }
-            // (√a)' = a' / (2 √a).
+            // (√a)' = a' / (2 √a); for a' = 2 y (a sum of squares), y / √a, the same quotient
+            // (the factors 2 cancel exactly).
             Node::Sqrt(a) => {
                 let da = self.derivative(a, by);
                 let two = self.literal(2.0);
-                let twice = self.mul(two, id);
-                self.div(da, twice)
+                match self.scaled(da) {
+                    Some((power, y)) if power == two => self.div(y, id),
+                    _ => {
+                        let twice = self.mul(two, id);
+                        self.div(da, twice)
+                    }
+                }
             }
             Node::Sin(a) => {
                 let da = self.derivative(a, by);
@@ -357,6 +404,10 @@ impl Graph {
     pub fn emit(&self, outputs: &[Id], s: &TokenStream) -> TokenStream {
         let mut needed = vec![false; self.nodes.len()];
         let mut stack: Vec<Id> = outputs.to_vec();
+        // An output written `g -= a` needs a, not −a.
+        for id in &mut stack {
+            *id = self.negated(*id).unwrap_or(*id);
+        }
         while let Some(n) = stack.pop() {
             if !std::mem::replace(&mut needed[n], true) {
                 stack.extend(operands(&self.nodes[n]));
@@ -429,6 +480,12 @@ impl Graph {
     /// The operand of a negation, for writing `g -= a` instead of `g += −a`.
     pub fn negation_of(&self, id: Id) -> Option<Id> {
         self.negated(id)
+    }
+
+    /// Whether the node is a coordinate itself or a constant: a row of x written as one equals it
+    /// exactly, and its row of J is a unit vector or zero.
+    pub fn is_coordinate_or_constant(&self, id: Id) -> bool {
+        !self.varies[id] || matches!(self.nodes[id], Node::Coordinate(_))
     }
 
     pub fn is_zero(&self, id: Id) -> bool {
@@ -508,19 +565,36 @@ mod tests {
 
     #[test]
     fn quotients_and_roots_reuse_their_value() {
-        // d(1/√r)/dr = (0 − (1/√r) · (1 / (2√r))) / √r.
+        // d(1/√(r r))/dr = −((1/√(r r))/√(r r)) · (r/√(r r)): the 2 of (r r)' = 2 r r' cancels
+        // the 2 of (√a)' = a'/(2√a), and the quotient's factor is shared.
         let mut g = Graph::default();
         let r = g.node(Node::Row(0));
-        let root = g.node(Node::Sqrt(r));
+        let square = g.mul(r, r);
+        let root = g.node(Node::Sqrt(square));
         let one = g.literal(1.0);
         let v = g.div(one, root);
         let d = g.derivative(v, Variable::Row(0));
-        let two = g.literal(2.0);
-        let twice = g.mul(two, root);
-        let droot = g.div(one, twice);
-        let v_droot = g.mul(v, droot);
-        let expected = g.div(v_droot, root);
+        let factor = g.div(v, root);
+        let droot = g.div(r, root);
+        let expected = g.mul(factor, droot);
         assert_eq!(g.negation_of(d), Some(expected));
+    }
+
+    #[test]
+    fn powers_of_two_join_constant_factors() {
+        // c · (2 d) = (c · 2) · d: one product at run time.
+        let mut g = Graph::default();
+        let c = g.node(Node::Constant(TokenStream2::new(quote!(k))));
+        let d = g.node(Node::Coordinate(0));
+        let (two, three) = (g.literal(2.0), g.literal(3.0));
+        let twice = g.mul(two, d);
+        let product = g.mul(c, twice);
+        let c2 = g.mul(c, two);
+        assert_eq!(product, g.mul(c2, d));
+        // Not a factor 3, which would round.
+        let thrice = g.mul(three, d);
+        let product = g.mul(c, thrice);
+        assert_eq!(g.nodes[product], Node::Mul(c, thrice));
     }
 
     #[test]

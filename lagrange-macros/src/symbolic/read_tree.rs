@@ -74,13 +74,48 @@ impl<'g> Reader<'g> {
             };
             bodies.insert(body.decl.ident().to_string(), value);
         }
-        Reader {
+        let mut reader = Reader {
             graph,
             coords,
             arrays,
             bodies,
             locals: Vec::new(),
+        };
+        for body in model.bodies.iter().filter(|b| b.count.is_none()) {
+            reader.substitute(&body.decl.ident().to_string(), &body.decl.block);
         }
+        reader
+    }
+
+    /// A body's rows written as a coordinate or a constant (`vec2(x, y)`, `vec2(q[i], 0.0)`) read
+    /// as that coordinate or constant: equal to the row of x, with a unit or zero row of J, so its
+    /// derivative goes straight to the coordinate's slot. Other rows stay rows of x.
+    fn substitute(&mut self, name: &str, block: &Block) {
+        let (Some(Some(rows)), Some(written)) = (self.bodies.get(name).cloned(), self.block(block))
+        else {
+            return;
+        };
+        let g = &*self.graph;
+        let pick = |row: &Id, written: &Id| {
+            if g.is_coordinate_or_constant(*written) {
+                *written
+            } else {
+                *row
+            }
+        };
+        let pick_all = |rows: &[Id], written: &[Id]| -> Vec<Id> {
+            rows.iter().zip(written).map(|(r, w)| pick(r, w)).collect()
+        };
+        let value = match (rows, written) {
+            (Value::Vector(rows), Value::Vector(written)) if rows.len() == written.len() => {
+                Value::Vector(pick_all(&rows, &written))
+            }
+            (Value::Planar(rows, angle), Value::Planar(written, written_angle)) => {
+                Value::Planar(pick_all(&rows, &written), pick(&angle, &written_angle))
+            }
+            _ => return,
+        };
+        self.bodies.insert(name.to_string(), Some(value));
     }
 
     /// The scalar value of a potential's block, or `None` when it is not of the forms read.
@@ -305,8 +340,15 @@ impl<'g> Reader<'g> {
     /// literals lifted to `f64` as the dual-number path lifts them to its scalar.
     fn constant(&mut self, expr: &Expr) -> Option<Value> {
         let tokens = expr.to_token_stream();
-        if !self.names_only_constants(tokens) {
+        if !self.names_only_constants(tokens.clone()) {
             return None;
+        }
+        // A name (a parameter) as it is; anything else lifted.
+        if let Expr::Path(path) = expr {
+            if path.path.get_ident().is_some() {
+                let node = Node::Constant(TokenStream2::new(tokens));
+                return Some(Value::Scalar(self.graph.node(node)));
+            }
         }
         let block: Block = syn::parse_quote!({ #expr });
         let lifted = crate::lift::lift_block(&block, &quote!(f64));
