@@ -177,7 +177,10 @@ fn gradients<M: Model<N, K>, const N: usize, const K: usize>(
 /// in a different order for the chain rule's sums: their difference is a few tens of ulps of the
 /// largest term, so 1e-13 (≈ 450 ulps) of the largest entry bounds it with room.
 fn assert_agree<const N: usize>(symbolic: SVector<f64, N>, dual: SVector<f64, N>, what: &str) {
-    let scale = symbolic.iter().chain(&dual).fold(1e-300f64, |m, g| m.max(g.abs()));
+    let scale = symbolic
+        .iter()
+        .chain(&dual)
+        .fold(1e-300f64, |m, g| m.max(g.abs()));
     for (s, d) in symbolic.iter().zip(&dual) {
         assert!(
             (s - d).abs() <= 1e-13 * scale,
@@ -194,7 +197,10 @@ fn wiggle(i: usize, j: usize) -> f64 {
 
 #[test]
 fn chain_springs_agree_with_dual_numbers() {
-    let sys = fpu::Fpu { m: 1.0, omega: 50.0 };
+    let sys = fpu::Fpu {
+        m: 1.0,
+        omega: 50.0,
+    };
     for i in 0..20 {
         let q = std::array::from_fn(|j| wiggle(i, j));
         let (s, d) = gradients(&sys, 0.0, q);

@@ -543,7 +543,10 @@ fn potentials_read_as_trees_are_derived_in_closed_form() {
         },
     );
     let gradient = &out[out.find("fn potential_gradient").unwrap()..];
-    assert!(!gradient.contains("DualSVec"), "no dual numbers:\n{gradient}");
+    assert!(
+        !gradient.contains("DualSVec"),
+        "no dual numbers:\n{gradient}"
+    );
     assert!(gradient.contains("__gradient[1] +="), "{gradient}");
     assert!(gradient.contains("__gradient[0] -="), "{gradient}");
     assert!(!out.contains("fn __potential_stiff_0"));
@@ -577,10 +580,16 @@ fn the_tree_reader_reads_what_it_can_differentiate_exactly() {
     };
     let read = [
         quote!({ k * (q[1] - q[0]).powi(3) }),
-        quote!({ let d = bead[1].x - bead[0].x; (k * d).sin() + d.cos().exp() }),
+        quote!({
+            let d = bead[1].x - bead[0].x;
+            (k * d).sin() + d.cos().exp()
+        }),
         quote!({ (tip - bead[1]).norm().ln() * k.sqrt() + t * q[0] }),
         quote!({ k / (1.0 + q[0] * q[0]).sqrt() - q[1].recip() * std::f64::consts::PI }),
-        quote!({ let (a, b) = (q[0], q[1]); a.powi(-2) * b / 2 }),
+        quote!({
+            let (a, b) = (q[0], q[1]);
+            a.powi(-2) * b / 2
+        }),
     ];
     for body in read {
         let gradient = gradient_of(body.clone());
@@ -589,7 +598,13 @@ fn the_tree_reader_reads_what_it_can_differentiate_exactly() {
     let unread = [
         quote!({ k * (q[1] - q[0]).abs() }),
         quote!({ q[0].powf(k) + q[1] }),
-        quote!({ if q[0] > 0.0 { q[1] } else { q[0] } }),
+        quote!({
+            if q[0] > 0.0 {
+                q[1]
+            } else {
+                q[0]
+            }
+        }),
         quote!({ q[0].tanh() + q[1] }),
         quote!({ q[0].hypot(q[1]) }),
         quote!({ q[0].max(q[1]) }),

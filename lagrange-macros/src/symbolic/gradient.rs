@@ -41,7 +41,10 @@ impl Gradients {
     /// The code adding every part's gradient to `__gradient` (on scalar `__S`, from `__q`, `__x`,
     /// `__rows`): the parameters the constants name in `f64`, one `let` per node, then the sums.
     pub fn emit(&self, model: &Model, parts: &[&PartGradient]) -> TokenStream {
-        let outputs: Vec<Id> = parts.iter().flat_map(|p| p.0.iter().map(|&(_, d)| d)).collect();
+        let outputs: Vec<Id> = parts
+            .iter()
+            .flat_map(|p| p.0.iter().map(|&(_, d)| d))
+            .collect();
         let (p, s) = (crate::expand::private(), quote!(__S));
         let lets = self.graph.emit(&outputs, &s);
         let params = model.params.iter().map(|p| &p.ident);

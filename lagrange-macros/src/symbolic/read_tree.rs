@@ -246,12 +246,12 @@ impl<'g> Reader<'g> {
             (BinOp::Sub(_), Scalar(a), Scalar(b)) => Some(Scalar(g.sub(a, b))),
             (BinOp::Mul(_), Scalar(a), Scalar(b)) => Some(Scalar(g.mul(a, b))),
             (BinOp::Div(_), Scalar(a), Scalar(b)) => Some(Scalar(g.div(a, b))),
-            (BinOp::Add(_), Vector(a), Vector(b)) if a.len() == b.len() => {
-                Some(Vector(a.iter().zip(&b).map(|(&a, &b)| g.add(a, b)).collect()))
-            }
-            (BinOp::Sub(_), Vector(a), Vector(b)) if a.len() == b.len() => {
-                Some(Vector(a.iter().zip(&b).map(|(&a, &b)| g.sub(a, b)).collect()))
-            }
+            (BinOp::Add(_), Vector(a), Vector(b)) if a.len() == b.len() => Some(Vector(
+                a.iter().zip(&b).map(|(&a, &b)| g.add(a, b)).collect(),
+            )),
+            (BinOp::Sub(_), Vector(a), Vector(b)) if a.len() == b.len() => Some(Vector(
+                a.iter().zip(&b).map(|(&a, &b)| g.sub(a, b)).collect(),
+            )),
             // Component by component, the scalar on the side it is written.
             (BinOp::Mul(_), Vector(v), Scalar(s)) => {
                 Some(Vector(v.iter().map(|&c| g.mul(c, s)).collect()))
@@ -377,7 +377,11 @@ impl<'g> Reader<'g> {
 
 /// Σ aᵢ bᵢ, left to right as `geometry::Vec2::dot` and `Vec3::dot` sum.
 fn dot(g: &mut Graph, a: &[Id], b: &[Id]) -> Id {
-    let mut terms = a.iter().zip(b).map(|(&a, &b)| g.mul(a, b)).collect::<Vec<_>>();
+    let mut terms = a
+        .iter()
+        .zip(b)
+        .map(|(&a, &b)| g.mul(a, b))
+        .collect::<Vec<_>>();
     let first = terms.remove(0);
     terms.into_iter().fold(first, |sum, term| g.add(sum, term))
 }
