@@ -221,7 +221,7 @@ mod tests {
             &pendulum_rhs(0.0, &[0.7], &[0.3]),
         );
         check(
-            &Kepler
+            &crate::kepler::KEPLER
                 .accelerations_at(0.0, &[0.7, -0.2], &[0.3, 1.0])
                 .unwrap(),
             &kepler_rhs(0.0, &[0.7, -0.2], &[0.0; 2]),
