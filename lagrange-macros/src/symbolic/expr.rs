@@ -151,8 +151,8 @@ impl Graph {
     pub fn add(&mut self, a: Id, b: Id) -> Id {
         match (self.value(a), self.value(b)) {
             (Some(x), Some(y)) => self.literal(x + y),
-            (Some(x), _) if x == 0.0 => b,
-            (_, Some(y)) if y == 0.0 => a,
+            (Some(0.0), _) => b,
+            (_, Some(0.0)) => a,
             _ => match self.negated(b) {
                 // a + (−b) = a − b, exactly.
                 Some(b) => self.sub(a, b),
@@ -164,8 +164,8 @@ impl Graph {
     pub fn sub(&mut self, a: Id, b: Id) -> Id {
         match (self.value(a), self.value(b)) {
             (Some(x), Some(y)) => self.literal(x - y),
-            (Some(x), _) if x == 0.0 => self.neg(b),
-            (_, Some(y)) if y == 0.0 => a,
+            (Some(0.0), _) => self.neg(b),
+            (_, Some(0.0)) => a,
             _ => self.node(Node::Sub(a, b)),
         }
     }
