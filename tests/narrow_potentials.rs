@@ -1,7 +1,8 @@
 //! Potentials declared one by one, or a potential written as a sum, have their gradients taken
-//! part by part on dual numbers seeded on each part's own coordinates (`Model::potential_gradient`).
-//! The same physics written as one potential through a local over every coordinate takes the
-//! dense gradient: they must agree to round-off — on the dense
+//! part by part (`Model::potential_gradient`): derived on the expression tree where the macro reads
+//! it, otherwise on dual numbers seeded on each part's own coordinates. The same physics written as
+//! one potential over every coordinate, passed through a function (which the macro reads neither
+//! as a tree nor term by term), takes the dense gradient: they must agree to round-off — on the dense
 //! pass, on the prepared pass of an affine mechanism, on the tree pass, and through the dual
 //! numbers of Radau5's Newton matrix.
 
@@ -66,13 +67,14 @@ pub mod springs_together {
     }
     #[potential]
     fn springs() -> f64 {
-        // Through a local: one term, on every coordinate (the dense gradient, for reference).
+        // Through a function: one term, not read, on every coordinate (the dense gradient, for
+        // reference).
         let total = k_wall * x[0] * x[0] / 2.0
             + k * (x[1] - x[0]).powi(2) / 2.0
             + k * (x[2] - x[1]).powi(2) / 2.0
             + k * (x[3] - x[2]).powi(2) / 2.0
             + a * x[3].powi(4);
-        total
+        std::convert::identity(total)
     }
 }
 
@@ -168,7 +170,7 @@ pub mod sprung_together {
     #[potential]
     fn springs() -> f64 {
         let total = c1 * theta1 * theta1 / 2.0 + c2 * (theta2 - 0.3).powi(2) / 2.0;
-        total
+        std::convert::identity(total)
     }
 }
 
@@ -249,7 +251,7 @@ pub mod cart_together {
     #[potential]
     fn springs() -> f64 {
         let total = k * (slider.x - cart.x - 0.5).powi(2) / 2.0 + c * theta * theta / 2.0;
-        total
+        std::convert::identity(total)
     }
 }
 

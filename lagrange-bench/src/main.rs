@@ -16,6 +16,7 @@
 
 mod diffsol_peer;
 mod fpu;
+mod kepler;
 mod pendulums;
 mod plot;
 mod problems;
@@ -661,7 +662,7 @@ fn main() {
     // 2. Kepler e = 0.6 over 5 periods.
     let kepler = Setup {
         name: "Kepler e=0.6",
-        mechanism: Kepler.validated().expect("valid parameters"),
+        mechanism: kepler::KEPLER.validated().expect("valid parameters"),
         start: kepler_start(),
         t_end: 10.0 * std::f64::consts::PI,
         reference: kepler_exact(10.0 * std::f64::consts::PI),
@@ -787,6 +788,7 @@ fn main() {
 
     let load_before = load_average();
     let agreement = [
+        peer_agreement::<_, 2, 4>(&kepler),
         peer_agreement::<_, 2, 4>(&double),
         peer_agreement::<_, 6, 12>(&fpu),
         peer_agreement::<_, 4, 8>(&chain),
@@ -932,13 +934,13 @@ fn write_markdown(dir: &std::path::Path, rows: &[Row], notes: &str, quick: bool)
          given). lagrange's methods run on validated handles (`mechanism.validated()`), as a simulation \
          would: the parameters are checked once, and the problems whose positions are affine in q (the \
          FPU chain, the wedge, the stiff chain) have J and the factors of their constant mass matrix \
-         prepared once. The pendulum, the double pendulum, the FPU chain, the stiff chain and the \
-         Cartesian pendulum are `#[mechanism]` declarations (the pendulums' equations derived by the \
-         macro in closed form, their constant factors prepared once; the FPU chain's seven springs each \
-         a potential of its own, so each gradient is taken on its own two coordinates); Kepler and the \
-         wedge are hand-written `Model`s. The adaptive methods, lagrange's and the peers' alike, run at \
-         rtol = atol = tol over the same grid of tolerances, half-decades from 1e-3 to 1e-13 (four \
-         decades with `--quick`).\n",
+         prepared once. The pendulum, Kepler, the double pendulum, the FPU chain, the stiff chain and \
+         the Cartesian pendulum are `#[mechanism]` declarations (the pendulums' equations derived by the \
+         macro in closed form, their constant factors prepared once; the potentials' gradients of Kepler, \
+         the FPU chain (its seven springs each a potential of its own) and the stiff chain derived by the \
+         macro on their expression trees); the wedge is a hand-written `Model`. The adaptive methods, \
+         lagrange's and the peers' alike, run at rtol = atol = tol over the same grid of tolerances, \
+         half-decades from 1e-3 to 1e-13 (four decades with `--quick`).\n",
         if quick { " -- --quick" } else { "" }
     );
     let _ = writeln!(s, "{notes}\n");

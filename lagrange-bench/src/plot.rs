@@ -1,11 +1,12 @@
 //! SVG plots of the report (plotters), drawn on log₁₀ axes.
 
-use crate::problems::{kepler_start, Kepler};
+use crate::kepler::{kepler, KEPLER};
+use crate::problems::kepler_start;
 use crate::Row;
 use lagrange_core::integrate::Observation;
 use lagrange_core::{
-    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, StormerVerlet,
-    Variational,
+    Coordinates, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State,
+    StormerVerlet, Variational,
 };
 use plotters::prelude::*;
 use std::path::Path;
@@ -144,19 +145,27 @@ pub fn work_precision(dir: &Path, problem: &str, rows: &[Row]) {
 /// |E − E₀| sampled once per period on Kepler e = 0.6 with 200 steps per period (fixed-step
 /// methods) and Dopri5 at tol 1e-8.
 pub fn kepler_long_run(periods: usize) -> Vec<(String, Vec<(f64, f64)>)> {
+    fn kepler_state() -> State<kepler::Coords> {
+        let s = kepler_start();
+        State::new(
+            s.t,
+            Coordinates::from_array(s.q),
+            Coordinates::from_array(s.v),
+        )
+    }
     let per = 200;
     let h = 2.0 * std::f64::consts::PI / per as f64;
     fn fixed<I: Integrator>(periods: usize, per: usize, h: f64) -> Vec<(f64, f64)> {
-        let mut s = kepler_start();
-        let e0 = Kepler.energy(&s).unwrap();
+        let mut s = kepler_state();
+        let e0 = KEPLER.energy(&s).unwrap();
         let mut out = Vec::new();
         for _ in 0..periods {
             for _ in 0..per {
-                if Kepler.step::<I>(&mut s, h).is_err() {
+                if KEPLER.step::<I>(&mut s, h).is_err() {
                     return out;
                 }
             }
-            out.push((s.t, (Kepler.energy(&s).unwrap() - e0).abs()));
+            out.push((s.t, (KEPLER.energy(&s).unwrap() - e0).abs()));
         }
         out
     }
@@ -179,15 +188,15 @@ pub fn kepler_long_run(periods: usize) -> Vec<(String, Vec<(f64, f64)>)> {
             fixed::<StormerVerlet>(periods, per, h),
         ),
     ];
-    let mut s = kepler_start();
-    let e0 = Kepler.energy(&s).unwrap();
+    let mut s = kepler_state();
+    let e0 = KEPLER.energy(&s).unwrap();
     let mut pts = Vec::new();
     let mut next = 2.0 * std::f64::consts::PI;
     let t_end = periods as f64 * 2.0 * std::f64::consts::PI;
-    let _ = Dopri5::new(1e-8, 1e-8).integrate(&Kepler, &mut s, t_end, &mut [], |o| {
+    let _ = Dopri5::new(1e-8, 1e-8).integrate(&KEPLER, &mut s, t_end, &mut [], |o| {
         if let Observation::Step { state, .. } = o {
             if state.t >= next {
-                pts.push((state.t, (Kepler.energy(state).unwrap() - e0).abs()));
+                pts.push((state.t, (KEPLER.energy(state).unwrap() - e0).abs()));
                 next += 2.0 * std::f64::consts::PI;
             }
         }

@@ -1,7 +1,7 @@
-//! The report's problems: Kepler and the wedge as hand-written [`Model`]s (what `#[mechanism]`
-//! generates), every problem's hand-written right-hand side for the peer solvers, and their exact
-//! or reference solutions. The pendulums are declared in [`crate::pendulums`], the chains and the
-//! constrained pendulum in [`crate::stiff`].
+//! The report's problems: the wedge as a hand-written [`Model`] (what `#[mechanism]` generates),
+//! every problem's hand-written right-hand side for the peer solvers, and their exact or reference
+//! solutions. Kepler is declared in [`crate::kepler`], the pendulums in [`crate::pendulums`], the
+//! chains and the constrained pendulum in [`crate::stiff`].
 
 use lagrange_core::{Model, Scalar, State};
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
@@ -62,30 +62,7 @@ pub fn pendulum_rhs(_t: f64, q: &[f64; 1], _v: &[f64; 1]) -> [f64; 1] {
 // ---------------------------------------------------------------------------------------------
 // 2. Kepler.
 
-/// Kepler problem in Cartesian coordinates, GM = 1: V = −1/r.
-pub struct Kepler;
-
-impl Model<2, 2> for Kepler {
-    type Coords = [f64; 2];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Ok(())
-    }
-    fn masses(&self) -> [f64; 2] {
-        [1.0, 1.0]
-    }
-    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] {
-        *q
-    }
-    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> D {
-        -(x[0] * x[0] + x[1] * x[1]).sqrt().recip()
-    }
-}
-// x = q is affine, but with the unit masses written as literals the dense pass folds M = I at
-// compile time, which is cheaper here than the prepared factors (`impl_mechanism!(.., affine)`).
-lagrange_core::impl_mechanism!(Kepler, 2, 2);
+// The mechanism: `crate::kepler::KEPLER`, V = −1/r.
 
 pub const KEPLER_E: f64 = 0.6;
 
@@ -112,11 +89,7 @@ pub fn kepler_start() -> State<[f64; 2]> {
     State::new(0.0, [1.0 - e, 0.0], [0.0, ((1.0 + e) / (1.0 - e)).sqrt()])
 }
 
-pub fn kepler_rhs(_t: f64, q: &[f64; 2], _v: &[f64; 2]) -> [f64; 2] {
-    let r2 = q[0] * q[0] + q[1] * q[1];
-    let r3 = r2 * r2.sqrt();
-    [-q[0] / r3, -q[1] / r3]
-}
+pub use crate::kepler::kepler_rhs;
 
 // ---------------------------------------------------------------------------------------------
 // 3. Double pendulum.
@@ -248,7 +221,7 @@ mod tests {
             &pendulum_rhs(0.0, &[0.7], &[0.3]),
         );
         check(
-            &Kepler
+            &crate::kepler::KEPLER
                 .accelerations_at(0.0, &[0.7, -0.2], &[0.3, 1.0])
                 .unwrap(),
             &kepler_rhs(0.0, &[0.7, -0.2], &[0.0; 2]),

@@ -1,6 +1,7 @@
-//! Which coordinates each declared potential, and each term of its sum, can depend on
-//! ([`narrow_potentials`]), so that its gradient is taken on dual numbers seeded on those alone:
-//! a spring between two masses of a chain of N costs a 2-wide gradient, not an N-wide one.
+//! The parts of the potential whose gradients `Model::potential_gradient` takes one by one
+//! ([`potential_parts`]), which coordinates each can depend on, and how each gradient is taken
+//! ([`own_gradient`]): a spring between two masses of a chain of N costs a 2-wide gradient, not an
+//! N-wide one.
 //!
 //! A potential's value written as a sum, `k/2·(q[1] − q[0])² + (q[2] − q[1])⁴ + …`, is read term
 //! by term ([`terms`]): the sum is split at its top-level `+` and `−`, and a constant factor
@@ -31,13 +32,12 @@ pub struct Part {
     pub slots: Vec<usize>,
 }
 
-/// The parts of the declared potentials, when the declaration allows narrow gradients: at least
-/// one potential, no field that varies in space (its potential is not declared function by
-/// function), and every part narrower than all N coordinates. `None` otherwise (the dense
-/// gradient is as narrow).
-pub fn narrow_potentials(model: &Model) -> Option<Vec<Part>> {
+/// The parts of the declared potentials, when `Model::potential_gradient` can take the gradient:
+/// at least one potential and no field that varies in space (its potential is not declared
+/// function by function). `None` otherwise.
+pub fn potential_parts(model: &Model) -> Option<Vec<Part>> {
     let n = model.dof();
-    if model.potentials.is_empty() || !model.gravities.is_empty() || n < 2 {
+    if model.potentials.is_empty() || !model.gravities.is_empty() {
         return None;
     }
     let slots_of = coordinate_slots(model);
@@ -67,7 +67,16 @@ pub fn narrow_potentials(model: &Model) -> Option<Vec<Part>> {
             });
         }
     }
-    parts.iter().all(|p| p.slots.len() < n).then_some(parts)
+    Some(parts)
+}
+
+/// Whether `Model::potential_gradient` is written, given which parts are `symbolic` (their
+/// gradient read off the expression tree, `crate::symbolic::gradient`; the others on dual numbers
+/// seeded on their own slots): when some part is symbolic, or every part is narrower than all N
+/// coordinates. Otherwise the dense gradient of `lagrange_core::dynamics` is as narrow.
+pub fn own_gradient(model: &Model, parts: &[Part], symbolic: &[bool]) -> bool {
+    let n = model.dof();
+    symbolic.iter().any(|&s| s) || (n >= 2 && parts.iter().all(|p| p.slots.len() < n))
 }
 
 /// The coordinate slots a whole block's uses can depend on.

@@ -9,9 +9,10 @@ use super::{
 use crate::attr::{Inertia, Kind};
 use crate::check::{self, Body, Dim, Model, Shape};
 use crate::lift;
-use crate::potentials::Part;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
+
+mod gradient;
 
 /// Parameters bound as `f64`, then each body's mass and inertia: shared by `validate` and `masses`.
 fn mass_bindings(model: &Model) -> TokenStream {
@@ -67,14 +68,7 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     let forces = has_forces.then(|| applied_forces_fn(model, Params::Fields));
     let weights = (!model.uniform_gravities.is_empty()).then(|| weights_fn(model));
     let depends = depends_const(model);
-    let narrow = crate::potentials::narrow_potentials(model);
-    let (potential_gradient, potential_methods) = match &narrow {
-        Some(parts) => (
-            Some(potential_gradient_fn(model, parts)),
-            Some(potential_methods(model, parts)),
-        ),
-        None => (None, None),
-    };
+    let (potential_gradient, potential_methods) = gradient::potential_gradient(model);
     quote! {
         #potential_methods
         impl #p::Model<#n, #k> for #params {
@@ -91,115 +85,6 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
             #potential_gradient
             #forces
             #weights
-        }
-    }
-}
-
-/// The name of part `index` of the potential (see [`crate::potentials::Part`]).
-fn part_method(model: &Model, parts: &[Part], index: usize) -> proc_macro2::Ident {
-    let decl = model.potentials[parts[index].potential];
-    let term = parts[..index]
-        .iter()
-        .filter(|p| p.potential == parts[index].potential)
-        .count();
-    format_ident!("__potential_{}_{}", decl.ident(), term)
-}
-
-/// Each part of the potential (a declared potential, or a term of its sum) as a method of its
-/// own on any scalar: what [`potential_gradient_fn`] evaluates on narrow dual numbers.
-fn potential_methods(model: &Model, parts: &[Part]) -> TokenStream {
-    let p = private();
-    let (params, n, k) = (model.params_ident, lit(model.dof()), lit(model.rows));
-    let prelude = prelude();
-    let bodies = bind_bodies(model);
-    // A part that depends on no coordinate adds nothing to the gradient and is not evaluated.
-    let methods = parts.iter().enumerate().filter(|(_, part)| !part.slots.is_empty()).map(|(index, part)| {
-        let decl = model.potentials[part.potential];
-        let ident = part_method(model, parts, index);
-        let inputs = bind_inputs_from(
-            model,
-            &model.names_used_by([decl]),
-            quote!(__q),
-            Params::Fields,
-        );
-        let (shared, blocks) = optimized_blocks_from(model, [&part.block], Params::Fields);
-        let block = &blocks[0];
-        quote! {
-            #[doc(hidden)]
-            #[inline(always)]
-            #[allow(unused_variables, clippy::all)]
-            fn #ident<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D {
-                #prelude
-                #inputs
-                #shared
-                #bodies
-                let __value: __D = #block;
-                __value
-            }
-        }
-    });
-    quote! {
-        impl #params {
-            #(#methods)*
-        }
-    }
-}
-
-/// `Model::potential_gradient`: each part of the potential on dual numbers seeded only on its own
-/// coordinate slots (from [`crate::potentials::narrow_potentials`]); x's rows carry their Jacobian
-/// rows restricted to those slots (a body a part names depends on no other coordinate).
-fn potential_gradient_fn(model: &Model, parts: &[Part]) -> TokenStream {
-    let p = private();
-    let (n, k) = (model.dof(), model.rows);
-    let (n_lit, k_lit) = (lit(n), lit(k));
-    let terms = parts
-        .iter()
-        .enumerate()
-        .filter(|(_, part)| !part.slots.is_empty())
-        .map(|(index, part)| {
-            let set = &part.slots;
-            let ident = part_method(model, parts, index);
-            let w = lit(set.len());
-            let dual = quote!(#p::num_dual::DualSVec<__S, #w>);
-            let seeds = (0..n).map(|j| match set.iter().position(|&s| s == j) {
-                Some(a) => {
-                    let a = lit(a);
-                    quote!(<#dual>::from_re(__q[#j]).derivative(#a))
-                }
-                None => quote!(<#dual>::from_re(__q[#j])),
-            });
-            let slots: Vec<_> = set.iter().map(|&s| lit(s)).collect();
-            let positions: Vec<_> = (0..set.len()).map(lit).collect();
-            quote! {
-                {
-                    let __qn: [#dual; #n_lit] = [#(#seeds),*];
-                    let __xn: [#dual; #k_lit] = #p::core::array::from_fn(|__i| {
-                        <#dual>::new(
-                            __x[__i],
-                            #p::num_dual::Derivative::new(__rows[__i].map(|__r| {
-                                #p::nalgebra::SVector::<__S, #w>::from([#(__r[#slots]),*])
-                            })),
-                        )
-                    });
-                    let __v = self.#ident(<#dual>::from_re(__t), &__qn, &__xn);
-                    if let #p::core::option::Option::Some(__g) = __v.eps.0 {
-                        #(__gradient[#slots] += __g[#positions];)*
-                    }
-                }
-            }
-        });
-    quote! {
-        #[inline]
-        fn potential_gradient<__S: #p::Scalar>(
-            &self,
-            __t: __S,
-            __q: &[__S; #n_lit],
-            __x: &[__S; #k_lit],
-            __rows: &[#p::core::option::Option<#p::nalgebra::SVector<__S, #n_lit>>; #k_lit],
-        ) -> #p::core::option::Option<#p::nalgebra::SVector<__S, #n_lit>> {
-            let mut __gradient = #p::nalgebra::SVector::<__S, #n_lit>::zeros();
-            #(#terms)*
-            #p::core::option::Option::Some(__gradient)
         }
     }
 }

@@ -30,8 +30,11 @@
 //! whose M has (q₂ − q₁)². Sines and cosines expand safely: sin θ₁ sin θ₂ + cos θ₁ cos θ₂ is
 //! cos(θ₁ − θ₂) to an error of the size of M's entries, as in the hand-derived forms.
 
+pub mod expr;
+pub mod gradient;
 pub mod poly;
 pub mod read;
+pub mod read_tree;
 
 use crate::check::{Dim, Model, Shape};
 use poly::{Atom, Poly};

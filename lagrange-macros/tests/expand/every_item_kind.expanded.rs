@@ -444,6 +444,7 @@ pub mod everything {
             __potential
         }
         #[inline]
+        #[allow(unused_variables, clippy::all)]
         fn potential_gradient<__S: ::lagrange::__private::Scalar>(
             &self,
             __t: __S,

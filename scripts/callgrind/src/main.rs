@@ -20,6 +20,10 @@ mod chains;
 #[path = "../../../lagrange-bench/src/fpu.rs"]
 mod fpu_report;
 use fpu_report::{fpu_chain, fpu_forces};
+// Kepler's problem of the work-precision report, and its accelerations written by hand.
+#[path = "../../../lagrange-bench/src/kepler.rs"]
+mod kepler_report;
+use kepler_report::{kepler, kepler_rhs, KEPLER};
 
 #[mechanism]
 pub mod pendulum {
@@ -192,12 +196,19 @@ fn chain_links(links: &str, calls: usize) -> f64 {
     macro_rules! run {
         ($module:ident, $ty:ident, $n:literal) => {{
             use chains::$module::*;
-            let sys = $ty { m: 1.0, l: 0.5, g: 9.81 };
+            let sys = $ty {
+                m: 1.0,
+                l: 0.5,
+                g: 9.81,
+            };
             let (q, v) = chain_state::<$n>();
             let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
             let mut acc = 0.0;
             for _ in 0..calls {
-                acc += black_box(&sys).accelerations(black_box(&s)).unwrap().to_array()[0];
+                acc += black_box(&sys)
+                    .accelerations(black_box(&s))
+                    .unwrap()
+                    .to_array()[0];
             }
             acc
         }};
@@ -261,7 +272,10 @@ fn assembled_wedge(p: &wedge_block::WedgeBlock) -> [f64; 2] {
     let (m00, m10, m11) = (big_m + m, m * c, m * (c * c + s * s));
     let (f0, f1) = (0.0, m * p.g * s);
     let inv_det = 1.0 / (m00 * m11 - m10 * m10);
-    [(m11 * f0 - m10 * f1) * inv_det, (m00 * f1 - m10 * f0) * inv_det]
+    [
+        (m11 * f0 - m10 * f1) * inv_det,
+        (m00 * f1 - m10 * f0) * inv_det,
+    ]
 }
 fn hw_cart(p: &cart_pendulum::CartPendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
     let (s, c) = q[1].sin_cos();
@@ -356,7 +370,10 @@ fn calls<M: Mechanism<N>, const N: usize>(
     fn run<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
         let mut acc = 0.0;
         for _ in 0..n {
-            acc += black_box(sys).accelerations(black_box(s)).unwrap().to_array()[0];
+            acc += black_box(sys)
+                .accelerations(black_box(s))
+                .unwrap()
+                .to_array()[0];
         }
         acc
     }
@@ -640,27 +657,57 @@ fn main() {
             }
         }
         "fpu" => {
-            let sys = fpu::Fpu { m: 1.0, omega: 50.0 };
+            let sys = fpu::Fpu {
+                m: 1.0,
+                omega: 50.0,
+            };
             let s = State::new(
                 0.0,
-                fpu::Coords { q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1] },
-                fpu::Coords { q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2] },
+                fpu::Coords {
+                    q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1],
+                },
+                fpu::Coords {
+                    q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2],
+                },
             );
             acc += calls(sys, &s, n, validated);
         }
         "fpu_springs" => {
-            let sys = fpu_chain::Fpu { m: 1.0, omega: 50.0 };
+            let sys = fpu_chain::Fpu {
+                m: 1.0,
+                omega: 50.0,
+            };
             let s = State::new(
                 0.0,
-                fpu_chain::Coords { q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1] },
-                fpu_chain::Coords { q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2] },
+                fpu_chain::Coords {
+                    q: [0.1, 0.2, -0.3, 0.05, 0.4, -0.1],
+                },
+                fpu_chain::Coords {
+                    q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2],
+                },
             );
             acc += calls(sys, &s, n, validated);
+        }
+        "kepler" => {
+            let s = State::new(
+                0.0,
+                kepler::Coords { x: 0.4, y: 0.3 },
+                kepler::Coords { x: -0.2, y: 1.7 },
+            );
+            acc += calls(KEPLER, &s, n, validated);
+        }
+        "hw_kepler" => {
+            let (q, v) = ([0.4, 0.3], [-0.2, 1.7]);
+            for _ in 0..n {
+                acc += kepler_rhs(0.0, black_box(&q), black_box(&v))[0];
+            }
         }
         "hw_fpu" => {
             let q = [0.1, 0.2, -0.3, 0.05, 0.4, -0.1];
             for _ in 0..n {
-                acc += fpu_forces(black_box(50.0), black_box(&q)).iter().sum::<f64>();
+                acc += fpu_forces(black_box(50.0), black_box(&q))
+                    .iter()
+                    .sum::<f64>();
             }
         }
         "hw_cartesian_pendulum" => {
@@ -673,7 +720,9 @@ fn main() {
             let q = [0.8 * th.sin(), -0.8 * th.cos()];
             let v = [0.8 * w * th.cos(), 0.8 * w * th.sin()];
             for _ in 0..n {
-                acc += constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))[0];
+                acc +=
+                    constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))
+                        [0];
             }
         }
         "cartesian_pendulum" => {

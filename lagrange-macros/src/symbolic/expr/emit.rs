@@ -1,0 +1,118 @@
+//! Straight-line code for a [`Graph`]: one `let` per node an output needs, in the order the nodes
+//! were built (operands first).
+
+use super::{operands, Graph, Id, Node};
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+impl Graph {
+    /// A node as an operand on scalar `S` (or in `f64` where `in_f64`).
+    fn operand(&self, id: Id, in_f64: bool, s: &TokenStream) -> TokenStream {
+        match (&self.nodes[id], in_f64 || self.varies[id]) {
+            (Node::Literal(bits), true) => {
+                let l = Literal::f64_unsuffixed(f64::from_bits(*bits));
+                quote!(#l)
+            }
+            (Node::Literal(bits), false) => {
+                let l = Literal::f64_unsuffixed(f64::from_bits(*bits));
+                quote!(<#s>::from(#l))
+            }
+            (_, true) => {
+                let n = name(id);
+                quote!(#n)
+            }
+            (_, false) => {
+                let n = name(id);
+                quote!(<#s>::from(#n))
+            }
+        }
+    }
+
+    /// `let`s for every node `outputs` need, in order: constants in `f64`, the others on `s`.
+    /// Literals are written where they are used.
+    pub fn emit(&self, outputs: &[Id], s: &TokenStream) -> TokenStream {
+        let mut needed = vec![false; self.nodes.len()];
+        let mut stack: Vec<Id> = outputs.to_vec();
+        // An output written `g -= a` needs a, not −a.
+        for id in &mut stack {
+            *id = self.negated(*id).unwrap_or(*id);
+        }
+        while let Some(n) = stack.pop() {
+            if !std::mem::replace(&mut needed[n], true) {
+                stack.extend(operands(&self.nodes[n]));
+            }
+        }
+        let mut out = TokenStream::new();
+        for (id, node) in self.nodes.iter().enumerate() {
+            if !needed[id] || matches!(node, Node::Literal(_)) {
+                continue;
+            }
+            let in_f64 = !self.varies[id];
+            let op = |a: Id| self.operand(a, in_f64, s);
+            // A binary operation with a constant on the right takes the `f64` as it is
+            // (`DualNum` is closed under operations with its primitive); a commutative one with
+            // the constant on the left is written the other way round (exact).
+            let binary = |a: Id, b: Id, symbol: TokenStream, commutes: bool| {
+                if !in_f64 && !self.varies[b] {
+                    let (a, b) = (op(a), self.operand(b, true, s));
+                    quote!(#a #symbol #b)
+                } else if !in_f64 && !self.varies[a] && commutes {
+                    let (a, b) = (self.operand(a, true, s), op(b));
+                    quote!(#b #symbol #a)
+                } else {
+                    let (a, b) = (op(a), op(b));
+                    quote!(#a #symbol #b)
+                }
+            };
+            let value = match node {
+                Node::Literal(_) => unreachable!("literals are written in place"),
+                Node::Constant(tokens) => tokens.0.clone(),
+                Node::Time => quote!(__t),
+                Node::Coordinate(j) => {
+                    let j = Literal::usize_unsuffixed(*j);
+                    quote!(__q[#j])
+                }
+                Node::Row(r) => {
+                    let r = Literal::usize_unsuffixed(*r);
+                    quote!(__x[#r])
+                }
+                Node::Add(a, b) => binary(*a, *b, quote!(+), true),
+                Node::Sub(a, b) => binary(*a, *b, quote!(-), false),
+                Node::Mul(a, b) => binary(*a, *b, quote!(*), true),
+                Node::Div(a, b) => binary(*a, *b, quote!(/), false),
+                Node::Neg(a) => {
+                    let a = op(*a);
+                    quote!(-#a)
+                }
+                Node::Powi(a, n) => {
+                    let a = op(*a);
+                    quote!(#a.powi(#n))
+                }
+                Node::Sqrt(a) => method(op(*a), "sqrt"),
+                Node::Sin(a) => method(op(*a), "sin"),
+                Node::Cos(a) => method(op(*a), "cos"),
+                Node::Exp(a) => method(op(*a), "exp"),
+                Node::Ln(a) => method(op(*a), "ln"),
+            };
+            let ty = if in_f64 { quote!(f64) } else { s.clone() };
+            let n = name(id);
+            out.extend(quote!(let #n: #ty = #value;));
+        }
+        out
+    }
+
+    /// The node as a value on `s`: its name, a literal lifted, a constant lifted.
+    pub fn scalar(&self, id: Id, s: &TokenStream) -> TokenStream {
+        self.operand(id, false, s)
+    }
+}
+
+fn method(receiver: TokenStream, name: &str) -> TokenStream {
+    let name = format_ident!("{}", name);
+    quote!(#receiver.#name())
+}
+
+/// `__e12`: the name of node 12.
+fn name(id: Id) -> proc_macro2::Ident {
+    format_ident!("__e{}", id)
+}
