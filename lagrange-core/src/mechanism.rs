@@ -36,11 +36,10 @@ pub trait Mechanism<const N: usize>: Dynamics<N> {
     /// A mechanism with constraints also refuses what its integrators refuse about the declaration
     /// itself (invalid friction coefficients, a velocity row that is not linear in q̇), but
     /// evaluates states off the constraints (see `Dynamics::check_constraints`).
-    #[inline]
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
-        // Equations in closed form are checked in one branch, inline in the caller (the hook is
-        // `None` otherwise); everything else, and a state where that branch fails, goes through
-        // the checks one at a time, which say what failed.
+        // Equations in closed form are checked in one branch (the hook is `None` otherwise);
+        // everything else, and a state where that branch fails, goes through the checks one at a
+        // time, out of line, which say what failed.
         if Self::CLOSED_FORM {
             self.check_parameters()?;
             let (q, v) = (state.q.to_array(), state.v.to_array());

@@ -18,8 +18,11 @@ mod fpu;
 #[path = "../../../../lagrange-bench/src/pendulums.rs"]
 #[allow(dead_code)]
 mod pendulums;
-#[path = "../../../../lagrange-bench/src/problems.rs"]
+#[path = "../../../../lagrange-bench/src/kepler.rs"]
 #[allow(dead_code)]
+mod kepler;
+#[path = "../../../../lagrange-bench/src/problems.rs"]
+#[allow(dead_code, unused_imports)]
 mod problems;
 use pendulums::{double_pendulum, DOUBLE_PENDULUM};
 use problems::double_pendulum_rhs;
