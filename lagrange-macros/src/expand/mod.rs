@@ -109,9 +109,10 @@ pub(crate) fn prelude() -> TokenStream {
 }
 
 /// Terms of the closed form per body beyond which the articulated-body recursion of a tree is
-/// cheaper (measured on the link-by-link chains, BENCHMARKS.md §2: 4 links, 11 terms per body, cost
-/// less in closed form; 8 links, 23 per body, by the recursion).
-const RECURSION_TERMS_PER_BODY: usize = 16;
+/// faster (measured on the link-by-link chains, BENCHMARKS.md §2: 8 links, 23 terms per body, take
+/// less time in closed form — the recursion executes fewer instructions there, but in series, leaf
+/// to root and back; 16 links, 47 per body, less by the recursion).
+const RECURSION_TERMS_PER_BODY: usize = 32;
 
 /// Whether `tree`'s articulated-body recursion (each coordinate moves one body) beats the closed
 /// form's `equations`: the closed form's terms grow with the square of the bodies, the
