@@ -264,8 +264,8 @@ impl Reader {
     }
 }
 
-/// A float or integer literal's value.
-fn number(lit: &Lit) -> Option<f64> {
+/// A float or integer literal's value (shared with `read_tree`).
+pub(super) fn number(lit: &Lit) -> Option<f64> {
     match lit {
         Lit::Float(f) => f.base10_parse().ok(),
         Lit::Int(i) => i.base10_parse().ok(),
@@ -273,8 +273,8 @@ fn number(lit: &Lit) -> Option<f64> {
     }
 }
 
-/// `vec2`, `vec3` or `planar` when `func` names one.
-fn constructor(func: &Expr) -> Option<&'static str> {
+/// `vec2`, `vec3` or `planar` when `func` names one (shared with `read_tree`).
+pub(super) fn constructor(func: &Expr) -> Option<&'static str> {
     let Expr::Path(path) = func else { return None };
     let ident = path.path.get_ident()?;
     ["vec2", "vec3", "planar"]

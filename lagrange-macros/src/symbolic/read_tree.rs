@@ -12,6 +12,7 @@
 //! its dual numbers.
 
 use super::expr::{Graph, Id, Node, TokenStream2};
+use super::read::{constructor, number};
 use crate::check::{Model, Shape};
 use proc_macro2::TokenTree;
 use quote::{quote, ToTokens};
@@ -386,15 +387,6 @@ fn dot(g: &mut Graph, a: &[Id], b: &[Id]) -> Id {
     terms.into_iter().fold(first, |sum, term| g.add(sum, term))
 }
 
-/// A float or integer literal's value.
-fn number(lit: &Lit) -> Option<f64> {
-    match lit {
-        Lit::Float(f) => f.base10_parse().ok(),
-        Lit::Int(i) => i.base10_parse().ok(),
-        _ => None,
-    }
-}
-
 /// An integer literal, possibly negated.
 fn integer(expr: &Expr) -> Option<i32> {
     match expr {
@@ -405,15 +397,6 @@ fn integer(expr: &Expr) -> Option<i32> {
         Expr::Paren(p) => integer(&p.expr),
         _ => None,
     }
-}
-
-/// `vec2`, `vec3` or `planar` when `func` names one.
-fn constructor(func: &Expr) -> Option<&'static str> {
-    let Expr::Path(path) = func else { return None };
-    let ident = path.path.get_ident()?;
-    ["vec2", "vec3", "planar"]
-        .into_iter()
-        .find(|name| ident == name)
 }
 
 fn construct(name: &str, args: Vec<Value>) -> Option<Value> {
