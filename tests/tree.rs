@@ -199,6 +199,18 @@ fn a_rheonomic_tree_with_potentials_forces_and_a_point_equals_the_dense_assembly
     }
 }
 
+/// The trees above move each body by coordinates of its own, so their `accelerations` come from
+/// the articulated-body recursion (`lagrange::tree::accelerations`), not from a solve with M: the
+/// comparisons with the dense pass test the recursion.
+#[test]
+fn these_trees_take_the_articulated_recursion() {
+    use lagrange::tree::Tree;
+    const {
+        assert!(<family_chain::Chain as Tree<5, 10, 1, 5>>::JOINTS);
+        assert!(<as_tree::Params as Tree<3, 6, 2, 3>>::JOINTS);
+    }
+}
+
 #[test]
 fn a_family_read_member_by_member_equals_the_dense_assembly() {
     let (m, l, g) = (1.0, 0.5, 9.81);
