@@ -70,17 +70,7 @@ pub fn equations(model: &Model) -> Option<Equations> {
     if !applies {
         return None;
     }
-    // Each coordinate's first slot in q: scalars one slot, arrays their length.
-    let (mut coords, mut arrays) = (HashMap::new(), HashMap::new());
-    let mut slot = 0;
-    for c in model.coords {
-        if c.array.is_some() {
-            arrays.insert(c.ident.to_string(), (slot, c.slots()));
-        } else {
-            coords.insert(c.ident.to_string(), slot);
-        }
-        slot += c.slots();
-    }
+    let (coords, arrays) = coordinate_slots(model);
     let params = model
         .params
         .iter()
@@ -141,6 +131,24 @@ pub fn equations(model: &Model) -> Option<Equations> {
     }
     let equations = assemble(model, &rows, reader.constants)?;
     (equations.terms() <= MAX_TERMS && equations.has_finite_factors()).then_some(equations)
+}
+
+/// Each coordinate's first slot in q, by name: the scalar coordinates', and the arrays' with their
+/// lengths (what both readers resolve names against).
+pub(crate) fn coordinate_slots(
+    model: &Model,
+) -> (HashMap<String, usize>, HashMap<String, (usize, usize)>) {
+    let (mut coords, mut arrays) = (HashMap::new(), HashMap::new());
+    let mut slot = 0;
+    for c in model.coords {
+        if c.array.is_some() {
+            arrays.insert(c.ident.to_string(), (slot, c.slots()));
+        } else {
+            coords.insert(c.ident.to_string(), slot);
+        }
+        slot += c.slots();
+    }
+    (coords, arrays)
 }
 
 /// At most this many products of terms in forming M and b (an estimate from the sizes of J's rows):

@@ -43,16 +43,7 @@ pub struct Reader<'g> {
 impl<'g> Reader<'g> {
     /// A reader of the potentials of `model` into `graph`.
     pub fn new(model: &Model, graph: &'g mut Graph) -> Self {
-        let (mut coords, mut arrays) = (HashMap::new(), HashMap::new());
-        let mut slot = 0;
-        for c in model.coords {
-            if c.array.is_some() {
-                arrays.insert(c.ident.to_string(), (slot, c.slots()));
-            } else {
-                coords.insert(c.ident.to_string(), slot);
-            }
-            slot += c.slots();
-        }
+        let (coords, arrays) = super::coordinate_slots(model);
         let mut bodies = HashMap::new();
         for body in &model.bodies {
             let stride = body.shape.rows();
