@@ -336,6 +336,70 @@ fn one_branch_checks_fall_back_to_errors_that_name_the_failure() {
         negative.accelerations(&at([0.5, 0.1, 1.0, 0.0], [0.0; 4])),
         Err(Error::InvalidInertia { .. })
     ));
+    // The parameters' test is part of the one branch: a non-finite or zero parameter fails it,
+    // and the checks one at a time name the parameter or the body.
+    let state = at([0.5, 0.1, 1.0, 0.0], [0.2, -0.3, 0.1, 0.4]);
+    let no_gravity = spherical::Spherical {
+        g: f64::NAN,
+        ..spherical()
+    };
+    match no_gravity.accelerations(&state) {
+        Err(Error::NonFiniteParameter { name, .. }) => assert_eq!(name, "g"),
+        other => panic!("expected a non-finite parameter, got {other:?}"),
+    }
+    let massless = spherical::Spherical {
+        m2: 0.0,
+        ..spherical()
+    };
+    match massless.accelerations(&state) {
+        Err(Error::InvalidInertia { body, .. }) => assert_eq!(body, "orbiter"),
+        other => panic!("expected an invalid inertia, got {other:?}"),
+    }
+    // A negative cart mass the bob outweighs: M = [[M + m, m l cos θ], [m l cos θ, m l²]] has
+    // det = m l² (M + m sin² θ) > 0 at θ = 1.2, so q̈ is finite and M's pivots pass; only the
+    // parameters' test refuses the call.
+    let light_cart = cart_pendulum::CartPendulum {
+        cart_mass: -0.1,
+        ..cart_pendulum()
+    };
+    let tilted = cart_pendulum::State::new(
+        0.0,
+        cart_pendulum::Coords::from_array([0.0, 1.2]),
+        cart_pendulum::Coords::from_array([0.3, -0.2]),
+    );
+    match light_cart.accelerations(&tilted) {
+        Err(Error::InvalidInertia { body, .. }) => assert_eq!(body, "cart"),
+        other => panic!("expected an invalid inertia, got {other:?}"),
+    }
+}
+
+/// Finite parameters whose sum overflows fail the one branch's test too; the checks one at a time
+/// then accept them and return q̈ as the dual passes give it.
+#[test]
+fn finite_parameters_whose_sum_overflows_are_accepted() {
+    // Each mass counted twice (as a parameter and as its body's mass): 4 × 6e307 overflows the
+    // sum, while M, 𝓕 and b stay finite and q̈ does not depend on the masses' common scale.
+    let sys = spherical::Spherical {
+        m: 6e307,
+        m2: 6e307,
+        l: 1.0,
+        g: 1.0,
+    };
+    let (q, v) = ([0.5, 0.1, 0.5, 0.3], [0.2, -0.3, 0.1, 0.4]);
+    let s = spherical::State::new(
+        0.0,
+        spherical::Coords::from_array(q),
+        spherical::Coords::from_array(v),
+    );
+    let dual = dynamics::accelerations_generic::<_, f64, 4, 6>(&sys, 0.0, &q, &v).unwrap();
+    let qdd = sys.accelerations(&s).unwrap().to_array();
+    // The closed form and the dual passes round the same formula differently: a few ulps.
+    for j in 0..4 {
+        assert!(
+            (qdd[j] - dual[j]).abs() <= 1e-13 * dual[j].abs().max(1.0),
+            "{qdd:?} vs {dual:?}"
+        );
+    }
 }
 
 /// The one branch tests the sum of the state and q̈: finite values whose sum overflows take the

@@ -447,9 +447,11 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
     finite_accelerations::<C, S, N>(qdd, t, q)
 }
 
-/// q̈ from M q̈ = 𝓕 − b with every check of a call in one branch: `Some(q̈)` when t, q, q̇ and q̈
-/// are all finite and M's pivots pass [`solve_spd`]'s test, `None` otherwise — the caller then takes
-/// the checked path ([`solve_accelerations`] after the state check), which says what failed.
+/// q̈ from M q̈ = 𝓕 − b with every check of a call in one branch: `Some(q̈)` when the parameters
+/// pass (`parameters_pass`: [`Model::parameters_pass`](crate::Model::parameters_pass), or `true`
+/// where they were checked once), t, q, q̇ and q̈ are all finite and M's pivots pass
+/// [`solve_spd`]'s test; `None` otherwise — the caller then takes the checked path (the parameter
+/// and state checks, then [`solve_accelerations`]), which says what failed.
 ///
 /// For equations whose evaluation is straight-line arithmetic (the closed form `#[mechanism]`
 /// derives), so that evaluating them at a state that turns out non-finite costs nothing but the
@@ -463,8 +465,9 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
 ///     generalized_forces: vector![-4.0],
 ///     inertial_terms: vector![0.0],
 /// };
-/// assert_eq!(regular_accelerations(&eom, 0.0, &[0.1], &[0.0]), Some([-2.0]));
-/// assert_eq!(regular_accelerations(&eom, 0.0, &[0.1], &[f64::NAN]), None);
+/// assert_eq!(regular_accelerations(&eom, 0.0, &[0.1], &[0.0], true), Some([-2.0]));
+/// assert_eq!(regular_accelerations(&eom, 0.0, &[0.1], &[f64::NAN], true), None);
+/// assert_eq!(regular_accelerations(&eom, 0.0, &[0.1], &[0.0], false), None);
 /// ```
 #[inline(always)]
 pub fn regular_accelerations<const N: usize>(
@@ -472,6 +475,7 @@ pub fn regular_accelerations<const N: usize>(
     t: f64,
     q: &[f64; N],
     v: &[f64; N],
+    parameters_pass: bool,
 ) -> Option<[f64; N]> {
     let rhs = eom.generalized_forces - eom.inertial_terms;
     let (qdd, pivots_pass) = solve_spd_flagged(&eom.mass_matrix, &rhs);
@@ -482,8 +486,8 @@ pub fn regular_accelerations<const N: usize>(
     for j in 0..N {
         sum += q[j] + v[j] + qdd[j];
     }
-    // `&`, not `&&`: one branch for both.
-    (pivots_pass & (sum * 0.0 == 0.0)).then(|| qdd.into())
+    // `&`, not `&&`: one branch for all three.
+    (parameters_pass & pivots_pass & (sum * 0.0 == 0.0)).then(|| qdd.into())
 }
 
 /// `qdd` when every entry is finite, otherwise [`Error::NonFiniteDynamics`] at (t, q).

@@ -37,11 +37,10 @@ pub trait Mechanism<const N: usize>: Dynamics<N> {
     /// itself (invalid friction coefficients, a velocity row that is not linear in q̇), but
     /// evaluates states off the constraints (see `Dynamics::check_constraints`).
     fn accelerations(&self, state: &State<Self::Coords>) -> Result<Self::Coords> {
-        // Equations in closed form are checked in one branch (the hook is `None` otherwise);
-        // everything else, and a state where that branch fails, goes through the checks one at a
-        // time, out of line, which say what failed.
+        // Equations in closed form are checked in one branch, parameters included (the hook is
+        // `None` otherwise); everything else, and a call where that branch fails, goes through the
+        // checks one at a time, out of line, which say what failed.
         if Self::CLOSED_FORM {
-            self.check_parameters()?;
             let (q, v) = (state.q.to_array(), state.v.to_array());
             if let Some(qdd) = self.regular_accelerations_at(state.t, &q, &v) {
                 return Ok(Self::Coords::from_array(qdd));
@@ -306,7 +305,8 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     #[doc(hidden)]
     /// q̈ at (t, q, q̇) with every check in one branch, for equations that are straight-line code
     /// ([`CLOSED_FORM`](Dynamics::CLOSED_FORM), see [`crate::dynamics::regular_accelerations`]):
-    /// `Some(q̈)` when the state and q̈ are finite and M is regular, `None` otherwise — and
+    /// `Some(q̈)` when the parameters pass their checks, the state and q̈ are finite and M is
+    /// regular, `None` otherwise — and
     /// always `None` (the default) for equations that run user code, which is never evaluated at
     /// a state before the state is checked.
     #[inline(always)]

@@ -177,6 +177,16 @@ pub trait Model<const N: usize, const K: usize> {
     /// Checks the parameters: finite, masses and inertias positive.
     fn validate(&self) -> Result<()>;
 
+    /// Whether [`validate`](Model::validate) passes, as one test without a branch per parameter:
+    /// what a call of equations in closed form folds into its single check
+    /// ([`crate::dynamics::regular_accelerations`]). `#[mechanism]` writes it for declarations
+    /// without spatial bodies; by default it is `validate` itself.
+    #[doc(hidden)]
+    #[inline]
+    fn parameters_pass(&self) -> bool {
+        self.validate().is_ok()
+    }
+
     /// μᵢ for each Cartesian coordinate (0 for massless force points).
     fn masses(&self) -> [f64; K];
 

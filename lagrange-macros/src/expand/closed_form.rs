@@ -3,7 +3,8 @@
 //! - `__lagrange_coefficients()`: every distinct constant factor (of parameters, masses and
 //!   constants as written) as an `f64` array — what a validated handle prepares once
 //!   (`Prepare::Prepared`), since parameters do not change while it exists;
-//! - `__lagrange_closed_form_with(k, q, q̇)`: M, 𝓕 and b from those coefficients, the sines and
+//! - `__lagrange_closed_form_with(k, q, q̇)`: M, 𝓕 and b from those coefficients (prepared, or
+//!   computed after the trigonometric calls when `k` is `None`), the sines and
 //!   cosines of the coordinates evaluated once each (one `sin_cos` where both appear) and each
 //!   distinct product of variables once;
 //! - `__lagrange_closed_form(q, q̇)`: the two together, what `equations_of_motion_at` calls.
@@ -82,18 +83,29 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
                 __q: &[#d; #n],
                 __v: &[#d; #n],
             ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
-                self.__lagrange_closed_form_with(&self.__lagrange_coefficients(), __q, __v)
+                self.__lagrange_closed_form_with(#p::core::option::Option::None, __q, __v)
             }
+            /// With the coefficients prepared (`Some`) or computed here (`None`), after the sines
+            /// and cosines: values computed before those calls would be kept on the stack across
+            /// them.
             #[inline(always)]
             #[allow(unused_variables, non_snake_case, clippy::all)]
             fn __lagrange_closed_form_with<#d: #p::Scalar>(
                 &self,
-                __k: &[f64; #count],
+                __prepared: #p::core::option::Option<&[f64; #count]>,
                 __q: &[#d; #n],
                 __v: &[#d; #n],
             ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
                 #prelude
                 #variables
+                let __computed: [f64; #count];
+                let __k: &[f64; #count] = match __prepared {
+                    #p::core::option::Option::Some(__k) => __k,
+                    #p::core::option::Option::None => {
+                        __computed = self.__lagrange_coefficients();
+                        &__computed
+                    }
+                };
                 #products
                 #p::dynamics::EquationsOfMotion::from_columns(
                     [#(#columns),*],

@@ -57,17 +57,20 @@ pub(super) fn mechanism_impl(
         Prepared::Coefficients(_) => Some(quote! {
             #[inline]
             fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-                let eom = self.__lagrange_closed_form_with::<S>(prepared, q, v);
+                let eom = self.__lagrange_closed_form_with::<S>(#p::core::option::Option::Some(prepared), q, v);
                 #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
             }
+            // The parameters' test joins the call's one branch; a handle checked them once.
             #[inline(always)]
             fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-                self.regular_accelerations_prepared_at(&self.__lagrange_coefficients(), t, q, v)
+                let eom = self.__lagrange_closed_form_with::<f64>(#p::core::option::Option::None, q, v);
+                let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
+                #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
             }
             #[inline(always)]
             fn regular_accelerations_prepared_at(&self, prepared: &Self::Prepared, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-                let eom = self.__lagrange_closed_form_with::<f64>(prepared, q, v);
-                #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v)
+                let eom = self.__lagrange_closed_form_with::<f64>(#p::core::option::Option::Some(prepared), q, v);
+                #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, true)
             }
         }),
         Prepared::Nothing => None,

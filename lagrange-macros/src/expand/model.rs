@@ -148,6 +148,7 @@ fn weights_fn(model: &Model) -> TokenStream {
 
 fn validate_fn(model: &Model) -> TokenStream {
     let p = private();
+    let (n, k) = (lit(model.dof()), lit(model.rows));
     let params = model.params.iter().map(|f| &f.ident);
     let strings = model.params.iter().map(|f| f.ident.to_string());
     let bindings = mass_bindings(model);
@@ -204,19 +205,29 @@ fn validate_fn(model: &Model) -> TokenStream {
             })
             .collect();
         let bindings = &bindings;
+        // The sum of finite values is finite (one that overflows only sends the caller to the
+        // checks that name a culprit, which then pass), and s·0 is 0 exactly when s is finite.
         quote! {
-            {
+            #[inline(always)]
+            #[allow(unused_variables, clippy::all)]
+            fn parameters_pass(&self) -> bool {
                 #bindings
-                if ((0.0 #( + self.#fields * 0.0 )* #( + #derived * 0.0 )*) == 0.0) #( & (#derived > 0.0) )* {
-                    return #p::core::result::Result::Ok(());
-                }
+                ((0.0 #( + self.#fields )* #( + #derived )*) * 0.0 == 0.0) #( & (#derived > 0.0) )*
+            }
+        }
+    });
+    let fast_path = fast.is_some().then(|| {
+        quote! {
+            if <Self as #p::Model<#n, #k>>::parameters_pass(self) {
+                return #p::core::result::Result::Ok(());
             }
         }
     });
     quote! {
+        #fast
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> #p::Result<()> {
-            #fast
+            #fast_path
             #(
                 if !self.#params.is_finite() {
                     #err(#p::Error::NonFiniteParameter { name: #strings, value: self.#params });

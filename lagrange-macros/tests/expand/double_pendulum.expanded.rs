@@ -142,22 +142,23 @@ pub mod double_pendulum {
             [true, true],
             [true, true],
         ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn parameters_pass(&self) -> bool {
+            let m1: f64 = self.m1;
+            let m2: f64 = self.m2;
+            let l1: f64 = self.l1;
+            let l2: f64 = self.l2;
+            let g: f64 = self.g;
+            let __mass_bob1: f64 = m1;
+            let __mass_bob2: f64 = m2;
+            ((0.0 + self.m1 + self.m2 + self.l1 + self.l2 + self.g + __mass_bob1
+                + __mass_bob2) * 0.0 == 0.0) & (__mass_bob1 > 0.0) & (__mass_bob2 > 0.0)
+        }
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            {
-                let m1: f64 = self.m1;
-                let m2: f64 = self.m2;
-                let l1: f64 = self.l1;
-                let l2: f64 = self.l2;
-                let g: f64 = self.g;
-                let __mass_bob1: f64 = m1;
-                let __mass_bob2: f64 = m2;
-                if ((0.0 + self.m1 * 0.0 + self.m2 * 0.0 + self.l1 * 0.0 + self.l2 * 0.0
-                    + self.g * 0.0 + __mass_bob1 * 0.0 + __mass_bob2 * 0.0) == 0.0)
-                    & (__mass_bob1 > 0.0) & (__mass_bob2 > 0.0)
-                {
-                    return ::lagrange::__private::core::result::Result::Ok(());
-                }
+            if <Self as ::lagrange::__private::Model<2, 4>>::parameters_pass(self) {
+                return ::lagrange::__private::core::result::Result::Ok(());
             }
             if !self.m1.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
@@ -284,13 +285,20 @@ pub mod double_pendulum {
             __q: &[__D; 2],
             __v: &[__D; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
-            self.__lagrange_closed_form_with(&self.__lagrange_coefficients(), __q, __v)
+            self.__lagrange_closed_form_with(
+                ::lagrange::__private::core::option::Option::None,
+                __q,
+                __v,
+            )
         }
+        /// With the coefficients prepared (`Some`) or computed here (`None`), after the sines
+        /// and cosines: values computed before those calls would be kept on the stack across
+        /// them.
         #[inline(always)]
         #[allow(unused_variables, non_snake_case, clippy::all)]
         fn __lagrange_closed_form_with<__D: ::lagrange::__private::Scalar>(
             &self,
-            __k: &[f64; 5],
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 5]>,
             __q: &[__D; 2],
             __v: &[__D; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
@@ -303,6 +311,14 @@ pub mod double_pendulum {
             use ::lagrange::__private::DualNum as _;
             let (__sin_0, __cos_0) = __q[0].sin_cos();
             let (__sin_1, __cos_1) = __q[1].sin_cos();
+            let __computed: [f64; 5];
+            let __k: &[f64; 5] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
             let (
                 __product_0,
                 __product_1,
@@ -434,7 +450,10 @@ pub mod double_pendulum {
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::Result<[S; 2]> {
-            let eom = self.__lagrange_closed_form_with::<S>(prepared, q, v);
+            let eom = self
+                .__lagrange_closed_form_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
             ::lagrange::__private::dynamics::solve_accelerations::<
                 Coords,
                 S,
@@ -448,12 +467,17 @@ pub mod double_pendulum {
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            self.regular_accelerations_prepared_at(
-                &self.__lagrange_coefficients(),
-                t,
-                q,
-                v,
-            )
+            let eom = self
+                .__lagrange_closed_form_with::<
+                    f64,
+                >(::lagrange::__private::core::option::Option::None, q, v);
+            let parameters_pass = <Self as ::lagrange::__private::Model<
+                2,
+                4,
+            >>::parameters_pass(self);
+            ::lagrange::__private::dynamics::regular_accelerations::<
+                2,
+            >(&eom, t, q, v, parameters_pass)
         }
         #[inline(always)]
         fn regular_accelerations_prepared_at(
@@ -463,8 +487,13 @@ pub mod double_pendulum {
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            let eom = self.__lagrange_closed_form_with::<f64>(prepared, q, v);
-            ::lagrange::__private::dynamics::regular_accelerations::<2>(&eom, t, q, v)
+            let eom = self
+                .__lagrange_closed_form_with::<
+                    f64,
+                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
+            ::lagrange::__private::dynamics::regular_accelerations::<
+                2,
+            >(&eom, t, q, v, true)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration

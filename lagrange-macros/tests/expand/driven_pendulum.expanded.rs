@@ -131,20 +131,22 @@ pub mod driven {
         const RHEONOMIC: bool = true;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn parameters_pass(&self) -> bool {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let a: f64 = self.a;
+            let w: f64 = self.w;
+            let g: f64 = self.g;
+            let __mass_bob: f64 = m;
+            ((0.0 + self.m + self.l + self.a + self.w + self.g + __mass_bob) * 0.0
+                == 0.0) & (__mass_bob > 0.0)
+        }
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            {
-                let m: f64 = self.m;
-                let l: f64 = self.l;
-                let a: f64 = self.a;
-                let w: f64 = self.w;
-                let g: f64 = self.g;
-                let __mass_bob: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.a * 0.0 + self.w * 0.0
-                    + self.g * 0.0 + __mass_bob * 0.0) == 0.0) & (__mass_bob > 0.0)
-                {
-                    return ::lagrange::__private::core::result::Result::Ok(());
-                }
+            if <Self as ::lagrange::__private::Model<1, 2>>::parameters_pass(self) {
+                return ::lagrange::__private::core::result::Result::Ok(());
             }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {

@@ -121,16 +121,17 @@ pub mod free {
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
         const DEPENDS: [[bool; 2]; 2] = [[true, false], [false, true]];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn parameters_pass(&self) -> bool {
+            let m: f64 = self.m;
+            let __mass_ball: f64 = m;
+            ((0.0 + self.m + __mass_ball) * 0.0 == 0.0) & (__mass_ball > 0.0)
+        }
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            {
-                let m: f64 = self.m;
-                let __mass_ball: f64 = m;
-                if ((0.0 + self.m * 0.0 + __mass_ball * 0.0) == 0.0)
-                    & (__mass_ball > 0.0)
-                {
-                    return ::lagrange::__private::core::result::Result::Ok(());
-                }
+            if <Self as ::lagrange::__private::Model<2, 2>>::parameters_pass(self) {
+                return ::lagrange::__private::core::result::Result::Ok(());
             }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {

@@ -122,18 +122,20 @@ pub mod pendulum {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn parameters_pass(&self) -> bool {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let __mass_bob: f64 = m;
+            ((0.0 + self.m + self.l + self.g + __mass_bob) * 0.0 == 0.0)
+                & (__mass_bob > 0.0)
+        }
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            {
-                let m: f64 = self.m;
-                let l: f64 = self.l;
-                let g: f64 = self.g;
-                let __mass_bob: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.g * 0.0 + __mass_bob * 0.0)
-                    == 0.0) & (__mass_bob > 0.0)
-                {
-                    return ::lagrange::__private::core::result::Result::Ok(());
-                }
+            if <Self as ::lagrange::__private::Model<1, 2>>::parameters_pass(self) {
+                return ::lagrange::__private::core::result::Result::Ok(());
             }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
@@ -224,13 +226,20 @@ pub mod pendulum {
             __q: &[__D; 1],
             __v: &[__D; 1],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 1> {
-            self.__lagrange_closed_form_with(&self.__lagrange_coefficients(), __q, __v)
+            self.__lagrange_closed_form_with(
+                ::lagrange::__private::core::option::Option::None,
+                __q,
+                __v,
+            )
         }
+        /// With the coefficients prepared (`Some`) or computed here (`None`), after the sines
+        /// and cosines: values computed before those calls would be kept on the stack across
+        /// them.
         #[inline(always)]
         #[allow(unused_variables, non_snake_case, clippy::all)]
         fn __lagrange_closed_form_with<__D: ::lagrange::__private::Scalar>(
             &self,
-            __k: &[f64; 2],
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 2]>,
             __q: &[__D; 1],
             __v: &[__D; 1],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 1> {
@@ -242,6 +251,14 @@ pub mod pendulum {
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let __sin_0 = __q[0].sin();
+            let __computed: [f64; 2];
+            let __k: &[f64; 2] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
             ::lagrange::__private::dynamics::EquationsOfMotion::from_columns(
                 [[<__D>::from(__k[0])]],
                 [-__sin_0 * __k[1]],
@@ -352,7 +369,10 @@ pub mod pendulum {
             q: &[S; 1],
             v: &[S; 1],
         ) -> ::lagrange::__private::Result<[S; 1]> {
-            let eom = self.__lagrange_closed_form_with::<S>(prepared, q, v);
+            let eom = self
+                .__lagrange_closed_form_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
             ::lagrange::__private::dynamics::solve_accelerations::<
                 Coords,
                 S,
@@ -366,12 +386,17 @@ pub mod pendulum {
             q: &[f64; 1],
             v: &[f64; 1],
         ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
-            self.regular_accelerations_prepared_at(
-                &self.__lagrange_coefficients(),
-                t,
-                q,
-                v,
-            )
+            let eom = self
+                .__lagrange_closed_form_with::<
+                    f64,
+                >(::lagrange::__private::core::option::Option::None, q, v);
+            let parameters_pass = <Self as ::lagrange::__private::Model<
+                1,
+                2,
+            >>::parameters_pass(self);
+            ::lagrange::__private::dynamics::regular_accelerations::<
+                1,
+            >(&eom, t, q, v, parameters_pass)
         }
         #[inline(always)]
         fn regular_accelerations_prepared_at(
@@ -381,8 +406,13 @@ pub mod pendulum {
             q: &[f64; 1],
             v: &[f64; 1],
         ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
-            let eom = self.__lagrange_closed_form_with::<f64>(prepared, q, v);
-            ::lagrange::__private::dynamics::regular_accelerations::<1>(&eom, t, q, v)
+            let eom = self
+                .__lagrange_closed_form_with::<
+                    f64,
+                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
+            ::lagrange::__private::dynamics::regular_accelerations::<
+                1,
+            >(&eom, t, q, v, true)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {

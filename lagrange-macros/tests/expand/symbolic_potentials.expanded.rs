@@ -175,20 +175,21 @@ pub mod springs {
             [false, false, true, false],
             [false, false, false, true],
         ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn parameters_pass(&self) -> bool {
+            let m: f64 = self.m;
+            let omega: f64 = self.omega;
+            let mu: f64 = self.mu;
+            let __mass_mass: f64 = m;
+            let __mass_planet: f64 = m;
+            ((0.0 + self.m + self.omega + self.mu + __mass_mass + __mass_planet) * 0.0
+                == 0.0) & (__mass_mass > 0.0) & (__mass_planet > 0.0)
+        }
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            {
-                let m: f64 = self.m;
-                let omega: f64 = self.omega;
-                let mu: f64 = self.mu;
-                let __mass_mass: f64 = m;
-                let __mass_planet: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.omega * 0.0 + self.mu * 0.0
-                    + __mass_mass * 0.0 + __mass_planet * 0.0) == 0.0)
-                    & (__mass_mass > 0.0) & (__mass_planet > 0.0)
-                {
-                    return ::lagrange::__private::core::result::Result::Ok(());
-                }
+            if <Self as ::lagrange::__private::Model<4, 6>>::parameters_pass(self) {
+                return ::lagrange::__private::core::result::Result::Ok(());
             }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {

@@ -146,21 +146,23 @@ pub mod wedge_block {
             [true, true],
             [true, true],
         ];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn parameters_pass(&self) -> bool {
+            let big_m: f64 = self.big_m;
+            let m: f64 = self.m;
+            let alpha: f64 = self.alpha;
+            let g: f64 = self.g;
+            let __mass_wedge: f64 = big_m;
+            let __mass_block: f64 = m;
+            ((0.0 + self.big_m + self.m + self.alpha + self.g + __mass_wedge
+                + __mass_block) * 0.0 == 0.0) & (__mass_wedge > 0.0)
+                & (__mass_block > 0.0)
+        }
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            {
-                let big_m: f64 = self.big_m;
-                let m: f64 = self.m;
-                let alpha: f64 = self.alpha;
-                let g: f64 = self.g;
-                let __mass_wedge: f64 = big_m;
-                let __mass_block: f64 = m;
-                if ((0.0 + self.big_m * 0.0 + self.m * 0.0 + self.alpha * 0.0
-                    + self.g * 0.0 + __mass_wedge * 0.0 + __mass_block * 0.0) == 0.0)
-                    & (__mass_wedge > 0.0) & (__mass_block > 0.0)
-                {
-                    return ::lagrange::__private::core::result::Result::Ok(());
-                }
+            if <Self as ::lagrange::__private::Model<2, 4>>::parameters_pass(self) {
+                return ::lagrange::__private::core::result::Result::Ok(());
             }
             if !self.big_m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
