@@ -189,6 +189,44 @@ fn a_spherical_pendulum_and_polar_coordinates_agree_with_the_dual_passes() {
     agrees_with_the_dual_passes(&spherical());
 }
 
+/// Affine positions in a uniform field: the plain mechanism's call takes the closed form (nothing
+/// prepared), the validated handle the constants it prepared (J and M's factors); both give the
+/// dual passes' q̈.
+#[test]
+fn an_affine_declaration_in_closed_form_keeps_its_prepared_handle() {
+    use lagrange_gallery::scenes::wedge_block::wedge_block::{Coords, State, WedgeBlock};
+    let sys = WedgeBlock {
+        wedge_mass: 3.0,
+        block_mass: 1.2,
+        alpha: 0.5,
+        h: 1.0,
+        g: 9.81,
+    };
+    agrees_with_the_dual_passes(&sys);
+    let handle = sys.validated().unwrap();
+    for (q, v) in states::<2>() {
+        let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+        let dual = dynamics::accelerations_generic::<_, f64, 2, 4>(&sys, 0.0, &q, &v).unwrap();
+        for qdd in [sys.accelerations(&s), handle.accelerations(&s)] {
+            let qdd = qdd.unwrap().to_array();
+            // The same formula rounded three ways (closed form, prepared factors, dual passes).
+            for j in 0..2 {
+                assert!(
+                    (qdd[j] - dual[j]).abs() <= 1e-13 * dual[j].abs().max(1.0),
+                    "{qdd:?} vs {dual:?}"
+                );
+            }
+        }
+    }
+    let bad = State::new(0.0, Coords::from_array([f64::NAN, 0.1]), Coords::default());
+    for result in [sys.accelerations(&bad), handle.accelerations(&bad)] {
+        assert!(
+            matches!(result, Err(Error::NonFiniteState { .. })),
+            "{result:?}"
+        );
+    }
+}
+
 #[test]
 fn the_gallery_pendulums_are_derived_in_closed_form() {
     use lagrange_gallery::scenes::double_pendulum::double_pendulum;

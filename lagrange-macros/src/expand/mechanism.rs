@@ -46,11 +46,30 @@ pub(super) fn mechanism_impl(
                     quote!(#p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v))
                 }
             };
+            // Affine positions in closed form as well (a uniform field the only force): a call
+            // on the plain mechanism, which prepares nothing, takes the closed form's one branch;
+            // a validated handle keeps its prepared constants (the hook's `None`).
+            let closed_form_call = matches!(equations, Equations::ClosedForm(_)).then(|| {
+                quote! {
+                    #[inline(always)]
+                    fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+                        let eom = self.__lagrange_closed_form::<f64>(q, v);
+                        let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
+                        #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
+                    }
+                    #[inline(always)]
+                    fn regular_accelerations_prepared_at(&self, prepared: &Self::Prepared, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+                        let _ = (prepared, t, q, v);
+                        #p::core::option::Option::None
+                    }
+                }
+            });
             Some(quote! {
                 #[inline]
                 fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
                     #body
                 }
+                #closed_form_call
             })
         }
         // Straight-line code: `accelerations` checks a call in one branch.

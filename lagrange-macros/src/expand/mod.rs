@@ -141,12 +141,11 @@ fn generate(model: &Model) -> TokenStream {
     let constrained = (!model.constraints.is_empty()).then_some(model.constraint_row_count());
     // Affine positions: J and M's factors prepared once, for the free and the constrained solve.
     let affine = crate::affine::is_affine(model);
-    // Otherwise the equations in closed form where the positions are read, a tree of
-    // translations from each body's own seeds, or the dense pass.
+    // The equations in closed form where the positions are read (for affine positions too: the
+    // plain mechanism's call, which prepares nothing), otherwise a tree of translations from each
+    // body's own seeds, or the dense pass.
     let tree = crate::structure::tree(model);
-    let closed_form = (!affine)
-        .then(|| crate::symbolic::equations(model))
-        .flatten()
+    let closed_form = crate::symbolic::equations(model)
         .filter(|equations| !recursion_is_cheaper(model, equations, tree.as_ref()));
     let tree = tree.filter(|_| closed_form.is_none());
     let tree_items = tree.as_ref().map(|tree| tree::tree_items(model, tree));

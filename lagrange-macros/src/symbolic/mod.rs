@@ -20,8 +20,8 @@
 //! The path is taken when the declaration is scleronomic and unconstrained, its bodies are
 //! particles, points and planar bodies declared one by one (no family, no spatial body), its only
 //! field is uniform and it has no potential and no force; and every position is read (an array
-//! coordinate by literal indices), with no sum of coordinates multiplying the same factor.
-//! Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
+//! coordinate by literal indices), with no sum of coordinates multiplying the same factor unless
+//! the row is affine in the coordinates (its derivatives are then constants). Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
 //!
 //! That last rule, and leaving potentials to the dual numbers, keep the closed form as accurate as
 //! the dual-number passes. Expanded, a polynomial in a difference of coordinates cancels: a spring's
@@ -186,6 +186,23 @@ impl Equations {
 /// Whether no two terms of `x` share their sines and cosines while they multiply different
 /// coordinates: (q₂ − q₁) sin θ would, and its products in M would cancel (see the module docs).
 fn free_of_cancellation(x: &Poly) -> bool {
+    // A row affine in q (each term at most one coordinate, to the first power, times constants:
+    // a block on a wedge, x + d cos α) has constant derivatives, so nothing formed from it can
+    // cancel.
+    let affine = x.terms.keys().all(|monomial| {
+        let degree: i32 = monomial
+            .iter()
+            .filter(|(a, _)| matches!(a, Atom::Coord(_)))
+            .map(|&(_, power)| power)
+            .sum();
+        degree <= 1
+            && monomial
+                .iter()
+                .all(|(a, _)| !matches!(a, Atom::Sin(_) | Atom::Cos(_) | Atom::Vel(_)))
+    });
+    if affine {
+        return true;
+    }
     let mut seen: Vec<Vec<(Atom, i32)>> = Vec::new();
     for monomial in x.terms.keys() {
         let coordinates = monomial
@@ -303,7 +320,12 @@ mod tests {
         let s = Poly::atom(Atom::Sin(0));
         // (q₂ − q₁) sin θ: its square in M would cancel.
         assert!(!free_of_cancellation(&q2.sub(&q1).mul(&s)));
-        assert!(!free_of_cancellation(&q2.sub(&q1)));
+        assert!(!free_of_cancellation(&q2.sub(&q1).mul(&q1)));
+        // q₂ − q₁ on its own, or x + d cos α (a constant factor): affine rows, whose derivatives
+        // are constants.
+        assert!(free_of_cancellation(&q2.sub(&q1)));
+        let cos_alpha = Poly::atom(Atom::Constant(0));
+        assert!(free_of_cancellation(&q1.add(&q2.mul(&cos_alpha))));
         // A cart plus an arm, polar coordinates: one coordinate per factor.
         let c = Poly::atom(Atom::Cos(0));
         assert!(free_of_cancellation(&q1.add(&s)));

@@ -167,6 +167,70 @@ pub mod free {
             [__bodies.ball.x, __bodies.ball.y]
         }
     }
+    impl Free {
+        /// The constant factors of the closed-form equations of motion.
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_coefficients(&self) -> [f64; 1] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let m: f64 = self.m;
+            let __masses = <Self as ::lagrange::__private::Model<2, 2>>::masses(self);
+            [__masses[0]]
+        }
+        #[inline(always)]
+        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
+            self.__lagrange_closed_form_with(
+                ::lagrange::__private::core::option::Option::None,
+                __q,
+                __v,
+            )
+        }
+        /// With the coefficients prepared (`Some`) or computed here (`None`), after the sines
+        /// and cosines: values computed before those calls would be kept on the stack across
+        /// them.
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_closed_form_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 1]>,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let __computed: [f64; 1];
+            let __k: &[f64; 1] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
+            ::lagrange::__private::dynamics::EquationsOfMotion::from_columns(
+                [
+                    [<__D>::from(__k[0]), <__D>::from(0.0)],
+                    [<__D>::from(0.0), <__D>::from(__k[0])],
+                ],
+                [<__D>::from(0.0), <__D>::from(0.0)],
+                [<__D>::from(0.0), <__D>::from(0.0)],
+            )
+        }
+    }
     impl ::lagrange::__private::Prepare for Free {
         type Prepared = ::lagrange::__private::lagrange_core::affine::AffineConstants<
             2,
@@ -186,7 +250,7 @@ pub mod free {
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         const SCLERONOMIC: bool = true;
-        const CLOSED_FORM: bool = false;
+        const CLOSED_FORM: bool = true;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
@@ -199,12 +263,7 @@ pub mod free {
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
-                Self,
-                S,
-                2,
-                2,
-            >(self, t, q, v)
+            self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
@@ -283,6 +342,33 @@ pub mod free {
                 2,
                 2,
             >(self, prepared, t, q, v)
+        }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            let eom = self.__lagrange_closed_form::<f64>(q, v);
+            let parameters_pass = <Self as ::lagrange::__private::Model<
+                2,
+                2,
+            >>::parameters_pass(self);
+            ::lagrange::__private::dynamics::regular_accelerations::<
+                2,
+            >(&eom, t, q, v, parameters_pass)
+        }
+        #[inline(always)]
+        fn regular_accelerations_prepared_at(
+            &self,
+            prepared: &Self::Prepared,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            let _ = (prepared, t, q, v);
+            ::lagrange::__private::core::option::Option::None
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Free {

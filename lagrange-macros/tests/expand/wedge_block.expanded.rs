@@ -250,13 +250,10 @@ pub mod wedge_block {
         }
     }
     impl WedgeBlock {
+        /// The constant factors of the closed-form equations of motion.
         #[inline(always)]
         #[allow(unused_variables, non_snake_case, clippy::all)]
-        fn __lagrange_displacement_wedge<__D: ::lagrange::__private::Scalar>(
-            &self,
-            __t: __D,
-            x: __D,
-        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+        fn __lagrange_coefficients(&self) -> [f64; 4] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
                 planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
@@ -264,15 +261,44 @@ pub mod wedge_block {
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
-            { vec2(x, <__D>::from(0.0)) }
+            let big_m: f64 = self.big_m;
+            let m: f64 = self.m;
+            let alpha: f64 = self.alpha;
+            let g: f64 = self.g;
+            let __constant_0: f64 = alpha.cos();
+            let __constant_1: f64 = alpha.sin();
+            let __masses = <Self as ::lagrange::__private::Model<2, 4>>::masses(self);
+            [
+                __masses[0] + __masses[2],
+                __constant_0 * __masses[2],
+                __constant_0 * __constant_0 * __masses[2]
+                    + __constant_1 * __constant_1 * __masses[2],
+                g * __constant_1 * __masses[2],
+            ]
         }
         #[inline(always)]
-        #[allow(unused_variables, non_snake_case, clippy::all)]
-        fn __lagrange_displacement_block<__D: ::lagrange::__private::Scalar>(
+        fn __lagrange_closed_form<__D: ::lagrange::__private::Scalar>(
             &self,
-            __t: __D,
-            d: __D,
-        ) -> ::lagrange::__private::geometry::Vec2<__D> {
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
+            self.__lagrange_closed_form_with(
+                ::lagrange::__private::core::option::Option::None,
+                __q,
+                __v,
+            )
+        }
+        /// With the coefficients prepared (`Some`) or computed here (`None`), after the sines
+        /// and cosines: values computed before those calls would be kept on the stack across
+        /// them.
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_closed_form_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 4]>,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
                 planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
@@ -280,90 +306,22 @@ pub mod wedge_block {
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
-            let alpha = <__D>::from(self.alpha);
-            let __param_0: __D = <__D>::from({
-                let alpha: f64 = self.alpha;
-                alpha.cos()
-            });
-            let __param_1: __D = <__D>::from({
-                let alpha: f64 = self.alpha;
-                alpha.sin()
-            });
-            { vec2(d * __param_0, -d * __param_1) }
-        }
-    }
-    impl ::lagrange::__private::tree::Tree<2, 4, 1, 2> for WedgeBlock {
-        const BODIES: [::lagrange::__private::tree::Body<1>; 2] = [
-            ::lagrange::__private::tree::Body {
-                row: 0,
-                dim: 2,
-                parent: ::lagrange::__private::core::option::Option::None,
-                seeds: [::lagrange::__private::tree::Seed::Coordinate(0)],
-            },
-            ::lagrange::__private::tree::Body {
-                row: 2,
-                dim: 2,
-                parent: ::lagrange::__private::core::option::Option::Some(0),
-                seeds: [::lagrange::__private::tree::Seed::Coordinate(1)],
-            },
-        ];
-        #[inline(always)]
-        #[allow(unused_variables, clippy::all)]
-        fn displacements<S: ::lagrange::__private::Scalar>(
-            &self,
-            __t: S,
-            __q: &[S; 2],
-            __v: &[S; 2],
-        ) -> [::lagrange::__private::tree::Seeded<S, 1>; 4] {
-            let __body_0 = self
-                .__lagrange_displacement_wedge(
-                    ::lagrange::__private::tree::time(
-                        __t,
-                        ::lagrange::__private::core::option::Option::None,
-                    ),
-                    ::lagrange::__private::tree::seed(__q[0], __v[0], 0),
-                );
-            let __body_1 = self
-                .__lagrange_displacement_block(
-                    ::lagrange::__private::tree::time(
-                        __t,
-                        ::lagrange::__private::core::option::Option::None,
-                    ),
-                    ::lagrange::__private::tree::seed(__q[1], __v[1], 0),
-                );
-            [__body_0.x, __body_0.y, __body_1.x, __body_1.y]
-        }
-        #[inline(always)]
-        fn mass_matrix<S: ::lagrange::__private::Scalar>(
-            __jacobian: &::lagrange::__private::tree::BodyJacobians<S, 1, 2>,
-            __composite: &[f64; 2],
-        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
-            let mut __m = ::lagrange::__private::nalgebra::SMatrix::<S, 2, 2>::zeros();
-            ::lagrange::__private::tree::couple::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(&mut __m, __jacobian, __composite, 0, 0);
-            ::lagrange::__private::tree::couple::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(&mut __m, __jacobian, __composite, 1, 1);
-            ::lagrange::__private::tree::couple::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(&mut __m, __jacobian, __composite, 1, 0);
-            __m
+            let __computed: [f64; 4];
+            let __k: &[f64; 4] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
+            ::lagrange::__private::dynamics::EquationsOfMotion::from_columns(
+                [
+                    [<__D>::from(__k[0]), <__D>::from(__k[1])],
+                    [<__D>::from(__k[1]), <__D>::from(__k[2])],
+                ],
+                [<__D>::from(0.0), <__D>::from(__k[3])],
+                [<__D>::from(0.0), <__D>::from(0.0)],
+            )
         }
     }
     impl ::lagrange::__private::Prepare for WedgeBlock {
@@ -385,27 +343,11 @@ pub mod wedge_block {
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
         );
         const SCLERONOMIC: bool = true;
-        const CLOSED_FORM: bool = false;
+        const CLOSED_FORM: bool = true;
         #[inline]
         fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
             <Self as ::lagrange::__private::Model<2, 4>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
-        }
-        #[inline]
-        fn accelerations_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ::lagrange::__private::Result<[S; 2]> {
-            ::lagrange::__private::tree::accelerations::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(self, t, q, v)
         }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
@@ -414,14 +356,7 @@ pub mod wedge_block {
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
-            ::lagrange::__private::tree::equations_of_motion::<
-                Self,
-                S,
-                2,
-                4,
-                1,
-                2,
-            >(self, t, q, v)
+            self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
@@ -500,6 +435,33 @@ pub mod wedge_block {
                 2,
                 4,
             >(self, prepared, t, q, v)
+        }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            let eom = self.__lagrange_closed_form::<f64>(q, v);
+            let parameters_pass = <Self as ::lagrange::__private::Model<
+                2,
+                4,
+            >>::parameters_pass(self);
+            ::lagrange::__private::dynamics::regular_accelerations::<
+                2,
+            >(&eom, t, q, v, parameters_pass)
+        }
+        #[inline(always)]
+        fn regular_accelerations_prepared_at(
+            &self,
+            prepared: &Self::Prepared,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            let _ = (prepared, t, q, v);
+            ::lagrange::__private::core::option::Option::None
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for WedgeBlock {
