@@ -49,10 +49,8 @@ fn defaults_are_those_of_dop853_f() {
 /// with the first step given as 1e-6 (WORK(7)); `dop853.f` (version of 2004) prints 1348 accepted
 /// and 121 rejected steps, 21553 evaluations (its count adds 2 at the start, one of them for the
 /// initial-step routine it skips when WORK(7) is given), y(2) = (1.763234540172087,
-/// −0.835688681930191) and a proposed next step of 8.656983588595286e-4. These are the counts of
-/// the Fortran code built from Hairer's sources by the `hwode` project (its
-/// `examples/dop853_vdp.f`, output kept as `russell_ode/data/logs/fortran_dop853_van_der_pol.txt`
-/// in the `russell` project).
+/// −0.835688681930191) and a proposed next step of 8.656983588595286e-4 (the output of Hairer's
+/// Fortran sources compiled as they are, published with the test data of the `russell` ODE crate).
 #[test]
 fn van_der_pol_takes_the_steps_of_dr_dop853() {
     let field = VanDerPol { eps: 1e-3 };
