@@ -52,8 +52,8 @@ mod tableau;
 
 pub(crate) use dense::accept;
 pub(crate) use stepper::attempt;
+pub use stepper::Dop853Stepper;
 pub(crate) use stepper::Stages;
-pub use stepper::{Dop853Stepper, Trial};
 
 /// Settings of the adaptive Dormand–Prince 8(5,3) method (see the [module docs](self)).
 ///

@@ -124,8 +124,13 @@ pub(crate) fn adaptive_step<T>(
             Ok((trial, err)) => {
                 let fac11 = err.powf(expo1);
                 if err <= 1.0 {
-                    let fac = (fac11 / control.fac_old.powf(st.beta) / st.safety)
-                        .clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
+                    // err_old^β, exactly 1 for the classical controller (β = 0): no `powf`.
+                    let pi = if st.beta == 0.0 {
+                        1.0
+                    } else {
+                        control.fac_old.powf(st.beta)
+                    };
+                    let fac = (fac11 / pi / st.safety).clamp(1.0 / st.fac_max, 1.0 / st.fac_min);
                     let mut h_new = h / fac;
                     if last_rejected {
                         h_new = h_new.min(h);
