@@ -7,8 +7,9 @@
 //! - METHOD: `dopri5`, `dop853` (lagrange's, on the `#[mechanism]` declaration through a validated
 //!   handle, `integrate` as the report runs it), `hw_dopri5`, `hw_dop853` (lagrange's, stepped
 //!   through `EmbeddedPair` on the hand-written equations of the peer: the integrator's own work
-//!   against the peer's on the same right-hand side), `peer_dopri5`, `peer_dop853` (`ode_solvers`
-//!   on the hand-written equations);
+//!   against the peer's on the same right-hand side), `field_dop853` (lagrange's, stepped the same
+//!   way on the declaration's accelerations: the cost of `integrate` around the steps),
+//!   `peer_dopri5`, `peer_dop853` (`ode_solvers` on the hand-written equations);
 //! - E: the tolerance 10^-E (rtol = atol).
 //!
 //! Each side has the report's settings (Dop853 without dense output; the peer's own controller
@@ -127,20 +128,39 @@ fn peer<const N: usize, const N2: usize>(
     }
 }
 
-/// One run of lagrange's `method` stepped through [`EmbeddedPair`] on the hand-written equations.
-fn hand_written<P: EmbeddedPair, C: Coordinates<N>, const N: usize>(
+/// The declaration's accelerations as a right-hand side of its own, stepped outside `integrate`.
+struct Declared<'m, M>(&'m M);
+
+impl<M: Mechanism<N>, const N: usize> AccelerationField<N> for Declared<'_, M> {
+    #[inline]
+    fn accelerations(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> lagrange::Result<[f64; N]> {
+        self.0.accelerations_at(t, q, v)
+    }
+
+    fn jacobians(
+        &self,
+        _t: f64,
+        _q: &[f64; N],
+        _v: &[f64; N],
+    ) -> lagrange::Result<(SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
+        unreachable!("the explicit pairs take no Jacobian")
+    }
+}
+
+/// One run of lagrange's `method` stepped through [`EmbeddedPair`] on `field`.
+fn on_field<P: EmbeddedPair, C: Coordinates<N>, const N: usize>(
     p: &Problem<N>,
+    field: &impl AccelerationField<N>,
     method: P,
 ) -> (f64, usize, usize) {
-    let field = HandWritten { rhs: p.rhs };
     let mut stats = Stats::default();
     let (mut t, mut q, mut v) = (0.0, p.q, p.v);
     let mut a = field.accelerations(t, &q, &v).unwrap();
     stats.evaluations += 1;
-    let mut memory = method.start(&field, (t, &q, &v, &a), &mut stats);
+    let mut memory = method.start(field, (t, &q, &v, &a), &mut stats);
     while t < p.t_end {
         let step = method
-            .step::<C, N>(&mut memory, &field, (t, &q, &v, &a), p.t_end, &mut stats)
+            .step::<C, N>(&mut memory, field, (t, &q, &v, &a), p.t_end, &mut stats)
             .unwrap();
         (t, q, v, a) = (step.t, step.q, step.v, step.a.unwrap());
     }
@@ -182,11 +202,13 @@ fn run<M: Mechanism<N>, const N: usize, const N2: usize>(
         h_max: p.t_end,
         ..Dop853::new(tol, tol)
     };
+    let hw = HandWritten { rhs: p.rhs };
     match method {
         "dopri5" => generated(sys, p, false, tol),
         "dop853" => generated(sys, p, true, tol),
-        "hw_dopri5" => hand_written::<_, M::Coords, N>(p, Dopri5::new(tol, tol)),
-        "hw_dop853" => hand_written::<_, M::Coords, N>(p, dop853),
+        "hw_dopri5" => on_field::<_, M::Coords, N>(p, &hw, Dopri5::new(tol, tol)),
+        "hw_dop853" => on_field::<_, M::Coords, N>(p, &hw, dop853),
+        "field_dop853" => on_field::<_, M::Coords, N>(p, &Declared(sys), dop853),
         "peer_dopri5" => peer::<N, N2>(p, false, tol),
         "peer_dop853" => peer::<N, N2>(p, true, tol),
         other => panic!("no adaptive method {other}"),
