@@ -15,6 +15,7 @@
 //! `reports/work-precision/` (or `--out DIR`).
 
 mod diffsol_peer;
+mod dop853_steps;
 mod fpu;
 mod kepler;
 mod pendulums;
@@ -91,6 +92,10 @@ struct Args {
     /// A shorter ladder and one timing repeat: a smoke run in seconds, not a report.
     #[arg(long)]
     quick: bool,
+    /// Instead of the report: the accepted and rejected steps and evaluations of Dop853 with
+    /// β = 0.04 and β = 0 against the peer's Dop853, on every problem and tolerance (no timing).
+    #[arg(long)]
+    dop853_steps: bool,
     /// Where the CSV, markdown and SVG files are written.
     #[arg(long, value_name = "DIR", default_value = "reports/work-precision")]
     out: PathBuf,
@@ -638,7 +643,11 @@ fn tolerances(quick: bool) -> Vec<f64> {
 }
 
 fn main() {
-    let Args { quick, out } = Args::parse();
+    let Args {
+        quick,
+        out,
+        dop853_steps,
+    } = Args::parse();
     let out_dir = out;
     std::fs::create_dir_all(&out_dir).expect("create output directory");
     let n_ladder = if quick { 4 } else { 8 };
@@ -786,6 +795,43 @@ fn main() {
         unstable_energy: 10.0,
     };
 
+    if dop853_steps {
+        let parts = [
+            dop853_steps::table::<_, 1, 2>(&pendulum),
+            dop853_steps::table::<_, 2, 4>(&kepler),
+            dop853_steps::table::<_, 2, 4>(&double),
+            dop853_steps::table::<_, 6, 12>(&fpu),
+            dop853_steps::table::<_, 2, 4>(&wedge),
+            dop853_steps::table::<_, 4, 8>(&chain),
+            dop853_steps::table::<_, 2, 4>(&cartesian),
+        ];
+        print!("{}", dop853_steps::HEADER);
+        for (rows, _) in &parts {
+            print!("{rows}");
+        }
+        println!(
+            "\nFewest evaluations of a run reaching the accuracy ({}):\n",
+            dop853_steps::VARIANTS.join(" / ")
+        );
+        println!("| problem | ≤ 1e-6 | ≤ 1e-10 |\n|---|---|---|");
+        let show = |c: [Option<usize>; 3]| {
+            c.map(|e| e.map_or("–".to_string(), |e| e.to_string()))
+                .join(" / ")
+        };
+        for ((_, cheapest), name) in parts.iter().zip([
+            pendulum.name,
+            kepler.name,
+            double.name,
+            fpu.name,
+            wedge.name,
+            chain.name,
+            cartesian.name,
+        ]) {
+            let at = |k: usize| show([cheapest[0][k], cheapest[1][k], cheapest[2][k]]);
+            println!("| {name} | {} | {} |", at(0), at(1));
+        }
+        return;
+    }
     let load_before = load_average();
     let agreement = [
         peer_agreement::<_, 2, 4>(&kepler),

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Instructions per `accelerations` call, generated and hand-written, under callgrind: the difference
 # between 3000 and 1000 calls, divided by 2000 (start-up cancels). Needs valgrind. `BIN=adaptive`
-# counts whole integrations of the report's double pendulum instead (see src/bin/adaptive.rs), with
+# counts whole integrations of the report's double pendulum, Kepler or FPU chain instead (modes in
+# src/bin/adaptive.rs), with
 # CALLS=100 (the difference between 300 and 100 runs, divided by 200).
 set -euo pipefail
 cd "$(dirname "$0")"

@@ -176,34 +176,40 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
 }
 
 /// What the explicit pairs differ in, below [`EmbeddedPair`]: their trials and dense outputs.
-trait ExplicitPair: Copy {
+pub(crate) trait ExplicitPair: Copy {
     const NAME: &'static str;
     /// The order of the propagated solution, for the choice of the first step (HNW I §II.4).
     const ORDER: i32;
     /// The controller's exponents (p, w): err^(p − β·w) (see [`adaptive_step`]).
     const EXPONENTS: (f64, f64);
-    /// What an attempted step hands to [`accept`](Self::accept): the new point and the stages.
-    type Attempt<const N: usize>;
+    /// The stages of one step, which its attempts fill in place and its completion reads.
+    type Stages<const N: usize>;
 
     /// The step-control settings, in the form both methods share.
     fn controls(&self) -> Dopri5;
 
-    /// One trial step of size h: (q₁, q̇₁), the error norm, and what `accept` needs.
+    /// A stage buffer for one step.
+    fn stages<const N: usize>() -> Self::Stages<N>;
+
+    /// One trial step of size h, its stages into `stages`: (q₁, q̇₁) and the error norm.
     #[allow(clippy::type_complexity)]
     fn attempt<C: Coordinates<N>, const N: usize>(
         &self,
         start: StepStart<'_, N>,
         h: f64,
+        stages: &mut Self::Stages<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-    ) -> Result<([f64; N], [f64; N], f64, Self::Attempt<N>)>;
+    ) -> Result<([f64; N], [f64; N], f64)>;
 
-    /// Completes an accepted attempt: q̈₁ at the new point and the step's dense output.
+    /// Completes the accepted attempt ending at `end` = (q₁, q̇₁) whose stages are in `stages`:
+    /// q̈₁ at the new point and the step's dense output.
     fn accept<const N: usize>(
         &self,
         start: StepStart<'_, N>,
         h: f64,
-        attempt: Self::Attempt<N>,
+        end: (&[f64; N], &[f64; N]),
+        stages: &mut Self::Stages<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
     ) -> Result<([f64; N], DenseOutput<N>)>;
@@ -213,33 +219,40 @@ impl ExplicitPair for Dopri5 {
     const NAME: &'static str = "Dopri5";
     const ORDER: i32 = 5;
     const EXPONENTS: (f64, f64) = (0.2, 0.75);
-    /// (q₁, q̇₁, q̈₁ (FSAL), stage data of the dense output).
-    type Attempt<const N: usize> = ([f64; N], [f64; N], [f64; N], [[f64; N]; 8]);
+    /// (q̈₁ (FSAL), stage data of the dense output).
+    type Stages<const N: usize> = ([f64; N], [[f64; N]; 8]);
 
     fn controls(&self) -> Dopri5 {
         *self
+    }
+
+    fn stages<const N: usize>() -> Self::Stages<N> {
+        ([0.0; N], [[0.0; N]; 8])
     }
 
     fn attempt<C: Coordinates<N>, const N: usize>(
         &self,
         start: StepStart<'_, N>,
         h: f64,
+        stages: &mut Self::Stages<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-    ) -> Result<([f64; N], [f64; N], f64, Self::Attempt<N>)> {
+    ) -> Result<([f64; N], [f64; N], f64)> {
         let (q1, v1, a1, err, k) = dopri5::trial::<C, N>(self, start, h, stats, acc)?;
-        Ok((q1, v1, err, (q1, v1, a1, k)))
+        *stages = (a1, k);
+        Ok((q1, v1, err))
     }
 
     fn accept<const N: usize>(
         &self,
         (t, q, v, _): StepStart<'_, N>,
         h: f64,
-        (q1, v1, a1, k): Self::Attempt<N>,
+        end: (&[f64; N], &[f64; N]),
+        (a1, k): &mut Self::Stages<N>,
         _stats: &mut Stats,
         _acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
     ) -> Result<([f64; N], DenseOutput<N>)> {
-        Ok((a1, dopri5::dense_output(t, h, (q, v), (&q1, &v1), &k)))
+        Ok((*a1, dopri5::dense_output(t, h, (q, v), end, k)))
     }
 }
 
@@ -247,34 +260,37 @@ impl ExplicitPair for Dop853 {
     const NAME: &'static str = "Dop853";
     const ORDER: i32 = 8;
     const EXPONENTS: (f64, f64) = (1.0 / 8.0, 0.2);
-    /// (the new point and error norm, the stages).
-    type Attempt<const N: usize> = (dop853::Trial<N>, dop853::Stages<N>);
+    type Stages<const N: usize> = dop853::Stages<N>;
 
     fn controls(&self) -> Dopri5 {
         self.shared()
+    }
+
+    fn stages<const N: usize>() -> Self::Stages<N> {
+        dop853::Stages::new()
     }
 
     fn attempt<C: Coordinates<N>, const N: usize>(
         &self,
         start: StepStart<'_, N>,
         h: f64,
+        stages: &mut Self::Stages<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-    ) -> Result<([f64; N], [f64; N], f64, Self::Attempt<N>)> {
-        let mut stages = dop853::Stages::new();
-        let trial = dop853::attempt::<C, N>(self, start, h, &mut stages, stats, acc)?;
-        Ok((trial.q1, trial.v1, trial.err, (trial, stages)))
+    ) -> Result<([f64; N], [f64; N], f64)> {
+        dop853::attempt::<C, N>(self, start, h, stages, stats, acc)
     }
 
     fn accept<const N: usize>(
         &self,
         start: StepStart<'_, N>,
         h: f64,
-        (trial, mut stages): Self::Attempt<N>,
+        end: (&[f64; N], &[f64; N]),
+        stages: &mut Self::Stages<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
     ) -> Result<([f64; N], DenseOutput<N>)> {
-        dop853::accept(self, start, h, &trial, &mut stages, stats, acc)
+        dop853::accept(self, start, h, end, stages, stats, acc)
     }
 }
 
@@ -299,18 +315,26 @@ fn explicit_start<P: ExplicitPair, const N: usize>(
     Controller { h, fac_old: 1e-4 }
 }
 
-/// [`EmbeddedPair::step`] of an explicit pair: the shared step loop and PI controller
-/// ([`adaptive_step`]) over its trials, then its dense output.
-fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
+/// An accepted step of an explicit pair: its end time, (q, q̇, q̈) there and its dense output.
+pub(crate) type ExplicitStep<const N: usize> = (f64, [f64; N], [f64; N], [f64; N], DenseOutput<N>);
+
+/// One accepted step of an explicit pair on `field`: the shared step loop and PI controller
+/// ([`adaptive_step`]) over its trials, whose stages are computed in place in `stages`, then
+/// its completion (FSAL evaluation and dense output). What [`EmbeddedPair::step`] and
+/// [`Dop853Stepper`](super::Dop853Stepper) take.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub(crate) fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     method: &P,
     control: &mut Controller,
+    stages: &mut P::Stages<N>,
     field: &impl AccelerationField<N>,
     start: StepStart<'_, N>,
     t_limit: f64,
     stats: &mut Stats,
-) -> Result<Accepted<N>> {
+) -> Result<ExplicitStep<N>> {
     let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-    let ((q, v, attempt), h, t) = adaptive_step(
+    let ((q, v), h, t) = adaptive_step(
         P::NAME,
         &method.controls(),
         P::EXPONENTS,
@@ -320,18 +344,12 @@ fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
         stats,
         |h, stats| {
             method
-                .attempt::<C, N>(start, h, stats, &acc)
-                .map(|(q1, v1, err, attempt)| ((q1, v1, attempt), err))
+                .attempt::<C, N>(start, h, stages, stats, &acc)
+                .map(|(q1, v1, err)| ((q1, v1), err))
         },
     )?;
-    let (a, dense) = method.accept(start, h, attempt, stats, &acc)?;
-    Ok(Accepted {
-        t,
-        q,
-        v,
-        a: Some(a),
-        dense,
-    })
+    let (a, dense) = method.accept(start, h, (&q, &v), stages, stats, &acc)?;
+    Ok((t, q, v, a, dense))
 }
 
 /// [`EmbeddedPair::shorten`] of an explicit pair: one trial of length h, accepted.
@@ -343,8 +361,9 @@ fn explicit_shorten<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     stats: &mut Stats,
 ) -> Result<Accepted<N>> {
     let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-    let (q, v, _, attempt) = method.attempt::<C, N>(start, h, stats, &acc)?;
-    let (a, dense) = method.accept(start, h, attempt, stats, &acc)?;
+    let mut stages = P::stages();
+    let (q, v, _) = method.attempt::<C, N>(start, h, &mut stages, stats, &acc)?;
+    let (a, dense) = method.accept(start, h, (&q, &v), &mut stages, stats, &acc)?;
     Ok(Accepted {
         t: start.0 + h,
         q,
@@ -390,7 +409,23 @@ macro_rules! explicit_embedded_pair {
                 t_limit: f64,
                 stats: &mut Stats,
             ) -> Result<Accepted<N>> {
-                explicit_step::<Self, C, N>(self, memory, field, start, t_limit, stats)
+                let mut stages = <Self as ExplicitPair>::stages();
+                let (t, q, v, a, dense) = explicit_step::<Self, C, N>(
+                    self,
+                    memory,
+                    &mut stages,
+                    field,
+                    start,
+                    t_limit,
+                    stats,
+                )?;
+                Ok(Accepted {
+                    t,
+                    q,
+                    v,
+                    a: Some(a),
+                    dense,
+                })
             }
 
             fn shorten<C: Coordinates<N>, const N: usize>(

@@ -1,33 +1,33 @@
 //! Completion of an accepted Dormand–Prince 8(5,3) step: the FSAL evaluation and the continuous
 //! extension of order 7 (or the cubic Hermite interpolant).
 
-use super::stepper::{evaluate_stage, Stages, Trial};
+use super::stepper::{evaluate_stage, Stages};
 use super::tableau::D;
 use super::Dop853;
 use crate::error::Result;
 use crate::integrate::dopri5::DenseOutput;
 use crate::integrate::solver::Stats;
 
-/// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈), whose stages are
-/// in `k`: the FSAL evaluation q̈₁ at the new point (stage 13), and the dense output — the
-/// 7th-order continuous extension of `dop853.f` (CONTD8, stages 14–16 evaluated here), or the
-/// cubic Hermite interpolant with `dense: false`.
+/// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈) to (q₁, q̇₁),
+/// whose stages are in `k`: the FSAL evaluation q̈₁ at the new point (stage 13), and the dense
+/// output — the 7th-order continuous extension of `dop853.f` (CONTD8, stages 14–16 evaluated
+/// here), or the cubic Hermite interpolant with `dense: false`.
 #[inline]
 pub(crate) fn accept<const N: usize>(
     st: &Dop853,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
     h: f64,
-    trial: &Trial<N>,
+    (q1, v1): (&[f64; N], &[f64; N]),
     k: &mut Stages<N>,
     stats: &mut Stats,
     acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
 ) -> Result<([f64; N], DenseOutput<N>)> {
     stats.evaluations += 1;
-    let a1 = acc(t + h, &trial.q1, &trial.v1)?;
-    k.kq[12] = trial.v1;
+    let a1 = acc(t + h, q1, v1)?;
+    k.kq[12] = *v1;
     k.ka[12] = a1;
     if !st.dense {
-        let dense = DenseOutput::hermite(t, h, (q, v, a), (&trial.q1, &trial.v1, &a1));
+        let dense = DenseOutput::hermite(t, h, (q, v, a), (q1, v1, &a1));
         return Ok((a1, dense));
     }
     let y = (t, q, v);
@@ -53,7 +53,6 @@ pub(crate) fn accept<const N: usize>(
         }
         r
     };
-    let dense =
-        DenseOutput::from_coefficients(t, h, make(q, &trial.q1, &k.kq), make(v, &trial.v1, &k.ka));
+    let dense = DenseOutput::from_coefficients(t, h, make(q, q1, &k.kq), make(v, v1, &k.ka));
     Ok((a1, dense))
 }

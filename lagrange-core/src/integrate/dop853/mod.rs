@@ -13,8 +13,14 @@
 //!   [`Dopri5`], over all q and v components), which behaves like O(h⁸).
 //! - Step-size control: the PI controller of HNW I §II.4 / Hairer & Wanner, *Solving ODEs II*,
 //!   §IV.2 (Gustafsson), h_new = h·min(fac_max, max(fac_min, err^(−1/8 + 0.2β)·err_old^β / safety)),
-//!   the form of `dop853.f`; β = 0.04 here by default (Hairer's code defaults to β = 0, the classical
-//!   controller, which `beta: 0.0` selects).
+//!   the form of `dop853.f`, with its defaults: β = 0 (the classical controller h_new =
+//!   h·min(6, max(0.333, safety·err^(−1/8)))), safety 0.9, fac_min = 0.333, fac_max = 6. With these
+//!   the steps are those of `dop853.f` (a test reproduces its driver's counts on Van der Pol's
+//!   equation). `beta` stays a setting: β = 0.04 (DOPRI5's default) damps the step-size
+//!   oscillations where stability limits the step, at the price of more accepted steps where
+//!   accuracy does (BENCHMARKS.md §13 has the counts on the work-precision problems).
+//! - Largest step: by default (`h_max` infinite) [`Dop853::integrate`] bounds it by the
+//!   integration interval t_end − t₀, as `dop853.f` does (it also bounds the first step's probe).
 //! - Dense output: the continuous extension of order 7 of `dop853.f` (CONTD8), three more
 //!   evaluations per accepted step (`dense: false` skips them and interpolates by cubic Hermite
 //!   instead, order 3).
@@ -46,8 +52,8 @@ mod tableau;
 
 pub(crate) use dense::accept;
 pub(crate) use stepper::attempt;
+pub use stepper::Dop853Stepper;
 pub(crate) use stepper::Stages;
-pub use stepper::{Dop853Stepper, Trial};
 
 /// Settings of the adaptive Dormand–Prince 8(5,3) method (see the [module docs](self)).
 ///
@@ -85,7 +91,7 @@ pub struct Dop853 {
     pub atol: f64,
     /// First step; `None` chooses it (HNW I §II.4).
     pub h_init: Option<f64>,
-    /// Largest step.
+    /// Largest step; infinite (the default): the integration interval in [`Dop853::integrate`].
     pub h_max: f64,
     /// Most step attempts (accepted + rejected) of one [`Dop853::integrate`] call.
     pub max_steps: usize,
@@ -103,8 +109,8 @@ pub struct Dop853 {
 }
 
 impl Default for Dop853 {
-    /// rtol = 1e-6, atol = 1e-9, `dop853.f`'s controller constants (safety 0.9, factors 1/3…6) with
-    /// β = 0.04, dense output on.
+    /// rtol = 1e-6, atol = 1e-9, `dop853.f`'s controller constants (safety 0.9, factors 0.333…6,
+    /// β = 0: the classical controller), dense output on.
     fn default() -> Self {
         Dop853 {
             rtol: 1e-6,
@@ -113,9 +119,9 @@ impl Default for Dop853 {
             h_max: f64::INFINITY,
             max_steps: 1_000_000,
             safety: 0.9,
-            fac_min: 1.0 / 3.0,
+            fac_min: 0.333,
             fac_max: 6.0,
-            beta: 0.04,
+            beta: 0.0,
             dense: true,
         }
     }
@@ -171,7 +177,16 @@ impl Dop853 {
         {
             return outcome;
         }
-        let mut stepper = Dop853Stepper::new(mechanism, *self, state)?;
+        // dop853.f: HMAX = XEND − X unless given.
+        let settings = if self.h_max == f64::INFINITY && t_end > state.t {
+            Dop853 {
+                h_max: t_end - state.t,
+                ..*self
+            }
+        } else {
+            *self
+        };
+        let mut stepper = Dop853Stepper::new(mechanism, settings, state)?;
         let outcome = stepper.integrate(t_end, events, observer)?;
         *state = match outcome.reason {
             StopReason::Event(hit) => hit.state,

@@ -1,13 +1,11 @@
 //! One Dormand–Prince 8(5,3) step: the stages, the trial step with its error norm, and the
 //! [`Dop853Stepper`] that strings accepted steps together.
 
-use super::dense::accept;
 use super::tableau::{A, B, BHH, C, E};
 use super::Dop853;
 use crate::error::{Error, Result};
-use crate::integrate::dopri5::{
-    adaptive_step, initial_step, project_accepted, ratio, Controller, DenseOutput,
-};
+use crate::integrate::dopri5::{initial_step, project_accepted, ratio, Controller, DenseOutput};
+use crate::integrate::pair::{explicit_step, OfMechanism};
 use crate::integrate::solver::{Stats, Stepper};
 use crate::mechanism::{diagnose, Mechanism};
 use crate::model::{check_state, Coordinates, State};
@@ -21,19 +19,11 @@ pub struct Dop853Stepper<'m, M: Mechanism<N>, const N: usize> {
     pub(super) q: [f64; N],
     pub(super) v: [f64; N],
     a: [f64; N],
-    h: f64,
-    fac_old: f64,
+    control: Controller,
+    /// The stages of the step being taken, kept from step to step (so not cleared each time).
+    stages: Stages<N>,
     dense: DenseOutput<N>,
     pub(super) stats: Stats,
-}
-
-/// One trial step of [`Dop853`]: the new (q, v) and the error norm (its stages are kept apart, in
-/// the buffer it was computed into).
-#[derive(Clone, Copy, Debug)]
-pub struct Trial<const N: usize> {
-    pub(crate) q1: [f64; N],
-    pub(crate) v1: [f64; N],
-    pub(crate) err: f64,
 }
 
 /// The stages of one [`Dop853`] step, position parts kq (the stage velocities) and velocity parts
@@ -87,8 +77,8 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
             q,
             v,
             a,
-            h,
-            fac_old: 1e-4,
+            control: Controller { h, fac_old: 1e-4 },
+            stages: Stages::new(),
             dense: DenseOutput::constant(t, &q, &v),
             stats,
         })
@@ -96,7 +86,7 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
 
     /// The step the controller proposes next.
     pub fn proposed_step(&self) -> f64 {
-        self.h
+        self.control.h
     }
 
     /// Length of the last accepted step.
@@ -108,46 +98,22 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
     /// needed, as [`Dopri5Stepper::step`](crate::integrate::Dopri5Stepper::step) does. On error
     /// the accepted state is unchanged.
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
-        let mut control = Controller {
-            h: self.h,
-            fac_old: self.fac_old,
-        };
-        let mut stats = self.stats;
-        let acc = mechanism_accelerations(self.mechanism);
+        let (mut control, mut stats) = (self.control, self.stats);
         let start = (self.t, &self.q, &self.v, &self.a);
-        let settings = self.settings;
-        let mut stages = Stages::new();
-        let (trial, h, t_new) = adaptive_step(
-            "Dop853",
-            &settings.shared(),
-            (1.0 / 8.0, 0.2),
-            self.t,
-            t_limit,
+        let (t_new, q1, v1, a1, dense) = explicit_step::<Dop853, M::Coords, N>(
+            &self.settings,
             &mut control,
+            &mut self.stages,
+            &OfMechanism(self.mechanism),
+            start,
+            t_limit,
             &mut stats,
-            |h, stats| {
-                attempt::<M::Coords, N>(&settings, start, h, &mut stages, stats, &acc)
-                    .map(|trial| (trial, trial.err))
-            },
         )?;
-        // FSAL: q̈ at the new point (stage 13), then the dense output, then the projection.
-        let (a1, dense) = accept(&settings, start, h, &trial, &mut stages, &mut stats, &acc)?;
-        let (qp, vp, ap) =
-            project_accepted(self.mechanism, t_new, (trial.q1, trial.v1, a1), &mut stats)?;
+        let (qp, vp, ap) = project_accepted(self.mechanism, t_new, (q1, v1, a1), &mut stats)?;
         self.dense = dense;
         (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
-        (self.h, self.fac_old, self.stats) = (control.h, control.fac_old, stats);
+        (self.control, self.stats) = (control, stats);
         Ok(())
-    }
-}
-
-/// q̈ of a mechanism, as the stages evaluate it.
-fn mechanism_accelerations<M: Mechanism<N>, const N: usize>(
-    m: &M,
-) -> impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]> + '_ {
-    move |t, q, v| {
-        m.accelerations_at(t, q, v)
-            .map_err(|e| diagnose(m, t, q, v, e))
     }
 }
 
@@ -178,21 +144,24 @@ pub(super) fn evaluate_stage<const I: usize, const N: usize>(
     Ok(())
 }
 
-/// Σⱼ wⱼ kⱼ[n] over stages 1…12 (0-based 0…11), the zero weights skipped.
+/// Σⱼ wⱼ kⱼ over stages 1…12 (0-based 0…11), componentwise, the zero weights skipped (the weights
+/// are constants: the loop unrolls over the nonzero ones, each a sweep over the N components).
 #[inline(always)]
-fn weighted<const N: usize>(w: &[f64; 12], k: &[[f64; N]; 16], n: usize) -> f64 {
-    let mut s = 0.0;
+fn weighted<const N: usize>(w: &[f64; 12], k: &[[f64; N]; 16]) -> [f64; N] {
+    let mut s = [0.0; N];
     for j in 0..12 {
         if w[j] != 0.0 {
-            s += w[j] * k[j][n];
+            for n in 0..N {
+                s[n] += w[j] * k[j][n];
+            }
         }
     }
     s
 }
 
 /// One trial step of size h from (t, q, v) with q̈ = `a` there, on the accelerations `acc`: stages
-/// 1…12 into `k`, the 8th-order solution and the error norm. What [`Dop853Stepper`] attempts on a
-/// mechanism's accelerations, and the contact solver on those of a frozen constraint mode.
+/// 1…12 into `k`, the 8th-order solution (q₁, q̇₁) and the error norm. What every Dop853 step
+/// attempts ([`explicit_step`]), on a mechanism's accelerations or any other field.
 pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
     st: &Dop853,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
@@ -200,7 +169,7 @@ pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
     k: &mut Stages<N>,
     stats: &mut Stats,
     acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-) -> Result<Trial<N>> {
+) -> Result<([f64; N], [f64; N], f64)> {
     k.kq[0] = *v;
     k.ka[0] = *a;
     let y = (t, q, v);
@@ -217,16 +186,16 @@ pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
     evaluate_stage::<11, N>(y, h, k, stats, acc)?;
     // dop853.f: k₄ = Σⱼ bⱼ kⱼ and y₁ = y₀ + h·k₄; the 5th-order error h·Σⱼ eⱼ kⱼ and the 3rd-order
     // one h·(k₄ − bhh₁k₁ − bhh₂k₉ − bhh₃k₁₂) (the factor h is applied to the norm below).
-    let (mut q1, mut v1) = (*q, *v);
+    // The sums of squares run over y = (q, q̇) in this order, as over dop853.f's y.
+    let (mut q1, mut v1) = ([0.0; N], [0.0; N]);
     let (mut err5, mut err3) = (0.0, 0.0);
-    for n in 0..N {
-        for (kx, y0, y1) in [(&k.kq, q[n], &mut q1[n]), (&k.ka, v[n], &mut v1[n])] {
-            let bsum = weighted(&B, kx, n);
-            *y1 = y0 + h * bsum;
-            let e5 = weighted(&E, kx, n);
-            let e3 = bsum - BHH[0] * kx[0][n] - BHH[1] * kx[8][n] - BHH[2] * kx[11][n];
-            let sc = st.atol + st.rtol * y0.abs().max(y1.abs());
-            err5 += ratio(e5, sc).powi(2);
+    for (kx, y0, y1) in [(&k.kq, q, &mut q1), (&k.ka, v, &mut v1)] {
+        let (bsum, e5) = (weighted(&B, kx), weighted(&E, kx));
+        for n in 0..N {
+            y1[n] = y0[n] + h * bsum[n];
+            let e3 = bsum[n] - BHH[0] * kx[0][n] - BHH[1] * kx[8][n] - BHH[2] * kx[11][n];
+            let sc = st.atol + st.rtol * y0[n].abs().max(y1[n].abs());
+            err5 += ratio(e5[n], sc).powi(2);
             err3 += ratio(e3, sc).powi(2);
         }
     }
@@ -243,7 +212,7 @@ pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
             configuration: crate::error::describe_configuration(&Q::NAMES, &q1),
         });
     }
-    Ok(Trial { q1, v1, err })
+    Ok((q1, v1, err))
 }
 
 impl<M: Mechanism<N>, const N: usize> Stepper<M::Coords, N> for Dop853Stepper<'_, M, N> {
