@@ -18,7 +18,10 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use std::collections::HashMap;
 
+mod derivative;
 mod emit;
+
+pub use derivative::Direction;
 
 /// A node's index in its [`Graph`].
 pub type Id = usize;
@@ -36,6 +39,14 @@ pub enum Node {
     Coordinate(usize),
     /// A row of x (a component of a body's position, a planar body's angle).
     Row(usize),
+    /// A coordinate's velocity q̇ⱼ, by its slot.
+    Velocity(usize),
+    /// A row's velocity ẋᵣ.
+    RowVelocity(usize),
+    /// A row's acceleration at q̈ = 0, d²/ds² xᵣ(q + s q̇, t + s)│₀.
+    RowAcceleration(usize),
+    /// An entry ∂xᵣ/∂qⱼ of x's Jacobian: (r, j).
+    Jacobian(usize, usize),
     Add(Id, Id),
     Sub(Id, Id),
     Mul(Id, Id),
@@ -72,11 +83,12 @@ impl std::hash::Hash for TokenStream2 {
     }
 }
 
-/// A variable a derivative is taken by: a coordinate or a row of x.
+/// A variable a derivative is taken by: a coordinate, a row of x, or time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Variable {
     Coordinate(usize),
     Row(usize),
+    Time,
 }
 
 /// At most this many nodes: beyond it a potential keeps the dual numbers (the build would slow).
@@ -90,7 +102,11 @@ pub struct Graph {
     /// others are constants evaluated in `f64`).
     varies: Vec<bool>,
     index: HashMap<Node, Id>,
-    derivatives: HashMap<(Id, Variable), Id>,
+    /// The derivatives taken, by node and direction.
+    derivatives: HashMap<(Id, Direction), Id>,
+    /// The directions, interned: the rate of each leaf that moves.
+    directions: Vec<HashMap<Id, Id>>,
+    direction_index: HashMap<Vec<(Id, Id)>, Direction>,
 }
 
 impl Graph {
@@ -105,7 +121,13 @@ impl Graph {
         }
         let varies = match &node {
             Node::Literal(_) | Node::Constant(_) => false,
-            Node::Time | Node::Coordinate(_) | Node::Row(_) => true,
+            Node::Time
+            | Node::Coordinate(_)
+            | Node::Row(_)
+            | Node::Velocity(_)
+            | Node::RowVelocity(_)
+            | Node::RowAcceleration(_)
+            | Node::Jacobian(..) => true,
             Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
                 self.varies[*a] || self.varies[*b]
             }
@@ -263,121 +285,6 @@ impl Graph {
             1 => a,
             _ => self.node(Node::Powi(a, n)),
         }
-    }
-
-    /// ∂node/∂variable, by the chain rule (the tangent rules in the module docs).
-    pub fn derivative(&mut self, id: Id, by: Variable) -> Id {
-        if !self.varies[id] {
-            return self.literal(0.0);
-        }
-        if let Some(&d) = self.derivatives.get(&(id, by)) {
-            return d;
-        }
-        let d = match self.nodes[id].clone() {
-            Node::Literal(_) | Node::Constant(_) | Node::Time => self.literal(0.0),
-            Node::Coordinate(j) => self.literal((by == Variable::Coordinate(j)) as u8 as f64),
-            Node::Row(r) => self.literal((by == Variable::Row(r)) as u8 as f64),
-            Node::Add(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                self.add(da, db)
-            }
-            Node::Sub(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                self.sub(da, db)
-            }
-            // (a a)' = 2 a a': the dual numbers' a' a + a a', whose two terms are equal.
-            Node::Mul(a, b) if a == b => {
-                let da = self.derivative(a, by);
-                let two = self.literal(2.0);
-                let twice = self.mul(two, a);
-                self.mul(twice, da)
-            }
-            // (a b)' = a' b + a b'.
-            Node::Mul(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                let (l, r) = (self.mul(da, b), self.mul(a, db));
-                self.add(l, r)
-            }
-            // (a / b)' = (a' − (a / b) b') / b; for a constant a, −((a / b) / b) b', the factor
-            // (a / b) / b shared by every variable.
-            Node::Div(a, b) if !self.varies[a] => {
-                let db = self.derivative(b, by);
-                let factor = self.div(id, b);
-                let product = self.mul(factor, db);
-                self.neg(product)
-            }
-            Node::Div(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                let v_db = self.mul(id, db);
-                let numerator = self.sub(da, v_db);
-                self.div(numerator, b)
-            }
-            Node::Neg(a) => {
-                let da = self.derivative(a, by);
-                self.neg(da)
-            }
-            // (aⁿ)' = n aⁿ⁻¹ a'.
-            Node::Powi(a, n) => {
-                let da = self.derivative(a, by);
-                let (n, lower) = (self.literal(n as f64), self.powi(a, n - 1));
-                let slope = self.mul(n, lower);
-                self.mul(slope, da)
-            }
-            // (√a)' = a' / (2 √a); for a' = 2 y (a sum of squares), y / √a, the same quotient
-            // (the factors 2 cancel exactly).
-            Node::Sqrt(a) => {
-                let da = self.derivative(a, by);
-                let two = self.literal(2.0);
-                match self.scaled(da) {
-                    Some((power, y)) if power == two => self.div(y, id),
-                    _ => {
-                        let twice = self.mul(two, id);
-                        self.div(da, twice)
-                    }
-                }
-            }
-            Node::Sin(a) => {
-                let da = self.derivative(a, by);
-                let cos = self.node(Node::Cos(a));
-                self.mul(cos, da)
-            }
-            Node::Cos(a) => {
-                let da = self.derivative(a, by);
-                let sin = self.node(Node::Sin(a));
-                let product = self.mul(sin, da);
-                self.neg(product)
-            }
-            Node::Exp(a) => {
-                let da = self.derivative(a, by);
-                self.mul(id, da)
-            }
-            Node::Ln(a) => {
-                let da = self.derivative(a, by);
-                self.div(da, a)
-            }
-        };
-        self.derivatives.insert((id, by), d);
-        d
-    }
-
-    /// The variables the node depends on, sorted.
-    pub fn variables(&self, id: Id) -> Vec<Variable> {
-        let mut seen = vec![false; self.nodes.len()];
-        let mut stack = vec![id];
-        let mut out = Vec::new();
-        while let Some(n) = stack.pop() {
-            if std::mem::replace(&mut seen[n], true) || !self.varies[n] {
-                continue;
-            }
-            match &self.nodes[n] {
-                Node::Coordinate(j) => out.push(Variable::Coordinate(*j)),
-                Node::Row(r) => out.push(Variable::Row(*r)),
-                node => stack.extend(operands(node)),
-            }
-        }
-        out.sort();
-        out.dedup();
-        out
     }
 
     /// The operand of a negation, for writing `g -= a` instead of `g += −a`.
