@@ -254,25 +254,25 @@ fn same_rows<const N: usize, const C: usize>(
 }
 
 /// States off the constraints, moving, at several times.
-fn states() -> impl Iterator<Item = (f64, [f64; 2], [f64; 2])> {
+fn states<const N: usize>() -> impl Iterator<Item = (f64, [f64; N], [f64; N])> {
     (0..10).map(|i| {
         let k = i as f64;
         (
             0.41 * k,
-            [0.3 + 0.45 * k, 1.1 - 0.25 * k],
-            [1.2 - 0.35 * k, -0.6 + 0.3 * k],
+            std::array::from_fn(|j| 0.3 + 0.45 * k - 0.8 * j as f64 + 0.1 * (k * j as f64)),
+            std::array::from_fn(|j| 1.2 - 0.35 * k + 0.5 * j as f64),
         )
     })
 }
 
 /// The rows (general path), q̈ with every row enforced (the scleronomic hyper-dual pass, or the
-/// rheonomic passes), and a projection agree between the two paths.
-fn agree<M: Constraints<2, K, C>, const K: usize, const C: usize>(model: M) {
+/// rheonomic passes), and λ agree between the two paths.
+fn agree<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(model: M) {
     let duals = OnDuals(model);
     let model = &duals.0;
-    let all = constraints::Mode::all_active::<M, 2, K>();
+    let all = constraints::Mode::all_active::<M, N, K>();
     let mut solved = 0;
-    for (t, q, v) in states() {
+    for (t, q, v) in states::<N>() {
         same_rows(
             &constraint_rows(model, t, &q, &v),
             &constraint_rows(&duals, t, &q, &v),
@@ -282,11 +282,11 @@ fn agree<M: Constraints<2, K, C>, const K: usize, const C: usize>(model: M) {
         match (a, b) {
             (Ok(a), Ok(b)) => {
                 solved += 1;
-                for j in 0..2 {
+                for j in 0..N {
                     close(a.accelerations[j], b.accelerations[j], "q̈");
-                    for i in 0..C {
-                        close(a.multipliers[i], b.multipliers[i], "λ");
-                    }
+                }
+                for i in 0..C {
+                    close(a.multipliers[i], b.multipliers[i], "λ");
                 }
             }
             (a, b) => assert_eq!(a.is_err(), b.is_err(), "{a:?} vs {b:?}"),
@@ -361,11 +361,19 @@ fn the_validated_handle_agrees() {
     };
     let duals = OnDuals(norm::Norm { ..p });
     let sys = p.validated().unwrap();
-    for (t, q, v) in states() {
+    for (t, q, v) in states::<2>() {
         let s = State::new(t, norm::Coords { x: q[0], y: q[1] }, norm::Coords { x: v[0], y: v[1] });
         let a = sys.accelerations(&s).unwrap();
         let b = constraints::accelerations(&duals, t, &q, &v).unwrap();
         close(a.x, b[0], "q̈ₓ");
         close(a.y, b[1], "q̈ᵧ");
     }
+}
+
+#[test]
+fn the_gallery_four_bar_through_body_points() {
+    // Loop closures written with `Planar::point`: rows of x (centres and angles) through J and a.
+    use lagrange_gallery::scenes::four_bar::{four_bar::FourBar, linkage};
+    assert_eq!(FourBar::POSITION_DERIVATIVES, [true, true]);
+    agree(linkage().0);
 }
