@@ -107,7 +107,9 @@
 //! BENCHMARKS.md; reproduce them with
 //! `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`): for a
 //! scleronomic mechanism, the position rows are evaluated once on the hyper-dual numbers that
-//! already carry x(q) for M, 𝓕 and b, so G, ġ and β come with no second evaluation of x; then
+//! already carry x(q) for M, 𝓕 and b, so G, ġ and β come with no second evaluation of x (or,
+//! for rows `#[mechanism]` reads as expression trees, from their derivatives written out as
+//! straight-line code, [`Constraints::position_constraint_derivatives`]); then
 //! one LDLᵀ factorisation of M reused for M⁻¹(𝓕 − b) and M⁻¹Rᵀ, and one of the C×C Schur matrix.
 //! A rheonomic mechanism evaluates x and g twice more (gradient, then along the motion). Through a
 //! validated handle, a mechanism whose positions are affine in q (x = A q + c) has M factorised
@@ -215,6 +217,7 @@ mod consistency;
 mod contact;
 mod forces;
 mod held;
+mod kinds;
 mod mode;
 mod projection;
 mod routing;
