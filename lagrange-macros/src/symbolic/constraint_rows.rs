@@ -164,12 +164,14 @@ fn derivatives(
             Variable::Time => {}
         }
     }
-    // ġ = Σ (∂g/∂v) (v's rate), the partials shared with G.
-    let mut rate = g.literal(0.0);
-    for &(_, d, leaf_rate) in &partials {
-        let term = g.mul(d, leaf_rate);
-        rate = g.add(rate, term);
-    }
+    // ġ by the chain rule along the motion (not G·q̇: for a distance, ġ = (r·ṙ)/|r| is then the
+    // rate of |r| itself, which β's quotient rule meets again, β = (|ṙ|² − ġ²)/|r|).
+    let first: Vec<(Id, Id)> = partials
+        .iter()
+        .map(|&(v, _, rate)| (g.leaf(v), rate))
+        .collect();
+    let along_motion = g.direction(&first);
+    let rate = g.along(value, along_motion);
     let motion = g.direction(&second);
     let bias = g.along(rate, motion);
     Row {

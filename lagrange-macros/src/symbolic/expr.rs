@@ -175,10 +175,15 @@ impl Graph {
             (Some(x), Some(y)) => self.literal(x + y),
             (Some(0.0), _) => b,
             (_, Some(0.0)) => a,
-            _ => match self.negated(b) {
+            _ => match (self.negated(b), self.common_power(a, b)) {
                 // a + (−b) = a − b, exactly.
-                Some(b) => self.sub(a, b),
-                None => self.node(Node::Add(a, b)),
+                (Some(b), _) => self.sub(a, b),
+                // 2ᵏ x + 2ᵏ y = 2ᵏ (x + y), exactly (short of overflow).
+                (None, Some((power, x, y))) => {
+                    let sum = self.add(x, y);
+                    self.mul(power, sum)
+                }
+                (None, None) => self.node(Node::Add(a, b)),
             },
         }
     }
@@ -188,8 +193,20 @@ impl Graph {
             (Some(x), Some(y)) => self.literal(x - y),
             (Some(0.0), _) => self.neg(b),
             (_, Some(0.0)) => a,
-            _ => self.node(Node::Sub(a, b)),
+            _ => match self.common_power(a, b) {
+                Some((power, x, y)) => {
+                    let difference = self.sub(x, y);
+                    self.mul(power, difference)
+                }
+                None => self.node(Node::Sub(a, b)),
+            },
         }
+    }
+
+    /// (2ᵏ, x, y) for a = 2ᵏ x and b = 2ᵏ y.
+    fn common_power(&self, a: Id, b: Id) -> Option<(Id, Id, Id)> {
+        let ((pa, x), (pb, y)) = (self.scaled(a)?, self.scaled(b)?);
+        (pa == pb).then_some((pa, x, y))
     }
 
     pub fn mul(&mut self, a: Id, b: Id) -> Id {

@@ -548,25 +548,23 @@ pub mod cartesian_pendulum {
             let __e16: __S = __e2 / __e7;
             let __e17: __S = __v[1];
             let __e18: __S = __e3 / __e7;
-            let __e19: __S = __e16 * __e10;
-            let __e20: __S = __e18 * __e17;
-            let __e21: __S = __e19 + __e20;
-            let __e22: __S = __e16 * __e21;
-            let __e23: __S = __e10 - __e22;
-            let __e24: __S = __e23 / __e7;
-            let __e25: __S = __e24 * __e10;
-            let __e26: __S = __e18 * __e21;
-            let __e27: __S = __e17 - __e26;
-            let __e28: __S = __e27 / __e7;
-            let __e29: __S = __e28 * __e17;
-            let __e30: __S = __e25 + __e29;
+            let __e19: __S = __e2 * __e10;
+            let __e21: __S = __e3 * __e17;
+            let __e23: __S = __e19 + __e21;
+            let __e25: __S = __e23 / __e7;
+            let __e26: __S = __e10 * __e10;
+            let __e27: __S = __e17 * __e17;
+            let __e28: __S = __e26 + __e27;
+            let __e29: __S = __e25 * __e25;
+            let __e30: __S = __e28 - __e29;
+            let __e31: __S = __e30 / __e7;
             __out.value[0] = __e9;
             __out.rows[0] = ::lagrange::__private::nalgebra::SVector::from([
                 __e16,
                 __e18,
             ]);
-            __out.rate[0] = __e21;
-            __out.bias[0] = __e30;
+            __out.rate[0] = __e25;
+            __out.bias[0] = __e31;
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration

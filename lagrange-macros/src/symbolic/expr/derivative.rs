@@ -76,12 +76,19 @@ impl Graph {
                 let (da, db) = (self.along(a, direction), self.along(b, direction));
                 self.sub(da, db)
             }
-            // (a a)' = 2 a a': the dual numbers' a' a + a a', whose two terms are equal.
+            // (a a)' = 2 a a': the dual numbers' a' a + a a', whose two terms are equal. Where a'
+            // varies, as 2 (a a'): the rates of a sum of squares then add up to 2 Σ a a' (see
+            // `Graph::add`), whose 2 the rule for √ cancels; a constant a' joins the 2 instead.
             Node::Mul(a, b) if a == b => {
                 let da = self.along(a, direction);
                 let two = self.literal(2.0);
-                let twice = self.mul(two, a);
-                self.mul(twice, da)
+                if self.varies[da] {
+                    let product = self.mul(a, da);
+                    self.mul(two, product)
+                } else {
+                    let twice = self.mul(two, a);
+                    self.mul(twice, da)
+                }
             }
             // (a b)' = a' b + a b'.
             Node::Mul(a, b) => {
@@ -114,22 +121,19 @@ impl Graph {
                 let slope = self.mul(n, lower);
                 self.mul(slope, da)
             }
-            Node::Sqrt(a) => match self.gradient_along(id, direction) {
-                Some(d) => d,
-                None => {
-                    // (√a)' = a' / (2 √a); for a' = 2 y (a sum of squares by one variable),
-                    // y / √a, the same quotient (the factors 2 cancel exactly).
-                    let da = self.along(a, direction);
-                    let two = self.literal(2.0);
-                    match self.scaled(da) {
-                        Some((power, y)) if power == two => self.div(y, id),
-                        _ => {
-                            let twice = self.mul(two, id);
-                            self.div(da, twice)
-                        }
+            // (√a)' = a' / (2 √a); for a' = 2 y (a sum of squares), y / √a, the same quotient
+            // (the factors 2 cancel exactly).
+            Node::Sqrt(a) => {
+                let da = self.along(a, direction);
+                let two = self.literal(2.0);
+                match self.scaled(da) {
+                    Some((power, y)) if power == two => self.div(y, id),
+                    _ => {
+                        let twice = self.mul(two, id);
+                        self.div(da, twice)
                     }
                 }
-            },
+            }
             Node::Sin(a) => {
                 let da = self.along(a, direction);
                 let cos = self.node(Node::Cos(a));
@@ -152,41 +156,6 @@ impl Graph {
         };
         self.derivatives.insert((id, direction), d);
         d
-    }
-
-    /// Σᵥ (∂node/∂v) · (v's rate) when the node's partial derivatives by all its variables are
-    /// already taken and it depends on nothing else: the chain rule in another order, equal to
-    /// round-off, that reuses them. Taken for a square root, whose partials y/√a are the quotients
-    /// a gradient is made of (the unit normal r/|r| of a distance): its rate along the motion is
-    /// then the gradient's product with the velocities, r̂·ṙ, formed once for ġ and shared, where
-    /// the rule for √ would form ȧ/(2√a) anew.
-    fn gradient_along(&mut self, id: Id, direction: Direction) -> Option<Id> {
-        let one = *self.index.get(&Node::Literal(1f64.to_bits()))?;
-        let rates = &self.directions[direction];
-        // A partial derivative is not itself taken this way.
-        if rates.len() == 1 && rates.values().all(|&rate| rate == one) {
-            return None;
-        }
-        let mut terms = Vec::new();
-        for leaf in self.leaves(id) {
-            let unit = *self.direction_index.get(&vec![(leaf, one)])?;
-            let partial = *self.derivatives.get(&(id, unit))?;
-            if !matches!(
-                self.nodes[leaf],
-                Node::Coordinate(_) | Node::Row(_) | Node::Time
-            ) {
-                return None;
-            }
-            if let Some(&rate) = self.directions[direction].get(&leaf) {
-                terms.push((partial, rate));
-            }
-        }
-        let mut sum = self.literal(0.0);
-        for (partial, rate) in terms {
-            let term = self.mul(partial, rate);
-            sum = self.add(sum, term);
-        }
-        Some(sum)
     }
 
     /// The leaves the node depends on (coordinates, rows, time, velocities), in the order built.
@@ -229,40 +198,31 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_distance_moves_at_its_gradient_times_the_velocities() {
-        // s = √(x x + y y): ∂s/∂x = x/s, ∂s/∂y = y/s, and along (ẋ, ẏ) the rate is the gradient's
-        // product with the velocities, the node ġ is made of, not ȧ/(2s) formed anew.
+    fn a_distance_moves_at_its_radial_velocity() {
+        // s = √(x x + y y) along (ẋ, ẏ): (x x)' = 2 (x ẋ), the rates add up to 2 (x ẋ + y ẏ), and
+        // √'s rule cancels the 2: ṡ = (x ẋ + y ẏ)/s.
         let mut g = Graph::default();
         let (x, y) = (g.node(Node::Coordinate(0)), g.node(Node::Coordinate(1)));
         let (xx, yy) = (g.mul(x, x), g.mul(y, y));
         let sum = g.add(xx, yy);
         let s = g.node(Node::Sqrt(sum));
-        let dx = g.derivative(s, Variable::Coordinate(0));
-        let dy = g.derivative(s, Variable::Coordinate(1));
-        assert_eq!(dx, g.div(x, s));
         let (vx, vy) = (g.node(Node::Velocity(0)), g.node(Node::Velocity(1)));
-        let (tx, ty) = (g.mul(dx, vx), g.mul(dy, vy));
-        let rate = g.add(tx, ty);
         let motion = g.direction(&[(x, vx), (y, vy)]);
-        assert_eq!(g.along(s, motion), rate);
-        // The velocities are fixed along it: d(x/s) = (ẋ − (x/s) ṡ)/s.
-        let d = g.along(dx, motion);
-        let product = g.mul(dx, rate);
-        let numerator = g.sub(vx, product);
-        assert_eq!(d, g.div(numerator, s));
-        // Without the partials taken, the rule for √ as before: ȧ/(2s).
-        let mut h = Graph::default();
-        let (x, y) = (h.node(Node::Coordinate(0)), h.node(Node::Coordinate(1)));
-        let (xx, yy) = (h.mul(x, x), h.mul(y, y));
-        let sum = h.add(xx, yy);
-        let s = h.node(Node::Sqrt(sum));
-        let (vx, vy) = (h.node(Node::Velocity(0)), h.node(Node::Velocity(1)));
-        let motion = h.direction(&[(x, vx), (y, vy)]);
-        let rate = h.along(s, motion);
-        let da = h.along(sum, motion);
-        let two = h.literal(2.0);
-        let twice = h.mul(two, s);
-        assert_eq!(rate, h.div(da, twice));
+        let rate = g.along(s, motion);
+        let (xvx, yvy) = (g.mul(x, vx), g.mul(y, vy));
+        let radial = g.add(xvx, yvy);
+        assert_eq!(rate, g.div(radial, s));
+        // Along it again with the velocities fixed: (ẋ ẋ + ẏ ẏ − ṡ ṡ)/s, ṡ's own node reused.
+        let fixed = g.direction(&[(x, vx), (y, vy)]);
+        let second = g.along(rate, fixed);
+        let (vxx, vyy) = (g.mul(vx, vx), g.mul(vy, vy));
+        let speed = g.add(vxx, vyy);
+        let square = g.mul(rate, rate);
+        let numerator = g.sub(speed, square);
+        assert_eq!(second, g.div(numerator, s));
+        // By one variable, as before: ∂s/∂x = x/s.
+        let dx = g.derivative(s, Variable::Coordinate(0));
+        assert_eq!(dx, g.div(x, s));
     }
 
     #[test]
