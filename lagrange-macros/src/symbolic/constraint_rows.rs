@@ -3,18 +3,19 @@
 //! code: `Constraints::position_constraint_derivatives`.
 //!
 //! With the partial derivatives ∂g/∂qⱼ, ∂g/∂xᵣ and ∂g/∂t of the tree (x's rows as variables of
-//! their own), along the motion q → q + s q̇, x → x + s ẋ, t → t + s at q̈ = 0 (the table of
-//! `lagrange_core::constraints`):
+//! their own), and derivatives along the motion q → q + s q̇, x → x + s ẋ, t → t + s at q̈ = 0
+//! (the table of `lagrange_core::constraints`):
 //!
 //! ```text
-//! Gⱼ = ∂g/∂qⱼ + Σᵣ (∂g/∂xᵣ) Jᵣⱼ,   ġ = Σⱼ (∂g/∂qⱼ) q̇ⱼ + Σᵣ (∂g/∂xᵣ) ẋᵣ + ∂g/∂t,
+//! Gⱼ = ∂g/∂qⱼ + Σᵣ (∂g/∂xᵣ) Jᵣⱼ,   ġ = d/ds g   (q̇, ẋ and 1 the rates of q, x and t),
 //! β = d/ds ġ   with q̇ fixed, ẋᵣ moving at aᵣ (x's acceleration at q̈ = 0), t at 1,
 //! ```
 //!
 //! the chain rule for g(q(s), t(s), x(q(s), t(s))) (Hairer & Wanner, *Solving Ordinary Differential
-//! Equations II*, 2nd ed., §VII.1: the index-1 constraint G q̈ + β = 0 from g̈ = 0). β is the
-//! second derivative of g along the motion: for g = |r| − l, G = r̂ = r/|r| and
-//! β = (r̂'s rate)·q̇ = (|q̇|² − (r̂·q̇)²)/|r|, formed from r̂ and r̂·q̇ = ġ themselves.
+//! Equations II*, 2nd ed., §VII.1: the index-1 constraint G q̈ + β = 0 from g̈ = 0). Both are taken
+//! forward on the tree ([`super::expr::Graph::along`]); for g = |r| − l that is G = r/|r|,
+//! ġ = (r·ṙ)/|r| (the rate of the sum of squares is 2 r·ṙ, and √'s rule cancels the 2) and, ġ's
+//! quotient differentiated once more with ṙ fixed, β = (|ṙ|² − ġ²)/|r|: the formula by hand.
 
 use super::expr::{Graph, Id, Node, Variable, MAX_NODES};
 use super::read_tree::Reader;
