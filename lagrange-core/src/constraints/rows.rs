@@ -148,6 +148,24 @@ pub(crate) fn rows_from_pass<
 /// x(q, t) along the motion at one state, at q̈ = 0: what position rows written on bodies are
 /// differentiated through ([`Constraints::position_constraint_derivatives`]) and velocity rows are
 /// evaluated on.
+///
+/// ```
+/// use lagrange_core::constraints::CartesianMotion;
+/// use nalgebra::SVector;
+/// // A bob at angle θ on an arm of length 2, x = (2 sin θ, −2 cos θ), swinging at θ̇ = 1.5:
+/// // ẋ = J θ̇, and at θ̈ = 0 its acceleration is centripetal, −θ̇² x.
+/// let (theta, rate) = (0.3f64, 1.5);
+/// let (s, c) = theta.sin_cos();
+/// let jacobian = [SVector::from([2.0 * c]), SVector::from([2.0 * s])];
+/// let motion = CartesianMotion {
+///     x: [2.0 * s, -2.0 * c],
+///     x_dot: [jacobian[0][0] * rate, jacobian[1][0] * rate],
+///     x_accel: [-rate * rate * 2.0 * s, rate * rate * 2.0 * c],
+///     jacobian,
+/// };
+/// let radial = motion.x[0] * motion.x_accel[0] + motion.x[1] * motion.x_accel[1];
+/// assert!((radial + rate * rate * 4.0).abs() < 1e-12); // x·a = −θ̇² |x|²
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CartesianMotion<S: Scalar, const N: usize, const K: usize> {
     /// x.
