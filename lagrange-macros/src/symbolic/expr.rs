@@ -7,7 +7,9 @@
 //! *Evaluating Derivatives*, 2nd ed., 2008, §2.2 and Table 2.3, the tangent of each elementary
 //! operation) to the same operands, so it rounds as the dual numbers do, without their products
 //! by a zero or unit seed. The only rewritings are exact in floating point: adding a zero,
-//! multiplying by one, a sign moved out of a product, literals folded.
+//! multiplying by one, a sign moved out of a product, a power of two moved out of a sum or into a
+//! constant factor, literals folded. Derivatives are taken along directions ([`derivative`]): by
+//! one variable, or along the motion of a mechanism for the constraint rows.
 //!
 //! Nodes are interned ([`Graph::node`]): a subexpression built twice is one node, so a derivative
 //! reuses the values it shares with the function (the √ of a distance, the quotient of a
@@ -400,6 +402,24 @@ mod tests {
         let droot = g.div(r, root);
         let expected = g.mul(factor, droot);
         assert_eq!(g.negation_of(d), Some(expected));
+    }
+
+    #[test]
+    fn a_common_power_of_two_is_taken_out_of_a_sum() {
+        // 2 (x ẋ) + 2 (y ẏ) = 2 (x ẋ + y ẏ) and 2a − 2b = 2 (a − b), exactly; 2a + 4b is left.
+        let mut g = Graph::default();
+        let (x, y) = (g.node(Node::Coordinate(0)), g.node(Node::Coordinate(1)));
+        let (two, four) = (g.literal(2.0), g.literal(4.0));
+        let (ax, by) = (g.mul(two, x), g.mul(two, y));
+        let sum = g.add(ax, by);
+        let inner = g.add(x, y);
+        assert_eq!(sum, g.mul(two, inner));
+        let difference = g.sub(ax, by);
+        let inner = g.sub(x, y);
+        assert_eq!(difference, g.mul(two, inner));
+        let four_y = g.mul(four, y);
+        let mixed = g.add(ax, four_y);
+        assert_eq!(g.nodes[mixed], Node::Add(ax, four_y));
     }
 
     #[test]
