@@ -224,6 +224,34 @@ fn constraints_implement_the_kkt_hooks() {
 }
 
 #[test]
+fn constraint_rows_read_as_trees_write_their_derivatives() {
+    let out = snapshot(
+        "cartesian_pendulum",
+        quote! {
+            pub mod cartesian_pendulum {
+                pub struct Coords { pub x: f64, pub y: f64 }
+                pub struct CartesianPendulum { pub m: f64, pub l: f64, pub g: f64 }
+                #[particle(mass = m)]
+                fn bob() -> Vec2 { vec2(x, y) }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+                #[constraint]
+                fn rod() -> f64 { bob.norm() - l }
+                #[constraint]
+                fn opaque() -> f64 { bob.x.abs() - l }
+            }
+        },
+    );
+    // The rod is read (`bob` is `vec2(x, y)`: its rows are the coordinates); `abs` is not, and that
+    // row keeps its dual numbers.
+    assert!(out.contains("const POSITION_DERIVATIVES: [bool; 2] = [true, false];"));
+    assert!(out.contains("fn position_constraint_derivatives"));
+    // G = r/|r|: the square root once, and no row of x read.
+    assert_eq!(out.matches(".sqrt()").count(), 1, "{out}");
+    assert!(!out.contains("__jacobian["));
+}
+
+#[test]
 fn an_error_still_emits_the_items_and_stubs() {
     let out = pretty(expand(
         TokenStream::new(),

@@ -4,7 +4,8 @@
 
 use super::mode::friction_rows_follow;
 use super::projection::project_holding;
-use super::rows::{constraint_rows, has_position, has_velocity};
+use super::kinds::{has_position, has_velocity};
+use super::rows::constraint_rows;
 #[cfg(doc)]
 use super::{infer_mode, project};
 use super::{ConstraintKind, Constraints, Mode, RowMode};

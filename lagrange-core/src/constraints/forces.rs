@@ -1,6 +1,7 @@
 //! The forces each constraint applies at a state: [`ConstraintForces`] and [`constraint_forces`].
 
-use super::rows::{constraint_rows, gradient, has_position, has_velocity};
+use super::kinds::{has_position, has_velocity};
+use super::rows::{constraint_rows, gradient};
 #[cfg(doc)]
 use super::ConstrainedAccelerations;
 use super::{

@@ -107,7 +107,9 @@
 //! BENCHMARKS.md; reproduce them with
 //! `cargo test --release -p lagrange-core --test constraints -- --ignored --nocapture`): for a
 //! scleronomic mechanism, the position rows are evaluated once on the hyper-dual numbers that
-//! already carry x(q) for M, 𝓕 and b, so G, ġ and β come with no second evaluation of x; then
+//! already carry x(q) for M, 𝓕 and b, so G, ġ and β come with no second evaluation of x (or,
+//! for rows `#[mechanism]` reads as expression trees, from their derivatives written out as
+//! straight-line code, [`Constraints::position_constraint_derivatives`]); then
 //! one LDLᵀ factorisation of M reused for M⁻¹(𝓕 − b) and M⁻¹Rᵀ, and one of the C×C Schur matrix.
 //! A rheonomic mechanism evaluates x and g twice more (gradient, then along the motion). Through a
 //! validated handle, a mechanism whose positions are affine in q (x = A q + c) has M factorised
@@ -215,6 +217,7 @@ mod consistency;
 mod contact;
 mod forces;
 mod held;
+mod kinds;
 mod mode;
 mod projection;
 mod routing;
@@ -231,7 +234,7 @@ pub use forces::{constraint_forces, ConstraintForces};
 pub use mode::infer_mode;
 pub use projection::project;
 pub use routing::{integrate_declared_contacts, step_declared_contacts};
-pub use rows::{constraint_rows, holonomic_values, ConstraintRows};
+pub use rows::{constraint_rows, holonomic_values, CartesianMotion, ConstraintRows};
 pub use solve::{
     accelerations, accelerations_in_mode, accelerations_prepared, ConstrainedAccelerations,
 };
@@ -471,6 +474,72 @@ pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, 
 
     /// g or c for position rows (holonomic, unilateral); zero for the others.
     fn position_constraints<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> [D; C];
+
+    /// The position rows whose derivatives [`position_constraint_derivatives`](Self::position_constraint_derivatives)
+    /// writes out; the others are differentiated on dual numbers through
+    /// [`position_constraints`](Self::position_constraints). None by default.
+    const POSITION_DERIVATIVES: [bool; C] = [false; C];
+
+    /// For each row of [`POSITION_DERIVATIVES`](Self::POSITION_DERIVATIVES), written into `rows`:
+    /// its value g, its row G = ∂g/∂q + Σᵣ (∂g/∂xᵣ) Jᵣ (through x, whose rows J, ẋ and
+    /// accelerations at q̈ = 0 `motion` gives), its rate ġ = d/ds g(q + s q̇, t + s)│₀ and its bias
+    /// β = d²/ds² g(q + s q̇, t + s)│₀ (the table of the [module docs](self)).
+    /// Every other entry is left as it is. What the dual numbers would give, to round-off; the
+    /// `#[mechanism]` attribute writes it for the rows whose bodies it reads as expression trees,
+    /// as straight-line code (the cost of the rows is then that of the formulas, not of dual
+    /// arithmetic). The default writes nothing.
+    ///
+    /// ```
+    /// use lagrange_core::constraints::{
+    ///     constraint_rows, CartesianMotion, ConstraintKind, ConstraintRows, Constraints,
+    /// };
+    /// # use lagrange_core::{vec2, Model, Scalar};
+    /// # use nalgebra::SVector;
+    /// # struct Bead;
+    /// # impl Model<2, 2> for Bead {
+    /// #     type Coords = [f64; 2];
+    /// #     const RHEONOMIC: bool = false;
+    /// #     const HAS_POTENTIAL: bool = false;
+    /// #     const HAS_FORCES: bool = false;
+    /// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    /// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+    /// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
+    /// # }
+    /// // A bead on the unit circle, g = |r| − 1: G = r̂, ġ = r̂·q̇, β = (|q̇|² − ġ²)/|r|.
+    /// impl Constraints<2, 2, 1> for Bead {
+    ///     const NAMES: [&'static str; 1] = ["circle"];
+    ///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+    ///     const POSITION_DERIVATIVES: [bool; 1] = [true];
+    ///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+    ///         [vec2(x[0], x[1]).norm() - D::from(1.0)]
+    ///     }
+    ///     fn position_constraint_derivatives<S: Scalar>(
+    ///         &self, _t: S, q: &[S; 2], v: &[S; 2],
+    ///         _motion: &CartesianMotion<S, 2, 2>, rows: &mut ConstraintRows<S, 2, 1>,
+    ///     ) {
+    ///         let r = (q[0] * q[0] + q[1] * q[1]).sqrt();
+    ///         let n = SVector::from([q[0] / r, q[1] / r]);
+    ///         let rate = n[0] * v[0] + n[1] * v[1];
+    ///         rows.value[0] = r - S::one();
+    ///         rows.rows[0] = n;
+    ///         rows.rate[0] = rate;
+    ///         rows.bias[0] = (v[0] * v[0] + v[1] * v[1] - rate * rate) / r;
+    ///     }
+    /// }
+    /// let cr = constraint_rows(&Bead, 0.0, &[0.6, 0.8], &[-0.8, 0.6]);
+    /// assert!((cr.bias[0] - 1.0).abs() < 1e-15); // |q̇|²/|r| on the circle
+    /// ```
+    #[inline(always)]
+    fn position_constraint_derivatives<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+        motion: &CartesianMotion<S, N, K>,
+        rows: &mut ConstraintRows<S, N, C>,
+    ) {
+        let _ = (t, q, v, motion, rows);
+    }
 
     /// h for velocity rows, the slip velocity for friction rows; zero for the others. Affine in `v`.
     fn velocity_constraints<D: Scalar>(

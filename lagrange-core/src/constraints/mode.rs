@@ -2,7 +2,8 @@
 //! decide which unilateral and friction rows are enforced.
 
 use super::cone;
-use super::rows::{always_active, constraint_rows};
+use super::kinds::always_active;
+use super::rows::constraint_rows;
 use super::{
     accelerations_in_mode, ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE,
 };

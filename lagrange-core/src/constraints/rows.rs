@@ -1,6 +1,7 @@
 //! The constraint rows and the Jacobians of x by automatic differentiation: [`ConstraintRows`],
 //! [`constraint_rows`] and the passes the solve and the projection build on.
 
+use super::kinds::{has_position_on_duals, has_velocity, has_written_derivatives, on_duals};
 use super::{ConstraintKind, Constraints};
 use crate::dynamics;
 use crate::geometry::Scalar;
@@ -36,71 +37,6 @@ pub(super) fn gradient<S: Scalar, const N: usize>(x: &DualSVec<S, N>) -> SVector
     x.eps.0.unwrap_or_else(SVector::zeros)
 }
 
-/// What [`any_kind`] asks of a row.
-#[derive(Clone, Copy)]
-enum KindTest {
-    Position,
-    Velocity,
-    /// Enforced only in some modes: unilateral and friction rows.
-    ModeDependent,
-}
-
-/// Whether any row of `kinds` passes `test`, as a `const fn` (a loop: iterators and calls through
-/// function pointers are not `const`).
-const fn any_kind(kinds: &[ConstraintKind], test: KindTest) -> bool {
-    let mut i = 0;
-    while i < kinds.len() {
-        let k = kinds[i];
-        let pass = match test {
-            KindTest::Position => k.is_position(),
-            KindTest::Velocity => k.is_velocity(),
-            KindTest::ModeDependent => {
-                !matches!(k, ConstraintKind::Holonomic | ConstraintKind::Velocity)
-            }
-        };
-        if pass {
-            return true;
-        }
-        i += 1;
-    }
-    false
-}
-
-// The three predicates below are evaluated in `const` blocks: a constant of the declaration, so the
-// branches they guard fold away (as a runtime loop over `KINDS` they were not: measured with
-// scripts/callgrind, the loop ran on every call).
-
-#[inline(always)]
-pub(super) fn has_position<
-    M: Constraints<N, K, C>,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->() -> bool {
-    const { any_kind(&M::KINDS, KindTest::Position) }
-}
-
-#[inline(always)]
-pub(super) fn has_velocity<
-    M: Constraints<N, K, C>,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->() -> bool {
-    const { any_kind(&M::KINDS, KindTest::Velocity) }
-}
-
-/// Whether every row is always enforced (no unilateral, no friction rows): then no mode logic.
-#[inline(always)]
-pub(super) fn always_active<
-    M: Constraints<N, K, C>,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->() -> bool {
-    const { !any_kind(&M::KINDS, KindTest::ModeDependent) }
-}
-
 /// The rows and the Jacobian rows of x (for the mass matrix), at (t, q, q̇).
 ///
 /// Two evaluations of x and g: (1) q seeded as a gradient dual: x, J and G; (2) (q, t) along
@@ -131,12 +67,17 @@ fn rows_and_jacobian<
     let q2: [Dual2<S>; N] = std::array::from_fn(|j| Dual2::new(q[j], v[j], S::zero()));
     let x2 = model.cartesian(t2, &q2);
     let mut out = ConstraintRows::zero();
-    let jac: [SVector<S, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
-    if has_position::<M, N, K, C>() {
+    let motion = CartesianMotion {
+        x: std::array::from_fn(|i| x2[i].re),
+        x_dot: std::array::from_fn(|i| x2[i].v1),
+        x_accel: std::array::from_fn(|i| x2[i].v2),
+        jacobian: std::array::from_fn(|i| gradient(&x1[i])),
+    };
+    if has_position_on_duals::<M, N, K, C>() {
         let g1 = model.position_constraints(td, &qd, &x1);
         let g2 = model.position_constraints(t2, &q2, &x2);
         for i in 0..C {
-            if M::KINDS[i].is_position() {
+            if on_duals::<M, N, K, C>(i) {
                 out.rows[i] = gradient(&g1[i]);
                 out.value[i] = g1[i].re;
                 out.rate[i] = g2[i].v1;
@@ -144,20 +85,19 @@ fn rows_and_jacobian<
             }
         }
     }
-    let motion = CartesianMotion {
-        x: std::array::from_fn(|i| x2[i].re),
-        x_dot: std::array::from_fn(|i| x2[i].v1),
-        x_accel: std::array::from_fn(|i| x2[i].v2),
-    };
-    velocity_rows(model, t, q, v, &motion, &jac, &mut out);
-    (out, jac)
+    if has_written_derivatives::<M, N, K, C>() {
+        model.position_constraint_derivatives(t, q, v, &motion, &mut out);
+    }
+    velocity_rows(model, t, q, v, &motion, &mut out);
+    (out, motion.jacobian)
 }
 
 /// [`rows_and_jacobian`] of a scleronomic mechanism from the hyper-dual pass of its equations of
 /// motion. The position rows are evaluated once, on the pass's own seeds and its x: g's ε₁ part is
 /// G, its ε₂ part ġ = G q̇, and β = (∂ġ/∂q) q̇ from its ε₁ε₂ part, as for x itself — so G, ġ and β
 /// come from one evaluation of g, and x(q) (with the rotations of its bodies) is not evaluated
-/// again. Velocity rows take x, ẋ and a from the same pass.
+/// again. Rows whose derivatives the model writes out ([`Constraints::POSITION_DERIVATIVES`]) take
+/// them instead, from x, ẋ, a and J read off the same pass; velocity rows take those too.
 #[allow(clippy::type_complexity)]
 #[inline(always)]
 pub(crate) fn rows_from_pass<
@@ -176,11 +116,11 @@ pub(crate) fn rows_from_pass<
     let mut out = ConstraintRows::zero();
     let jac: [SVector<S, N>; K] =
         std::array::from_fn(|i| pass.x[i].eps1.0.unwrap_or_else(SVector::zeros));
-    if has_position::<M, N, K, C>() {
+    if has_position_on_duals::<M, N, K, C>() {
         let seeds = dynamics::motion_seeds(q, v);
         let g = model.position_constraints(HyperDualVec::from_re(t), &seeds, &pass.x);
         for i in 0..C {
-            if M::KINDS[i].is_position() {
+            if on_duals::<M, N, K, C>(i) {
                 out.rows[i] = g[i].eps1.0.unwrap_or_else(SVector::zeros);
                 out.value[i] = g[i].re;
                 out.rate[i] = g[i].eps2.0.map_or(S::zero(), |d| d[0]);
@@ -188,24 +128,54 @@ pub(crate) fn rows_from_pass<
             }
         }
     }
-    if has_velocity::<M, N, K, C>() {
+    if has_velocity::<M, N, K, C>() || has_written_derivatives::<M, N, K, C>() {
         let motion = CartesianMotion {
             x: std::array::from_fn(|i| pass.x[i].re),
             x_dot: std::array::from_fn(|i| pass.x[i].eps2.0.map_or(S::zero(), |d| d[0])),
             x_accel: std::array::from_fn(|i| {
                 dynamics::along_motion(&pass.x[i], v, &M::DEPENDS[i]).unwrap_or(S::zero())
             }),
+            jacobian: jac,
         };
-        velocity_rows(model, t, q, v, &motion, &jac, &mut out);
+        if has_written_derivatives::<M, N, K, C>() {
+            model.position_constraint_derivatives(t, q, v, &motion, &mut out);
+        }
+        velocity_rows(model, t, q, v, &motion, &mut out);
     }
     (out, jac)
 }
 
-/// x, ẋ and the q̈ = 0 accelerations of x at one state: what velocity rows are evaluated on.
-struct CartesianMotion<S: Scalar, const K: usize> {
-    x: [S; K],
-    x_dot: [S; K],
-    x_accel: [S; K],
+/// x(q, t) along the motion at one state, at q̈ = 0: what position rows written on bodies are
+/// differentiated through ([`Constraints::position_constraint_derivatives`]) and velocity rows are
+/// evaluated on.
+///
+/// ```
+/// use lagrange_core::constraints::CartesianMotion;
+/// use nalgebra::SVector;
+/// // A bob at angle θ on an arm of length 2, x = (2 sin θ, −2 cos θ), swinging at θ̇ = 1.5:
+/// // ẋ = J θ̇, and at θ̈ = 0 its acceleration is centripetal, −θ̇² x.
+/// let (theta, rate) = (0.3f64, 1.5);
+/// let (s, c) = theta.sin_cos();
+/// let jacobian = [SVector::from([2.0 * c]), SVector::from([2.0 * s])];
+/// let motion = CartesianMotion {
+///     x: [2.0 * s, -2.0 * c],
+///     x_dot: [jacobian[0][0] * rate, jacobian[1][0] * rate],
+///     x_accel: [-rate * rate * 2.0 * s, rate * rate * 2.0 * c],
+///     jacobian,
+/// };
+/// let radial = motion.x[0] * motion.x_accel[0] + motion.x[1] * motion.x_accel[1];
+/// assert!((radial + rate * rate * 4.0).abs() < 1e-12); // x·a = −θ̇² |x|²
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CartesianMotion<S: Scalar, const N: usize, const K: usize> {
+    /// x.
+    pub x: [S; K],
+    /// ẋ = J q̇ + ∂x/∂t.
+    pub x_dot: [S; K],
+    /// d²/ds² x(q + s q̇, t + s)│₀: the accelerations of x at q̈ = 0.
+    pub x_accel: [S; K],
+    /// J's rows, ∂xᵢ/∂q.
+    pub jacobian: [SVector<S, N>; K],
 }
 
 /// The velocity rows h(q, q̇, t) into `out`: (3) along the motion as a first-order dual (value and
@@ -222,8 +192,7 @@ fn velocity_rows<
     t: S,
     q: &[S; N],
     v: &[S; N],
-    motion: &CartesianMotion<S, K>,
-    jac: &[SVector<S, N>; K],
+    motion: &CartesianMotion<S, N, K>,
     out: &mut ConstraintRows<S, N, C>,
 ) {
     if !has_velocity::<M, N, K, C>() {
@@ -245,8 +214,9 @@ fn velocity_rows<
     let qv: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
     let vv: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
     let xv: [DualSVec<S, N>; K] = std::array::from_fn(|i| DualSVec::from_re(motion.x[i]));
-    let xdv: [DualSVec<S, N>; K] =
-        std::array::from_fn(|i| DualVec::new(motion.x_dot[i], Derivative::some(jac[i])));
+    let xdv: [DualSVec<S, N>; K] = std::array::from_fn(|i| {
+        DualVec::new(motion.x_dot[i], Derivative::some(motion.jacobian[i]))
+    });
     let hv = model.velocity_constraints(tv, &qv, &vv, &xv, &xdv);
     for i in 0..C {
         if M::KINDS[i].is_velocity() {
@@ -274,16 +244,27 @@ pub(super) fn position_rows_and_jacobian<
     let td = DualSVec::from_re(t);
     let x1 = model.cartesian(td, &qd);
     let jac: [SVector<f64, N>; K] = std::array::from_fn(|i| gradient(&x1[i]));
-    let g1 = model.position_constraints(td, &qd, &x1);
-    let mut rows = [SVector::zeros(); C];
-    let mut value = [0.0; C];
-    for i in 0..C {
-        if M::KINDS[i].is_position() {
-            rows[i] = gradient(&g1[i]);
-            value[i] = g1[i].re;
+    let mut out = ConstraintRows::zero();
+    if has_position_on_duals::<M, N, K, C>() {
+        let g1 = model.position_constraints(td, &qd, &x1);
+        for i in 0..C {
+            if on_duals::<M, N, K, C>(i) {
+                out.rows[i] = gradient(&g1[i]);
+                out.value[i] = g1[i].re;
+            }
         }
     }
-    (rows, value, jac)
+    if has_written_derivatives::<M, N, K, C>() {
+        // At rest: only G and g are read.
+        let motion = CartesianMotion {
+            x: std::array::from_fn(|i| x1[i].re),
+            x_dot: [0.0; K],
+            x_accel: [0.0; K],
+            jacobian: jac,
+        };
+        model.position_constraint_derivatives(t, q, &[0.0; N], &motion, &mut out);
+    }
+    (out.rows, out.value, jac)
 }
 
 /// The rows and their velocity-level values (rates) without the biases β, on f64: for position
@@ -314,7 +295,7 @@ pub(super) fn velocity_rows_and_jacobian<
         let tt = Dual::new(t, 1.0);
         let qt: [Dual<f64>; N] = std::array::from_fn(|j| Dual::from_re(q[j]));
         let xt = model.cartesian(tt, &qt);
-        let gt = if has_position::<M, N, K, C>() {
+        let gt = if has_position_on_duals::<M, N, K, C>() {
             let g = model.position_constraints(tt, &qt, &xt);
             std::array::from_fn(|i| g[i].eps)
         } else {
@@ -324,12 +305,29 @@ pub(super) fn velocity_rows_and_jacobian<
     } else {
         ([0.0; K], [0.0; C])
     };
-    if has_position::<M, N, K, C>() {
+    if has_position_on_duals::<M, N, K, C>() {
         let g1 = model.position_constraints(td, &qd, &x1);
         for i in 0..C {
-            if M::KINDS[i].is_position() {
+            if on_duals::<M, N, K, C>(i) {
                 rows[i] = gradient(&g1[i]);
                 rate[i] = rows[i].dot(&vv) + g_t[i];
+            }
+        }
+    }
+    if has_written_derivatives::<M, N, K, C>() {
+        // ġ from ẋ = J q̇ + ∂x/∂t; the biases, from a = 0, are not read.
+        let motion = CartesianMotion {
+            x: std::array::from_fn(|i| x1[i].re),
+            x_dot: std::array::from_fn(|i| jac[i].dot(&vv) + x_t[i]),
+            x_accel: [0.0; K],
+            jacobian: jac,
+        };
+        let mut out = ConstraintRows::zero();
+        model.position_constraint_derivatives(t, q, v, &motion, &mut out);
+        for i in 0..C {
+            if M::POSITION_DERIVATIVES[i] {
+                rows[i] = out.rows[i];
+                rate[i] = out.rate[i];
             }
         }
     }

@@ -2,7 +2,8 @@
 //! [`accelerations_in_mode`] (sliding friction included) and [`accelerations`].
 
 use super::cone;
-use super::rows::{always_active, constraint_rows, real, rows_from_pass, ConstraintRows};
+use super::kinds::always_active;
+use super::rows::{constraint_rows, real, rows_from_pass, ConstraintRows};
 use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
 use crate::dynamics;

@@ -4,6 +4,7 @@ use super::{bind_bodies, bind_coordinates, bind_inputs, lit, prelude, private, s
 use crate::attr::Kind;
 use crate::check::Model;
 use crate::lift;
+use crate::symbolic::constraint_rows::ConstraintDerivatives;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
@@ -61,6 +62,7 @@ pub(super) fn constraints_impl(model: &Model) -> TokenStream {
         .iter()
         .any(|r| r.decl.kind() == Kind::Friction)
         .then(|| friction_fn(model));
+    let derivatives = position_derivatives_fn(model);
     quote! {
         impl #constraints::Constraints<#n, #k, #c> for #params {
             const NAMES: [&'static str; #c] = [#(#names),*];
@@ -68,8 +70,40 @@ pub(super) fn constraints_impl(model: &Model) -> TokenStream {
             #position
             #velocity
             #friction
+            #derivatives
         }
     }
+}
+
+/// `POSITION_DERIVATIVES` and `position_constraint_derivatives`, for the position rows read as
+/// expression trees ([`crate::symbolic::constraint_rows`]); nothing when none is (every row keeps
+/// its dual numbers).
+fn position_derivatives_fn(model: &Model) -> Option<TokenStream> {
+    let derivatives = ConstraintDerivatives::of(model)?;
+    let p = private();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    let (n, k, c) = (
+        lit(model.dof()),
+        lit(model.rows),
+        lit(model.constraint_row_count()),
+    );
+    let written = derivatives.written(model.constraint_row_count());
+    let body = derivatives.emit(model);
+    Some(quote! {
+        const POSITION_DERIVATIVES: [bool; #c] = [#(#written),*];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn position_constraint_derivatives<__S: #p::Scalar>(
+            &self,
+            __t: __S,
+            __q: &[__S; #n],
+            __v: &[__S; #n],
+            __motion: &#constraints::CartesianMotion<__S, #n, #k>,
+            __out: &mut #constraints::ConstraintRows<__S, #n, #c>,
+        ) {
+            #body
+        }
+    })
 }
 
 /// `position_constraints` (g or c per position row, zero elsewhere) or `velocity_constraints`

@@ -7,7 +7,9 @@
 //! *Evaluating Derivatives*, 2nd ed., 2008, §2.2 and Table 2.3, the tangent of each elementary
 //! operation) to the same operands, so it rounds as the dual numbers do, without their products
 //! by a zero or unit seed. The only rewritings are exact in floating point: adding a zero,
-//! multiplying by one, a sign moved out of a product, literals folded.
+//! multiplying by one, a sign moved out of a product, a power of two moved out of a sum or into a
+//! constant factor, literals folded. Derivatives are taken along directions ([`derivative`]): by
+//! one variable, or along the motion of a mechanism for the constraint rows.
 //!
 //! Nodes are interned ([`Graph::node`]): a subexpression built twice is one node, so a derivative
 //! reuses the values it shares with the function (the √ of a distance, the quotient of a
@@ -18,7 +20,10 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use std::collections::HashMap;
 
+mod derivative;
 mod emit;
+
+pub use derivative::Direction;
 
 /// A node's index in its [`Graph`].
 pub type Id = usize;
@@ -36,6 +41,14 @@ pub enum Node {
     Coordinate(usize),
     /// A row of x (a component of a body's position, a planar body's angle).
     Row(usize),
+    /// A coordinate's velocity q̇ⱼ, by its slot.
+    Velocity(usize),
+    /// A row's velocity ẋᵣ.
+    RowVelocity(usize),
+    /// A row's acceleration at q̈ = 0, d²/ds² xᵣ(q + s q̇, t + s)│₀.
+    RowAcceleration(usize),
+    /// An entry ∂xᵣ/∂qⱼ of x's Jacobian: (r, j).
+    Jacobian(usize, usize),
     Add(Id, Id),
     Sub(Id, Id),
     Mul(Id, Id),
@@ -72,11 +85,12 @@ impl std::hash::Hash for TokenStream2 {
     }
 }
 
-/// A variable a derivative is taken by: a coordinate or a row of x.
+/// A variable a derivative is taken by: a coordinate, a row of x, or time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Variable {
     Coordinate(usize),
     Row(usize),
+    Time,
 }
 
 /// At most this many nodes: beyond it a potential keeps the dual numbers (the build would slow).
@@ -90,7 +104,11 @@ pub struct Graph {
     /// others are constants evaluated in `f64`).
     varies: Vec<bool>,
     index: HashMap<Node, Id>,
-    derivatives: HashMap<(Id, Variable), Id>,
+    /// The derivatives taken, by node and direction.
+    derivatives: HashMap<(Id, Direction), Id>,
+    /// The directions, interned: the rate of each leaf that moves.
+    directions: Vec<HashMap<Id, Id>>,
+    direction_index: HashMap<Vec<(Id, Id)>, Direction>,
 }
 
 impl Graph {
@@ -105,7 +123,13 @@ impl Graph {
         }
         let varies = match &node {
             Node::Literal(_) | Node::Constant(_) => false,
-            Node::Time | Node::Coordinate(_) | Node::Row(_) => true,
+            Node::Time
+            | Node::Coordinate(_)
+            | Node::Row(_)
+            | Node::Velocity(_)
+            | Node::RowVelocity(_)
+            | Node::RowAcceleration(_)
+            | Node::Jacobian(..) => true,
             Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
                 self.varies[*a] || self.varies[*b]
             }
@@ -153,10 +177,15 @@ impl Graph {
             (Some(x), Some(y)) => self.literal(x + y),
             (Some(0.0), _) => b,
             (_, Some(0.0)) => a,
-            _ => match self.negated(b) {
+            _ => match (self.negated(b), self.common_power(a, b)) {
                 // a + (−b) = a − b, exactly.
-                Some(b) => self.sub(a, b),
-                None => self.node(Node::Add(a, b)),
+                (Some(b), _) => self.sub(a, b),
+                // 2ᵏ x + 2ᵏ y = 2ᵏ (x + y), exactly (short of overflow).
+                (None, Some((power, x, y))) => {
+                    let sum = self.add(x, y);
+                    self.mul(power, sum)
+                }
+                (None, None) => self.node(Node::Add(a, b)),
             },
         }
     }
@@ -166,8 +195,20 @@ impl Graph {
             (Some(x), Some(y)) => self.literal(x - y),
             (Some(0.0), _) => self.neg(b),
             (_, Some(0.0)) => a,
-            _ => self.node(Node::Sub(a, b)),
+            _ => match self.common_power(a, b) {
+                Some((power, x, y)) => {
+                    let difference = self.sub(x, y);
+                    self.mul(power, difference)
+                }
+                None => self.node(Node::Sub(a, b)),
+            },
         }
+    }
+
+    /// (2ᵏ, x, y) for a = 2ᵏ x and b = 2ᵏ y.
+    fn common_power(&self, a: Id, b: Id) -> Option<(Id, Id, Id)> {
+        let ((pa, x), (pb, y)) = (self.scaled(a)?, self.scaled(b)?);
+        (pa == pb).then_some((pa, x, y))
     }
 
     pub fn mul(&mut self, a: Id, b: Id) -> Id {
@@ -263,121 +304,6 @@ impl Graph {
             1 => a,
             _ => self.node(Node::Powi(a, n)),
         }
-    }
-
-    /// ∂node/∂variable, by the chain rule (the tangent rules in the module docs).
-    pub fn derivative(&mut self, id: Id, by: Variable) -> Id {
-        if !self.varies[id] {
-            return self.literal(0.0);
-        }
-        if let Some(&d) = self.derivatives.get(&(id, by)) {
-            return d;
-        }
-        let d = match self.nodes[id].clone() {
-            Node::Literal(_) | Node::Constant(_) | Node::Time => self.literal(0.0),
-            Node::Coordinate(j) => self.literal((by == Variable::Coordinate(j)) as u8 as f64),
-            Node::Row(r) => self.literal((by == Variable::Row(r)) as u8 as f64),
-            Node::Add(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                self.add(da, db)
-            }
-            Node::Sub(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                self.sub(da, db)
-            }
-            // (a a)' = 2 a a': the dual numbers' a' a + a a', whose two terms are equal.
-            Node::Mul(a, b) if a == b => {
-                let da = self.derivative(a, by);
-                let two = self.literal(2.0);
-                let twice = self.mul(two, a);
-                self.mul(twice, da)
-            }
-            // (a b)' = a' b + a b'.
-            Node::Mul(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                let (l, r) = (self.mul(da, b), self.mul(a, db));
-                self.add(l, r)
-            }
-            // (a / b)' = (a' − (a / b) b') / b; for a constant a, −((a / b) / b) b', the factor
-            // (a / b) / b shared by every variable.
-            Node::Div(a, b) if !self.varies[a] => {
-                let db = self.derivative(b, by);
-                let factor = self.div(id, b);
-                let product = self.mul(factor, db);
-                self.neg(product)
-            }
-            Node::Div(a, b) => {
-                let (da, db) = (self.derivative(a, by), self.derivative(b, by));
-                let v_db = self.mul(id, db);
-                let numerator = self.sub(da, v_db);
-                self.div(numerator, b)
-            }
-            Node::Neg(a) => {
-                let da = self.derivative(a, by);
-                self.neg(da)
-            }
-            // (aⁿ)' = n aⁿ⁻¹ a'.
-            Node::Powi(a, n) => {
-                let da = self.derivative(a, by);
-                let (n, lower) = (self.literal(n as f64), self.powi(a, n - 1));
-                let slope = self.mul(n, lower);
-                self.mul(slope, da)
-            }
-            // (√a)' = a' / (2 √a); for a' = 2 y (a sum of squares), y / √a, the same quotient
-            // (the factors 2 cancel exactly).
-            Node::Sqrt(a) => {
-                let da = self.derivative(a, by);
-                let two = self.literal(2.0);
-                match self.scaled(da) {
-                    Some((power, y)) if power == two => self.div(y, id),
-                    _ => {
-                        let twice = self.mul(two, id);
-                        self.div(da, twice)
-                    }
-                }
-            }
-            Node::Sin(a) => {
-                let da = self.derivative(a, by);
-                let cos = self.node(Node::Cos(a));
-                self.mul(cos, da)
-            }
-            Node::Cos(a) => {
-                let da = self.derivative(a, by);
-                let sin = self.node(Node::Sin(a));
-                let product = self.mul(sin, da);
-                self.neg(product)
-            }
-            Node::Exp(a) => {
-                let da = self.derivative(a, by);
-                self.mul(id, da)
-            }
-            Node::Ln(a) => {
-                let da = self.derivative(a, by);
-                self.div(da, a)
-            }
-        };
-        self.derivatives.insert((id, by), d);
-        d
-    }
-
-    /// The variables the node depends on, sorted.
-    pub fn variables(&self, id: Id) -> Vec<Variable> {
-        let mut seen = vec![false; self.nodes.len()];
-        let mut stack = vec![id];
-        let mut out = Vec::new();
-        while let Some(n) = stack.pop() {
-            if std::mem::replace(&mut seen[n], true) || !self.varies[n] {
-                continue;
-            }
-            match &self.nodes[n] {
-                Node::Coordinate(j) => out.push(Variable::Coordinate(*j)),
-                Node::Row(r) => out.push(Variable::Row(*r)),
-                node => stack.extend(operands(node)),
-            }
-        }
-        out.sort();
-        out.dedup();
-        out
     }
 
     /// The operand of a negation, for writing `g -= a` instead of `g += −a`.
@@ -476,6 +402,24 @@ mod tests {
         let droot = g.div(r, root);
         let expected = g.mul(factor, droot);
         assert_eq!(g.negation_of(d), Some(expected));
+    }
+
+    #[test]
+    fn a_common_power_of_two_is_taken_out_of_a_sum() {
+        // 2 (x ẋ) + 2 (y ẏ) = 2 (x ẋ + y ẏ) and 2a − 2b = 2 (a − b), exactly; 2a + 4b is left.
+        let mut g = Graph::default();
+        let (x, y) = (g.node(Node::Coordinate(0)), g.node(Node::Coordinate(1)));
+        let (two, four) = (g.literal(2.0), g.literal(4.0));
+        let (ax, by) = (g.mul(two, x), g.mul(two, y));
+        let sum = g.add(ax, by);
+        let inner = g.add(x, y);
+        assert_eq!(sum, g.mul(two, inner));
+        let difference = g.sub(ax, by);
+        let inner = g.sub(x, y);
+        assert_eq!(difference, g.mul(two, inner));
+        let four_y = g.mul(four, y);
+        let mixed = g.add(ax, four_y);
+        assert_eq!(g.nodes[mixed], Node::Add(ax, four_y));
     }
 
     #[test]

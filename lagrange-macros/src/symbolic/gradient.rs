@@ -29,7 +29,8 @@ impl Gradients {
     pub fn part(&mut self, model: &Model, block: &Block) -> Option<PartGradient> {
         let value = Reader::new(model, &mut self.graph).potential(block)?;
         let mut derivatives = Vec::new();
-        for v in self.graph.variables(value) {
+        // Time is no variable of the gradient.
+        for v in self.graph.variables(value).into_iter().filter(|&v| v != Variable::Time) {
             let d = self.graph.derivative(value, v);
             if !self.graph.is_zero(d) {
                 derivatives.push((v, d));
@@ -61,6 +62,8 @@ impl Gradients {
                     let j = Literal::usize_unsuffixed(j);
                     quote!(__gradient[#j] #op #d;)
                 }
+                // Left out above: the gradient is by q.
+                Variable::Time => quote!(),
                 Variable::Row(r) => {
                     let slots = (0..model.dof())
                         .filter(|&j| row_deps[r][j])

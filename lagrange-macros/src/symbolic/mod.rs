@@ -30,6 +30,7 @@
 //! whose M has (q₂ − q₁)². Sines and cosines expand safely: sin θ₁ sin θ₂ + cos θ₁ cos θ₂ is
 //! cos(θ₁ − θ₂) to an error of the size of M's entries, as in the hand-derived forms.
 
+pub mod constraint_rows;
 pub mod expr;
 pub mod gradient;
 pub mod poly;

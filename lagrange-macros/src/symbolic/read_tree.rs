@@ -5,7 +5,7 @@
 //! integer literals, `mass[1]`); time; `let`s binding a name; sums, differences, products,
 //! quotients and negations of scalars, of vectors (a vector times or divided by a scalar); the
 //! methods `sin`, `cos`, `exp`, `ln`, `sqrt`, `recip`, `powi` (an integer literal), `norm`,
-//! `norm_squared`, `dot`; the fields `x`, `y`, `z`, `position`, `angle`; `vec2`, `vec3` and
+//! `norm_squared`, `dot`, `rotated` (of a `Vec2`) and `point` (of a planar body); the fields `x`, `y`, `z`, `position`, `angle`; `vec2`, `vec3` and
 //! `planar`. An expression that names no coordinate, body, local or `t` is a constant as
 //! written (a parameter, `alpha.cos()`, `PI`), evaluated in `f64`. Anything else (a spatial
 //! body, `abs`, `powf`, a branch, a macro, a call of a function) is not read: the potential keeps
@@ -289,6 +289,23 @@ impl<'g> Reader<'g> {
                 Value::Vector(b) if b.len() == a.len() => dot(g, &a, &b),
                 _ => return None,
             },
+            ("rotated", Value::Vector(v), 1) if v.len() == 2 => match args?.pop()? {
+                Value::Scalar(angle) => return Some(Value::Vector(rotated(g, &v, angle))),
+                _ => return None,
+            },
+            // A planar body's point at a body-frame offset: position + offset rotated by the angle.
+            ("point", Value::Planar(position, angle), 1) => match args?.pop()? {
+                Value::Vector(offset) if offset.len() == 2 => {
+                    let turned = rotated(g, &offset, angle);
+                    let point = position
+                        .iter()
+                        .zip(&turned)
+                        .map(|(&p, &r)| g.add(p, r))
+                        .collect();
+                    return Some(Value::Vector(point));
+                }
+                _ => return None,
+            },
             _ => return None,
         };
         Some(Value::Scalar(scalar))
@@ -376,6 +393,14 @@ fn dot(g: &mut Graph, a: &[Id], b: &[Id]) -> Id {
         .collect::<Vec<_>>();
     let first = terms.remove(0);
     terms.into_iter().fold(first, |sum, term| g.add(sum, term))
+}
+
+/// (c x − s y, s x + c y), c = cos θ, s = sin θ: `geometry::Vec2::rotated` as it computes it.
+fn rotated(g: &mut Graph, v: &[Id], angle: Id) -> Vec<Id> {
+    let (sin, cos) = (g.node(Node::Sin(angle)), g.node(Node::Cos(angle)));
+    let (cx, sy) = (g.mul(cos, v[0]), g.mul(sin, v[1]));
+    let (sx, cy) = (g.mul(sin, v[0]), g.mul(cos, v[1]));
+    vec![g.sub(cx, sy), g.add(sx, cy)]
 }
 
 /// An integer literal, possibly negated.

@@ -560,6 +560,44 @@ pub mod sliding_block {
                 }
             }
         }
+        const POSITION_DERIVATIVES: [bool; 2] = [true, false];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn position_constraint_derivatives<__S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __S,
+            __q: &[__S; 2],
+            __v: &[__S; 2],
+            __motion: &::lagrange::__private::lagrange_core::constraints::CartesianMotion<
+                __S,
+                2,
+                2,
+            >,
+            __out: &mut ::lagrange::__private::lagrange_core::constraints::ConstraintRows<
+                __S,
+                2,
+                2,
+            >,
+        ) {
+            let m: f64 = self.m;
+            let g: f64 = self.g;
+            let mu: f64 = self.mu;
+            let (__x, __x_dot, __x_accel, __jacobian) = (
+                &__motion.x,
+                &__motion.x_dot,
+                &__motion.x_accel,
+                &__motion.jacobian,
+            );
+            let __e3: __S = __q[1];
+            let __e4: __S = __v[1];
+            __out.value[0] = __e3;
+            __out.rows[0] = ::lagrange::__private::nalgebra::SVector::from([
+                <__S>::from(0.0),
+                <__S>::from(1.0),
+            ]);
+            __out.rate[0] = __e4;
+            __out.bias[0] = <__S>::from(0.0);
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration
     for SlidingBlock {

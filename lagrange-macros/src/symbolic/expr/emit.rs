@@ -76,6 +76,22 @@ impl Graph {
                     let r = Literal::usize_unsuffixed(*r);
                     quote!(__x[#r])
                 }
+                Node::Velocity(j) => {
+                    let j = Literal::usize_unsuffixed(*j);
+                    quote!(__v[#j])
+                }
+                Node::RowVelocity(r) => {
+                    let r = Literal::usize_unsuffixed(*r);
+                    quote!(__x_dot[#r])
+                }
+                Node::RowAcceleration(r) => {
+                    let r = Literal::usize_unsuffixed(*r);
+                    quote!(__x_accel[#r])
+                }
+                Node::Jacobian(r, j) => {
+                    let (r, j) = (Literal::usize_unsuffixed(*r), Literal::usize_unsuffixed(*j));
+                    quote!(__jacobian[#r][#j])
+                }
                 Node::Add(a, b) => binary(*a, *b, quote!(+), true),
                 Node::Sub(a, b) => binary(*a, *b, quote!(-), false),
                 Node::Mul(a, b) => binary(*a, *b, quote!(*), true),

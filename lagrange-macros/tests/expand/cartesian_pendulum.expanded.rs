@@ -1,0 +1,641 @@
+pub mod cartesian_pendulum {
+    pub struct CartesianPendulum {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq,
+        ::lagrange::__private::core::default::Default
+    )]
+    pub struct Coords<T = f64> {
+        pub x: T,
+        pub y: T,
+    }
+    impl ::lagrange::__private::Coordinates<2> for Coords<f64> {
+        const NAMES: [&'static str; 2] = ["x", "y"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 2] {
+            [self.x, self.y]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 2]) -> Self {
+            Coords {
+                x: values[0],
+                y: values[1],
+            }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 2;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's centre of mass and orientation.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub bob: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub bob: ::lagrange::__private::geometry::Vec2<T>,
+    }
+    impl CartesianPendulum {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.v);
+            let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                2,
+                2,
+            >(self, state.t, &q, &v);
+            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [x, y] = *__q;
+            let bob: ::lagrange::__private::geometry::Vec2<__D> = { vec2(x, y) };
+            Bodies { bob }
+        }
+        #[inline(always)]
+        fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x: &[__D; 2],
+        ) -> Bodies<__D> {
+            Bodies {
+                bob: ::lagrange::__private::geometry::vec2(__x[0], __x[1]),
+            }
+        }
+        #[inline(always)]
+        #[allow(unused_variables)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            __x: &[__D; 2],
+            __x_dot: &[__D; 2],
+        ) -> BodyVelocities<__D> {
+            BodyVelocities {
+                bob: ::lagrange::__private::geometry::vec2(__x_dot[0], __x_dot[1]),
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<2, 2> for CartesianPendulum {
+        type Coords = Coords;
+        const INERTIAL: usize = 2;
+        const RHEONOMIC: bool = false;
+        const HAS_POTENTIAL: bool = false;
+        const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 2] = [[true, false], [false, true]];
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            {
+                let m: f64 = self.m;
+                let l: f64 = self.l;
+                let g: f64 = self.g;
+                let __mass_bob: f64 = m;
+                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.g * 0.0 + __mass_bob * 0.0)
+                    == 0.0) & (__mass_bob > 0.0)
+                {
+                    return ::lagrange::__private::core::result::Result::Ok(());
+                }
+            }
+            if !self.m.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m",
+                    value: self.m,
+                });
+            }
+            if !self.l.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "l",
+                    value: self.l,
+                });
+            }
+            if !self.g.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "g",
+                    value: self.g,
+                });
+            }
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let __mass_bob: f64 = m;
+            if !(__mass_bob.is_finite() && __mass_bob > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "bob",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_bob
+                    ),
+                });
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 2] {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let __mass_bob: f64 = m;
+            [__mass_bob, __mass_bob]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [__bodies.bob.x, __bodies.bob.y]
+        }
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; 2] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<2, 2>>::masses(self);
+            let mut __weights = [0.0; 2];
+            let __gravity_down: ::lagrange::__private::geometry::Vec2<f64> = {
+                vec2(0.0, -g)
+            };
+            __weights[0] += __gravity_down.x * __masses[0];
+            __weights[1] += __gravity_down.y * __masses[1];
+            __weights
+        }
+    }
+    impl ::lagrange::__private::Prepare for CartesianPendulum {
+        type Prepared = ::lagrange::__private::lagrange_core::affine::AffineConstants<
+            2,
+            2,
+        >;
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::lagrange_core::affine::AffineConstants::of::<
+                Self,
+            >(self)
+        }
+    }
+    impl ::lagrange::__private::Dynamics<2> for CartesianPendulum {
+        type Coords = Coords;
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::of(
+                &<Self as ::lagrange::__private::lagrange_core::constraints::Constraints<
+                    2,
+                    2,
+                    2,
+                >>::KINDS,
+            ),
+        );
+        const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = false;
+        #[inline]
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<2, 2>>::validate(self)?;
+            <Self as ::lagrange::__private::lagrange_core::constraints::Constraints<
+                2,
+                2,
+                2,
+            >>::validate_constraints(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            ::lagrange::__private::lagrange_core::constraints::accelerations::<
+                Self,
+                S,
+                2,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn holonomic_constraints_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> ::lagrange::__private::core::option::Option<[S; 2]> {
+            ::lagrange::__private::core::option::Option::Some(
+                ::lagrange::__private::lagrange_core::constraints::holonomic_values::<
+                    Self,
+                    S,
+                    2,
+                    2,
+                    2,
+                >(self, t, q),
+            )
+        }
+        fn project(
+            &self,
+            t: f64,
+            q: &mut [f64; 2],
+            v: &mut [f64; 2],
+        ) -> ::lagrange::__private::Result<()> {
+            let mode = ::lagrange::__private::lagrange_core::constraints::infer_mode::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, t, q, v)?;
+            ::lagrange::__private::lagrange_core::constraints::project::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, t, q, v, &mode)
+        }
+        #[inline]
+        fn check_declaration_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::lagrange_core::constraints::check_velocity_rows_affine::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+        fn check_constraints(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::lagrange_core::constraints::check_consistent::<
+                Self,
+                2,
+                2,
+                2,
+            >(
+                self,
+                t,
+                q,
+                v,
+                ::lagrange::__private::lagrange_core::constraints::CONSISTENCY_TOLERANCE,
+            )
+        }
+        fn step_contacts<
+            __I: ::lagrange::__private::lagrange_core::integrate::Integrator,
+        >(
+            &self,
+            state: &mut ::lagrange::__private::State<Coords>,
+            h: f64,
+        ) -> ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::Result<()>,
+        > {
+            ::lagrange::__private::lagrange_core::constraints::step_declared_contacts::<
+                __I,
+                Self,
+                2,
+                2,
+                2,
+            >(self, state, h)
+        }
+        fn integrate_contacts<__P, __O>(
+            &self,
+            method: __P,
+            state: &mut ::lagrange::__private::State<Coords>,
+            t_end: f64,
+            events: &mut [::lagrange::__private::lagrange_core::integrate::Event<
+                '_,
+                Coords,
+            >],
+            observer: __O,
+        ) -> ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::Result<
+                ::lagrange::__private::lagrange_core::integrate::Outcome<Coords>,
+            >,
+        >
+        where
+            __P: ::lagrange::__private::lagrange_core::integrate::EmbeddedPair,
+            __O: ::lagrange::__private::core::ops::FnMut(
+                ::lagrange::__private::lagrange_core::integrate::Observation<
+                    '_,
+                    Coords,
+                    2,
+                >,
+            ),
+        {
+            ::lagrange::__private::lagrange_core::constraints::integrate_declared_contacts::<
+                __P,
+                Self,
+                2,
+                2,
+                2,
+            >(method, self, state, t_end, events, observer)
+        }
+        #[inline(always)]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            ::lagrange::__private::dynamics::equations_of_motion::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 2>(self, t, q, v)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            ::lagrange::__private::lagrange_core::constraints::accelerations_prepared::<
+                Self,
+                S,
+                2,
+                2,
+                2,
+            >(self, prepared, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::constraints::Constraints<2, 2, 2>
+    for CartesianPendulum {
+        const NAMES: [&'static str; 2] = ["rod", "opaque"];
+        const KINDS: [::lagrange::__private::lagrange_core::constraints::ConstraintKind; 2] = [
+            ::lagrange::__private::lagrange_core::constraints::ConstraintKind::Holonomic,
+            ::lagrange::__private::lagrange_core::constraints::ConstraintKind::Holonomic,
+        ];
+        #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
+        fn position_constraints<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+            __x: &[__D; 2],
+        ) -> [__D; 2] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [x, y] = *__q;
+            let l = <__D>::from(self.l);
+            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
+            [
+                {
+                    let __row: __D = { bob.norm() - l };
+                    __row
+                },
+                {
+                    let __row: __D = { bob.x.abs() - l };
+                    __row
+                },
+            ]
+        }
+        const POSITION_DERIVATIVES: [bool; 2] = [true, false];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn position_constraint_derivatives<__S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __S,
+            __q: &[__S; 2],
+            __v: &[__S; 2],
+            __motion: &::lagrange::__private::lagrange_core::constraints::CartesianMotion<
+                __S,
+                2,
+                2,
+            >,
+            __out: &mut ::lagrange::__private::lagrange_core::constraints::ConstraintRows<
+                __S,
+                2,
+                2,
+            >,
+        ) {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let (__x, __x_dot, __x_accel, __jacobian) = (
+                &__motion.x,
+                &__motion.x_dot,
+                &__motion.x_accel,
+                &__motion.jacobian,
+            );
+            let __e2: __S = __q[0];
+            let __e3: __S = __q[1];
+            let __e4: __S = __e2 * __e2;
+            let __e5: __S = __e3 * __e3;
+            let __e6: __S = __e4 + __e5;
+            let __e7: __S = __e6.sqrt();
+            let __e8: f64 = l;
+            let __e9: __S = __e7 - __e8;
+            let __e10: __S = __v[0];
+            let __e16: __S = __e2 / __e7;
+            let __e17: __S = __v[1];
+            let __e18: __S = __e3 / __e7;
+            let __e19: __S = __e2 * __e10;
+            let __e21: __S = __e3 * __e17;
+            let __e23: __S = __e19 + __e21;
+            let __e25: __S = __e23 / __e7;
+            let __e26: __S = __e10 * __e10;
+            let __e27: __S = __e17 * __e17;
+            let __e28: __S = __e26 + __e27;
+            let __e29: __S = __e25 * __e25;
+            let __e30: __S = __e28 - __e29;
+            let __e31: __S = __e30 / __e7;
+            __out.value[0] = __e9;
+            __out.rows[0] = ::lagrange::__private::nalgebra::SVector::from([
+                __e16,
+                __e18,
+            ]);
+            __out.rate[0] = __e25;
+            __out.bias[0] = __e31;
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration
+    for CartesianPendulum {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m", "l", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(CartesianPendulum {
+                m: values[0],
+                l: values[1],
+                g: values[2],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m, self.l, self.g]
+        }
+        const CONSTRAINT_ROWS: &'static [&'static str] = &["rod", "opaque"];
+        fn constraint_forces(
+            &self,
+            t: f64,
+            q: &[f64],
+            v: &[f64],
+        ) -> ::lagrange::__private::Result<
+            ::lagrange::__private::lagrange_core::declaration::FlatConstraintForces,
+        > {
+            ::lagrange::__private::lagrange_core::declaration::flat_constraint_forces::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+    }
+    impl CartesianPendulum {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [x, y] = *__q;
+            let bob: ::lagrange::__private::geometry::Vec2<__D> = { vec2(x, y) };
+            Bodies { bob }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 2, 3> for CartesianPendulum {
+        const PARAMETER_NAMES: [&'static str; 3] = ["m", "l", "g"];
+        const SEEDABLE: [bool; 3] = [false, true, false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 3] {
+            [self.m, self.l, self.g]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 2]) -> [__D; 2] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [__bodies.bob.x, __bodies.bob.y]
+        }
+    }
+}
