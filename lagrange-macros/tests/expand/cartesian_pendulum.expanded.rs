@@ -131,18 +131,20 @@ pub mod cartesian_pendulum {
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = false;
         const DEPENDS: [[bool; 2]; 2] = [[true, false], [false, true]];
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn parameters_pass(&self) -> bool {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let g: f64 = self.g;
+            let __mass_bob: f64 = m;
+            ((0.0 + self.m + self.l + self.g + __mass_bob) * 0.0 == 0.0)
+                & (__mass_bob > 0.0)
+        }
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> ::lagrange::__private::Result<()> {
-            {
-                let m: f64 = self.m;
-                let l: f64 = self.l;
-                let g: f64 = self.g;
-                let __mass_bob: f64 = m;
-                if ((0.0 + self.m * 0.0 + self.l * 0.0 + self.g * 0.0 + __mass_bob * 0.0)
-                    == 0.0) & (__mass_bob > 0.0)
-                {
-                    return ::lagrange::__private::core::result::Result::Ok(());
-                }
+            if <Self as ::lagrange::__private::Model<2, 2>>::parameters_pass(self) {
+                return ::lagrange::__private::core::result::Result::Ok(());
             }
             if !self.m.is_finite() {
                 return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
