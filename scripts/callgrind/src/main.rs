@@ -1,5 +1,6 @@
 //! Driver for callgrind: `lagrange-callgrind MODE CALLS` runs `accelerations` of one mechanism
-//! (generated, or `hw_*` for the hand-written closed form) CALLS times. See count.sh.
+//! (generated, or `hw_*` for the hand-written closed form; `validated_*` through a validated handle;
+//! `hot_*` the hook integrators call on that handle, `accelerations_at`) CALLS times. See count.sh.
 
 use lagrange::prelude::*;
 use std::hint::black_box;
@@ -366,14 +367,21 @@ pub mod driven {
     }
 }
 
-/// Σ q̈₀ over `n` calls of `accelerations`, on the parameters or (`validated`) through a
-/// validated handle, whose parameters were checked once.
-fn calls<M: Mechanism<N>, const N: usize>(
-    sys: M,
-    s: &State<M::Coords>,
-    n: usize,
-    validated: bool,
-) -> f64 {
+/// How `calls` evaluates q̈: `accelerations` on the parameters (checked every call) or through a
+/// validated handle, or the hook the integrators call (`hot_NAME`).
+#[derive(Clone, Copy, PartialEq)]
+enum Via {
+    Parameters,
+    Validated,
+    Hot,
+}
+
+/// Σ q̈₀ over `n` calls: of `accelerations`, on the parameters or through a validated handle,
+/// whose parameters were checked once; or (`Via::Hot`) of the hook the integrators call on every
+/// stage, `Dynamics::accelerations_at` on the validated handle (which goes to
+/// `accelerations_prepared_at` with the constants it prepared): no parameter or state check, as
+/// within a step.
+fn calls<M: Mechanism<N>, const N: usize>(sys: M, s: &State<M::Coords>, n: usize, via: Via) -> f64 {
     fn run<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
         let mut acc = 0.0;
         for _ in 0..n {
@@ -384,19 +392,31 @@ fn calls<M: Mechanism<N>, const N: usize>(
         }
         acc
     }
-    if validated {
-        run(&sys.validated().unwrap(), s, n)
-    } else {
-        run(&sys, s, n)
+    fn hot<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
+        let (q, v) = (s.q.to_array(), s.v.to_array());
+        let mut acc = 0.0;
+        for _ in 0..n {
+            acc += black_box(sys)
+                .accelerations_at(black_box(s.t), black_box(&q), black_box(&v))
+                .unwrap()[0];
+        }
+        acc
+    }
+    match via {
+        Via::Parameters => run(&sys, s, n),
+        Via::Validated => run(&sys.validated().unwrap(), s, n),
+        Via::Hot => hot(&sys.validated().unwrap(), s, n),
     }
 }
 
 fn main() {
     let arg = std::env::args().nth(1).unwrap();
-    // `validated_NAME`: the generated mechanism NAME through `sys.validated()`.
-    let (validated, which) = match arg.strip_prefix("validated_") {
-        Some(name) => (true, name.to_string()),
-        None => (false, arg.clone()),
+    // `validated_NAME`: the generated mechanism NAME through `sys.validated()`; `hot_NAME`: the
+    // hook the integrators call, on the same handle (see `calls`).
+    let (via, which) = match (arg.strip_prefix("validated_"), arg.strip_prefix("hot_")) {
+        (Some(name), _) => (Via::Validated, name.to_string()),
+        (_, Some(name)) => (Via::Hot, name.to_string()),
+        _ => (Via::Parameters, arg.clone()),
     };
     let n: usize = std::env::args()
         .nth(2)
@@ -412,7 +432,7 @@ fn main() {
                 g: 9.81,
             };
             let s = State::new(0.0, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "double_pendulum" => {
             use double_pendulum::*;
@@ -434,7 +454,7 @@ fn main() {
                     theta2: -0.4,
                 },
             );
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         // One RK4 step (h = 10⁻³) per call: `sys.step::<Rk4>` on the parameters, through a
         // validated handle, and a hand-written RK4 on the closed form.
@@ -600,7 +620,7 @@ fn main() {
                 g: 9.81,
             };
             let s = State::new(0.0, Coords { x: 0.1, d: 0.2 }, Coords { x: -0.3, d: 0.5 });
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "cart_pendulum" => {
             use cart_pendulum::*;
@@ -618,7 +638,7 @@ fn main() {
                     theta: 1.1,
                 },
             );
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "hw_pendulum" => {
             let sys = pendulum::Pendulum {
@@ -648,7 +668,7 @@ fn main() {
         }
         "four_bar" => {
             let (sys, s) = four_bar_scene::linkage();
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "hw_four_bar" => {
             let (sys, s) = four_bar_scene::linkage();
@@ -677,7 +697,7 @@ fn main() {
                     q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2],
                 },
             );
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "fpu_springs" => {
             let sys = fpu_chain::Fpu {
@@ -693,7 +713,7 @@ fn main() {
                     q: [0.3, -0.2, 0.1, 0.0, 0.5, 0.2],
                 },
             );
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "kepler" => {
             let s = State::new(
@@ -701,7 +721,7 @@ fn main() {
                 kepler::Coords { x: 0.4, y: 0.3 },
                 kepler::Coords { x: -0.2, y: 1.7 },
             );
-            acc += calls(KEPLER, &s, n, validated);
+            acc += calls(KEPLER, &s, n, via);
         }
         "hw_kepler" => {
             let (q, v) = ([0.4, 0.3], [-0.2, 1.7]);
@@ -751,7 +771,7 @@ fn main() {
                     y: 0.8 * w * th.sin(),
                 },
             );
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "hw_wedge_block" | "assembled_wedge_block" => {
             let sys = wedge_block::WedgeBlock {
@@ -841,7 +861,7 @@ fn main() {
                 c: 0.3,
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "driven" => {
             use driven::*;
@@ -853,7 +873,7 @@ fn main() {
                 w: 2.0,
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
-            acc += calls(sys, &s, n, validated);
+            acc += calls(sys, &s, n, via);
         }
         "none" => {}
         _ => panic!(),
