@@ -24,12 +24,12 @@
 
 use crate::dynamics::{
     accumulate, add_row, assemble_mass_matrix, cartesian_with_jacobian, finite_accelerations,
-    gradient, mass_matrix_failure, potential_forces,
+    gradient, mass_matrix_failure, potential_gradient,
 };
 use crate::error::Result;
 use crate::geometry::Scalar;
 use crate::linalg::{factor_pattern, mass_pattern, Ldlt};
-use crate::model::Model;
+use crate::model::{lane_sum, Model};
 use nalgebra::SVector;
 
 /// The constants of an affine mechanism's equations of motion (see the [module docs](self)).
@@ -39,6 +39,8 @@ pub struct AffineConstants<const N: usize, const K: usize> {
     jacobian: [SVector<f64, N>; K],
     /// M = Aᵀ diag(μ) A, factorised.
     mass_matrix: Ldlt<f64, N>,
+    /// The factors of −M: q̈ = (−M)⁻¹ ∇V without negating ∇V (a potential the only force).
+    negated_mass_matrix: Ldlt<f64, N>,
     /// Aᵀ w, the generalized force of a uniform field (zero without one).
     field_forces: SVector<f64, N>,
     /// M⁻¹ Aᵀ w: q̈ of a mechanism on which the field is the only force.
@@ -76,6 +78,7 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
         Ok(AffineConstants {
             jacobian: rows.map(|row| row.unwrap_or_else(SVector::zeros)),
             mass_matrix: factors,
+            negated_mass_matrix: factors.negated(),
             field_forces,
             field_accelerations: factors.solve(&field_forces),
         })
@@ -87,6 +90,14 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
     pub(crate) fn solve_mass<M: Model<N, K>, S: Scalar>(&self, b: &SVector<S, N>) -> SVector<S, N> {
         let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
         self.mass_matrix.solve_in(b, pattern)
+    }
+
+    /// −M⁻¹ b by the prepared factors of −M, as [`solve_mass`](Self::solve_mass) (and bit for
+    /// bit the negation of its result, see [`Ldlt::negated`]).
+    #[inline(always)]
+    fn solve_negated_mass<M: Model<N, K>, S: Scalar>(&self, b: &SVector<S, N>) -> SVector<S, N> {
+        let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
+        self.negated_mass_matrix.solve_in(b, pattern)
     }
 }
 
@@ -154,9 +165,60 @@ pub fn accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     finite_accelerations::<M::Coords, S, N>(qdd, t, q)
 }
 
+/// q̈ of an affine mechanism at (t, q, q̇) with every check of a call in one branch: `Some(q̈)`
+/// when t, q, q̇ and q̈ are all finite, `None` otherwise — the caller then takes the checked path,
+/// which says what failed (the state, or q̈ at a finite state). The prepared M is regular, so no
+/// pivot is tested.
+///
+/// For a mechanism whose q̈ from the prepared constants is straight-line arithmetic that runs no
+/// user code — `#[mechanism]` uses it when the positions are affine, no force is declared and
+/// every potential's gradient is derived on its expression tree — so evaluating it at a state that
+/// turns out non-finite costs only the wasted arithmetic: nothing can panic or loop, and the state
+/// check that would have refused the state first is the same sum's test.
+///
+/// ```
+/// use lagrange_core::{affine, impl_mechanism, Model, Scalar};
+///
+/// /// A unit mass on a spring of stiffness 4 along a line, written by hand: x = q.
+/// struct Spring;
+/// impl Model<1, 1> for Spring {
+///     type Coords = [f64; 1];
+///     const RHEONOMIC: bool = false;
+///     const HAS_POTENTIAL: bool = true;
+///     const HAS_FORCES: bool = false;
+///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+///     fn masses(&self) -> [f64; 1] { [1.0] }
+///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] { [q[0]] }
+///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D { x[0] * x[0] * 2.0 }
+/// }
+/// impl_mechanism!(Spring, 1, 1, affine);
+///
+/// let constants = affine::AffineConstants::of(&Spring)?;
+/// assert_eq!(affine::regular_accelerations(&Spring, &constants, 0.0, &[0.5], &[0.0]), Some([-2.0]));
+/// assert_eq!(affine::regular_accelerations(&Spring, &constants, 0.0, &[0.5], &[f64::NAN]), None);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+#[inline(always)]
+pub fn regular_accelerations<M: Model<N, K>, const N: usize, const K: usize>(
+    model: &M,
+    constants: &AffineConstants<N, K>,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> Option<[f64; N]> {
+    let qdd = free_accelerations(model, constants, t, q, v);
+    // The sum of every value is finite when they all are, and s·0 is 0 exactly when s is finite.
+    // A sum that overflows although every term is finite only sends the call down the checked
+    // path, which then returns the same q̈.
+    ((t + lane_sum::<N>(|j| q[j] + v[j] + qdd[j])) * 0.0 == 0.0).then(|| qdd.into())
+}
+
 /// M⁻¹ 𝓕 at (t, q, q̇) from the prepared constants (b = 0), unchecked: q̈ of the mechanism without
 /// its constraints, which the constrained solve starts from. With a uniform field as the only force
-/// it is the prepared M⁻¹ Aᵀ w, a constant.
+/// it is the prepared M⁻¹ Aᵀ w, a constant; with a potential as the only one, (−M)⁻¹ ∇V by the
+/// prepared factors of −M (where M is diagonal, as when each coordinate moves one particle
+/// coordinate, a product with each coordinate's prepared −1/Mⱼⱼ, the pattern of M leaving out
+/// every other term).
 #[inline(always)]
 pub(crate) fn free_accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
@@ -168,18 +230,27 @@ pub(crate) fn free_accelerations<M: Model<N, K>, S: Scalar, const N: usize, cons
     if !(M::HAS_POTENTIAL || M::HAS_FORCES) {
         return constants.field_accelerations.map(S::from);
     }
-    let mut forces: Option<SVector<S, N>> = None;
-    if M::HAS_GRAVITY {
-        forces = Some(constants.field_forces.map(S::from));
-    }
     // Which rows move is a constant of the declaration, so the compiler knows every row's
     // presence (stored `Option`s would be branched on in every dual operation).
     let moving = const { moving_rows(&M::DEPENDS) };
     let rows: [Option<SVector<S, N>>; K] =
         std::array::from_fn(|i| moving[i].then(|| constants.jacobian[i].map(S::from)));
     let x = model.cartesian(t, q);
-    if let Some(gradient_forces) = potential_forces(model, t, q, &x, &rows) {
-        accumulate(&mut forces, gradient_forces);
+    let potential_gradient = potential_gradient(model, t, q, &x, &rows);
+    if !(M::HAS_GRAVITY || M::HAS_FORCES) {
+        if let Some(gradient) = potential_gradient {
+            return constants.solve_negated_mass::<M, S>(&gradient);
+        }
+    }
+    let mut forces: Option<SVector<S, N>> = None;
+    if M::HAS_GRAVITY {
+        forces = Some(constants.field_forces.map(S::from));
+    }
+    if let Some(gradient) = potential_gradient {
+        match &mut forces {
+            Some(forces) => *forces -= gradient,
+            None => forces = Some(-gradient),
+        }
     }
     if M::HAS_FORCES {
         // ẋ = A q̇; then 𝓕 += Aᵀ F + Q by virtual work.

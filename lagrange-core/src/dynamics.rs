@@ -20,7 +20,7 @@
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::linalg::{solve_spd, solve_spd_flagged, NotPositiveDefinite};
-use crate::model::{Coordinates, Model};
+use crate::model::{lane_sum, Coordinates, Model};
 use nalgebra::{Const, U1};
 use nalgebra::{SMatrix, SVector};
 use num_dual::{Derivative, Dual, Dual2, DualSVec, HyperDualVec};
@@ -373,11 +373,25 @@ fn kinematics_of_pass<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>
     }
 }
 
-/// −∇V at (t, q) from the positions x and their Jacobian rows, already known: V is evaluated on
-/// gradient duals rebuilt from them (q seeded, xᵢ carrying its row), so x(q) is not evaluated again
-/// and ∇V = ∂V/∂q + Jᵀ ∂V/∂x by the chain rule. `None` without a potential.
+/// −∇V at (t, q) from the positions x and their Jacobian rows, already known (see
+/// [`potential_gradient`]). `None` without a potential.
 #[inline(always)]
 pub(crate) fn potential_forces<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    x: &[S; K],
+    rows: &[Option<SVector<S, N>>; K],
+) -> Option<SVector<S, N>> {
+    potential_gradient(model, t, q, x, rows).map(|gradient| -gradient)
+}
+
+/// ∇V at (t, q) from the positions x and their Jacobian rows, already known: the model's own
+/// ([`Model::potential_gradient`]) when it writes one, otherwise V evaluated on gradient duals
+/// rebuilt from x and J (q seeded, xᵢ carrying its row), so x(q) is not evaluated again and
+/// ∇V = ∂V/∂q + Jᵀ ∂V/∂x by the chain rule. `None` without a potential.
+#[inline(always)]
+pub(crate) fn potential_gradient<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
     t: S,
     q: &[S; N],
@@ -388,12 +402,12 @@ pub(crate) fn potential_forces<M: Model<N, K>, S: Scalar, const N: usize, const 
         return None;
     }
     if let Some(gradient) = model.potential_gradient(t, q, x, rows) {
-        return Some(-gradient);
+        return Some(gradient);
     }
     let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
     let xd: [DualSVec<S, N>; K] =
         std::array::from_fn(|i| DualSVec::new(x[i], Derivative::new(rows[i])));
-    Some(-gradient(&model.potential(DualSVec::from_re(t), &qd, &xd)))
+    Some(gradient(&model.potential(DualSVec::from_re(t), &qd, &xd)))
 }
 
 /// Rheonomic: a gradient pass for J and ∇V, a second-order pass along (q̇, 1) for ẋ and a.
@@ -497,12 +511,26 @@ pub(crate) fn finite_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>
     t: S,
     q: &[S; N],
 ) -> Result<[S; N]> {
-    // Branch-free on the common path: a·0 is 0 exactly when a is finite.
-    let mut zero = 0.0;
-    for a in qdd.iter() {
-        zero += a.re() * 0.0;
+    // One branch, one product: s·0 is 0 exactly when s is finite, and the sum s of the entries
+    // is finite when they all are. A sum that overflows although every entry is finite is sorted
+    // out off the hot path.
+    if lane_sum::<N>(|j| qdd[j].re()) * 0.0 == 0.0 {
+        Ok(qdd.into())
+    } else {
+        finite_or_overflowed::<C, S, N>(qdd, t, q)
     }
-    if zero == 0.0 {
+}
+
+/// [`finite_accelerations`] when the sum of the entries is not finite: `qdd` when every entry is
+/// (the sum overflowed), otherwise [`Error::NonFiniteDynamics`] at (t, q).
+#[cold]
+#[inline(never)]
+fn finite_or_overflowed<C: Coordinates<N>, S: Scalar, const N: usize>(
+    qdd: SVector<S, N>,
+    t: S,
+    q: &[S; N],
+) -> Result<[S; N]> {
+    if qdd.iter().all(|a| a.re().is_finite()) {
         Ok(qdd.into())
     } else {
         Err(non_finite_dynamics::<C, S, N>(t, q))

@@ -189,6 +189,12 @@ impl<T: Dynamics<N>, const N: usize> Mechanism<N> for T {}
 pub trait Prepare {
     /// The constants (`()` when there are none).
     type Prepared: Copy + std::fmt::Debug + PartialEq;
+    /// Whether [`Dynamics::regular_accelerations_prepared_at`] evaluates q̈ with the constants as
+    /// straight-line code that runs no user code, every check in one branch (an affine mechanism
+    /// whose potentials' gradients `#[mechanism]` derived and that declares no force, see
+    /// [`crate::affine::regular_accelerations`]): a validated handle then takes
+    /// [`Mechanism::accelerations`]' one-branch path, as the closed form does.
+    const PREPARED_IN_ONE_BRANCH: bool = false;
     /// Computes them from valid parameters. Fails only where the parameters alone decide the
     /// equations of motion are singular (a constant mass matrix that is not positive definite).
     fn prepare(&self) -> Result<Self::Prepared>;

@@ -253,13 +253,41 @@ pub fn check_state<const N: usize>(
     q: &[f64; N],
     v: &[f64; N],
 ) -> Result<()> {
-    // Branch-free on the common path: x·0 is 0 exactly when x is finite (NaN otherwise), so one
-    // comparison of the sum checks everything.
-    let mut zero = t * 0.0;
-    for j in 0..N {
-        zero += q[j] * 0.0 + v[j] * 0.0;
+    // Branch-free on the common path: s·0 is 0 exactly when s is finite, and the sum s of every
+    // value is finite when they all are; a sum that overflows although every value is finite is
+    // sorted out off the hot path.
+    if (t + lane_sum::<N>(|j| q[j] + v[j])) * 0.0 == 0.0 {
+        Ok(())
+    } else {
+        finite_or_non_finite_state(names, t, q, v)
     }
-    if zero == 0.0 {
+}
+
+/// Σⱼ term(j) over j < N, in two interleaved lanes (even and odd j) added at the end: what the
+/// one-branch finiteness tests sum (a sum is finite when every term is, and s·0 = 0 exactly when
+/// s is finite). Two lanes are two independent chains the compiler can keep in one vector
+/// register; a single chain of additions, which it may not reorder, would be N in series. Each
+/// lane starts from −0, the identity of `+`, so nothing is added to a zero.
+#[inline(always)]
+pub(crate) fn lane_sum<const N: usize>(term: impl Fn(usize) -> f64) -> f64 {
+    let mut lanes = [-0.0; 2];
+    for j in 0..N {
+        lanes[j % 2] += term(j);
+    }
+    lanes[0] + lanes[1]
+}
+
+/// [`check_state`] when the sum of the values is not finite: `Ok` when every value is (the sum
+/// overflowed), otherwise the error naming the state.
+#[cold]
+#[inline(never)]
+fn finite_or_non_finite_state<const N: usize>(
+    names: &[&'static str; N],
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> Result<()> {
+    if t.is_finite() && q.iter().chain(v).all(|x| x.is_finite()) {
         Ok(())
     } else {
         non_finite_state(names, t, q, v)

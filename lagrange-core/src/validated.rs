@@ -106,7 +106,9 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
     const CONSTRAINTS: Option<usize> = M::CONSTRAINTS;
     const SCLERONOMIC: bool = M::SCLERONOMIC;
     const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = M::CONSTRAINT_COUNTS;
-    const CLOSED_FORM: bool = M::CLOSED_FORM;
+    /// The closed form, or a mechanism whose q̈ is straight-line code with the prepared constants
+    /// ([`Prepare::PREPARED_IN_ONE_BRANCH`]): through the handle, both are checked in one branch.
+    const CLOSED_FORM: bool = M::CLOSED_FORM || M::PREPARED_IN_ONE_BRANCH;
 
     /// Checked when the handle was made.
     #[inline(always)]

@@ -644,3 +644,46 @@ fn the_tree_reader_reads_what_it_can_differentiate_exactly() {
         assert!(gradient.contains("DualSVec"), "{body}: {gradient}");
     }
 }
+
+/// Through a validated handle an affine declaration is checked in one branch when q̈ from the
+/// prepared constants is straight-line code: no force, no constraint, and every potential derived
+/// on its expression tree (a part left to dual numbers runs the declaration's own code).
+#[test]
+fn only_straight_line_affine_mechanisms_are_checked_in_one_branch() {
+    let with = |items: TokenStream| -> String {
+        pretty(expand(
+            TokenStream::new(),
+            quote! {
+                pub mod m {
+                    pub struct Coords { pub x: f64, pub y: f64 }
+                    pub struct M { pub m: f64, pub k: f64 }
+                    #[particle(mass = m)]
+                    fn p() -> Vec2 { vec2(x, y) }
+                    #items
+                }
+            },
+        ))
+    };
+    let one_branch = "const PREPARED_IN_ONE_BRANCH: bool = true;";
+    let straight_line = [
+        quote!(#[potential] fn v() -> f64 { k * p.norm_squared() }),
+        quote!(#[gravity] fn down() -> Vec2 { vec2(0.0, -k) }),
+    ];
+    for items in straight_line {
+        let out = with(items.clone());
+        assert!(out.contains("affine::AffineConstants<"), "{items}: not affine");
+        assert!(out.contains(one_branch), "{items}");
+        assert!(out.contains("affine::regular_accelerations::<"), "{items}");
+    }
+    let other = [
+        quote!(#[force(on = p)] fn push() -> Vec2 { vec2(k, 0.0) }),
+        quote!(#[potential] fn v() -> f64 { x.tanh() + y }),
+        quote!(#[constraint] fn rod() -> f64 { p.norm_squared() - k }),
+    ];
+    for items in other {
+        let out = with(items.clone());
+        assert!(out.contains("affine::AffineConstants<"), "{items}: not affine");
+        assert!(!out.contains("PREPARED_IN_ONE_BRANCH"), "{items}");
+        assert!(!out.contains("regular_accelerations"), "{items}");
+    }
+}

@@ -150,6 +150,27 @@ impl<S: Scalar, const N: usize, P: FactorPattern<N>> Ldlt<S, N, P> {
         })
     }
 
+    /// The factors of −M: L with the pivots negated. Their solve is −M⁻¹b, bit for bit the
+    /// negation of [`solve`](Self::solve)'s (each step of the substitutions is a product or a
+    /// difference, and rounding to nearest is symmetric under a change of sign), so a right-hand
+    /// side that is a negation (M q̈ = −∇V) is solved without forming it.
+    ///
+    /// ```
+    /// use lagrange_core::linalg::Ldlt;
+    /// use nalgebra::{matrix, vector};
+    /// let factors = Ldlt::new(&matrix![4.0, 1.0; 1.0, 3.0]).unwrap();
+    /// let b = vector![0.3, -1.7];
+    /// assert_eq!(factors.negated().solve(&b), factors.solve(&-b));
+    /// ```
+    #[inline]
+    pub fn negated(&self) -> Self {
+        Ldlt {
+            lower: self.lower,
+            inverse_pivots: -self.inverse_pivots,
+            pattern: self.pattern,
+        }
+    }
+
     /// Solves M x = b, for a right-hand side of the factors' scalar or, when the factors are
     /// plain `f64` constants (a mass matrix factorised once), of any scalar.
     #[inline]

@@ -15,6 +15,20 @@ pub(super) enum Equations {
     Dense,
 }
 
+/// Whether the positions are affine in the coordinates (`crate::affine`), so a validated handle
+/// prepares J and the factors of M.
+#[derive(Clone, Copy, PartialEq)]
+pub(super) enum Positions {
+    Affine {
+        /// q̈ from the prepared constants is straight-line code that runs no user code: no force
+        /// is declared, no constraint, and every potential's gradient is derived on its
+        /// expression tree (`Model::potential_gradient`). Then `accelerations` through the handle
+        /// checks a call in one branch (`lagrange_core::affine::regular_accelerations`).
+        straight_line: bool,
+    },
+    General,
+}
+
 /// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
 pub(super) fn mechanism_impl(
     params: &Ident,
@@ -23,19 +37,21 @@ pub(super) fn mechanism_impl(
     constrained: Option<usize>,
     equations: Equations,
     rheonomic: bool,
-    affine: bool,
+    positions: Positions,
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
-    let prepared = match equations {
-        _ if affine => Prepared::Affine,
-        Equations::ClosedForm(count) => Prepared::Coefficients(count),
+    let prepared = match (positions, &equations) {
+        (Positions::Affine { straight_line }, _) => Prepared::Affine {
+            straight_line: straight_line && constrained.is_none(),
+        },
+        (_, Equations::ClosedForm(count)) => Prepared::Coefficients(*count),
         _ => Prepared::Nothing,
     };
     let prepare = prepare_impl(params, &n, &k, prepared);
     // Through a validated handle, q̈ uses the constants prepared once: an affine mechanism's J and
     // factors of M, the closed form's coefficients.
     let prepared_accelerations = match prepared {
-        Prepared::Affine => {
+        Prepared::Affine { straight_line } => {
             // A constrained mechanism starts its Schur solve from the same constants.
             let body = match constrained {
                 Some(c) => {
@@ -47,9 +63,9 @@ pub(super) fn mechanism_impl(
                 }
             };
             // Affine positions in closed form as well (a uniform field the only force): a call
-            // on the plain mechanism, which prepares nothing, takes the closed form's one branch;
-            // a validated handle keeps its prepared constants (the hook's `None`).
-            let closed_form_call = matches!(equations, Equations::ClosedForm(_)).then(|| {
+            // on the plain mechanism, which prepares nothing, takes the closed form's one branch.
+            let closed_form = matches!(equations, Equations::ClosedForm(_));
+            let closed_form_call = closed_form.then(|| {
                 quote! {
                     #[inline(always)]
                     fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
@@ -57,10 +73,23 @@ pub(super) fn mechanism_impl(
                         let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
                         #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
                     }
+                }
+            });
+            // Through a validated handle, with its prepared constants: in one branch where q̈ is
+            // then straight-line code, otherwise (the hook's `None`) down the checked path.
+            let prepared_call = if straight_line {
+                quote!(#p::lagrange_core::affine::regular_accelerations::<Self, #n, #k>(self, prepared, t, q, v))
+            } else {
+                quote!({
+                    let _ = (prepared, t, q, v);
+                    #p::core::option::Option::None
+                })
+            };
+            let regular = (straight_line || closed_form).then(|| {
+                quote! {
                     #[inline(always)]
                     fn regular_accelerations_prepared_at(&self, prepared: &Self::Prepared, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-                        let _ = (prepared, t, q, v);
-                        #p::core::option::Option::None
+                        #prepared_call
                     }
                 }
             });
@@ -70,6 +99,7 @@ pub(super) fn mechanism_impl(
                     #body
                 }
                 #closed_form_call
+                #regular
             })
         }
         // Straight-line code: `accelerations` checks a call in one branch.
@@ -188,8 +218,9 @@ pub(super) fn mechanism_impl(
 /// What a validated handle prepares.
 #[derive(Clone, Copy)]
 enum Prepared {
-    /// J and the factors of the constant mass matrix (`crate::affine`).
-    Affine,
+    /// J and the factors of the constant mass matrix (`crate::affine`); whether q̈ is then
+    /// straight-line code (see [`Positions`]).
+    Affine { straight_line: bool },
     /// The closed form's coefficients (`expand::closed_form`).
     Coefficients(usize),
     Nothing,
@@ -215,10 +246,12 @@ fn prepare_impl(
             }
         };
     }
-    if let Prepared::Affine = prepared {
+    if let Prepared::Affine { straight_line } = prepared {
+        let one_branch = straight_line.then(|| quote!(const PREPARED_IN_ONE_BRANCH: bool = true;));
         quote! {
             impl #p::Prepare for #params {
                 type Prepared = #p::lagrange_core::affine::AffineConstants<#n, #k>;
+                #one_branch
                 fn prepare(&self) -> #p::Result<Self::Prepared> {
                     #p::lagrange_core::affine::AffineConstants::of::<Self>(self)
                 }

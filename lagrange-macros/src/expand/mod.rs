@@ -32,8 +32,8 @@ use bodies::{bodies_structs, inherent_impl};
 use constraints::constraints_impl;
 use coords::coords_items;
 use declaration::declaration_impl;
-use mechanism::{mechanism_impl, Equations};
-use model::model_impl;
+use mechanism::{mechanism_impl, Equations, Positions};
+use model::{gradient_on_trees, model_impl};
 use parametrized::parametrized_items;
 
 use crate::ast::{Field, Mechanism};
@@ -141,6 +141,12 @@ fn generate(model: &Model) -> TokenStream {
     let constrained = (!model.constraints.is_empty()).then_some(model.constraint_row_count());
     // Affine positions: J and M's factors prepared once, for the free and the constrained solve.
     let affine = crate::affine::is_affine(model);
+    let positions = match affine {
+        true => Positions::Affine {
+            straight_line: model.forces.is_empty() && gradient_on_trees(model),
+        },
+        false => Positions::General,
+    };
     // The equations in closed form where the positions are read (for affine positions too: the
     // plain mechanism's call, which prepares nothing), otherwise a tree of translations from each
     // body's own seeds, or the dense pass.
@@ -165,7 +171,7 @@ fn generate(model: &Model) -> TokenStream {
         constrained,
         equations,
         model.rheonomic,
-        affine,
+        positions,
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);

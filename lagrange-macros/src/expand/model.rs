@@ -14,6 +14,8 @@ use quote::{format_ident, quote};
 
 mod gradient;
 
+pub(super) use gradient::gradient_on_trees;
+
 /// Parameters bound as `f64`, then each body's mass and inertia: shared by `validate` and `masses`.
 fn mass_bindings(model: &Model) -> TokenStream {
     let params = model.params.iter().map(|p| &p.ident);

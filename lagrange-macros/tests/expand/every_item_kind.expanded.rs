@@ -459,7 +459,7 @@ pub mod everything {
             let mut __gradient = ::lagrange::__private::nalgebra::SVector::<
                 __S,
                 2,
-            >::zeros();
+            >::repeat(<__S>::from(-0.0));
             {
                 let __qn: [::lagrange::__private::num_dual::DualSVec<__S, 1>; 2] = [
                     <::lagrange::__private::num_dual::DualSVec<

@@ -236,6 +236,7 @@ pub mod free {
             2,
             2,
         >;
+        const PREPARED_IN_ONE_BRANCH: bool = true;
         fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
             ::lagrange::__private::lagrange_core::affine::AffineConstants::of::<
                 Self,
@@ -367,8 +368,11 @@ pub mod free {
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            let _ = (prepared, t, q, v);
-            ::lagrange::__private::core::option::Option::None
+            ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
+                Self,
+                2,
+                2,
+            >(self, prepared, t, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Free {

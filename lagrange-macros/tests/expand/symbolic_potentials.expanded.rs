@@ -317,7 +317,7 @@ pub mod springs {
             let mut __gradient = ::lagrange::__private::nalgebra::SVector::<
                 __S,
                 4,
-            >::zeros();
+            >::repeat(<__S>::from(-0.0));
             {
                 let m: f64 = self.m;
                 let omega: f64 = self.omega;
@@ -494,6 +494,7 @@ pub mod springs {
             4,
             6,
         >;
+        const PREPARED_IN_ONE_BRANCH: bool = true;
         fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
             ::lagrange::__private::lagrange_core::affine::AffineConstants::of::<
                 Self,
@@ -620,6 +621,20 @@ pub mod springs {
             ::lagrange::__private::lagrange_core::affine::accelerations::<
                 Self,
                 S,
+                4,
+                6,
+            >(self, prepared, t, q, v)
+        }
+        #[inline(always)]
+        fn regular_accelerations_prepared_at(
+            &self,
+            prepared: &Self::Prepared,
+            t: f64,
+            q: &[f64; 4],
+            v: &[f64; 4],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 4]> {
+            ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
+                Self,
                 4,
                 6,
             >(self, prepared, t, q, v)

@@ -329,6 +329,7 @@ pub mod wedge_block {
             2,
             4,
         >;
+        const PREPARED_IN_ONE_BRANCH: bool = true;
         fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
             ::lagrange::__private::lagrange_core::affine::AffineConstants::of::<
                 Self,
@@ -460,8 +461,11 @@ pub mod wedge_block {
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            let _ = (prepared, t, q, v);
-            ::lagrange::__private::core::option::Option::None
+            ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
+                Self,
+                2,
+                4,
+            >(self, prepared, t, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for WedgeBlock {

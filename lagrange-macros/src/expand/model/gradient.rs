@@ -23,6 +23,18 @@ pub(super) fn potential_gradient(model: &Model) -> (Option<TokenStream>, Option<
     }
 }
 
+/// Whether ∇V is straight-line code read off expression trees: no potential at all (a uniform
+/// field is constant weights), or `Model::potential_gradient` written with every part that names
+/// a coordinate read as a tree — no part left to dual numbers over the declaration's own code.
+pub(in crate::expand) fn gradient_on_trees(model: &Model) -> bool {
+    if model.potentials.is_empty() && model.gravities.is_empty() {
+        return true;
+    }
+    potential_gradient_plan(model).is_some_and(|(parts, symbolic)| {
+        (0..parts.len()).all(|index| !symbolic.on_duals(&parts, index))
+    })
+}
+
 /// The parts of the potential, each with its gradient read off its expression tree where the
 /// tree is read, when [`crate::potentials::own_gradient`] rules that `potential_gradient` is
 /// written.
@@ -166,7 +178,10 @@ fn potential_gradient_fn(model: &Model, parts: &[Part], symbolic: &Symbolic) -> 
             __x: &[__S; #k_lit],
             __rows: &[#p::core::option::Option<#p::nalgebra::SVector<__S, #n_lit>>; #k_lit],
         ) -> #p::core::option::Option<#p::nalgebra::SVector<__S, #n_lit>> {
-            let mut __gradient = #p::nalgebra::SVector::<__S, #n_lit>::zeros();
+            // From −0, the identity of `+` (x + (−0) = x for every x, +0 included; 0 − x = −x
+            // likewise from −0): the compiler then drops each slot's first addition instead of
+            // adding it to a zero.
+            let mut __gradient = #p::nalgebra::SVector::<__S, #n_lit>::repeat(<__S>::from(-0.0));
             #trees
             #(#terms)*
             #p::core::option::Option::Some(__gradient)
