@@ -164,7 +164,7 @@ pub fn accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     // One branch, on q̈ alone: this is the integrators' hook, whose callers check the state (once
     // per step); what is left to check is what the evaluation made of it. M⁻¹ is prepared from
     // valid parameters and regular (`AffineConstants::of` refused it otherwise), so no pivot is
-    // tested either: q̈ is non-finite exactly when 𝓕 overflowed or was undefined at this state.
+    // tested either: q̈ is non-finite only where 𝓕, or its solve, overflowed or was undefined.
     let qdd = free_accelerations(model, constants, t, q, v);
     finite_accelerations::<M::Coords, S, N>(qdd, t, q)
 }
