@@ -91,6 +91,34 @@ pub mod tied_wedge {
     }
 }
 
+/// The lecture's wedge and block, gravity the only force: the plain mechanism's call is the
+/// closed form's one branch, the handle's the prepared constants' one branch.
+#[mechanism]
+pub mod wedge {
+    pub struct Coords {
+        pub x: f64,
+        pub d: f64,
+    }
+    pub struct Wedge {
+        pub big_m: f64,
+        pub m: f64,
+        pub alpha: f64,
+        pub g: f64,
+    }
+    #[particle(mass = big_m)]
+    fn wedge() -> Vec2 {
+        vec2(x, 0.0)
+    }
+    #[particle(mass = m)]
+    fn block() -> Vec2 {
+        wedge + vec2(d * alpha.cos(), -d * alpha.sin())
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
 const PLANET: planet::Planet = planet::Planet { m: 1.3, mu: 0.8 };
 const CHAIN: chain::Chain = chain::Chain { m: 0.9, omega: 50.0 };
 const TIED_WEDGE: tied_wedge::TiedWedge = tied_wedge::TiedWedge {
@@ -101,6 +129,13 @@ const TIED_WEDGE: tied_wedge::TiedWedge = tied_wedge::TiedWedge {
     g: 9.81,
 };
 
+const WEDGE: wedge::Wedge = wedge::Wedge {
+    big_m: 3.0,
+    m: 1.0,
+    alpha: 0.5,
+    g: 9.81,
+};
+
 #[test]
 fn the_declarations_take_the_one_branch_path_through_the_handle() {
     // Checked when the test compiles: otherwise the comparisons below would compare the checked
@@ -108,6 +143,7 @@ fn the_declarations_take_the_one_branch_path_through_the_handle() {
     const { assert!(<planet::Planet as Prepare>::PREPARED_IN_ONE_BRANCH) };
     const { assert!(<chain::Chain as Prepare>::PREPARED_IN_ONE_BRANCH) };
     const { assert!(<tied_wedge::TiedWedge as Prepare>::PREPARED_IN_ONE_BRANCH) };
+    const { assert!(<wedge::Wedge as Prepare>::PREPARED_IN_ONE_BRANCH) };
     const { assert!(<Validated<planet::Planet> as Dynamics<2>>::CLOSED_FORM) };
     // The parameters' struct has no constants to solve with: it keeps the checked path.
     const { assert!(!<planet::Planet as Dynamics<2>>::CLOSED_FORM) };
@@ -160,6 +196,9 @@ fn one_branch_accelerations_agree_with_the_checked_path() {
     // A 2×2 SPD system (condition ≈ 8 at α = 0.5) solved in a different order of operations, with
     // the field's and the spring's forces summed before or after: a few ulps of the largest q̈.
     agrees(TIED_WEDGE, states::<2>(0.0, 2.0), 1e-14);
+    // The prepared M⁻¹ Aᵀ w against the plain call's closed form: the same 2×2 system, solved
+    // once by the factors and once by the closed form's division by the determinant.
+    agrees(WEDGE, states::<2>(0.0, 2.0), 1e-14);
 }
 
 /// Every non-finite entry of (t, q, q̇) in turn: the handle refuses it with the error the checked
@@ -194,6 +233,7 @@ fn non_finite_states_are_refused_with_the_same_errors() {
     refuses_like_the_checked_path(PLANET, [0.6, -0.8], [0.1, 1.2]);
     refuses_like_the_checked_path(CHAIN, [0.1, -0.2, 0.3], [0.5, 0.0, -1.0]);
     refuses_like_the_checked_path(TIED_WEDGE, [0.1, 0.4], [-0.3, 0.2]);
+    refuses_like_the_checked_path(WEDGE, [0.1, 0.4], [-0.3, 0.2]);
 }
 
 #[test]
