@@ -192,21 +192,9 @@ fn hw_chain<const N: usize>(m: f64, l: f64, g: f64, q: &[f64; N], v: &[f64; N]) 
         .solve(&force)
         .into()
 }
-/// `calls` calls of the link-by-link chain of `links` links (1, 2, 4, …, 64), through a validated
-/// handle or with the parameters checked on every call.
-fn chain_links(links: &str, calls: usize, validated: bool) -> f64 {
-    fn run<M: Mechanism<N>, const N: usize>(sys: &M, calls: usize) -> f64 {
-        let (q, v) = chain_state::<N>();
-        let s = State::new(0.0, M::Coords::from_array(q), M::Coords::from_array(v));
-        let mut acc = 0.0;
-        for _ in 0..calls {
-            acc += black_box(sys)
-                .accelerations(black_box(&s))
-                .unwrap()
-                .to_array()[0];
-        }
-        acc
-    }
+/// `n` calls of the link-by-link chain of `links` links (1, 2, 4, …, 64), through a validated
+/// handle, with the parameters checked on every call, or of the integrators' hook (see `calls`).
+fn chain_links(links: &str, n: usize, via: Via) -> f64 {
     macro_rules! run {
         ($module:ident, $ty:ident, $n:literal) => {{
             use chains::$module::*;
@@ -215,10 +203,9 @@ fn chain_links(links: &str, calls: usize, validated: bool) -> f64 {
                 l: 0.5,
                 g: 9.81,
             };
-            match validated {
-                true => run::<_, $n>(&sys.validated().unwrap(), calls),
-                false => run::<_, $n>(&sys, calls),
-            }
+            let (q, v) = chain_state::<$n>();
+            let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+            calls(sys, &s, n, via)
         }};
     }
     match links {
@@ -849,7 +836,7 @@ fn main() {
             }
         }
         mode if mode.starts_with("chain") && mode.ends_with("_links") => {
-            acc += chain_links(&mode["chain".len()..mode.len() - "_links".len()], n, validated);
+            acc += chain_links(&mode["chain".len()..mode.len() - "_links".len()], n, via);
         }
         mode if mode.starts_with("hw_chain") => {
             acc += hw_chain_runs(&mode["hw_chain".len()..], n);
