@@ -462,7 +462,7 @@ pub fn solve_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
 }
 
 /// q̈ from M q̈ = 𝓕 − b with every check of a call in one branch: `Some(q̈)` when the parameters
-/// pass (`parameters_pass`: [`Model::parameters_pass`](crate::Model::parameters_pass), or `true`
+/// pass (`parameters_pass`: [`Model::parameters_pass`], or `true`
 /// where they were checked once), t, q, q̇ and q̈ are all finite and M's pivots pass
 /// [`solve_spd`]'s test; `None` otherwise — the caller then takes the checked path (the parameter
 /// and state checks, then [`solve_accelerations`]), which says what failed.
