@@ -544,22 +544,23 @@ pub mod cartesian_pendulum {
             let __e5: __S = __e3 * __e3;
             let __e6: __S = __e4 + __e5;
             let __e7: __S = __e6.sqrt();
+            let __r7: __S = __e7.recip();
             let __e8: f64 = l;
             let __e9: __S = __e7 - __e8;
             let __e10: __S = __v[0];
-            let __e16: __S = __e2 / __e7;
+            let __e16: __S = __e2 * __r7;
             let __e17: __S = __v[1];
-            let __e18: __S = __e3 / __e7;
+            let __e18: __S = __e3 * __r7;
             let __e19: __S = __e2 * __e10;
             let __e21: __S = __e3 * __e17;
             let __e23: __S = __e19 + __e21;
-            let __e25: __S = __e23 / __e7;
+            let __e25: __S = __e23 * __r7;
             let __e26: __S = __e10 * __e10;
             let __e27: __S = __e17 * __e17;
             let __e28: __S = __e26 + __e27;
             let __e29: __S = __e25 * __e25;
             let __e30: __S = __e28 - __e29;
-            let __e31: __S = __e30 / __e7;
+            let __e31: __S = __e30 * __r7;
             __out.value[0] = __e9;
             __out.rows[0] = ::lagrange::__private::nalgebra::SVector::from([
                 __e16,
