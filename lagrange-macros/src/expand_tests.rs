@@ -666,23 +666,54 @@ fn only_straight_line_affine_mechanisms_are_checked_in_one_branch() {
     };
     let one_branch = "const PREPARED_IN_ONE_BRANCH: bool = true;";
     let straight_line = [
-        quote!(#[potential] fn v() -> f64 { k * p.norm_squared() }),
-        quote!(#[gravity] fn down() -> Vec2 { vec2(0.0, -k) }),
+        quote!(
+            #[potential]
+            fn v() -> f64 {
+                k * p.norm_squared()
+            }
+        ),
+        quote!(
+            #[gravity]
+            fn down() -> Vec2 {
+                vec2(0.0, -k)
+            }
+        ),
     ];
     for items in straight_line {
         let out = with(items.clone());
-        assert!(out.contains("affine::AffineConstants<"), "{items}: not affine");
+        assert!(
+            out.contains("affine::AffineConstants<"),
+            "{items}: not affine"
+        );
         assert!(out.contains(one_branch), "{items}");
         assert!(out.contains("affine::regular_accelerations::<"), "{items}");
     }
     let other = [
-        quote!(#[force(on = p)] fn push() -> Vec2 { vec2(k, 0.0) }),
-        quote!(#[potential] fn v() -> f64 { x.tanh() + y }),
-        quote!(#[constraint] fn rod() -> f64 { p.norm_squared() - k }),
+        quote!(
+            #[force(on = p)]
+            fn push() -> Vec2 {
+                vec2(k, 0.0)
+            }
+        ),
+        quote!(
+            #[potential]
+            fn v() -> f64 {
+                x.tanh() + y
+            }
+        ),
+        quote!(
+            #[constraint]
+            fn rod() -> f64 {
+                p.norm_squared() - k
+            }
+        ),
     ];
     for items in other {
         let out = with(items.clone());
-        assert!(out.contains("affine::AffineConstants<"), "{items}: not affine");
+        assert!(
+            out.contains("affine::AffineConstants<"),
+            "{items}: not affine"
+        );
         assert!(!out.contains("PREPARED_IN_ONE_BRANCH"), "{items}");
         assert!(!out.contains("regular_accelerations"), "{items}");
     }

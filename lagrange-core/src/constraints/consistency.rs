@@ -2,9 +2,9 @@
 //! [`CONSISTENCY_TOLERANCE`], and consistent states from a guess ([`consistent_state`],
 //! [`consistent_state_holding`]).
 
+use super::kinds::{has_position, has_velocity};
 use super::mode::friction_rows_follow;
 use super::projection::project_holding;
-use super::kinds::{has_position, has_velocity};
 use super::rows::constraint_rows;
 #[cfg(doc)]
 use super::{infer_mode, project};

@@ -220,7 +220,9 @@ pub(super) fn mechanism_impl(
 enum Prepared {
     /// J and the factors of the constant mass matrix (`crate::affine`); whether q̈ is then
     /// straight-line code (see [`Positions`]).
-    Affine { straight_line: bool },
+    Affine {
+        straight_line: bool,
+    },
     /// The closed form's coefficients (`expand::closed_form`).
     Coefficients(usize),
     Nothing,
@@ -247,7 +249,11 @@ fn prepare_impl(
         };
     }
     if let Prepared::Affine { straight_line } = prepared {
-        let one_branch = straight_line.then(|| quote!(const PREPARED_IN_ONE_BRANCH: bool = true;));
+        let one_branch = straight_line.then(|| {
+            quote!(
+                const PREPARED_IN_ONE_BRANCH: bool = true;
+            )
+        });
         quote! {
             impl #p::Prepare for #params {
                 type Prepared = #p::lagrange_core::affine::AffineConstants<#n, #k>;

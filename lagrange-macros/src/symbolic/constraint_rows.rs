@@ -60,10 +60,8 @@ impl ConstraintDerivatives {
             let index = model.constraint_row(item);
             rows.push(derivatives(model, &mut graph, &row_deps, index, value));
         }
-        (!rows.is_empty() && graph.len() <= MAX_NODES).then_some(ConstraintDerivatives {
-            graph,
-            rows,
-        })
+        (!rows.is_empty() && graph.len() <= MAX_NODES)
+            .then_some(ConstraintDerivatives { graph, rows })
     }
 
     /// Whether each constraint row (of `count`) is written here.
@@ -82,7 +80,11 @@ impl ConstraintDerivatives {
         let outputs: Vec<Id> = self
             .rows
             .iter()
-            .flat_map(|r| [r.value, r.rate, r.bias].into_iter().chain(r.gradient.clone()))
+            .flat_map(|r| {
+                [r.value, r.rate, r.bias]
+                    .into_iter()
+                    .chain(r.gradient.clone())
+            })
             .collect();
         let lets = self.graph.emit(&outputs, &s);
         let params = model.params.iter().map(|p| &p.ident);
@@ -135,8 +137,10 @@ fn derivatives(
         let rate = match v {
             Variable::Coordinate(j) => g.node(Node::Velocity(j)),
             Variable::Row(r) => {
-                let (velocity, acceleration) =
-                    (g.node(Node::RowVelocity(r)), g.node(Node::RowAcceleration(r)));
+                let (velocity, acceleration) = (
+                    g.node(Node::RowVelocity(r)),
+                    g.node(Node::RowAcceleration(r)),
+                );
                 second.push((velocity, acceleration));
                 velocity
             }

@@ -30,7 +30,12 @@ impl Gradients {
         let value = Reader::new(model, &mut self.graph).potential(block)?;
         let mut derivatives = Vec::new();
         // Time is no variable of the gradient.
-        for v in self.graph.variables(value).into_iter().filter(|&v| v != Variable::Time) {
+        for v in self
+            .graph
+            .variables(value)
+            .into_iter()
+            .filter(|&v| v != Variable::Time)
+        {
             let d = self.graph.derivative(value, v);
             if !self.graph.is_zero(d) {
                 derivatives.push((v, d));
