@@ -120,7 +120,10 @@ pub mod wedge {
 }
 
 const PLANET: planet::Planet = planet::Planet { m: 1.3, mu: 0.8 };
-const CHAIN: chain::Chain = chain::Chain { m: 0.9, omega: 50.0 };
+const CHAIN: chain::Chain = chain::Chain {
+    m: 0.9,
+    omega: 50.0,
+};
 const TIED_WEDGE: tied_wedge::TiedWedge = tied_wedge::TiedWedge {
     big_m: 3.0,
     m: 1.0,
@@ -170,7 +173,11 @@ fn agrees<M: Mechanism<N>, const N: usize>(
 ) {
     let handle = sys.validated().unwrap();
     for (i, (q, v)) in states.enumerate() {
-        let s = State::new(0.1 * i as f64, M::Coords::from_array(q), M::Coords::from_array(v));
+        let s = State::new(
+            0.1 * i as f64,
+            M::Coords::from_array(q),
+            M::Coords::from_array(v),
+        );
         let one_branch = handle.accelerations(&s).unwrap().to_array();
         let hook = handle.accelerations_at(s.t, &q, &v).unwrap();
         assert_eq!(one_branch, hook, "at {s:?}");

@@ -362,7 +362,11 @@ fn the_validated_handle_agrees() {
     let duals = OnDuals(norm::Norm { ..p });
     let sys = p.validated().unwrap();
     for (t, q, v) in states::<2>() {
-        let s = State::new(t, norm::Coords { x: q[0], y: q[1] }, norm::Coords { x: v[0], y: v[1] });
+        let s = State::new(
+            t,
+            norm::Coords { x: q[0], y: q[1] },
+            norm::Coords { x: v[0], y: v[1] },
+        );
         let a = sys.accelerations(&s).unwrap();
         let b = constraints::accelerations(&duals, t, &q, &v).unwrap();
         close(a.x, b[0], "q̈ₓ");
