@@ -31,6 +31,11 @@ mod kepler;
 #[path = "../../../../lagrange-bench/src/pendulums.rs"]
 #[allow(dead_code)]
 mod pendulums;
+// The report's stiff problems, which the tests of `problems` name (compiled with them only).
+#[cfg(test)]
+#[path = "../../../../lagrange-bench/src/stiff.rs"]
+#[allow(dead_code, unused_imports)]
+mod stiff;
 #[path = "../../../../lagrange-bench/src/problems.rs"]
 #[allow(dead_code, unused_imports)]
 mod problems;
