@@ -3,8 +3,11 @@
 //! counts this reproduces, and the defaults of its controller.
 
 use lagrange_core::integrate::{AccelerationField, Dop853, EmbeddedPair, Observation, Stats};
-use lagrange_core::{Error, Mechanism, Model, Scalar, State};
+use lagrange_core::{Error, Mechanism, State};
 use nalgebra::SMatrix;
+
+mod support;
+use support::BlowUp;
 
 /// Van der Pol's equation as `dr_dop853.f` writes it, y₁' = y₂, y₂' = ((1 − y₁²) y₂ − y₁)/ε: a
 /// second-order equation q̈ = ((1 − q²) q̇ − q)/ε in q = y₁, so (q, q̇) is the first-order state
@@ -100,30 +103,6 @@ fn van_der_pol_takes_the_steps_of_dr_dop853() {
         "{h_next}"
     );
 }
-
-/// q̈ = q² (V = −q³/3, unit mass): from q = 1, q̇ = √(2/3) the solution q = 6/(t − √6)² blows up
-/// at t = √6.
-struct BlowUp;
-
-impl Model<1, 1> for BlowUp {
-    type Coords = [f64; 1];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Ok(())
-    }
-    fn masses(&self) -> [f64; 1] {
-        [1.0]
-    }
-    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] {
-        [q[0]]
-    }
-    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D {
-        -(x[0] * x[0] * x[0]) / 3.0
-    }
-}
-lagrange_core::impl_mechanism!(BlowUp, 1, 1);
 
 /// Every step is checked: the blow-up ends the integration with a named error close to the
 /// singularity, and the caller's state is left as it was; a non-finite start is refused.

@@ -11,6 +11,9 @@ use lagrange_core::{
 };
 use std::f64::consts::PI;
 
+mod support;
+use support::BlowUp;
+
 const E: f64 = 0.6;
 
 /// Max-norm distance between two states' (q, v).
@@ -988,30 +991,6 @@ impl Model<2, 4> for DoublePendulum {
     }
 }
 lagrange_core::impl_mechanism!(DoublePendulum, 2, 4);
-
-/// q̈ = q² (V = −q³/3): from q = 1, q̇ = √(2/3) (zero energy) the solution q = 4/(2 − √(2/3) t)²
-/// blows up at t = √6.
-pub struct BlowUp;
-
-impl Model<1, 1> for BlowUp {
-    type Coords = [f64; 1];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> lagrange_core::Result<()> {
-        Ok(())
-    }
-    fn masses(&self) -> [f64; 1] {
-        [1.0]
-    }
-    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] {
-        [q[0]]
-    }
-    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D {
-        -(x[0] * x[0] * x[0]) / 3.0
-    }
-}
-lagrange_core::impl_mechanism!(BlowUp, 1, 1);
 
 /// Exact Kepler orbit with a = 1, GM = 1 (period 2π) starting at periapsis of eccentricity e:
 /// q₀ = (1 − e, 0), v₀ = (0, √((1 + e)/(1 − e))). Position and velocity at time t from Kepler's

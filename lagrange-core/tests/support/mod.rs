@@ -44,3 +44,28 @@ macro_rules! delegate_model {
         }
     };
 }
+
+/// q̈ = q² (V = −q³/3, unit mass): from q = 1, q̇ = √(2/3) (zero energy) the solution
+/// q = 6/(√6 − t)² blows up at t = √6.
+#[allow(dead_code)]
+pub struct BlowUp;
+
+impl lagrange_core::Model<1, 1> for BlowUp {
+    type Coords = [f64; 1];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = false;
+    fn validate(&self) -> lagrange_core::Result<()> {
+        Ok(())
+    }
+    fn masses(&self) -> [f64; 1] {
+        [1.0]
+    }
+    fn cartesian<D: lagrange_core::Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 1] {
+        [q[0]]
+    }
+    fn potential<D: lagrange_core::Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 1]) -> D {
+        -(x[0] * x[0] * x[0]) / 3.0
+    }
+}
+lagrange_core::impl_mechanism!(BlowUp, 1, 1);
