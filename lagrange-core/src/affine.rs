@@ -29,7 +29,7 @@ use crate::dynamics::{
 use crate::error::Result;
 use crate::geometry::Scalar;
 use crate::linalg::{factor_pattern, mass_pattern, Ldlt};
-use crate::model::{lane_sum, Model};
+use crate::model::{state_and_accelerations_finite, Model};
 use nalgebra::SVector;
 
 /// The constants of an affine mechanism's equations of motion (see the [module docs](self)).
@@ -210,11 +210,8 @@ pub fn regular_accelerations<M: Model<N, K>, const N: usize, const K: usize>(
     q: &[f64; N],
     v: &[f64; N],
 ) -> Option<[f64; N]> {
-    let qdd = free_accelerations(model, constants, t, q, v);
-    // The sum of every value is finite when they all are, and s·0 is 0 exactly when s is finite.
-    // A sum that overflows although every term is finite only sends the call down the checked
-    // path, which then returns the same q̈.
-    ((t + lane_sum::<N>(|j| q[j] + v[j] + qdd[j])) * 0.0 == 0.0).then(|| qdd.into())
+    let qdd: [f64; N] = free_accelerations(model, constants, t, q, v).into();
+    state_and_accelerations_finite(t, q, v, &qdd).then_some(qdd)
 }
 
 /// M⁻¹ 𝓕 at (t, q, q̇) from the prepared constants (b = 0), unchecked: q̈ of the mechanism without

@@ -20,7 +20,7 @@
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::linalg::{solve_spd, solve_spd_flagged, NotPositiveDefinite};
-use crate::model::{lane_sum, Coordinates, Model};
+use crate::model::{lane_sum, state_and_accelerations_finite, Coordinates, Model};
 use nalgebra::{Const, U1};
 use nalgebra::{SMatrix, SVector};
 use num_dual::{Derivative, Dual, Dual2, DualSVec, HyperDualVec};
@@ -493,15 +493,9 @@ pub fn regular_accelerations<const N: usize>(
 ) -> Option<[f64; N]> {
     let rhs = eom.generalized_forces - eom.inertial_terms;
     let (qdd, pivots_pass) = solve_spd_flagged(&eom.mass_matrix, &rhs);
-    // The sum of every value is finite when they all are, and s·0 is 0 exactly when s is finite.
-    // A sum that overflows although every term is finite only sends the call down the checked
-    // path, which then returns the same q̈.
-    let mut sum = t;
-    for j in 0..N {
-        sum += q[j] + v[j] + qdd[j];
-    }
+    let qdd: [f64; N] = qdd.into();
     // `&`, not `&&`: one branch for all three.
-    (parameters_pass & pivots_pass & (sum * 0.0 == 0.0)).then(|| qdd.into())
+    (parameters_pass & pivots_pass & state_and_accelerations_finite(t, q, v, &qdd)).then_some(qdd)
 }
 
 /// `qdd` when every entry is finite, otherwise [`Error::NonFiniteDynamics`] at (t, q).

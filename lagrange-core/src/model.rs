@@ -277,6 +277,20 @@ pub(crate) fn lane_sum<const N: usize>(term: impl Fn(usize) -> f64) -> f64 {
     lanes[0] + lanes[1]
 }
 
+/// Whether t, q, q̇ and q̈ are all finite, by one sum: the one-branch test of the calls whose
+/// q̈ is straight-line code (`dynamics::regular_accelerations`, `affine::regular_accelerations`).
+/// A sum that overflows although every value is finite answers `false`, which only sends the
+/// caller down its checked path, where the same q̈ is returned.
+#[inline(always)]
+pub(crate) fn state_and_accelerations_finite<const N: usize>(
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    qdd: &[f64; N],
+) -> bool {
+    (t + lane_sum::<N>(|j| q[j] + v[j] + qdd[j])) * 0.0 == 0.0
+}
+
 /// [`check_state`] when the sum of the values is not finite: `Ok` when every value is (the sum
 /// overflowed), otherwise the error naming the state.
 #[cold]
