@@ -48,6 +48,16 @@ pub(super) fn mechanism_impl(
         _ => Prepared::Nothing,
     };
     let prepare = prepare_impl(params, &n, &k, prepared);
+    // A call on the plain mechanism with equations in closed form: the coefficients computed
+    // here, the parameters' test joining the call's one branch (a handle checked them once).
+    let plain_closed_form_call = quote! {
+        #[inline(always)]
+        fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+            let eom = self.__lagrange_closed_form::<f64>(q, v);
+            let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
+            #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
+        }
+    };
     // Through a validated handle, q̈ uses the constants prepared once: an affine mechanism's J and
     // factors of M, the closed form's coefficients.
     let prepared_accelerations = match prepared {
@@ -65,16 +75,7 @@ pub(super) fn mechanism_impl(
             // Affine positions in closed form as well (a uniform field the only force): a call
             // on the plain mechanism, which prepares nothing, takes the closed form's one branch.
             let closed_form = matches!(equations, Equations::ClosedForm(_));
-            let closed_form_call = closed_form.then(|| {
-                quote! {
-                    #[inline(always)]
-                    fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-                        let eom = self.__lagrange_closed_form::<f64>(q, v);
-                        let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
-                        #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
-                    }
-                }
-            });
+            let closed_form_call = closed_form.then(|| plain_closed_form_call.clone());
             // Through a validated handle, with its prepared constants: in one branch where q̈ is
             // then straight-line code, otherwise (the hook's `None`) down the checked path.
             let prepared_call = if straight_line {
@@ -109,13 +110,7 @@ pub(super) fn mechanism_impl(
                 let eom = self.__lagrange_closed_form_with::<S>(#p::core::option::Option::Some(prepared), q, v);
                 #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
             }
-            // The parameters' test joins the call's one branch; a handle checked them once.
-            #[inline(always)]
-            fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-                let eom = self.__lagrange_closed_form_with::<f64>(#p::core::option::Option::None, q, v);
-                let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
-                #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
-            }
+            #plain_closed_form_call
             #[inline(always)]
             fn regular_accelerations_prepared_at(&self, prepared: &Self::Prepared, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
                 let eom = self.__lagrange_closed_form_with::<f64>(#p::core::option::Option::Some(prepared), q, v);

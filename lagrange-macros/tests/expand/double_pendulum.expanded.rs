@@ -467,10 +467,7 @@ pub mod double_pendulum {
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            let eom = self
-                .__lagrange_closed_form_with::<
-                    f64,
-                >(::lagrange::__private::core::option::Option::None, q, v);
+            let eom = self.__lagrange_closed_form::<f64>(q, v);
             let parameters_pass = <Self as ::lagrange::__private::Model<
                 2,
                 4,

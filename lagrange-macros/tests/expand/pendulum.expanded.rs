@@ -386,10 +386,7 @@ pub mod pendulum {
             q: &[f64; 1],
             v: &[f64; 1],
         ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
-            let eom = self
-                .__lagrange_closed_form_with::<
-                    f64,
-                >(::lagrange::__private::core::option::Option::None, q, v);
+            let eom = self.__lagrange_closed_form::<f64>(q, v);
             let parameters_pass = <Self as ::lagrange::__private::Model<
                 1,
                 2,
