@@ -1,6 +1,7 @@
 //! `accelerations` of an N-link planar pendulum (equal links, gravity) for N = 1, 2, 4, 8, 16, 32, 64:
 //! the generated code against a hand-written O(N²) closed form (M_jk = m l² (N − max(j,k))
-//! cos(θⱼ − θₖ), solved with the same LDLᵀ), in one run.
+//! cos(θⱼ − θₖ), solved with the library's general LDLᵀ, `Ldlt`; the generated code solves with
+//! `linalg::solve_spd`, which takes closed forms up to four coordinates), in one run.
 //!
 //! ```text
 //! cargo bench --bench chain

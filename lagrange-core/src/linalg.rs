@@ -13,6 +13,7 @@
 use crate::geometry::Scalar;
 use nalgebra::{SMatrix, SVector};
 
+mod blocks;
 mod ldlt;
 mod pattern;
 pub use ldlt::{Dense, FactorPattern, Ldlt};
@@ -125,7 +126,9 @@ pub fn cholesky_substitute<S: Scalar, const N: usize>(
 /// N = 2:  d₀ = M₀₀,  det = M₀₀M₁₁ − M₁₀²,  d₁ = det / d₀,   x = [M₁₁b₀ − M₁₀b₁, M₀₀b₁ − M₁₀b₀] / det
 /// ```
 ///
-/// (d₁ > tol ⇔ det > tol·d₀ since d₀ > 0, so the second test needs no division either.)
+/// (d₁ > tol ⇔ det > tol·d₀ since d₀ > 0, so the second test needs no division either), and three
+/// or four eliminate the leading 2×2 block the same way and solve its Schur complement in closed
+/// form: two divisions in series instead of three or four.
 ///
 /// ```
 /// use lagrange_core::linalg::solve_spd;
@@ -142,11 +145,11 @@ pub fn solve_spd<S: Scalar, const N: usize>(
 ) -> Result<SVector<S, N>, NotPositiveDefinite> {
     match solve_spd_flagged(m, b) {
         (x, true) => Ok(x),
-        (_, false) => Err(first_failed_pivot(m)),
+        (_, false) => factorised_solve(m, b),
     }
 }
 
-/// [`solve_spd`] without a branch for one or two coordinates: x, and whether every pivot passed
+/// [`solve_spd`] without a branch for up to four coordinates: x, and whether every pivot passed
 /// (x is meaningless when one did not). For a caller that folds the test into one branch with
 /// others (`dynamics::regular_accelerations`).
 ///
@@ -178,6 +181,9 @@ pub fn solve_spd_flagged<S: Scalar, const N: usize>(
         // `&`, not `&&`: both tests are cheap, and one branch is what the caller wants.
         return (x, first & second);
     }
+    if N == 3 || N == 4 {
+        return blocks::solve(m, b);
+    }
     match Ldlt::new(m) {
         Ok(factors) => (factors.solve(b), true),
         Err(_) => (x, false),
@@ -204,31 +210,16 @@ fn pivots_2x2_pass(m00: f64, m11: f64, det: f64) -> (bool, bool) {
     )
 }
 
-/// Which pivot of M failed [`solve_spd_flagged`]'s tests, and its value.
+/// [`solve_spd`] when the closed forms' tests fail: the factorisation decides, and names the
+/// pivot that fails. It can succeed where they did not — a determinant that overflows although
+/// the pivots do not (masses near `f64::MAX`), or a pivot at the tolerance rounded to either side.
 #[cold]
 #[inline(never)]
-fn first_failed_pivot<S: Scalar, const N: usize>(m: &SMatrix<S, N, N>) -> NotPositiveDefinite {
-    let d0 = m[(0, 0)].re();
-    if N == 2 {
-        let (m11, m10) = (m[(1, 1)].re(), m[(1, 0)].re());
-        let det = d0 * m11 - m10 * m10;
-        if pivots_2x2_pass(d0, m11, det).0 {
-            return NotPositiveDefinite {
-                index: 1,
-                pivot: det / d0,
-            };
-        }
-    }
-    if N <= 2 {
-        return NotPositiveDefinite {
-            index: 0,
-            pivot: d0,
-        };
-    }
-    match Ldlt::new(m) {
-        Err(e) => e,
-        Ok(_) => unreachable!("the factorisation failed a moment ago on the same matrix"),
-    }
+fn factorised_solve<S: Scalar, const N: usize>(
+    m: &SMatrix<S, N, N>,
+    b: &SVector<S, N>,
+) -> Result<SVector<S, N>, NotPositiveDefinite> {
+    Ldlt::new(m).map(|factors| factors.solve(b))
 }
 
 /// Solves A x = b for a general square A by LU with partial pivoting; `None` when a pivot vanishes
