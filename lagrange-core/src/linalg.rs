@@ -440,6 +440,51 @@ mod tests {
     }
 
     #[test]
+    fn closed_forms_that_overflow_fall_back_to_the_factorisation() {
+        // Entries near 1e160: the determinants the closed forms form (≈ 1e320) overflow, the
+        // pivots do not. The flag fails, and `solve_spd` returns the factorisation's solution.
+        for n in [2, 3, 4] {
+            let mut m = nalgebra::Matrix4::<f64>::identity() * 3.0;
+            m[(1, 0)] = 1.0;
+            m[(0, 1)] = 1.0;
+            let big = m * 1e160;
+            let b = vector![1.0, 2.0, -1.0, 0.5];
+            let (x, y) = match n {
+                2 => {
+                    let (m, b) = (
+                        big.fixed_view::<2, 2>(0, 0).into_owned(),
+                        b.fixed_rows::<2>(0).into_owned(),
+                    );
+                    assert!(!solve_spd_flagged(&m, &b).1);
+                    (
+                        solve_spd(&m, &b).unwrap().as_slice().to_vec(),
+                        Ldlt::new(&m).unwrap().solve(&b).as_slice().to_vec(),
+                    )
+                }
+                3 => {
+                    let (m, b) = (
+                        big.fixed_view::<3, 3>(0, 0).into_owned(),
+                        b.fixed_rows::<3>(0).into_owned(),
+                    );
+                    assert!(!solve_spd_flagged(&m, &b).1);
+                    (
+                        solve_spd(&m, &b).unwrap().as_slice().to_vec(),
+                        Ldlt::new(&m).unwrap().solve(&b).as_slice().to_vec(),
+                    )
+                }
+                _ => {
+                    assert!(!solve_spd_flagged(&big, &b).1);
+                    (
+                        solve_spd(&big, &b).unwrap().as_slice().to_vec(),
+                        Ldlt::new(&big).unwrap().solve(&b).as_slice().to_vec(),
+                    )
+                }
+            };
+            assert_eq!(x, y, "N = {n}");
+        }
+    }
+
+    #[test]
     fn lu_solves_general_system_and_detects_singular() {
         let a = matrix![0.0, 2.0, 1.0; 1.0, 1.0, 0.0; 3.0, 0.0, 1.0];
         let b = vector![1.0, 2.0, 3.0];
