@@ -273,7 +273,8 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     /// The canonical field (p, ṗ) = (∂L/∂q̇, ∂L/∂q + F_nc) at (t, q, q̇), for any scalar: what the
     /// methods on (q, p) evaluate (see `integrate::canonical`). By default from the momenta and a
     /// gradient of T of their own; `#[mechanism]` computes a scleronomic mechanism's from one
-    /// hyper-dual pass ([`crate::dynamics::canonical_field`]).
+    /// hyper-dual pass ([`crate::dynamics::canonical_field`]), or as straight-line code where it
+    /// derives the equations in closed form ([`CLOSED_FORM`](Dynamics::CLOSED_FORM)).
     #[doc(hidden)]
     #[inline]
     fn canonical_field_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> ([S; N], [S; N]) {
@@ -281,6 +282,23 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
             self.momenta_at(t, q, v),
             crate::integrate::momentum_rate(self, t, q, v),
         )
+    }
+
+    /// [`canonical_field_at`](Dynamics::canonical_field_at) with the constants
+    /// [`Prepare::prepare`] computed when the mechanism was validated: what a
+    /// [`Validated`](crate::Validated) handle calls (`#[mechanism]`'s closed form evaluates its
+    /// prepared coefficients). By default the constants are not used.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn canonical_field_prepared_at<S: Scalar>(
+        &self,
+        prepared: &Self::Prepared,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> ([S; N], [S; N]) {
+        let _ = prepared;
+        self.canonical_field_at(t, q, v)
     }
 
     #[doc(hidden)]

@@ -142,7 +142,7 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
     }
     #[inline(always)]
     fn canonical_field_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> ([S; N], [S; N]) {
-        self.0.canonical_field_at(t, q, v)
+        self.0.canonical_field_prepared_at(&self.1, t, q, v)
     }
     #[inline(always)]
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {

@@ -1,4 +1,4 @@
-//! The closed-form equations of motion ([`crate::symbolic`]) as straight-line code, in three
+//! The closed-form equations of motion ([`crate::symbolic`]) as straight-line code, in four
 //! inherent functions:
 //! - `__lagrange_coefficients()`: every distinct constant factor (of parameters, masses and
 //!   constants as written) as an `f64` array — what a validated handle prepares once
@@ -7,7 +7,11 @@
 //!   computed after the trigonometric calls when `k` is `None`), the sines and
 //!   cosines of the coordinates evaluated once each (one `sin_cos` where both appear) and each
 //!   distinct product of variables once;
-//! - `__lagrange_closed_form(q, q̇)`: the two together, what `equations_of_motion_at` calls.
+//! - `__lagrange_closed_form(q, q̇)`: the two together, what `equations_of_motion_at` calls;
+//! - `__lagrange_canonical_field_with(k, q, q̇)`: the canonical field the methods on (q, p)
+//!   evaluate, p = M q̇ and ṗ = ∂T/∂q + 𝓕 with T = ½ q̇ᵀ M q̇, so
+//!   ∂T/∂qₖ = ½ Σᵢⱼ q̇ᵢ q̇ⱼ ∂Mᵢⱼ/∂qₖ: M's polynomials differentiated here ([`Poly::derivative`],
+//!   d sin = cos, d cos = −sin), from the same coefficients.
 
 use super::{lit, private, scalar};
 use crate::check::Model;
@@ -29,10 +33,9 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
             .map(|f| f.ident.to_token_stream())
             .collect(),
         coefficient_values: Vec::new(),
-        product_lets: Vec::new(),
         coefficients: BTreeMap::new(),
-        products: BTreeMap::new(),
         atoms: BTreeSet::new(),
+        body: Body::default(),
     };
     let lower: Vec<Vec<TokenStream>> = equations
         .mass_matrix
@@ -57,11 +60,18 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
         });
         quote!([#(#column),*])
     });
+    let motion = std::mem::take(&mut out.body);
+    let (momenta, rates) = canonical_field(equations);
+    let momenta: Vec<TokenStream> = momenta.iter().map(|p| out.entry(p)).collect();
+    let rates: Vec<TokenStream> = rates.iter().map(|r| out.entry(r)).collect();
+    let canonical = std::mem::take(&mut out.body);
     let constants = out.constant_inputs(model, equations);
-    let variables = out.variable_inputs(model);
+    let variables = motion.variable_inputs(model);
     // One `let` for the products: each `let` opens a scope, and thousands of nested scopes (a
     // chain of 64 links) overflow the compiler's stack when it writes debug information.
-    let products = tuple_let(&out.product_lets);
+    let products = tuple_let(&motion.product_lets);
+    let canonical_variables = canonical.variable_inputs(model);
+    let canonical_products = tuple_let(&canonical.product_lets);
     let coefficients = out.coefficient_values.iter();
     let coefficient_count = out.coefficient_values.len();
     let count = lit(coefficient_count);
@@ -113,23 +123,86 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
                     [#(#inertial),*],
                 )
             }
+            /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
+            /// (`Some`) or computed here (`None`).
+            #[inline(always)]
+            #[allow(unused_variables, non_snake_case, clippy::all)]
+            fn __lagrange_canonical_field_with<#d: #p::Scalar>(
+                &self,
+                __prepared: #p::core::option::Option<&[f64; #count]>,
+                __q: &[#d; #n],
+                __v: &[#d; #n],
+            ) -> ([#d; #n], [#d; #n]) {
+                #prelude
+                #canonical_variables
+                let __computed: [f64; #count];
+                let __k: &[f64; #count] = match __prepared {
+                    #p::core::option::Option::Some(__k) => __k,
+                    #p::core::option::Option::None => {
+                        __computed = self.__lagrange_coefficients();
+                        &__computed
+                    }
+                };
+                #canonical_products
+                ([#(#momenta),*], [#(#rates),*])
+            }
         }
     };
     (tokens, coefficient_count)
 }
 
+/// The canonical field's polynomials from M and 𝓕: pᵢ = Σⱼ Mᵢⱼ q̇ⱼ and
+/// ṗₖ = ∂T/∂qₖ + 𝓕ₖ, T = ½ q̇ᵀ M q̇ = Σᵢ ½ Mᵢᵢ q̇ᵢ² + Σᵢ>ⱼ Mᵢⱼ q̇ᵢ q̇ⱼ (the Euler–Lagrange equations
+/// in momentum form, d/dt ∂L/∂q̇ = ∂L/∂q, with 𝓕 holding the field's −∂V/∂q; Goldstein, Poole &
+/// Safko, *Classical Mechanics*, 3rd ed., §1.4), ∂T/∂qₖ brought to its normal form modulo
+/// sin² + cos² = 1.
+fn canonical_field(equations: &Equations) -> (Vec<Poly>, Vec<Poly>) {
+    let m = &equations.mass_matrix;
+    let n = m.len();
+    let velocity = |j: usize| Poly::atom(Atom::Vel(j));
+    let entry = |i: usize, j: usize| if i >= j { &m[i][j] } else { &m[j][i] };
+    let momenta = (0..n)
+        .map(|i| (0..n).fold(Poly::zero(), |sum, j| sum.add(&entry(i, j).mul(&velocity(j)))))
+        .collect();
+    let mut kinetic = Poly::zero();
+    for i in 0..n {
+        kinetic = kinetic.add(&m[i][i].mul(&velocity(i)).mul(&velocity(i)).scale(0.5));
+        for j in 0..i {
+            kinetic = kinetic.add(&m[i][j].mul(&velocity(i)).mul(&velocity(j)));
+        }
+    }
+    let rates = (0..n)
+        .map(|k| {
+            kinetic
+                .derivative(k)
+                .reduce()
+                .add(&equations.generalized_forces[k])
+        })
+        .collect();
+    (momenta, rates)
+}
+
 /// What the entries written so far share: the coefficients (`__k[i]`) by their constant
-/// polynomial, the products of variables by their monomial, and the atoms they name.
+/// polynomial and the atoms they name; the function being written (its products and variables)
+/// is [`Body`].
 struct Writer {
     /// The parameters' names, by index.
     params: Vec<TokenStream>,
     /// The `f64` coefficients' values, `__k[i]` in the equations.
     coefficient_values: Vec<TokenStream>,
+    coefficients: BTreeMap<String, TokenStream>,
+    /// Every atom named, by the coefficients and by every function.
+    atoms: BTreeSet<Atom>,
+    body: Body,
+}
+
+/// One function's share: the products of variables by their monomial, and the variables named.
+#[derive(Default)]
+struct Body {
     /// Products of variables on `__D`, by name.
     product_lets: Vec<(Ident, TokenStream)>,
-    coefficients: BTreeMap<String, TokenStream>,
     products: BTreeMap<Monomial, TokenStream>,
-    atoms: BTreeSet<Atom>,
+    variables: BTreeSet<Atom>,
 }
 
 impl Writer {
@@ -271,7 +344,7 @@ impl Writer {
         if factors.is_empty() {
             return None;
         }
-        if let Some(ident) = self.products.get(variables) {
+        if let Some(ident) = self.body.products.get(variables) {
             return Some(ident.clone());
         }
         let d = scalar();
@@ -283,15 +356,18 @@ impl Writer {
                 (_, false) => quote!(#value / #a),
             };
         }
-        let ident = format_ident!("__product_{}", self.products.len());
-        self.product_lets.push((ident.clone(), value));
-        self.products.insert(variables.clone(), quote!(#ident));
+        let ident = format_ident!("__product_{}", self.body.products.len());
+        self.body.product_lets.push((ident.clone(), value));
+        self.body.products.insert(variables.clone(), quote!(#ident));
         Some(quote!(#ident))
     }
 
     /// The name an atom is bound to (see [`Writer::inputs`]).
     fn atom(&mut self, atom: Atom) -> TokenStream {
         self.atoms.insert(atom);
+        if atom.is_variable() {
+            self.body.variables.insert(atom);
+        }
         match atom {
             Atom::Param(i) => self.params[i].clone(),
             Atom::Constant(i) => format_ident!("__constant_{}", i).into_token_stream(),
@@ -330,7 +406,9 @@ impl Writer {
         }
         out
     }
+}
 
+impl Body {
     /// The sines and cosines used: one `sin_cos` per coordinate whose sine and cosine both
     /// appear.
     fn variable_inputs(&self, model: &Model) -> TokenStream {
@@ -339,8 +417,8 @@ impl Writer {
             let (sin, cos) = (format_ident!("__sin_{}", j), format_ident!("__cos_{}", j));
             let jl = lit(j);
             match (
-                self.atoms.contains(&Atom::Sin(j)),
-                self.atoms.contains(&Atom::Cos(j)),
+                self.variables.contains(&Atom::Sin(j)),
+                self.variables.contains(&Atom::Cos(j)),
             ) {
                 (true, true) => out.extend(quote!(let (#sin, #cos) = __q[#jl].sin_cos();)),
                 (true, false) => out.extend(quote!(let #sin = __q[#jl].sin();)),

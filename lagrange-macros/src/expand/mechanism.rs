@@ -120,15 +120,41 @@ pub(super) fn mechanism_impl(
         Prepared::Nothing => None,
     };
     let scleronomic = !rheonomic;
-    // A scleronomic mechanism's canonical field comes from one hyper-dual pass.
-    let canonical = (!rheonomic).then(|| {
-        quote! {
-            #[inline]
-            fn canonical_field_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
-                #p::dynamics::canonical_field::<Self, S, #n, #k>(self, t, q, v)
-            }
+    // The canonical field (and the momenta) in closed form, with the prepared coefficients through
+    // a handle; otherwise a scleronomic mechanism's from one hyper-dual pass.
+    let canonical = match (&equations, prepared) {
+        (Equations::ClosedForm(_), _) => {
+            let field = quote!(self.__lagrange_canonical_field_with::<S>);
+            let none = quote!(#p::core::option::Option::None);
+            let prepared_field = matches!(prepared, Prepared::Coefficients(_)).then(|| quote! {
+                #[inline(always)]
+                fn canonical_field_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+                    #field(#p::core::option::Option::Some(prepared), q, v)
+                }
+            });
+            Some(quote! {
+                #[inline(always)]
+                fn canonical_field_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+                    #field(#none, q, v)
+                }
+                #prepared_field
+            })
         }
-    });
+        _ => (!rheonomic).then(|| {
+            quote! {
+                #[inline]
+                fn canonical_field_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+                    #p::dynamics::canonical_field::<Self, S, #n, #k>(self, t, q, v)
+                }
+            }
+        }),
+    };
+    let momenta = match equations {
+        Equations::ClosedForm(_) => quote! {
+            self.__lagrange_canonical_field_with::<S>(#p::core::option::Option::None, q, v).0
+        },
+        _ => quote!(#p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)),
+    };
     let closed_form = matches!(equations, Equations::ClosedForm(_));
     let equations_of_motion = match equations {
         Equations::ClosedForm(_) => quote!(self.__lagrange_closed_form::<S>(q, v)),
@@ -198,7 +224,7 @@ pub(super) fn mechanism_impl(
             }
             #[inline]
             fn momenta_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
-                #p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)
+                #momenta
             }
             #[inline]
             fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {

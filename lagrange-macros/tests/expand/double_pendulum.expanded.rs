@@ -346,6 +346,55 @@ pub mod double_pendulum {
                 ],
             )
         }
+        /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
+        /// (`Some`) or computed here (`None`).
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_canonical_field_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 5]>,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ([__D; 2], [__D; 2]) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let (__sin_0, __cos_0) = __q[0].sin_cos();
+            let (__sin_1, __cos_1) = __q[1].sin_cos();
+            let __computed: [f64; 5];
+            let __k: &[f64; 5] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
+            let (__product_0, __product_1, __product_2, __product_3, __product_4) = (
+                __sin_0 * __sin_1,
+                __cos_0 * __cos_1,
+                __v[0] * __v[1],
+                __sin_0 * __cos_1,
+                __sin_1 * __cos_0,
+            );
+            (
+                [
+                    __v[0] * <__D>::from(__k[0])
+                        + (__product_0 + __product_1) * __k[1] * __v[1],
+                    (__product_0 + __product_1) * __k[1] * __v[0]
+                        + __v[1] * <__D>::from(__k[2]),
+                ],
+                [
+                    -__sin_0 * __k[3]
+                        - (__product_3 - __product_4) * __k[1] * __product_2,
+                    -__sin_1 * __k[4]
+                        + (__product_3 - __product_4) * __k[1] * __product_2,
+                ],
+            )
+        }
     }
     impl ::lagrange::__private::Prepare for DoublePendulum {
         type Prepared = [f64; 5];
@@ -413,7 +462,10 @@ pub mod double_pendulum {
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 4>(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
+                .0
         }
         #[inline]
         fn lagrangian_time_derivative_at(
@@ -428,19 +480,28 @@ pub mod double_pendulum {
                 4,
             >(self, t, q, v)
         }
-        #[inline]
+        #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                2,
-                4,
-            >(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
+        }
+        #[inline(always)]
+        fn canonical_field_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::Some(prepared), q, v)
         }
         #[inline]
         fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(

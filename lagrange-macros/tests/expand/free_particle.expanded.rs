@@ -230,6 +230,36 @@ pub mod free {
                 [<__D>::from(0.0), <__D>::from(0.0)],
             )
         }
+        /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
+        /// (`Some`) or computed here (`None`).
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_canonical_field_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 1]>,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ([__D; 2], [__D; 2]) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let __computed: [f64; 1];
+            let __k: &[f64; 1] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
+            (
+                [__v[0] * <__D>::from(__k[0]), __v[1] * <__D>::from(__k[0])],
+                [<__D>::from(0.0), <__D>::from(0.0)],
+            )
+        }
     }
     impl ::lagrange::__private::Prepare for Free {
         type Prepared = ::lagrange::__private::lagrange_core::affine::AffineConstants<
@@ -300,7 +330,10 @@ pub mod free {
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 2>(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
+                .0
         }
         #[inline]
         fn lagrangian_time_derivative_at(
@@ -315,19 +348,16 @@ pub mod free {
                 2,
             >(self, t, q, v)
         }
-        #[inline]
+        #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                2,
-                2,
-            >(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
         }
         #[inline]
         fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(

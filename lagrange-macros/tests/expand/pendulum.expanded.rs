@@ -265,6 +265,34 @@ pub mod pendulum {
                 [<__D>::from(0.0)],
             )
         }
+        /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
+        /// (`Some`) or computed here (`None`).
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_canonical_field_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 2]>,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+        ) -> ([__D; 1], [__D; 1]) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let __sin_0 = __q[0].sin();
+            let __computed: [f64; 2];
+            let __k: &[f64; 2] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
+            ([__v[0] * <__D>::from(__k[0])], [-__sin_0 * __k[1]])
+        }
     }
     impl ::lagrange::__private::Prepare for Pendulum {
         type Prepared = [f64; 2];
@@ -332,7 +360,10 @@ pub mod pendulum {
             q: &[S; 1],
             v: &[S; 1],
         ) -> [S; 1] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
+                .0
         }
         #[inline]
         fn lagrangian_time_derivative_at(
@@ -347,19 +378,28 @@ pub mod pendulum {
                 2,
             >(self, t, q, v)
         }
-        #[inline]
+        #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> ([S; 1], [S; 1]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                1,
-                2,
-            >(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
+        }
+        #[inline(always)]
+        fn canonical_field_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ([S; 1], [S; 1]) {
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::Some(prepared), q, v)
         }
         #[inline]
         fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(

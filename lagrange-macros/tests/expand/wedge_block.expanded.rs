@@ -323,6 +323,39 @@ pub mod wedge_block {
                 [<__D>::from(0.0), <__D>::from(0.0)],
             )
         }
+        /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
+        /// (`Some`) or computed here (`None`).
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_canonical_field_with<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __prepared: ::lagrange::__private::core::option::Option<&[f64; 4]>,
+            __q: &[__D; 2],
+            __v: &[__D; 2],
+        ) -> ([__D; 2], [__D; 2]) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
+                Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let __computed: [f64; 4];
+            let __k: &[f64; 4] = match __prepared {
+                ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                ::lagrange::__private::core::option::Option::None => {
+                    __computed = self.__lagrange_coefficients();
+                    &__computed
+                }
+            };
+            (
+                [
+                    __v[0] * <__D>::from(__k[0]) + __v[1] * <__D>::from(__k[1]),
+                    __v[0] * <__D>::from(__k[1]) + __v[1] * <__D>::from(__k[2]),
+                ],
+                [<__D>::from(0.0), <__D>::from(__k[3])],
+            )
+        }
     }
     impl ::lagrange::__private::Prepare for WedgeBlock {
         type Prepared = ::lagrange::__private::lagrange_core::affine::AffineConstants<
@@ -393,7 +426,10 @@ pub mod wedge_block {
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 4>(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
+                .0
         }
         #[inline]
         fn lagrangian_time_derivative_at(
@@ -408,19 +444,16 @@ pub mod wedge_block {
                 4,
             >(self, t, q, v)
         }
-        #[inline]
+        #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                2,
-                4,
-            >(self, t, q, v)
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
         }
         #[inline]
         fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
