@@ -128,12 +128,27 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
     guess: &[f64; N],
     stats: &mut Stats,
 ) -> Result<([f64; N], usize)> {
+    velocities_and_mass_from_momenta(mechanism, t, q, p, guess, stats).map(|(v, n, _)| (v, n))
+}
+
+/// [`velocities_from_momenta`], with the mass matrix M(q) it solved with when the mechanism is
+/// scleronomic (`None` otherwise): the implicit methods' next step starts at this q, and its
+/// Newton matrix takes M there (see `implicit`).
+#[allow(clippy::type_complexity)]
+pub(crate) fn velocities_and_mass_from_momenta<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+    p: &[f64; N],
+    guess: &[f64; N],
+    stats: &mut Stats,
+) -> Result<([f64; N], usize, Option<SMatrix<f64, N, N>>)> {
     if M::SCLERONOMIC {
         // p = M(q) q̇ exactly: one solve with the mass matrix, no iteration.
         stats.evaluations += 1;
         let mass = mechanism.equations_of_motion_at(t, q, guess).mass_matrix;
         return match crate::linalg::solve_spd(&mass, &SVector::from(*p)) {
-            Ok(v) if v.iter().all(|x| x.is_finite()) => Ok((v.into(), 1)),
+            Ok(v) if v.iter().all(|x| x.is_finite()) => Ok((v.into(), 1, Some(mass))),
             Ok(_) => Err(crate::dynamics::non_finite_dynamics::<M::Coords, f64, N>(
                 t, q,
             )),
@@ -185,7 +200,7 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
     // evaluation: it is the mass matrix, not a Jacobian of the step's equations).
     stats.evaluations += stats.newton_iterations - before;
     match end {
-        NewtonEnd::Converged { iterations, .. } => Ok((v.into(), iterations)),
+        NewtonEnd::Converged { iterations, .. } => Ok((v.into(), iterations, None)),
         NewtonEnd::Slow {
             iterations,
             residual,
