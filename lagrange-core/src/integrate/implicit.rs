@@ -148,6 +148,13 @@ pub struct ImplicitStepStats {
 /// the field, about as much as two or three plain iterations, which a θ below 0.1 does not save).
 pub const JACOBIAN_REUSE_THETA: f64 = 0.1;
 
+/// The contraction factor θ of a kept simplified Newton matrix above which the next step takes its
+/// ∂p/∂v block anew (M where the step starts) and refactorises it. With the corrected predictor
+/// the first increment is ~10⁻¹⁰ of the velocities at h = 10⁻³, and the iteration stops after the
+/// second when θ²·10⁻¹⁰ ≲ 4ε, θ ≲ 3·10⁻³; below 10⁻³ a refactorisation would not save an
+/// iteration.
+pub const MASS_REFRESH_THETA: f64 = 1e-3;
+
 /// The reused part of a simplified Newton iteration: the field's Jacobians at a reference point
 /// and the factorised Newton matrix built from them for one step size.
 #[derive(Clone, Copy, Debug)]
@@ -157,6 +164,8 @@ struct NewtonMatrix<const N: usize, const S: usize> {
     h: f64,
     /// Whether the last step converged fast enough to keep the Jacobian.
     reusable: bool,
+    /// The last step's contraction factor θ.
+    theta: f64,
 }
 
 /// Working memory of [`ImplicitMidpoint`] (S = 1) and [`GaussLegendre2`] (S = 2) in a solver
@@ -342,9 +351,12 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     for attempt in 0..2 {
         // The matrix: the memory's if it is still good (refactorised for a new h), else fresh.
         let reuse = attempt == 0 && memory.matrix.is_some_and(|m| m.reusable);
-        // A kept matrix takes ∂p/∂v = M(q₀) where the last step left it (M at the reference
-        // point is the block that goes stale fastest: the others are scaled by h or h²).
-        let mass = previous.and_then(|prev| prev.mass1).filter(|_| reuse);
+        // A kept matrix that contracted slower than MASS_REFRESH_THETA takes ∂p/∂v = M(q₀) where
+        // the last step left it (the block that goes stale fastest: the others are scaled by h
+        // or h²).
+        let mass = previous.and_then(|prev| prev.mass1).filter(|_| {
+            reuse && memory.matrix.is_some_and(|m| m.theta > MASS_REFRESH_THETA)
+        });
         let jacobians = match memory.matrix {
             Some(m) if reuse => FieldJacobians {
                 p_v: mass.unwrap_or(m.jacobians.p_v),
@@ -370,6 +382,7 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
                     lu,
                     h,
                     reusable: true,
+                    theta: 0.0,
                 }
             }
         };
@@ -427,6 +440,7 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
         };
         memory.matrix = Some(NewtonMatrix {
             reusable: theta <= JACOBIAN_REUSE_THETA,
+            theta,
             ..matrix
         });
         // ṗⱼ carried from the last evaluation to the final iterate by the reference Jacobians

@@ -527,8 +527,12 @@ fn main() {
             }
         }
         // One implicit step (h = 10⁻³) per call, as a solver takes it: the Newton matrix and the
-        // stage predictor kept from step to step (`step_with_memory`).
-        "midpoint_double_pendulum" | "gl2_double_pendulum" => {
+        // stage predictor kept from step to step (`step_with_memory`); `…_validated_…` through a
+        // validated handle (the closed form's prepared coefficients).
+        "midpoint_double_pendulum"
+        | "gl2_double_pendulum"
+        | "midpoint_validated_double_pendulum"
+        | "gl2_validated_double_pendulum" => {
             use double_pendulum::*;
             use lagrange::integrate::NewtonMemory;
             use lagrange::{GaussLegendre2, ImplicitMidpoint};
@@ -550,22 +554,64 @@ fn main() {
                     theta2: -0.4,
                 },
             );
-            if which.starts_with("gl2") {
-                let mut memory = NewtonMemory::<2, 2>::default();
-                for _ in 0..n {
-                    GaussLegendre2::step_with_memory(black_box(&params), &mut memory, &mut s, 1e-3)
-                        .unwrap();
-                }
+            macro_rules! run {
+                ($sys:expr) => {
+                    if which.starts_with("gl2") {
+                        let mut memory = NewtonMemory::<2, 2>::default();
+                        for _ in 0..n {
+                            GaussLegendre2::step_with_memory(black_box($sys), &mut memory, &mut s, 1e-3)
+                                .unwrap();
+                        }
+                    } else {
+                        let mut memory = NewtonMemory::<2, 1>::default();
+                        for _ in 0..n {
+                            ImplicitMidpoint::step_with_memory(
+                                black_box($sys),
+                                &mut memory,
+                                &mut s,
+                                1e-3,
+                            )
+                            .unwrap();
+                        }
+                    }
+                };
+            }
+            if which.contains("_validated_") {
+                let sys = params.validated().unwrap();
+                run!(&sys);
             } else {
-                let mut memory = NewtonMemory::<2, 1>::default();
-                for _ in 0..n {
-                    ImplicitMidpoint::step_with_memory(
-                        black_box(&params),
-                        &mut memory,
-                        &mut s,
-                        1e-3,
-                    )
-                    .unwrap();
+                run!(&params);
+            }
+            acc += s.q.theta1;
+        }
+        // One implicit step per call through `sys.step` (fresh memory: the field's Jacobians by
+        // gradient duals and a factorisation at every step).
+        "midpoint_fresh_double_pendulum" | "gl2_fresh_double_pendulum" => {
+            use double_pendulum::*;
+            use lagrange::{GaussLegendre2, ImplicitMidpoint};
+            let params = DoublePendulum {
+                m1: 1.0,
+                m2: 1.3,
+                l1: 1.0,
+                l2: 0.8,
+                g: 9.81,
+            };
+            let mut s = State::new(
+                0.0,
+                Coords {
+                    theta1: 0.7,
+                    theta2: -1.2,
+                },
+                Coords {
+                    theta1: 1.1,
+                    theta2: -0.4,
+                },
+            );
+            for _ in 0..n {
+                if which.starts_with("gl2") {
+                    black_box(&params).step::<GaussLegendre2>(&mut s, 1e-3).unwrap();
+                } else {
+                    black_box(&params).step::<ImplicitMidpoint>(&mut s, 1e-3).unwrap();
                 }
             }
             acc += s.q.theta1;
