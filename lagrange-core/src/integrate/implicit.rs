@@ -153,7 +153,7 @@ pub const JACOBIAN_REUSE_THETA: f64 = 0.1;
 /// the first increment is ~10⁻¹⁰ of the velocities at h = 10⁻³, and the iteration stops after the
 /// second when θ²·10⁻¹⁰ ≲ 4ε, θ ≲ 3·10⁻³; below 10⁻³ a refactorisation would not save an
 /// iteration.
-pub const MASS_REFRESH_THETA: f64 = 1e-3;
+const MASS_REFRESH_THETA: f64 = 1e-3;
 
 /// The reused part of a simplified Newton iteration: the field's Jacobians at a reference point
 /// and the factorised Newton matrix built from them for one step size.
