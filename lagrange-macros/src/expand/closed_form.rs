@@ -165,10 +165,10 @@ fn canonical_field(equations: &Equations) -> (Vec<Poly>, Vec<Poly>) {
         .map(|i| (0..n).fold(Poly::zero(), |sum, j| sum.add(&entry(i, j).mul(&velocity(j)))))
         .collect();
     let mut kinetic = Poly::zero();
-    for i in 0..n {
-        kinetic = kinetic.add(&m[i][i].mul(&velocity(i)).mul(&velocity(i)).scale(0.5));
-        for j in 0..i {
-            kinetic = kinetic.add(&m[i][j].mul(&velocity(i)).mul(&velocity(j)));
+    for (i, row) in m.iter().enumerate() {
+        for (j, mij) in row.iter().enumerate() {
+            let term = mij.mul(&velocity(i)).mul(&velocity(j));
+            kinetic = kinetic.add(&if i == j { term.scale(0.5) } else { term });
         }
     }
     let rates = (0..n)
