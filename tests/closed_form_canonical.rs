@@ -211,9 +211,9 @@ fn states<const N: usize>() -> impl Iterator<Item = ([f64; N], [f64; N])> {
 /// The closed-form field against the hyper-dual pass at every state, on `f64` and on gradient
 /// duals seeded on q and on q̇. Both sum the same products of sines, cosines, coordinates and
 /// velocities, in another order and the closed form simplified by sin² + cos² = 1 first: each
-/// component is a sum of at most a few tens of terms no larger than the quantity's largest
-/// component, so either order's round-off is a few tens of ulps of that scale (≲ 1e-14 relative),
-/// and 1e-13 of it (of 1 for a quantity below 1) bounds the difference.
+/// component is a sum of at most a few tens of terms (masses and lengths of order one, |q̇| ≤ 3,
+/// so terms of order 1 to 100), whose round-off in either order is a few tens of ulps of the
+/// largest term, ≲ 1e-13 of the scale used here (the quantity's largest component, or 1).
 fn agrees_with_the_hyper_dual_pass<M, const N: usize, const K: usize>(sys: &M)
 where
     M: Model<N, K> + Dynamics<N>,
