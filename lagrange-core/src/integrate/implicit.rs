@@ -28,10 +28,11 @@
 //! solver ([`FixedStepper`](super::FixedStepper), or [`GaussLegendre2::step_with_memory`]) the
 //! Jacobian and its factorisation are kept for the next steps while the iteration contracts by at
 //! least [`JACOBIAN_REUSE_THETA`] (θ = ‖δₖ‖/‖δₖ₋₁‖), and refreshed when it contracts slower or
-//! not at all. Its block ∂p/∂v = M, the one not scaled by h, is taken anew at every step from the
-//! mass matrix the previous step's velocity recovery solved with (a scleronomic mechanism: M(q₀)
-//! at no extra evaluation), and the matrix refactorised — with a matrix kept over many steps M
-//! would be what makes θ large. The stages start from the previous step's velocities,
+//! not at all. Its block ∂p/∂v = M, the one not scaled by h, is taken anew, and the matrix
+//! refactorised, whenever the last step contracted slower than θ = 10⁻³: from the mass matrix
+//! the previous step's velocity recovery solved with (a scleronomic mechanism: M(q₀) at no extra
+//! evaluation) — with a matrix kept over many steps M would be what makes θ large. The stages
+//! start from the previous step's velocities,
 //! extrapolated, plus that extrapolation's error on the previous step (see `PreviousStep`).
 //! Without a previous step they start from Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀). The
 //! iteration is run to round-off, as the methods' symmetry and symplecticity need; when even a
