@@ -4,7 +4,9 @@
 //! (`dynamics::canonical_field`) on `f64` and on dual numbers (the implicit methods differentiate
 //! it for their Newton matrix), through the plain mechanism and through a validated handle (which
 //! evaluates the prepared coefficients); and the implicit methods must step a closed-form
-//! declaration as they step the same mechanism declared so that the closed form does not apply.
+//! declaration as they step the same mechanism declared so that the closed form does not apply,
+//! and, as a solver (the Newton matrix, the predictor and p₁ kept from step to step), as they step
+//! one step at a time — also on a constrained linkage, projected after every step.
 
 use lagrange::__private::{dynamics, Dynamics, Model};
 use lagrange::prelude::*;
