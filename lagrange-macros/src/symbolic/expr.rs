@@ -9,7 +9,9 @@
 //! by a zero or unit seed. The only rewritings are exact in floating point: adding a zero,
 //! multiplying by one, a sign moved out of a product, a power of two moved out of a sum or into a
 //! constant factor, literals folded. Derivatives are taken along directions ([`derivative`]): by
-//! one variable, or along the motion of a mechanism for the constraint rows.
+//! one variable, or along the motion of a mechanism for the constraint rows. A derivative about to
+//! be written out may then have its products reassociated for latency ([`Graph::latency_ordered`],
+//! in `product`): the one rewriting that rounds, by a few ulps.
 //!
 //! Nodes are interned ([`Graph::node`]): a subexpression built twice is one node, so a derivative
 //! reuses the values it shares with the function (the √ of a distance, the quotient of a
@@ -22,6 +24,7 @@ use std::collections::HashMap;
 
 mod derivative;
 mod emit;
+mod product;
 
 pub use derivative::Direction;
 
@@ -103,12 +106,16 @@ pub struct Graph {
     /// Whether each node depends on a coordinate, a row or time (is evaluated on the scalar; the
     /// others are constants evaluated in `f64`).
     varies: Vec<bool>,
+    /// Each node's cycles from the state to its value, by a latency model (see [`product`]).
+    latencies: Vec<u32>,
     index: HashMap<Node, Id>,
     /// The derivatives taken, by node and direction.
     derivatives: HashMap<(Id, Direction), Id>,
     /// The directions, interned: the rate of each leaf that moves.
     directions: Vec<HashMap<Id, Id>>,
     direction_index: HashMap<Vec<(Id, Id)>, Direction>,
+    /// Nodes rewritten for latency ([`Graph::latency_ordered`]), by the node rewritten.
+    ordered: HashMap<Id, Id>,
 }
 
 impl Graph {
@@ -142,6 +149,7 @@ impl Graph {
             | Node::Ln(a) => self.varies[*a],
         };
         let id = self.nodes.len();
+        self.latencies.push(self.latency_of(&node, varies));
         self.nodes.push(node.clone());
         self.varies.push(varies);
         self.index.insert(node, id);

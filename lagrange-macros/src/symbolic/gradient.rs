@@ -37,6 +37,7 @@ impl Gradients {
             .filter(|&v| v != Variable::Time)
         {
             let d = self.graph.derivative(value, v);
+            let d = self.graph.latency_ordered(d);
             if !self.graph.is_zero(d) {
                 derivatives.push((v, d));
             }

@@ -339,17 +339,15 @@ pub mod springs {
                 let __e32: __S = __e7 * __e7;
                 let __e33: __S = __e31 + __e32;
                 let __e34: __S = __e33.sqrt();
-                let __r34: __S = __e34.recip();
-                let __e35: __S = __r34 * __e29;
-                let __e39: __S = __e6 * __r34;
-                let __e40: __S = __e35 * __r34;
-                let __e41: __S = __e40 * __e39;
-                let __e43: __S = __e7 * __r34;
-                let __e44: __S = __e40 * __e43;
+                let __e43: __S = __e6 * __e29;
+                let __e44: __S = __e33 * __e34;
+                let __e45: __S = __e43 / __e44;
+                let __e49: __S = __e7 * __e29;
+                let __e50: __S = __e49 / __e44;
                 __gradient[0] -= __e24;
                 __gradient[1] += __e24;
-                __gradient[2] += __e41;
-                __gradient[3] += __e44;
+                __gradient[2] += __e45;
+                __gradient[3] += __e50;
             }
             ::lagrange::__private::core::option::Option::Some(__gradient)
         }

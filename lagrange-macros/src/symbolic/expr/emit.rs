@@ -42,17 +42,19 @@ impl Graph {
                 stack.extend(operands(&self.nodes[n]));
             }
         }
-        // Quotients by one denominator share its reciprocal: a node divided by twice or more is
-        // inverted once and the quotients are products (Kepler's x/|r|, y/|r| and (μm/|r|)/|r|:
-        // one division instead of four, and none in series), each within an ulp of the
-        // division's. Literal denominators stay divisions.
+        // Quotients by one denominator share its reciprocal: a node divided three times or more
+        // is inverted once and the quotients are products, each within an ulp of the division's.
+        // Two divisions by it are left: they run side by side (a division issues every 4–5 cycles
+        // and takes 13–14, a product 3–4: see `product::cycles`), both done before a reciprocal
+        // and a product would be; from three on, the reciprocal is done first. Literal
+        // denominators stay divisions.
         let mut quotients = vec![0usize; self.nodes.len()];
         for (id, node) in self.nodes.iter().enumerate() {
             if let (true, Node::Div(_, b)) = (needed[id], node) {
                 quotients[*b] += 1;
             }
         }
-        let shared = |b: Id| quotients[b] >= 2 && !matches!(self.nodes[b], Node::Literal(_));
+        let shared = |b: Id| quotients[b] >= 3 && !matches!(self.nodes[b], Node::Literal(_));
         let mut out = TokenStream::new();
         for (id, node) in self.nodes.iter().enumerate() {
             if !needed[id] || matches!(node, Node::Literal(_)) {
