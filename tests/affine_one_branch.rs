@@ -196,8 +196,10 @@ fn agrees<M: Mechanism<N>, const N: usize>(
 
 #[test]
 fn one_branch_accelerations_agree_with_the_checked_path() {
-    // Diagonal M: the same gradient divided by the same masses, once by the prepared reciprocal
-    // and once by the factorisation of M assembled at the state — one rounding apart per entry.
+    // Diagonal M: the same factors, once with the prepared −1/Mⱼⱼ joined to the gradient's
+    // constant factors and once by the factorisation of M assembled at the state. Each side
+    // rounds at most four times (the reciprocal, the constants' product, the products with the
+    // state, the division or the solve), each by at most u = ε/2: at most 8u = 4ε apart.
     agrees(PLANET, states::<2>(0.0, 1.5), 4.0 * f64::EPSILON);
     agrees(CHAIN, states::<3>(0.0, 0.5), 4.0 * f64::EPSILON);
     // A 2×2 SPD system (condition ≈ 8 at α = 0.5) solved in a different order of operations, with

@@ -152,6 +152,67 @@ pub mod mixed {
     }
 }
 
+/// Two particles of different masses, each moved by one coordinate with a factor (rows of x that
+/// are not coordinates, so the spring between them is derived by the rows and added through J),
+/// and a pin on one coordinate: affine positions, diagonal M.
+#[mechanism]
+pub mod stretched {
+    pub struct Coords {
+        pub a: f64,
+        pub b: f64,
+    }
+    pub struct Stretched {
+        pub m1: f64,
+        pub m2: f64,
+        pub k: f64,
+    }
+    #[particle(mass = m1)]
+    fn p() -> Vec2 {
+        vec2(2.0 * a + 0.3, 0.0)
+    }
+    #[particle(mass = m2)]
+    fn r() -> Vec2 {
+        vec2(0.0, 3.0 * b)
+    }
+    #[potential]
+    fn spring() -> f64 {
+        k * ((p - r).norm() - 1.0).powi(2)
+    }
+    #[potential]
+    fn pin() -> f64 {
+        k * a.powi(2) / 3.0
+    }
+}
+
+/// x and its Jacobian rows at (t, q), from `cartesian` on dual numbers.
+#[allow(clippy::type_complexity)]
+fn positions<M: Model<N, K>, const N: usize, const K: usize>(
+    sys: &M,
+    t: f64,
+    q: [f64; N],
+) -> ([f64; K], [Option<SVector<f64, N>>; K]) {
+    let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
+    let xd = sys.cartesian(DualSVec::from_re(t), &qd);
+    (
+        std::array::from_fn(|i| xd[i].re),
+        std::array::from_fn(|i| xd[i].eps.0),
+    )
+}
+
+/// (`scaled_potential_gradient` with `scale`, `scale` ⊙ `potential_gradient`) at (t, q); `None`
+/// where the macro writes no scaled gradient.
+fn scaled_gradients<M: Model<N, K>, const N: usize, const K: usize>(
+    sys: &M,
+    t: f64,
+    q: [f64; N],
+    scale: [f64; N],
+) -> Option<(SVector<f64, N>, SVector<f64, N>)> {
+    let (x, rows) = positions(sys, t, q);
+    let scaled = sys.scaled_potential_gradient(t, &q, &x, &rows, &scale)?;
+    let plain = sys.potential_gradient(t, &q, &x, &rows).unwrap();
+    Some((scaled, plain.component_mul(&SVector::from(scale))))
+}
+
 /// (symbolic ∇V, dual-number ∇V) at (t, q): x and J from `cartesian` on dual numbers, then
 /// `potential_gradient` and V on dual numbers seeded on every coordinate, x carrying J.
 fn gradients<M: Model<N, K>, const N: usize, const K: usize>(
@@ -160,9 +221,7 @@ fn gradients<M: Model<N, K>, const N: usize, const K: usize>(
     q: [f64; N],
 ) -> (SVector<f64, N>, SVector<f64, N>) {
     let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
-    let xd = sys.cartesian(DualSVec::from_re(t), &qd);
-    let x: [f64; K] = std::array::from_fn(|i| xd[i].re);
-    let rows: [Option<SVector<f64, N>>; K] = std::array::from_fn(|i| xd[i].eps.0);
+    let (x, rows) = positions(sys, t, q);
     let symbolic = sys
         .potential_gradient(t, &q, &x, &rows)
         .expect("the macro writes potential_gradient");
@@ -273,4 +332,68 @@ fn accelerations_agree_with_the_closed_form() {
     let (r, rd, pd) = (0.8, 0.2, 1.1);
     assert!((a.r - (r * pd * pd - 1.5 / (r * r))).abs() < 1e-13);
     assert!((a.phi - (-2.0 * rd * pd / r)).abs() < 1e-13);
+}
+
+#[test]
+fn scaled_gradients_agree_with_the_gradient_times_the_scales() {
+    // Written for affine positions with every potential read: each slot's scale joins the
+    // constant factors of its derivatives (for the coordinates) or its row of J (for the rows).
+    // The products are the same factors in another order; `assert_agree`'s bound holds.
+    let (fpu, kepler) = (
+        fpu::Fpu { m: 1.0, omega: 50.0 },
+        kepler_cartesian::Kepler { m: 2.0, mu: 1.5 },
+    );
+    let stretched = stretched::Stretched {
+        m1: 1.0,
+        m2: 2.5,
+        k: 7.0,
+    };
+    for i in 0..20 {
+        let q: [f64; 4] = std::array::from_fn(|j| wiggle(i, j));
+        let (s, d) = scaled_gradients(&fpu, 0.0, q, [-0.7, 1.3, -2.0 / 3.0, 0.1]).unwrap();
+        assert_agree(s, d, "FPU, scaled");
+        let (r, phi) = (0.4 + 0.06 * i as f64, 0.9 * i as f64 - 3.0);
+        let q = [r * phi.cos(), r * phi.sin()];
+        let (s, d) = scaled_gradients(&kepler, 0.0, q, [-1.0 / 3.0, 0.6]).unwrap();
+        assert_agree(s, d, "Kepler, scaled");
+        let q = [wiggle(i, 0), wiggle(i, 1)];
+        let (s, d) = scaled_gradients(&stretched, 0.0, q, [-0.3, -1.0 / 7.0]).unwrap();
+        assert_agree(s, d, "stretched, scaled");
+        let (s, d) = gradients(&stretched, 0.0, q);
+        assert_agree(s, d, "stretched");
+    }
+    // Not written where the positions are not affine (the handle has no constant M to scale by).
+    let polar = kepler_polar::Kepler { m: 2.0, mu: 1.5 };
+    assert!(scaled_gradients(&polar, 0.0, [0.8, 0.3], [1.0, 1.0]).is_none());
+    // Nor where a potential keeps its dual numbers.
+    let mixed = mixed::Mixed { m: 1.0, k: 2.0 };
+    assert!(scaled_gradients(&mixed, 0.0, [0.1, 0.2, 0.3], [1.0; 3]).is_none());
+}
+
+#[test]
+fn the_handle_of_a_diagonal_mass_matrix_agrees_with_the_checked_path() {
+    // Through the handle q̈ⱼ = sⱼ ∂V/∂qⱼ with sⱼ = −1/Mⱼⱼ joined to the derivative's constants;
+    // the checked path assembles M at the state and solves. Each entry is the same real product
+    // (μ m x / (r² √r²)) (1/Mⱼⱼ), or the same sum of such products, rounded in another order: a
+    // few roundings apart, relative to the largest term (1e-13 ≈ 450 ulps bounds it with room).
+    let sys = || stretched::Stretched {
+        m1: 1.0,
+        m2: 2.5,
+        k: 7.0,
+    };
+    let (handle, sys) = (sys().validated().unwrap(), sys());
+    for i in 0..20 {
+        let q = stretched::Coords {
+            a: wiggle(i, 0),
+            b: wiggle(i, 1),
+        };
+        let s = stretched::State::at_rest(q);
+        let (a, b) = (
+            handle.accelerations(&s).unwrap(),
+            sys.accelerations(&s).unwrap(),
+        );
+        let scale = a.a.abs().max(a.b.abs()).max(1.0);
+        assert!((a.a - b.a).abs() <= 1e-13 * scale, "{a:?} vs {b:?}");
+        assert!((a.b - b.b).abs() <= 1e-13 * scale, "{a:?} vs {b:?}");
+    }
 }

@@ -45,6 +45,10 @@ pub struct AffineConstants<const N: usize, const K: usize> {
     field_forces: SVector<f64, N>,
     /// M⁻¹ Aᵀ w: q̈ of a mechanism on which the field is the only force.
     field_accelerations: SVector<f64, N>,
+    /// (−M)⁻¹ 1 = −1/Mⱼⱼ for each j where M is diagonal by its pattern (each coordinate moves
+    /// particle coordinates no other moves): the scales of
+    /// [`Model::scaled_potential_gradient`]. Meaningless for any other M, and not used.
+    negated_inverse_diagonal: [f64; N],
 }
 
 impl<const N: usize, const K: usize> AffineConstants<N, K> {
@@ -81,6 +85,7 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
             negated_mass_matrix: factors.negated(),
             field_forces,
             field_accelerations: factors.solve(&field_forces),
+            negated_inverse_diagonal: factors.negated().solve(&SVector::repeat(1.0)).into(),
         })
     }
 
@@ -99,6 +104,22 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
         let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
         self.negated_mass_matrix.solve_in(b, pattern)
     }
+}
+
+/// Whether a pattern of M has no entry off its diagonal.
+const fn is_diagonal<const N: usize>(pattern: &[[bool; N]; N]) -> bool {
+    let mut i = 0;
+    while i < N {
+        let mut j = 0;
+        while j < N {
+            if i != j && pattern[i][j] {
+                return false;
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    true
 }
 
 /// Whether row i of x may depend on q at all, by the declaration.
@@ -217,9 +238,10 @@ pub fn regular_accelerations<M: Model<N, K>, const N: usize, const K: usize>(
 /// M⁻¹ 𝓕 at (t, q, q̇) from the prepared constants (b = 0), unchecked: q̈ of the mechanism without
 /// its constraints, which the constrained solve starts from. With a uniform field as the only force
 /// it is the prepared M⁻¹ Aᵀ w, a constant; with a potential as the only one, (−M)⁻¹ ∇V by the
-/// prepared factors of −M (where M is diagonal, as when each coordinate moves one particle
-/// coordinate, a product with each coordinate's prepared −1/Mⱼⱼ, the pattern of M leaving out
-/// every other term).
+/// prepared factors of −M; where M is diagonal by its pattern (each coordinate moves particle
+/// coordinates no other moves), the model's own ∇V with each slot's prepared −1/Mⱼⱼ joined to its
+/// constant factors ([`Model::scaled_potential_gradient`]) when it writes one, otherwise ∇V times
+/// those −1/Mⱼⱼ (the pattern of M leaving out every other term of the solve).
 #[inline(always)]
 pub(crate) fn free_accelerations<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
@@ -237,6 +259,13 @@ pub(crate) fn free_accelerations<M: Model<N, K>, S: Scalar, const N: usize, cons
     let rows: [Option<SVector<S, N>>; K] =
         std::array::from_fn(|i| moving[i].then(|| constants.jacobian[i].map(S::from)));
     let x = model.cartesian(t, q);
+    let diagonal = const { is_diagonal(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
+    if M::HAS_POTENTIAL && !(M::HAS_GRAVITY || M::HAS_FORCES) && diagonal {
+        let scale = &constants.negated_inverse_diagonal;
+        if let Some(accelerations) = model.scaled_potential_gradient(t, q, &x, &rows, scale) {
+            return accelerations;
+        }
+    }
     let potential_gradient = potential_gradient(model, t, q, &x, &rows);
     if !(M::HAS_GRAVITY || M::HAS_FORCES) {
         if let Some(gradient) = potential_gradient {

@@ -228,6 +228,25 @@ pub trait Model<const N: usize, const K: usize> {
         None
     }
 
+    /// ∇V at (t, q) as [`potential_gradient`](Model::potential_gradient) takes it, each slot j
+    /// multiplied by `scale[j]`: with sⱼ = −1/Mⱼⱼ for a constant diagonal M, the accelerations
+    /// q̈ = −M⁻¹∇V of a potential the only force, each sⱼ joined to the constant factors of its
+    /// slot's derivative (one product fewer after the state's arithmetic). `None` (the default)
+    /// when the model does not provide it. `#[mechanism]` writes it for affine positions with
+    /// every potential's gradient derived on its expression tree; [`crate::affine`] calls it.
+    #[inline(always)]
+    fn scaled_potential_gradient<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        x: &[S; K],
+        rows: &[Option<nalgebra::SVector<S, N>>; K],
+        scale: &[f64; N],
+    ) -> Option<nalgebra::SVector<S, N>> {
+        let _ = (t, q, x, rows, scale);
+        None
+    }
+
     /// Adds applied forces at (t, q, q̇): Cartesian components on the rows of x they act on
     /// (`cartesian_force`), and forces directly on coordinates (`generalized_force`).
     /// `x` and `x_dot` are the Cartesian positions and velocities at the same state.

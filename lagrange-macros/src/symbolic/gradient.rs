@@ -7,15 +7,17 @@
 //! derivative adds to its own slot, a row's is multiplied by the row of J (when the caller has
 //! one) on the slots the row can depend on ([`crate::components::dependencies`]).
 
-use super::expr::{Graph, Id, Variable, MAX_NODES};
+use super::expr::{Graph, Id, Node, TokenStream2, Variable, MAX_NODES};
 use super::read_tree::Reader;
 use crate::check::Model;
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 use syn::Block;
 
-/// The derivatives of one part: (variable, ∂V/∂variable), zero ones left out.
-pub struct PartGradient(Vec<(Variable, Id)>);
+/// The derivatives of one part: (variable, ∂V/∂variable, sⱼ ∂V/∂qⱼ for a coordinate qⱼ), zero
+/// ones left out. sⱼ is the scale `__scale[j]` of `Model::scaled_potential_gradient`, a constant
+/// factor joined to the derivative's others.
+pub struct PartGradient(Vec<(Variable, Id, Id)>);
 
 /// The parts' gradients in one graph (a node shared between parts is computed once).
 #[derive(Default)]
@@ -37,26 +39,41 @@ impl Gradients {
             .filter(|&v| v != Variable::Time)
         {
             let d = self.graph.derivative(value, v);
-            let d = self.graph.latency_ordered(d);
-            if !self.graph.is_zero(d) {
-                derivatives.push((v, d));
+            if self.graph.is_zero(d) {
+                continue;
             }
+            let scaled = match v {
+                Variable::Coordinate(j) => {
+                    let j = Literal::usize_unsuffixed(j);
+                    let scale = self
+                        .graph
+                        .node(Node::Constant(TokenStream2::new(quote!(__scale[#j]))));
+                    let product = self.graph.mul(scale, d);
+                    self.graph.latency_ordered(product)
+                }
+                // Scaled where it is added by its row of J.
+                _ => self.graph.latency_ordered(d),
+            };
+            derivatives.push((v, self.graph.latency_ordered(d), scaled));
         }
         (self.graph.len() <= MAX_NODES).then_some(PartGradient(derivatives))
     }
 
     /// The code adding every part's gradient to `__gradient` (on scalar `__S`, from `__q`, `__x`,
     /// `__rows`): the parameters the constants name in `f64`, one `let` per node, then the sums.
-    pub fn emit(&self, model: &Model, parts: &[&PartGradient]) -> TokenStream {
+    /// `scaled`: each slot j times `__scale[j]` (an `&[f64; N]`).
+    pub fn emit(&self, model: &Model, parts: &[&PartGradient], scaled: bool) -> TokenStream {
+        let pick = |&(v, d, s): &(Variable, Id, Id)| (v, if scaled { s } else { d });
         let outputs: Vec<Id> = parts
             .iter()
-            .flat_map(|p| p.0.iter().map(|&(_, d)| d))
+            .flat_map(|p| p.0.iter().map(|d| pick(d).1))
             .collect();
         let (p, s) = (crate::expand::private(), quote!(__S));
         let lets = self.graph.emit(&outputs, &s);
         let params = model.params.iter().map(|p| &p.ident);
         let (row_deps, _) = crate::components::dependencies(model);
-        let adds = parts.iter().flat_map(|part| &part.0).map(|&(variable, d)| {
+        let adds = parts.iter().flat_map(|part| &part.0).map(|d| {
+            let (variable, d) = pick(d);
             // g −= a for a derivative −a.
             let (op, d) = match self.graph.negation_of(d) {
                 Some(a) => (quote!(-=), a),
@@ -75,10 +92,16 @@ impl Gradients {
                         .filter(|&j| row_deps[r][j])
                         .map(Literal::usize_unsuffixed);
                     let r = Literal::usize_unsuffixed(r);
+                    // sⱼ joins the row's constant entry, off the path from the state.
+                    let row = |j: &Literal| match scaled {
+                        true => quote!((__row[#j] * __scale[#j])),
+                        false => quote!(__row[#j]),
+                    };
+                    let entries = slots.clone().map(|j| row(&j));
                     quote! {
                         if let #p::core::option::Option::Some(__row) = &__rows[#r] {
                             let __dv: __S = #d;
-                            #(__gradient[#slots] #op __dv * __row[#slots];)*
+                            #(__gradient[#slots] #op __dv * #entries;)*
                         }
                     }
                 }

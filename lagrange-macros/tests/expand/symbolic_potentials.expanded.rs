@@ -332,22 +332,82 @@ pub mod springs {
                 let __e14: __S = __e12 - __e13;
                 let __e23: f64 = __e11 * 2.0;
                 let __e24: __S = __e14 * __e23;
-                let __e26: f64 = mu;
-                let __e28: f64 = m;
-                let __e29: f64 = __e26 * __e28;
-                let __e31: __S = __e6 * __e6;
-                let __e32: __S = __e7 * __e7;
-                let __e33: __S = __e31 + __e32;
-                let __e34: __S = __e33.sqrt();
-                let __e43: __S = __e6 * __e29;
-                let __e44: __S = __e33 * __e34;
-                let __e45: __S = __e43 / __e44;
-                let __e49: __S = __e7 * __e29;
-                let __e50: __S = __e49 / __e44;
+                let __e36: f64 = mu;
+                let __e38: f64 = m;
+                let __e39: f64 = __e36 * __e38;
+                let __e41: __S = __e6 * __e6;
+                let __e42: __S = __e7 * __e7;
+                let __e43: __S = __e41 + __e42;
+                let __e44: __S = __e43.sqrt();
+                let __e57: __S = __e43 * __e44;
+                let __e59: __S = __e6 * __e39;
+                let __e60: __S = __e59 / __e57;
+                let __e69: __S = __e7 * __e39;
+                let __e70: __S = __e69 / __e57;
                 __gradient[0] -= __e24;
                 __gradient[1] += __e24;
-                __gradient[2] += __e45;
-                __gradient[3] += __e50;
+                __gradient[2] += __e60;
+                __gradient[3] += __e70;
+            }
+            ::lagrange::__private::core::option::Option::Some(__gradient)
+        }
+        #[inline]
+        #[allow(unused_variables, clippy::all)]
+        fn scaled_potential_gradient<__S: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __S,
+            __q: &[__S; 4],
+            __x: &[__S; 6],
+            __rows: &[::lagrange::__private::core::option::Option<
+                ::lagrange::__private::nalgebra::SVector<__S, 4>,
+            >; 6],
+            __scale: &[f64; 4],
+        ) -> ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::nalgebra::SVector<__S, 4>,
+        > {
+            let mut __gradient = ::lagrange::__private::nalgebra::SVector::<
+                __S,
+                4,
+            >::repeat(<__S>::from(-0.0));
+            {
+                let m: f64 = self.m;
+                let omega: f64 = self.omega;
+                let mu: f64 = self.mu;
+                let __e6: __S = __q[2];
+                let __e7: __S = __q[3];
+                let __e8: f64 = omega;
+                let __e9: f64 = __e8 * __e8;
+                let __e11: f64 = __e9 / 4.0;
+                let __e12: __S = __q[1];
+                let __e13: __S = __q[0];
+                let __e14: __S = __e12 - __e13;
+                let __e23: f64 = __e11 * 2.0;
+                let __e26: f64 = __scale[0];
+                let __e29: f64 = __e26 * __e23;
+                let __e30: __S = __e14 * __e29;
+                let __e32: f64 = __scale[1];
+                let __e34: f64 = __e32 * __e23;
+                let __e35: __S = __e14 * __e34;
+                let __e36: f64 = mu;
+                let __e38: f64 = m;
+                let __e39: f64 = __e36 * __e38;
+                let __e41: __S = __e6 * __e6;
+                let __e42: __S = __e7 * __e7;
+                let __e43: __S = __e41 + __e42;
+                let __e44: __S = __e43.sqrt();
+                let __e53: f64 = __scale[2];
+                let __e55: f64 = __e53 * __e39;
+                let __e56: __S = __e6 * __e55;
+                let __e57: __S = __e43 * __e44;
+                let __e58: __S = __e56 / __e57;
+                let __e64: f64 = __scale[3];
+                let __e66: f64 = __e64 * __e39;
+                let __e67: __S = __e7 * __e66;
+                let __e68: __S = __e67 / __e57;
+                __gradient[0] -= __e30;
+                __gradient[1] += __e35;
+                __gradient[2] += __e58;
+                __gradient[3] += __e68;
             }
             ::lagrange::__private::core::option::Option::Some(__gradient)
         }

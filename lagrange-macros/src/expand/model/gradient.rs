@@ -131,7 +131,8 @@ fn potential_gradient_fn(model: &Model, parts: &[Part], symbolic: &Symbolic) -> 
     let (n, k) = (model.dof(), model.rows);
     let (n_lit, k_lit) = (lit(n), lit(k));
     let read: Vec<&PartGradient> = symbolic.read.iter().flatten().collect();
-    let trees = (!read.is_empty()).then(|| symbolic.gradients.emit(model, &read));
+    let trees = (!read.is_empty()).then(|| symbolic.gradients.emit(model, &read, false));
+    let scaled = scaled_potential_gradient_fn(model, parts, symbolic);
     let terms = parts
         .iter()
         .enumerate()
@@ -186,5 +187,41 @@ fn potential_gradient_fn(model: &Model, parts: &[Part], symbolic: &Symbolic) -> 
             #(#terms)*
             #p::core::option::Option::Some(__gradient)
         }
+        #scaled
     }
+}
+
+/// `Model::scaled_potential_gradient`, for affine positions (whose handle solves with a constant
+/// M, `lagrange_core::affine`) with every part that names a coordinate read as a tree: each
+/// slot's scale joined to the constant factors of its derivatives.
+fn scaled_potential_gradient_fn(
+    model: &Model,
+    parts: &[Part],
+    symbolic: &Symbolic,
+) -> Option<TokenStream> {
+    let all_read = (0..parts.len()).all(|index| !symbolic.on_duals(parts, index));
+    if !(crate::affine::is_affine(model) && all_read) {
+        return None;
+    }
+    let p = private();
+    let (n, k) = (lit(model.dof()), lit(model.rows));
+    let read: Vec<&PartGradient> = symbolic.read.iter().flatten().collect();
+    let trees = (!read.is_empty()).then(|| symbolic.gradients.emit(model, &read, true));
+    Some(quote! {
+        #[inline]
+        #[allow(unused_variables, clippy::all)]
+        fn scaled_potential_gradient<__S: #p::Scalar>(
+            &self,
+            __t: __S,
+            __q: &[__S; #n],
+            __x: &[__S; #k],
+            __rows: &[#p::core::option::Option<#p::nalgebra::SVector<__S, #n>>; #k],
+            __scale: &[f64; #n],
+        ) -> #p::core::option::Option<#p::nalgebra::SVector<__S, #n>> {
+            // From −0, as in `potential_gradient`.
+            let mut __gradient = #p::nalgebra::SVector::<__S, #n>::repeat(<__S>::from(-0.0));
+            #trees
+            #p::core::option::Option::Some(__gradient)
+        }
+    })
 }
