@@ -12,6 +12,7 @@ use super::read_tree::Reader;
 use crate::check::Model;
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
+use std::collections::HashMap;
 use syn::Block;
 
 /// The derivatives of one part: (variable, ∂V/∂variable, sⱼ ∂V/∂qⱼ for a coordinate qⱼ), zero
@@ -61,19 +62,60 @@ impl Gradients {
 
     /// The code adding every part's gradient to `__gradient` (on scalar `__S`, from `__q`, `__x`,
     /// `__rows`): the parameters the constants name in `f64`, one `let` per node, then the sums.
-    /// `scaled`: each slot j times `__scale[j]` (an `&[f64; N]`).
+    ///
+    /// `scaled`: each slot j times `__scale[j]` (an `&[f64; N]`). A slot that one derivative
+    /// alone adds to, not shared with another slot (Kepler's x), takes the scale among that
+    /// derivative's constant factors (or its row of J's entry), so no product waits for the sum;
+    /// any other slot (a mass between two springs; the two ends of one spring, whose derivatives
+    /// are one value and its negation) is multiplied once its sum is done, as many products as
+    /// the solve by a diagonal M would take.
     pub fn emit(&self, model: &Model, parts: &[&PartGradient], scaled: bool) -> TokenStream {
-        let pick = |&(v, d, s): &(Variable, Id, Id)| (v, if scaled { s } else { d });
-        let outputs: Vec<Id> = parts
-            .iter()
-            .flat_map(|p| p.0.iter().map(|d| pick(d).1))
-            .collect();
         let (p, s) = (crate::expand::private(), quote!(__S));
+        let (row_deps, _) = crate::components::dependencies(model);
+        let n = model.dof();
+        let row_deps = &row_deps;
+        let row_slots = |r: usize| (0..n).filter(move |&j| row_deps[r][j]);
+        let terms = || parts.iter().flat_map(|part| &part.0);
+        // How many derivatives add to each slot, and how many slots each derivative adds to.
+        let (mut per_slot, mut per_node) = (vec![0usize; n], HashMap::<Id, usize>::new());
+        for &(variable, d, _) in terms() {
+            let d = self.graph.negation_of(d).unwrap_or(d);
+            match variable {
+                Variable::Coordinate(j) => {
+                    per_slot[j] += 1;
+                    *per_node.entry(d).or_default() += 1;
+                }
+                Variable::Row(r) => {
+                    for j in row_slots(r) {
+                        per_slot[j] += 1;
+                        *per_node.entry(d).or_default() += 1;
+                    }
+                }
+                Variable::Time => {}
+            }
+        }
+        let alone = |j: usize, d: Id| {
+            per_slot[j] == 1 && per_node[&self.graph.negation_of(d).unwrap_or(d)] == 1
+        };
+        let folded: Vec<bool> = (0..n)
+            .map(|j| {
+                scaled
+                    && terms().any(|&(variable, d, _)| match variable {
+                        Variable::Coordinate(k) => k == j && alone(j, d),
+                        Variable::Row(r) => row_deps[r][j] && alone(j, d),
+                        Variable::Time => false,
+                    })
+            })
+            .collect();
+        let pick = |&(variable, d, scaled): &(Variable, Id, Id)| match variable {
+            Variable::Coordinate(j) if folded[j] => scaled,
+            _ => d,
+        };
+        let outputs: Vec<Id> = terms().map(pick).collect();
         let lets = self.graph.emit(&outputs, &s);
         let params = model.params.iter().map(|p| &p.ident);
-        let (row_deps, _) = crate::components::dependencies(model);
-        let adds = parts.iter().flat_map(|part| &part.0).map(|d| {
-            let (variable, d) = pick(d);
+        let adds = terms().map(|term| {
+            let (variable, d) = (term.0, pick(term));
             // g −= a for a derivative −a.
             let (op, d) = match self.graph.negation_of(d) {
                 Some(a) => (quote!(-=), a),
@@ -88,30 +130,34 @@ impl Gradients {
                 // Left out above: the gradient is by q.
                 Variable::Time => quote!(),
                 Variable::Row(r) => {
-                    let slots = (0..model.dof())
-                        .filter(|&j| row_deps[r][j])
-                        .map(Literal::usize_unsuffixed);
+                    let adds = row_slots(r).map(|j| {
+                        let slot = Literal::usize_unsuffixed(j);
+                        // sⱼ joins the row's constant entry, off the path from the state.
+                        match folded[j] {
+                            true => quote!(__gradient[#slot] #op __dv * (__row[#slot] * __scale[#slot]);),
+                            false => quote!(__gradient[#slot] #op __dv * __row[#slot];),
+                        }
+                    });
                     let r = Literal::usize_unsuffixed(r);
-                    // sⱼ joins the row's constant entry, off the path from the state.
-                    let row = |j: &Literal| match scaled {
-                        true => quote!((__row[#j] * __scale[#j])),
-                        false => quote!(__row[#j]),
-                    };
-                    let entries = slots.clone().map(|j| row(&j));
                     quote! {
                         if let #p::core::option::Option::Some(__row) = &__rows[#r] {
                             let __dv: __S = #d;
-                            #(__gradient[#slots] #op __dv * #entries;)*
+                            #(#adds)*
                         }
                     }
                 }
             }
+        });
+        let sums_scaled = (0..n).filter(|&j| scaled && !folded[j]).map(|j| {
+            let j = Literal::usize_unsuffixed(j);
+            quote!(__gradient[#j] *= __scale[#j];)
         });
         quote! {
             {
                 #( let #params: f64 = self.#params; )*
                 #lets
                 #(#adds)*
+                #(#sums_scaled)*
             }
         }
     }

@@ -382,12 +382,7 @@ pub mod springs {
                 let __e13: __S = __q[0];
                 let __e14: __S = __e12 - __e13;
                 let __e23: f64 = __e11 * 2.0;
-                let __e26: f64 = __scale[0];
-                let __e29: f64 = __e26 * __e23;
-                let __e30: __S = __e14 * __e29;
-                let __e32: f64 = __scale[1];
-                let __e34: f64 = __e32 * __e23;
-                let __e35: __S = __e14 * __e34;
+                let __e24: __S = __e14 * __e23;
                 let __e36: f64 = mu;
                 let __e38: f64 = m;
                 let __e39: f64 = __e36 * __e38;
@@ -404,10 +399,12 @@ pub mod springs {
                 let __e66: f64 = __e64 * __e39;
                 let __e67: __S = __e7 * __e66;
                 let __e68: __S = __e67 / __e57;
-                __gradient[0] -= __e30;
-                __gradient[1] += __e35;
+                __gradient[0] -= __e24;
+                __gradient[1] += __e24;
                 __gradient[2] += __e58;
                 __gradient[3] += __e68;
+                __gradient[0] *= __scale[0];
+                __gradient[1] *= __scale[1];
             }
             ::lagrange::__private::core::option::Option::Some(__gradient)
         }
