@@ -199,8 +199,8 @@ fn positions<M: Model<N, K>, const N: usize, const K: usize>(
     )
 }
 
-/// (`scaled_potential_gradient` with `scale`, `scale` ⊙ `potential_gradient`) at (t, q); `None`
-/// where the macro writes no scaled gradient.
+/// (`scaled_potential_gradient` with `scale` and its coefficients, `scale` ⊙
+/// `potential_gradient`) at (t, q); `None` where the macro writes no scaled gradient.
 fn scaled_gradients<M: Model<N, K>, const N: usize, const K: usize>(
     sys: &M,
     t: f64,
@@ -208,7 +208,8 @@ fn scaled_gradients<M: Model<N, K>, const N: usize, const K: usize>(
     scale: [f64; N],
 ) -> Option<(SVector<f64, N>, SVector<f64, N>)> {
     let (x, rows) = positions(sys, t, q);
-    let scaled = sys.scaled_potential_gradient(t, &q, &x, &rows, &scale)?;
+    let prepared = sys.gradient_coefficients(&scale);
+    let scaled = sys.scaled_potential_gradient(t, &q, &x, &rows, &scale, &prepared)?;
     let plain = sys.potential_gradient(t, &q, &x, &rows).unwrap();
     Some((scaled, plain.component_mul(&SVector::from(scale))))
 }

@@ -29,7 +29,7 @@ use crate::dynamics::{
 use crate::error::Result;
 use crate::geometry::Scalar;
 use crate::linalg::{factor_pattern, mass_pattern, Ldlt};
-use crate::model::{state_and_accelerations_finite, Model};
+use crate::model::{state_and_accelerations_finite, Model, GRADIENT_COEFFICIENTS};
 use nalgebra::SVector;
 
 /// The constants of an affine mechanism's equations of motion (see the [module docs](self)).
@@ -49,6 +49,9 @@ pub struct AffineConstants<const N: usize, const K: usize> {
     /// particle coordinates no other moves): the scales of
     /// [`Model::scaled_potential_gradient`]. Meaningless for any other M, and not used.
     negated_inverse_diagonal: [f64; N],
+    /// The constant factors of the scaled gradient with those scales
+    /// ([`Model::gradient_coefficients`]).
+    gradient_coefficients: [f64; GRADIENT_COEFFICIENTS],
 }
 
 impl<const N: usize, const K: usize> AffineConstants<N, K> {
@@ -79,13 +82,16 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
             }
         }
         let field_forces = field_forces.unwrap_or_else(SVector::zeros);
+        let negated_inverse_diagonal: [f64; N] =
+            factors.negated().solve(&SVector::repeat(1.0)).into();
         Ok(AffineConstants {
             jacobian: rows.map(|row| row.unwrap_or_else(SVector::zeros)),
             mass_matrix: factors,
             negated_mass_matrix: factors.negated(),
             field_forces,
             field_accelerations: factors.solve(&field_forces),
-            negated_inverse_diagonal: factors.negated().solve(&SVector::repeat(1.0)).into(),
+            negated_inverse_diagonal,
+            gradient_coefficients: model.gradient_coefficients(&negated_inverse_diagonal),
         })
     }
 
@@ -261,8 +267,13 @@ pub(crate) fn free_accelerations<M: Model<N, K>, S: Scalar, const N: usize, cons
     let x = model.cartesian(t, q);
     let diagonal = const { is_diagonal(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
     if M::HAS_POTENTIAL && !(M::HAS_GRAVITY || M::HAS_FORCES) && diagonal {
-        let scale = &constants.negated_inverse_diagonal;
-        if let Some(accelerations) = model.scaled_potential_gradient(t, q, &x, &rows, scale) {
+        let (scale, prepared) = (
+            &constants.negated_inverse_diagonal,
+            &constants.gradient_coefficients,
+        );
+        if let Some(accelerations) =
+            model.scaled_potential_gradient(t, q, &x, &rows, scale, prepared)
+        {
             return accelerations;
         }
     }

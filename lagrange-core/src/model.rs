@@ -149,6 +149,10 @@ impl<C> State<C> {
     }
 }
 
+/// How many constant factors of a potential's gradient a prepared handle computes once
+/// ([`Model::gradient_coefficients`]); a gradient with more computes the others where it uses them.
+pub const GRADIENT_COEFFICIENTS: usize = 16;
+
 /// The generated description of a mechanism: `N` generalized coordinates, `K` Cartesian coordinates
 /// (see the [module docs](self)). Implemented by `#[mechanism]`; the numerical work on it lives in
 /// [`crate::dynamics`].
@@ -231,9 +235,13 @@ pub trait Model<const N: usize, const K: usize> {
     /// ∇V at (t, q) as [`potential_gradient`](Model::potential_gradient) takes it, each slot j
     /// multiplied by `scale[j]`: with sⱼ = −1/Mⱼⱼ for a constant diagonal M, the accelerations
     /// q̈ = −M⁻¹∇V of a potential the only force, each sⱼ joined to the constant factors of its
-    /// slot's derivative (one product fewer after the state's arithmetic). `None` (the default)
-    /// when the model does not provide it. `#[mechanism]` writes it for affine positions with
-    /// every potential's gradient derived on its expression tree; [`crate::affine`] calls it.
+    /// slot's derivative (one product fewer after the state's arithmetic). `prepared` is
+    /// [`gradient_coefficients`](Model::gradient_coefficients) of the same `scale`, computed
+    /// once: the constant factors themselves (μ m sⱼ, ω²/2), so an evaluation does only the
+    /// state's arithmetic. `None` (the default) when the model does not provide it. `#[mechanism]`
+    /// writes it for affine positions with every potential's gradient derived on its expression
+    /// tree; [`crate::affine`] calls it.
+    #[doc(hidden)]
     #[inline(always)]
     fn scaled_potential_gradient<S: Scalar>(
         &self,
@@ -242,9 +250,18 @@ pub trait Model<const N: usize, const K: usize> {
         x: &[S; K],
         rows: &[Option<nalgebra::SVector<S, N>>; K],
         scale: &[f64; N],
+        prepared: &[f64; GRADIENT_COEFFICIENTS],
     ) -> Option<nalgebra::SVector<S, N>> {
-        let _ = (t, q, x, rows, scale);
+        let _ = (t, q, x, rows, scale, prepared);
         None
+    }
+
+    /// The constant factors [`scaled_potential_gradient`](Model::scaled_potential_gradient)
+    /// reads, from the parameters and `scale` (zeros by default).
+    #[doc(hidden)]
+    fn gradient_coefficients(&self, scale: &[f64; N]) -> [f64; GRADIENT_COEFFICIENTS] {
+        let _ = scale;
+        [0.0; GRADIENT_COEFFICIENTS]
     }
 
     /// Adds applied forces at (t, q, q̇): Cartesian components on the rows of x they act on

@@ -15,6 +15,9 @@ use quote::quote;
 use std::collections::HashMap;
 use syn::Block;
 
+/// At most this many coefficients are prepared (`lagrange_core::model::GRADIENT_COEFFICIENTS`).
+pub const COEFFICIENTS: usize = 16;
+
 /// The derivatives of one part: (variable, ∂V/∂variable, sⱼ ∂V/∂qⱼ for a coordinate qⱼ), zero
 /// ones left out. sⱼ is the scale `__scale[j]` of `Model::scaled_potential_gradient`, a constant
 /// factor joined to the derivative's others.
@@ -69,7 +72,17 @@ impl Gradients {
     /// any other slot (a mass between two springs; the two ends of one spring, whose derivatives
     /// are one value and its negation) is multiplied once its sum is done, as many products as
     /// the solve by a diagonal M would take.
-    pub fn emit(&self, model: &Model, parts: &[&PartGradient], scaled: bool) -> TokenStream {
+    ///
+    /// With `scaled`, also the code of the coefficients: the constants the gradient's code takes
+    /// ([`Graph::coefficients`], at most [`COEFFICIENTS`] of them, the rest computed where used)
+    /// computed from the parameters and `__scale` into `__coefficients`, which the gradient's
+    /// code reads as `__prepared`.
+    pub fn emit(
+        &self,
+        model: &Model,
+        parts: &[&PartGradient],
+        scaled: bool,
+    ) -> (TokenStream, Option<TokenStream>) {
         let (p, s) = (crate::expand::private(), quote!(__S));
         let (row_deps, _) = crate::components::dependencies(model);
         let n = model.dof();
@@ -112,8 +125,33 @@ impl Gradients {
             _ => d,
         };
         let outputs: Vec<Id> = terms().map(pick).collect();
-        let lets = self.graph.emit(&outputs, &s);
-        let params = model.params.iter().map(|p| &p.ident);
+        let mut prepared = match scaled {
+            true => self.graph.coefficients(&outputs),
+            false => Vec::new(),
+        };
+        prepared.truncate(COEFFICIENTS);
+        let lets = self.graph.emit_prepared(&outputs, &s, &prepared);
+        let params: Vec<_> = model.params.iter().map(|p| &p.ident).collect();
+        let coefficients = scaled.then(|| {
+            let f64 = quote!(f64);
+            let lets = self.graph.emit(&prepared, &f64);
+            let values = prepared.iter().enumerate().map(|(i, &c)| {
+                let i = Literal::usize_unsuffixed(i);
+                let value = match self.graph.negation_of(c) {
+                    Some(a) => {
+                        let a = self.graph.scalar(a, &f64);
+                        quote!(-#a)
+                    }
+                    None => self.graph.scalar(c, &f64),
+                };
+                quote!(__coefficients[#i] = #value;)
+            });
+            quote! {
+                #( let #params: f64 = self.#params; )*
+                #lets
+                #(#values)*
+            }
+        });
         let adds = terms().map(|term| {
             let (variable, d) = (term.0, pick(term));
             // g −= a for a derivative −a.
@@ -152,13 +190,14 @@ impl Gradients {
             let j = Literal::usize_unsuffixed(j);
             quote!(__gradient[#j] *= __scale[#j];)
         });
-        quote! {
+        let gradient = quote! {
             {
                 #( let #params: f64 = self.#params; )*
                 #lets
                 #(#adds)*
                 #(#sums_scaled)*
             }
-        }
+        };
+        (gradient, coefficients)
     }
 }

@@ -353,6 +353,32 @@ pub mod springs {
         }
         #[inline]
         #[allow(unused_variables, clippy::all)]
+        fn gradient_coefficients(
+            &self,
+            __scale: &[f64; 4],
+        ) -> [f64; ::lagrange::__private::lagrange_core::model::GRADIENT_COEFFICIENTS] {
+            let mut __coefficients = [0.0; ::lagrange::__private::lagrange_core::model::GRADIENT_COEFFICIENTS];
+            let m: f64 = self.m;
+            let omega: f64 = self.omega;
+            let mu: f64 = self.mu;
+            let __e8: f64 = omega;
+            let __e9: f64 = __e8 * __e8;
+            let __e11: f64 = __e9 / 4.0;
+            let __e23: f64 = __e11 * 2.0;
+            let __e36: f64 = mu;
+            let __e38: f64 = m;
+            let __e39: f64 = __e36 * __e38;
+            let __e53: f64 = __scale[2];
+            let __e55: f64 = __e53 * __e39;
+            let __e64: f64 = __scale[3];
+            let __e66: f64 = __e64 * __e39;
+            __coefficients[0] = <f64>::from(__e23);
+            __coefficients[1] = <f64>::from(__e55);
+            __coefficients[2] = <f64>::from(__e66);
+            __coefficients
+        }
+        #[inline]
+        #[allow(unused_variables, clippy::all)]
         fn scaled_potential_gradient<__S: ::lagrange::__private::Scalar>(
             &self,
             __t: __S,
@@ -362,6 +388,7 @@ pub mod springs {
                 ::lagrange::__private::nalgebra::SVector<__S, 4>,
             >; 6],
             __scale: &[f64; 4],
+            __prepared: &[f64; ::lagrange::__private::lagrange_core::model::GRADIENT_COEFFICIENTS],
         ) -> ::lagrange::__private::core::option::Option<
             ::lagrange::__private::nalgebra::SVector<__S, 4>,
         > {
@@ -375,28 +402,20 @@ pub mod springs {
                 let mu: f64 = self.mu;
                 let __e6: __S = __q[2];
                 let __e7: __S = __q[3];
-                let __e8: f64 = omega;
-                let __e9: f64 = __e8 * __e8;
-                let __e11: f64 = __e9 / 4.0;
                 let __e12: __S = __q[1];
                 let __e13: __S = __q[0];
                 let __e14: __S = __e12 - __e13;
-                let __e23: f64 = __e11 * 2.0;
+                let __e23: f64 = __prepared[0];
                 let __e24: __S = __e14 * __e23;
-                let __e36: f64 = mu;
-                let __e38: f64 = m;
-                let __e39: f64 = __e36 * __e38;
                 let __e41: __S = __e6 * __e6;
                 let __e42: __S = __e7 * __e7;
                 let __e43: __S = __e41 + __e42;
                 let __e44: __S = __e43.sqrt();
-                let __e53: f64 = __scale[2];
-                let __e55: f64 = __e53 * __e39;
+                let __e55: f64 = __prepared[1];
                 let __e56: __S = __e6 * __e55;
                 let __e57: __S = __e43 * __e44;
                 let __e58: __S = __e56 / __e57;
-                let __e64: f64 = __scale[3];
-                let __e66: f64 = __e64 * __e39;
+                let __e66: f64 = __prepared[2];
                 let __e67: __S = __e7 * __e66;
                 let __e68: __S = __e67 / __e57;
                 __gradient[0] -= __e24;

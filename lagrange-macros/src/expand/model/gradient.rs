@@ -131,7 +131,7 @@ fn potential_gradient_fn(model: &Model, parts: &[Part], symbolic: &Symbolic) -> 
     let (n, k) = (model.dof(), model.rows);
     let (n_lit, k_lit) = (lit(n), lit(k));
     let read: Vec<&PartGradient> = symbolic.read.iter().flatten().collect();
-    let trees = (!read.is_empty()).then(|| symbolic.gradients.emit(model, &read, false));
+    let trees = (!read.is_empty()).then(|| symbolic.gradients.emit(model, &read, false).0);
     let scaled = scaled_potential_gradient_fn(model, parts, symbolic);
     let terms = parts
         .iter()
@@ -206,8 +206,22 @@ fn scaled_potential_gradient_fn(
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
     let read: Vec<&PartGradient> = symbolic.read.iter().flatten().collect();
-    let trees = (!read.is_empty()).then(|| symbolic.gradients.emit(model, &read, true));
+    let (trees, coefficients) = match read.is_empty() {
+        true => (None, None),
+        false => {
+            let (trees, coefficients) = symbolic.gradients.emit(model, &read, true);
+            (Some(trees), coefficients)
+        }
+    };
+    let count = quote!(#p::lagrange_core::model::GRADIENT_COEFFICIENTS);
     Some(quote! {
+        #[inline]
+        #[allow(unused_variables, clippy::all)]
+        fn gradient_coefficients(&self, __scale: &[f64; #n]) -> [f64; #count] {
+            let mut __coefficients = [0.0; #count];
+            #coefficients
+            __coefficients
+        }
         #[inline]
         #[allow(unused_variables, clippy::all)]
         fn scaled_potential_gradient<__S: #p::Scalar>(
@@ -217,6 +231,7 @@ fn scaled_potential_gradient_fn(
             __x: &[__S; #k],
             __rows: &[#p::core::option::Option<#p::nalgebra::SVector<__S, #n>>; #k],
             __scale: &[f64; #n],
+            __prepared: &[f64; #count],
         ) -> #p::core::option::Option<#p::nalgebra::SVector<__S, #n>> {
             // From −0, as in `potential_gradient`.
             let mut __gradient = #p::nalgebra::SVector::<__S, #n>::repeat(<__S>::from(-0.0));

@@ -31,6 +31,11 @@ impl Graph {
     /// `let`s for every node `outputs` need, in order: constants in `f64`, the others on `s`.
     /// Literals are written where they are used.
     pub fn emit(&self, outputs: &[Id], s: &TokenStream) -> TokenStream {
+        self.emit_prepared(outputs, s, &[])
+    }
+
+    /// Which nodes `outputs` need, none below a node of `prepared`.
+    fn needed(&self, outputs: &[Id], prepared: &[Id]) -> Vec<bool> {
         let mut needed = vec![false; self.nodes.len()];
         let mut stack: Vec<Id> = outputs.to_vec();
         // An output written `g -= a` needs a, not −a.
@@ -38,10 +43,33 @@ impl Graph {
             *id = self.negated(*id).unwrap_or(*id);
         }
         while let Some(n) = stack.pop() {
-            if !std::mem::replace(&mut needed[n], true) {
+            if !std::mem::replace(&mut needed[n], true) && !prepared.contains(&n) {
                 stack.extend(operands(&self.nodes[n]));
             }
         }
+        needed
+    }
+
+    /// The constants the code for `outputs` takes from outside the state's arithmetic: each
+    /// constant node (not a literal) an operand of a varying node, in the order built. Computed
+    /// once ahead, they are all the constant work of an evaluation.
+    pub fn coefficients(&self, outputs: &[Id]) -> Vec<Id> {
+        let needed = self.needed(outputs, &[]);
+        let mut coefficient = vec![false; self.nodes.len()];
+        for (id, node) in self.nodes.iter().enumerate() {
+            if needed[id] && self.varies[id] {
+                for a in operands(node) {
+                    coefficient[a] |= !self.varies[a] && !matches!(self.nodes[a], Node::Literal(_));
+                }
+            }
+        }
+        (0..self.nodes.len()).filter(|&id| coefficient[id]).collect()
+    }
+
+    /// [`emit`](Self::emit), node `prepared[i]` read as `__prepared[i]` (an `&[f64; _]`) instead
+    /// of computed.
+    pub fn emit_prepared(&self, outputs: &[Id], s: &TokenStream, prepared: &[Id]) -> TokenStream {
+        let needed = self.needed(outputs, prepared);
         // Quotients by one denominator share its reciprocal: a node divided three times or more
         // is inverted once and the quotients are products, each within an ulp of the division's.
         // Two divisions by it are left: they run side by side (a division issues every 4–5 cycles
@@ -78,6 +106,10 @@ impl Graph {
                 }
             };
             let value = match node {
+                _ if prepared.contains(&id) => {
+                    let i = Literal::usize_unsuffixed(prepared.iter().position(|&p| p == id).unwrap());
+                    quote!(__prepared[#i])
+                }
                 Node::Literal(_) => unreachable!("literals are written in place"),
                 Node::Constant(tokens) => tokens.0.clone(),
                 Node::Time => quote!(__t),
