@@ -184,6 +184,27 @@ pub mod stretched {
     }
 }
 
+/// Eighteen masses, each on its own spring to a wall: eighteen constant factors sⱼ k (one per
+/// slot), more than a handle prepares; the others are computed where they are used.
+#[mechanism]
+pub mod many {
+    pub struct Coords {
+        pub q: [f64; 18],
+    }
+    pub struct Many {
+        pub m: f64,
+        pub k: f64,
+    }
+    #[particle(mass = m, count = 18)]
+    fn bead(i: usize) -> Vec2 {
+        vec2(q[i], 0.0)
+    }
+    #[potential]
+    fn walls() -> f64 {
+        k * (q[0].powi(2) + q[1].powi(2) + q[2].powi(2) + q[3].powi(2) + q[4].powi(2) + q[5].powi(2) + q[6].powi(2) + q[7].powi(2) + q[8].powi(2) + q[9].powi(2) + q[10].powi(2) + q[11].powi(2) + q[12].powi(2) + q[13].powi(2) + q[14].powi(2) + q[15].powi(2) + q[16].powi(2) + q[17].powi(2))
+    }
+}
+
 /// x and its Jacobian rows at (t, q), from `cartesian` on dual numbers.
 #[allow(clippy::type_complexity)]
 fn positions<M: Model<N, K>, const N: usize, const K: usize>(
@@ -362,6 +383,14 @@ fn scaled_gradients_agree_with_the_gradient_times_the_scales() {
         assert_agree(s, d, "stretched, scaled");
         let (s, d) = gradients(&stretched, 0.0, q);
         assert_agree(s, d, "stretched");
+    }
+    // More constant factors than are prepared.
+    let many = many::Many { m: 1.0, k: 3.0 };
+    for i in 0..5 {
+        let q: [f64; 18] = std::array::from_fn(|j| wiggle(i, j));
+        let scale = std::array::from_fn(|j| -1.0 / (1.0 + j as f64));
+        let (s, d) = scaled_gradients(&many, 0.0, q, scale).unwrap();
+        assert_agree(s, d, "many, scaled");
     }
     // Not written where the positions are not affine (the handle has no constant M to scale by).
     let polar = kepler_polar::Kepler { m: 2.0, mu: 1.5 };
