@@ -201,7 +201,24 @@ pub mod many {
     }
     #[potential]
     fn walls() -> f64 {
-        k * (q[0].powi(2) + q[1].powi(2) + q[2].powi(2) + q[3].powi(2) + q[4].powi(2) + q[5].powi(2) + q[6].powi(2) + q[7].powi(2) + q[8].powi(2) + q[9].powi(2) + q[10].powi(2) + q[11].powi(2) + q[12].powi(2) + q[13].powi(2) + q[14].powi(2) + q[15].powi(2) + q[16].powi(2) + q[17].powi(2))
+        k * (q[0].powi(2)
+            + q[1].powi(2)
+            + q[2].powi(2)
+            + q[3].powi(2)
+            + q[4].powi(2)
+            + q[5].powi(2)
+            + q[6].powi(2)
+            + q[7].powi(2)
+            + q[8].powi(2)
+            + q[9].powi(2)
+            + q[10].powi(2)
+            + q[11].powi(2)
+            + q[12].powi(2)
+            + q[13].powi(2)
+            + q[14].powi(2)
+            + q[15].powi(2)
+            + q[16].powi(2)
+            + q[17].powi(2))
     }
 }
 
@@ -362,7 +379,10 @@ fn scaled_gradients_agree_with_the_gradient_times_the_scales() {
     // constant factors of its derivatives (for the coordinates) or its row of J (for the rows).
     // The products are the same factors in another order; `assert_agree`'s bound holds.
     let (fpu, kepler) = (
-        fpu::Fpu { m: 1.0, omega: 50.0 },
+        fpu::Fpu {
+            m: 1.0,
+            omega: 50.0,
+        },
         kepler_cartesian::Kepler { m: 2.0, mu: 1.5 },
     );
     let stretched = stretched::Stretched {

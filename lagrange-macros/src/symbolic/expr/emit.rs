@@ -63,7 +63,9 @@ impl Graph {
                 }
             }
         }
-        (0..self.nodes.len()).filter(|&id| coefficient[id]).collect()
+        (0..self.nodes.len())
+            .filter(|&id| coefficient[id])
+            .collect()
     }
 
     /// [`emit`](Self::emit), node `prepared[i]` read as `__prepared[i]` (an `&[f64; _]`) instead
@@ -107,7 +109,8 @@ impl Graph {
             };
             let value = match node {
                 _ if prepared.contains(&id) => {
-                    let i = Literal::usize_unsuffixed(prepared.iter().position(|&p| p == id).unwrap());
+                    let i =
+                        Literal::usize_unsuffixed(prepared.iter().position(|&p| p == id).unwrap());
                     quote!(__prepared[#i])
                 }
                 Node::Literal(_) => unreachable!("literals are written in place"),

@@ -340,7 +340,11 @@ mod tests {
         let more = [first, second];
         let more_rewritten = more.map(|d| g.latency_ordered(d));
         for q in points(10_000, 2) {
-            for (old, new) in taken.iter().zip(&rewritten).chain(more.iter().zip(&more_rewritten)) {
+            for (old, new) in taken
+                .iter()
+                .zip(&rewritten)
+                .chain(more.iter().zip(&more_rewritten))
+            {
                 let (old, new) = (g.evaluate(*old, &q), g.evaluate(*new, &q));
                 if old.is_finite() && old.abs() > f64::MIN_POSITIVE {
                     assert!(

@@ -41,8 +41,16 @@ pub fn hw_fpu(q: &[f64; 6]) -> [f64; 6] {
 
 fn main() {
     let k = kepler::KEPLER.validated().unwrap();
-    let f = fpu::fpu_chain::Fpu { m: 1.0, omega: 50.0 }.validated().unwrap();
-    let (q, q6) = (black_box([0.5, 0.3]), black_box([0.1, 0.2, 0.3, 0.4, 0.5, 0.6]));
+    let f = fpu::fpu_chain::Fpu {
+        m: 1.0,
+        omega: 50.0,
+    }
+    .validated()
+    .unwrap();
+    let (q, q6) = (
+        black_box([0.5, 0.3]),
+        black_box([0.1, 0.2, 0.3, 0.4, 0.5, 0.6]),
+    );
     println!("{:?} {:?}", kepler(&k, &q, &q), hw_kepler(&q, &q));
     println!("{:?} {:?}", fpu(&f, &q6, &q6), hw_fpu(&q6));
 }
