@@ -2,8 +2,9 @@
 //! possible for its slowest operand. A tree of products and quotients (with negations) is
 //! flattened into a sign, constant factors and varying factors; the constants join into one
 //! coefficient (computed in `f64`, off the path that waits for the state); the varying factors
-//! are multiplied shallowest first, two at a time (Huffman's rule, on the latency of each operand:
-//! the result is ready as early as a tree of binary products allows); and the quotient is one
+//! are multiplied shallowest first, two at a time (the pairing of Huffman, "A Method for the
+//! Construction of Minimum-Redundancy Codes", 1952, with the later of two operands' ready times
+//! plus a product's latency in place of the sum of weights); and the quotient is one
 //! division at the end. Three or more equal factors √a in one product are taken as
 //! a·…·√a: the derivative of −μ m/√(r²) by x, −((μ m/√r²)/√r²)(x/√r²) as taken by the chain rule
 //! (a reciprocal and three dependent products), becomes (μ m x)/(r² √r²): one product after the
