@@ -95,6 +95,12 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
         })
     }
 
+    /// The rows of A = J (zero where a row of x is constant).
+    #[inline(always)]
+    pub(crate) fn jacobian(&self) -> &[SVector<f64, N>; K] {
+        &self.jacobian
+    }
+
     /// M⁻¹ b by the prepared factors, for any scalar, skipping the couplings `M` rules out by
     /// its declaration ([`Model::DEPENDS`]).
     #[inline(always)]

@@ -472,6 +472,22 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     }
 
     #[doc(hidden)]
+    /// [`project`](Dynamics::project) with the constants [`Prepare::prepare`] computed when the
+    /// mechanism was validated (see [`crate::constraints::project_prepared`]): what a
+    /// [`Validated`](crate::Validated) handle calls. By default the constants are not used.
+    #[inline]
+    fn project_prepared(
+        &self,
+        prepared: &Self::Prepared,
+        t: f64,
+        q: &mut [f64; N],
+        v: &mut [f64; N],
+    ) -> Result<()> {
+        let _ = prepared;
+        self.project(t, q, v)
+    }
+
+    #[doc(hidden)]
     /// Hook for mechanisms with constraints: checks that (t, q, q̇) satisfies them within tolerance
     /// (see [`crate::constraints::check_consistent`]), so a state violating them is refused rather
     /// than silently projected. Integrators call it before every step; the default accepts.

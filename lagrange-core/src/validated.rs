@@ -158,7 +158,7 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
     }
     #[inline(always)]
     fn project(&self, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {
-        self.0.project(t, q, v)
+        self.0.project_prepared(&self.1, t, q, v)
     }
     #[inline(always)]
     fn check_declaration_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<()> {

@@ -688,6 +688,24 @@ fn only_straight_line_affine_mechanisms_are_checked_in_one_branch() {
         assert!(out.contains(one_branch), "{items}");
         assert!(out.contains("affine::regular_accelerations::<"), "{items}");
     }
+    // Holonomic rows read as trees: the Schur complement from the same constants, in one branch,
+    // and the projection from them too.
+    let out = with(quote!(
+        #[gravity]
+        fn down() -> Vec2 {
+            vec2(0.0, -k)
+        }
+        #[constraint]
+        fn rod() -> f64 {
+            p.norm_squared() - k
+        }
+    ));
+    assert!(out.contains(one_branch), "{out}");
+    assert!(
+        out.contains("constraints::regular_accelerations_prepared::<"),
+        "{out}"
+    );
+    assert!(out.contains("constraints::project_prepared::<"), "{out}");
     let other = [
         quote!(
             #[force(on = p)]
@@ -702,9 +720,9 @@ fn only_straight_line_affine_mechanisms_are_checked_in_one_branch() {
             }
         ),
         quote!(
-            #[constraint]
-            fn rod() -> f64 {
-                p.norm_squared() - k
+            #[unilateral]
+            fn floor() -> f64 {
+                y
             }
         ),
     ];

@@ -111,3 +111,21 @@ pub(super) fn always_active<
 >() -> bool {
     const { !any_kind(&M::KINDS, KindTest::ModeDependent) }
 }
+
+/// Whether every row is holonomic with its derivatives written out
+/// ([`Constraints::POSITION_DERIVATIVES`]) and the mechanism scleronomic: then the rows at a state
+/// are straight-line code on x, ẋ and J alone, and every row is always enforced.
+#[inline(always)]
+pub(super) fn written_holonomic<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>() -> bool {
+    const {
+        !M::RHEONOMIC
+            && !any_kind(&M::KINDS, KindTest::ModeDependent)
+            && !any_kind(&M::KINDS, KindTest::Velocity)
+            && !any_position_row(&M::KINDS, &M::POSITION_DERIVATIVES, false)
+    }
+}

@@ -219,6 +219,7 @@ mod forces;
 mod held;
 mod kinds;
 mod mode;
+mod prepared;
 mod projection;
 mod routing;
 mod rows;
@@ -232,6 +233,7 @@ pub use consistency::{
 pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChange};
 pub use forces::{constraint_forces, ConstraintForces};
 pub use mode::infer_mode;
+pub use prepared::{project_prepared, regular_accelerations_prepared};
 pub use projection::project;
 pub use routing::{integrate_declared_contacts, step_declared_contacts};
 pub use rows::{constraint_rows, holonomic_values, CartesianMotion, ConstraintRows};

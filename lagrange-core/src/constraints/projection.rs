@@ -119,6 +119,62 @@ fn least_norm_correction<
     Ok(delta)
 }
 
+/// The Newton iteration of the position projection, shared by [`project`] and
+/// [`project_prepared`](super::project_prepared): from q and `at_q` = `evaluate(q)` (the residual
+/// max |gᵢ| and what `correction` needs there), steps q ← q + δ with δ = `correction(q, ·)` while
+/// the residual decreases, until it reaches zero, Newton's quadratic convergence makes the next
+/// correction fall below round-off, or it stalls at round-off, at most
+/// [`MAX_PROJECTION_ITERATIONS`] times. Returns the best iterate, its evaluation, its residual and
+/// the number of corrections computed.
+pub(super) fn newton_onto_positions<X, const N: usize>(
+    q: [f64; N],
+    at_q: (f64, X),
+    mut evaluate: impl FnMut(&[f64; N]) -> (f64, X),
+    mut correction: impl FnMut(&[f64; N], &X) -> Result<SVector<f64, N>>,
+) -> Result<([f64; N], X, f64, usize)> {
+    let (mut qn, (mut residual, mut at_qn)) = (q, at_q);
+    let mut iterations = 0;
+    while residual > 0.0 {
+        if iterations == MAX_PROJECTION_ITERATIONS {
+            break;
+        }
+        iterations += 1;
+        let delta = correction(&qn, &at_qn)?;
+        let trial: [f64; N] = std::array::from_fn(|j| qn[j] + delta[j]);
+        let (new_residual, at_trial) = evaluate(&trial);
+        if !(new_residual < residual) {
+            break; // round-off floor reached: keep the best iterate
+        }
+        let stalled = new_residual > 0.25 * residual;
+        let scale = qn.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        // Newton converges quadratically: after a correction this small the next one would be
+        // ≲ |δ|²·(curvature) — below round-off — so it is not computed.
+        let converged = delta.amax() <= 1e-8 * scale;
+        (qn, residual, at_qn) = (trial, new_residual, at_trial);
+        if converged || (stalled && residual < CONSISTENCY_TOLERANCE * 1e-4) {
+            break;
+        }
+    }
+    Ok((qn, at_qn, residual, iterations))
+}
+
+/// [`Error::ProjectionFailed`] at the state (t, q, q̇) the projection started from when the
+/// residual it reached is above [`CONSISTENCY_TOLERANCE`] (or NaN).
+pub(super) fn projection_failed<Names: Coordinates<N>, const N: usize>(
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    iterations: usize,
+    residual: f64,
+) -> Option<Error> {
+    (!(residual <= CONSISTENCY_TOLERANCE)).then(|| Error::ProjectionFailed {
+        t,
+        iterations,
+        residual,
+        state: describe_state(&Names::NAMES, t, q, v),
+    })
+}
+
 /// Projects (q, q̇) onto the rows enforced in `mode` (see the [module docs](super)): Newton on the
 /// position rows with the mass-weighted least-norm step until the residual stops decreasing (round-off),
 /// then one exact projection of q̇ onto every enforced row's velocity-level equation.
@@ -157,40 +213,16 @@ pub(super) fn project_holding<
         std::array::from_fn(|i| enforced[i] && M::KINDS[i].is_position());
     let mut qn = *q;
     if position_rows.iter().any(|&b| b) {
-        let mut residual = position_residual(model, t, &qn, mode);
-        let mut iterations = 0;
-        while residual > 0.0 {
-            if iterations == MAX_PROJECTION_ITERATIONS {
-                break;
-            }
-            iterations += 1;
-            let (rows, value, jac) = position_rows_and_jacobian(model, t, &qn);
-            let delta =
-                least_norm_correction(model, t, &qn, &jac, &rows, &value, &position_rows, free_q)?;
-            let trial: [f64; N] = std::array::from_fn(|j| qn[j] + delta[j]);
-            let new_residual = position_residual(model, t, &trial, mode);
-            if !(new_residual < residual) {
-                break; // round-off floor reached: keep the best iterate
-            }
-            let stalled = new_residual > 0.25 * residual;
-            let scale = qn.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-            // Newton converges quadratically: after a correction this small the next one would be
-            // ≲ |δ|²·(curvature) — below round-off — so it is not computed.
-            let converged = delta.amax() <= 1e-8 * scale;
-            qn = trial;
-            residual = new_residual;
-            if converged || (stalled && residual < CONSISTENCY_TOLERANCE * 1e-4) {
-                break;
-            }
+        let residual_at = |q: &[f64; N]| (position_residual(model, t, q, mode), ());
+        let (projected, (), residual, iterations) =
+            newton_onto_positions(qn, residual_at(&qn), residual_at, |qn, _| {
+                let (rows, value, jac) = position_rows_and_jacobian(model, t, qn);
+                least_norm_correction(model, t, qn, &jac, &rows, &value, &position_rows, free_q)
+            })?;
+        if let Some(e) = projection_failed::<M::Coords, N>(t, q, v, iterations, residual) {
+            return Err(e);
         }
-        if !(residual <= CONSISTENCY_TOLERANCE) {
-            return Err(Error::ProjectionFailed {
-                t,
-                iterations,
-                residual,
-                state: describe_state(&<M::Coords as Coordinates<N>>::NAMES, t, q, v),
-            });
-        }
+        qn = projected;
     }
     let mut vn = *v;
     if enforced.iter().any(|&b| b) {

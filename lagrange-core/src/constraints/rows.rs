@@ -22,7 +22,7 @@ pub struct ConstraintRows<S: Scalar, const N: usize, const C: usize> {
 }
 
 impl<S: Scalar, const N: usize, const C: usize> ConstraintRows<S, N, C> {
-    fn zero() -> Self {
+    pub(super) fn zero() -> Self {
         Self {
             rows: [SVector::zeros(); C],
             bias: [S::zero(); C],

@@ -2,7 +2,8 @@
 //! [`accelerations_in_mode`] (sliding friction included) and [`accelerations`].
 
 use super::cone;
-use super::kinds::always_active;
+use super::kinds::{always_active, written_holonomic};
+use super::prepared::holonomic_accelerations_prepared;
 use super::rows::{constraint_rows, real, rows_from_pass, ConstraintRows};
 use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
@@ -429,7 +430,13 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
 
 /// q̈ and λ when they are finite, otherwise [`Error::NonFiniteDynamics`]; `implied` when λ is finite
 /// whenever q̈ is (then q̈ alone is checked).
-fn finish<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
+pub(super) fn finish<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
     qdd: SVector<S, N>,
     multipliers: [S; C],
     t: S,
@@ -532,6 +539,11 @@ pub fn accelerations_prepared<
     q: &[S; N],
     v: &[S; N],
 ) -> Result<[S; N]> {
+    // Holonomic rows written out: the Schur complement from the prepared constants alone.
+    if written_holonomic::<M, N, K, C>() {
+        return holonomic_accelerations_prepared(model, constants, t, q, v)
+            .map(|a| a.accelerations);
+    }
     let mode = if always_active::<M, N, K, C>() {
         Mode::all_active::<M, N, K>()
     } else {

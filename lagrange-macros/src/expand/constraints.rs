@@ -75,6 +75,22 @@ pub(super) fn constraints_impl(model: &Model) -> TokenStream {
     }
 }
 
+/// Whether every constraint row is a scleronomic `#[constraint]` whose derivatives are written out
+/// on its expression tree ([`ConstraintDerivatives`]): then, on affine positions, q̈ and the
+/// projection from the prepared constants are straight-line code
+/// (`lagrange_core::constraints::regular_accelerations_prepared`).
+pub(super) fn written_holonomic(model: &Model) -> bool {
+    !model.rheonomic
+        && model
+            .constraints
+            .iter()
+            .all(|r| r.decl.kind() == Kind::Constraint)
+        && ConstraintDerivatives::of(model).is_some_and(|derivatives| {
+            let written = derivatives.written(model.constraint_row_count());
+            written.iter().all(|&w| w)
+        })
+}
+
 /// `POSITION_DERIVATIVES` and `position_constraint_derivatives`, for the position rows read as
 /// expression trees ([`crate::symbolic::constraint_rows`]); nothing when none is (every row keeps
 /// its dual numbers).

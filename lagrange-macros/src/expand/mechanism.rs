@@ -21,9 +21,11 @@ pub(super) enum Equations {
 pub(super) enum Positions {
     Affine {
         /// q̈ from the prepared constants is straight-line code that runs no user code: no force
-        /// is declared, no constraint, and every potential's gradient is derived on its
-        /// expression tree (`Model::potential_gradient`). Then `accelerations` through the handle
-        /// checks a call in one branch (`lagrange_core::affine::regular_accelerations`).
+        /// is declared, every potential's gradient is derived on its expression tree
+        /// (`Model::potential_gradient`), and every constraint is holonomic with derivatives
+        /// derived on its tree (`expand::constraints::written_holonomic`). Then `accelerations`
+        /// through the handle checks a call in one branch (`lagrange_core::affine::regular_accelerations`,
+        /// `lagrange_core::constraints::regular_accelerations_prepared`).
         straight_line: bool,
     },
     General,
@@ -41,9 +43,7 @@ pub(super) fn mechanism_impl(
 ) -> TokenStream {
     let (p, n, k) = (private(), lit(n), lit(k));
     let prepared = match (positions, &equations) {
-        (Positions::Affine { straight_line }, _) => Prepared::Affine {
-            straight_line: straight_line && constrained.is_none(),
-        },
+        (Positions::Affine { straight_line }, _) => Prepared::Affine { straight_line },
         (_, Equations::ClosedForm(count)) => Prepared::Coefficients(*count),
         _ => Prepared::Nothing,
     };
@@ -79,7 +79,15 @@ pub(super) fn mechanism_impl(
             // Through a validated handle, with its prepared constants: in one branch where q̈ is
             // then straight-line code, otherwise (the hook's `None`) down the checked path.
             let prepared_call = if straight_line {
-                quote!(#p::lagrange_core::affine::regular_accelerations::<Self, #n, #k>(self, prepared, t, q, v))
+                match constrained {
+                    Some(c) => {
+                        let c = lit(c);
+                        quote!(#p::lagrange_core::constraints::regular_accelerations_prepared::<Self, #n, #k, #c>(self, prepared, t, q, v))
+                    }
+                    None => {
+                        quote!(#p::lagrange_core::affine::regular_accelerations::<Self, #n, #k>(self, prepared, t, q, v))
+                    }
+                }
             } else {
                 quote!({
                     let _ = (prepared, t, q, v);
@@ -94,6 +102,15 @@ pub(super) fn mechanism_impl(
                     }
                 }
             });
+            // The projection after a step from the same constants.
+            let project = constrained.map(|c| {
+                let c = lit(c);
+                quote! {
+                    fn project_prepared(&self, prepared: &Self::Prepared, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
+                        #p::lagrange_core::constraints::project_prepared::<Self, #n, #k, #c>(self, prepared, t, q, v)
+                    }
+                }
+            });
             Some(quote! {
                 #[inline]
                 fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
@@ -101,6 +118,7 @@ pub(super) fn mechanism_impl(
                 }
                 #closed_form_call
                 #regular
+                #project
             })
         }
         // Straight-line code: `accelerations` checks a call in one branch.

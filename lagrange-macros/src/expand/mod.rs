@@ -143,7 +143,9 @@ fn generate(model: &Model) -> TokenStream {
     let affine = crate::affine::is_affine(model);
     let positions = match affine {
         true => Positions::Affine {
-            straight_line: model.forces.is_empty() && gradient_on_trees(model),
+            straight_line: model.forces.is_empty()
+                && gradient_on_trees(model)
+                && (model.constraints.is_empty() || constraints::written_holonomic(model)),
         },
         false => Positions::General,
     };

@@ -473,6 +473,20 @@ pub mod cartesian_pendulum {
                 2,
             >(self, prepared, t, q, v)
         }
+        fn project_prepared(
+            &self,
+            prepared: &Self::Prepared,
+            t: f64,
+            q: &mut [f64; 2],
+            v: &mut [f64; 2],
+        ) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::lagrange_core::constraints::project_prepared::<
+                Self,
+                2,
+                2,
+                2,
+            >(self, prepared, t, q, v)
+        }
     }
     impl ::lagrange::__private::lagrange_core::constraints::Constraints<2, 2, 2>
     for CartesianPendulum {
