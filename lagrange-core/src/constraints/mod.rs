@@ -113,7 +113,10 @@
 //! one LDLᵀ factorisation of M reused for M⁻¹(𝓕 − b) and M⁻¹Rᵀ, and one of the C×C Schur matrix.
 //! A rheonomic mechanism evaluates x and g twice more (gradient, then along the motion). Through a
 //! validated handle, a mechanism whose positions are affine in q (x = A q + c) has M factorised
-//! once and no b ([`crate::affine`], [`accelerations_prepared`]). Each step
+//! once and no b ([`crate::affine`], [`accelerations_prepared`]); where its rows are all holonomic
+//! and written out, they are straight-line code on x, A q̇ and A, q̈ is checked in one branch
+//! ([`regular_accelerations_prepared`]) and the projection uses the same factors
+//! ([`project_prepared`]). Each step
 //! adds the projection (one or two Newton corrections and one velocity correction) and the
 //! consistency check.
 //!
