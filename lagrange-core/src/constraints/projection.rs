@@ -126,6 +126,7 @@ fn least_norm_correction<
 /// correction fall below round-off, or it stalls at round-off, at most
 /// [`MAX_PROJECTION_ITERATIONS`] times. Returns the best iterate, its evaluation, its residual and
 /// the number of corrections computed.
+#[inline(always)]
 pub(super) fn newton_onto_positions<X, const N: usize>(
     q: [f64; N],
     at_q: (f64, X),

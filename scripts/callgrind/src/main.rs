@@ -1,6 +1,8 @@
 //! Driver for callgrind: `lagrange-callgrind MODE CALLS` runs `accelerations` of one mechanism
 //! (generated, or `hw_*` for the hand-written closed form; `validated_*` through a validated handle;
-//! `hot_*` the hook integrators call on that handle, `accelerations_at`) CALLS times. See count.sh.
+//! `hot_*` the hook integrators call on that handle, `accelerations_at`) CALLS times; or
+//! `project_cartesian_pendulum` (`validated_project_…` through the handle) the projection after a
+//! step, from a state off the circle by a step's drift. See count.sh.
 
 use lagrange::prelude::*;
 use std::hint::black_box;
@@ -786,6 +788,31 @@ fn main() {
                     constrained::cartesian_pendulum(black_box(&hand), black_box(q), black_box(v))
                         [0];
             }
+        }
+        "project_cartesian_pendulum" => {
+            use cartesian_pendulum_scene::cartesian_pendulum::*;
+            let sys = CartesianPendulum {
+                m: 1.0,
+                l: 0.8,
+                g: 9.81,
+            };
+            // Off the circle and its tangent by 1e-10, as an accepted step leaves it.
+            let (th, w, drift) = (0.7f64, 1.1f64, 1.0 + 1e-10);
+            let q = [0.8 * drift * th.sin(), -0.8 * drift * th.cos()];
+            let v = [0.8 * w * th.cos() + 1e-10, 0.8 * w * th.sin()];
+            fn project<M: Mechanism<2>>(sys: &M, q: [f64; 2], v: [f64; 2], n: usize) -> f64 {
+                let mut acc = 0.0;
+                for _ in 0..n {
+                    let (mut q, mut v) = (black_box(q), black_box(v));
+                    black_box(sys).project(0.0, &mut q, &mut v).unwrap();
+                    acc += q[0] + v[0];
+                }
+                acc
+            }
+            acc += match via {
+                Via::Parameters => project(&sys, q, v, n),
+                _ => project(&sys.validated().unwrap(), q, v, n),
+            };
         }
         "cartesian_pendulum" => {
             use cartesian_pendulum_scene::cartesian_pendulum::*;
