@@ -307,10 +307,14 @@ fn least_norm_correction<
 ///
 /// ```
 /// use lagrange_core::affine::AffineConstants;
-/// use lagrange_core::constraints::{self, ConstraintKind, Constraints};
+/// use lagrange_core::constraints::{
+///     self, CartesianMotion, ConstraintKind, ConstraintRows, Constraints, Mode,
+/// };
 /// use lagrange_core::{vec2, Model, Scalar};
+/// use nalgebra::SVector;
 ///
-/// /// A bead on the unit circle, in Cartesian coordinates.
+/// /// A bead on the unit circle, in Cartesian coordinates, its row's derivatives written out:
+/// /// G = r̂, ġ = r̂·q̇, β = (|q̇|² − ġ²)/|r|.
 /// struct Bead;
 /// impl Model<2, 2> for Bead {
 ///     type Coords = [f64; 2];
@@ -325,16 +329,34 @@ fn least_norm_correction<
 /// impl Constraints<2, 2, 1> for Bead {
 ///     const NAMES: [&'static str; 1] = ["circle"];
 ///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+///     const POSITION_DERIVATIVES: [bool; 1] = [true];
 ///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
 ///         [vec2(x[0], x[1]).norm() - 1.0]
+///     }
+///     fn position_constraint_derivatives<S: Scalar>(
+///         &self, _t: S, _q: &[S; 2], _v: &[S; 2],
+///         m: &CartesianMotion<S, 2, 2>, rows: &mut ConstraintRows<S, 2, 1>,
+///     ) {
+///         let r = (m.x[0] * m.x[0] + m.x[1] * m.x[1]).sqrt();
+///         let n = [m.x[0] / r, m.x[1] / r];
+///         let rate = n[0] * m.x_dot[0] + n[1] * m.x_dot[1];
+///         rows.value[0] = r - S::one();
+///         rows.rows[0] = SVector::from([n[0], n[1]]);
+///         rows.rate[0] = rate;
+///         rows.bias[0] = (m.x_dot[0] * m.x_dot[0] + m.x_dot[1] * m.x_dot[1] - rate * rate) / r;
 ///     }
 /// }
 ///
 /// let constants = AffineConstants::of(&Bead)?;
 /// let (mut q, mut v) = ([0.6, 0.801], [-0.8, 0.7]);
+/// let (mut q_general, mut v_general) = (q, v);
 /// constraints::project_prepared(&Bead, &constants, 0.0, &mut q, &mut v)?;
 /// assert!(((q[0] * q[0] + q[1] * q[1]).sqrt() - 1.0).abs() < 1e-15);
 /// assert!((q[0] * v[0] + q[1] * v[1]).abs() < 1e-15); // ġ = r̂·q̇ = 0
+/// // The general projection's iterates, with M factorised at each: the same to round-off.
+/// let mode = Mode::all_active::<Bead, 2, 2>();
+/// constraints::project(&Bead, 0.0, &mut q_general, &mut v_general, &mode)?;
+/// assert!((q[0] - q_general[0]).abs() < 1e-15 && (v[1] - v_general[1]).abs() < 1e-15);
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
 pub fn project_prepared<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
