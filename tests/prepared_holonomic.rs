@@ -108,9 +108,11 @@ fn the_declarations_take_the_prepared_holonomic_path() {
         <LatitudeBead as Constraints<3, 3, 2>>::POSITION_DERIVATIVES,
         [true, true]
     );
-    assert!(<LatitudeBead as Prepare>::PREPARED_IN_ONE_BRANCH);
-    assert!(<CartesianPendulum as Prepare>::PREPARED_IN_ONE_BRANCH);
-    assert!(<Validated<CartesianPendulum> as Dynamics<2>>::CLOSED_FORM);
+    // Checked when the test compiles: otherwise the comparisons below would compare the general
+    // path with itself.
+    const { assert!(<LatitudeBead as Prepare>::PREPARED_IN_ONE_BRANCH) };
+    const { assert!(<CartesianPendulum as Prepare>::PREPARED_IN_ONE_BRANCH) };
+    const { assert!(<Validated<CartesianPendulum> as Dynamics<2>>::CLOSED_FORM) };
 }
 
 /// q̈ of the plain mechanism (general path), of the handle's one branch (`accelerations`) and of
