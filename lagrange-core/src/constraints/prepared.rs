@@ -122,9 +122,12 @@ fn schur_solution<
     (qdd, lambda, schur, regular)
 }
 
-/// q̈ of a constrained mechanism with affine positions whose rows are all holonomic and written out
-/// (see the [module docs](self)), from the prepared constants, with every check of a call in one
-/// branch: `Some(q̈)` when t, q, q̇ and q̈ are finite and S = G M⁻¹ Gᵀ passes its pivot tests,
+/// q̈ of a constrained mechanism with affine positions (x = A q + c) whose rows are all holonomic
+/// and written out ([`Constraints::POSITION_DERIVATIVES`]; then G, ġ and β are that code on x,
+/// A q̇ and A, with no dual numbers), from the prepared constants: u = M⁻¹𝓕, S = G M⁻¹ Gᵀ,
+/// S λ = −β − G u, q̈ = u + M⁻¹Gᵀλ (the Schur complement of the KKT system, Hairer & Wanner,
+/// *Solving Ordinary Differential Equations II*, 2nd ed., §VII.1, eq. (1.46)), with every check of
+/// a call in one branch: `Some(q̈)` when t, q, q̇ and q̈ are finite and S = G M⁻¹ Gᵀ passes its pivot tests,
 /// `None` otherwise (and for any other declaration) — the caller then takes the checked path,
 /// which names the failure. λ is not tested: each λₖ enters q̈ through M⁻¹Gₖᵀλₖ, every entry of
 /// which is non-finite with λₖ (0·∞ is NaN), so q̈ finite implies λ finite.
@@ -298,7 +301,8 @@ fn least_norm_correction<
 }
 
 /// [`project`] of a mechanism with affine positions, with the constants a validated handle
-/// prepared: where every row is holonomic and written out (see the [module docs](self)), the same
+/// prepared: where every row is holonomic and written out (as for
+/// [`regular_accelerations_prepared`]), the same
 /// Newton iteration and velocity projection with M⁻¹ by the prepared factors and one evaluation of
 /// the rows per iterate; for any other declaration, [`project`] in the [`infer_mode`]d mode. What
 /// a constrained affine mechanism's validated handle projects with.
