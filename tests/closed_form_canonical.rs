@@ -224,9 +224,8 @@ where
         M::CLOSED_FORM,
         "the declaration is not derived in closed form"
     );
-    let close = |a: &SVector<f64, N>, b: &SVector<f64, N>| {
-        (a - b).amax() <= 1e-13 * b.amax().max(1.0)
-    };
+    let close =
+        |a: &SVector<f64, N>, b: &SVector<f64, N>| (a - b).amax() <= 1e-13 * b.amax().max(1.0);
     for (q, v) in states::<N>() {
         let (p, rate) = sys.canonical_field_at(0.0, &q, &v);
         let (p_dual, rate_dual) = dynamics::canonical_field::<M, f64, N, K>(sys, 0.0, &q, &v);
@@ -354,14 +353,26 @@ fn implicit_steps_on_the_closed_form_equal_those_on_the_dual_passes() {
             use lagrange::integrate::NewtonMemory;
             let mut a = double_pendulum::State::new(
                 0.0,
-                double_pendulum::Coords { theta1: q0[0], theta2: q0[1] },
-                double_pendulum::Coords { theta1: v0[0], theta2: v0[1] },
+                double_pendulum::Coords {
+                    theta1: q0[0],
+                    theta2: q0[1],
+                },
+                double_pendulum::Coords {
+                    theta1: v0[0],
+                    theta2: v0[1],
+                },
             );
             let mut c = a;
             let mut b = double_pendulum_by_potential::State::new(
                 0.0,
-                double_pendulum_by_potential::Coords { theta1: q0[0], theta2: q0[1] },
-                double_pendulum_by_potential::Coords { theta1: v0[0], theta2: v0[1] },
+                double_pendulum_by_potential::Coords {
+                    theta1: q0[0],
+                    theta2: q0[1],
+                },
+                double_pendulum_by_potential::Coords {
+                    theta1: v0[0],
+                    theta2: v0[1],
+                },
             );
             let mut memory_a = NewtonMemory::<2, $stages>::default();
             let mut memory_b = NewtonMemory::<2, $stages>::default();
@@ -380,13 +391,25 @@ fn implicit_steps_on_the_closed_form_equal_those_on_the_dual_passes() {
             // One-step shorthand (a fresh Newton matrix every step).
             let mut a1 = double_pendulum::State::new(
                 0.0,
-                double_pendulum::Coords { theta1: q0[0], theta2: q0[1] },
-                double_pendulum::Coords { theta1: v0[0], theta2: v0[1] },
+                double_pendulum::Coords {
+                    theta1: q0[0],
+                    theta2: q0[1],
+                },
+                double_pendulum::Coords {
+                    theta1: v0[0],
+                    theta2: v0[1],
+                },
             );
             let mut b1 = double_pendulum_by_potential::State::new(
                 0.0,
-                double_pendulum_by_potential::Coords { theta1: q0[0], theta2: q0[1] },
-                double_pendulum_by_potential::Coords { theta1: v0[0], theta2: v0[1] },
+                double_pendulum_by_potential::Coords {
+                    theta1: q0[0],
+                    theta2: q0[1],
+                },
+                double_pendulum_by_potential::Coords {
+                    theta1: v0[0],
+                    theta2: v0[1],
+                },
             );
             for _ in 0..300 {
                 closed_handle.step::<$method>(&mut a1, h).unwrap();

@@ -355,9 +355,9 @@ fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
         // A kept matrix that contracted slower than MASS_REFRESH_THETA takes ∂p/∂v = M(q₀) where
         // the last step left it (the block that goes stale fastest: the others are scaled by h
         // or h²).
-        let mass = previous.and_then(|prev| prev.mass1).filter(|_| {
-            reuse && memory.matrix.is_some_and(|m| m.theta > MASS_REFRESH_THETA)
-        });
+        let mass = previous
+            .and_then(|prev| prev.mass1)
+            .filter(|_| reuse && memory.matrix.is_some_and(|m| m.theta > MASS_REFRESH_THETA));
         let jacobians = match memory.matrix {
             Some(m) if reuse => FieldJacobians {
                 p_v: mass.unwrap_or(m.jacobians.p_v),

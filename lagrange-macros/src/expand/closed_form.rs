@@ -162,7 +162,11 @@ fn canonical_field(equations: &Equations) -> (Vec<Poly>, Vec<Poly>) {
     let velocity = |j: usize| Poly::atom(Atom::Vel(j));
     let entry = |i: usize, j: usize| if i >= j { &m[i][j] } else { &m[j][i] };
     let momenta = (0..n)
-        .map(|i| (0..n).fold(Poly::zero(), |sum, j| sum.add(&entry(i, j).mul(&velocity(j)))))
+        .map(|i| {
+            (0..n).fold(Poly::zero(), |sum, j| {
+                sum.add(&entry(i, j).mul(&velocity(j)))
+            })
+        })
         .collect();
     let mut kinetic = Poly::zero();
     for (i, row) in m.iter().enumerate() {
