@@ -203,7 +203,10 @@ pub(crate) trait ExplicitPair: Copy {
     ) -> Result<([f64; N], [f64; N], f64)>;
 
     /// Completes the accepted attempt ending at `end` = (q₁, q̇₁) whose stages are in `stages`:
-    /// q̈₁ at the new point and the step's dense output.
+    /// q̈₁ at the new point, and the step's dense output written into `dense` once every
+    /// evaluation has succeeded (on error `dense` is untouched). In place, because a dense output
+    /// is 16 vectors of N: returned by value it was copied two or three times a step.
+    #[allow(clippy::too_many_arguments)]
     fn accept<const N: usize>(
         &self,
         start: StepStart<'_, N>,
@@ -212,7 +215,8 @@ pub(crate) trait ExplicitPair: Copy {
         stages: &mut Self::Stages<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-    ) -> Result<([f64; N], DenseOutput<N>)>;
+        dense: &mut DenseOutput<N>,
+    ) -> Result<[f64; N]>;
 }
 
 impl ExplicitPair for Dopri5 {
@@ -251,8 +255,10 @@ impl ExplicitPair for Dopri5 {
         (a1, k): &mut Self::Stages<N>,
         _stats: &mut Stats,
         _acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-    ) -> Result<([f64; N], DenseOutput<N>)> {
-        Ok((*a1, dopri5::dense_output(t, h, (q, v), end, k)))
+        dense: &mut DenseOutput<N>,
+    ) -> Result<[f64; N]> {
+        *dense = dopri5::dense_output(t, h, (q, v), end, k);
+        Ok(*a1)
     }
 }
 
@@ -289,8 +295,9 @@ impl ExplicitPair for Dop853 {
         stages: &mut Self::Stages<N>,
         stats: &mut Stats,
         acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-    ) -> Result<([f64; N], DenseOutput<N>)> {
-        dop853::accept(self, start, h, end, stages, stats, acc)
+        dense: &mut DenseOutput<N>,
+    ) -> Result<[f64; N]> {
+        dop853::accept(self, start, h, end, stages, stats, acc, dense)
     }
 }
 
@@ -315,13 +322,13 @@ fn explicit_start<P: ExplicitPair, const N: usize>(
     Controller { h, fac_old: 1e-4 }
 }
 
-/// An accepted step of an explicit pair: its end time, (q, q̇, q̈) there and its dense output.
-pub(crate) type ExplicitStep<const N: usize> = (f64, [f64; N], [f64; N], [f64; N], DenseOutput<N>);
+/// An accepted step of an explicit pair: its end time and (q, q̇, q̈) there.
+pub(crate) type ExplicitStep<const N: usize> = (f64, [f64; N], [f64; N], [f64; N]);
 
 /// One accepted step of an explicit pair on `field`: the shared step loop and PI controller
 /// ([`adaptive_step`]) over its trials, whose stages are computed in place in `stages`, then
-/// its completion (FSAL evaluation and dense output). What [`EmbeddedPair::step`] and
-/// [`Dop853Stepper`](super::Dop853Stepper) take.
+/// its completion (FSAL evaluation, and the dense output written into `dense`, which an error leaves
+/// untouched). What [`EmbeddedPair::step`] and [`Dop853Stepper`](super::Dop853Stepper) take.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub(crate) fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
@@ -332,6 +339,7 @@ pub(crate) fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     start: StepStart<'_, N>,
     t_limit: f64,
     stats: &mut Stats,
+    dense: &mut DenseOutput<N>,
 ) -> Result<ExplicitStep<N>> {
     let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
     let ((q, v), h, t) = adaptive_step(
@@ -348,8 +356,8 @@ pub(crate) fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
                 .map(|(q1, v1, err)| ((q1, v1), err))
         },
     )?;
-    let (a, dense) = method.accept(start, h, (&q, &v), stages, stats, &acc)?;
-    Ok((t, q, v, a, dense))
+    let a = method.accept(start, h, (&q, &v), stages, stats, &acc, dense)?;
+    Ok((t, q, v, a))
 }
 
 /// [`EmbeddedPair::shorten`] of an explicit pair: one trial of length h, accepted.
@@ -363,7 +371,8 @@ fn explicit_shorten<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
     let mut stages = P::stages();
     let (q, v, _) = method.attempt::<C, N>(start, h, &mut stages, stats, &acc)?;
-    let (a, dense) = method.accept(start, h, (&q, &v), &mut stages, stats, &acc)?;
+    let mut dense = DenseOutput::constant(start.0, start.1, start.2);
+    let a = method.accept(start, h, (&q, &v), &mut stages, stats, &acc, &mut dense)?;
     Ok(Accepted {
         t: start.0 + h,
         q,
@@ -410,7 +419,8 @@ macro_rules! explicit_embedded_pair {
                 stats: &mut Stats,
             ) -> Result<Accepted<N>> {
                 let mut stages = <Self as ExplicitPair>::stages();
-                let (t, q, v, a, dense) = explicit_step::<Self, C, N>(
+                let mut dense = DenseOutput::constant(start.0, start.1, start.2);
+                let (t, q, v, a) = explicit_step::<Self, C, N>(
                     self,
                     memory,
                     &mut stages,
@@ -418,6 +428,7 @@ macro_rules! explicit_embedded_pair {
                     start,
                     t_limit,
                     stats,
+                    &mut dense,
                 )?;
                 Ok(Accepted {
                     t,

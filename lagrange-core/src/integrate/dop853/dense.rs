@@ -11,7 +11,9 @@ use crate::integrate::solver::Stats;
 /// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈) to (q₁, q̇₁),
 /// whose stages are in `k`: the FSAL evaluation q̈₁ at the new point (stage 13), and the dense
 /// output — the 7th-order continuous extension of `dop853.f` (CONTD8, stages 14–16 evaluated
-/// here), or the cubic Hermite interpolant with `dense: false`.
+/// here), or the cubic Hermite interpolant with `dense: false`, written into `dense` once every
+/// evaluation has succeeded.
+#[allow(clippy::too_many_arguments)]
 #[inline]
 pub(crate) fn accept<const N: usize>(
     st: &Dop853,
@@ -21,14 +23,15 @@ pub(crate) fn accept<const N: usize>(
     k: &mut Stages<N>,
     stats: &mut Stats,
     acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-) -> Result<([f64; N], DenseOutput<N>)> {
+    dense: &mut DenseOutput<N>,
+) -> Result<[f64; N]> {
     stats.evaluations += 1;
     let a1 = acc(t + h, q1, v1)?;
     k.kq[12] = *v1;
     k.ka[12] = a1;
     if !st.dense {
-        let dense = DenseOutput::hermite(t, h, (q, v, a), (q1, v1, &a1));
-        return Ok((a1, dense));
+        *dense = DenseOutput::hermite(t, h, (q, v, a), (q1, v1, &a1));
+        return Ok(a1);
     }
     let y = (t, q, v);
     evaluate_stage::<13, N>(y, h, k, stats, acc)?;
@@ -53,6 +56,6 @@ pub(crate) fn accept<const N: usize>(
         }
         r
     };
-    let dense = DenseOutput::from_coefficients(t, h, make(q, q1, &k.kq), make(v, v1, &k.ka));
-    Ok((a1, dense))
+    *dense = DenseOutput::from_coefficients(t, h, make(q, q1, &k.kq), make(v, v1, &k.ka));
+    Ok(a1)
 }

@@ -96,11 +96,13 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
 
     /// Takes one accepted step, not past `t_limit` (> current time), rejecting and shrinking as
     /// needed, as [`Dopri5Stepper::step`](crate::integrate::Dopri5Stepper::step) does. On error
-    /// the accepted state is unchanged.
+    /// the accepted state is unchanged (and when the projection after the step failed, the dense
+    /// output is the constant at that state).
     pub fn step(&mut self, t_limit: f64) -> Result<()> {
         let (mut control, mut stats) = (self.control, self.stats);
         let start = (self.t, &self.q, &self.v, &self.a);
-        let (t_new, q1, v1, a1, dense) = explicit_step::<Dop853, M::Coords, N>(
+        // The dense output is written in place: an error before it is complete leaves it as it was.
+        let (t_new, q1, v1, a1) = explicit_step::<Dop853, M::Coords, N>(
             &self.settings,
             &mut control,
             &mut self.stages,
@@ -108,9 +110,15 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
             start,
             t_limit,
             &mut stats,
+            &mut self.dense,
         )?;
-        let (qp, vp, ap) = project_accepted(self.mechanism, t_new, (q1, v1, a1), &mut stats)?;
-        self.dense = dense;
+        let (qp, vp, ap) = match project_accepted(self.mechanism, t_new, (q1, v1, a1), &mut stats) {
+            Ok(projected) => projected,
+            Err(e) => {
+                self.dense = DenseOutput::constant(self.t, &self.q, &self.v);
+                return Err(e);
+            }
+        };
         (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
         (self.control, self.stats) = (control, stats);
         Ok(())
