@@ -808,7 +808,8 @@ impl<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize> St
             .map(|a| a.accelerations)
             .unwrap_or([f64::NAN; N]);
         let (q0, v0) = (self.state.q.to_array(), self.state.v.to_array());
-        self.dense = DenseOutput::hermite(t0, h, (&q0, &v0, &self.a), (&q1, &v1, &a1));
+        self.dense
+            .set_hermite(t0, h, (&q0, &v0, &self.a), (&q1, &v1, &a1));
         // Four evaluations per RK4 sub-step; one more for the dense output.
         self.stats.evaluations += 4 * (self.contact.events.len() - events + 1) + 1;
         self.stats.accepted += 1;

@@ -483,7 +483,8 @@ impl<M: Mechanism<N>, I: Integrator, const N: usize> Stepper<M::Coords, N>
             .map_err(|e| diagnose(m, t1, &q1, &v1, e))?;
         stats.evaluations += 1;
         stats.accepted += 1;
-        self.dense = DenseOutput::hermite(self.t, h, (&self.q, &self.v, &self.a), (&q1, &v1, &a1));
+        self.dense
+            .set_hermite(self.t, h, (&self.q, &self.v, &self.a), (&q1, &v1, &a1));
         (self.t, self.q, self.v, self.a, self.memory) = (t1, q1, v1, a1, memory);
         self.stats += stats;
         Ok(())

@@ -30,7 +30,7 @@ pub(crate) fn accept<const N: usize>(
     k.kq[12] = *v1;
     k.ka[12] = a1;
     if !st.dense {
-        *dense = DenseOutput::hermite(t, h, (q, v, a), (q1, v1, &a1));
+        dense.set_hermite(t, h, (q, v, a), (q1, v1, &a1));
         return Ok(a1);
     }
     let y = (t, q, v);

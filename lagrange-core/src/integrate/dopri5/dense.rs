@@ -34,32 +34,32 @@ impl<const N: usize> DenseOutput<N> {
     }
 
     /// The cubic Hermite interpolant over [t₀, t₀ + h] of (q, v) with derivatives (v, q̈) at both
-    /// ends (`start` and `end` are (q, v, q̈)): order 3 (HNW I §II.6, (6.7)).
-    pub(crate) fn hermite(
+    /// ends (`start` and `end` are (q, v, q̈)): order 3 (HNW I §II.6, (6.7)), written over `self` in
+    /// place (the rows it does not use are left as they are): what an integrator that keeps its
+    /// dense output does after every step.
+    #[inline]
+    pub(crate) fn set_hermite(
+        &mut self,
         t0: f64,
         h: f64,
         start: (&[f64; N], &[f64; N], &[f64; N]),
         end: (&[f64; N], &[f64; N], &[f64; N]),
-    ) -> Self {
-        let make = |y0: &[f64; N], y1: &[f64; N], d0: &[f64; N], d1: &[f64; N]| {
-            let mut r = [[0.0; N]; 8];
-            for i in 0..N {
-                let diff = y1[i] - y0[i];
-                let bspl = h * d0[i] - diff;
-                r[0][i] = y0[i];
-                r[1][i] = diff;
-                r[2][i] = bspl;
-                r[3][i] = diff - h * d1[i] - bspl;
-            }
-            r
-        };
-        DenseOutput {
-            t0,
-            h,
-            q: make(start.0, end.0, start.1, end.1),
-            v: make(start.1, end.1, start.2, end.2),
-            terms: 5,
-        }
+    ) {
+        let write =
+            |r: &mut [[f64; N]; 8], y0: &[f64; N], y1: &[f64; N], d0: &[f64; N], d1: &[f64; N]| {
+                for i in 0..N {
+                    let diff = y1[i] - y0[i];
+                    let bspl = h * d0[i] - diff;
+                    r[0][i] = y0[i];
+                    r[1][i] = diff;
+                    r[2][i] = bspl;
+                    r[3][i] = diff - h * d1[i] - bspl;
+                    r[4][i] = 0.0;
+                }
+            };
+        write(&mut self.q, start.0, end.0, start.1, end.1);
+        write(&mut self.v, start.1, end.1, start.2, end.2);
+        (self.t0, self.h, self.terms) = (t0, h, 5);
     }
 
     /// Dop853's continuous extension of order 7 (Hairer's CONTD8): r₁…r₈ for q and for v.
