@@ -67,40 +67,10 @@ pub mod arm {
     }
 }
 
-/// A spherical pendulum in polar and azimuthal angles, and a particle in polar coordinates in the
-/// plane z = 0 of the same space: products of a coordinate with sines and cosines, and
-/// sin² θ (cos² φ + sin² φ) + cos² θ to simplify.
-#[mechanism]
-pub mod spherical {
-    pub struct Coords {
-        pub theta: f64,
-        pub phi: f64,
-        pub r: f64,
-        pub psi: f64,
-    }
-    pub struct Spherical {
-        pub m: f64,
-        pub m2: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec3 {
-        vec3(
-            theta.sin() * phi.cos(),
-            theta.sin() * phi.sin(),
-            -theta.cos(),
-        ) * l
-    }
-    #[particle(mass = m2)]
-    fn orbiter() -> Vec3 {
-        vec3(r * psi.cos(), r * psi.sin(), 0.0)
-    }
-    #[gravity]
-    fn down() -> Vec3 {
-        vec3(0.0, 0.0, -g)
-    }
-}
+// The spherical pendulum and polar coordinates, declared once for this file and another.
+#[path = "common/spherical.rs"]
+mod spherical_declaration;
+use spherical_declaration::spherical;
 
 fn cart_pendulum() -> cart_pendulum::CartPendulum {
     cart_pendulum::CartPendulum {

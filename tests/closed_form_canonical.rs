@@ -13,53 +13,10 @@ use lagrange::prelude::*;
 use lagrange::{GaussLegendre2, ImplicitMidpoint};
 use nalgebra::SVector;
 use num_dual::DualSVec;
-
-#[mechanism]
-pub mod pendulum {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Pendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-#[mechanism]
-pub mod double_pendulum {
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-    pub struct DoublePendulum {
-        pub m1: f64,
-        pub m2: f64,
-        pub l1: f64,
-        pub l2: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m1)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l1
-    }
-    #[particle(mass = m2)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+// The gallery's declarations: the pendulum and the double pendulum in closed form, the four-bar not.
+use lagrange_gallery::scenes::{
+    double_pendulum::double_pendulum, four_bar::four_bar, pendulum::pendulum,
+};
 
 /// The same double pendulum with its weight written as a potential: not derived in closed form
 /// (a potential is left to the dual-number passes).
@@ -153,39 +110,10 @@ pub mod chain {
     }
 }
 
-/// A spherical pendulum in polar and azimuthal angles and a particle in polar coordinates: M
-/// depends on sin² θ and on r², so ∂T/∂q has both trigonometric and polynomial derivatives.
-#[mechanism]
-pub mod spherical {
-    pub struct Coords {
-        pub theta: f64,
-        pub phi: f64,
-        pub r: f64,
-        pub psi: f64,
-    }
-    pub struct Spherical {
-        pub m: f64,
-        pub m2: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec3 {
-        vec3(
-            theta.sin() * phi.cos(),
-            theta.sin() * phi.sin(),
-            -theta.cos(),
-        ) * l
-    }
-    #[particle(mass = m2)]
-    fn orbiter() -> Vec3 {
-        vec3(r * psi.cos(), r * psi.sin(), 0.0)
-    }
-    #[gravity]
-    fn down() -> Vec3 {
-        vec3(0.0, 0.0, -g)
-    }
-}
+// The spherical pendulum and polar coordinates, declared once for this file and another.
+#[path = "common/spherical.rs"]
+mod spherical_declaration;
+use spherical_declaration::spherical;
 
 fn double() -> double_pendulum::DoublePendulum {
     double_pendulum::DoublePendulum {
@@ -432,59 +360,12 @@ fn implicit_steps_on_the_closed_form_equal_those_on_the_dual_passes() {
     run!(GaussLegendre2, 2);
 }
 
-/// A four-bar linkage (two loop-closure constraints, not in closed form): each step ends with a
+/// The gallery's four-bar linkage (two loop-closure constraints, not in closed form): each step ends with a
 /// projection, so the next starts off the last step's end (p₀ evaluated anew) while its Newton
 /// matrix takes the unprojected end's M. A solver's steps equal the one-step shorthand's (fresh
 /// matrix, no memory) to round-off: Newton is iterated to round-off either way and the projection
 /// is the same map, so the runs differ by a few ulps per step over 300 steps (|q̇| ≲ 3): 1e-12
 /// bounds it with margin (the measured difference is ≤ 3e-14).
-#[mechanism]
-pub mod four_bar {
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-        pub theta3: f64,
-    }
-    pub struct FourBar {
-        pub l1: f64,
-        pub l2: f64,
-        pub l3: f64,
-        pub m1: f64,
-        pub m2: f64,
-        pub m3: f64,
-        pub d: f64,
-        pub g: f64,
-    }
-    #[rigid_body(mass = m1, inertia = m1 * l1 * l1 / 12.0)]
-    fn crank() -> Planar {
-        planar(vec2(theta1.cos(), theta1.sin()) * (0.5 * l1), theta1)
-    }
-    #[rigid_body(mass = m2, inertia = m2 * l2 * l2 / 12.0)]
-    fn coupler() -> Planar {
-        let tip = vec2(theta1.cos(), theta1.sin()) * l1;
-        planar(tip + vec2(theta2.cos(), theta2.sin()) * (0.5 * l2), theta2)
-    }
-    #[rigid_body(mass = m3, inertia = m3 * l3 * l3 / 12.0)]
-    fn rocker() -> Planar {
-        planar(
-            vec2(d, 0.0) + vec2(theta3.cos(), theta3.sin()) * (0.5 * l3),
-            theta3,
-        )
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-    #[constraint]
-    fn joint_b_x() -> f64 {
-        coupler.point(vec2(0.5 * l2, 0.0)).x - rocker.point(vec2(0.5 * l3, 0.0)).x
-    }
-    #[constraint]
-    fn joint_b_y() -> f64 {
-        coupler.point(vec2(0.5 * l2, 0.0)).y - rocker.point(vec2(0.5 * l3, 0.0)).y
-    }
-}
-
 #[test]
 fn a_solvers_steps_on_a_constrained_linkage_equal_the_one_step_shorthands() {
     use four_bar::{Coords, FourBar, State};
