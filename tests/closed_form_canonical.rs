@@ -47,33 +47,6 @@ pub mod double_pendulum_by_potential {
     }
 }
 
-/// A pendulum hanging from a cart on a rail.
-#[mechanism]
-pub mod cart_pendulum {
-    pub struct Coords {
-        pub x: f64,
-        pub theta: f64,
-    }
-    pub struct CartPendulum {
-        pub cart_mass: f64,
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = cart_mass)]
-    fn cart() -> Vec2 {
-        vec2(x, 0.0)
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        cart + vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
 /// A chain of four links declared one by one, the last a planar rod.
 #[mechanism]
 pub mod chain {
@@ -110,10 +83,10 @@ pub mod chain {
     }
 }
 
-// The spherical pendulum and polar coordinates, declared once for this file and another.
-#[path = "common/spherical.rs"]
-mod spherical_declaration;
-use spherical_declaration::spherical;
+// The cart-pendulum and the spherical pendulum, declared once for this file and another.
+#[path = "common/closed_form_mechanisms.rs"]
+mod closed_form_mechanisms;
+use closed_form_mechanisms::{cart_pendulum, spherical};
 
 fn double() -> double_pendulum::DoublePendulum {
     double_pendulum::DoublePendulum {
