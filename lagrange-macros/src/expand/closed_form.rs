@@ -77,6 +77,17 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
     let count = lit(coefficient_count);
     let n = lit(n);
     let prelude = super::prelude();
+    // `__k`: the prepared coefficients, or those computed here after the trigonometric calls.
+    let select_coefficients = quote! {
+        let __computed: [f64; #count];
+        let __k: &[f64; #count] = match __prepared {
+            #p::core::option::Option::Some(__k) => __k,
+            #p::core::option::Option::None => {
+                __computed = self.__lagrange_coefficients();
+                &__computed
+            }
+        };
+    };
     let tokens = quote! {
         impl #params_ident {
             /// The constant factors of the closed-form equations of motion.
@@ -108,14 +119,7 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
             ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
                 #prelude
                 #variables
-                let __computed: [f64; #count];
-                let __k: &[f64; #count] = match __prepared {
-                    #p::core::option::Option::Some(__k) => __k,
-                    #p::core::option::Option::None => {
-                        __computed = self.__lagrange_coefficients();
-                        &__computed
-                    }
-                };
+                #select_coefficients
                 #products
                 #p::dynamics::EquationsOfMotion::from_columns(
                     [#(#columns),*],
@@ -135,14 +139,7 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
             ) -> ([#d; #n], [#d; #n]) {
                 #prelude
                 #canonical_variables
-                let __computed: [f64; #count];
-                let __k: &[f64; #count] = match __prepared {
-                    #p::core::option::Option::Some(__k) => __k,
-                    #p::core::option::Option::None => {
-                        __computed = self.__lagrange_coefficients();
-                        &__computed
-                    }
-                };
+                #select_coefficients
                 #canonical_products
                 ([#(#momenta),*], [#(#rates),*])
             }
