@@ -112,14 +112,15 @@ impl<'m, M: Mechanism<N>, const N: usize> Dop853Stepper<'m, M, N> {
             &mut stats,
             &mut self.dense,
         )?;
-        let (qp, vp, ap) = match project_accepted(self.mechanism, t_new, (q1, v1, a1), &mut stats) {
+        // Onto the constraints, the FSAL acceleration kept (see `project_accepted`).
+        let (qp, vp) = match project_accepted(self.mechanism, t_new, (q1, v1)) {
             Ok(projected) => projected,
             Err(e) => {
                 self.dense = DenseOutput::constant(self.t, &self.q, &self.v);
                 return Err(e);
             }
         };
-        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
+        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, a1);
         (self.control, self.stats) = (control, stats);
         Ok(())
     }

@@ -243,12 +243,11 @@ impl<'m, M: Mechanism<N>, const N: usize> Dopri5Stepper<'m, M, N> {
             },
         )?;
         // Accepted. The dense output interpolates the step as computed; the state is then projected
-        // onto the constraints (a no-op without any: then nothing changes and nothing is
-        // re-evaluated). If the projection moved it, the FSAL acceleration is re-evaluated at the
-        // projected state.
-        let (qp, vp, ap) = project_accepted(self.mechanism, t_new, (q1, v1, a1), &mut stats)?;
+        // onto the constraints (a no-op without any), and the FSAL acceleration is kept (see
+        // `project_accepted`).
+        let (qp, vp) = project_accepted(self.mechanism, t_new, (q1, v1))?;
         self.dense = self.build_dense(h, &q1, &v1, &a1, &k);
-        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, ap);
+        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, a1);
         (self.h, self.fac_old, self.stats) = (control.h, control.fac_old, stats);
         Ok(())
     }
