@@ -26,7 +26,8 @@
 //! - Constraints: the start state must satisfy the mechanism's constraints
 //!   (`Dynamics::check_constraints`); every accepted step is projected onto them
 //!   (`Dynamics::project`, a no-op without constraints). The dense output interpolates the step
-//!   before projection, which moves the end point by about the local error.
+//!   before projection, which moves the end point by about the local error; q̈ at the end,
+//!   evaluated before the projection, stays the next step's first stage for the same reason.
 //!
 //! Integration is forward in time only.
 
