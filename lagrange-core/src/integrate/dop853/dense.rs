@@ -5,7 +5,7 @@ use super::stepper::{evaluate_stage, Stages};
 use super::tableau::D;
 use super::Dop853;
 use crate::error::Result;
-use crate::integrate::dopri5::DenseOutput;
+use crate::integrate::dopri5::{hermite_rows, DenseOutput};
 use crate::integrate::solver::Stats;
 
 /// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈) to (q₁, q̇₁),
@@ -39,13 +39,9 @@ pub(crate) fn accept<const N: usize>(
     evaluate_stage::<15, N>(y, h, k, stats, acc)?;
     let make = |y0: &[f64; N], y1: &[f64; N], k: &[[f64; N]; 16]| {
         let mut r = [[0.0; N]; 8];
+        // Stage 1 is the derivative at the step's start, stage 13 (FSAL) the one at its end.
+        hermite_rows(&mut r, h, y0, y1, &k[0], &k[12]);
         for n in 0..N {
-            let diff = y1[n] - y0[n];
-            let bspl = h * k[0][n] - diff;
-            r[0][n] = y0[n];
-            r[1][n] = diff;
-            r[2][n] = bspl;
-            r[3][n] = diff - h * k[12][n] - bspl;
             for (row, d) in D.iter().enumerate() {
                 let mut s = 0.0;
                 for j in 0..16 {

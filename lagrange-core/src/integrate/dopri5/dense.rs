@@ -45,20 +45,10 @@ impl<const N: usize> DenseOutput<N> {
         start: (&[f64; N], &[f64; N], &[f64; N]),
         end: (&[f64; N], &[f64; N], &[f64; N]),
     ) {
-        let write =
-            |r: &mut [[f64; N]; 8], y0: &[f64; N], y1: &[f64; N], d0: &[f64; N], d1: &[f64; N]| {
-                for i in 0..N {
-                    let diff = y1[i] - y0[i];
-                    let bspl = h * d0[i] - diff;
-                    r[0][i] = y0[i];
-                    r[1][i] = diff;
-                    r[2][i] = bspl;
-                    r[3][i] = diff - h * d1[i] - bspl;
-                    r[4][i] = 0.0;
-                }
-            };
-        write(&mut self.q, start.0, end.0, start.1, end.1);
-        write(&mut self.v, start.1, end.1, start.2, end.2);
+        hermite_rows(&mut self.q, h, start.0, end.0, start.1, end.1);
+        hermite_rows(&mut self.v, h, start.1, end.1, start.2, end.2);
+        self.q[4] = [0.0; N];
+        self.v[4] = [0.0; N];
         (self.t0, self.h, self.terms) = (t0, h, 5);
     }
 
@@ -170,6 +160,38 @@ impl<const N: usize> DenseOutput<N> {
     }
 }
 
+/// Rows 0–3 of a dense output's coefficients over a step of size h from y₀ to y₁, with
+/// derivatives d₀ = y'(t₀) and d₁ = y'(t₀ + h) (rows 4–7 are left as they are):
+///
+/// ```text
+/// r₀ = y₀,   r₁ = y₁ − y₀,   r₂ = h d₀ − r₁,   r₃ = r₁ − h d₁ − r₂.
+/// ```
+///
+/// The start of the continuous extensions of DOPRI5 and DOP853 (Hairer, Nørsett & Wanner,
+/// *Solving Ordinary Differential Equations I*, 2nd ed., 1993, §II.6; `rcont1`…`rcont4` of
+/// `contd5` in dopri5.f and of `contd8` in dop853.f; r₁…r₄ in the 1-based form of
+/// [`DenseOutput`]). Alone (the higher rows zero) they are the cubic Hermite interpolant
+/// y₀ + θ(r₁ + (1−θ)(r₂ + θ r₃)), θ = (t − t₀)/h, of the end values and derivatives: its
+/// θ-derivative is r₁ + r₂ = h d₀ at θ = 0 and r₁ − r₂ − r₃ = h d₁ at θ = 1.
+#[inline(always)]
+pub(crate) fn hermite_rows<const N: usize>(
+    r: &mut [[f64; N]; 8],
+    h: f64,
+    y0: &[f64; N],
+    y1: &[f64; N],
+    d0: &[f64; N],
+    d1: &[f64; N],
+) {
+    for i in 0..N {
+        let diff = y1[i] - y0[i];
+        let bspl = h * d0[i] - diff;
+        r[0][i] = y0[i];
+        r[1][i] = diff;
+        r[2][i] = bspl;
+        r[3][i] = diff - h * d1[i] - bspl;
+    }
+}
+
 /// The dense output of an accepted [`trial`](super::trial) of size h from (t₀, q₀, v₀) to
 /// (q₁, v₁): Hairer's CONTD5 (HNW I §II.6), order 4, no extra evaluation. Inlined, so that the
 /// output is built where it is stored.
@@ -181,6 +203,7 @@ pub(crate) fn dense_output<const N: usize>(
     (q1, v1): (&[f64; N], &[f64; N]),
     k: &[[f64; N]; 8],
 ) -> DenseOutput<N> {
+    // Stage 1 is (v₀, q̈₀) and stage 7 (FSAL) is (v₁, q̈₁): the derivatives of (q, v) at the ends.
     let [kq1, ka1, kq7, ka7, dq, dv, _, _] = k;
     let make = |y0: &[f64; N],
                 y1: &[f64; N],
@@ -189,13 +212,8 @@ pub(crate) fn dense_output<const N: usize>(
                 d: &[f64; N]|
      -> [[f64; N]; 8] {
         let mut r = [[0.0; N]; 8];
+        hermite_rows(&mut r, h, y0, y1, k1, k7);
         for i in 0..N {
-            let diff = y1[i] - y0[i];
-            let bspl = h * k1[i] - diff;
-            r[0][i] = y0[i];
-            r[1][i] = diff;
-            r[2][i] = bspl;
-            r[3][i] = diff - h * k7[i] - bspl;
             r[4][i] = h * d[i];
         }
         r

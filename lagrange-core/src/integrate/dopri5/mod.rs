@@ -48,7 +48,7 @@ mod tableau;
 
 pub use control::Controller;
 pub(crate) use control::{adaptive_step, initial_step, initial_step_on, project_accepted, ratio};
-pub(crate) use dense::dense_output;
+pub(crate) use dense::{dense_output, hermite_rows};
 pub use dense::{DenseOutput, EVENT_TIME_TOLERANCE};
 pub use stepper::Dopri5Stepper;
 pub(crate) use stepper::{stages, trial};
