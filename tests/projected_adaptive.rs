@@ -20,7 +20,8 @@ const ANGLE: AnglePendulum = AnglePendulum {
     l: 0.8,
     g: 9.81,
 };
-/// Starting angle and rate: a swing of about 80°, far from the small-angle regime.
+/// Starting angle and rate: a swing of about 70° (cos θ_max = cos θ₀ − ω₀² l / 2g), far from the
+/// small-angle regime.
 const THETA0: f64 = 1.2;
 const OMEGA0: f64 = 0.5;
 const T_END: f64 = 5.0;
