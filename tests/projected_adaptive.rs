@@ -114,7 +114,7 @@ fn projected_runs_converge_to_the_angle_form() {
             );
             // A tolerance-controlled run's global error is its tolerance times the growth of
             // local errors over the run, a constant of the problem and the interval (HNW I
-            // §II.4, tolerance proportionality); over these 5 s (about three swings) it is of
+            // §II.4, tolerance proportionality); over these 5 s (two and a half periods) it is of
             // order 1 for Dop853 and 10 for Dopri5, so 30 bounds it with room at every tolerance,
             // and an order lost to the kept evaluation would show as a ratio that grows as the
             // tolerance falls.
