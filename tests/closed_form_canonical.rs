@@ -341,33 +341,10 @@ fn implicit_steps_on_the_closed_form_equal_those_on_the_dual_passes() {
 /// bounds it with margin (the measured difference is ≤ 3e-14).
 #[test]
 fn a_solvers_steps_on_a_constrained_linkage_equal_the_one_step_shorthands() {
-    use four_bar::{Coords, FourBar, State};
-    use lagrange::constraints::consistent_state;
+    use four_bar::State;
     use lagrange::integrate::NewtonMemory;
-    let sys = FourBar {
-        l1: 1.0,
-        l2: 3.0,
-        l3: 2.0,
-        m1: 1.0,
-        m2: 2.0,
-        m3: 1.5,
-        d: 3.0,
-        g: 9.81,
-    };
-    let guess = State::new(
-        0.0,
-        Coords {
-            theta1: 1.0,
-            theta2: 0.2,
-            theta3: 1.6,
-        },
-        Coords {
-            theta1: 3.0,
-            theta2: 0.0,
-            theta3: 0.0,
-        },
-    );
-    let start = consistent_state(&sys, &guess).unwrap();
+    // The gallery's linkage and its consistent start (the crank turning at 3 rad/s).
+    let (sys, start) = lagrange_gallery::scenes::four_bar::linkage();
     let h = 1e-3;
     let close = |a: &State, b: &State| {
         let (qa, qb) = (a.q.to_array(), b.q.to_array());
