@@ -75,6 +75,30 @@ pub mod double_pendulum {
     }
 }
 
+/// The double pendulum every mode that evaluates it takes: its parameters and its start.
+const DOUBLE_PENDULUM: double_pendulum::DoublePendulum = double_pendulum::DoublePendulum {
+    m1: 1.0,
+    m2: 1.3,
+    l1: 1.0,
+    l2: 0.8,
+    g: 9.81,
+};
+
+fn double_pendulum_start() -> double_pendulum::State {
+    use double_pendulum::{Coords, State};
+    State::new(
+        0.0,
+        Coords {
+            theta1: 0.7,
+            theta2: -1.2,
+        },
+        Coords {
+            theta1: 1.1,
+            theta2: -0.4,
+        },
+    )
+}
+
 #[mechanism]
 pub mod wedge_block {
     pub struct Coords {
@@ -424,49 +448,15 @@ fn main() {
             acc += calls(sys, &s, n, via);
         }
         "double_pendulum" => {
-            use double_pendulum::*;
-            let sys = DoublePendulum {
-                m1: 1.0,
-                m2: 1.3,
-                l1: 1.0,
-                l2: 0.8,
-                g: 9.81,
-            };
-            let s = State::new(
-                0.0,
-                Coords {
-                    theta1: 0.7,
-                    theta2: -1.2,
-                },
-                Coords {
-                    theta1: 1.1,
-                    theta2: -0.4,
-                },
-            );
+            let sys = DOUBLE_PENDULUM;
+            let s = double_pendulum_start();
             acc += calls(sys, &s, n, via);
         }
         // One RK4 step (h = 10⁻³) per call: `sys.step::<Rk4>` on the parameters, through a
         // validated handle, and a hand-written RK4 on the closed form.
         "rk4_double_pendulum" | "rk4_validated_double_pendulum" => {
-            use double_pendulum::*;
-            let params = DoublePendulum {
-                m1: 1.0,
-                m2: 1.3,
-                l1: 1.0,
-                l2: 0.8,
-                g: 9.81,
-            };
-            let mut s = State::new(
-                0.0,
-                Coords {
-                    theta1: 0.7,
-                    theta2: -1.2,
-                },
-                Coords {
-                    theta1: 1.1,
-                    theta2: -0.4,
-                },
-            );
+            let params = DOUBLE_PENDULUM;
+            let mut s = double_pendulum_start();
             if which.starts_with("rk4_validated") {
                 let sys = params.validated().unwrap();
                 for _ in 0..n {
@@ -483,28 +473,11 @@ fn main() {
         // on the lengths (`l1`, `l1_l2`, and both with two initial values: `l1_l2_4`)
         // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
         mode if mode.starts_with("sensitivity_double_pendulum_") => {
-            use double_pendulum::*;
             use lagrange::sensitivity::{Seed, Tangent};
-            let sys = DoublePendulum {
-                m1: 1.0,
-                m2: 1.3,
-                l1: 1.0,
-                l2: 0.8,
-                g: 9.81,
-            }
+            let sys = DOUBLE_PENDULUM
             .validated()
             .unwrap();
-            let s = State::new(
-                0.0,
-                Coords {
-                    theta1: 0.7,
-                    theta2: -1.2,
-                },
-                Coords {
-                    theta1: 1.1,
-                    theta2: -0.4,
-                },
-            );
+            let s = double_pendulum_start();
             let (q1, q2) = (Seed::Coordinate("theta1"), Seed::Coordinate("theta2"));
             let (v1, v2) = (Seed::Velocity("theta1"), Seed::Velocity("theta2"));
             macro_rules! run {
@@ -535,27 +508,10 @@ fn main() {
         | "gl2_double_pendulum"
         | "midpoint_validated_double_pendulum"
         | "gl2_validated_double_pendulum" => {
-            use double_pendulum::*;
             use lagrange::integrate::NewtonMemory;
             use lagrange::{GaussLegendre2, ImplicitMidpoint};
-            let params = DoublePendulum {
-                m1: 1.0,
-                m2: 1.3,
-                l1: 1.0,
-                l2: 0.8,
-                g: 9.81,
-            };
-            let mut s = State::new(
-                0.0,
-                Coords {
-                    theta1: 0.7,
-                    theta2: -1.2,
-                },
-                Coords {
-                    theta1: 1.1,
-                    theta2: -0.4,
-                },
-            );
+            let params = DOUBLE_PENDULUM;
+            let mut s = double_pendulum_start();
             macro_rules! run {
                 ($sys:expr) => {
                     if which.starts_with("gl2") {
@@ -589,26 +545,9 @@ fn main() {
         // One implicit step per call through `sys.step` (fresh memory: the field's Jacobians by
         // gradient duals and a factorisation at every step).
         "midpoint_fresh_double_pendulum" | "gl2_fresh_double_pendulum" => {
-            use double_pendulum::*;
             use lagrange::{GaussLegendre2, ImplicitMidpoint};
-            let params = DoublePendulum {
-                m1: 1.0,
-                m2: 1.3,
-                l1: 1.0,
-                l2: 0.8,
-                g: 9.81,
-            };
-            let mut s = State::new(
-                0.0,
-                Coords {
-                    theta1: 0.7,
-                    theta2: -1.2,
-                },
-                Coords {
-                    theta1: 1.1,
-                    theta2: -0.4,
-                },
-            );
+            let params = DOUBLE_PENDULUM;
+            let mut s = double_pendulum_start();
             for _ in 0..n {
                 if which.starts_with("gl2") {
                     black_box(&params).step::<GaussLegendre2>(&mut s, 1e-3).unwrap();
@@ -619,13 +558,7 @@ fn main() {
             acc += s.q.theta1;
         }
         "hw_rk4_double_pendulum" => {
-            let sys = double_pendulum::DoublePendulum {
-                m1: 1.0,
-                m2: 1.3,
-                l1: 1.0,
-                l2: 0.8,
-                g: 9.81,
-            };
+            let sys = DOUBLE_PENDULUM;
             let (mut q, mut v) = ([0.7, -1.2], [1.1, -0.4]);
             let h = 1e-3;
             let axpy = |x: [f64; 2], a: f64, y: [f64; 2]| [x[0] + a * y[0], x[1] + a * y[1]];
@@ -686,13 +619,7 @@ fn main() {
             }
         }
         "hw_double_pendulum" => {
-            let sys = double_pendulum::DoublePendulum {
-                m1: 1.0,
-                m2: 1.3,
-                l1: 1.0,
-                l2: 0.8,
-                g: 9.81,
-            };
+            let sys = DOUBLE_PENDULUM;
             for _ in 0..n {
                 acc += hw_double(
                     black_box(&sys),
