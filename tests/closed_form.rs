@@ -43,7 +43,7 @@ pub mod arm {
 // The cart-pendulum and the spherical pendulum, declared once for this file and another.
 #[path = "common/closed_form_mechanisms.rs"]
 mod closed_form_mechanisms;
-use closed_form_mechanisms::{cart_pendulum, spherical};
+use closed_form_mechanisms::{cart_pendulum, spherical, states};
 
 fn cart_pendulum() -> cart_pendulum::CartPendulum {
     cart_pendulum::CartPendulum {
@@ -71,17 +71,6 @@ fn spherical() -> spherical::Spherical {
         l: 1.1,
         g: 9.81,
     }
-}
-
-/// States spread over the configuration space: angles over several turns, velocities of both signs.
-fn states<const N: usize>() -> impl Iterator<Item = ([f64; N], [f64; N])> {
-    (0..25).map(|i| {
-        let f = i as f64;
-        (
-            std::array::from_fn(|j| 0.4 + (0.9 * f + 1.7 * j as f64).sin() * 4.0),
-            std::array::from_fn(|j| (1.3 * f - 0.6 * j as f64).cos() * 3.0),
-        )
-    })
 }
 
 /// The closed form against the dual-number passes at every state: M, 𝓕 and b entry by entry.

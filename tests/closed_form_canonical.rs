@@ -86,7 +86,7 @@ pub mod chain {
 // The cart-pendulum and the spherical pendulum, declared once for this file and another.
 #[path = "common/closed_form_mechanisms.rs"]
 mod closed_form_mechanisms;
-use closed_form_mechanisms::{cart_pendulum, spherical};
+use closed_form_mechanisms::{cart_pendulum, spherical, states};
 
 fn double() -> double_pendulum::DoublePendulum {
     double_pendulum::DoublePendulum {
@@ -96,19 +96,6 @@ fn double() -> double_pendulum::DoublePendulum {
         l2: 0.8,
         g: 9.81,
     }
-}
-
-/// States spread over the configuration space: angles over several turns, velocities of both
-/// signs (r = q₂ of the spherical declaration stays away from 0, where its M is singular: q₂ ∈
-/// [0.4 − 4, 0.4 + 4] is, but M stays a polynomial there and the field is defined).
-fn states<const N: usize>() -> impl Iterator<Item = ([f64; N], [f64; N])> {
-    (0..25).map(|i| {
-        let f = i as f64;
-        (
-            std::array::from_fn(|j| 0.4 + (0.9 * f + 1.7 * j as f64).sin() * 4.0),
-            std::array::from_fn(|j| (1.3 * f - 0.6 * j as f64).cos() * 3.0),
-        )
-    })
 }
 
 /// The closed-form field against the hyper-dual pass at every state, on `f64` and on gradient
@@ -254,26 +241,14 @@ fn implicit_steps_on_the_closed_form_equal_those_on_the_dual_passes() {
             use lagrange::integrate::NewtonMemory;
             let mut a = double_pendulum::State::new(
                 0.0,
-                double_pendulum::Coords {
-                    theta1: q0[0],
-                    theta2: q0[1],
-                },
-                double_pendulum::Coords {
-                    theta1: v0[0],
-                    theta2: v0[1],
-                },
+                double_pendulum::Coords::from_array(q0),
+                double_pendulum::Coords::from_array(v0),
             );
             let mut c = a;
             let mut b = double_pendulum_by_potential::State::new(
                 0.0,
-                double_pendulum_by_potential::Coords {
-                    theta1: q0[0],
-                    theta2: q0[1],
-                },
-                double_pendulum_by_potential::Coords {
-                    theta1: v0[0],
-                    theta2: v0[1],
-                },
+                double_pendulum_by_potential::Coords::from_array(q0),
+                double_pendulum_by_potential::Coords::from_array(v0),
             );
             let mut memory_a = NewtonMemory::<2, $stages>::default();
             let mut memory_b = NewtonMemory::<2, $stages>::default();
@@ -292,25 +267,13 @@ fn implicit_steps_on_the_closed_form_equal_those_on_the_dual_passes() {
             // One-step shorthand (a fresh Newton matrix every step).
             let mut a1 = double_pendulum::State::new(
                 0.0,
-                double_pendulum::Coords {
-                    theta1: q0[0],
-                    theta2: q0[1],
-                },
-                double_pendulum::Coords {
-                    theta1: v0[0],
-                    theta2: v0[1],
-                },
+                double_pendulum::Coords::from_array(q0),
+                double_pendulum::Coords::from_array(v0),
             );
             let mut b1 = double_pendulum_by_potential::State::new(
                 0.0,
-                double_pendulum_by_potential::Coords {
-                    theta1: q0[0],
-                    theta2: q0[1],
-                },
-                double_pendulum_by_potential::Coords {
-                    theta1: v0[0],
-                    theta2: v0[1],
-                },
+                double_pendulum_by_potential::Coords::from_array(q0),
+                double_pendulum_by_potential::Coords::from_array(v0),
             );
             for _ in 0..300 {
                 closed_handle.step::<$method>(&mut a1, h).unwrap();

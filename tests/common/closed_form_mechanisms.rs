@@ -1,5 +1,5 @@
 //! Mechanisms in closed form declared once for the test files that check the closed form and its
-//! canonical field.
+//! canonical field, and the states both sample.
 
 use lagrange::prelude::*;
 
@@ -64,4 +64,17 @@ pub mod spherical {
     fn down() -> Vec3 {
         vec3(0.0, 0.0, -g)
     }
+}
+
+/// States spread over the configuration space: angles over several turns, velocities of both
+/// signs. The spherical declaration's r = q₂ spans [0.4 − 4, 0.4 + 4]; no sample lands on r = 0,
+/// where its M is singular.
+pub fn states<const N: usize>() -> impl Iterator<Item = ([f64; N], [f64; N])> {
+    (0..25).map(|i| {
+        let f = i as f64;
+        (
+            std::array::from_fn(|j| 0.4 + (0.9 * f + 1.7 * j as f64).sin() * 4.0),
+            std::array::from_fn(|j| (1.3 * f - 0.6 * j as f64).cos() * 3.0),
+        )
+    })
 }
