@@ -55,7 +55,9 @@ pub struct Articulated<S, const B: usize> {
 /// A pivot D_b that is not clearly positive: the body, and the pivot's value.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Pivot {
+    /// The body whose joint's pivot failed.
     pub body: usize,
+    /// D_b (its real part).
     pub value: f64,
     /// The scale it was tested against.
     pub scale: f64,

@@ -32,13 +32,21 @@ pub mod spatial;
 
 mod articulated;
 mod composite;
+mod declared;
 mod kinematics;
 mod newton_euler;
 
-pub use articulated::{accelerations, Articulated};
+pub use articulated::{accelerations, singular, Articulated, Pivot};
 pub use composite::{mass_matrix, momenta};
+pub use declared::inverse_dynamics;
+pub use declared::{
+    axis_frame, body_constants, diagonal, equations_of_motion, finished, flip,
+    other_generalized_forces, turned_tensor,
+};
 pub use kinematics::{kinetic_energy, world_frames, Frame};
-pub use newton_euler::{bias_and_gravity, inverse_dynamics};
+pub use newton_euler::bias_and_gravity;
+/// τ = M q̈ + b − 𝓕_g of the bodies alone (see [`declared::inverse_dynamics`] for a declaration's).
+pub use newton_euler::inverse_dynamics as joint_torques;
 
 use spatial::{Axis, RigidInertia, M3, V3};
 

@@ -240,7 +240,7 @@ fn the_articulated_body_algorithm_solves_m_qdd_equals_tau_plus_f_minus_b() {
         assert!((qdd[j] - expected[j]).abs() < 1e-11 * (1.0 + expected[j].abs()));
     }
     // Inverse dynamics undoes it.
-    let back = inverse_dynamics(&joints, &k, &q, &v, &qdd);
+    let back = joint_torques(&joints, &k, &q, &v, &qdd);
     for j in 0..N {
         assert!((back[j] - tau[j]).abs() < 1e-11);
     }
