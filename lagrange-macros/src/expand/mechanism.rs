@@ -138,7 +138,7 @@ pub(super) fn mechanism_impl(
                 #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, true)
             }
         }),
-        Prepared::Rigid(b) => Some(rigid_prepared_calls(n.clone(), k.clone(), lit(b))),
+        Prepared::Rigid(_) => Some(rigid_prepared_calls(n.clone())),
         Prepared::Nothing => None,
     };
     let scleronomic = !rheonomic;
@@ -218,19 +218,16 @@ pub(super) fn mechanism_impl(
             })
         }
         // The constants computed for the call: a validated handle prepares them once.
-        (Equations::Rigid(b), None) => {
-            let b = lit(*b);
-            Some(quote! {
-                #[inline]
-                fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-                    self.__lagrange_rigid_accelerations(&self.__lagrange_rigid_constants(), t, q, v)
-                }
-                #[inline]
-                fn inverse_dynamics_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n], qdd: &[S; #n]) -> [S; #n] {
-                    #p::tree::rigid::inverse_dynamics::<Self, S, #n, #k, #b>(self, &self.__lagrange_rigid_constants(), t, q, v, qdd)
-                }
-            })
-        }
+        (Equations::Rigid(_), None) => Some(quote! {
+            #[inline]
+            fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+                self.__lagrange_rigid_accelerations(&self.__lagrange_rigid_constants(), t, q, v)
+            }
+            #[inline]
+            fn inverse_dynamics_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n], qdd: &[S; #n]) -> [S; #n] {
+                self.__lagrange_rigid_inverse_dynamics(&self.__lagrange_rigid_constants(), t, q, v, qdd)
+            }
+        }),
         _ => None,
     };
     let validate_constraints = constrained.map(|c| {
@@ -421,11 +418,7 @@ fn constrained_overrides(
 
 /// Through a validated handle, a rigid tree's q̈ and inverse dynamics from the constants it
 /// prepared.
-fn rigid_prepared_calls(
-    n: proc_macro2::Literal,
-    k: proc_macro2::Literal,
-    b: proc_macro2::Literal,
-) -> TokenStream {
+fn rigid_prepared_calls(n: proc_macro2::Literal) -> TokenStream {
     let p = private();
     quote! {
         #[inline]
@@ -434,7 +427,7 @@ fn rigid_prepared_calls(
         }
         #[inline]
         fn inverse_dynamics_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n], qdd: &[S; #n]) -> [S; #n] {
-            #p::tree::rigid::inverse_dynamics::<Self, S, #n, #k, #b>(self, prepared, t, q, v, qdd)
+            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
         }
     }
 }

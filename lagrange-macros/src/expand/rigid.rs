@@ -22,6 +22,7 @@ pub fn rigid_items(model: &Model, tree: &RigidTree) -> TokenStream {
     let joints = tree.nodes.iter().map(|node| joint(node, &tree.nodes));
     let constants = constants_fn(model, tree);
     let accelerations = accelerations_fn(model, tree);
+    let inverse = inverse_dynamics_fn(model, tree);
     quote! {
         impl #p::tree::rigid::RigidTree<#n, #b> for #params {
             const JOINTS: [#p::tree::rigid::Joint; #b] = [#(#joints),*];
@@ -29,6 +30,7 @@ pub fn rigid_items(model: &Model, tree: &RigidTree) -> TokenStream {
         impl #params {
             #constants
             #accelerations
+            #inverse
         }
     }
 }
@@ -224,6 +226,42 @@ fn accelerations_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             let __joints = &<Self as #r::RigidTree<#n, #b>>::JOINTS;
             let __tau: [S; #n] = #r::other_generalized_forces::<Self, S, #n, #k>(self, __t, __q, __v).into();
             #sweeps
+        }
+    }
+}
+
+/// `fn __lagrange_rigid_inverse_dynamics`: the Newton–Euler algorithm's two sweeps, one call per
+/// body with a constant index, less the generalized forces of everything but the uniform field.
+fn inverse_dynamics_fn(model: &Model, tree: &RigidTree) -> TokenStream {
+    let p = private();
+    let r = quote!(#p::tree::rigid);
+    let (n, k, b) = (lit(model.dof()), lit(model.rows), lit(tree.nodes.len()));
+    let sweeps = if tree.nodes.len() > MAX_WRITTEN_BODIES {
+        quote!(#r::joint_torques::<S, #n, #b>(__joints, __k, __q, __v, __qdd))
+    } else {
+        let down: Vec<_> = (0..tree.nodes.len()).map(lit).collect();
+        let up = down.iter().rev();
+        quote!({
+            let mut __ws = #r::NewtonEuler::<S, #b>::new();
+            #( __ws.forward(__joints, __k, (__q, __v, __qdd), #down); )*
+            let mut __tau = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
+            #( __ws.backward(__joints, __k, &mut __tau, #up); )*
+            __tau
+        })
+    };
+    quote! {
+        #[inline(always)]
+        fn __lagrange_rigid_inverse_dynamics<S: #p::Scalar>(
+            &self,
+            __k: &#r::RigidConstants<#b>,
+            __t: S,
+            __q: &[S; #n],
+            __v: &[S; #n],
+            __qdd: &[S; #n],
+        ) -> [S; #n] {
+            let __joints = &<Self as #r::RigidTree<#n, #b>>::JOINTS;
+            let __bodies: [S; #n] = #sweeps;
+            #r::less_other_forces::<Self, S, #n, #k>(self, __bodies, __t, __q, __v)
         }
     }
 }

@@ -19,11 +19,12 @@
 //! (rotational for a revolute joint, translational for a slide): the same units, so the test does
 //! not depend on the units a mechanism is written in.
 
+use super::inertia::Inertia;
 use super::kinematics::{
     force_to_parent, ground_acceleration, inertia_to_parent, motion_to_child, rate_of, velocity,
     JointState,
 };
-use super::spatial::{Force, Inertia, Motion};
+use super::spatial::{Force, Motion};
 use super::{Joint, JointKind, RigidConstants};
 use crate::dynamics::{finite_accelerations, non_finite_dynamics, singular_mass_matrix};
 use crate::error::{Error, Result};
@@ -128,11 +129,11 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         };
         if let Some((axis, column, angular)) = projected {
             let a = axis.indices().0;
-            let (pivot, along, block) = match angular {
-                true => (column.moment[a], bias.moment[a], &inertia.a),
-                false => (column.force[a], bias.force[a], &inertia.c),
+            let (pivot, along) = match angular {
+                true => (column.moment[a], bias.moment[a]),
+                false => (column.force[a], bias.force[a]),
             };
-            let scale = block[0][0].re().max(block[1][1].re()).max(block[2][2].re());
+            let scale = inertia.diagonal_scale(angular);
             if !(pivot.re() > SINGULAR_PIVOT * scale) {
                 return Err(Pivot {
                     body: b,

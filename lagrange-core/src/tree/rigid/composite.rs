@@ -10,9 +10,10 @@
 //! The momenta p_j = S_jᵀ h^C_j with h^C_b = I_b v_b + Σ_children X_cᵀ h^C_c, the composite
 //! spatial momentum of b's subtree: p = ∂T/∂q̇ for T = ½ Σ v_bᵀ I_b v_b.
 
+use super::inertia::Inertia;
 use super::kinematics::{force_to_parent, inertia_to_parent, rate_of, velocity, JointState};
 use super::newton_euler::along_joint;
-use super::spatial::{Force, Inertia, Motion};
+use super::spatial::{Force, Motion};
 use super::{Joint, JointKind, RigidConstants};
 use crate::geometry::Scalar;
 use nalgebra::SMatrix;

@@ -87,8 +87,20 @@ pub fn inverse_dynamics<
     v: &[S; N],
     qdd: &[S; N],
 ) -> [S; N] {
-    let tau = SVector::from(newton_euler::inverse_dynamics(&M::JOINTS, k, q, v, qdd));
-    (tau - other_generalized_forces(model, t, q, v)).into()
+    let tau = newton_euler::inverse_dynamics(&M::JOINTS, k, q, v, qdd);
+    less_other_forces(model, tau, t, q, v)
+}
+
+/// τ − (𝓕 − 𝓕_g): the bodies' joint torques less what the declaration's other forces supply.
+#[inline(always)]
+pub fn less_other_forces<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+    model: &M,
+    tau: [S; N],
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> [S; N] {
+    (SVector::from(tau) - other_generalized_forces(model, t, q, v)).into()
 }
 
 /// q̈ from the last sweep of the articulated-body algorithm, checked finite (the error names the

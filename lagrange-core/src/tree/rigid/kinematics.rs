@@ -2,9 +2,10 @@
 //! to motion vectors, forces and inertias; the bodies' velocities and world frames; the kinetic
 //! energy.
 
+use super::inertia::Inertia;
 use super::spatial::{
-    add3, cross_axis, cross_const, mul3, mul3_transpose, scale3, turn, turn_back, Force, Inertia,
-    Motion, M3, V3,
+    add3, cross_axis, cross_const, mul3, mul3_transpose, scale3, turn, turn_back, Force, Motion,
+    M3, V3,
 };
 use super::{BodyConstants, Joint, JointKind, RigidConstants};
 use crate::geometry::Scalar;

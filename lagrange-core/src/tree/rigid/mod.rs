@@ -28,6 +28,7 @@
 
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod inertia;
 pub mod spatial;
 
 mod articulated;
@@ -40,13 +41,13 @@ pub use articulated::{accelerations, singular, Articulated, Pivot};
 pub use composite::{mass_matrix, momenta};
 pub use declared::inverse_dynamics;
 pub use declared::{
-    axis_frame, body_constants, diagonal, equations_of_motion, finished, flip,
+    axis_frame, body_constants, diagonal, equations_of_motion, finished, flip, less_other_forces,
     other_generalized_forces, turned_tensor,
 };
 pub use kinematics::{kinetic_energy, world_frames, Frame};
-pub use newton_euler::bias_and_gravity;
 /// τ = M q̈ + b − 𝓕_g of the bodies alone (see [`declared::inverse_dynamics`] for a declaration's).
 pub use newton_euler::inverse_dynamics as joint_torques;
+pub use newton_euler::{bias_and_gravity, NewtonEuler};
 
 use spatial::{Axis, RigidInertia, M3, V3};
 

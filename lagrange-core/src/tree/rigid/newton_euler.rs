@@ -18,7 +18,84 @@ use super::{Joint, JointKind, RigidConstants};
 use crate::geometry::Scalar;
 use nalgebra::SVector;
 
-/// τ = M q̈ + b − 𝓕_g at (q, q̇, q̈): what the joints must supply beyond the uniform field.
+/// The recursive Newton–Euler algorithm's working memory for `B` bodies, swept body by body:
+/// [`forward`](Self::forward) root to leaf, [`backward`](Self::backward) leaf to root.
+/// [`inverse_dynamics`] runs the sweeps as loops; `#[mechanism]` writes one call per body with a
+/// constant index, so that each call is compiled for its own joint.
+pub struct NewtonEuler<S, const B: usize> {
+    state: [JointState<S>; B],
+    velocity: [Motion<S>; B],
+    acceleration: [Motion<S>; B],
+    force: [Force<S>; B],
+}
+
+impl<S: Scalar, const B: usize> Default for NewtonEuler<S, B> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
+    /// Empty working memory.
+    #[inline(always)]
+    pub fn new() -> Self {
+        NewtonEuler {
+            state: [JointState::Welded; B],
+            velocity: [Motion::zero(); B],
+            acceleration: [Motion::zero(); B],
+            force: [Force::zero(); B],
+        }
+    }
+
+    /// Body `b`, root to leaf: its velocity, acceleration and the force its motion takes,
+    /// f_b = I_b a_b + v_b ×* I_b v_b.
+    #[inline(always)]
+    pub fn forward<const N: usize>(
+        &mut self,
+        joints: &[Joint; B],
+        k: &RigidConstants<B>,
+        (q, v, qdd): (&[S; N], &[S; N], &[S; N]),
+        b: usize,
+    ) {
+        let (joint, kb) = (&joints[b], &k.bodies[b]);
+        let state = JointState::of(joint, q);
+        let parent = joint.parent.map(|p| &self.velocity[p]);
+        let (vb, c) = velocity(joint, kb, state, parent, rate_of(joint, v));
+        let above = match joint.parent {
+            Some(p) => self.acceleration[p],
+            None => ground_acceleration(k),
+        };
+        let mut ab = motion_to_child(joint, kb, state, &above) + c;
+        add_along_joint(joint, &mut ab, rate_of(joint, qdd));
+        let inertia = &kb.inertia;
+        self.force[b] = inertia.apply(&ab) + vb.cross_force(&inertia.apply(&vb));
+        self.state[b] = state;
+        self.velocity[b] = vb;
+        self.acceleration[b] = ab;
+    }
+
+    /// Body `b`, leaf to root: τ_b = S_bᵀ f_b, and f_b passed to its parent.
+    #[inline(always)]
+    pub fn backward<const N: usize>(
+        &mut self,
+        joints: &[Joint; B],
+        k: &RigidConstants<B>,
+        tau: &mut [S; N],
+        b: usize,
+    ) {
+        let joint = &joints[b];
+        if let Some(t) = along_joint(joint, &self.force[b]) {
+            tau[joint.coordinate] = t;
+        }
+        if let Some(p) = joint.parent {
+            let pushed = force_to_parent(joint, &k.bodies[b], self.state[b], &self.force[b]);
+            self.force[p] = self.force[p] + pushed;
+        }
+    }
+}
+
+/// τ = M q̈ + b − 𝓕_g at (q, q̇, q̈): what the joints must supply beyond the uniform field, by
+/// the two sweeps as loops.
 pub fn inverse_dynamics<S: Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,
@@ -26,36 +103,13 @@ pub fn inverse_dynamics<S: Scalar, const N: usize, const B: usize>(
     v: &[S; N],
     qdd: &[S; N],
 ) -> [S; N] {
-    let mut state = [JointState::Welded; B];
-    let mut vel = [Motion::zero(); B];
-    let mut acc = [Motion::zero(); B];
-    let mut force = [Force::zero(); B];
+    let mut ws = NewtonEuler::<S, B>::new();
     for b in 0..B {
-        let (joint, kb) = (&joints[b], &k.bodies[b]);
-        state[b] = JointState::of(joint, q);
-        let parent = joint.parent.map(|p| &vel[p]);
-        let (vb, c) = velocity(joint, kb, state[b], parent, rate_of(joint, v));
-        let above = match joint.parent {
-            Some(p) => acc[p],
-            None => ground_acceleration(k),
-        };
-        let mut ab = motion_to_child(joint, kb, state[b], &above) + c;
-        add_along_joint(joint, &mut ab, rate_of(joint, qdd));
-        let inertia = &kb.inertia;
-        force[b] = inertia.apply(&ab) + vb.cross_force(&inertia.apply(&vb));
-        vel[b] = vb;
-        acc[b] = ab;
+        ws.forward(joints, k, (q, v, qdd), b);
     }
     let mut tau = [S::zero(); N];
     for b in (0..B).rev() {
-        let joint = &joints[b];
-        if let Some(t) = along_joint(joint, &force[b]) {
-            tau[joint.coordinate] = t;
-        }
-        if let Some(p) = joint.parent {
-            let pushed = force_to_parent(joint, &k.bodies[b], state[b], &force[b]);
-            force[p] = force[p] + pushed;
-        }
+        ws.backward(joints, k, &mut tau, b);
     }
     tau
 }

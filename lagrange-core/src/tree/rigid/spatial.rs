@@ -30,6 +30,7 @@
 //! parent) and the joint's own part (a rotation about a coordinate axis, or a slide along one), each
 //! with its own routine: a rotation about a coordinate axis mixes two rows and columns, not three.
 
+use super::inertia::{Inertia, Sym3};
 use crate::geometry::Scalar;
 
 /// A 3-vector.
@@ -323,193 +324,13 @@ impl RigidInertia {
         let z = 0.0;
         // h× by rows.
         let hx = [[z, -h[2], h[1]], [h[2], z, -h[0]], [-h[1], h[0], z]];
-        let m = self.mass;
+        let m = S::from(self.mass);
         Inertia {
-            a: lift(&self.rotational),
+            a: Sym3::from_upper(&lift(&self.rotational)),
             b: lift(&hx),
-            c: lift(&[[m, z, z], [z, m, z], [z, z, m]]),
+            c: Sym3([m, m, m, S::zero(), S::zero(), S::zero()]),
         }
     }
-}
-
-/// A spatial inertia in block form (see the module docs): a rigid body's, a composite of bodies,
-/// or an articulated body's.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Inertia<S> {
-    /// A: the angular–angular block.
-    pub a: M3<S>,
-    /// B: the angular–linear block.
-    pub b: M3<S>,
-    /// C: the linear–linear block.
-    pub c: M3<S>,
-}
-
-impl<S: Scalar> Inertia<S> {
-    /// Zero.
-    #[inline(always)]
-    pub fn zero() -> Self {
-        let z = [[S::zero(); 3]; 3];
-        Inertia { a: z, b: z, c: z }
-    }
-
-    /// I += o.
-    #[inline(always)]
-    pub fn add(&mut self, o: &Self) {
-        for i in 0..3 {
-            for j in 0..3 {
-                self.a[i][j] += o.a[i][j];
-                self.b[i][j] += o.b[i][j];
-                self.c[i][j] += o.c[i][j];
-            }
-        }
-    }
-
-    /// I m.
-    #[inline(always)]
-    pub fn apply(&self, m: &Motion<S>) -> Force<S> {
-        let (w, v) = (m.angular, m.linear);
-        let mut out = Force::zero();
-        for i in 0..3 {
-            for k in 0..3 {
-                out.moment[i] += self.a[i][k] * w[k] + self.b[i][k] * v[k];
-                out.force[i] += self.b[k][i] * w[k] + self.c[i][k] * v[k];
-            }
-        }
-        out
-    }
-
-    /// I (e_axis; 0): the inertia's angular column for `axis` (a revolute joint's U).
-    #[inline(always)]
-    pub fn angular_column(&self, axis: Axis) -> Force<S> {
-        let (a, _, _) = axis.indices();
-        Force {
-            moment: [self.a[0][a], self.a[1][a], self.a[2][a]],
-            force: self.b[a],
-        }
-    }
-
-    /// I (0; e_axis): the inertia's linear column for `axis` (a prismatic joint's U).
-    #[inline(always)]
-    pub fn linear_column(&self, axis: Axis) -> Force<S> {
-        let (a, _, _) = axis.indices();
-        Force {
-            moment: [self.b[0][a], self.b[1][a], self.b[2][a]],
-            force: [self.c[0][a], self.c[1][a], self.c[2][a]],
-        }
-    }
-
-    /// I − U Uᵀ / d for U = (n; f): the articulated inertia a joint passes to its parent
-    /// (Featherstone eq. 7.38), symmetric by construction.
-    #[inline(always)]
-    pub fn sub_outer(&mut self, u: &Force<S>, inverse_d: S) {
-        let (n, f) = (u.moment, u.force);
-        let (ns, fs) = (scale3(n, inverse_d), scale3(f, inverse_d));
-        for i in 0..3 {
-            for j in 0..3 {
-                self.a[i][j] -= ns[i] * n[j];
-                self.b[i][j] -= ns[i] * f[j];
-                self.c[i][j] -= fs[i] * f[j];
-            }
-        }
-    }
-
-    /// The rotation about `axis` by (cos θ, sin θ) applied on both sides, R (A, B, C) Rᵀ: the
-    /// joint's own rotation taking a child-frame inertia to the joint's fixed frame.
-    #[inline(always)]
-    pub fn turn(&mut self, axis: Axis, cs: (S, S)) {
-        for block in [&mut self.a, &mut self.b, &mut self.c] {
-            turn_both_sides(block, axis, cs);
-        }
-    }
-
-    /// Q (A, B, C) Qᵀ for a constant rotation Q.
-    #[inline(always)]
-    pub fn rotate(&mut self, q: &M3<f64>) {
-        for block in [&mut self.a, &mut self.b, &mut self.c] {
-            *block = rotate_both_sides(block, q);
-        }
-    }
-
-    /// The change of origin by r (the child's origin in the parent's coordinates, both frames
-    /// with the same axes): C stays, B += r× C, A −= T + Tᵀ + r× C r× with T = B r×. Components
-    /// of r that are structurally zero (`mask[k]` false) are left out.
-    #[inline(always)]
-    pub fn shift<R: Copy + Into<S>>(&mut self, r: [R; 3], mask: [bool; 3]) {
-        let r = r.map(Into::into);
-        // x ↦ x × r column by column and r × x row by row, written for the entries of r that can
-        // be non-zero.
-        let rx = |k: usize| if mask[k] { Some(r[k]) } else { None };
-        // W = r× C (rows: r × column j of C).
-        let mut w = [[S::zero(); 3]; 3];
-        for j in 0..3 {
-            let col = [self.c[0][j], self.c[1][j], self.c[2][j]];
-            let x = cross_masked(&rx, col);
-            for i in 0..3 {
-                w[i][j] = x[i];
-            }
-        }
-        // T = B r×: row i of T is −(r × row i of B)… (B r×)_ij = Σ_k B_ik (r×)_kj, and
-        // row_i(B) r× = −(r × row_i(B))ᵀ… written as (row_i(B) × r).
-        let mut t = [[S::zero(); 3]; 3];
-        for i in 0..3 {
-            let x = cross_masked(&rx, self.b[i]);
-            t[i] = [-x[0], -x[1], -x[2]];
-        }
-        // r× C r× = W r×: row i of W times r×, i.e. −(r × row_i(W)).
-        for i in 0..3 {
-            let wr = cross_masked(&rx, w[i]);
-            for j in 0..3 {
-                self.a[i][j] = self.a[i][j] - t[i][j] - t[j][i] + wr[j];
-                self.b[i][j] += w[i][j];
-            }
-        }
-    }
-}
-
-/// r × x for an r given component by component (`None` where structurally zero).
-#[inline(always)]
-fn cross_masked<S: Scalar>(r: &impl Fn(usize) -> Option<S>, x: V3<S>) -> V3<S> {
-    let term = |k: usize, y: S| r(k).map_or(S::zero(), |rk| rk * y);
-    [
-        term(1, x[2]) - term(2, x[1]),
-        term(2, x[0]) - term(0, x[2]),
-        term(0, x[1]) - term(1, x[0]),
-    ]
-}
-
-/// R M Rᵀ for R the rotation by (cos θ, sin θ) about `axis`: rows u, v mixed, then columns u, v.
-#[inline(always)]
-fn turn_both_sides<S: Scalar>(m: &mut M3<S>, axis: Axis, (c, s): (S, S)) {
-    let (_, u, v) = axis.indices();
-    for j in 0..3 {
-        let (mu, mv) = (m[u][j], m[v][j]);
-        m[u][j] = c * mu - s * mv;
-        m[v][j] = s * mu + c * mv;
-    }
-    for row in m.iter_mut() {
-        let (mu, mv) = (row[u], row[v]);
-        row[u] = c * mu - s * mv;
-        row[v] = s * mu + c * mv;
-    }
-}
-
-/// Q M Qᵀ for a constant Q.
-#[inline(always)]
-fn rotate_both_sides<S: Scalar>(m: &M3<S>, q: &M3<f64>) -> M3<S> {
-    // G = Q M, then G Qᵀ.
-    let mut g = [[S::zero(); 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            g[i][j] = m[0][j] * q[i][0] + m[1][j] * q[i][1] + m[2][j] * q[i][2];
-        }
-    }
-    let mut out = [[S::zero(); 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            out[i][j] = g[i][0] * q[j][0] + g[i][1] * q[j][1] + g[i][2] * q[j][2];
-        }
-    }
-    out
 }
 
 #[cfg(test)]
@@ -521,10 +342,10 @@ mod tests {
         let mut out = [[0.0; 6]; 6];
         for r in 0..3 {
             for c in 0..3 {
-                out[r][c] = i.a[r][c];
+                out[r][c] = i.a.at(r, c);
                 out[r][c + 3] = i.b[r][c];
                 out[r + 3][c] = i.b[c][r];
-                out[r + 3][c + 3] = i.c[r][c];
+                out[r + 3][c + 3] = i.c.at(r, c);
             }
         }
         out
