@@ -82,35 +82,29 @@ pub trait Mechanism<const N: usize>: Dynamics<N> {
     /// not declared.
     ///
     /// ```
-    /// use lagrange::prelude::*;
+    /// use lagrange_core::{impl_mechanism, vec2, Mechanism, Model, Scalar, State};
     ///
-    /// #[mechanism]
-    /// pub mod pendulum {
-    ///     pub struct Coords {
-    ///         pub theta: f64,
+    /// /// A pendulum of mass 2 on a rod of length 1/2, written by hand (`#[mechanism]` writes the
+    /// /// same).
+    /// struct Pendulum;
+    /// impl Model<1, 2> for Pendulum {
+    ///     type Coords = [f64; 1];
+    ///     const RHEONOMIC: bool = false;
+    ///     const HAS_POTENTIAL: bool = true;
+    ///     const HAS_FORCES: bool = false;
+    ///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    ///     fn masses(&self) -> [f64; 2] { [2.0, 2.0] }
+    ///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+    ///         (vec2(q[0].sin(), -q[0].cos()) * D::from(0.5)).to_array()
     ///     }
-    ///     pub struct Pendulum {
-    ///         pub m: f64,
-    ///         pub l: f64,
-    ///         pub g: f64,
-    ///     }
-    ///     #[particle(mass = m)]
-    ///     fn bob() -> Vec2 {
-    ///         vec2(theta.sin(), -theta.cos()) * l
-    ///     }
-    ///     #[gravity]
-    ///     fn down() -> Vec2 {
-    ///         vec2(0.0, -g)
-    ///     }
+    ///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * (2.0 * 9.81) }
     /// }
+    /// impl_mechanism!(Pendulum, 1, 2);
     ///
-    /// # fn main() -> lagrange::Result<()> {
-    /// use pendulum::{Coords, Pendulum, State};
-    /// let sys = Pendulum { m: 2.0, l: 0.5, g: 9.81 }.validated()?;
-    /// let s = State::at_rest(Coords { theta: 0.3 });
+    /// # fn main() -> lagrange_core::Result<()> {
     /// // The torque that holds the pendulum still at 0.3 rad: m g l sin θ.
-    /// let tau = sys.inverse_dynamics(&s, &Coords { theta: 0.0 })?;
-    /// assert!((tau.theta - 2.0 * 9.81 * 0.5 * 0.3f64.sin()).abs() < 1e-12);
+    /// let tau = Pendulum.inverse_dynamics(&State::at_rest([0.3]), &[0.0])?;
+    /// assert!((tau[0] - 2.0 * 9.81 * 0.5 * 0.3f64.sin()).abs() < 1e-12);
     /// # Ok(())
     /// # }
     /// ```
