@@ -10,9 +10,77 @@ use crate::structure::rigid::{product, Axis, Joint, Node, Offset, RigidTree};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-/// Above this many bodies the sweeps are the runtime's loops rather than one call per body: the
-/// written-out form's code grows with the bodies, and so does its build time.
-const MAX_WRITTEN_BODIES: usize = 64;
+/// Up to this many bodies a sweep's per-body steps are written into the function that runs it.
+/// A larger tree's sweeps are split into functions of [`CHUNK`] bodies each: the compiler's work on
+/// one function grows faster than its length (a 16-body arm's sweeps build in a few seconds, a
+/// 31-body tree's, written into one function, in half a minute), and a function per chunk keeps
+/// it proportional to the bodies.
+const MAX_INLINED_BODIES: usize = 16;
+const CHUNK: usize = 8;
+
+/// A sweep over the bodies in `order`, one statement per body from `step(body, code)`: written
+/// into the caller for a small tree; for a large one, a call per chunk to a function of its own
+/// (`name_0`, `name_1`, …, taking `params` and called with `args`), returned with the statements.
+/// A chunk returns `Result<(), Pivot>` (the per-body statements may `return` an error).
+struct Sweep<'a> {
+    name: &'a str,
+    params: TokenStream,
+    args: TokenStream,
+}
+
+impl Sweep<'_> {
+    fn write(
+        &self,
+        order: &[usize],
+        codes: &[TokenStream],
+        step: impl Fn(&proc_macro2::Literal, &TokenStream) -> TokenStream,
+    ) -> (TokenStream, TokenStream) {
+        let p = private();
+        let statements: Vec<TokenStream> = order.iter().map(|&i| step(&lit(i), &codes[i])).collect();
+        if order.len() <= MAX_INLINED_BODIES {
+            return (quote!(#(#statements)*), quote!());
+        }
+        let (params, args) = (&self.params, &self.args);
+        let ok = quote!(::lagrange::__private::core::result::Result::Ok(()));
+        let mut calls = TokenStream::new();
+        let mut functions = TokenStream::new();
+        for (c, chunk) in statements.chunks(CHUNK).enumerate() {
+            let f = format_ident!("__lagrange_rigid_{}_{}", self.name, c);
+            functions.extend(quote! {
+                #[inline(never)]
+                #[allow(clippy::all)]
+                fn #f<S: #p::Scalar>(&self, #params) -> ::lagrange::__private::core::result::Result<(), #p::tree::rigid::Pivot> {
+                    #(#chunk)*
+                    #ok
+                }
+            });
+            calls.extend(quote! {
+                if let ::lagrange::__private::core::result::Result::Err(__pivot) = self.#f::<S>(#args) {
+                    return ::lagrange::__private::core::result::Result::Err(__pivot);
+                }
+            });
+        }
+        (calls, functions)
+    }
+}
+
+/// Each body's joint code (`lagrange_core::tree::rigid::Joint::code`), a constant the per-body
+/// steps are compiled for: one copy of each step per distinct kind of joint, its structural zeros
+/// folded.
+fn codes(model: &Model, tree: &RigidTree) -> Vec<TokenStream> {
+    let p = private();
+    let (params, n, b) = (
+        model.params_ident,
+        lit(model.dof()),
+        lit(tree.nodes.len()),
+    );
+    (0..tree.nodes.len())
+        .map(|i| {
+            let i = lit(i);
+            quote!({ <#params as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS[#i].code() })
+        })
+        .collect()
+}
 
 /// The `RigidTree` impl and the inherent functions the `Dynamics` impl calls.
 pub fn rigid_items(model: &Model, tree: &RigidTree) -> TokenStream {
@@ -189,32 +257,50 @@ fn gravity(model: &Model) -> TokenStream {
 }
 
 /// `fn __lagrange_rigid_accelerations`: the articulated-body algorithm's three sweeps, one call per
-/// body with a constant index, under the generalized forces of everything but the uniform field.
+/// body with a constant index, under the generalized forces of everything but the uniform field;
+/// the sweeps themselves in `__lagrange_rigid_sweeps`, which reports a failed pivot.
 fn accelerations_fn(model: &Model, tree: &RigidTree) -> TokenStream {
     let p = private();
     let r = quote!(#p::tree::rigid);
     let (n, k, b) = (lit(model.dof()), lit(model.rows), lit(tree.nodes.len()));
-    let sweeps = if tree.nodes.len() > MAX_WRITTEN_BODIES {
-        quote!(#r::accelerations::<Coords, S, #n, #b>(__joints, __k, __t, __q, __v, &__tau))
-    } else {
-        let down: Vec<_> = (0..tree.nodes.len()).map(lit).collect();
-        let up = down.iter().rev();
-        quote! {
-            let mut __ws = #r::Articulated::<S, #b>::new();
-            #( __ws.velocity(__joints, __k, __q, __v, #down); )*
-            #(
-                if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws.articulate(__joints, __k, &__tau, #up) {
-                    return ::lagrange::__private::core::result::Result::Err(
-                        #r::singular::<Coords, S, #n, #b>(__joints, __pivot, __t, __q),
-                    );
-                }
-            )*
-            let mut __qdd = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
-            #( __ws.accelerate(__joints, __k, &mut __qdd, #down); )*
-            #r::finished::<Coords, S, #n>(__qdd, __t, __q)
-        }
+    let code = codes(model, tree);
+    let down: Vec<usize> = (0..tree.nodes.len()).collect();
+    let up: Vec<usize> = down.iter().rev().copied().collect();
+    let ws = quote!(__ws: &mut #r::Articulated<S, #b>, __joints: &[#r::Joint; #b], __k: &#r::RigidConstants<#b>);
+    let sweep = |name, extra: TokenStream, args: TokenStream| Sweep {
+        name,
+        params: quote!(#ws, #extra),
+        args: quote!(__ws, __joints, __k, #args),
     };
+    let (velocities, f1) = sweep("velocity", quote!(__q: &[S; #n], __v: &[S; #n]), quote!(__q, __v))
+        .write(&down, &code, |i, c| quote!(__ws.velocity::<#c, #n>(__joints, __k, __q, __v, #i);));
+    let (articulation, f2) = sweep("articulate", quote!(__tau: &[S; #n]), quote!(__tau))
+        .write(&up, &code, |i, c| quote! {
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws.articulate::<#c, #n>(__joints, __k, __tau, #i) {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+        });
+    let (accelerations, f3) = sweep("accelerate", quote!(__qdd: &mut [S; #n]), quote!(__qdd))
+        .write(&down, &code, |i, c| quote!(__ws.accelerate::<#c, #n>(__joints, __k, __qdd, #i);));
     quote! {
+        #f1
+        #f2
+        #f3
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_sweeps<S: #p::Scalar>(
+            &self,
+            __ws: &mut #r::Articulated<S, #b>,
+            __joints: &[#r::Joint; #b],
+            __k: &#r::RigidConstants<#b>,
+            (__q, __v, __tau): (&[S; #n], &[S; #n], &[S; #n]),
+            __qdd: &mut [S; #n],
+        ) -> ::lagrange::__private::core::result::Result<(), #r::Pivot> {
+            #velocities
+            #articulation
+            #accelerations
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
         #[inline(always)]
         fn __lagrange_rigid_accelerations<S: #p::Scalar>(
             &self,
@@ -225,31 +311,58 @@ fn accelerations_fn(model: &Model, tree: &RigidTree) -> TokenStream {
         ) -> #p::Result<[S; #n]> {
             let __joints = &<Self as #r::RigidTree<#n, #b>>::JOINTS;
             let __tau: [S; #n] = #r::other_generalized_forces::<Self, S, #n, #k>(self, __t, __q, __v).into();
-            #sweeps
+            let mut __ws = #r::Articulated::<S, #b>::new();
+            let mut __qdd = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) =
+                self.__lagrange_rigid_sweeps(&mut __ws, __joints, __k, (__q, __v, &__tau), &mut __qdd)
+            {
+                return ::lagrange::__private::core::result::Result::Err(
+                    #r::singular::<Coords, S, #n, #b>(__joints, __pivot, __t, __q),
+                );
+            }
+            #r::finished::<Coords, S, #n>(__qdd, __t, __q)
         }
     }
 }
 
 /// `fn __lagrange_rigid_inverse_dynamics`: the Newton–Euler algorithm's two sweeps, one call per
-/// body with a constant index, less the generalized forces of everything but the uniform field.
+/// body with a constant index (in `__lagrange_rigid_newton_euler`), less the generalized forces of
+/// everything but the uniform field.
 fn inverse_dynamics_fn(model: &Model, tree: &RigidTree) -> TokenStream {
     let p = private();
     let r = quote!(#p::tree::rigid);
     let (n, k, b) = (lit(model.dof()), lit(model.rows), lit(tree.nodes.len()));
-    let sweeps = if tree.nodes.len() > MAX_WRITTEN_BODIES {
-        quote!(#r::joint_torques::<S, #n, #b>(__joints, __k, __q, __v, __qdd))
-    } else {
-        let down: Vec<_> = (0..tree.nodes.len()).map(lit).collect();
-        let up = down.iter().rev();
-        quote!({
-            let mut __ws = #r::NewtonEuler::<S, #b>::new();
-            #( __ws.forward(__joints, __k, (__q, __v, __qdd), #down); )*
-            let mut __tau = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
-            #( __ws.backward(__joints, __k, &mut __tau, #up); )*
-            __tau
-        })
-    };
+    let code = codes(model, tree);
+    let down: Vec<usize> = (0..tree.nodes.len()).collect();
+    let up: Vec<usize> = down.iter().rev().copied().collect();
+    let ws = quote!(__ws: &mut #r::NewtonEuler<S, #b>, __joints: &[#r::Joint; #b], __k: &#r::RigidConstants<#b>);
+    let state = quote!(__state: (&[S; #n], &[S; #n], &[S; #n]));
+    let tau = quote!(__tau: &mut [S; #n]);
+    let (forward, f1) = Sweep {
+        name: "forward",
+        params: quote!(#ws, #state),
+        args: quote!(__ws, __joints, __k, __state),
+    }
+    .write(&down, &code, |i, c| quote!(__ws.forward::<#c, #n>(__joints, __k, __state, #i);));
+    let (backward, f2) = Sweep {
+        name: "backward",
+        params: quote!(#ws, #tau),
+        args: quote!(__ws, __joints, __k, __tau),
+    }
+    .write(&up, &code, |i, c| quote!(__ws.backward::<#c, #n>(__joints, __k, __tau, #i);));
     quote! {
+        #f1
+        #f2
+        /// The two sweeps; neither fails (the chunks' `Result` is for the sweeps that can).
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_newton_euler<S: #p::Scalar>(&self, #ws, #state, #tau)
+            -> ::lagrange::__private::core::result::Result<(), #r::Pivot>
+        {
+            #forward
+            #backward
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
         #[inline(always)]
         fn __lagrange_rigid_inverse_dynamics<S: #p::Scalar>(
             &self,
@@ -260,8 +373,10 @@ fn inverse_dynamics_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             __qdd: &[S; #n],
         ) -> [S; #n] {
             let __joints = &<Self as #r::RigidTree<#n, #b>>::JOINTS;
-            let __bodies: [S; #n] = #sweeps;
-            #r::less_other_forces::<Self, S, #n, #k>(self, __bodies, __t, __q, __v)
+            let mut __ws = #r::NewtonEuler::<S, #b>::new();
+            let mut __tau = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
+            let _ = self.__lagrange_rigid_newton_euler(&mut __ws, __joints, __k, (__q, __v, __qdd), &mut __tau);
+            #r::less_other_forces::<Self, S, #n, #k>(self, __tau, __t, __q, __v)
         }
     }
 }

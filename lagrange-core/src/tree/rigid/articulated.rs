@@ -25,7 +25,7 @@ use super::kinematics::{
     JointState,
 };
 use super::spatial::{Force, Motion};
-use super::{Joint, JointKind, RigidConstants};
+use super::{joint_at, Joint, JointKind, RigidConstants, RUNTIME};
 use crate::dynamics::{finite_accelerations, non_finite_dynamics, singular_mass_matrix};
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
@@ -90,7 +90,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
     /// Body `b`, root to leaf: its joint, velocity, c_b, and I^A_b, p^A_b started from its own
     /// inertia.
     #[inline(always)]
-    pub fn velocity<const N: usize>(
+    pub fn velocity<const CODE: u16, const N: usize>(
         &mut self,
         joints: &[Joint; B],
         k: &RigidConstants<B>,
@@ -98,7 +98,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         v: &[S; N],
         b: usize,
     ) {
-        let (joint, kb) = (&joints[b], &k.bodies[b]);
+        let (joint, kb) = (&joint_at::<CODE, B>(joints, b), &k.bodies[b]);
         let state = JointState::of(joint, q);
         let parent = joint.parent.map(|p| &self.velocity[p]);
         let (vb, c) = velocity(joint, kb, state, parent, rate_of(joint, v));
@@ -112,14 +112,14 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
     /// Body `b`, leaf to root: U_b, D_b, u_b, and what the body passes to its parent. Fails on a
     /// pivot that is not clearly positive.
     #[inline(always)]
-    pub fn articulate<const N: usize>(
+    pub fn articulate<const CODE: u16, const N: usize>(
         &mut self,
         joints: &[Joint; B],
         k: &RigidConstants<B>,
         tau: &[S; N],
         b: usize,
     ) -> core::result::Result<(), Pivot> {
-        let joint = &joints[b];
+        let joint = &joint_at::<CODE, B>(joints, b);
         let mut inertia = self.inertia[b];
         let mut bias = self.bias_force[b];
         let projected = match joint.kind {
@@ -164,14 +164,14 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
 
     /// Body `b`, root to leaf: q̈_b and the body's acceleration.
     #[inline(always)]
-    pub fn accelerate<const N: usize>(
+    pub fn accelerate<const CODE: u16, const N: usize>(
         &mut self,
         joints: &[Joint; B],
         k: &RigidConstants<B>,
         qdd: &mut [S; N],
         b: usize,
     ) {
-        let (joint, kb) = (&joints[b], &k.bodies[b]);
+        let (joint, kb) = (&joint_at::<CODE, B>(joints, b), &k.bodies[b]);
         let above = match joint.parent {
             Some(p) => self.acceleration[p],
             None => ground_acceleration(k),
@@ -219,16 +219,16 @@ pub fn accelerations<C: Coordinates<N>, S: Scalar, const N: usize, const B: usiz
 ) -> Result<[S; N]> {
     let mut ws = Articulated::<S, B>::new();
     for b in 0..B {
-        ws.velocity(joints, k, q, v, b);
+        ws.velocity::<RUNTIME, N>(joints, k, q, v, b);
     }
     for b in (0..B).rev() {
-        if let Err(pivot) = ws.articulate(joints, k, tau, b) {
+        if let Err(pivot) = ws.articulate::<RUNTIME, N>(joints, k, tau, b) {
             return Err(singular::<C, S, N, B>(joints, pivot, t, q));
         }
     }
     let mut qdd = [S::zero(); N];
     for b in 0..B {
-        ws.accelerate(joints, k, &mut qdd, b);
+        ws.accelerate::<RUNTIME, N>(joints, k, &mut qdd, b);
     }
     finite_accelerations::<C, S, N>(SVector::from(qdd), t, q)
 }

@@ -6,6 +6,13 @@
 use super::spatial::{Axis, Force, Motion, M3, V3};
 use crate::geometry::Scalar;
 
+/// [f(0), f(1), f(2)], written out (in the per-body steps, where `std::array::from_fn` is left
+/// as a call).
+#[inline(always)]
+fn map3<T>(f: impl Fn(usize) -> T) -> [T; 3] {
+    [f(0), f(1), f(2)]
+}
+
 /// A symmetric 3×3 matrix by its distinct entries: (xx, yy, zz, xy, xz, yz).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sym3<S>(pub [S; 6]);
@@ -44,7 +51,7 @@ impl<S: Scalar> Sym3<S> {
     /// M x.
     #[inline(always)]
     fn apply(&self, x: V3<S>) -> V3<S> {
-        std::array::from_fn(|i| self.at(i, 0) * x[0] + self.at(i, 1) * x[1] + self.at(i, 2) * x[2])
+        map3(|i| self.at(i, 0) * x[0] + self.at(i, 1) * x[1] + self.at(i, 2) * x[2])
     }
 
     /// R M Rᵀ for R the rotation by (cos θ, sin θ) about `axis`: with (u, v) the plane it turns,
@@ -68,8 +75,8 @@ impl<S: Scalar> Sym3<S> {
     /// Q M Qᵀ for a constant Q: G = Q M, then the six entries of G Qᵀ.
     #[inline(always)]
     fn rotate(&self, q: &M3<f64>) -> Self {
-        let g: M3<S> = std::array::from_fn(|i| {
-            std::array::from_fn(|j| {
+        let g: M3<S> = map3(|i| {
+            map3(|j| {
                 self.at(0, j) * q[i][0] + self.at(1, j) * q[i][1] + self.at(2, j) * q[i][2]
             })
         });
@@ -128,10 +135,10 @@ impl<S: Scalar> Inertia<S> {
         let (aw, cv) = (self.a.apply(w), self.c.apply(v));
         let b = &self.b;
         Force {
-            moment: std::array::from_fn(|i| {
+            moment: map3(|i| {
                 aw[i] + b[i][0] * v[0] + b[i][1] * v[1] + b[i][2] * v[2]
             }),
-            force: std::array::from_fn(|i| {
+            force: map3(|i| {
                 cv[i] + b[0][i] * w[0] + b[1][i] * w[1] + b[2][i] * w[2]
             }),
         }
@@ -142,7 +149,7 @@ impl<S: Scalar> Inertia<S> {
     pub fn angular_column(&self, axis: Axis) -> Force<S> {
         let (a, _, _) = axis.indices();
         Force {
-            moment: std::array::from_fn(|i| self.a.at(i, a)),
+            moment: map3(|i| self.a.at(i, a)),
             force: self.b[a],
         }
     }
@@ -152,8 +159,8 @@ impl<S: Scalar> Inertia<S> {
     pub fn linear_column(&self, axis: Axis) -> Force<S> {
         let (a, _, _) = axis.indices();
         Force {
-            moment: std::array::from_fn(|i| self.b[i][a]),
-            force: std::array::from_fn(|i| self.c.at(i, a)),
+            moment: map3(|i| self.b[i][a]),
+            force: map3(|i| self.c.at(i, a)),
         }
     }
 
@@ -170,8 +177,8 @@ impl<S: Scalar> Inertia<S> {
     #[inline(always)]
     pub fn sub_outer(&mut self, u: &Force<S>, inverse_d: S) {
         let (n, f) = (u.moment, u.force);
-        let ns: V3<S> = std::array::from_fn(|i| n[i] * inverse_d);
-        let fs: V3<S> = std::array::from_fn(|i| f[i] * inverse_d);
+        let ns: V3<S> = map3(|i| n[i] * inverse_d);
+        let fs: V3<S> = map3(|i| f[i] * inverse_d);
         for (k, (i, j)) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)]
             .into_iter()
             .enumerate()
@@ -213,11 +220,11 @@ impl<S: Scalar> Inertia<S> {
         self.a = self.a.rotate(q);
         self.c = self.c.rotate(q);
         let b = &self.b;
-        let g: M3<S> = std::array::from_fn(|i| {
-            std::array::from_fn(|j| b[0][j] * q[i][0] + b[1][j] * q[i][1] + b[2][j] * q[i][2])
+        let g: M3<S> = map3(|i| {
+            map3(|j| b[0][j] * q[i][0] + b[1][j] * q[i][1] + b[2][j] * q[i][2])
         });
-        self.b = std::array::from_fn(|i| {
-            std::array::from_fn(|j| g[i][0] * q[j][0] + g[i][1] * q[j][1] + g[i][2] * q[j][2])
+        self.b = map3(|i| {
+            map3(|j| g[i][0] * q[j][0] + g[i][1] * q[j][1] + g[i][2] * q[j][2])
         });
     }
 
@@ -230,12 +237,12 @@ impl<S: Scalar> Inertia<S> {
         let cross = |x: V3<S>| cross_masked(&r, mask, x);
         // W = r× C by columns: column j is r × (column j of C).
         let w_cols: [V3<S>; 3] =
-            std::array::from_fn(|j| cross([self.c.at(0, j), self.c.at(1, j), self.c.at(2, j)]));
+            map3(|j| cross([self.c.at(0, j), self.c.at(1, j), self.c.at(2, j)]));
         // Row i of T = B r× is row_i(B) × r = −(r × row_i(B)).
-        let t: [V3<S>; 3] = std::array::from_fn(|i| cross(self.b[i]));
+        let t: [V3<S>; 3] = map3(|i| cross(self.b[i]));
         // Row i of W r× is −(r × row_i(W)): the rows of W from its columns.
         let w_row = |i: usize| [w_cols[0][i], w_cols[1][i], w_cols[2][i]];
-        let wr: [V3<S>; 3] = std::array::from_fn(|i| cross(w_row(i)));
+        let wr: [V3<S>; 3] = map3(|i| cross(w_row(i)));
         // A −= T + Tᵀ + r× C r×, i.e. A += (r × bᵢ)_j + (r × bⱼ)_i + (r × wᵢ)_j.
         for (k, (i, j)) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)]
             .into_iter()

@@ -78,6 +78,87 @@ pub struct Joint {
     pub offset: [bool; 3],
 }
 
+impl Joint {
+    /// What the compiler knows of the joint apart from its place in the tree, as one number: the
+    /// const parameter of the per-body steps (`Articulated::velocity_of::<CODE>` …) that
+    /// `#[mechanism]` calls, so each distinct kind of joint is compiled once, its structural zeros
+    /// folded, however many bodies have it.
+    pub const fn code(&self) -> u16 {
+        let (kind, axis) = match self.kind {
+            JointKind::Revolute(a) => (0, a),
+            JointKind::Prismatic(a) => (1, a),
+            JointKind::Fixed => (2, Axis::X),
+        };
+        let axis = match axis {
+            Axis::X => 0,
+            Axis::Y => 1,
+            Axis::Z => 2,
+        };
+        kind | axis << 2
+            | bit(self.rotated, 4)
+            | bit(self.offset[0], 5)
+            | bit(self.offset[1], 6)
+            | bit(self.offset[2], 7)
+            | bit(self.parent.is_some(), 8)
+    }
+
+    /// The joint with what `code` holds taken from it (known where the code is a constant) and
+    /// its parent's index and coordinate from `self`.
+    #[inline(always)]
+    pub const fn decoded(&self, code: u16) -> Joint {
+        let axis = match (code >> 2) & 3 {
+            0 => Axis::X,
+            1 => Axis::Y,
+            _ => Axis::Z,
+        };
+        let kind = match code & 3 {
+            0 => JointKind::Revolute(axis),
+            1 => JointKind::Prismatic(axis),
+            _ => JointKind::Fixed,
+        };
+        let parent = match (on(code, 8), self.parent) {
+            (true, Some(p)) => Some(p),
+            // A parent the code promises: a constant `Some` whatever the index.
+            (true, None) => Some(0),
+            (false, _) => None,
+        };
+        Joint {
+            parent,
+            kind,
+            coordinate: self.coordinate,
+            rotated: on(code, 4),
+            offset: [on(code, 5), on(code, 6), on(code, 7)],
+        }
+    }
+}
+
+/// 1 at bit `at` when `b` holds.
+const fn bit(b: bool, at: u16) -> u16 {
+    if b {
+        1 << at
+    } else {
+        0
+    }
+}
+
+/// Whether bit `at` of `code` is set.
+const fn on(code: u16, at: u16) -> bool {
+    code & (1 << at) != 0
+}
+
+/// The code that stands for "no code": the per-body steps read the whole joint from the table
+/// (what the loops over the bodies pass).
+pub const RUNTIME: u16 = u16::MAX;
+
+/// Joint `b` of the table, with what `CODE` holds taken from the code (see [`Joint::code`]).
+#[inline(always)]
+pub(crate) fn joint_at<const CODE: u16, const B: usize>(joints: &[Joint; B], b: usize) -> Joint {
+    match CODE {
+        RUNTIME => joints[b],
+        code => joints[b].decoded(code),
+    }
+}
+
 /// A body's constants, in the frames of [the module docs](self).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BodyConstants {

@@ -14,7 +14,7 @@ use super::kinematics::{
     force_to_parent, ground_acceleration, motion_to_child, rate_of, velocity, JointState,
 };
 use super::spatial::{Force, Motion};
-use super::{Joint, JointKind, RigidConstants};
+use super::{joint_at, Joint, JointKind, RigidConstants, RUNTIME};
 use crate::geometry::Scalar;
 use nalgebra::SVector;
 
@@ -50,14 +50,14 @@ impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
     /// Body `b`, root to leaf: its velocity, acceleration and the force its motion takes,
     /// f_b = I_b a_b + v_b ×* I_b v_b.
     #[inline(always)]
-    pub fn forward<const N: usize>(
+    pub fn forward<const CODE: u16, const N: usize>(
         &mut self,
         joints: &[Joint; B],
         k: &RigidConstants<B>,
         (q, v, qdd): (&[S; N], &[S; N], &[S; N]),
         b: usize,
     ) {
-        let (joint, kb) = (&joints[b], &k.bodies[b]);
+        let (joint, kb) = (&joint_at::<CODE, B>(joints, b), &k.bodies[b]);
         let state = JointState::of(joint, q);
         let parent = joint.parent.map(|p| &self.velocity[p]);
         let (vb, c) = velocity(joint, kb, state, parent, rate_of(joint, v));
@@ -76,14 +76,14 @@ impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
 
     /// Body `b`, leaf to root: τ_b = S_bᵀ f_b, and f_b passed to its parent.
     #[inline(always)]
-    pub fn backward<const N: usize>(
+    pub fn backward<const CODE: u16, const N: usize>(
         &mut self,
         joints: &[Joint; B],
         k: &RigidConstants<B>,
         tau: &mut [S; N],
         b: usize,
     ) {
-        let joint = &joints[b];
+        let joint = &joint_at::<CODE, B>(joints, b);
         if let Some(t) = along_joint(joint, &self.force[b]) {
             tau[joint.coordinate] = t;
         }
@@ -105,11 +105,11 @@ pub fn inverse_dynamics<S: Scalar, const N: usize, const B: usize>(
 ) -> [S; N] {
     let mut ws = NewtonEuler::<S, B>::new();
     for b in 0..B {
-        ws.forward(joints, k, (q, v, qdd), b);
+        ws.forward::<RUNTIME, N>(joints, k, (q, v, qdd), b);
     }
     let mut tau = [S::zero(); N];
     for b in (0..B).rev() {
-        ws.backward(joints, k, &mut tau, b);
+        ws.backward::<RUNTIME, N>(joints, k, &mut tau, b);
     }
     tau
 }
