@@ -358,6 +358,93 @@ pub fn rot_z<D: Scalar>(angle: D) -> Rot3<D> {
     }
 }
 
+/// The rotation of a robot file's roll, pitch and yaw: Rz(yaw)·Ry(pitch)·Rx(roll), a turn by
+/// `roll` about the x axis, then by `pitch` about the (fixed) y axis, then by `yaw` about the
+/// (fixed) z axis.
+///
+/// This is the convention of the URDF specification's `<origin xyz=".." rpy=".."/>` element of a
+/// joint or link ("represents the rotation around fixed axis: first roll around x, then pitch around
+/// y and finally yaw around z"; ROS URDF XML specification, `joint` element,
+/// <http://wiki.ros.org/urdf/XML/joint>).
+///
+/// ```
+/// use lagrange_core::geometry::{rot_x, rot_y, rot_z, rpy};
+/// let (roll, pitch, yaw) = (0.1_f64, -0.4, 1.3);
+/// let r = rpy(roll, pitch, yaw);
+/// let product = rot_z(yaw) * rot_y(pitch) * rot_x(roll);
+/// for (row, expected) in r.rows.iter().zip(product.rows) {
+///     for (a, b) in row.iter().zip(expected) {
+///         assert!((a - b).abs() < 1e-15);
+///     }
+/// }
+/// ```
+pub fn rpy<D: Scalar>(roll: D, pitch: D, yaw: D) -> Rot3<D> {
+    let (sr, cr) = roll.sin_cos();
+    let (sp, cp) = pitch.sin_cos();
+    let (sy, cy) = yaw.sin_cos();
+    // Rz(y)·Ry(p)·Rx(r) multiplied out.
+    Rot3 {
+        rows: [
+            [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr],
+        ],
+    }
+}
+
+/// Rotation by `angle` (right-handed) about the direction of `axis`, by Rodrigues' formula
+/// R = cos θ I + sin θ \[k\]× + (1 − cos θ) k kᵀ with k = axis/|axis| (Murray, Li & Sastry,
+/// *A Mathematical Introduction to Robotic Manipulation*, 1994, eq. (2.14)).
+///
+/// The axis is normalised, so any non-zero vector along it may be given (a robot file's
+/// `<axis xyz="0 0.7071 0.7071"/>` as written). In a declaration, an axis written from literals
+/// and parameters that has no direction (zero length, or not finite) is refused when the mechanism
+/// is validated (`Error::InvalidRotation` naming the function); an axis that depends on the state
+/// is used as it comes, and a zero one makes the equations of motion non-finite.
+///
+/// ```
+/// use lagrange_core::geometry::{rot_axis, rot_y, vec3};
+/// let r = rot_axis(vec3(0.0, 2.0, 0.0), 0.7_f64);
+/// for (row, expected) in r.rows.iter().zip(rot_y(0.7).rows) {
+///     for (a, b) in row.iter().zip(expected) {
+///         assert!((a - b).abs() < 1e-15);
+///     }
+/// }
+/// ```
+pub fn rot_axis<D: Scalar>(axis: Vec3<D>, angle: D) -> Rot3<D> {
+    let k = axis / axis.norm();
+    let (s, c) = angle.sin_cos();
+    let c1 = D::one() - c;
+    let (x, y, z) = (k.x, k.y, k.z);
+    Rot3 {
+        rows: [
+            [c + c1 * x * x, c1 * x * y - s * z, c1 * x * z + s * y],
+            [c1 * y * x + s * z, c + c1 * y * y, c1 * y * z - s * x],
+            [c1 * z * x - s * y, c1 * z * y + s * x, c + c1 * z * z],
+        ],
+    }
+}
+
+/// A rotation from its rows: `rot3([[r00, r01, r02], [r10, r11, r12], [r20, r21, r22]])`, entry
+/// (i, j) in row i, column j (column j is the image of the body's j-th axis).
+///
+/// In a declaration, a matrix written from literals and parameters must be a rotation —
+/// orthonormal to 1e-9 in every entry of RᵀR − I, and det R = +1 — or the mechanism is refused
+/// when it is validated (`Error::InvalidRotation` naming the function). A matrix whose entries
+/// depend on the state is used as it comes.
+///
+/// ```
+/// use lagrange_core::geometry::{rot3, rot_z};
+/// let c = std::f64::consts::FRAC_1_SQRT_2;
+/// assert_eq!(rot3([[c, -c, 0.0], [c, c, 0.0], [0.0, 0.0, 1.0]]).rows[1][0], c);
+/// let quarter = rot_z(std::f64::consts::FRAC_PI_4);
+/// assert!((quarter.rows[0][1] + c).abs() < 1e-16);
+/// ```
+#[inline(always)]
+pub fn rot3<D>(rows: [[D; 3]; 3]) -> Rot3<D> {
+    Rot3 { rows }
+}
+
 impl<D: Scalar> Mul for Rot3<D> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
@@ -386,46 +473,71 @@ impl<D: Scalar> Mul<Vec3<D>> for Rot3<D> {
     }
 }
 
-/// Where a planar rigid body is: its centre of mass and its angle (counter-clockwise).
+/// Where a planar rigid body is: a point of it and its angle (counter-clockwise). The point is the
+/// centre of mass, unless the body is declared with `#[rigid_body(com = ..)]`: then it is the origin
+/// of the body's frame, and the centre of mass lies at `com` in that frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Planar<D> {
-    /// The centre of mass in the world frame (the point the moment of inertia is taken about).
+    /// The centre of mass in the world frame (the point the moment of inertia is taken about), or
+    /// the origin of the body's frame when its `com` is declared.
     pub position: Vec2<D>,
     /// The body's orientation: the angle in radians, counter-clockwise, from the world x axis to
     /// the body's x axis (0 when the body frame is the world frame).
     pub angle: D,
 }
 
-/// `planar(centre_of_mass, angle)`.
+/// `planar(centre_of_mass, angle)` (or `planar(frame_origin, angle)` for a body declared with
+/// its `com`).
 #[inline(always)]
 pub fn planar<D>(position: Vec2<D>, angle: D) -> Planar<D> {
     Planar { position, angle }
 }
 
 impl<D: Scalar> Planar<D> {
-    /// The world position of a point fixed in the body at `offset` (body frame, from the centre of
-    /// mass).
+    /// The world position of a point fixed in the body at `offset` (body frame, from the body's
+    /// position: its centre of mass, or the origin of its frame when its `com` is given).
     #[inline(always)]
     pub fn point(&self, offset: Vec2<D>) -> Vec2<D> {
         self.position + offset.rotated(self.angle)
     }
+
+    /// A child's frame at the parent's point `origin`, turned by `angle` relative to the parent (a
+    /// robot file's joint origin followed by the joint's own rotation):
+    /// `planar(self.point(origin), self.angle + angle)`.
+    ///
+    /// ```
+    /// use lagrange_core::geometry::{planar, vec2};
+    /// let upper = planar(vec2(0.0, 0.0), -1.2_f64);
+    /// let lower = upper.joint(vec2(0.5, 0.0), 0.3);
+    /// assert_eq!(lower, planar(upper.point(vec2(0.5, 0.0)), upper.angle + 0.3));
+    /// ```
+    #[inline(always)]
+    pub fn joint(&self, origin: Vec2<D>, angle: D) -> Planar<D> {
+        planar(self.point(origin), self.angle + angle)
+    }
 }
 
-/// Where a spatial rigid body is: its centre of mass and its orientation (body frame → world frame).
+/// Where a spatial rigid body is: a point of it and its orientation (body frame → world frame).
+/// The point is the centre of mass, unless the body is declared with `#[rigid_body(com = ..)]`:
+/// then it is the origin of the body's frame (a joint frame, say), and the centre of mass lies at
+/// `com` in that frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spatial<D> {
-    /// The centre of mass in the world frame.
+    /// The centre of mass in the world frame, or the origin of the body's frame when its `com` is
+    /// declared.
     pub position: Vec3<D>,
-    /// The rotation from the body frame to the world frame: column k is the body's k-th principal
-    /// axis in world coordinates (the axes the principal moments `inertia = [I1, I2, I3]` refer to).
+    /// The rotation from the body frame to the world frame: column k is the body's k-th axis in
+    /// world coordinates (the axes the principal moments `inertia = [I1, I2, I3]`, or the rows and
+    /// columns of a full tensor `inertia = [[..], [..], [..]]`, refer to).
     pub rotation: Rot3<D>,
 }
 
-/// The velocity of a spatial rigid body: its centre of mass's and its angular velocity, both in the
-/// world frame. What a spatial body's `body_dot` is in forces, velocity constraints and friction.
+/// The velocity of a spatial rigid body: the velocity of its position (the centre of mass, or the
+/// frame's origin for a body declared with its `com`) and its angular velocity, both in the world
+/// frame. What a spatial body's `body_dot` is in forces, velocity constraints and friction.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct SpatialVelocity<D> {
-    /// The centre of mass's velocity.
+    /// The velocity of the body's position (`Spatial::position`).
     pub linear: Vec3<D>,
     /// The angular velocity ω (Ṙ = \[ω\]× R).
     pub angular: Vec3<D>,
@@ -441,18 +553,39 @@ pub fn angular_velocity<D: Scalar>(columns: [Vec3<D>; 3], rates: [Vec3<D>; 3]) -
     sum * D::from(0.5)
 }
 
-/// `spatial(centre_of_mass, rotation)`.
+/// `spatial(centre_of_mass, rotation)` (or `spatial(frame_origin, rotation)` for a body declared
+/// with its `com`).
 #[inline(always)]
 pub fn spatial<D>(position: Vec3<D>, rotation: Rot3<D>) -> Spatial<D> {
     Spatial { position, rotation }
 }
 
 impl<D: Scalar> Spatial<D> {
-    /// The world position of a point fixed in the body at `offset` (body frame, from the centre of
-    /// mass).
+    /// The world position of a point fixed in the body at `offset` (body frame, from the body's
+    /// position: its centre of mass, or the origin of its frame when its `com` is given).
     #[inline(always)]
     pub fn point(&self, offset: Vec3<D>) -> Vec3<D> {
         self.position + self.rotation * offset
+    }
+
+    /// A child's frame at the parent's point `origin`, turned by `rotation` relative to the parent
+    /// (a robot file's joint origin followed by the joint's own rotation):
+    /// `spatial(self.point(origin), self.rotation * rotation)`.
+    ///
+    /// ```
+    /// use lagrange_core::geometry::{rot_y, rpy, spatial, vec3, Rot3};
+    /// let base = spatial(vec3(0.0, 0.0, 0.3), Rot3::identity());
+    /// let q = 0.4_f64;
+    /// let link = base.joint(vec3(0.0, 0.1, 0.2), rpy(0.0, 0.0, 1.5) * rot_y(q));
+    /// let written_out = spatial(
+    ///     base.point(vec3(0.0, 0.1, 0.2)),
+    ///     base.rotation * (rpy(0.0, 0.0, 1.5) * rot_y(q)),
+    /// );
+    /// assert_eq!(link, written_out);
+    /// ```
+    #[inline(always)]
+    pub fn joint(&self, origin: Vec3<D>, rotation: Rot3<D>) -> Spatial<D> {
+        spatial(self.point(origin), self.rotation * rotation)
     }
 }
 
