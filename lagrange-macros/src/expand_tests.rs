@@ -736,3 +736,41 @@ fn only_straight_line_affine_mechanisms_are_checked_in_one_branch() {
         assert!(!out.contains("regular_accelerations"), "{items}");
     }
 }
+
+/// A body declared by its joint frame, with its centre of mass and a full tensor in that frame:
+/// x holds the centre of mass and the principal axes (`principal` of the frame), the bodies seen
+/// by potentials and forces are the frames mapped back (`frame`), the tensor's principal moments
+/// are computed once per `masses`, and `validate` checks the tensor, the centre of mass and the
+/// constant rotations (`rot3`, `rot_axis`).
+#[test]
+fn a_body_declared_by_its_frame() {
+    let out = snapshot(
+        "framed_body",
+        quote! {
+            pub mod arm {
+                pub struct Coords { pub q1: f64, pub q2: f64 }
+                pub struct Arm { pub m: f64, pub l: f64, pub c: f64, pub ixx: f64, pub ixy: f64, pub izz: f64, pub k: f64 }
+                #[rigid_body(mass = m, com = vec3(0.0, 0.0, c), inertia = [[ixx, ixy, 0.0], [ixy, ixx, 0.0], [0.0, 0.0, izz]])]
+                fn upper() -> Spatial { spatial(vec3(0.0, 0.0, 0.0), rot_z(q1)) }
+                #[rigid_body(mass = m, com = vec3(0.0, 0.0, c), inertia = [ixx, ixx, izz])]
+                fn lower() -> Spatial {
+                    upper.joint(vec3(0.0, 0.0, l), rot3([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]) * rot_axis(vec3(0.0, 1.0, 0.0), q2))
+                }
+                #[potential]
+                fn spring() -> f64 { 0.5 * k * lower.position.norm_squared() }
+            }
+        },
+    );
+    // Without the pretty-printer's line breaks.
+    let out: String = out.split_whitespace().collect();
+    assert!(out.contains("fn__lagrange_mass_frame_upper(&self,)"));
+    assert!(out.contains("principal_axes(&__inertia_upper,).0"));
+    assert!(out.contains(".__lagrange_mass_frame_upper().principal(__bodies.upper)"));
+    assert!(out.contains("__frame_lower.frame("));
+    assert!(out.contains("check_inertia_tensor(\"upper\""));
+    assert!(out.contains("check_centre_of_mass(\"lower\""));
+    assert!(out.contains("check_rotation(\"lower\""));
+    assert!(out.contains("check_axis(\"lower\""));
+    // Principal moments need no decomposition: the lower link's frame has no axes to turn.
+    assert!(!out.contains("principal_axes(&__inertia_lower"));
+}
