@@ -438,7 +438,7 @@ pub fn rot_axis<D: Scalar>(axis: Vec3<D>, angle: D) -> Rot3<D> {
 /// let c = std::f64::consts::FRAC_1_SQRT_2;
 /// assert_eq!(rot3([[c, -c, 0.0], [c, c, 0.0], [0.0, 0.0, 1.0]]).rows[1][0], c);
 /// let quarter = rot_z(std::f64::consts::FRAC_PI_4);
-/// assert!((quarter.rows[0][1] + c).abs() < 1e-16);
+/// assert!((quarter.rows[0][1] + c).abs() < 1e-15);
 /// ```
 #[inline(always)]
 pub fn rot3<D>(rows: [[D; 3]; 3]) -> Rot3<D> {
