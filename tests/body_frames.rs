@@ -8,6 +8,9 @@
 use lagrange::prelude::*;
 use proptest::prelude::*;
 
+#[allow(dead_code)]
+mod common;
+
 // The arm declared by its frames and by its principal axes, shared with the `effects` benchmark.
 #[path = "common/framed_arms.rs"]
 mod framed_arms;
@@ -420,16 +423,7 @@ pub mod sprung_explicit_rods {
 /// as above; q̈ through a solve with a well-conditioned 2×2 M, 1e-12).
 #[test]
 fn potentials_and_forces_see_a_planar_body_by_its_frame() {
-    let framed = sprung_framed_rods::SprungFramedRods {
-        m1: 1.1,
-        m2: 0.7,
-        i1: 0.09,
-        i2: 0.05,
-        l1: 0.9,
-        l2: 0.8,
-        k: 12.0,
-        c: 0.6,
-    };
+    let framed = sprung();
     let explicit = sprung_explicit_rods::SprungExplicitRods {
         m1: 1.1,
         m2: 0.7,
@@ -479,6 +473,64 @@ fn potentials_and_forces_see_a_planar_body_by_its_frame() {
         assert_close("ṙ", &lower.position.to_array(), &elbow.to_array(), 1e-13);
         assert_close("θ̇", &[lower.angle], &[w1 + w2], 1e-15);
     }
+}
+
+fn sprung() -> sprung_framed_rods::SprungFramedRods {
+    sprung_framed_rods::SprungFramedRods {
+        m1: 1.1,
+        m2: 0.7,
+        i1: 0.09,
+        i2: 0.05,
+        l1: 0.9,
+        l2: 0.8,
+        k: 12.0,
+        c: 0.6,
+    }
+}
+
+/// Sensitivities by the parameters that place the frames: `l1` (the lower rod's joint, in a
+/// position) and `l2` (the spring's end on the lower rod's frame, in the potential), through the
+/// generated `Parametrized` functions that map each frame to its centre of mass. Against finite
+/// differences of the same discrete map (1 s of RK4, h = 1e-3), to the differences' own error
+/// (estimated in `common::check_against_finite_differences`).
+#[test]
+fn sensitivities_by_the_parameters_that_place_the_frames() {
+    use lagrange::sensitivity::Seed;
+    use sprung_framed_rods::{Coords, State};
+    let s0 = State::new(
+        0.0,
+        Coords {
+            theta1: 1.2,
+            theta2: -0.4,
+        },
+        Coords {
+            theta1: 0.3,
+            theta2: 0.1,
+        },
+    );
+    let seeds = [Seed::Parameter("l1"), Seed::Parameter("l2")];
+    let (h, steps) = (1e-3, 1000);
+    let (real, jacobian) = common::rk4_tangent_end(&sprung(), s0, seeds, h, steps);
+    let plain = common::rk4_end(&sprung(), s0, h, steps);
+    // Rounding only: the same steps through two orderings of the same arithmetic.
+    assert_close("real parts", &real, &plain, 1e-11);
+    let central = |seed: usize, delta: f64| -> [f64; 4] {
+        let shifted = |sign: f64| {
+            let mut p = sprung();
+            match seed {
+                0 => p.l1 += sign * delta,
+                _ => p.l2 += sign * delta,
+            }
+            common::rk4_end(&p, s0, h, steps)
+        };
+        let (plus, minus) = (shifted(1.0), shifted(-1.0));
+        std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * delta))
+    };
+    let labels: Vec<String> = seeds.iter().map(Seed::label).collect();
+    common::check_against_finite_differences(&jacobian, &labels, plain, steps, central);
+    assert!(jacobian
+        .iter()
+        .all(|column| column.iter().any(|x| x.abs() > 1e-2)));
 }
 
 /// A family of three rods, each declared by its joint frame at the end of the one before, with
@@ -603,4 +655,21 @@ fn a_family_of_bodies_declared_by_their_frames() {
             1e-15,
         );
     }
+}
+
+/// What the C export builds a mechanism from: the parameters by name and as flat values, the
+/// centres of mass and tensors among them; a mechanism rebuilt from them is the same mechanism.
+#[test]
+fn the_declaration_of_a_framed_arm_round_trips_its_parameters() {
+    use lagrange::declaration::Declaration;
+    type Arm = framed_arm::FramedArm;
+    assert_eq!(<Arm as Declaration>::DOF, 3);
+    let names = <Arm as Declaration>::PARAMETERS;
+    assert!(names.contains(&"c2y") && names.contains(&"t3yz"));
+    let arm = framed();
+    let values = arm.parameters();
+    assert_eq!(values.len(), names.len());
+    let rebuilt = Arm::from_parameters(&values).unwrap();
+    let (s, _) = states([0.3, 1.2, -0.8], [1.0, -0.5, 2.0]);
+    assert_eq!(arm.accelerations(&s), rebuilt.accelerations(&s));
 }
