@@ -11,7 +11,7 @@ use proptest::prelude::*;
 #[allow(dead_code)]
 mod common;
 
-// The arm declared by its frames and by its principal axes, shared with the `effects` benchmark.
+// The arm declared by its frames and by its principal axes, shared with `scripts/callgrind`.
 #[path = "common/framed_arms.rs"]
 mod framed_arms;
 use framed_arms::{framed, framed_arm, principal, principal_arm};

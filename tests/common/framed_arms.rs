@@ -1,7 +1,7 @@
 //! A three-link spatial arm declared twice: by its joint frames with each link's centre of mass
 //! and full inertia tensor in its frame (`framed_arm`), and by centres of mass and principal axes
 //! written out (`principal_arm`, today's form). The same physics; `tests/body_frames.rs` checks
-//! that, and the `effects` benchmark times what declaring by frames costs.
+//! that, and `scripts/callgrind` counts what declaring by frames costs.
 
 use lagrange::prelude::*;
 use nalgebra::Matrix3;

@@ -27,6 +27,11 @@ use fpu_report::{fpu_chain, fpu_forces};
 #[path = "../../../lagrange-bench/src/kepler.rs"]
 mod kepler_report;
 use kepler_report::{kepler, kepler_rhs, KEPLER};
+// A three-link spatial arm declared by its joint frames (centres of mass, full inertia tensors)
+// and by its principal axes, as in the effects benchmark.
+#[path = "../../../tests/common/framed_arms.rs"]
+#[allow(dead_code)]
+mod framed_arms;
 
 #[mechanism]
 pub mod pendulum {
@@ -474,9 +479,7 @@ fn main() {
         // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
         mode if mode.starts_with("sensitivity_double_pendulum_") => {
             use lagrange::sensitivity::{Seed, Tangent};
-            let sys = DOUBLE_PENDULUM
-            .validated()
-            .unwrap();
+            let sys = DOUBLE_PENDULUM.validated().unwrap();
             let s = double_pendulum_start();
             let (q1, q2) = (Seed::Coordinate("theta1"), Seed::Coordinate("theta2"));
             let (v1, v2) = (Seed::Velocity("theta1"), Seed::Velocity("theta2"));
@@ -517,8 +520,13 @@ fn main() {
                     if which.starts_with("gl2") {
                         let mut memory = NewtonMemory::<2, 2>::default();
                         for _ in 0..n {
-                            GaussLegendre2::step_with_memory(black_box($sys), &mut memory, &mut s, 1e-3)
-                                .unwrap();
+                            GaussLegendre2::step_with_memory(
+                                black_box($sys),
+                                &mut memory,
+                                &mut s,
+                                1e-3,
+                            )
+                            .unwrap();
                         }
                     } else {
                         let mut memory = NewtonMemory::<2, 1>::default();
@@ -550,9 +558,13 @@ fn main() {
             let mut s = double_pendulum_start();
             for _ in 0..n {
                 if which.starts_with("gl2") {
-                    black_box(&params).step::<GaussLegendre2>(&mut s, 1e-3).unwrap();
+                    black_box(&params)
+                        .step::<GaussLegendre2>(&mut s, 1e-3)
+                        .unwrap();
                 } else {
-                    black_box(&params).step::<ImplicitMidpoint>(&mut s, 1e-3).unwrap();
+                    black_box(&params)
+                        .step::<ImplicitMidpoint>(&mut s, 1e-3)
+                        .unwrap();
                 }
             }
             acc += s.q.theta1;
@@ -863,6 +875,28 @@ fn main() {
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
             acc += calls(sys, &s, n, via);
+        }
+        // The arm by its frames, by its principal axes; one eigen-decomposition of a tensor.
+        "framed_arm" | "principal_arm" => {
+            use framed_arms::{framed_arm as fa, principal_arm as pa};
+            let (q, v) = ([0.3, 1.2, -0.8], [1.0, -0.5, 2.0]);
+            if which == "framed_arm" {
+                let s = fa::State::new(0.0, fa::Coords::from_array(q), fa::Coords::from_array(v));
+                acc += calls(framed_arms::framed(), &s, n, via);
+            } else {
+                let s = pa::State::new(0.0, pa::Coords::from_array(q), pa::Coords::from_array(v));
+                acc += calls(framed_arms::principal(), &s, n, via);
+            }
+        }
+        "principal_axes" => {
+            let tensor = [
+                [0.02, 0.001, -0.002],
+                [0.001, 0.03, 0.0005],
+                [-0.002, 0.0005, 0.04],
+            ];
+            for _ in 0..n {
+                acc += lagrange::inertia::principal_axes(black_box(&tensor)).0[0];
+            }
         }
         "none" => {}
         _ => panic!(),
