@@ -28,7 +28,7 @@ use fpu_report::{fpu_chain, fpu_forces};
 mod kepler_report;
 use kepler_report::{kepler, kepler_rhs, KEPLER};
 // A three-link spatial arm declared by its joint frames (centres of mass, full inertia tensors)
-// and by its principal axes, as in the effects benchmark.
+// and by its principal axes, as in tests/body_frames.rs.
 #[path = "../../../tests/common/framed_arms.rs"]
 #[allow(dead_code)]
 mod framed_arms;
@@ -479,7 +479,9 @@ fn main() {
         // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
         mode if mode.starts_with("sensitivity_double_pendulum_") => {
             use lagrange::sensitivity::{Seed, Tangent};
-            let sys = DOUBLE_PENDULUM.validated().unwrap();
+            let sys = DOUBLE_PENDULUM
+            .validated()
+            .unwrap();
             let s = double_pendulum_start();
             let (q1, q2) = (Seed::Coordinate("theta1"), Seed::Coordinate("theta2"));
             let (v1, v2) = (Seed::Velocity("theta1"), Seed::Velocity("theta2"));
@@ -520,13 +522,8 @@ fn main() {
                     if which.starts_with("gl2") {
                         let mut memory = NewtonMemory::<2, 2>::default();
                         for _ in 0..n {
-                            GaussLegendre2::step_with_memory(
-                                black_box($sys),
-                                &mut memory,
-                                &mut s,
-                                1e-3,
-                            )
-                            .unwrap();
+                            GaussLegendre2::step_with_memory(black_box($sys), &mut memory, &mut s, 1e-3)
+                                .unwrap();
                         }
                     } else {
                         let mut memory = NewtonMemory::<2, 1>::default();
@@ -558,13 +555,9 @@ fn main() {
             let mut s = double_pendulum_start();
             for _ in 0..n {
                 if which.starts_with("gl2") {
-                    black_box(&params)
-                        .step::<GaussLegendre2>(&mut s, 1e-3)
-                        .unwrap();
+                    black_box(&params).step::<GaussLegendre2>(&mut s, 1e-3).unwrap();
                 } else {
-                    black_box(&params)
-                        .step::<ImplicitMidpoint>(&mut s, 1e-3)
-                        .unwrap();
+                    black_box(&params).step::<ImplicitMidpoint>(&mut s, 1e-3).unwrap();
                 }
             }
             acc += s.q.theta1;
