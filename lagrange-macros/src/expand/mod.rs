@@ -103,7 +103,7 @@ pub(crate) fn prelude() -> TokenStream {
     let p = private();
     quote! {
         #[allow(unused_imports)]
-        use #p::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
+        use #p::geometry::{planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
         #[allow(unused_imports)]
         use #p::DualNum as _;
     }
@@ -346,5 +346,5 @@ pub(crate) fn position_type(shape: Shape) -> TokenStream {
 /// `let Bodies { bob1, .. } = …;` from x.
 fn bind_bodies(model: &Model) -> TokenStream {
     let names = model.bodies.iter().map(|b| b.decl.ident());
-    quote!(let Bodies { #(#names),* } = Self::__lagrange_bodies_from_cartesian(__x);)
+    quote!(let Bodies { #(#names),* } = self.__lagrange_bodies_from_cartesian(__x);)
 }

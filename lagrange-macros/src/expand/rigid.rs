@@ -208,6 +208,7 @@ fn body_constants(model: &Model, tree: &RigidTree, i: usize, node: &Node) -> Tok
         quote!(let #index: usize = #k;)
     });
     let (mass, tensor) = inertia(model, node);
+    let com = centre_of_mass(model, node);
     let _ = tree;
     quote! {
         let #after: Rot3<f64> = #after_value;
@@ -218,7 +219,8 @@ fn body_constants(model: &Model, tree: &RigidTree, i: usize, node: &Node) -> Tok
             let __offset: Vec3<f64> = #anchor #parent_turn * #offset;
             let __mass: f64 = #mass;
             let __tensor: [[f64; 3]; 3] = #p::tree::rigid::turned_tensor(&#after, #tensor);
-            #p::tree::rigid::body_constants(__rotation, __offset, __mass, #own, __tensor)
+            let __centre: Vec3<f64> = #own + #after * #com;
+            #p::tree::rigid::body_constants(__rotation, __offset, __mass, __centre, __tensor)
         };
     }
 }
@@ -239,9 +241,21 @@ fn inertia(model: &Model, node: &Node) -> (TokenStream, TokenStream) {
             quote!(#p::tree::rigid::diagonal([0.0, 0.0, #i]))
         }
         (Shape::Spatial, Some(Inertia::Principal(i))) => quote!(#p::tree::rigid::diagonal(#i)),
+        (Shape::Spatial, Some(Inertia::Tensor(t))) => quote!(#t),
         _ => zero,
     };
     (mass, tensor)
+}
+
+/// The centre of mass in the frame the body's function returns: its `com` (a `Vec3<f64>`; a
+/// planar body's in the plane), or the frame's origin.
+fn centre_of_mass(model: &Model, node: &Node) -> TokenStream {
+    let body = &model.bodies[node.body];
+    match (&body.decl.args.com, body.shape) {
+        (Some(c), Shape::Planar) => quote!({ let __c: Vec2<f64> = #c; vec3(__c.x, __c.y, 0.0) }),
+        (Some(c), _) => quote!({ let __c: Vec3<f64> = #c; __c }),
+        (None, _) => quote!(Vec3::<f64>::zero()),
+    }
 }
 
 /// The uniform fields' acceleration as a `Vec3<f64>` (the plane's fields with z = 0).

@@ -38,7 +38,8 @@ pub mod legs {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -54,6 +55,8 @@ pub mod legs {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -91,7 +94,7 @@ pub mod legs {
                 3,
                 36,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -102,8 +105,8 @@ pub mod legs {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -154,6 +157,7 @@ pub mod legs {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 36],
             __x_dot: &[__D; 36],
         ) -> BodyVelocities<__D> {
@@ -639,8 +643,8 @@ pub mod legs {
         ) -> ::lagrange::__private::tree::rigid::RigidConstants<3> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -660,11 +664,12 @@ pub mod legs {
                     &__after_0,
                     ::lagrange::__private::tree::rigid::diagonal([0.2, 0.15, 0.1]),
                 );
+                let __centre: Vec3<f64> = __own_0 + __after_0 * Vec3::<f64>::zero();
                 ::lagrange::__private::tree::rigid::body_constants(
                     __rotation,
                     __offset,
                     __mass,
-                    __own_0,
+                    __centre,
                     __tensor,
                 )
             };
@@ -682,11 +687,12 @@ pub mod legs {
                     &__after_1,
                     ::lagrange::__private::tree::rigid::diagonal([0.05, 0.05, 0.01]),
                 );
+                let __centre: Vec3<f64> = __own_1 + __after_1 * Vec3::<f64>::zero();
                 ::lagrange::__private::tree::rigid::body_constants(
                     __rotation,
                     __offset,
                     __mass,
-                    __own_1,
+                    __centre,
                     __tensor,
                 )
             };
@@ -704,11 +710,12 @@ pub mod legs {
                     &__after_2,
                     ::lagrange::__private::tree::rigid::diagonal([0.05, 0.05, 0.01]),
                 );
+                let __centre: Vec3<f64> = __own_2 + __after_2 * Vec3::<f64>::zero();
                 ::lagrange::__private::tree::rigid::body_constants(
                     __rotation,
                     __offset,
                     __mass,
-                    __own_2,
+                    __centre,
                     __tensor,
                 )
             };
@@ -721,6 +728,123 @@ pub mod legs {
                     }))
                     .to_array(),
             }
+        }
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_sweeps<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::Articulated<S, 3>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 3],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<3>,
+            (__q, __v, __tau): (&[S; 3], &[S; 3], &[S; 3]),
+            __qdd: &mut [S; 3],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.velocity::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __q, __v, 0);
+            __ws.velocity::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __q, __v, 1);
+            __ws.velocity::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[2]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __q, __v, 2);
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[2]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __tau, 2)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __tau, 1)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __tau, 0)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            __ws.accelerate::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __qdd, 0);
+            __ws.accelerate::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __qdd, 1);
+            __ws.accelerate::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[2]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __qdd, 2);
+            ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
         fn __lagrange_rigid_accelerations<S: ::lagrange::__private::Scalar>(
@@ -745,52 +869,139 @@ pub mod legs {
                 S,
                 3,
             >::new();
-            __ws.velocity(__joints, __k, __q, __v, 0);
-            __ws.velocity(__joints, __k, __q, __v, 1);
-            __ws.velocity(__joints, __k, __q, __v, 2);
-            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
-                .articulate(__joints, __k, &__tau, 2)
-            {
-                return ::lagrange::__private::core::result::Result::Err(
-                    ::lagrange::__private::tree::rigid::singular::<
-                        Coords,
-                        S,
-                        3,
-                        3,
-                    >(__joints, __pivot, __t, __q),
-                );
-            }
-            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
-                .articulate(__joints, __k, &__tau, 1)
-            {
-                return ::lagrange::__private::core::result::Result::Err(
-                    ::lagrange::__private::tree::rigid::singular::<
-                        Coords,
-                        S,
-                        3,
-                        3,
-                    >(__joints, __pivot, __t, __q),
-                );
-            }
-            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
-                .articulate(__joints, __k, &__tau, 0)
-            {
-                return ::lagrange::__private::core::result::Result::Err(
-                    ::lagrange::__private::tree::rigid::singular::<
-                        Coords,
-                        S,
-                        3,
-                        3,
-                    >(__joints, __pivot, __t, __q),
-                );
-            }
             let mut __qdd = [<S as ::lagrange::__private::core::convert::From<
                 f64,
             >>::from(0.0); 3];
-            __ws.accelerate(__joints, __k, &mut __qdd, 0);
-            __ws.accelerate(__joints, __k, &mut __qdd, 1);
-            __ws.accelerate(__joints, __k, &mut __qdd, 2);
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = self
+                .__lagrange_rigid_sweeps(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, &__tau),
+                    &mut __qdd,
+                )
+            {
+                return ::lagrange::__private::core::result::Result::Err(
+                    ::lagrange::__private::tree::rigid::singular::<
+                        Coords,
+                        S,
+                        3,
+                        3,
+                    >(__joints, __pivot, __t, __q),
+                );
+            }
             ::lagrange::__private::tree::rigid::finished::<Coords, S, 3>(__qdd, __t, __q)
+        }
+        /// The two sweeps; neither fails (the chunks' `Result` is for the sweeps that can).
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_newton_euler<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::NewtonEuler<S, 3>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 3],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<3>,
+            __state: (&[S; 3], &[S; 3], &[S; 3]),
+            __tau: &mut [S; 3],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.forward::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __state, 0);
+            __ws.forward::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __state, 1);
+            __ws.forward::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[2]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __state, 2);
+            __ws.backward::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[2]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __tau, 2);
+            __ws.backward::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __tau, 1);
+            __ws.backward::<
+                    {
+                        <Legs as ::lagrange::__private::tree::rigid::RigidTree<
+                            3,
+                            3,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    3,
+                >(__joints, __k, __tau, 0);
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn __lagrange_rigid_inverse_dynamics<S: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<3>,
+            __t: S,
+            __q: &[S; 3],
+            __v: &[S; 3],
+            __qdd: &[S; 3],
+        ) -> [S; 3] {
+            let __joints = &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                3,
+                3,
+            >>::JOINTS;
+            let mut __ws = ::lagrange::__private::tree::rigid::NewtonEuler::<
+                S,
+                3,
+            >::new();
+            let mut __tau = [<S as ::lagrange::__private::core::convert::From<
+                f64,
+            >>::from(0.0); 3];
+            let _ = self
+                .__lagrange_rigid_newton_euler(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, __qdd),
+                    &mut __tau,
+                );
+            ::lagrange::__private::tree::rigid::less_other_forces::<
+                Self,
+                S,
+                3,
+                36,
+            >(self, __tau, __t, __q, __v)
         }
     }
     impl ::lagrange::__private::Prepare for Legs {
@@ -838,13 +1049,13 @@ pub mod legs {
             v: &[S; 3],
             qdd: &[S; 3],
         ) -> [S; 3] {
-            ::lagrange::__private::tree::rigid::inverse_dynamics::<
-                Self,
-                S,
-                3,
-                36,
-                3,
-            >(self, &self.__lagrange_rigid_constants(), t, q, v, qdd)
+            self.__lagrange_rigid_inverse_dynamics(
+                &self.__lagrange_rigid_constants(),
+                t,
+                q,
+                v,
+                qdd,
+            )
         }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
@@ -968,13 +1179,7 @@ pub mod legs {
             v: &[S; 3],
             qdd: &[S; 3],
         ) -> [S; 3] {
-            ::lagrange::__private::tree::rigid::inverse_dynamics::<
-                Self,
-                S,
-                3,
-                36,
-                3,
-            >(self, prepared, t, q, v, qdd)
+            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Legs {
@@ -1005,8 +1210,8 @@ pub mod legs {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 3]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

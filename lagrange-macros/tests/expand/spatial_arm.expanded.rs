@@ -38,7 +38,8 @@ pub mod arm {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -53,6 +54,8 @@ pub mod arm {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -89,7 +92,7 @@ pub mod arm {
                 2,
                 24,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -100,8 +103,8 @@ pub mod arm {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -130,6 +133,7 @@ pub mod arm {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 24],
             __x_dot: &[__D; 24],
         ) -> BodyVelocities<__D> {
@@ -497,8 +501,8 @@ pub mod arm {
         ) -> ::lagrange::__private::tree::rigid::RigidConstants<2> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -520,11 +524,12 @@ pub mod arm {
                     &__after_0,
                     ::lagrange::__private::tree::rigid::diagonal([0.03, 0.025, 0.01]),
                 );
+                let __centre: Vec3<f64> = __own_0 + __after_0 * Vec3::<f64>::zero();
                 ::lagrange::__private::tree::rigid::body_constants(
                     __rotation,
                     __offset,
                     __mass,
-                    __own_0,
+                    __centre,
                     __tensor,
                 )
             };
@@ -543,11 +548,12 @@ pub mod arm {
                     &__after_1,
                     ::lagrange::__private::tree::rigid::diagonal([0.03, 0.025, 0.01]),
                 );
+                let __centre: Vec3<f64> = __own_1 + __after_1 * Vec3::<f64>::zero();
                 ::lagrange::__private::tree::rigid::body_constants(
                     __rotation,
                     __offset,
                     __mass,
-                    __own_1,
+                    __centre,
                     __tensor,
                 )
             };
@@ -560,6 +566,89 @@ pub mod arm {
                     }))
                     .to_array(),
             }
+        }
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_sweeps<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::Articulated<S, 2>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 2],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            (__q, __v, __tau): (&[S; 2], &[S; 2], &[S; 2]),
+            __qdd: &mut [S; 2],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.velocity::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __q, __v, 0);
+            __ws.velocity::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __q, __v, 1);
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 1)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 0)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            __ws.accelerate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __qdd, 0);
+            __ws.accelerate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __qdd, 1);
+            ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
         fn __lagrange_rigid_accelerations<S: ::lagrange::__private::Scalar>(
@@ -584,38 +673,119 @@ pub mod arm {
                 S,
                 2,
             >::new();
-            __ws.velocity(__joints, __k, __q, __v, 0);
-            __ws.velocity(__joints, __k, __q, __v, 1);
-            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
-                .articulate(__joints, __k, &__tau, 1)
-            {
-                return ::lagrange::__private::core::result::Result::Err(
-                    ::lagrange::__private::tree::rigid::singular::<
-                        Coords,
-                        S,
-                        2,
-                        2,
-                    >(__joints, __pivot, __t, __q),
-                );
-            }
-            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
-                .articulate(__joints, __k, &__tau, 0)
-            {
-                return ::lagrange::__private::core::result::Result::Err(
-                    ::lagrange::__private::tree::rigid::singular::<
-                        Coords,
-                        S,
-                        2,
-                        2,
-                    >(__joints, __pivot, __t, __q),
-                );
-            }
             let mut __qdd = [<S as ::lagrange::__private::core::convert::From<
                 f64,
             >>::from(0.0); 2];
-            __ws.accelerate(__joints, __k, &mut __qdd, 0);
-            __ws.accelerate(__joints, __k, &mut __qdd, 1);
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = self
+                .__lagrange_rigid_sweeps(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, &__tau),
+                    &mut __qdd,
+                )
+            {
+                return ::lagrange::__private::core::result::Result::Err(
+                    ::lagrange::__private::tree::rigid::singular::<
+                        Coords,
+                        S,
+                        2,
+                        2,
+                    >(__joints, __pivot, __t, __q),
+                );
+            }
             ::lagrange::__private::tree::rigid::finished::<Coords, S, 2>(__qdd, __t, __q)
+        }
+        /// The two sweeps; neither fails (the chunks' `Result` is for the sweeps that can).
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_newton_euler<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::NewtonEuler<S, 2>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 2],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __state: (&[S; 2], &[S; 2], &[S; 2]),
+            __tau: &mut [S; 2],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.forward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __state, 0);
+            __ws.forward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __state, 1);
+            __ws.backward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 1);
+            __ws.backward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 0);
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn __lagrange_rigid_inverse_dynamics<S: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+            __qdd: &[S; 2],
+        ) -> [S; 2] {
+            let __joints = &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                2,
+                2,
+            >>::JOINTS;
+            let mut __ws = ::lagrange::__private::tree::rigid::NewtonEuler::<
+                S,
+                2,
+            >::new();
+            let mut __tau = [<S as ::lagrange::__private::core::convert::From<
+                f64,
+            >>::from(0.0); 2];
+            let _ = self
+                .__lagrange_rigid_newton_euler(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, __qdd),
+                    &mut __tau,
+                );
+            ::lagrange::__private::tree::rigid::less_other_forces::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, __tau, __t, __q, __v)
         }
     }
     impl ::lagrange::__private::Prepare for Arm {
@@ -663,13 +833,13 @@ pub mod arm {
             v: &[S; 2],
             qdd: &[S; 2],
         ) -> [S; 2] {
-            ::lagrange::__private::tree::rigid::inverse_dynamics::<
-                Self,
-                S,
-                2,
-                24,
-                2,
-            >(self, &self.__lagrange_rigid_constants(), t, q, v, qdd)
+            self.__lagrange_rigid_inverse_dynamics(
+                &self.__lagrange_rigid_constants(),
+                t,
+                q,
+                v,
+                qdd,
+            )
         }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
@@ -793,13 +963,7 @@ pub mod arm {
             v: &[S; 2],
             qdd: &[S; 2],
         ) -> [S; 2] {
-            ::lagrange::__private::tree::rigid::inverse_dynamics::<
-                Self,
-                S,
-                2,
-                24,
-                2,
-            >(self, prepared, t, q, v, qdd)
+            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Arm {
@@ -832,8 +996,8 @@ pub mod arm {
         >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
