@@ -74,6 +74,69 @@ pub trait Mechanism<const N: usize>: Dynamics<N> {
         Ok(Self::Coords::from_array(f))
     }
 
+    /// Inverse dynamics: the generalized forces τ that, added to those the declaration states,
+    /// make the mechanism move with accelerations `accelerations` at `state`,
+    /// τ = M q̈ + b − 𝓕 (for a kinematic tree of rigid bodies, by the recursive Newton–Euler
+    /// algorithm: work proportional to the bodies). For a mechanism with constraints, τ includes
+    /// what the constraint forces would supply (Gᵀλ): it is the generalized force of everything
+    /// not declared.
+    ///
+    /// ```
+    /// use lagrange::prelude::*;
+    ///
+    /// #[mechanism]
+    /// pub mod pendulum {
+    ///     pub struct Coords {
+    ///         pub theta: f64,
+    ///     }
+    ///     pub struct Pendulum {
+    ///         pub m: f64,
+    ///         pub l: f64,
+    ///         pub g: f64,
+    ///     }
+    ///     #[particle(mass = m)]
+    ///     fn bob() -> Vec2 {
+    ///         vec2(theta.sin(), -theta.cos()) * l
+    ///     }
+    ///     #[gravity]
+    ///     fn down() -> Vec2 {
+    ///         vec2(0.0, -g)
+    ///     }
+    /// }
+    ///
+    /// # fn main() -> lagrange::Result<()> {
+    /// use pendulum::{Coords, Pendulum, State};
+    /// let sys = Pendulum { m: 2.0, l: 0.5, g: 9.81 }.validated()?;
+    /// let s = State::at_rest(Coords { theta: 0.3 });
+    /// // The torque that holds the pendulum still at 0.3 rad: m g l sin θ.
+    /// let tau = sys.inverse_dynamics(&s, &Coords { theta: 0.0 })?;
+    /// assert!((tau.theta - 2.0 * 9.81 * 0.5 * 0.3f64.sin()).abs() < 1e-12);
+    /// # Ok(())
+    /// # }
+    /// ```
+    ///
+    /// Errors: non-finite parameters, state or accelerations, a result that is not finite
+    /// ([`Error::NonFiniteDynamics`]).
+    fn inverse_dynamics(
+        &self,
+        state: &State<Self::Coords>,
+        accelerations: &Self::Coords,
+    ) -> Result<Self::Coords> {
+        let (q, v) = self.check(state)?;
+        let qdd = accelerations.to_array();
+        if !qdd.iter().all(|a| a.is_finite()) {
+            return Err(Error::NonFiniteState {
+                state: format!(
+                    "accelerations ({})",
+                    describe_configuration(&Self::Coords::NAMES, &qdd)
+                ),
+            });
+        }
+        let tau = self.inverse_dynamics_at(state.t, &q, &v, &qdd);
+        finite_or_error::<Self::Coords, N>(tau.iter(), state.t, &q, Some(&v))?;
+        Ok(Self::Coords::from_array(tau))
+    }
+
     /// T: kinetic energy.
     ///
     /// Errors: non-finite parameters or state, a kinetic energy that overflows
@@ -324,6 +387,34 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     ) -> Result<[S; N]> {
         let _ = prepared;
         self.accelerations_at(t, q, v)
+    }
+
+    #[doc(hidden)]
+    /// τ = M q̈ + b − 𝓕 at (t, q, q̇, q̈), for any scalar: inverse dynamics. By default from
+    /// [`equations_of_motion_at`](Dynamics::equations_of_motion_at); a kinematic tree of rigid
+    /// bodies takes the recursive Newton–Euler algorithm.
+    #[inline]
+    fn inverse_dynamics_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N], qdd: &[S; N]) -> [S; N] {
+        let eom = self.equations_of_motion_at(t, q, v);
+        let qdd = nalgebra::SVector::from(*qdd);
+        (eom.mass_matrix * qdd + eom.inertial_terms - eom.generalized_forces).into()
+    }
+
+    #[doc(hidden)]
+    /// [`inverse_dynamics_at`](Dynamics::inverse_dynamics_at) with the constants
+    /// [`Prepare::prepare`] computed when the mechanism was validated: what a
+    /// [`Validated`](crate::Validated) handle calls. By default the constants are not used.
+    #[inline]
+    fn inverse_dynamics_prepared_at<S: Scalar>(
+        &self,
+        prepared: &Self::Prepared,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+        qdd: &[S; N],
+    ) -> [S; N] {
+        let _ = prepared;
+        self.inverse_dynamics_at(t, q, v, qdd)
     }
 
     #[doc(hidden)]
