@@ -20,9 +20,10 @@ For each robot it writes `robots/<name>.urdf` beside this file and the same robo
 (the same decimal strings in both files) and `g` the one parameter. Each number is rounded to a
 few decimals, as robot files give them; the inertia tensors are checked after rounding.
 
-`states OUT` writes, for every robot, eight states (q, q̇ uniform in [-1, 1]) and a random q̈ (uniform
-in [-1, 1], the input of inverse dynamics) as tab-separated rows `robot, k, q..., q̇..., q̈...`,
-coordinates in the declaration's order, after a row `robot, names, coordinate names...`. Plain Python 3.11 with numpy.
+`states OUT` writes, for every robot, eight states (q, q̇ uniform in [-1, 1]) and a random q̈
+(uniform in [-1, 1], the input of inverse dynamics) as tab-separated rows `robot, k, q..., q̇...,
+q̈...`, coordinates in the declaration's order, after a row `robot, names, coordinate names...`.
+Plain Python 3.11 with numpy.
 """
 
 import sys
