@@ -2,6 +2,8 @@
 
     python3 scripts/peers/robots.py            # writes robots/<name>.urdf and the declarations
     python3 scripts/peers/robots.py states OUT  # writes the random states every side reads
+    scripts/peers/.venv/bin/python scripts/peers/robots.py reference OUT
+                                                # Pinocchio's values at two of those states
 
 The robots are generic as robot files are: every link has its own mass, a centre of mass off the
 joint axis, a full inertia tensor about the centre of mass (positive definite, principal moments
@@ -24,6 +26,10 @@ few decimals, as robot files give them; the inertia tensors are checked after ro
 (uniform in [-1, 1], the input of inverse dynamics) as tab-separated rows `robot, k, q..., q̇...,
 q̈...`, coordinates in the declaration's order, after a row `robot, names, coordinate names...`.
 Plain Python 3.11 with numpy.
+
+`reference OUT` writes Pinocchio's q̈, τ and M at the first two of those states, computed by the
+`pin` wheel from the URDF files (rows `robot, k, quantity, values...`, quantity `state` holding
+q, q̇, q̈): the reference of `lagrange-bench/robots/tests/pinocchio.rs`.
 """
 
 import sys
@@ -35,6 +41,7 @@ import numpy as np
 SEED = 2026
 STATE_SEED = 7
 STATES_PER_ROBOT = 8
+REFERENCE_STATES = 2
 HERE = Path(__file__).resolve().parent
 URDF_DIR = HERE / "robots"
 RUST_DIR = HERE.parent.parent / "lagrange-bench" / "robots" / "src"
@@ -269,9 +276,46 @@ def write_states(path: Path) -> None:
     path.write_text("\n".join(rows) + "\n")
 
 
+def write_reference(path: Path) -> None:
+    """Pinocchio's q̈ (ABA, τ = 0), τ (RNEA at the state's q̈) and M (CRBA) at the first
+    REFERENCE_STATES states of each robot, parsed from the URDF by Pinocchio itself; rows
+    `robot, k, quantity, values...` in the declaration's order. Needs the venv's `pin`."""
+    import pinocchio  # the venv's wheel; only this subcommand needs it
+
+    states = HERE / "build" / "reference-states.tsv"
+    states.parent.mkdir(exist_ok=True)
+    write_states(states)
+    rows, names = [f"# pinocchio {pinocchio.__version__}"], {}
+    for line in states.read_text().splitlines():
+        robot, kind, *rest = line.split("\t")
+        if kind == "names":
+            names[robot] = rest
+            continue
+        if int(kind) >= REFERENCE_STATES:
+            continue
+        model = pinocchio.buildModelFromUrdf(str(URDF_DIR / f"{robot}.urdf"))
+        data = model.createData()
+        perm = [model.joints[model.getJointId(c)].idx_v for c in names[robot]]
+        n = len(perm)
+        q, v, a = (np.zeros(n) for _ in range(3))
+        values = np.array([float(x) for x in rest])
+        q[perm], v[perm], a[perm] = values[:n], values[n:2 * n], values[2 * n:]
+        qdd = pinocchio.aba(model, data, q, v, np.zeros(n))[perm]
+        tau = pinocchio.rnea(model, data, q, v, a)[perm]
+        mass = pinocchio.crba(model, data, q)
+        mass = (np.triu(mass) + np.triu(mass, 1).T)[np.ix_(perm, perm)]
+        for quantity, x in (("state", values), ("qdd", qdd), ("tau", tau),
+                            ("M", mass.ravel())):
+            rows.append("\t".join([robot, kind, quantity] + [repr(float(y)) for y in x]))
+    path.write_text("\n".join(rows) + "\n")
+
+
 def main() -> None:
     if sys.argv[1:2] == ["states"] and len(sys.argv) == 3:
         write_states(Path(sys.argv[2]))
+        return
+    if sys.argv[1:2] == ["reference"] and len(sys.argv) == 3:
+        write_reference(Path(sys.argv[2]))
         return
     if len(sys.argv) != 1:
         sys.exit(__doc__)
