@@ -18,8 +18,8 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use lagrange::prelude::*;
-use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
 use lagrange_robots::quadruped::Quadruped;
+use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
 use std::error::Error as StdError;
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
@@ -67,7 +67,11 @@ enum Label {
 }
 
 impl Label {
-    const ALL: [Label; 3] = [Label::Accelerations, Label::InverseDynamics, Label::MassMatrix];
+    const ALL: [Label; 3] = [
+        Label::Accelerations,
+        Label::InverseDynamics,
+        Label::MassMatrix,
+    ];
 
     fn name(self) -> &'static str {
         match self {
@@ -98,14 +102,22 @@ fn read_states(path: &Path) -> BoxResult<Vec<(String, Rows)>> {
         let rest = record.iter().skip(2);
         if kind == "names" {
             let names = rest.map(str::to_owned).collect();
-            robots.push((robot.to_owned(), Rows { names, states: Vec::new() }));
+            robots.push((
+                robot.to_owned(),
+                Rows {
+                    names,
+                    states: Vec::new(),
+                },
+            ));
             continue;
         }
         let rows = match robots.last_mut() {
             Some((name, rows)) if name == robot => rows,
             _ => return Err(format!("state row of `{robot}` before its names row").into()),
         };
-        let values = rest.map(str::parse).collect::<std::result::Result<Vec<f64>, _>>()?;
+        let values = rest
+            .map(str::parse)
+            .collect::<std::result::Result<Vec<f64>, _>>()?;
         if values.len() != 3 * rows.names.len() {
             return Err(format!("state row of `{robot}` has {} values", values.len()).into());
         }
@@ -128,7 +140,16 @@ fn states<M: Mechanism<N>, const N: usize>(
     Ok(rows
         .states
         .iter()
-        .map(|s| (State { t: 0.0, q: part(s, 0), v: part(s, 1) }, part(s, 2)))
+        .map(|s| {
+            (
+                State {
+                    t: 0.0,
+                    q: part(s, 0),
+                    v: part(s, 1),
+                },
+                part(s, 2),
+            )
+        })
         .collect())
 }
 
@@ -189,7 +210,9 @@ fn time_batches(mut batch: impl FnMut()) -> (f64, f64, u64) {
         }
     }
     let iters = (iters as f64 * REP_NS / elapsed) as u64 + 1;
-    let mut per: Vec<f64> = (0..REPS).map(|_| run(&mut batch, iters) / iters as f64).collect();
+    let mut per: Vec<f64> = (0..REPS)
+        .map(|_| run(&mut batch, iters) / iters as f64)
+        .collect();
     per.sort_by(f64::total_cmp);
     (per[0], per[REPS / 2], iters)
 }
@@ -205,10 +228,20 @@ fn run<M: Mechanism<N>, const N: usize>(
         Mode::Values { .. } => {
             for (k, (state, qdd)) in states.iter().enumerate() {
                 print_values(robot, "qdd", k, sys.accelerations(state)?.to_array());
-                print_values(robot, "tau", k, sys.inverse_dynamics(state, qdd)?.to_array());
+                print_values(
+                    robot,
+                    "tau",
+                    k,
+                    sys.inverse_dynamics(state, qdd)?.to_array(),
+                );
                 // Row-major: M(i, j) for i, then j.
                 let m = sys.mass_matrix(state)?;
-                print_values(robot, "M", k, (0..N).flat_map(|i| (0..N).map(move |j| m[(i, j)])));
+                print_values(
+                    robot,
+                    "M",
+                    k,
+                    (0..N).flat_map(|i| (0..N).map(move |j| m[(i, j)])),
+                );
             }
         }
         Mode::Time { .. } => {

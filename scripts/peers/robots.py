@@ -32,6 +32,7 @@ Plain Python 3.11 with numpy.
 q, q̇, q̈): the reference of `lagrange-bench/robots/tests/pinocchio.rs`.
 """
 
+import subprocess
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -325,6 +326,9 @@ def main() -> None:
         (URDF_DIR / f"{robot.name}.urdf").write_text(urdf(robot))
         (RUST_DIR / f"{robot.name}.rs").write_text(declaration(robot))
         print(f"{robot.name}: {len(robot.links)} joints", file=sys.stderr)
+    # The declarations laid out as `cargo fmt` keeps them.
+    subprocess.run(["rustfmt", "--edition", "2021"]
+                   + [str(RUST_DIR / f"{robot.name}.rs") for robot in robots()], check=True)
 
 
 if __name__ == "__main__":

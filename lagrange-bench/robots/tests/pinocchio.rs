@@ -12,8 +12,8 @@
 //! (a wrong inertia, offset or rotation changes the result at the 1e-3 level or more).
 
 use lagrange::prelude::*;
-use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
 use lagrange_robots::quadruped::Quadruped;
+use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
 
 const REFERENCE: &str = include_str!("pinocchio.tsv");
 const TOLERANCE: f64 = 1e-10;
@@ -36,8 +36,14 @@ fn reference(robot: &str, k: usize, quantity: &str) -> Vec<f64> {
 fn assert_close(what: &str, x: &[f64], expected: &[f64]) {
     assert_eq!(x.len(), expected.len(), "{what}: length");
     let size = expected.iter().fold(0.0_f64, |m, e| m.max(e.abs()));
-    let err = x.iter().zip(expected).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
-    assert!(err <= TOLERANCE * size, "{what}: differs from Pinocchio by {err:e} (size {size:e})");
+    let err = x
+        .iter()
+        .zip(expected)
+        .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(
+        err <= TOLERANCE * size,
+        "{what}: differs from Pinocchio by {err:e} (size {size:e})"
+    );
 }
 
 fn agrees_with_pinocchio<M: Mechanism<N>, const N: usize>(sys: M, robot: &str) {
@@ -45,14 +51,34 @@ fn agrees_with_pinocchio<M: Mechanism<N>, const N: usize>(sys: M, robot: &str) {
     for k in 0..2 {
         let s = reference(robot, k, "state");
         let part = |i: usize| M::Coords::from_array(std::array::from_fn(|j| s[i * N + j]));
-        let state = State { t: 0.0, q: part(0), v: part(1) };
+        let state = State {
+            t: 0.0,
+            q: part(0),
+            v: part(1),
+        };
         let qdd = sys.accelerations(&state).expect("accelerations");
-        assert_close(&format!("{robot} q̈ at state {k}"), &qdd.to_array(), &reference(robot, k, "qdd"));
-        let tau = sys.inverse_dynamics(&state, &part(2)).expect("inverse dynamics");
-        assert_close(&format!("{robot} τ at state {k}"), &tau.to_array(), &reference(robot, k, "tau"));
+        assert_close(
+            &format!("{robot} q̈ at state {k}"),
+            &qdd.to_array(),
+            &reference(robot, k, "qdd"),
+        );
+        let tau = sys
+            .inverse_dynamics(&state, &part(2))
+            .expect("inverse dynamics");
+        assert_close(
+            &format!("{robot} τ at state {k}"),
+            &tau.to_array(),
+            &reference(robot, k, "tau"),
+        );
         let m = sys.mass_matrix(&state).expect("mass matrix");
-        let rows: Vec<f64> = (0..N).flat_map(|i| (0..N).map(move |j| m[(i, j)])).collect();
-        assert_close(&format!("{robot} M at state {k}"), &rows, &reference(robot, k, "M"));
+        let rows: Vec<f64> = (0..N)
+            .flat_map(|i| (0..N).map(move |j| m[(i, j)]))
+            .collect();
+        assert_close(
+            &format!("{robot} M at state {k}"),
+            &rows,
+            &reference(robot, k, "M"),
+        );
     }
 }
 
