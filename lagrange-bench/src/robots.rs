@@ -27,6 +27,9 @@ use std::time::Instant;
 
 type BoxResult<T> = std::result::Result<T, Box<dyn StdError>>;
 
+/// A state of the states file and the q̈ at which inverse dynamics is evaluated there.
+type Sample<C> = (State<C>, C);
+
 #[derive(Parser)]
 #[command(about = "lagrange's side of the robot peer benchmark (scripts/peers/robots.sh)")]
 struct Cli {
@@ -131,7 +134,7 @@ fn read_states(path: &Path) -> BoxResult<Vec<(String, Rows)>> {
 fn states<M: Mechanism<N>, const N: usize>(
     robot: &str,
     rows: &Rows,
-) -> BoxResult<Vec<(State<M::Coords>, M::Coords)>> {
+) -> BoxResult<Vec<Sample<M::Coords>>> {
     let declared = <M::Coords as Coordinates<N>>::NAMES;
     if rows.names != declared {
         return Err(format!("`{robot}`: the file's coordinates are not the declaration's").into());
@@ -167,7 +170,7 @@ fn print_values(robot: &str, quantity: &str, k: usize, values: impl IntoIterator
 fn call<M: Mechanism<N>, const N: usize>(
     sys: &M,
     label: Label,
-    (state, qdd): &(State<M::Coords>, M::Coords),
+    (state, qdd): &Sample<M::Coords>,
 ) -> lagrange::Result<()> {
     match label {
         Label::Accelerations => {
