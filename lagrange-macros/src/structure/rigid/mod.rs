@@ -403,16 +403,20 @@ fn same(a: &[Factor], b: &[Factor]) -> bool {
 /// (no own offsets), no constant rotation of the parent's turns the offsets, and each offset is an
 /// unturned vector with that component a literal zero.
 fn offset_zeros(nodes: &[Node], node: &Node) -> [bool; 3] {
-    let parent_adds = node.parent.is_some_and(|p| {
-        let parent = &nodes[p];
-        !parent.after.is_empty() || (node.anchored && !parent.own.is_empty())
-    });
-    if parent_adds {
+    let parent = node.parent.map(|p| &nodes[p]);
+    if parent.is_some_and(|p| !p.after.is_empty()) {
         return [false; 3];
     }
-    std::array::from_fn(|k| {
-        node.offset
-            .iter()
-            .all(|o| o.factors.is_empty() && o.zeros[k])
-    })
+    let from_parent = match (node.anchored, parent) {
+        (true, Some(p)) => zeros(&p.own),
+        _ => [true; 3],
+    };
+    let own = zeros(&node.offset);
+    std::array::from_fn(|k| from_parent[k] && own[k])
+}
+
+/// The components of Σ X c that are structurally zero: those every unturned vector has as a
+/// literal zero (none when a vector is turned).
+fn zeros(offsets: &[Offset]) -> [bool; 3] {
+    std::array::from_fn(|k| offsets.iter().all(|o| o.factors.is_empty() && o.zeros[k]))
 }
