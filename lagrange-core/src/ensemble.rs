@@ -101,6 +101,18 @@
 //! Nothing here launches workers or moves results between machines: that is the job scheduler's
 //! and the file system's, which already do it well.
 
+mod cells;
+#[cfg(feature = "mpi")]
+pub mod mpi;
+#[cfg(feature = "parquet")]
+mod part_file;
+#[cfg(feature = "parquet")]
+pub mod parts;
+
+pub use cells::Cells;
+#[cfg(feature = "parquet")]
+pub use parts::{PartError, Parts, Shard, ShardRun};
+
 #[cfg(feature = "sweeps")]
 use indicatif::{ProgressBar, ProgressStyle};
 #[cfg(feature = "sweeps")]
