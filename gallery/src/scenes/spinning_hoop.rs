@@ -9,6 +9,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -74,12 +75,24 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let h0 = sys.energy_function(&s).expect("h");
     let h0_exact = jacobi(s.q.theta, s.v.theta);
     let (mut h_trace, mut e_trace, mut theta_trace) = (Vec::new(), Vec::new(), Vec::new());
+    // The hoop turns about the vertical axis through its top and bottom.
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("top", &[0.0, 0.0, r])
+        .and_then(|f| {
+            f.fixed_point("bottom", &[0.0, 0.0, -r])?
+                .link("top", "bottom")?
+                .trail("bead")
+        })
+        .expect("the hoop's axis");
+    film.push(&sys, &s).expect("a finite state");
     sys.simulate::<Rk4>(&mut s, 1e-3, 10_000, |s| {
+        film.push(&sys, s).expect("a finite state");
         h_trace.push((s.t, sys.energy_function(s).expect("h")));
         e_trace.push((s.t, sys.energy(s).expect("T + V")));
         theta_trace.push((s.t, s.q.theta));
     })
     .expect("simulation");
+    let _ = film.write_html(plots.join("spinning_hoop.html"));
     let (e_min, e_max) = e_trace
         .iter()
         .fold((f64::MAX, f64::MIN), |(a, b), &(_, e)| (a.min(e), b.max(e)));
