@@ -4,31 +4,7 @@
 
 use lagrange::animation::{AnimationError, BodyRef, Drawable, Link, Recorder, Shape};
 use lagrange::prelude::*;
-
-#[mechanism]
-pub mod double_pendulum {
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-    pub struct DoublePendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l
-    }
-    #[particle(mass = m)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::double_pendulum::double_pendulum;
 
 #[mechanism]
 pub mod chain {
@@ -94,8 +70,10 @@ pub mod top {
 
 fn pendulum() -> double_pendulum::DoublePendulum {
     double_pendulum::DoublePendulum {
-        m: 1.0,
-        l: 1.0,
+        m1: 1.0,
+        m2: 1.0,
+        l1: 1.0,
+        l2: 1.0,
         g: 9.81,
     }
 }

@@ -12,7 +12,6 @@ pub use super::spinning_hoop as scene;
 use crate::plot::{self, Series};
 use crate::Check;
 use lagrange::analysis::{continuation, normal_modes, stability, EquilibriumOptions, Stability};
-use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use scene::spinning_hoop::{Coords, SpinningHoop};
 use std::path::Path;
@@ -72,14 +71,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let mut s = scene::spinning_hoop::State::at_rest(Coords {
         theta: theta_star - 0.15,
     });
-    let mut film = Recorder::new(&spun).title(SCENE);
-    film.fixed_point("top", &[0.0, 0.0, r])
-        .and_then(|f| {
-            f.fixed_point("bottom", &[0.0, 0.0, -r])?
-                .link("top", "bottom")?
-                .trail("bead")
-        })
-        .expect("the hoop's axis");
+    let mut film = scene::recorder(&spun, SCENE);
     if film.push(&spun, &s).is_ok()
         && spun
             .simulate::<Rk4>(&mut s, 1e-3, 4000, film.observer(&spun))

@@ -46,6 +46,23 @@ pub mod spinning_hoop {
 
 const SCENE: &str = "bead on a spinning hoop";
 
+/// A recorder of the hoop titled `title`: the vertical axis it turns about, through its top and
+/// bottom, and the bead's path.
+pub fn recorder(
+    sys: &spinning_hoop::SpinningHoop,
+    title: &str,
+) -> Recorder<spinning_hoop::SpinningHoop, 1> {
+    let mut film = Recorder::new(sys).title(title);
+    film.fixed_point("top", &[0.0, 0.0, sys.r])
+        .and_then(|f| {
+            f.fixed_point("bottom", &[0.0, 0.0, -sys.r])?
+                .link("top", "bottom")?
+                .trail("bead")
+        })
+        .expect("the hoop's axis");
+    film
+}
+
 pub fn run(plots: &Path) -> Vec<Check> {
     use spinning_hoop::{Coords, SpinningHoop, State};
     let sys = SpinningHoop {
@@ -75,15 +92,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let h0 = sys.energy_function(&s).expect("h");
     let h0_exact = jacobi(s.q.theta, s.v.theta);
     let (mut h_trace, mut e_trace, mut theta_trace) = (Vec::new(), Vec::new(), Vec::new());
-    // The hoop turns about the vertical axis through its top and bottom.
-    let mut film = Recorder::new(&sys).title(SCENE);
-    film.fixed_point("top", &[0.0, 0.0, r])
-        .and_then(|f| {
-            f.fixed_point("bottom", &[0.0, 0.0, -r])?
-                .link("top", "bottom")?
-                .trail("bead")
-        })
-        .expect("the hoop's axis");
+    let mut film = recorder(&sys, SCENE);
     film.push(&sys, &s).expect("a finite state");
     sys.simulate::<Rk4>(&mut s, 1e-3, 10_000, |s| {
         film.push(&sys, s).expect("a finite state");

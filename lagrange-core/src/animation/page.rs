@@ -65,8 +65,7 @@ fn is_rigid(item: &Item) -> bool {
 /// box is widened by the axis length where a rigid body is drawn, so its axes stay in view.
 fn extent_and_axis<M: Drawable<N>, const N: usize>(r: &Recorder<M, N>) -> ([[f64; 3]; 2], f64) {
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-    for k in 0..r.frames() {
-        let frame = r.frame(k).expect("every frame up to frames() exists");
+    for frame in r.every_frame() {
         for item in &r.items {
             let p = position(item, frame);
             for i in 0..3 {
@@ -89,10 +88,7 @@ fn extent_and_axis<M: Drawable<N>, const N: usize>(r: &Recorder<M, N>) -> ([[f64
 /// The recording as JSON, safe inside a `<script>` element (no `<` is left in it).
 fn scene_json<M: Drawable<N>, const N: usize>(r: &Recorder<M, N>) -> String {
     let (extent, axis) = extent_and_axis(r);
-    let frames = (0..r.frames())
-        .flat_map(|k| r.frame(k).expect("every frame up to frames() exists"))
-        .map(|&x| x as f32)
-        .collect();
+    let frames = r.every_frame().flatten().map(|&x| x as f32).collect();
     let scene = Scene {
         title: r.page_title(),
         dim: r.dim,

@@ -382,9 +382,15 @@
     const data = document.getElementById("lagrange-data");
     const root = document.getElementById("lagrange-animation");
     if (!data || !root) return;
-    // Inside another page (the gallery's index), which shows the title itself.
-    if (window.self !== window.top) document.body.classList.add("lagrange-embedded");
+    // Inside another page (the gallery's index), which shows the title itself and is told the
+    // height the player needs.
+    const embedded = window.self !== window.top;
+    if (embedded) document.body.classList.add("lagrange-embedded");
     players.push(new Player(root, JSON.parse(data.textContent)));
+    if (embedded) {
+      const height = Math.ceil(root.parentElement.getBoundingClientRect().bottom);
+      window.parent.postMessage({ lagrangeHeight: height }, "*");
+    }
     // `?probe=<JSON>`: the probe's result is written into the page, for a headless browser that
     // dumps the document.
     const query = new URLSearchParams(window.location.search);

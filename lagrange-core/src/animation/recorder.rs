@@ -427,6 +427,11 @@ impl<M: Drawable<N>, const N: usize> Recorder<M, N> {
         }
     }
 
+    /// Every frame's values, kept then pending.
+    pub(super) fn every_frame(&self) -> impl Iterator<Item = &[f64]> {
+        (0..self.frames()).filter_map(|k| self.frame(k))
+    }
+
     /// The page's title.
     pub(super) fn page_title(&self) -> &str {
         &self.title
