@@ -37,6 +37,6 @@
       frame.contentWindow.postMessage({ lagrangeProbe: requests[frame.dataset.scene] || {} }, "*");
     }
     // Whatever answered by then: a scene that did not is missing from the answers.
-    setTimeout(write, 5000);
+    setTimeout(write, 3000);
   });
 })();

@@ -117,7 +117,7 @@ fn scene_json<M: Drawable<N>, const N: usize>(r: &Recorder<M, N>) -> String {
         axis,
         extent,
         stride: r.stride,
-        times: r.frame_times(),
+        times: r.frame_times().to_vec(),
         frames,
     };
     serde_json::to_string(&scene)

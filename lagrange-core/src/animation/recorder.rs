@@ -118,8 +118,10 @@ pub(super) struct Item {
 ///
 /// Feed it every state of a simulation — [`push`](Self::push) in a loop, or
 /// [`observer`](Self::observer) as a simulation's observer — and it keeps the first state, then
-/// the first state at or after each multiple of `1 / frame_rate` from it, and the last state
-/// pushed: a long run at a small step stays a few frames per second of simulated time. Every
+/// the first state at or after each multiple of `1 / frame_rate` from it: a long run at a small
+/// step stays a few frames per second of simulated time, and a state that is not kept costs a
+/// finiteness check. [`push_frame`](Self::push_frame) keeps a state whatever its time (the end of
+/// a run, an event). Every
 /// body and point of the declaration is drawn; [`trail`](Self::trail) adds the path of a point,
 /// [`mark`](Self::mark) a point fixed in a rigid body, [`fixed_point`](Self::fixed_point) and
 /// [`link`](Self::link) what the declaration does not name (a pivot, the line from it to a bob).
@@ -137,12 +139,10 @@ pub struct Recorder<M, const N: usize> {
     /// Kept frames: their times, and `stride` values each.
     pub(super) times: Vec<f64>,
     pub(super) values: Vec<f64>,
-    /// The time of the first frame and of the next one due.
+    /// The time of the first frame, of the next one due, and of the last state pushed.
     start: Option<f64>,
     next_due: f64,
-    /// The last state pushed, when it was not kept: its time and values.
-    pending: Option<f64>,
-    pending_values: Vec<f64>,
+    last: Option<f64>,
     /// Scratch: x at the state being pushed, and its frame values.
     rows: Vec<f64>,
     scratch: Vec<f64>,
@@ -178,8 +178,7 @@ impl<M: Drawable<N>, const N: usize> Recorder<M, N> {
             values: Vec::new(),
             start: None,
             next_due: 0.0,
-            pending: None,
-            pending_values: Vec::new(),
+            last: None,
             rows: Vec::new(),
             scratch: Vec::new(),
             deferred: None,
@@ -347,20 +346,49 @@ impl<M: Drawable<N>, const N: usize> Recorder<M, N> {
         }
     }
 
-    /// Records `state` of `sys`: kept as a frame when it is the first or one is due, otherwise
-    /// remembered as the last state (shown at the end unless a later one replaces it).
+    /// Records `state` of `sys`: kept as a frame when it is the first state pushed or a frame is
+    /// due, otherwise only checked and its time noted.
     ///
     /// Errors: a state that is not finite ([`AnimationError::State`]), earlier than the last one
-    /// pushed ([`AnimationError::TimeGoesBack`]), or placing a body at a non-finite position
-    /// ([`AnimationError::NonFinitePosition`]). The recorder is unchanged on error.
+    /// pushed ([`AnimationError::TimeGoesBack`]), or, kept, placing a body at a non-finite
+    /// position ([`AnimationError::NonFinitePosition`]). The recorder is unchanged on error.
     pub fn push(&mut self, sys: &M, state: &State<M::Coords>) -> Result<()> {
+        let q = self.check(state)?;
+        let due = self.times.is_empty() || state.t >= self.next_due - 1e-9 * self.interval;
+        if due {
+            self.keep(sys, state.t, &q)?;
+        }
+        self.last = Some(state.t);
+        Ok(())
+    }
+
+    /// Records `state` of `sys` as a frame whatever its time (unless it is the last frame kept
+    /// already): the last state of a run, or an event, shown as it is.
+    ///
+    /// Errors: those of [`push`](Self::push).
+    pub fn push_frame(&mut self, sys: &M, state: &State<M::Coords>) -> Result<()> {
+        let q = self.check(state)?;
+        if self.times.last() != Some(&state.t) {
+            self.keep(sys, state.t, &q)?;
+        }
+        self.last = Some(state.t);
+        Ok(())
+    }
+
+    /// `state`'s coordinates, when it is finite and not earlier than the last state pushed.
+    fn check(&self, state: &State<M::Coords>) -> Result<[f64; N]> {
         let (t, q, v) = (state.t, state.q.to_array(), state.v.to_array());
         check_state(&<M::Coords as Coordinates<N>>::NAMES, t, &q, &v)?;
-        let last = self.pending.or(self.times.last().copied());
-        if let Some(last) = last.filter(|&last| t < last) {
-            return Err(AnimationError::TimeGoesBack { t, last });
+        match self.last {
+            Some(last) if t < last => Err(AnimationError::TimeGoesBack { t, last }),
+            _ => Ok(q),
         }
-        sys.cartesian_rows(t, &q, &mut self.rows);
+    }
+
+    /// Keeps the state at (t, q) as a frame, and sets the next one due at the first multiple of
+    /// `1 / frame_rate` from the first frame after t.
+    fn keep(&mut self, sys: &M, t: f64, q: &[f64; N]) -> Result<()> {
+        sys.cartesian_rows(t, q, &mut self.rows);
         frame_values(&self.items, &self.rows, &mut self.scratch);
         if let Some(bad) = self.items.iter().find(|i| {
             let values = &self.scratch[i.offset..i.offset + i.width];
@@ -369,21 +397,11 @@ impl<M: Drawable<N>, const N: usize> Recorder<M, N> {
             let name = bad.name.clone();
             return Err(AnimationError::NonFinitePosition { name, t });
         }
-        let due = match self.start {
-            None => true,
-            Some(_) => t >= self.next_due - 1e-9 * self.interval,
-        };
-        if due {
-            let t0 = *self.start.get_or_insert(t);
-            let k = ((t - t0) / self.interval + 1e-9).floor();
-            self.next_due = t0 + (k + 1.0) * self.interval;
-            self.times.push(t);
-            self.values.extend_from_slice(&self.scratch);
-            self.pending = None;
-        } else {
-            std::mem::swap(&mut self.pending_values, &mut self.scratch);
-            self.pending = Some(t);
-        }
+        let t0 = *self.start.get_or_insert(t);
+        let k = ((t - t0) / self.interval + 1e-9).floor();
+        self.next_due = t0 + (k + 1.0) * self.interval;
+        self.times.push(t);
+        self.values.extend_from_slice(&self.scratch);
         Ok(())
     }
 
@@ -400,14 +418,14 @@ impl<M: Drawable<N>, const N: usize> Recorder<M, N> {
         }
     }
 
-    /// The frames the page shows: those kept, and the last state pushed if it was not kept.
+    /// The frames kept: what the page shows.
     pub fn frames(&self) -> usize {
-        self.times.len() + usize::from(self.pending.is_some())
+        self.times.len()
     }
 
-    /// The time of every frame the page shows.
-    pub fn frame_times(&self) -> Vec<f64> {
-        self.times.iter().copied().chain(self.pending).collect()
+    /// The time of every frame kept.
+    pub fn frame_times(&self) -> &[f64] {
+        &self.times
     }
 
     /// Where `name` (a body, member, mark or fixed point) is in `frame`: its position, with z = 0
@@ -417,17 +435,14 @@ impl<M: Drawable<N>, const N: usize> Recorder<M, N> {
         Some(position(item, self.frame(frame)?))
     }
 
-    /// The values of `frame`, kept or pending.
+    /// The values of `frame`.
     pub(super) fn frame(&self, frame: usize) -> Option<&[f64]> {
-        let kept = self.times.len();
-        match frame {
-            k if k < kept => Some(&self.values[k * self.stride..(k + 1) * self.stride]),
-            k if k == kept && self.pending.is_some() => Some(&self.pending_values),
-            _ => None,
-        }
+        self.values
+            .get(frame * self.stride..(frame + 1) * self.stride)
+            .filter(|_| frame < self.times.len())
     }
 
-    /// Every frame's values, kept then pending.
+    /// Every frame's values, in order.
     pub(super) fn every_frame(&self) -> impl Iterator<Item = &[f64]> {
         (0..self.frames()).filter_map(|k| self.frame(k))
     }
