@@ -1,5 +1,5 @@
 //! See it move: two mechanisms declared here — a double pendulum in the plane and an arm of two
-//! rigid rods in space — simulated and recorded into self-contained HTML animations,
+//! rigid rods in space, declared by their joint frames — simulated and recorded into self-contained HTML animations,
 //! `plots/animation_double_pendulum.html` and `plots/animation_arm.html`. Open them in a browser:
 //! play, pause, drag the time slider, change the speed; turn the arm's camera by dragging, zoom with
 //! the wheel. Each page carries its player and its trajectory, and needs no network.
@@ -60,22 +60,21 @@ pub mod arm {
         pub g: f64,
     }
 
-    /// A uniform rod of length l along its body z axis, its near end at the shoulder (the origin):
-    /// moments m l²/12 across it, and a thin rod's small one along it.
-    #[rigid_body(mass = m, inertia = [m * l * l / 12.0, m * l * l / 12.0, m * l * l / 1200.0])]
+    /// A uniform rod of length l along its frame's z axis, declared by its joint frame as a
+    /// robot's link is: the frame at the shoulder (the origin), the centre of mass `com` halfway
+    /// along; moments m l²/12 across the rod, and a thin rod's small one along it. The animation
+    /// draws the frame, at the joint.
+    #[rigid_body(mass = m, com = vec3(0.0, 0.0, 0.5 * l),
+                 inertia = [m * l * l / 12.0, m * l * l / 12.0, m * l * l / 1200.0])]
     fn upper() -> Spatial {
-        let turn = rot_z(yaw) * rot_y(pitch);
-        spatial(turn * vec3(0.0, 0.0, 0.5 * l), turn)
+        spatial(vec3(0.0, 0.0, 0.0), rot_z(yaw) * rot_y(pitch))
     }
 
-    /// The same rod, hinged at the upper arm's far end.
-    #[rigid_body(mass = m, inertia = [m * l * l / 12.0, m * l * l / 12.0, m * l * l / 1200.0])]
+    /// The same rod, its frame at the elbow: the upper arm's far end, turned about its y axis.
+    #[rigid_body(mass = m, com = vec3(0.0, 0.0, 0.5 * l),
+                 inertia = [m * l * l / 12.0, m * l * l / 12.0, m * l * l / 1200.0])]
     fn forearm() -> Spatial {
-        let turn = upper.rotation * rot_y(elbow);
-        spatial(
-            upper.point(vec3(0.0, 0.0, 0.5 * l)) + turn * vec3(0.0, 0.0, 0.5 * l),
-            turn,
-        )
+        upper.joint(vec3(0.0, 0.0, l), rot_y(elbow))
     }
 
     #[gravity]
@@ -137,11 +136,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         },
     );
     let mut recorder = Recorder::new(&arm).title("An arm of two rods swinging in space");
+    // Each link is drawn at its joint (the shoulder, the elbow), the line between them from the
+    // declaration; the hand is the forearm's far end.
     recorder
-        .fixed_point("shoulder", &[0.0, 0.0, 0.0])?
-        .link("shoulder", "upper")?
-        .mark("elbow", "upper", &[0.0, 0.0, 0.4])?
-        .mark("hand", "forearm", &[0.0, 0.0, 0.4])?
+        .mark("hand", "forearm", &[0.0, 0.0, 0.8])?
         .trail("hand")?;
     recorder.push(&arm, &s)?;
     arm.simulate::<Rk4>(&mut s, 1e-3, 10_000, recorder.observer(&arm))?;

@@ -68,6 +68,29 @@ pub mod top {
     }
 }
 
+/// Two links declared by their joint frames: the centre of mass off each frame's origin, and the
+/// first link's full tensor turning its principal axes away from the frame's.
+#[mechanism]
+pub mod framed {
+    pub struct Coords {
+        pub q1: f64,
+        pub q2: f64,
+    }
+    pub struct Framed {
+        pub m: f64,
+        pub d: f64,
+    }
+    #[rigid_body(mass = m, com = vec3(0.0, 0.1, 0.3),
+                 inertia = [[0.02, 0.004, 0.0], [0.004, 0.03, 0.001], [0.0, 0.001, 0.015]])]
+    fn link1() -> Spatial {
+        spatial(vec3(0.0, 0.0, 0.0), rot_z(q1))
+    }
+    #[rigid_body(mass = m, com = vec3(0.2, 0.0, 0.0), inertia = [0.01, 0.02, 0.02])]
+    fn link2() -> Spatial {
+        link1.joint(vec3(0.0, 0.0, d), rot_y(q2))
+    }
+}
+
 fn pendulum() -> double_pendulum::DoublePendulum {
     double_pendulum::DoublePendulum {
         m1: 1.0,
@@ -210,6 +233,53 @@ fn frames_hold_the_bodies_and_marks() -> Result<(), Box<dyn std::error::Error>> 
         recorder.position("edge", 0).unwrap(),
         [edge.x, edge.y, 0.0]
     ));
+    Ok(())
+}
+
+/// A body declared by its frame is drawn at that frame — its origin, and its axes (a point marked
+/// on it turns with the frame, not with the principal axes x holds) — as `Bodies` gives it.
+#[test]
+fn a_body_declared_by_its_frame_is_drawn_at_its_frame() -> Result<(), Box<dyn std::error::Error>> {
+    let sys = framed::Framed { m: 1.0, d: 0.5 };
+    let state = framed::State::at_rest(framed::Coords { q1: 0.4, q2: -0.9 });
+    let mut recorder = Recorder::new(&sys);
+    recorder
+        .mark("link1 x", "link1", &[1.0, 0.0, 0.0])?
+        .mark("link1 com", "link1", &[0.0, 0.1, 0.3])?
+        .mark("link2 z", "link2", &[0.0, 0.0, 1.0])?;
+    recorder.push(&sys, &state)?;
+    let bodies = sys.bodies(&state);
+    let xyz = |p: Vec3<f64>| [p.x, p.y, p.z];
+    // The same position function evaluated twice: equal to the bit.
+    assert_eq!(
+        recorder.position("link1", 0),
+        Some(xyz(bodies.link1.position))
+    );
+    assert_eq!(
+        recorder.position("link2", 0),
+        Some(xyz(bodies.link2.position))
+    );
+    // Drawn at the joint, not at the centre of mass the Cartesian model holds.
+    let x = <framed::Framed as lagrange::model::Model<2, 24>>::cartesian(&sys, 0.0, &[0.4, -0.9]);
+    assert_ne!(recorder.position("link2", 0), Some([x[12], x[13], x[14]]));
+    // R o summed in a different order from `point`: a few ulps of numbers of order 1.
+    let close = |a: [f64; 3], b: [f64; 3]| (0..3).all(|i| (a[i] - b[i]).abs() < 1e-15);
+    for (mark, body, offset) in [
+        ("link1 x", bodies.link1, vec3(1.0, 0.0, 0.0)),
+        ("link1 com", bodies.link1, vec3(0.0, 0.1, 0.3)),
+        ("link2 z", bodies.link2, vec3(0.0, 0.0, 1.0)),
+    ] {
+        let drawn = recorder.position(mark, 0).unwrap();
+        assert!(close(drawn, xyz(body.point(offset))), "{mark}: {drawn:?}");
+    }
+    // The link the declaration states: link2 is written from link1.
+    assert_eq!(
+        <framed::Framed as Drawable<2>>::LINKS,
+        &[Link {
+            from: body(1, 0),
+            to: body(0, 0)
+        }]
+    );
     Ok(())
 }
 

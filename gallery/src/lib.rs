@@ -39,6 +39,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     rough_plane::run,
     pushed_block::run,
     identify_pendulum::run,
+    spatial_arm::run,
 ];
 
 /// One simulated quantity against its exact value.

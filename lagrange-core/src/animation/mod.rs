@@ -5,7 +5,7 @@
 //! ([`Recorder::write_html`]) that needs nothing else: the player is JavaScript written in this
 //! crate and the trajectory is embedded in the page as data. It draws what the declaration states:
 //! particles and points as dots, planar and spatial rigid bodies with their frames (the body's axes
-//! at its centre of mass), a line from each body to the bodies its position function names
+//! at its centre of mass, or, for a body declared by its frame, at that frame's origin), a line from each body to the bodies its position function names
 //! ([`Drawable::LINKS`]), rings on the bodies each constraint row names, and the paths of chosen
 //! points ([`Recorder::trail`]). A planar mechanism is drawn in its plane; a spatial one with a
 //! camera turned by dragging the mouse and zoomed with the wheel. Play/pause, a time slider and the
@@ -83,9 +83,11 @@ pub enum Shape {
     Point2,
     /// A massless point in space: a small hollow dot.
     Point3,
-    /// A planar rigid body (`Planar`): its centre of mass and its two axes.
+    /// A planar rigid body (`Planar`): its pose's origin (the centre of mass, or the origin of
+    /// the frame it is declared by) and its two axes.
     Planar,
-    /// A spatial rigid body (`Spatial`): its centre of mass and its three axes.
+    /// A spatial rigid body (`Spatial`): its pose's origin (the centre of mass, or the origin of
+    /// the frame it is declared by) and its three axes.
     Spatial,
 }
 
@@ -176,8 +178,11 @@ pub trait Drawable<const N: usize>: Dynamics<N> {
     /// Each constraint row with the bodies and points it names, in declaration order.
     const CONSTRAINT_BODIES: &'static [ConstraintLayout];
 
-    /// x(q, t) into `rows` (cleared first): every body's rows at (t, q), laid out as
-    /// [`BodyLayout::row`] says. A recorder reuses one buffer, so a push allocates nothing.
+    /// Every body's pose at (t, q) into `rows` (cleared first), laid out as x's rows
+    /// ([`BodyLayout::row`]): the pose as the declaration names it — x itself, except that a
+    /// body declared by its frame (`#[rigid_body(com = ..)]`, or a full inertia tensor) gives
+    /// that frame, not its centre of mass and principal axes. A recorder reuses one buffer, so a
+    /// push allocates nothing.
     fn cartesian_rows(&self, t: f64, q: &[f64; N], rows: &mut Vec<f64>);
 }
 

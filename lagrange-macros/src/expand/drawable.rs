@@ -1,7 +1,8 @@
-//! The `Drawable` impl: what the declaration looks like — its bodies and points with their rows
-//! of x, the links its position functions state, the bodies each constraint names — so that
+//! The `Drawable` impl: what the declaration looks like — its bodies and points with their poses
+//! (laid out as x's rows; a body declared by its frame drawn at that frame), the links its position functions state, the bodies each constraint names — so that
 //! `lagrange::animation::Recorder` can draw any declared mechanism.
 
+use super::bodies::flatten;
 use super::{lit, private};
 use crate::check::{Dim, Model, Shape};
 use crate::named_bodies::{constraint_bodies, links, Member};
@@ -37,7 +38,7 @@ fn body_ref((body, member): Member) -> TokenStream {
 /// `impl Drawable<N> for Params`.
 pub(super) fn drawable_impl(model: &Model) -> TokenStream {
     let (p, a) = (private(), animation());
-    let (params, n, k) = (model.params_ident, lit(model.dof()), lit(model.rows));
+    let (params, n) = (model.params_ident, lit(model.dof()));
     let bodies = model.bodies.iter().map(|b| {
         let name = b.decl.ident().unraw().to_string();
         let (shape, row) = (shape(b.shape), lit(b.row));
@@ -63,14 +64,21 @@ pub(super) fn drawable_impl(model: &Model) -> TokenStream {
             let named = named.into_iter().map(body_ref);
             quote!(#a::ConstraintLayout { name: #name, bodies: &[#(#named),*] })
         });
+    // Each body's pose as `Bodies` holds it: x's rows, except that a body declared by its frame
+    // is drawn at that frame rather than at its centre of mass and principal axes.
+    let poses = model.bodies.iter().flat_map(|b| {
+        let name = b.decl.ident();
+        flatten(b, &quote!(__bodies.#name))
+    });
     quote! {
         impl #a::Drawable<#n> for #params {
             const BODIES: &'static [#a::BodyLayout] = &[#(#bodies),*];
             const LINKS: &'static [#a::Link] = &[#(#links),*];
             const CONSTRAINT_BODIES: &'static [#a::ConstraintLayout] = &[#(#constraints),*];
             fn cartesian_rows(&self, t: f64, q: &[f64; #n], rows: &mut #p::std::vec::Vec<f64>) {
+                let __bodies = self.__lagrange_bodies(t, q);
                 rows.clear();
-                rows.extend_from_slice(&<Self as #p::Model<#n, #k>>::cartesian(self, t, q));
+                rows.extend_from_slice(&[#(#poses),*]);
             }
         }
     }

@@ -28,6 +28,8 @@ use std::collections::BTreeSet;
 use syn::visit_mut::{self, VisitMut};
 use syn::{BinOp, Block, Expr, Ident, Lit, Stmt};
 
+pub mod rigid;
+
 /// A body of the tree: one point, or one member of a family of points.
 pub struct TreeBody {
     /// Index into `Model::bodies`.
@@ -364,7 +366,8 @@ pub(crate) fn condition(cond: &Expr, family: (&Ident, usize)) -> Option<bool> {
     })
 }
 
-/// The value of an index written with integer literals and the family index (`i`, `i - 1`, `3`).
+/// The value of an index written with integer literals and the family index (`i`, `i - 1`, `3`,
+/// `i % 2`).
 pub(crate) fn evaluate(expr: &Expr, family: Family) -> Option<usize> {
     match strip(expr) {
         Expr::Lit(syn::ExprLit {
@@ -379,6 +382,9 @@ pub(crate) fn evaluate(expr: &Expr, family: Family) -> Option<usize> {
             match b.op {
                 BinOp::Add(_) => l.checked_add(r),
                 BinOp::Sub(_) => l.checked_sub(r),
+                BinOp::Mul(_) => l.checked_mul(r),
+                BinOp::Rem(_) => l.checked_rem(r),
+                BinOp::Div(_) => l.checked_div(r),
                 _ => None,
             }
         }
