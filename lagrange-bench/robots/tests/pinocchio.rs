@@ -12,6 +12,7 @@
 //! (a wrong inertia, offset or rotation changes the result at the 1e-3 level or more).
 
 use lagrange::prelude::*;
+use lagrange::tree::rigid::RigidTree;
 use lagrange_robots::quadruped::Quadruped;
 use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
 
@@ -84,25 +85,35 @@ fn agrees_with_pinocchio<M: Mechanism<N>, const N: usize>(sys: M, robot: &str) {
 
 #[test]
 fn arm3_agrees_with_pinocchio() {
+    // The generated `RigidTree` impl is the proof the recursive pass is taken.
+    assert_eq!(<Arm3 as RigidTree<3, 3>>::JOINTS.len(), 3);
     agrees_with_pinocchio(Arm3 { g: 9.81 }, "arm3");
 }
 
 #[test]
 fn arm7_agrees_with_pinocchio() {
+    // The generated `RigidTree` impl is the proof the recursive pass is taken.
+    assert_eq!(<Arm7 as RigidTree<7, 7>>::JOINTS.len(), 7);
     agrees_with_pinocchio(Arm7 { g: 9.81 }, "arm7");
 }
 
 #[test]
 fn arm14_agrees_with_pinocchio() {
+    // The generated `RigidTree` impl is the proof the recursive pass is taken.
+    assert_eq!(<Arm14 as RigidTree<14, 14>>::JOINTS.len(), 14);
     agrees_with_pinocchio(Arm14 { g: 9.81 }, "arm14");
 }
 
 #[test]
 fn quadruped_agrees_with_pinocchio() {
+    // The generated `RigidTree` impl is the proof the recursive pass is taken.
+    assert_eq!(<Quadruped as RigidTree<12, 12>>::JOINTS.len(), 12);
     agrees_with_pinocchio(Quadruped { g: 9.81 }, "quadruped");
 }
 
 #[test]
 fn humanoid_agrees_with_pinocchio() {
+    // The generated `RigidTree` impl is the proof the recursive pass is taken.
+    assert_eq!(<Humanoid as RigidTree<30, 30>>::JOINTS.len(), 30);
     agrees_with_pinocchio(Humanoid { g: 9.81 }, "humanoid");
 }

@@ -36,7 +36,8 @@ impl Sweep<'_> {
         step: impl Fn(&proc_macro2::Literal, &TokenStream) -> TokenStream,
     ) -> (TokenStream, TokenStream) {
         let p = private();
-        let statements: Vec<TokenStream> = order.iter().map(|&i| step(&lit(i), &codes[i])).collect();
+        let statements: Vec<TokenStream> =
+            order.iter().map(|&i| step(&lit(i), &codes[i])).collect();
         if order.len() <= MAX_INLINED_BODIES {
             return (quote!(#(#statements)*), quote!());
         }
@@ -69,11 +70,7 @@ impl Sweep<'_> {
 /// folded.
 fn codes(model: &Model, tree: &RigidTree) -> Vec<TokenStream> {
     let p = private();
-    let (params, n, b) = (
-        model.params_ident,
-        lit(model.dof()),
-        lit(tree.nodes.len()),
-    );
+    let (params, n, b) = (model.params_ident, lit(model.dof()), lit(tree.nodes.len()));
     (0..tree.nodes.len())
         .map(|i| {
             let i = lit(i);
@@ -286,8 +283,16 @@ fn accelerations_fn(model: &Model, tree: &RigidTree) -> TokenStream {
         params: quote!(#ws, #extra),
         args: quote!(__ws, __joints, __k, #args),
     };
-    let (velocities, f1) = sweep("velocity", quote!(__q: &[S; #n], __v: &[S; #n]), quote!(__q, __v))
-        .write(&down, &code, |i, c| quote!(__ws.velocity::<#c, #n>(__joints, __k, __q, __v, #i);));
+    let (velocities, f1) = sweep(
+        "velocity",
+        quote!(__q: &[S; #n], __v: &[S; #n]),
+        quote!(__q, __v),
+    )
+    .write(
+        &down,
+        &code,
+        |i, c| quote!(__ws.velocity::<#c, #n>(__joints, __k, __q, __v, #i);),
+    );
     let (articulation, f2) = sweep("articulate", quote!(__tau: &[S; #n]), quote!(__tau))
         .write(&up, &code, |i, c| quote! {
             if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws.articulate::<#c, #n>(__joints, __k, __tau, #i) {
@@ -295,7 +300,11 @@ fn accelerations_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             }
         });
     let (accelerations, f3) = sweep("accelerate", quote!(__qdd: &mut [S; #n]), quote!(__qdd))
-        .write(&down, &code, |i, c| quote!(__ws.accelerate::<#c, #n>(__joints, __k, __qdd, #i);));
+        .write(
+            &down,
+            &code,
+            |i, c| quote!(__ws.accelerate::<#c, #n>(__joints, __k, __qdd, #i);),
+        );
     quote! {
         #f1
         #f2
@@ -357,13 +366,21 @@ fn inverse_dynamics_fn(model: &Model, tree: &RigidTree) -> TokenStream {
         params: quote!(#ws, #state),
         args: quote!(__ws, __joints, __k, __state),
     }
-    .write(&down, &code, |i, c| quote!(__ws.forward::<#c, #n>(__joints, __k, __state, #i);));
+    .write(
+        &down,
+        &code,
+        |i, c| quote!(__ws.forward::<#c, #n>(__joints, __k, __state, #i);),
+    );
     let (backward, f2) = Sweep {
         name: "backward",
         params: quote!(#ws, #tau),
         args: quote!(__ws, __joints, __k, __tau),
     }
-    .write(&up, &code, |i, c| quote!(__ws.backward::<#c, #n>(__joints, __k, __tau, #i);));
+    .write(
+        &up,
+        &code,
+        |i, c| quote!(__ws.backward::<#c, #n>(__joints, __k, __tau, #i);),
+    );
     quote! {
         #f1
         #f2

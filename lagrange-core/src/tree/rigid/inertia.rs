@@ -76,9 +76,7 @@ impl<S: Scalar> Sym3<S> {
     #[inline(always)]
     fn rotate(&self, q: &M3<f64>) -> Self {
         let g: M3<S> = map3(|i| {
-            map3(|j| {
-                self.at(0, j) * q[i][0] + self.at(1, j) * q[i][1] + self.at(2, j) * q[i][2]
-            })
+            map3(|j| self.at(0, j) * q[i][0] + self.at(1, j) * q[i][1] + self.at(2, j) * q[i][2])
         });
         let entry = |i: usize, j: usize| g[i][0] * q[j][0] + g[i][1] * q[j][1] + g[i][2] * q[j][2];
         Sym3([
@@ -135,12 +133,8 @@ impl<S: Scalar> Inertia<S> {
         let (aw, cv) = (self.a.apply(w), self.c.apply(v));
         let b = &self.b;
         Force {
-            moment: map3(|i| {
-                aw[i] + b[i][0] * v[0] + b[i][1] * v[1] + b[i][2] * v[2]
-            }),
-            force: map3(|i| {
-                cv[i] + b[0][i] * w[0] + b[1][i] * w[1] + b[2][i] * w[2]
-            }),
+            moment: map3(|i| aw[i] + b[i][0] * v[0] + b[i][1] * v[1] + b[i][2] * v[2]),
+            force: map3(|i| cv[i] + b[0][i] * w[0] + b[1][i] * w[1] + b[2][i] * w[2]),
         }
     }
 
@@ -220,12 +214,9 @@ impl<S: Scalar> Inertia<S> {
         self.a = self.a.rotate(q);
         self.c = self.c.rotate(q);
         let b = &self.b;
-        let g: M3<S> = map3(|i| {
-            map3(|j| b[0][j] * q[i][0] + b[1][j] * q[i][1] + b[2][j] * q[i][2])
-        });
-        self.b = map3(|i| {
-            map3(|j| g[i][0] * q[j][0] + g[i][1] * q[j][1] + g[i][2] * q[j][2])
-        });
+        let g: M3<S> =
+            map3(|i| map3(|j| b[0][j] * q[i][0] + b[1][j] * q[i][1] + b[2][j] * q[i][2]));
+        self.b = map3(|i| map3(|j| g[i][0] * q[j][0] + g[i][1] * q[j][1] + g[i][2] * q[j][2]));
     }
 
     /// The change of origin by r (the child's origin in the parent's coordinates, both frames
