@@ -408,3 +408,132 @@ fn links_declared_by_their_frames_with_full_tensors_agree_with_the_dense_pass() 
     agrees_with_dense::<_, 2, 24>(&sys);
     agrees_with_dense::<_, 2, 24>(&sys.validated().unwrap());
 }
+
+/// The chain of bars with its last link's end held at a point: two loop-closure rows (a
+/// four-bar linkage with the ground as the fourth bar). The tree pass gives M and b, the rows are
+/// solved on top of them.
+#[mechanism]
+pub mod bars_loop {
+    pub struct Coords {
+        pub a: f64,
+        pub b: f64,
+        pub c: f64,
+    }
+    pub struct BarsLoop {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+        pub px: f64,
+        pub py: f64,
+    }
+    #[rigid_body(mass = m, inertia = m * l * l / 12.0)]
+    fn bar1() -> Planar {
+        planar(vec2(0.5 * l, 0.0).rotated(a), a)
+    }
+    #[rigid_body(mass = m * 1.5, inertia = m * l * l / 8.0)]
+    fn bar2() -> Planar {
+        let angle = bar1.angle + b;
+        planar(
+            bar1.point(vec2(0.5 * l, 0.0)) + vec2(0.5 * l, 0.0).rotated(angle),
+            angle,
+        )
+    }
+    #[rigid_body(mass = m * 0.7, inertia = m * l * l / 10.0)]
+    fn bar3() -> Planar {
+        let angle = bar2.angle + c;
+        planar(
+            bar2.point(vec2(0.5 * l, 0.0)) + vec2(0.5 * l, 0.0).rotated(angle),
+            angle,
+        )
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+    /// The far end of bar 3, l (cos a + cos(a + b) + cos(a + b + c)) along x, held at px.
+    #[constraint]
+    fn end_x() -> f64 {
+        l * (a.cos() + (a + b).cos() + (a + b + c).cos()) - px
+    }
+    #[constraint]
+    fn end_y() -> f64 {
+        l * (a.sin() + (a + b).sin() + (a + b + c).sin()) - py
+    }
+}
+
+#[test]
+fn a_closed_loop_on_a_tree_takes_the_tree_pass_under_its_constraint_rows() {
+    assert_eq!(<bars_loop::BarsLoop as RigidTree<3, 3>>::JOINTS.len(), 3);
+    let (m, l, g) = (1.0, 0.8, 9.81);
+    // A closed configuration: the end's place at q0 is where it is held.
+    let q0 = [0.3, 0.9, -1.2];
+    let angles = |q: &[f64; 3]| [q[0], q[0] + q[1], q[0] + q[1] + q[2]];
+    let phi = angles(&q0);
+    let (px, py) = (
+        l * phi.iter().map(|p| p.cos()).sum::<f64>(),
+        l * phi.iter().map(|p| p.sin()).sum::<f64>(),
+    );
+    let sys = bars_loop::BarsLoop { m, l, g, px, py };
+    // J of the two rows: ∂/∂q_j of l Σ_i (cos φ_i, sin φ_i) sums the bars at and beyond joint j.
+    let jacobian = |q: &[f64; 3]| {
+        let phi = angles(q);
+        nalgebra::SMatrix::<f64, 2, 3>::from_fn(|r, j| {
+            (j..3)
+                .map(|i| match r {
+                    0 => -l * phi[i].sin(),
+                    _ => l * phi[i].cos(),
+                })
+                .sum()
+        })
+    };
+    let jac = jacobian(&q0);
+    // q̇ along the loop's one freedom: the null direction of J (the rows' cross product).
+    let (r0, r1) = (jac.row(0).transpose(), jac.row(1).transpose());
+    let v0: [f64; 3] = (0.7 * r0.cross(&r1) / r0.cross(&r1).norm()).into();
+    // J̇ q̇ = −l Σ_i (cos φ_i, sin φ_i) φ̇_i².
+    let rates = [v0[0], v0[0] + v0[1], v0[0] + v0[1] + v0[2]];
+    let jdot_v = nalgebra::Vector2::new(
+        -l * (0..3)
+            .map(|i| phi[i].cos() * rates[i] * rates[i])
+            .sum::<f64>(),
+        -l * (0..3)
+            .map(|i| phi[i].sin() * rates[i] * rates[i])
+            .sum::<f64>(),
+    );
+    // The reference: the KKT system [M Jᵀ; J 0] [q̈; −λ] = [𝓕 − b; −J̇ q̇] on the dense pass's M, 𝓕, b.
+    let dense = equations_of_motion::<_, f64, 3, 9>(&sys, 0.0, &q0, &v0);
+    let mut kkt = nalgebra::SMatrix::<f64, 5, 5>::zeros();
+    kkt.fixed_view_mut::<3, 3>(0, 0)
+        .copy_from(&dense.mass_matrix);
+    kkt.fixed_view_mut::<2, 3>(3, 0).copy_from(&jac);
+    kkt.fixed_view_mut::<3, 2>(0, 3).copy_from(&jac.transpose());
+    let mut rhs = nalgebra::SVector::<f64, 5>::zeros();
+    rhs.fixed_rows_mut::<3>(0)
+        .copy_from(&(dense.generalized_forces - dense.inertial_terms));
+    rhs.fixed_rows_mut::<2>(3).copy_from(&(-jdot_v));
+    let expected = kkt.lu().solve(&rhs).unwrap();
+    let scale = expected.fixed_rows::<3>(0).abs().max();
+    let s = State::new(
+        0.0,
+        bars_loop::Coords::from_array(q0),
+        bars_loop::Coords::from_array(v0),
+    );
+    for qdd in [
+        sys.accelerations(&s).unwrap().to_array(),
+        bars_loop::BarsLoop { m, l, g, px, py }
+            .validated()
+            .unwrap()
+            .accelerations(&s)
+            .unwrap()
+            .to_array(),
+    ] {
+        for j in 0..3 {
+            close(qdd[j], expected[j], scale, "q̈ under the loop's rows");
+        }
+    }
+    // And M, 𝓕 from the tree pass equal the dense pass's under the rows too.
+    let tree_m = sys.mass_matrix(&s).unwrap();
+    for (a, b) in tree_m.iter().zip(dense.mass_matrix.iter()) {
+        close(*a, *b, dense.mass_matrix.abs().max(), "M");
+    }
+}

@@ -47,7 +47,9 @@ pub(super) fn mechanism_impl(
     let prepared = match (positions, &equations) {
         (Positions::Affine { straight_line }, _) => Prepared::Affine { straight_line },
         (_, Equations::ClosedForm(count)) => Prepared::Coefficients(*count),
-        (_, Equations::Rigid(b)) => Prepared::Rigid(*b),
+        // Under constraint rows q̈ comes from the constrained solve over the tree's M and b, which
+        // computes the constants per call: nothing is prepared for it.
+        (_, Equations::Rigid(b)) if constrained.is_none() => Prepared::Rigid(*b),
         _ => Prepared::Nothing,
     };
     let prepare = prepare_impl(params, &n, &k, prepared);
