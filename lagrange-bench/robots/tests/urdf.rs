@@ -22,6 +22,8 @@ pub mod quadruped {}
 #[lagrange::urdf("../../scripts/peers/robots/humanoid.urdf")]
 pub mod humanoid {}
 
+mod common;
+
 const TOLERANCE: f64 = 1e-12;
 
 /// Random states, the same every run (a linear congruential sequence in [−1, 1)).
@@ -39,15 +41,7 @@ fn states<const N: usize>(count: usize) -> Vec<[[f64; N]; 3]> {
 }
 
 fn assert_close(what: &str, x: &[f64], expected: &[f64]) {
-    let size = expected.iter().fold(1.0_f64, |m, e| m.max(e.abs()));
-    let err = x
-        .iter()
-        .zip(expected)
-        .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
-    assert!(
-        err <= TOLERANCE * size,
-        "{what}: differs by {err:e} (size {size:e})"
-    );
+    common::assert_close(what, x, expected, TOLERANCE);
 }
 
 fn same_dynamics<A: Mechanism<N>, B: Mechanism<N>, const N: usize>(a: A, b: B, robot: &str) {
