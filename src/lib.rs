@@ -65,8 +65,8 @@ pub use lagrange_macros::mechanism;
 ///     }
 /// }
 ///
-/// use arm::{Coords, State, TwoLinkArm};
-/// let p = TwoLinkArm::default(); // the file's values, and g = 9.81
+/// use arm::{Arm, Coords, State};
+/// let p = Arm::default(); // the file's values, and g = 9.81
 /// assert_eq!((p.g, p.shoulder_damping, p.elbow_damping), (9.81, 0.3, 0.1));
 /// let sys = p.validated()?;
 /// let mut s = State::at_rest(Coords { shoulder: 0.3, elbow: -0.2 });
