@@ -56,47 +56,8 @@ fn declaration(path: &syn::LitStr, module: &syn::ItemMod) -> Result<TokenStream,
         None => format!("{written}: {}", e.message),
     })?;
     let bodies = tree::bodies(&robot)?;
-    let coords: Vec<Named> = bodies
-        .iter()
-        .map(|b| {
-            let name = &robot.joints[b.joint].name;
-            Named {
-                ident: sanitise(name, "joint"),
-                element: format!("joint `{name}`"),
-            }
-        })
-        .collect();
-    let links: Vec<Named> = bodies
-        .iter()
-        .map(|b| Named {
-            ident: sanitise(&b.link, "link"),
-            element: format!("link `{}`", b.link),
-        })
-        .collect();
-    let mut generated: Vec<Named> = Vec::new();
-    for (b, q) in bodies.iter().zip(&coords) {
-        let joint = &robot.joints[b.joint];
-        let used = [(joint.damping, "damping"), (joint.friction, "friction")];
-        for (_, what) in used.iter().filter(|(c, _)| *c != 0.0) {
-            for suffix in ["", "_force"] {
-                generated.push(Named {
-                    ident: format!("{}_{what}{suffix}", q.ident),
-                    element: format!("the {what} of joint `{}`", joint.name),
-                });
-            }
-        }
-    }
     let ty = upper_camel(&module.ident.to_string());
-    let taken = [
-        ("t", "time"),
-        ("g", "gravity's parameter"),
-        ("gravity", "gravity"),
-        ("frame", "a local of the declaration"),
-        ("Coords", "the coordinates' struct"),
-        (ty.as_str(), "the parameter struct"),
-    ];
-    let all: Vec<Named> = coords.into_iter().chain(links).chain(generated).collect();
-    distinct(&all, &taken)?;
+    let all = identifiers(&robot, &bodies, &ty)?;
     let n = bodies.len();
     let decl = emit::Declaration {
         robot: &robot,
@@ -127,6 +88,57 @@ fn declaration(path: &syn::LitStr, module: &syn::ItemMod) -> Result<TokenStream,
             #(#user)*
         }
     })
+}
+
+/// The identifiers of the coordinates (one per body, in order), then of the bodies, then of the
+/// joint forces' parameters and functions; refused when two coincide or one is the
+/// declaration's own.
+fn identifiers(
+    robot: &parse::Robot,
+    bodies: &[tree::Body],
+    ty: &str,
+) -> Result<Vec<Named>, String> {
+    let coords: Vec<Named> = bodies
+        .iter()
+        .map(|b| {
+            let name = &robot.joints[b.joint].name;
+            Named {
+                ident: sanitise(name, "joint"),
+                element: format!("joint `{name}`"),
+            }
+        })
+        .collect();
+    let links: Vec<Named> = bodies
+        .iter()
+        .map(|b| Named {
+            ident: sanitise(&b.link, "link"),
+            element: format!("link `{}`", b.link),
+        })
+        .collect();
+    let mut generated: Vec<Named> = Vec::new();
+    for (b, q) in bodies.iter().zip(&coords) {
+        let joint = &robot.joints[b.joint];
+        let used = [(joint.damping, "damping"), (joint.friction, "friction")];
+        for (_, what) in used.iter().filter(|(c, _)| *c != 0.0) {
+            for suffix in ["", "_force"] {
+                generated.push(Named {
+                    ident: format!("{}_{what}{suffix}", q.ident),
+                    element: format!("the {what} of joint `{}`", joint.name),
+                });
+            }
+        }
+    }
+    let taken = [
+        ("t", "time"),
+        ("g", "gravity's parameter"),
+        ("gravity", "gravity"),
+        ("frame", "a local of the declaration"),
+        ("Coords", "the coordinates' struct"),
+        (ty, "the parameter struct"),
+    ];
+    let all: Vec<Named> = coords.into_iter().chain(links).chain(generated).collect();
+    distinct(&all, &taken)?;
+    Ok(all)
 }
 
 /// `arm7` → `Arm7`, `two_link_arm` → `TwoLinkArm`.

@@ -7,7 +7,7 @@
 //! children are placed through the fixed joint's constant transform.
 
 use super::frames::{combine, norm, MassPart, Transform};
-use super::parse::{JointType, Robot};
+use super::parse::{Inertial, JointType, Robot};
 
 /// A mistake in the file's structure, naming the element (reported at the macro call).
 pub type Refusal = String;
@@ -103,16 +103,7 @@ pub fn bodies(robot: &Robot) -> Result<Vec<Body>, Refusal> {
             }
         };
         if let (Some(b), Some(i)) = (here.body, &robot.links[c].inertial) {
-            if i.mass > 0.0 {
-                let [xx, xy, xz, yy, yz, zz] = i.inertia;
-                let own = MassPart {
-                    mass: i.mass,
-                    centre: [0.0; 3],
-                    inertia: [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]],
-                };
-                let frame = here.transform.then(&Transform::of(&i.origin));
-                parts[b].push(own.moved(&frame));
-            }
+            parts[b].extend(link_mass(i, &here.transform));
         }
         attached[c] = Some(here);
     }
@@ -132,6 +123,18 @@ pub fn bodies(robot: &Robot) -> Result<Vec<Body>, Refusal> {
         );
     }
     Ok(bodies)
+}
+
+/// A link's inertial seen from the frame of the body it moves with (the link's frame at `link`
+/// in it); nothing for a massless inertial.
+fn link_mass(i: &Inertial, link: &Transform) -> Option<MassPart> {
+    let [xx, xy, xz, yy, yz, zz] = i.inertia;
+    let own = MassPart {
+        mass: i.mass,
+        centre: [0.0; 3],
+        inertia: [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]],
+    };
+    (i.mass > 0.0).then(|| own.moved(&link.then(&Transform::of(&i.origin))))
 }
 
 /// The joint's axis, normalised.
@@ -228,8 +231,24 @@ fn topology(robot: &Robot) -> Result<Order, Refusal> {
             ))
         }
     };
-    // Depth first from the root, children in file order: parents first, every link reached
-    // once; a link not reached lies on a loop.
+    let joints = depth_first(robot, root, &parent_of, &child_of, &parent_joint)?;
+    Ok(Order {
+        root,
+        joints,
+        parent_of,
+        child_of,
+    })
+}
+
+/// The joints depth first from the root, children in file order: parents first, every link
+/// reached once; a link not reached lies on a loop.
+fn depth_first(
+    robot: &Robot,
+    root: usize,
+    parent_of: &[usize],
+    child_of: &[usize],
+    parent_joint: &[Option<usize>],
+) -> Result<Vec<usize>, Refusal> {
     let mut joints = Vec::new();
     let mut stack = vec![root];
     while let Some(l) = stack.pop() {
@@ -245,10 +264,5 @@ fn topology(robot: &Robot) -> Result<Order, Refusal> {
             robot.joints[j].child
         ));
     }
-    Ok(Order {
-        root,
-        joints,
-        parent_of,
-        child_of,
-    })
+    Ok(joints)
 }
