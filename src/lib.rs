@@ -3,7 +3,8 @@
 //! ## The crate root
 //!
 //! The root exports, by name, what a user of a declared mechanism calls: the
-//! [`mechanism`](macro@mechanism) attribute, the [`Mechanism`] trait with its [`State`] and
+//! [`mechanism`](macro@mechanism) attribute (and [`urdf`](macro@urdf), which writes a declaration
+//! from a robot's file), the [`Mechanism`] trait with its [`State`] and
 //! [`Coordinates`], [`Validated`], the errors, the integrators, the geometry a declaration is
 //! written in, the analysis entry points with their options and results, and the constraint tools
 //! ([`Constraints`], [`ContactRk4`], [`consistent_state`], [`consistent_state_holding`],
@@ -48,6 +49,74 @@
 #![warn(missing_docs)]
 
 pub use lagrange_macros::mechanism;
+/// A robot's URDF file read at compile time into the declaration a user would write, expanded by
+/// [`mechanism`](macro@mechanism).
+///
+/// ```
+/// use lagrange::prelude::*;
+///
+/// // tests/urdf/two_link_arm.urdf: two links swinging in the x-z plane, damped joints.
+/// #[lagrange::urdf("tests/urdf/two_link_arm.urdf")]
+/// pub mod arm {
+///     /// Items beside the file's: a spring holding the elbow straight.
+///     #[generalized_force(on = elbow)]
+///     fn elbow_spring() -> f64 {
+///         -5.0 * elbow
+///     }
+/// }
+///
+/// use arm::{Arm, Coords, State};
+/// let p = Arm::default(); // the file's values, and g = 9.81
+/// assert_eq!((p.g, p.shoulder_damping, p.elbow_damping), (9.81, 0.3, 0.1));
+/// let sys = p.validated()?;
+/// let mut s = State::at_rest(Coords { shoulder: 0.3, elbow: -0.2 });
+/// for _ in 0..100 {
+///     sys.step::<Rk4>(&mut s, 1e-3)?;
+/// }
+/// println!("q(0.1) = {:?}", s.q);
+/// # Ok::<(), lagrange::Error>(())
+/// ```
+///
+/// **Form.** An attribute on a module, so that forces, torques, potentials and constraints of the
+/// user's stand beside what the file gives, naming its joints and links, as in any declaration;
+/// the module's name, in upper camel case, names the parameter struct (`arm` → `Arm`). The path
+/// is relative to the calling crate's `CARGO_MANIFEST_DIR` (not to the source file, as for
+/// `include_str!`: a procedural macro does not know its caller's file on stable Rust); the file is
+/// included in the build (`include_bytes!`), so cargo rebuilds when it changes.
+///
+/// **What the file becomes.**
+/// - `Coords`: one coordinate per revolute, continuous or prismatic joint, named after the joint
+///   (lower case, characters other than letters, digits and `_` turned into `_`, a leading digit
+///   prefixed with `joint_`, a keyword suffixed with `_`), in depth-first order from the root
+///   link, siblings in the file's order.
+/// - One `#[rigid_body]` per link moved by such a joint, named after the link (same rules, prefix
+///   `link_`), declared by its frame: `parent.joint(offset, rpy(..) * rot_z(q))` (`rot_x`,
+///   `rot_y`, `rot_z` for an axis along a coordinate axis, with `-q` for the opposite one,
+///   `rot_axis(axis, q)` otherwise), a prismatic joint as a slide of the joint frame along its
+///   axis; its `com` and full inertia tensor from `<inertial>` (the inertial frame's rotation
+///   turned into the tensor). A link joined by a fixed joint moves with its parent: its mass is
+///   merged into the parent's body (total mass, centre of mass, tensor by the parallel-axis
+///   theorem), its children are placed through the fixed joint's origin; links fixed to the root
+///   cannot move and are left out. So the declaration takes the rigid tree pass (articulated-body
+///   algorithm; the generated `RigidTree` impl shows it).
+/// - The parameter struct: `g`, gravity's magnitude along −z (URDF's z is up), and for each
+///   joint whose `<dynamics>` gives them, `<joint>_damping` and `<joint>_friction`, with
+///   `Default` holding the file's values and g = 9.81.
+/// - Joint forces as `#[generalized_force]`s: viscous damping −c q̇, and `friction` as Coulomb
+///   sliding friction of constant magnitude, −f sgn(q̇) (sgn(0) = 0): no sticking, and a force
+///   that jumps where q̇ changes sign, which fixed-step methods step over with an O(h) error there.
+/// - Not read: `<limit>` (limits are not enforced), `<visual>`, `<collision>`, `<transmission>`,
+///   `<gazebo>`. Joint actuation is today a `#[generalized_force(on = joint)]` written in the
+///   module; a declaration has no inputs yet, and when it does, one per actuated joint is what
+///   this macro is to add beside the joint's damping.
+///
+/// **Refused**, as one compile error at the path: a file that cannot be read (naming the path
+/// as resolved); malformed XML, a missing attribute or a value that is not a finite number (with
+/// the file's `line:column`); a mimic, floating or planar joint, a link with two parents, joints
+/// forming a loop, more than one root link, a moving link that carries no mass (naming the joint
+/// or link); two joints or links whose identifiers coincide, or that collide with the
+/// declaration's own names (`t`, `g`, `gravity`, `<name>_dot`).
+pub use lagrange_macros::urdf;
 
 pub use lagrange_core::analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability, Branch,
@@ -95,7 +164,7 @@ pub mod prelude {
         StormerVerlet, Variational,
     };
     pub use lagrange_core::{Coordinates, Error, Mechanism, State, Validated};
-    pub use lagrange_macros::mechanism;
+    pub use lagrange_macros::{mechanism, urdf};
 }
 
 /// What generated code names. Not a public API: it may change in any release.

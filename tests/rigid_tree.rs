@@ -8,11 +8,13 @@
 //! velocities ≤ 2), so 1e-10 relative to the size of the result leaves a margin of about 10⁴ over
 //! the observed differences (~1e-14) while catching any wrong term.
 
-use lagrange::dynamics::{equations_of_motion, kinetic_energy, momenta};
-use lagrange::model::Model;
+use lagrange::dynamics::equations_of_motion;
 use lagrange::prelude::*;
 use lagrange::tree::rigid::RigidTree;
-use nalgebra::SVector;
+
+#[path = "common/tree_vs_dense.rs"]
+mod tree_vs_dense;
+use tree_vs_dense::{agrees_with_dense, close};
 
 /// A spatial arm of three links, revolute about z, y, y, declared as the README teaches (each
 /// body's pose is its centre of mass and principal axes), with a payload welded to the last link.
@@ -226,7 +228,6 @@ pub mod bars {
     }
 }
 
-/// Random states, the same every run (a linear congruential sequence in [−1, 1)).
 /// An arm whose links are declared by their joint frames, each with its centre of mass and a
 /// full inertia tensor in that frame (`com`, `inertia = [[..]; 3]`): the tree pass places the
 /// centre of mass and turns the tensor itself, the dense pass maps the frames to principal axes.
@@ -259,83 +260,6 @@ pub mod framed {
     #[gravity]
     fn down() -> Vec3 {
         vec3(0.0, 0.0, -g)
-    }
-}
-
-fn states<const N: usize>(count: usize) -> Vec<([f64; N], [f64; N])> {
-    let mut seed: u64 = 0x2545_f491_4f6c_dd1d;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    };
-    (0..count)
-        .map(|_| {
-            let q = std::array::from_fn(|_| 1.5 * next());
-            let v = std::array::from_fn(|_| 2.0 * next());
-            (q, v)
-        })
-        .collect()
-}
-
-fn close(a: f64, b: f64, scale: f64, what: &str) {
-    assert!(
-        (a - b).abs() <= 1e-10 * scale.max(1.0),
-        "{what}: tree {a}, dense {b}"
-    );
-}
-
-type Named<M, const N: usize> = <M as lagrange::mechanism::Dynamics<N>>::Coords;
-
-/// Every evaluation through the tree pass against the dense pass of the same declaration.
-fn agrees_with_dense<M, const N: usize, const K: usize>(sys: &M)
-where
-    M: Mechanism<N> + Model<N, K>,
-{
-    for (q, v) in states::<N>(6) {
-        let s = State::new(
-            0.0,
-            Named::<M, N>::from_array(q),
-            Named::<M, N>::from_array(v),
-        );
-        let dense = equations_of_motion::<M, f64, N, K>(sys, 0.0, &q, &v);
-        let m = sys.mass_matrix(&s).unwrap();
-        let scale = dense.mass_matrix.abs().max();
-        for (a, b) in m.iter().zip(dense.mass_matrix.iter()) {
-            close(*a, *b, scale, "M");
-        }
-        let f = sys.generalized_forces(&s).unwrap().to_array();
-        let rhs = dense.generalized_forces - dense.inertial_terms;
-        let expected = dense.mass_matrix.cholesky().unwrap().solve(&rhs);
-        let qdd = sys.accelerations(&s).unwrap().to_array();
-        let scale = expected.abs().max();
-        for j in 0..N {
-            close(
-                f[j],
-                dense.generalized_forces[j],
-                dense.generalized_forces.abs().max(),
-                "𝓕",
-            );
-            close(qdd[j], expected[j], scale, "q̈");
-        }
-        // Inverse dynamics of a q̈ that is not the free motion's: M q̈ + b − 𝓕.
-        let wanted = SVector::<f64, N>::from_fn(|j, _| 0.3 * j as f64 - 0.5);
-        let tau = sys
-            .inverse_dynamics(&s, &Named::<M, N>::from_array(wanted.into()))
-            .unwrap()
-            .to_array();
-        let expected = dense.mass_matrix * wanted + dense.inertial_terms - dense.generalized_forces;
-        for j in 0..N {
-            close(tau[j], expected[j], expected.abs().max(), "τ");
-        }
-        let t_dense = kinetic_energy::<M, f64, N, K>(sys, 0.0, &q, &v);
-        close(sys.kinetic_energy(&s).unwrap(), t_dense, t_dense, "T");
-        let p_dense = momenta::<M, f64, N, K>(sys, 0.0, &q, &v);
-        let p = sys.momenta(&s).unwrap().to_array();
-        for j in 0..N {
-            close(p[j], p_dense[j], 1.0, "p");
-        }
     }
 }
 

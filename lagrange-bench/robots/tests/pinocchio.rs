@@ -16,6 +16,8 @@ use lagrange::tree::rigid::RigidTree;
 use lagrange_robots::quadruped::Quadruped;
 use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
 
+mod common;
+
 const REFERENCE: &str = include_str!("pinocchio.tsv");
 const TOLERANCE: f64 = 1e-10;
 
@@ -33,17 +35,13 @@ fn reference(robot: &str, k: usize, quantity: &str) -> Vec<f64> {
         .collect()
 }
 
-/// max |x − ref| ≤ TOLERANCE · max |ref|.
+/// Within TOLERANCE of Pinocchio's value, relative to its size.
 fn assert_close(what: &str, x: &[f64], expected: &[f64]) {
-    assert_eq!(x.len(), expected.len(), "{what}: length");
-    let size = expected.iter().fold(0.0_f64, |m, e| m.max(e.abs()));
-    let err = x
-        .iter()
-        .zip(expected)
-        .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
-    assert!(
-        err <= TOLERANCE * size,
-        "{what}: differs from Pinocchio by {err:e} (size {size:e})"
+    common::assert_close(
+        &format!("{what} (against Pinocchio)"),
+        x,
+        expected,
+        TOLERANCE,
     );
 }
 
