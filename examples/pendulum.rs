@@ -17,30 +17,7 @@ use lagrange::integrate::{Direction, Event, Observation, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod pendulum {
-    /// Angle from the downward vertical.
-    pub struct Coords {
-        pub theta: f64,
-    }
-
-    pub struct Pendulum {
-        pub m: f64,
-        /// Length of the rod.
-        pub l: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::pendulum::pendulum;
 
 fn main() -> Result<(), lagrange::Error> {
     use pendulum::{Coords, Pendulum, State};
@@ -56,7 +33,7 @@ fn main() -> Result<(), lagrange::Error> {
     let theta = |s: &State| s.q.theta;
     let mut events = [Event::new(&theta).direction(Direction::Rising).terminal()];
     let mut swing = vec![(0.0, theta0)];
-    let outcome = Dopri5::new(1e-12, 1e-12).integrate(&sys, &mut s, 10.0, &mut events, |o| {
+    let outcome = sys.integrate(Dopri5::new(1e-12, 1e-12), &mut s, 10.0, &mut events, |o| {
         if let Observation::Step { state, .. } = o {
             swing.push((state.t, state.q.theta));
         }

@@ -2,16 +2,18 @@
 //!
 //! ## The crate root
 //!
-//! The root exports, by name, what a user of a declared mechanism calls: the
+//! The root exports, by name, what a user of a declared mechanism calls: the [`prelude`] (the
 //! [`mechanism`](macro@mechanism) attribute, the [`Mechanism`] trait with its [`State`] and
-//! [`Coordinates`], [`Validated`], the errors, the integrators, the geometry a declaration is
-//! written in, the analysis entry points with their options and results, and the constraint tools
-//! ([`Constraints`], [`ContactRk4`], [`consistent_state`], [`consistent_state_holding`],
-//! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
-//! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
-//! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
-//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`], [`sensitivity`] (trajectory
-//! sensitivities), [`declaration`], and [`ffi`] with [`export_c!`] (C embedding).
+//! [`Coordinates`], [`Validated`], [`Error`], the integrators and the solver [`Stepper`], the
+//! geometry a declaration is written in), and beside it the rest of the stepping interface
+//! ([`Event`], [`Outcome`], [`Stats`], [`Fixed`], …), the analysis entry points with their options
+//! and results, the constraint tools ([`Constraints`], [`ContactOptions`], [`consistent_state`],
+//! [`consistent_state_holding`], [`constraint_forces`]) and the sensitivities' [`Seed`].
+//! Everything else — the low-level [`model::Model`] trait that generated code implements, the
+//! dynamics kernels, the small dense solves — stays in its module: [`model`], [`evaluation`],
+//! [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`], [`constraints`], [`geometry`],
+//! [`scalar_ext`], [`error`], [`sensitivity`], [`declaration`], and [`ffi`] with [`export_c!`] (C
+//! embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
 //!
@@ -46,44 +48,9 @@
 
 #![warn(missing_docs)]
 
-pub use lagrange_macros::mechanism;
-
-pub use lagrange_core::analysis::{
-    constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability, Branch,
-    BranchPoint, ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization,
-    NormalModes, Stability, StabilityAnalysis,
-};
-pub use lagrange_core::constraints::{
-    consistent_state, consistent_state_holding, constraint_forces, ConstraintForces, Constraints,
-    ContactAdaptive, ContactDop853, ContactDopri5, ContactOptions, ContactRk4, ModeChange, RowMode,
-};
-pub use lagrange_core::error::{Error, Result};
-/// The scalar every declaration function is evaluated on (`f64` or a dual number): the bound of a
-/// helper function called from one, `fn arm<D: lagrange::Scalar>(angle: D) -> D`.
-pub use lagrange_core::geometry::Scalar;
-pub use lagrange_core::geometry::{
-    planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, SpatialVelocity, Vec2,
-    Vec3,
-};
-pub use lagrange_core::integrate::{
-    Dop853, Dop853Stepper, Dopri5, Dopri5Stepper, Event, FixedStepper, GaussLegendre2,
-    ImplicitMidpoint, Integrator, Observation, Outcome, Rk4, Stats, Stepper, StopReason,
-    StormerVerlet, Variational,
-};
-pub use lagrange_core::mechanism::Mechanism;
-pub use lagrange_core::model::{Coordinates, State};
-pub use lagrange_core::validated::Validated;
-
-pub use lagrange_core::ensemble;
-pub use lagrange_core::{
-    analysis, constraints, declaration, dynamics, error, geometry, integrate, linalg, mechanism,
-    model, parameters, scalar_ext, sensitivity, tree, validated,
-};
-/// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
-pub use lagrange_ffi as ffi;
-pub use lagrange_ffi::export_c;
-
-/// Everything a declaration and its user need: `use lagrange::prelude::*;`.
+/// Everything a declaration and its user need: `use lagrange::prelude::*;`. The crate root
+/// exports the same names (the root is this list and the rest of the user-facing API), and
+/// `#[mechanism]` knows them by this list.
 pub mod prelude {
     pub use lagrange_core::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3};
     pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
@@ -95,14 +62,43 @@ pub mod prelude {
     pub use lagrange_macros::mechanism;
 }
 
+pub use prelude::*;
+
+pub use lagrange_core::analysis::{
+    constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability, Branch,
+    BranchPoint, ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization,
+    NormalModes, Stability, StabilityAnalysis,
+};
+pub use lagrange_core::constraints::{
+    consistent_state, consistent_state_holding, constraint_forces, ConstraintForces, Constraints,
+    ContactOptions, ModeChange, RowMode,
+};
+pub use lagrange_core::error::Result;
+/// The scalar every declaration function is evaluated on (`f64` or a dual number): the bound of a
+/// helper function called from one, `fn arm<D: lagrange::Scalar>(angle: D) -> D`.
+pub use lagrange_core::geometry::Scalar;
+pub use lagrange_core::integrate::{
+    Direction, Event, EventHit, Fixed, Observation, Outcome, Stats, StopReason,
+};
+pub use lagrange_core::sensitivity::{Seed, Sensitivities};
+
+pub use lagrange_core::ensemble;
+pub use lagrange_core::{
+    analysis, constraints, declaration, dynamics, error, evaluation, geometry, integrate, linalg,
+    mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
+};
+/// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
+pub use lagrange_ffi as ffi;
+pub use lagrange_ffi::export_c;
+
 /// What generated code names. Not a public API: it may change in any release.
 #[doc(hidden)]
 pub mod __private {
     pub use core;
     pub use lagrange_core;
     pub use lagrange_core::dynamics;
+    pub use lagrange_core::evaluation::{Dynamics, Prepare};
     pub use lagrange_core::geometry;
-    pub use lagrange_core::mechanism::{Dynamics, Prepare};
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
     pub use lagrange_core::parameters;
     pub use lagrange_core::scalar_ext::ScalarExt;

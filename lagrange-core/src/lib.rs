@@ -5,11 +5,14 @@
 //! - [`dynamics`]: M q̈ = 𝓕 − b by dual-number automatic differentiation;
 //! - [`tree`]: the same for bodies that form a tree of translations, seeded body by body;
 //! - [`linalg`]: small dense solves generic over dual numbers;
+//! - [`evaluation`]: the equations a declaration implements ([`evaluation::Dynamics`]) and what
+//!   everything else evaluates through ([`evaluation::Evaluate`]);
 //! - [`mechanism`]: the user-facing [`Mechanism`] trait, and [`Validated`] for parameters checked once;
-//! - [`integrate`]: the integrators, generic over every mechanism;
+//! - [`integrate`]: the integrators, generic over every mechanism, behind one solver
+//!   ([`integrate::Stepper`]);
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`declaration`]: a declaration's names and flat values, for code generic over declarations;
-//! - [`sensitivity`]: trajectory sensitivities, the simulation on dual numbers;
+//! - [`sensitivity`]: trajectory sensitivities, a solver carrying its trajectory's tangent;
 //! - [`parameters`]: a mechanism's parameters as values of any scalar (for sensitivities);
 //! - [`ensemble`]: one computation over many parameters or initial states, on every core;
 //! - [`error`]: typed errors; nothing here panics on user input.
@@ -26,6 +29,7 @@ pub mod declaration;
 pub mod dynamics;
 pub mod ensemble;
 pub mod error;
+pub mod evaluation;
 pub mod geometry;
 pub mod integrate;
 pub mod linalg;
@@ -41,13 +45,14 @@ pub use analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability,
     ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization, NormalModes, Stability,
 };
-pub use constraints::{Constraints, ContactDopri5, ContactRk4};
+pub use constraints::Constraints;
 pub use error::{Error, Result};
 pub use geometry::{
     planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3,
 };
 pub use integrate::{
-    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, StormerVerlet, Variational,
+    Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
+    StormerVerlet, Variational,
 };
 pub use mechanism::Mechanism;
 pub use model::{Coordinates, Model, State};

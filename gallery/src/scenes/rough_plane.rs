@@ -19,8 +19,9 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
-use lagrange::constraints::{ContactOptions, ContactRk4, RowMode};
+use lagrange::constraints::RowMode;
 use lagrange::prelude::*;
+use lagrange::Fixed;
 use std::path::Path;
 
 #[mechanism]
@@ -85,12 +86,17 @@ pub fn stop(sys: &RoughPlane, v0: f64) -> (f64, f64, f64) {
 }
 
 /// One run: the state after `steps` steps of `h`, the stepper (mode and events) and the path.
+#[allow(clippy::type_complexity)]
 pub fn slide(
     sys: &RoughPlane,
     v0: f64,
     h: f64,
     steps: usize,
-) -> (State, ContactRk4<3>, Vec<(f64, f64)>) {
+) -> (
+    State,
+    Stepper<'_, RoughPlane, Fixed<Rk4>, 3>,
+    Vec<(f64, f64)>,
+) {
     let mut s = State::new(
         0.0,
         Coords {
@@ -104,10 +110,11 @@ pub fn slide(
             z: 0.0,
         },
     );
-    let mut stepper = ContactRk4::new(sys, &s, ContactOptions::default()).expect("stepper");
+    let mut stepper = Stepper::new(sys, Rk4::with_step(h), &s).expect("stepper");
     let mut path = vec![(0.0, 0.0)];
     for _ in 0..steps {
-        stepper.step(sys, &mut s, h).expect("step");
+        stepper.step(f64::INFINITY).expect("step");
+        s = stepper.state();
         path.push((s.q.x, s.q.y));
     }
     (s, stepper, path)
@@ -132,7 +139,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     for (sys, label) in [(straight, "no push"), (curved, "pushed sideways")] {
         let (t_s, x_s, y_s) = stop(&sys, v0);
         let (s, stepper, path) = slide(&sys, v0, h, 1500);
-        let events = &stepper.events;
+        let events = stepper.mode_changes();
         let sliding_at_start = events.first().map(|e| e.from) == Some(RowMode::Sliding);
         println!(
             "{SCENE} ({label}): stops at t = {:.12} s (closed form {t_s:.12}), at ({:.9}, {:.9}) m \
@@ -154,7 +161,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             SCENE,
             format!("{label}: slides, then sticks (1 = yes)"),
             f64::from(u8::from(
-                sliding_at_start && stepper.mode().rows[1] == RowMode::Stick,
+                sliding_at_start && stepper.contacts().mode().rows[1] == RowMode::Stick,
             )),
             1.0,
             0.0,

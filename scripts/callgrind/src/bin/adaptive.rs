@@ -181,13 +181,12 @@ fn generated<M: Mechanism<N>, const N: usize>(
 ) -> (f64, usize, usize) {
     let mut s = State::new(0.0, M::Coords::from_array(p.q), M::Coords::from_array(p.v));
     let out = if dop853 {
-        Dop853 {
+        Dop853 (sys).integrate({
             dense: false,
             ..Dop853::new(tol, tol)
-        }
-        .integrate(sys, &mut s, p.t_end, &mut [], |_| {})
+        }, &mut s, p.t_end, &mut [], |_| {})
     } else {
-        Dopri5::new(tol, tol).integrate(sys, &mut s, p.t_end, &mut [], |_| {})
+        (sys).integrate(Dopri5::new(tol, tol), &mut s, p.t_end, &mut [], |_| {})
     }
     .unwrap();
     (s.q.to_array()[0], out.stats.accepted, out.stats.evaluations)
