@@ -12,7 +12,7 @@
 //! Everything else — the low-level [`model::Model`] trait that generated code implements, the
 //! dynamics kernels, the small dense solves — stays in its module: [`model`], [`evaluation`],
 //! [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`], [`constraints`], [`geometry`],
-//! [`scalar_ext`], [`error`], [`sensitivity`], [`declaration`], and [`ffi`] with [`export_c!`] (C
+//! [`inertia`], [`scalar_ext`], [`error`], [`sensitivity`], [`declaration`], and [`ffi`] with [`export_c!`] (C
 //! embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
@@ -52,7 +52,9 @@
 /// exports the same names (the root is this list and the rest of the user-facing API), and
 /// `#[mechanism]` knows them by this list.
 pub mod prelude {
-    pub use lagrange_core::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3};
+    pub use lagrange_core::geometry::{
+        planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+    };
     pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
     pub use lagrange_core::integrate::{
         Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
@@ -84,8 +86,8 @@ pub use lagrange_core::sensitivity::{Seed, Sensitivities};
 
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
-    analysis, constraints, declaration, dynamics, error, evaluation, geometry, integrate, linalg,
-    mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
+    analysis, constraints, declaration, dynamics, error, evaluation, geometry, inertia, integrate,
+    linalg, mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
 };
 /// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
 pub use lagrange_ffi as ffi;
@@ -99,6 +101,7 @@ pub mod __private {
     pub use lagrange_core::dynamics;
     pub use lagrange_core::evaluation::{Dynamics, Prepare};
     pub use lagrange_core::geometry;
+    pub use lagrange_core::inertia;
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
     pub use lagrange_core::parameters;
     pub use lagrange_core::scalar_ext::ScalarExt;

@@ -12,6 +12,8 @@ pub(super) enum Equations {
     ClosedForm(usize),
     /// `lagrange_core::tree` over a tree of translations (seed width, bodies).
     Tree(usize, usize),
+    /// `lagrange_core::tree::rigid` over a kinematic tree of rigid bodies (bodies).
+    Rigid(usize),
     /// The dual-number passes of `lagrange_core::dynamics`.
     Dense,
 }
@@ -56,6 +58,9 @@ enum Prepared {
     },
     /// The closed form's coefficients (`expand::closed_form`).
     Coefficients(usize),
+    /// A rigid tree's joint frames and inertias (`lagrange_core::tree::rigid::RigidConstants`),
+    /// for its bodies.
+    Rigid(usize),
     Nothing,
 }
 
@@ -64,6 +69,7 @@ impl Glue<'_> {
         match (self.positions, &self.equations) {
             (Positions::Affine { straight_line }, _) => Prepared::Affine { straight_line },
             (_, Equations::ClosedForm(count)) => Prepared::Coefficients(*count),
+            (_, Equations::Rigid(b)) => Prepared::Rigid(*b),
             _ => Prepared::Nothing,
         }
     }
@@ -93,6 +99,7 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let accelerations = accelerations(glue);
     let regular = regular_accelerations(glue);
     let canonical = canonical_field(glue);
+    let (kinetic, inverse_dynamics) = (kinetic_energy(glue), inverse_dynamics(glue));
     let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
     quote! {
         #prepare
@@ -112,10 +119,8 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
             #equations_of_motion
             #accelerations
             #regular
-            #[inline]
-            fn kinetic_energy_at<S: #p::Scalar>(&self, _prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> S {
-                #p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)
-            }
+            #inverse_dynamics
+            #kinetic
             #[inline]
             fn potential_energy_at<S: #p::Scalar>(&self, _prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n]) -> S {
                 #p::dynamics::potential_energy::<Self, S, #n, #k>(self, t, q)
@@ -164,16 +169,90 @@ fn equations_of_motion(glue: &Glue) -> TokenStream {
             let (w, b) = (lit(w), lit(b));
             quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
         }
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            with_rigid_constants(
+                quote!(#p::tree::rigid::equations_of_motion::<Self, S, #n, #k, #b>(self, __k, t, q, v)),
+            )
+        }
         Equations::Dense => {
             quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v))
         }
     };
+    let prepared = prepared_argument(glue);
     quote! {
         #[inline(always)]
-        fn equations_of_motion_at<S: #p::Scalar>(&self, _prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
+        fn equations_of_motion_at<S: #p::Scalar>(&self, #prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
             #body
         }
     }
+}
+
+/// The name of the constants' argument of a method that evaluates the equations: used by a rigid
+/// tree (its joint frames and inertias), not by the other forms.
+fn prepared_argument(glue: &Glue) -> TokenStream {
+    match glue.equations {
+        Equations::Rigid(_) => quote!(prepared),
+        _ => quote!(_prepared),
+    }
+}
+
+/// `call`, with `__k` the rigid tree's constants: the handle's, or computed for the call on the
+/// plain mechanism.
+fn with_rigid_constants(call: TokenStream) -> TokenStream {
+    let p = private();
+    quote!({
+        let __owned;
+        let __k = match prepared {
+            #p::core::option::Option::Some(__k) => __k,
+            #p::core::option::Option::None => {
+                __owned = self.__lagrange_rigid_constants();
+                &__owned
+            }
+        };
+        #call
+    })
+}
+
+/// `kinetic_energy_at`: T by the rigid tree's recursion, or by the dual-number pass.
+fn kinetic_energy(glue: &Glue) -> TokenStream {
+    let p = private();
+    let (n, k) = glue.sizes();
+    let body = match glue.equations {
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            with_rigid_constants(
+                quote!(#p::tree::rigid::kinetic_energy::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, __k, q, v)),
+            )
+        }
+        _ => quote!(#p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)),
+    };
+    let prepared = prepared_argument(glue);
+    quote! {
+        #[inline]
+        fn kinetic_energy_at<S: #p::Scalar>(&self, #prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> S {
+            #body
+        }
+    }
+}
+
+/// `inverse_dynamics_at` of a rigid tree: the recursive Newton–Euler algorithm (the default, from
+/// the equations of motion, otherwise).
+fn inverse_dynamics(glue: &Glue) -> Option<TokenStream> {
+    let p = private();
+    let n = lit(glue.n);
+    let Equations::Rigid(_) = glue.equations else {
+        return None;
+    };
+    let body = with_rigid_constants(quote!(
+        self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+    ));
+    Some(quote! {
+        #[inline]
+        fn inverse_dynamics_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n], a: &[S; #n]) -> [S; #n] {
+            #body
+        }
+    })
 }
 
 /// `accelerations_at`: without the constants, the constrained solve, a tree's articulated-body
@@ -193,6 +272,13 @@ fn accelerations(glue: &Glue) -> Option<TokenStream> {
             let (w, b) = (lit(*w), lit(*b));
             Some(quote!(#p::tree::accelerations::<Self, S, #n, #k, #w, #b>(self, t, q, v)))
         }
+        // The constants computed for the call: a validated handle prepares them once.
+        (Equations::Rigid(_), None) => Some(quote!(self.__lagrange_rigid_accelerations(
+            &self.__lagrange_rigid_constants(),
+            t,
+            q,
+            v
+        ))),
         _ => None,
     };
     let with_constants = match (glue.prepared(), glue.constrained) {
@@ -209,7 +295,10 @@ fn accelerations(glue: &Glue) -> Option<TokenStream> {
             let eom = self.__lagrange_closed_form_with::<S>(#p::core::option::Option::Some(prepared), q, v);
             #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
         })),
-        (Prepared::Nothing, _) => None,
+        (Prepared::Rigid(_), None) => Some(quote!(
+            self.__lagrange_rigid_accelerations(prepared, t, q, v)
+        )),
+        (Prepared::Rigid(_), Some(_)) | (Prepared::Nothing, _) => None,
     };
     if plain.is_none() && with_constants.is_none() {
         return None;
@@ -273,7 +362,7 @@ fn regular_accelerations(glue: &Glue) -> Option<TokenStream> {
             let eom = self.__lagrange_closed_form_with::<f64>(#p::core::option::Option::Some(prepared), q, v);
             #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, true)
         })),
-        (Prepared::Nothing, _) => None,
+        (Prepared::Rigid(_), _) | (Prepared::Nothing, _) => None,
     };
     if plain.is_none() && with_constants.is_none() {
         return None;
@@ -298,9 +387,16 @@ fn canonical_field(glue: &Glue) -> TokenStream {
     let (n, k) = glue.sizes();
     let prepared_type = quote!(#p::core::option::Option<&Self::Prepared>);
     let none = quote!(#p::core::option::Option::None);
+    let prepared_argument = prepared_argument(glue);
     let momenta = match glue.equations {
         Equations::ClosedForm(_) => {
             quote!(self.__lagrange_canonical_field_with::<S>(#none, q, v).0)
+        }
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            with_rigid_constants(
+                quote!(#p::tree::rigid::momenta::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, __k, q, v)),
+            )
         }
         _ => quote!(#p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)),
     };
@@ -333,7 +429,7 @@ fn canonical_field(glue: &Glue) -> TokenStream {
     });
     quote! {
         #[inline]
-        fn momenta_at<S: #p::Scalar>(&self, _prepared: #prepared_type, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
+        fn momenta_at<S: #p::Scalar>(&self, #prepared_argument: #prepared_type, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
             #momenta
         }
         #field
@@ -368,6 +464,18 @@ fn prepare_impl(params: &Ident, n: &Literal, k: &Literal, prepared: Prepared) ->
                     #one_branch
                     fn prepare(&self) -> #p::Result<Self::Prepared> {
                         #p::lagrange_core::affine::AffineConstants::of::<Self>(self)
+                    }
+                }
+            }
+        }
+        Prepared::Rigid(b) => {
+            let b = lit(b);
+            quote! {
+                impl #p::Prepare for #params {
+                    type Prepared = #p::tree::rigid::RigidConstants<#b>;
+                    #[inline]
+                    fn prepare(&self) -> #p::Result<Self::Prepared> {
+                        #p::core::result::Result::Ok(self.__lagrange_rigid_constants())
                     }
                 }
             }
