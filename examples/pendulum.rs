@@ -3,8 +3,8 @@
 //!   T = 4 K(k) √(L/g),  modulus k = sin(θ₀/2)
 //! (Landau & Lifshitz, *Mechanics*, §11, problem 1), 2.6 times the small-amplitude period.
 //!
-//! The period is measured here with an event: `Dopri5::integrate` locates the instant θ next crosses
-//! zero upwards, three quarters of a period after the release.
+//! The period is measured here with an event: `sys.integrate` with `Dopri5` locates the instant θ
+//! next crosses zero upwards, three quarters of a period after the release.
 //!
 //! ```text
 //! cargo run --release --example pendulum
