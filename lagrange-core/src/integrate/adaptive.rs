@@ -68,6 +68,7 @@ impl<P: EmbeddedPair, const N: usize> Method<N> for P {
     /// One accepted step, not past `t_limit`, cut at the first mode change inside it for a
     /// declaration with unilateral or friction rows (see the [module docs](self)). On error the
     /// solver (state, memory, statistics, contact mode, mode changes) is unchanged.
+    #[inline]
     fn step<M: Evaluate<N>, T: Tangent<M, N>>(
         s: &mut Stepper<'_, M, Self, N, T>,
         t_limit: f64,
@@ -119,7 +120,9 @@ pub(super) fn advance_over<P: EmbeddedPair, M: Evaluate<N>, const N: usize>(
 /// One accepted step on the mechanism's own accelerations: the method's step with its dense output
 /// written in place, the projection onto the constraints (the FSAL q̈ kept, see
 /// [`project_accepted`]), q̈ at the new point when the method did not evaluate it, and on a
-/// solver that carries a tangent the step taken again on it.
+/// solver that carries a tangent the step taken again on it. Inlined into the solver's step, so
+/// that its memory and statistics are not copied through a call.
+#[inline(always)]
 fn step_plain<P, M, T, const N: usize>(
     s: &mut Stepper<'_, M, P, N, T>,
     mut memory: P::Memory<N>,

@@ -74,7 +74,8 @@ pub struct Controller {
 /// dynamics) counts as a rejection with the step cut by `fac_min`; when the step can no longer
 /// shrink (0.1·h below round-off of t) the last failure is returned
 /// ([`Error::StepSizeUnderflow`] if steps were rejected only for accuracy).
-#[allow(clippy::too_many_arguments)]
+// `!(a > b)` is deliberate: it also refuses NaN.
+#[allow(clippy::too_many_arguments, clippy::neg_cmp_op_on_partial_ord)]
 #[inline(always)]
 pub(crate) fn adaptive_step<T>(
     method: &'static str,
@@ -87,7 +88,7 @@ pub(crate) fn adaptive_step<T>(
     mut attempt: impl FnMut(f64, &mut Stats) -> Result<(T, f64)>,
 ) -> Result<(T, f64, f64)> {
     // Written so that a NaN limit is refused too.
-    if t_limit.partial_cmp(&t) != Some(std::cmp::Ordering::Greater) {
+    if !(t_limit > t) {
         return Err(Error::InvalidEndTime { t, t_end: t_limit });
     }
     let expo1 = exponent - st.beta * weight;
@@ -99,7 +100,7 @@ pub(crate) fn adaptive_step<T>(
         if last {
             h = t_limit - t;
         }
-        if (t + 0.1 * h).partial_cmp(&t) != Some(std::cmp::Ordering::Greater) {
+        if !(t + 0.1 * h > t) {
             return Err(last_error.unwrap_or(Error::StepSizeUnderflow { method, t, h }));
         }
         match attempt(h, stats) {

@@ -124,6 +124,7 @@ pub enum Observation<'a, C, const N: usize> {
 /// at the step's start (kept from the step before) and at `current`, its end: marks each crossing
 /// pending with its root, returns the earliest root of a terminal one (∞ without) and the
 /// evaluations of event functions it took.
+#[inline]
 pub(super) fn locate_crossings<C: Coordinates<N>, const N: usize>(
     events: &mut [Event<'_, C>],
     current: &State<C>,

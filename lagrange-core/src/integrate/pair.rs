@@ -271,7 +271,7 @@ pub(crate) trait ExplicitPair: Copy {
         h: f64,
         stages: &mut Self::Stages<N>,
         stats: &mut Stats,
-        acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+        field: &impl AccelerationField<N>,
     ) -> Result<([f64; N], [f64; N], f64)>;
 
     /// Completes the accepted attempt ending at `end` = (q₁, q̇₁) whose stages are in `stages`:
@@ -286,7 +286,7 @@ pub(crate) trait ExplicitPair: Copy {
         end: (&[f64; N], &[f64; N]),
         stages: &mut Self::Stages<N>,
         stats: &mut Stats,
-        acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+        field: &impl AccelerationField<N>,
         dense: &mut DenseOutput<N>,
     ) -> Result<[f64; N]>;
 }
@@ -296,8 +296,7 @@ impl ExplicitPair for Dopri5 {
     const ORDER: i32 = 5;
     const EXPONENTS: (f64, f64) = (0.2, 0.75);
     const REPLAYS_ON_DUALS: bool = true;
-    /// (q̈₁ (FSAL), stage data of the dense output).
-    type Stages<const N: usize> = ([f64; N], [[f64; N]; 8]);
+    type Stages<const N: usize> = dopri5::Stages<N>;
 
     fn controls(&self) -> Dopri5 {
         *self
@@ -319,22 +318,24 @@ impl ExplicitPair for Dopri5 {
     }
 
     fn stages<const N: usize>() -> Self::Stages<N> {
-        ([0.0; N], [[0.0; N]; 8])
+        ([0.0; N], [[0.0; N]; 6])
     }
 
+    #[inline(always)]
     fn attempt<C: Coordinates<N>, const N: usize>(
         &self,
         start: StepStart<'_, N>,
         h: f64,
         stages: &mut Self::Stages<N>,
         stats: &mut Stats,
-        acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+        field: &impl AccelerationField<N>,
     ) -> Result<([f64; N], [f64; N], f64)> {
-        let (q1, v1, a1, err, k) = dopri5::trial::<C, N>(self, start, h, stats, acc)?;
-        *stages = (a1, k);
-        Ok((q1, v1, err))
+        dopri5::trial::<C, N>(self, start, h, stages, stats, |t, q, v| {
+            field.accelerations(t, q, v)
+        })
     }
 
+    #[inline(always)]
     fn accept<const N: usize>(
         &self,
         (t, q, v, _): StepStart<'_, N>,
@@ -342,7 +343,7 @@ impl ExplicitPair for Dopri5 {
         end: (&[f64; N], &[f64; N]),
         (a1, k): &mut Self::Stages<N>,
         _stats: &mut Stats,
-        _acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+        _field: &impl AccelerationField<N>,
         dense: &mut DenseOutput<N>,
     ) -> Result<[f64; N]> {
         *dense = dopri5::dense_output(t, h, (q, v), end, k);
@@ -374,9 +375,10 @@ impl ExplicitPair for Dop853 {
         h: f64,
         stages: &mut Self::Stages<N>,
         stats: &mut Stats,
-        acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+        field: &impl AccelerationField<N>,
     ) -> Result<([f64; N], [f64; N], f64)> {
-        dop853::attempt::<C, N>(self, start, h, stages, stats, acc)
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        dop853::attempt::<C, N>(self, start, h, stages, stats, &acc)
     }
 
     fn accept<const N: usize>(
@@ -386,10 +388,11 @@ impl ExplicitPair for Dop853 {
         end: (&[f64; N], &[f64; N]),
         stages: &mut Self::Stages<N>,
         stats: &mut Stats,
-        acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+        field: &impl AccelerationField<N>,
         dense: &mut DenseOutput<N>,
     ) -> Result<[f64; N]> {
-        dop853::accept(self, start, h, end, stages, stats, acc, dense)
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        dop853::accept(self, start, h, end, stages, stats, &acc, dense)
     }
 }
 
@@ -433,7 +436,6 @@ pub(crate) fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     stats: &mut Stats,
     dense: &mut DenseOutput<N>,
 ) -> Result<ExplicitStep<N>> {
-    let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
     let ((q, v), h, t) = adaptive_step(
         P::NAME,
         &method.controls(),
@@ -444,11 +446,11 @@ pub(crate) fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
         stats,
         |h, stats| {
             method
-                .attempt::<C, N>(start, h, stages, stats, &acc)
+                .attempt::<C, N>(start, h, stages, stats, field)
                 .map(|(q1, v1, err)| ((q1, v1), err))
         },
     )?;
-    let a = method.accept(start, h, (&q, &v), stages, stats, &acc, dense)?;
+    let a = method.accept(start, h, (&q, &v), stages, stats, field, dense)?;
     Ok((t, q, v, a))
 }
 
@@ -461,9 +463,8 @@ fn explicit_shorten<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     h: f64,
     (stats, dense): (&mut Stats, &mut DenseOutput<N>),
 ) -> Result<Accepted<N>> {
-    let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-    let (q, v, _) = method.attempt::<C, N>(start, h, stages, stats, &acc)?;
-    let a = method.accept(start, h, (&q, &v), stages, stats, &acc, dense)?;
+    let (q, v, _) = method.attempt::<C, N>(start, h, stages, stats, field)?;
+    let a = method.accept(start, h, (&q, &v), stages, stats, field, dense)?;
     Ok(Accepted {
         t: start.0 + h,
         q,
@@ -561,5 +562,5 @@ macro_rules! explicit_embedded_pair {
     };
 }
 
-explicit_embedded_pair!(Dopri5, ([f64; N], [[f64; N]; 8]));
+explicit_embedded_pair!(Dopri5, dopri5::Stages<N>);
 explicit_embedded_pair!(Dop853, dop853::Stages<N>);

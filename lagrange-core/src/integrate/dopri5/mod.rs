@@ -34,7 +34,7 @@ use crate::evaluation::Evaluate;
 mod stages;
 mod tableau;
 
-pub(crate) use stages::{dense_output, stages, trial};
+pub(crate) use stages::{dense_output, stages, trial, Stages};
 
 /// Settings of the adaptive Dormand–Prince 5(4) method (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, PartialEq)]

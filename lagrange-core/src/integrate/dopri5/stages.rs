@@ -104,17 +104,20 @@ pub(crate) fn stages<T: Scalar, const N: usize>(
 }
 
 /// One trial step of Dormand–Prince 5(4) of size h from (t, q, v) with q̈ = `a` there, on the
-/// accelerations `acc`: (q₁, v₁, q̈₁, err, stage data for [`dense_output`]): what every Dopri5 step
-/// attempts, on a mechanism's accelerations or those of a held contact mode. Adds its evaluations
-/// of `acc` to `stats`.
+/// accelerations `acc`: (q₁, v₁, err), with q̈₁ and the stage data for [`dense_output`] written into
+/// `stages` (in place: the step's completion reads them there): what every Dopri5 step attempts, on
+/// a mechanism's accelerations or those of a held contact mode. Adds its evaluations of `acc` to
+/// `stats`.
 #[allow(clippy::type_complexity)]
+#[inline(always)]
 pub(crate) fn trial<C: Coordinates<N>, const N: usize>(
     st: &Dopri5,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
     h: f64,
+    (a_end, k): &mut Stages<N>,
     stats: &mut Stats,
     mut acc: impl FnMut(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
-) -> Result<([f64; N], [f64; N], [f64; N], f64, [[f64; N]; 8])> {
+) -> Result<([f64; N], [f64; N], f64)> {
     let (q1, v1, kq, ka) = stages(t, q, v, *a, h, |t, q, v| {
         stats.evaluations += 1;
         acc(t, q, v)
@@ -158,28 +161,28 @@ pub(crate) fn trial<C: Coordinates<N>, const N: usize>(
         [D1, D3, D4, D5, D6, D7],
         [&ka1, &ka3, &ka4, &ka5, &ka6, &ka7],
     );
-    Ok((
-        q1,
-        v1,
-        ka7,
-        err,
-        [kq1, ka1, kq7, ka7, dq, dv, [0.0; N], [0.0; N]],
-    ))
+    *a_end = ka7;
+    *k = [kq1, ka1, kq7, ka7, dq, dv];
+    Ok((q1, v1, err))
 }
+
+/// The stages of a Dopri5 step its completion reads: q̈₁ (FSAL) and the dense output's data
+/// (stages 1 and 7 and the d-weighted sums, for q and v).
+pub(crate) type Stages<const N: usize> = ([f64; N], [[f64; N]; 6]);
 
 /// The dense output of an accepted [`trial`] of size h from (t₀, q₀, v₀) to
 /// (q₁, v₁): Hairer's CONTD5 (HNW I §II.6), order 4, no extra evaluation. Inlined, so that the
 /// output is built where it is stored.
-#[inline]
+#[inline(always)]
 pub(crate) fn dense_output<const N: usize>(
     t0: f64,
     h: f64,
     (q0, v0): (&[f64; N], &[f64; N]),
     (q1, v1): (&[f64; N], &[f64; N]),
-    k: &[[f64; N]; 8],
+    k: &[[f64; N]; 6],
 ) -> DenseOutput<N> {
     // Stage 1 is (v₀, q̈₀) and stage 7 (FSAL) is (v₁, q̈₁): the derivatives of (q, v) at the ends.
-    let [kq1, ka1, kq7, ka7, dq, dv, _, _] = k;
+    let [kq1, ka1, kq7, ka7, dq, dv] = k;
     let make = |y0: &[f64; N],
                 y1: &[f64; N],
                 k1: &[f64; N],
