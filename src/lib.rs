@@ -12,8 +12,8 @@
 //! Everything else — the low-level [`model::Model`] trait that generated code implements, the
 //! dynamics kernels, the small dense solves — stays in its module: [`model`], [`evaluation`],
 //! [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`], [`constraints`], [`geometry`],
-//! [`inertia`], [`scalar_ext`], [`error`], [`sensitivity`], [`declaration`], and [`ffi`] with [`export_c!`] (C
-//! embedding).
+//! [`inertia`], [`scalar_ext`], [`error`], [`sensitivity`], [`declaration`], [`animation`] (a
+//! trajectory as an HTML animation), and [`ffi`] with [`export_c!`] (C embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
 //!
@@ -86,8 +86,8 @@ pub use lagrange_core::sensitivity::{Seed, Sensitivities};
 
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
-    analysis, constraints, declaration, dynamics, error, evaluation, geometry, inertia, integrate,
-    linalg, mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
+    analysis, animation, constraints, declaration, dynamics, error, evaluation, geometry, inertia,
+    integrate, linalg, mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
 };
 /// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
 pub use lagrange_ffi as ffi;

@@ -17,6 +17,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{constraint_forces, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -152,9 +153,15 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let mut s = s0;
     let (mut worst_normal, mut normal_trace, mut closed_trace) = (0.0f64, Vec::new(), Vec::new());
     let mut path = vec![(s.q.x, s.q.y)];
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("centre", &[0.0, 0.0])
+        .and_then(|f| f.trail("particle"))
+        .expect("the sphere's centre");
+    film.push(&sys, &s).expect("a finite state");
     while stepper.mode_changes().is_empty() {
         stepper.step(f64::INFINITY).expect("contact step");
         s = stepper.state();
+        film.push(&sys, &s).expect("a finite state");
         path.push((s.q.x, s.q.y));
         if stepper.mode_changes().is_empty() {
             let lambda = constraint_forces(&sys, &s).expect("forces").multipliers[0];
@@ -189,6 +196,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     while s.t < t_star + 0.4 {
         stepper.step(f64::INFINITY).expect("free step");
         s = stepper.state();
+        film.push(&sys, &s).expect("a finite state");
         path.push((s.q.x, s.q.y));
         let tau = s.t - t_star;
         let x = r_star[0] + v_star[0] * tau;
@@ -197,6 +205,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         worst_parabola = worst_parabola.max((s.q.x - x).abs()).max((s.q.y - y).abs());
         closest = closest.min(s.q.x.hypot(s.q.y) - r);
     }
+    let _ = film.write_html(plots.join("sphere_release.html"));
     let release_error = (release.t - t_star).abs() / t_star;
     println!(
         "{SCENE}: released at t = {:.15} s (quadrature {t_star:.15}, rel. error {release_error:.1e}), \
