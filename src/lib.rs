@@ -2,18 +2,19 @@
 //!
 //! ## The crate root
 //!
-//! The root exports, by name, what a user of a declared mechanism calls: the
-//! [`mechanism`](macro@mechanism) attribute (and [`urdf`](macro@urdf), which writes a declaration
-//! from a robot's file), the [`Mechanism`] trait with its [`State`] and
-//! [`Coordinates`], [`Validated`], the errors, the integrators, the geometry a declaration is
-//! written in, the analysis entry points with their options and results, and the constraint tools
-//! ([`Constraints`], [`ContactRk4`], [`consistent_state`], [`consistent_state_holding`],
-//! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
-//! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
-//! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
-//! [`constraints`], [`geometry`], [`inertia`], [`scalar_ext`], [`error`], [`sensitivity`] (trajectory
-//! sensitivities), [`declaration`], [`animation`] (a trajectory as an HTML animation), and [`ffi`]
-//! with [`export_c!`] (C embedding).
+//! The root exports, by name, what a user of a declared mechanism calls: the [`prelude`] (the
+//! [`mechanism`](macro@mechanism) attribute and [`urdf`](macro@urdf), which writes a declaration from a
+//! robot's file, the [`Mechanism`] trait with its [`State`] and
+//! [`Coordinates`], [`Validated`], [`Error`], the integrators and the solver [`Stepper`], the
+//! geometry a declaration is written in), and beside it the rest of the stepping interface
+//! ([`Event`], [`Outcome`], [`Stats`], [`Fixed`], …), the analysis entry points with their options
+//! and results, the constraint tools ([`Constraints`], [`ContactOptions`], [`consistent_state`],
+//! [`consistent_state_holding`], [`constraint_forces`]) and the sensitivities' [`Seed`].
+//! Everything else — the low-level [`model::Model`] trait that generated code implements, the
+//! dynamics kernels, the small dense solves — stays in its module: [`model`], [`evaluation`],
+//! [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`], [`constraints`], [`geometry`],
+//! [`inertia`], [`scalar_ext`], [`error`], [`sensitivity`], [`declaration`], [`animation`] (a
+//! trajectory as an HTML animation), and [`ffi`] with [`export_c!`] (C embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
 //!
@@ -48,7 +49,23 @@
 
 #![warn(missing_docs)]
 
-pub use lagrange_macros::mechanism;
+/// Everything a declaration and its user need: `use lagrange::prelude::*;`. The crate root
+/// exports the same names (the root is this list and the rest of the user-facing API), and
+/// `#[mechanism]` knows them by this list.
+pub mod prelude {
+    pub use lagrange_core::geometry::{
+        planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+    };
+    pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
+    pub use lagrange_core::integrate::{
+        Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
+        StormerVerlet, Variational,
+    };
+    pub use lagrange_core::{Coordinates, Error, Mechanism, State, Validated};
+    pub use lagrange_macros::{mechanism, urdf};
+}
+
+pub use prelude::*;
 /// A robot's URDF file read at compile time into the declaration a user would write, expanded by
 /// [`mechanism`](macro@mechanism).
 ///
@@ -125,47 +142,25 @@ pub use lagrange_core::analysis::{
 };
 pub use lagrange_core::constraints::{
     consistent_state, consistent_state_holding, constraint_forces, ConstraintForces, Constraints,
-    ContactAdaptive, ContactDop853, ContactDopri5, ContactOptions, ContactRk4, ModeChange, RowMode,
+    ContactOptions, ModeChange, RowMode,
 };
-pub use lagrange_core::error::{Error, Result};
+pub use lagrange_core::error::Result;
 /// The scalar every declaration function is evaluated on (`f64` or a dual number): the bound of a
 /// helper function called from one, `fn arm<D: lagrange::Scalar>(angle: D) -> D`.
 pub use lagrange_core::geometry::Scalar;
-pub use lagrange_core::geometry::{
-    planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Spatial,
-    SpatialVelocity, Vec2, Vec3,
-};
 pub use lagrange_core::integrate::{
-    Dop853, Dop853Stepper, Dopri5, Dopri5Stepper, Event, FixedStepper, GaussLegendre2,
-    ImplicitMidpoint, Integrator, Observation, Outcome, Rk4, Stats, Stepper, StopReason,
-    StormerVerlet, Variational,
+    Direction, Event, EventHit, Fixed, Observation, Outcome, Stats, StopReason,
 };
-pub use lagrange_core::mechanism::Mechanism;
-pub use lagrange_core::model::{Coordinates, State};
-pub use lagrange_core::validated::Validated;
+pub use lagrange_core::sensitivity::{Seed, Sensitivities};
 
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
-    analysis, animation, constraints, declaration, dynamics, error, geometry, inertia, integrate,
-    linalg, mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
+    analysis, animation, constraints, declaration, dynamics, error, evaluation, geometry, inertia,
+    integrate, linalg, mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
 };
 /// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
 pub use lagrange_ffi as ffi;
 pub use lagrange_ffi::export_c;
-
-/// Everything a declaration and its user need: `use lagrange::prelude::*;`.
-pub mod prelude {
-    pub use lagrange_core::geometry::{
-        planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-    };
-    pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
-    pub use lagrange_core::integrate::{
-        Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
-        StormerVerlet, Variational,
-    };
-    pub use lagrange_core::{Coordinates, Error, Mechanism, State, Validated};
-    pub use lagrange_macros::{mechanism, urdf};
-}
 
 /// What generated code names. Not a public API: it may change in any release.
 #[doc(hidden)]
@@ -173,9 +168,9 @@ pub mod __private {
     pub use core;
     pub use lagrange_core;
     pub use lagrange_core::dynamics;
+    pub use lagrange_core::evaluation::{Dynamics, Prepare};
     pub use lagrange_core::geometry;
     pub use lagrange_core::inertia;
-    pub use lagrange_core::mechanism::{Dynamics, Prepare};
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
     pub use lagrange_core::parameters;
     pub use lagrange_core::scalar_ext::ScalarExt;

@@ -162,14 +162,14 @@ fn two_link_arm_matches_its_closed_form() {
             close(qdd[j], exact[j], scale, "q̈ against the closed form");
         }
     }
-    agrees_with_dense::<_, 2, 24>(&TwoLinkArm::default());
+    agrees_with_dense::<_, _, 2, 24>(&TwoLinkArm::default(), &TwoLinkArm::default());
 }
 
 #[test]
 fn branched_tree_takes_the_tree_pass_and_equals_the_dense_pass() {
     assert_eq!(<branched::Branched as RigidTree<5, 5>>::JOINTS.len(), 5);
-    agrees_with_dense::<_, 5, 60>(&branched::Branched::default());
-    agrees_with_dense::<_, 5, 60>(&sprung::Sprung::default());
+    agrees_with_dense::<_, _, 5, 60>(&branched::Branched::default(), &branched::Branched::default());
+    agrees_with_dense::<_, _, 5, 60>(&sprung::Sprung::default(), &sprung::Sprung::default());
     // The user's spring is there: at rest with the neck turned, it changes the neck's q̈ by
     // −2 q / M's share, so the two differ.
     let s = |q| branched::State::at_rest(branched::Coords::from_array(q));
@@ -196,7 +196,7 @@ fn every_joint_type_takes_the_tree_pass_and_equals_the_dense_pass() {
         (p.slide_damping, p.slide_friction, p.tilt_damping),
         (0.4, 0.05, 0.02)
     );
-    agrees_with_dense::<_, 5, 60>(&p);
+    agrees_with_dense::<_, _, 5, 60>(&p, &p);
     // The same file by hand, at states with every joint moving (the friction's sign defined).
     let (sys, hand) = (
         p.validated().unwrap(),

@@ -300,12 +300,14 @@ fn block_on_ramp(friction: bool) -> TokenStream {
 
 #[test]
 fn no_constraints_means_no_constraint_solve() {
-    // The unconstrained pendulum keeps the trait's plain accelerations and no-op hooks.
+    // The unconstrained pendulum solves M q̈ = 𝓕 − b (from its prepared coefficients through a
+    // handle), never the constrained system, and keeps the trait's no-op hooks.
     let out = pretty(expand(TokenStream::new(), pendulum()));
     assert!(!out.contains("Constraints<"), "no Constraints impl:\n{out}");
+    assert!(out.contains("dynamics::solve_accelerations"), "{out}");
     assert!(
-        !out.contains("fn accelerations_at"),
-        "no KKT override:\n{out}"
+        !out.contains("constraints::accelerations"),
+        "no KKT solve:\n{out}"
     );
     assert!(!out.contains("fn project"), "no projection hook:\n{out}");
 }
@@ -502,7 +504,8 @@ fn an_affine_declaration_prepares_its_mass_matrix_once() {
         },
     );
     assert!(out.contains("affine::AffineConstants<") && out.contains("AffineConstants::of::<"));
-    assert!(out.contains("fn accelerations_prepared_at"));
+    // q̈ from the prepared constants where the handle has them.
+    assert!(out.contains("affine::accelerations::<") && out.contains(">(self, prepared, t, q, v)"));
     // A pendulum's rows are sines and cosines of its angle: its closed form's coefficients are
     // what it prepares, not J and M.
     let pendulum = pretty(expand(TokenStream::new(), pendulum()));
@@ -779,7 +782,7 @@ fn a_spatial_arm_takes_the_rigid_tree_pass() {
         assert!(squeezed.contains(&format!("__ws.accelerate::<{code}(__joints,__k,__qdd,{b})")));
     }
     assert!(out.contains("type Prepared = ::lagrange::__private::tree::rigid::RigidConstants<2>"));
-    assert!(out.contains("fn inverse_dynamics_prepared_at"));
+    assert!(out.contains("fn inverse_dynamics_at"));
     // No dense pass for q̈.
     assert!(!out.contains("dynamics::equations_of_motion::<Self"));
 }

@@ -37,20 +37,22 @@ pub fn close(a: f64, b: f64, scale: f64, what: &str) {
     );
 }
 
-pub type Named<M, const N: usize> = <M as lagrange::mechanism::Dynamics<N>>::Coords;
+pub type Named<H, const N: usize> = <H as lagrange::evaluation::Evaluate<N>>::Coords;
 
-/// Every evaluation through the tree pass against the dense pass of the same declaration.
-pub fn agrees_with_dense<M, const N: usize, const K: usize>(sys: &M)
+/// Every evaluation of `sys` (the declaration `declared` or its validated handle) through the tree
+/// pass against the dense pass of the same declaration.
+pub fn agrees_with_dense<M, H, const N: usize, const K: usize>(declared: &M, sys: &H)
 where
-    M: Mechanism<N> + Model<N, K>,
+    M: Model<N, K>,
+    H: Mechanism<N>,
 {
     for (q, v) in states::<N>(6) {
         let s = State::new(
             0.0,
-            Named::<M, N>::from_array(q),
-            Named::<M, N>::from_array(v),
+            Named::<H, N>::from_array(q),
+            Named::<H, N>::from_array(v),
         );
-        let dense = equations_of_motion::<M, f64, N, K>(sys, 0.0, &q, &v);
+        let dense = equations_of_motion::<M, f64, N, K>(declared, 0.0, &q, &v);
         let m = sys.mass_matrix(&s).unwrap();
         let scale = dense.mass_matrix.abs().max();
         for (a, b) in m.iter().zip(dense.mass_matrix.iter()) {
@@ -73,16 +75,16 @@ where
         // Inverse dynamics of a q̈ that is not the free motion's: M q̈ + b − 𝓕.
         let wanted = SVector::<f64, N>::from_fn(|j, _| 0.3 * j as f64 - 0.5);
         let tau = sys
-            .inverse_dynamics(&s, &Named::<M, N>::from_array(wanted.into()))
+            .inverse_dynamics(&s, &Named::<H, N>::from_array(wanted.into()))
             .unwrap()
             .to_array();
         let expected = dense.mass_matrix * wanted + dense.inertial_terms - dense.generalized_forces;
         for j in 0..N {
             close(tau[j], expected[j], expected.abs().max(), "τ");
         }
-        let t_dense = kinetic_energy::<M, f64, N, K>(sys, 0.0, &q, &v);
+        let t_dense = kinetic_energy::<M, f64, N, K>(declared, 0.0, &q, &v);
         close(sys.kinetic_energy(&s).unwrap(), t_dense, t_dense, "T");
-        let p_dense = momenta::<M, f64, N, K>(sys, 0.0, &q, &v);
+        let p_dense = momenta::<M, f64, N, K>(declared, 0.0, &q, &v);
         let p = sys.momenta(&s).unwrap().to_array();
         for j in 0..N {
             close(p[j], p_dense[j], 1.0, "p");

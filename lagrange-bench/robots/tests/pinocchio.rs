@@ -11,6 +11,7 @@
 //! check`). 1e-10 of the largest entry leaves a margin of 10⁴ and still catches any wrong term
 //! (a wrong inertia, offset or rotation changes the result at the 1e-3 level or more).
 
+use lagrange::evaluation::Dynamics;
 use lagrange::prelude::*;
 use lagrange::tree::rigid::RigidTree;
 use lagrange_robots::quadruped::Quadruped;
@@ -45,7 +46,9 @@ fn assert_close(what: &str, x: &[f64], expected: &[f64]) {
     );
 }
 
-fn agrees_with_pinocchio<M: Mechanism<N>, const N: usize>(sys: M, robot: &str) {
+/// Generic over the declaration (`Dynamics`, what `validated` takes), every call through its
+/// validated handle.
+fn agrees_with_pinocchio<M: Dynamics<N>, const N: usize>(sys: M, robot: &str) {
     let sys = sys.validated().expect("valid parameters");
     for k in 0..2 {
         let s = reference(robot, k, "state");

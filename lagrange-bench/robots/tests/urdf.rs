@@ -8,6 +8,7 @@
 //! allows for a different association of a few operations while catching any wrong term
 //! (a wrong inertia, offset or axis changes the result at 1e-3 or more).
 
+use lagrange::evaluation::Dynamics;
 use lagrange::prelude::*;
 use lagrange::tree::rigid::RigidTree;
 
@@ -44,7 +45,7 @@ fn assert_close(what: &str, x: &[f64], expected: &[f64]) {
     common::assert_close(what, x, expected, TOLERANCE);
 }
 
-fn same_dynamics<A: Mechanism<N>, B: Mechanism<N>, const N: usize>(a: A, b: B, robot: &str) {
+fn same_dynamics<A: Dynamics<N>, B: Dynamics<N>, const N: usize>(a: A, b: B, robot: &str) {
     let (a, b) = (a.validated().unwrap(), b.validated().unwrap());
     for [q, v, qdd] in states::<N>(3) {
         let sa = State::new(0.0, A::Coords::from_array(q), A::Coords::from_array(v));

@@ -563,9 +563,9 @@ where
 pub fn constrained_equilibrium<M, const N: usize, const K: usize, const C: usize>(
     mechanism: &M,
     t: f64,
-    q_guess: &<M as crate::mechanism::Dynamics<N>>::Coords,
+    q_guess: &<M as crate::evaluation::Evaluate<N>>::Coords,
     options: &EquilibriumOptions,
-) -> Result<ConstrainedEquilibrium<<M as crate::mechanism::Dynamics<N>>::Coords, N, C>>
+) -> Result<ConstrainedEquilibrium<<M as crate::evaluation::Evaluate<N>>::Coords, N, C>>
 where
     M: Constraints<N, K, C> + Mechanism<N>,
 {
@@ -638,7 +638,7 @@ where
             tangent_stability::<M, N, K, C>(mechanism, t, &q, kkt, &solved.lambda)?;
         return Ok(ConstrainedEquilibrium {
             t,
-            q: <M as crate::mechanism::Dynamics<N>>::Coords::from_array(q),
+            q: <M as crate::evaluation::Evaluate<N>>::Coords::from_array(q),
             multipliers,
             names: M::NAMES,
             active,
@@ -694,7 +694,7 @@ fn tangent_mass_error<M, const N: usize, const K: usize, const C: usize>(
 where
     M: Constraints<N, K, C> + Mechanism<N>,
 {
-    let names = <M as crate::mechanism::Dynamics<N>>::Coords::NAMES;
+    let names = <M as crate::evaluation::Evaluate<N>>::Coords::NAMES;
     if !kkt.rest.mass_matrix.iter().all(|x| x.is_finite()) {
         return Error::NonFiniteDynamics {
             t,

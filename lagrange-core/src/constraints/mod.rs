@@ -63,10 +63,11 @@
 //! Which rows are enforced is the [`Mode`]: unilateral rows are in contact or separated, friction
 //! rows stick or slide in one direction. [`infer_mode`] reads it from a state by complementarity
 //! (a contact with c ≈ 0 and ċ ≈ 0 is active if its λ ≥ 0; a slip velocity ≈ 0 sticks if static
-//! friction can hold it). [`ContactRk4`] integrates with the mode fixed during a step and locates the
-//! instant a mode changes — contact, release (λ = 0), slip velocity reaching 0, static friction
-//! exceeded — to 1e-12 relative by the Illinois method on the step length, so mode changes happen
-//! exactly once and never chatter. A sliding cone has no sign to fix during a step, so its slip
+//! friction can hold it). A time loop ([`crate::integrate::Stepper`]) holds the mode over a step
+//! ([`ContactModel`]: a declaration's `Dynamics::Contacts`) and locates the instant a mode
+//! changes — contact, release (λ = 0), slip velocity reaching 0, static friction exceeded — by the
+//! Illinois method (on the step length with a fixed step, to 1e-12 relative; on the dense output
+//! of an adaptive step), so mode changes happen exactly once and never chatter. A sliding cone has no sign to fix during a step, so its slip
 //! direction at the step's start, [`Mode::reference`], plays that part: the force opposes
 //! ŝ·sign(ŝ·ŝ_ref), which continues smoothly through the instant the slip stops, and that instant is
 //! the zero of s·ŝ_ref.
@@ -90,16 +91,14 @@
 //!
 //! # Integrators
 //!
-//! Every integrator must call `Dynamics::check_constraints`
-//! on the state before a step (refusing a state that violates the constraints) and
-//! `Dynamics::project` on the new (q, q̇) after it, before writing it
-//! back; both default to no-ops, so unconstrained mechanisms pay nothing. [`Rk4`](crate::Rk4) does.
-//! Unilateral contacts and friction should be integrated with [`ContactRk4`] (fixed step) or
-//! [`ContactDopri5`] (adaptive, [`Dopri5::integrate_contacts`](crate::integrate::Dopri5::integrate_contacts)),
-//! which keep the mode fixed over a step and locate mode changes; other integrators re-infer the
-//! mode at every evaluation of q̈ ([`accelerations`]), which is right between events but puts each
-//! event somewhere inside a step (an adaptive method then rejects and shrinks its steps around
-//! every switch, and a contact drifting by round-off chatters between modes).
+//! Every integrator calls `Dynamics::check_constraints` on the state before a run (refusing a state
+//! that violates the constraints) and `Dynamics::project` on the new (q, q̇) after every step,
+//! before writing it back; both default to no-ops, so unconstrained mechanisms pay nothing. On a
+//! declaration with unilateral contacts or friction every time loop holds the contact mode over a
+//! step ([`ContactModel`]) and locates its changes; evaluated on its own, [`accelerations`] re-infers
+//! the mode from the state at every call, which is right between events but would put each event
+//! somewhere inside a step (an adaptive method would reject and shrink its steps around every
+//! switch, and a contact drifting by round-off would chatter between modes).
 //!
 //! # Cost
 //!
@@ -129,14 +128,14 @@
 //! # Example: what a declaration with a `#[constraint]` expands to
 //!
 //! A planar pendulum in Cartesian coordinates: the bob (x, y) is kept at distance L from the pivot
-//! by a holonomic constraint written on the bob's position. The three impls are exactly the shape
-//! the `#[mechanism]` attribute generates; the three constraint overrides of `Dynamics` (the glue
-//! beneath `Mechanism`) are what makes every integrator enforce the constraints.
+//! by a holonomic constraint written on the bob's position. The impls are the shape the
+//! `#[mechanism]` attribute generates; the constraint overrides of `Dynamics` (the glue beneath
+//! `Mechanism`) are what makes every integrator enforce the constraints.
 //!
 //! ```
 //! use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 //! use lagrange_core::dynamics::{self, EquationsOfMotion};
-//! use lagrange_core::mechanism::{Dynamics, Prepare};
+//! use lagrange_core::evaluation::{Dynamics, Prepare};
 //! use lagrange_core::{vec2, Mechanism, Model, Rk4, Scalar, State};
 //!
 //! struct Pendulum { m: f64, l: f64, g: f64 }
@@ -168,23 +167,29 @@
 //!
 //! impl Dynamics<2> for Pendulum {
 //!     type Coords = [f64; 2];
+//!     // Its contact modes: none switch (a holonomic row is always enforced).
+//!     type Contacts = constraints::ContactState<2, 1>;
 //!     fn check_parameters(&self) -> lagrange_core::Result<()> { Model::validate(self) }
-//!     fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
+//!     fn equations_of_motion_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
 //!         dynamics::equations_of_motion(self, t, q, v)
 //!     }
-//!     fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
+//!     fn kinetic_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> S {
 //!         dynamics::kinetic_energy(self, t, q, v)
 //!     }
-//!     fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; 2]) -> S { dynamics::potential_energy(self, t, q) }
-//!     fn momenta_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] { dynamics::momenta(self, t, q, v) }
-//!     fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
+//!     fn potential_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2]) -> S {
+//!         dynamics::potential_energy(self, t, q)
+//!     }
+//!     fn momenta_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
+//!         dynamics::momenta(self, t, q, v)
+//!     }
+//!     fn lagrangian_time_derivative_at(&self, _: Option<&()>, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
 //!         dynamics::lagrangian_time_derivative(self, t, q, v)
 //!     }
 //!     // The three overrides of a constrained mechanism:
-//!     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
+//!     fn accelerations_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
 //!         constraints::accelerations(self, t, q, v)
 //!     }
-//!     fn project(&self, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
+//!     fn project(&self, _: Option<&()>, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
 //!         let mode = constraints::infer_mode(self, t, q, v)?;
 //!         constraints::project(self, t, q, v, &mode)
 //!     }
@@ -214,35 +219,30 @@
 // `!(x > tol)` is deliberate: it also rejects NaN.
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
-mod adaptive;
 mod cone;
 mod consistency;
 mod contact;
+mod events;
 mod forces;
-mod held;
 mod kinds;
 mod mode;
 mod prepared;
 mod projection;
-mod routing;
 mod rows;
 mod solve;
+mod switch;
 
-pub use adaptive::{ContactAdaptive, ContactDop853, ContactDopri5, ContactRadau5};
 pub use consistency::{
     check_consistent, check_velocity_rows_affine, consistent_state, consistent_state_holding,
     CONSISTENCY_TOLERANCE,
 };
-pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChange};
+pub use contact::{row_count, ContactModel, ContactOptions, ContactState, ModeChange, NoContacts};
 pub use forces::{constraint_forces, ConstraintForces};
-pub use mode::infer_mode;
-pub use prepared::{project_prepared, regular_accelerations_prepared};
+pub use mode::{accelerations, infer_mode};
+pub use prepared::{accelerations_prepared, project_prepared, regular_accelerations_prepared};
 pub use projection::project;
-pub use routing::{integrate_declared_contacts, step_declared_contacts};
 pub use rows::{constraint_rows, holonomic_values, CartesianMotion, ConstraintRows};
-pub use solve::{
-    accelerations, accelerations_in_mode, accelerations_prepared, ConstrainedAccelerations,
-};
+pub use solve::{accelerations_in_mode, ConstrainedAccelerations};
 
 use crate::geometry::Scalar;
 use crate::model::Model;
@@ -468,9 +468,9 @@ impl<const C: usize> Mode<C> {
 /// `Dynamics::accelerations_at` with [`accelerations`],
 /// `Dynamics::project` with [`project`] in the [`infer_mode`]d mode, and
 /// `Dynamics::check_constraints` with [`check_consistent`],
-/// so every integrator that calls the hooks enforces the constraints; the [module example](self)
-/// shows the exact code. Contacts and friction need [`ContactRk4`] for located mode changes (plain
-/// integrators re-infer the mode at every evaluation, so a mode change falls inside a step).
+/// so every integrator that calls the hooks enforces the constraints, and names its contact modes
+/// `Dynamics::Contacts` = [`ContactState`], which the time loops hold over a step to locate mode
+/// changes; the [module example](self) shows the exact code.
 pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, K> {
     /// Row names, in declaration order.
     const NAMES: [&'static str; C];

@@ -1,11 +1,9 @@
-//! The Schur-complement solve of the KKT system in a mode: [`ConstrainedAccelerations`],
-//! [`accelerations_in_mode`] (sliding friction included) and [`accelerations`].
+//! The Schur-complement solve of the KKT system in a mode: [`ConstrainedAccelerations`] and
+//! [`accelerations_in_mode`] (sliding friction included).
 
 use super::cone;
-use super::kinds::{always_active, written_holonomic};
-use super::prepared::holonomic_accelerations_prepared;
 use super::rows::{constraint_rows, real, rows_from_pass, ConstraintRows};
-use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
+use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
 use crate::dynamics;
 use crate::error::{describe_configuration, Error, Result};
@@ -13,9 +11,6 @@ use crate::geometry::Scalar;
 use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite, SINGULAR_PIVOT};
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
-
-// `contact.rs` imports `worst_violation` from here, where it was before the split.
-pub(crate) use super::mode::worst_violation;
 
 /// Solves with sliding friction tried before the signs of the bilateral normal forces are declared
 /// inconsistent ([`Error::FrictionIndeterminate`]): two decide one normal row, the rest allow for
@@ -461,93 +456,4 @@ pub(super) fn finish<
     } else {
         Err(dynamics::non_finite_dynamics::<M::Coords, S, N>(t, q))
     }
-}
-
-/// q̈ at (t, q, q̇) with the mode read from the state ([`infer_mode`]); with only holonomic and
-/// velocity rows, every row is enforced and no inference runs. What a constrained mechanism's
-/// `Dynamics::accelerations_at` forwards to.
-pub fn accelerations<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> Result<[S; N]> {
-    let mode = if always_active::<M, N, K, C>() {
-        Mode::all_active::<M, N, K>()
-    } else {
-        infer_mode(model, t.re(), &real(q), &real(v))?
-    };
-    accelerations_in_mode(model, t, q, v, &mode).map(|a| a.accelerations)
-}
-
-/// [`accelerations`] of a mechanism whose positions are affine in the coordinates (x = A q + c,
-/// see [`crate::affine`]), with the constants prepared once from its parameters: what a
-/// constrained affine mechanism's validated handle evaluates. Agrees with [`accelerations`] to
-/// round-off.
-///
-/// ```
-/// use lagrange_core::affine::AffineConstants;
-/// use lagrange_core::constraints::{self, ConstraintKind, Constraints};
-/// use lagrange_core::{vec2, Model, Scalar};
-///
-/// /// A pendulum in Cartesian coordinates: x = q, affine; the rod |x| = 2 a constraint.
-/// struct Pendulum;
-/// impl Model<2, 2> for Pendulum {
-///     type Coords = [f64; 2];
-///     const RHEONOMIC: bool = false;
-///     const HAS_POTENTIAL: bool = false;
-///     const HAS_FORCES: bool = false;
-///     const HAS_GRAVITY: bool = true;
-///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
-///     fn masses(&self) -> [f64; 2] { [1.5, 1.5] }
-///     fn weights(&self) -> [f64; 2] { [0.0, -1.5 * 9.81] }
-///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
-///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], _x: &[D; 2]) -> D { D::zero() }
-/// }
-/// impl Constraints<2, 2, 1> for Pendulum {
-///     const NAMES: [&'static str; 1] = ["rod"];
-///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
-///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
-///         [vec2(x[0], x[1]).norm() - 2.0]
-///     }
-/// }
-///
-/// let constants = AffineConstants::of(&Pendulum)?;
-/// let (q, v) = ([1.2, -1.6], [0.8, 0.6]);
-/// let prepared = constraints::accelerations_prepared(&Pendulum, &constants, 0.0, &q, &v)?;
-/// let direct = constraints::accelerations(&Pendulum, 0.0, &q, &v)?;
-/// assert!((prepared[0] - direct[0]).abs() < 1e-14 && (prepared[1] - direct[1]).abs() < 1e-14);
-/// # Ok::<(), lagrange_core::Error>(())
-/// ```
-#[inline]
-pub fn accelerations_prepared<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    model: &M,
-    constants: &AffineConstants<N, K>,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> Result<[S; N]> {
-    // Holonomic rows written out: the Schur complement from the prepared constants alone.
-    if written_holonomic::<M, N, K, C>() {
-        return holonomic_accelerations_prepared(model, constants, t, q, v)
-            .map(|a| a.accelerations);
-    }
-    let mode = if always_active::<M, N, K, C>() {
-        Mode::all_active::<M, N, K>()
-    } else {
-        infer_mode(model, t.re(), &real(q), &real(v))?
-    };
-    accelerations_in_mode_prepared(model, constants, t, q, v, &mode).map(|a| a.accelerations)
 }

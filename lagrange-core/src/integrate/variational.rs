@@ -49,21 +49,19 @@
 //! `Dynamics::project` applied to the velocity recovered from p₁ without Λ₁. Velocity rows and
 //! friction are refused by the declaration (`Dynamics::CONSTRAINT_COUNTS`, see
 //! [`holonomic_rows`](super::holonomic_rows)), whatever the state. Unilateral contacts are
-//! integrated through the contact loop with the mode held over each step
-//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single `sys.step` takes): a
-//! closed contact is a RATTLE row for the step (see [`rattle`](super::rattle)); stepped on its own
-//! ([`FixedStepper`](super::FixedStepper)) the method refuses them.
+//! integrated with the contact mode held over each step (the fixed-step loop of a
+//! [`Stepper`](super::Stepper), and a single `sys.step`): a closed contact is a RATTLE row for the
+//! step (see [`rattle`](super::rattle)).
 
-use super::canonical;
-pub use super::canonical::momentum_rate;
+use super::canonical::{self, momentum_rate};
 use super::newton::{jacobian_rows, max_norm, newton, seeded, NewtonEnd, MAX_NEWTON_ITERATIONS};
 use super::rattle::{breakdown, rows_and_jacobian, rows_in_force, rows_on};
-use super::solver::validated_step;
+use super::validated_step;
 use super::{Integrator, Stats};
 use crate::error::{Error, Result};
+use crate::evaluation::Evaluate;
 use crate::geometry::Scalar;
 use crate::linalg::{lu_solve, lu_solve_blocks};
-use crate::mechanism::Mechanism;
 use crate::model::State;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
@@ -103,7 +101,7 @@ pub struct Variational;
 
 /// R(v_m) of the module docs, for any scalar.
 #[inline]
-fn residual<M: Mechanism<N>, S: Scalar, const N: usize>(
+fn residual<M: Evaluate<N>, S: Scalar, const N: usize>(
     mechanism: &M,
     tm: f64,
     q0: &[f64; N],
@@ -131,7 +129,7 @@ impl Variational {
     /// One step of the discrete flow on (q, p): returns (q₁, p₁) and the midpoint velocity v_m
     /// (a good starting guess for recovering v₁). No validation.
     #[allow(clippy::type_complexity)]
-    pub fn step_momenta<M: Mechanism<N>, const N: usize>(
+    pub fn step_momenta<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q0: &[f64; N],
@@ -158,7 +156,7 @@ impl Variational {
     /// One step of the discrete flow with `rows` holonomic rows: (q₁, p₁ before RATTLE's μ, v_m,
     /// iterations).
     #[allow(clippy::type_complexity, clippy::too_many_arguments)]
-    fn momenta_step<M: Mechanism<N>, const N: usize>(
+    fn momenta_step<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         rows: usize,
         t: f64,
@@ -233,7 +231,7 @@ impl Variational {
     /// dual seeding of v_m through both R and g(q₀ + h v_m, t₁); the multipliers beyond `rows` are
     /// held at zero by identity rows. Returns (q₁, p₁ before μ, v_m, iterations).
     #[allow(clippy::type_complexity, clippy::too_many_arguments)]
-    fn constrained_momenta_step<M: Mechanism<N>, const N: usize>(
+    fn constrained_momenta_step<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         rows: usize,
         t: f64,
@@ -318,7 +316,7 @@ impl Variational {
 
     /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method
     /// with the exact Jacobian ∂p/∂v from dual numbers, from `guess`. Returns v and the iterations.
-    pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
+    pub fn velocities_from_momenta<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -330,7 +328,7 @@ impl Variational {
 
     /// One step on (q, v) arrays through the Legendre transform at both ends. No validation.
     #[allow(clippy::type_complexity)]
-    pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+    pub fn step_arrays<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -344,7 +342,7 @@ impl Variational {
     }
 
     #[allow(clippy::type_complexity)]
-    fn advance_counted<M: Mechanism<N>, const N: usize>(
+    fn advance_counted<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -379,7 +377,7 @@ impl Variational {
     }
 
     /// A validated step that also reports its Newton cost; the state is unchanged on error.
-    pub fn step_with_stats<M: Mechanism<N>, const N: usize>(
+    pub fn step_with_stats<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         state: &mut State<M::Coords>,
         h: f64,
@@ -396,11 +394,10 @@ impl Variational {
 impl Integrator for Variational {
     const NAME: &'static str = "variational midpoint";
     type Memory<const N: usize> = ();
-    // Unilateral contacts through the contact loop, a closed contact a RATTLE row for the step.
-    const HOLDS_CONTACT_MODE: bool = true;
+    // With the contact mode held, a closed contact is a RATTLE row for the step.
     const POSITION_ROWS_ONLY: bool = true;
 
-    fn advance<M: Mechanism<N>, const N: usize>(
+    fn advance<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         _memory: &mut (),
         t: f64,

@@ -39,10 +39,9 @@
 //! constraints and friction are refused, by the declaration (`Dynamics::CONSTRAINT_COUNTS`, see
 //! [`holonomic_rows`](super::holonomic_rows)), as is an implementation that does not declare its
 //! constraints: whatever the state, never by testing the multipliers. Unilateral contacts are
-//! integrated through the contact loop with the mode held over each step
-//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single `sys.step` takes): a
-//! closed contact is a RATTLE row for the step (see [`rattle`](super::rattle)); stepped on its own
-//! ([`FixedStepper`](super::FixedStepper)) the method refuses them.
+//! integrated with the contact mode held over each step (the fixed-step loop of a
+//! [`Stepper`](super::Stepper), and a single `sys.step`): a closed contact is a RATTLE row for the
+//! step (see [`rattle`](super::rattle)).
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
@@ -51,8 +50,8 @@ use super::rattle::{position_stage, rows_and_jacobian, rows_in_force};
 use super::{Integrator, Stats};
 use crate::dynamics::{mass_matrix_failure, solve_accelerations};
 use crate::error::{Error, Result};
+use crate::evaluation::Evaluate;
 use crate::linalg::{cholesky, cholesky_substitute};
-use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
@@ -98,7 +97,7 @@ impl StormerVerlet {
     /// One step on raw arrays: (q₁, v₁), or [`Error::UnsuitableMethod`] when the mass matrix
     /// changed over the step or the mechanism has constraints RATTLE does not enforce. No
     /// validation of the inputs.
-    pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+    pub fn step_arrays<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -108,7 +107,7 @@ impl StormerVerlet {
         Self::step_counted(mechanism, t, q, v, h, &mut Stats::default())
     }
 
-    fn step_counted<M: Mechanism<N>, const N: usize>(
+    fn step_counted<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -194,11 +193,10 @@ impl StormerVerlet {
 impl Integrator for StormerVerlet {
     const NAME: &'static str = "Stormer-Verlet";
     type Memory<const N: usize> = ();
-    // Unilateral contacts through the contact loop, a closed contact a RATTLE row for the step.
-    const HOLDS_CONTACT_MODE: bool = true;
+    // With the contact mode held, a closed contact is a RATTLE row for the step.
     const POSITION_ROWS_ONLY: bool = true;
 
-    fn advance<M: Mechanism<N>, const N: usize>(
+    fn advance<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         _memory: &mut (),
         t: f64,

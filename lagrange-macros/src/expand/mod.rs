@@ -36,7 +36,7 @@ use constraints::constraints_impl;
 use coords::coords_items;
 use declaration::declaration_impl;
 use drawable::drawable_impl;
-use mechanism::{mechanism_impl, Equations, Positions};
+use mechanism::{mechanism_impl, Equations, Glue, Positions};
 use model::{gradient_on_trees, model_impl};
 use parametrized::parametrized_items;
 
@@ -189,15 +189,15 @@ fn generate(model: &Model) -> TokenStream {
         (None, None, None) => Equations::Dense,
     };
     let closed_form_impl = closed_form_impl.map(|(tokens, _)| tokens);
-    let mechanism_impl = mechanism_impl(
-        model.params_ident,
-        model.dof(),
-        model.rows,
+    let mechanism_impl = mechanism_impl(&Glue {
+        params: model.params_ident,
+        n: model.dof(),
+        k: model.rows,
         constrained,
         equations,
-        model.rheonomic,
+        rheonomic: model.rheonomic,
         positions,
-    );
+    });
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);
     let drawable_impl = drawable_impl(model);

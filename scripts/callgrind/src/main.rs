@@ -396,10 +396,14 @@ enum Via {
 
 /// Σ q̈₀ over `n` calls: of `accelerations`, on the parameters or through a validated handle,
 /// whose parameters were checked once; or (`Via::Hot`) of the hook the integrators call on every
-/// stage, `Dynamics::accelerations_at` on the validated handle (which goes to
-/// `accelerations_prepared_at` with the constants it prepared): no parameter or state check, as
-/// within a step.
-fn calls<M: Mechanism<N>, const N: usize>(sys: M, s: &State<M::Coords>, n: usize, via: Via) -> f64 {
+/// stage, `Evaluate::accelerations_at` on the validated handle (with the constants it prepared): no
+/// parameter or state check, as within a step.
+fn calls<M: lagrange::evaluation::Dynamics<N>, const N: usize>(
+    sys: M,
+    s: &State<M::Coords>,
+    n: usize,
+    via: Via,
+) -> f64 {
     fn run<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
         let mut acc = 0.0;
         for _ in 0..n {
@@ -488,20 +492,21 @@ fn main() {
         }
         // One RK4 step (h = 10⁻³) per call on dual numbers seeded on 1, 2 or 4 initial values, or
         // on the lengths (`l1`, `l1_l2`, and both with two initial values: `l1_l2_4`)
-        // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
+        // (a `Stepper` with sensitivities), against `rk4_validated_double_pendulum`.
         mode if mode.starts_with("sensitivity_double_pendulum_") => {
-            use lagrange::sensitivity::{Seed, Tangent};
-            let sys = DOUBLE_PENDULUM
-            .validated()
-            .unwrap();
+            use lagrange::sensitivity::Seed;
+            let sys = DOUBLE_PENDULUM.validated().unwrap();
             let s = double_pendulum_start();
             let (q1, q2) = (Seed::Coordinate("theta1"), Seed::Coordinate("theta2"));
             let (v1, v2) = (Seed::Velocity("theta1"), Seed::Velocity("theta2"));
             macro_rules! run {
                 ($seeds:expr) => {{
-                    let mut run = Tangent::new(&sys, &s, $seeds).unwrap();
+                    let mut run = Stepper::new(&sys, Rk4::with_step(1e-3), &s)
+                        .unwrap()
+                        .with_sensitivities($seeds)
+                        .unwrap();
                     for _ in 0..n {
-                        black_box(&mut run).rk4_step(1e-3).unwrap();
+                        black_box(&mut run).step(f64::INFINITY).unwrap();
                     }
                     acc += run.sensitivities().dq[0].theta1;
                 }};
@@ -534,8 +539,13 @@ fn main() {
                     if which.starts_with("gl2") {
                         let mut memory = NewtonMemory::<2, 2>::default();
                         for _ in 0..n {
-                            GaussLegendre2::step_with_memory(black_box($sys), &mut memory, &mut s, 1e-3)
-                                .unwrap();
+                            GaussLegendre2::step_with_memory(
+                                black_box($sys),
+                                &mut memory,
+                                &mut s,
+                                1e-3,
+                            )
+                            .unwrap();
                         }
                     } else {
                         let mut memory = NewtonMemory::<2, 1>::default();
@@ -567,9 +577,13 @@ fn main() {
             let mut s = double_pendulum_start();
             for _ in 0..n {
                 if which.starts_with("gl2") {
-                    black_box(&params).step::<GaussLegendre2>(&mut s, 1e-3).unwrap();
+                    black_box(&params)
+                        .step::<GaussLegendre2>(&mut s, 1e-3)
+                        .unwrap();
                 } else {
-                    black_box(&params).step::<ImplicitMidpoint>(&mut s, 1e-3).unwrap();
+                    black_box(&params)
+                        .step::<ImplicitMidpoint>(&mut s, 1e-3)
+                        .unwrap();
                 }
             }
             acc += s.q.theta1;

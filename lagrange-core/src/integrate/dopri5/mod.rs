@@ -14,15 +14,8 @@
 //! - Dense output: the continuous extension of order 4 of DOPRI5 (HNW I §II.6, (6.12) and the
 //!   coefficients d₁…d₇ of Hairer's DOPRI5/CONTD5), no extra evaluation:
 //!   y(t₀ + θh) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))).
-//! - Events: after each accepted step every event function g(state) is evaluated at the new point;
-//!   a sign change in the event's direction is located on the dense output by the Illinois variant of
-//!   regula falsi (Dowell & Jarratt, BIT 11 (1971)), which keeps a bracket, until the bracket is
-//!   shorter than max(1e-13, 4ε|t|) (so within 1e-12 of the root of g on the dense output; the
-//!   distance to the exact root is then that of the dense solution, O(tolerance)). Events in one step
-//!   are reported in time order; a terminal event ends the integration at its time, with the state
-//!   taken from the dense output. An event function with two roots inside one step shows no sign
-//!   change and is missed: bound `h_max` if that matters.
-//!
+//! - Events, the observer, the statistics and the contact mode are those of every solver
+//!   ([`Stepper`](super::Stepper)); events are located on the dense output.
 //! - Constraints: the start state must satisfy the mechanism's constraints
 //!   (`Dynamics::check_constraints`); every accepted step is projected onto them
 //!   (`Dynamics::project`, a no-op without constraints). The dense output interpolates the step
@@ -34,24 +27,14 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
-use super::solver::{check_step, Stepper};
-pub use super::solver::{Direction, Event, EventHit, Observation, Outcome, Stats, StopReason};
-use super::Integrator;
+use super::{check_step, Integrator, Stats};
 use crate::error::{Error, Result};
-use crate::mechanism::Mechanism;
-use crate::model::State;
+use crate::evaluation::Evaluate;
 
-mod control;
-mod dense;
-mod stepper;
+mod stages;
 mod tableau;
 
-pub use control::Controller;
-pub(crate) use control::{adaptive_step, initial_step, initial_step_on, project_accepted, ratio};
-pub(crate) use dense::{dense_output, hermite_rows};
-pub use dense::{DenseOutput, EVENT_TIME_TOLERANCE};
-pub use stepper::Dopri5Stepper;
-pub(crate) use stepper::{stages, trial};
+pub(crate) use stages::{dense_output, stages, trial, Stages};
 
 /// Settings of the adaptive Dormand–Prince 5(4) method (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -64,7 +47,7 @@ pub struct Dopri5 {
     pub h_init: Option<f64>,
     /// Largest step.
     pub h_max: f64,
-    /// Most step attempts (accepted + rejected) of one [`Dopri5::integrate`] call.
+    /// Most step attempts (accepted + rejected) of one integration ([`Stepper::integrate`](super::Stepper::integrate)).
     pub max_steps: usize,
     /// Safety factor of the step-size controller.
     pub safety: f64,
@@ -92,12 +75,6 @@ impl Default for Dopri5 {
         }
     }
 }
-
-/// What a Dormand–Prince integration cost (the statistics every solver keeps).
-pub type Dopri5Stats = Stats;
-
-/// The result of [`Dopri5::integrate`].
-pub type Dopri5Outcome<C> = Outcome<C>;
 
 impl Dopri5 {
     /// The default settings with these tolerances.
@@ -176,47 +153,12 @@ impl Dopri5 {
         }
         Ok(())
     }
-
-    /// Integrates from `state` to `t_end` (≥ state.t), calling `observer` after every accepted
-    /// step and for every located event, and stopping early at a terminal event or after
-    /// `max_steps` attempts. On success `state` is the final state (at t_end, at the terminal event,
-    /// or the last accepted one); on error `state` is unchanged. No allocation.
-    ///
-    /// A mechanism with unilateral contacts or friction is integrated here with its mode re-inferred
-    /// at every evaluation, so each mode switch falls inside a step and costs many rejected steps:
-    /// use [`integrate_contacts`](Self::integrate_contacts) for it, which fixes the mode over a
-    /// step and locates the switches.
-    pub fn integrate<M: Mechanism<N>, const N: usize>(
-        &self,
-        mechanism: &M,
-        state: &mut State<M::Coords>,
-        t_end: f64,
-        events: &mut [Event<'_, M::Coords>],
-        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
-    ) -> Result<Dopri5Outcome<M::Coords>> {
-        if !(t_end.is_finite() && t_end >= state.t) {
-            return Err(Error::InvalidEndTime { t: state.t, t_end });
-        }
-        // Unilateral and friction rows: the mode held per step, its switches located.
-        if let Some(outcome) =
-            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
-        {
-            return outcome;
-        }
-        let mut stepper = Dopri5Stepper::new(mechanism, *self, state)?;
-        let outcome = stepper.integrate(t_end, events, observer)?;
-        *state = match outcome.reason {
-            StopReason::Event(hit) => hit.state,
-            _ => stepper.state(),
-        };
-        Ok(outcome)
-    }
 }
 
 /// `sys.step::<Dopri5>(&mut state, h)`: integrates over [t, t + h] with the
 /// [default](Dopri5::default) tolerances (rtol 1e-6, atol 1e-9), as many adaptive steps as that
 /// takes, landing exactly on t + h — the state advances by h, as with every fixed-step method.
-/// For other tolerances, dense output or events use [`Dopri5::integrate`] or a [`Dopri5Stepper`].
+/// For other tolerances, dense output or events use a [`Stepper`](super::Stepper).
 ///
 /// ```
 /// use lagrange_core::{Dopri5, Mechanism, State};
@@ -246,8 +188,9 @@ impl Dopri5 {
 impl Integrator for Dopri5 {
     const NAME: &'static str = "Dopri5";
     type Memory<const N: usize> = ();
+    const ADAPTIVE: bool = true;
 
-    fn advance<M: Mechanism<N>, const N: usize>(
+    fn advance<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         _memory: &mut (),
         t: f64,
@@ -256,15 +199,6 @@ impl Integrator for Dopri5 {
         h: f64,
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N])> {
-        let mut stepper = Dopri5Stepper::start(mechanism, Dopri5::default(), t, *q, *v)?;
-        let t_end = t + h;
-        let result = (|| {
-            while stepper.t < t_end {
-                stepper.step(t_end)?;
-            }
-            Ok((stepper.q, stepper.v))
-        })();
-        *stats += stepper.stats;
-        result
+        super::adaptive::advance_over(mechanism, Dopri5::default(), (t, q, v), h, stats)
     }
 }

@@ -5,6 +5,7 @@ use super::predictor::PreviousStep;
 use super::tableau::Tableau;
 use super::{ImplicitStepStats, NewtonMemory, JACOBIAN_REUSE_THETA};
 use crate::error::{Error, Result};
+use crate::evaluation::Evaluate;
 use crate::integrate::canonical::{
     canonical_field, field_jacobians, velocities_and_mass_from_momenta, FieldJacobians,
 };
@@ -12,7 +13,6 @@ use crate::integrate::newton::{
     self, carries_constraint_forces, max_norm, newton, BlockLu, NewtonEnd, MAX_NEWTON_ITERATIONS,
 };
 use crate::integrate::Stats;
-use crate::mechanism::Mechanism;
 use nalgebra::{SMatrix, SVector};
 
 /// What [`finish`] gives: q₁, v₁, p₁, M(q₁) if the velocity recovery solved with it, and the
@@ -57,7 +57,7 @@ fn stage_position<const N: usize, const S: usize>(
 /// One collocation step: the simplified Newton iteration with the memory's matrix (or a fresh one),
 /// falling back to the exact Newton iteration when even a fresh simplified one does not contract.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
-pub(super) fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
+pub(super) fn collocation_step<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
     memory: &mut NewtonMemory<N, S>,
@@ -67,7 +67,7 @@ pub(super) fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     h: f64,
     stats: &mut Stats,
 ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
-    newton::refuse_contacts::<M, N>(tableau.name, newton::CONTACT_METHODS)?;
+    newton::refuse_contacts::<M, N>(tableau.name)?;
     let v0 = SVector::<f64, N>::from(*v);
     let q0 = SVector::<f64, N>::from(*q);
     // The previous step of this solver, if it ended where this one starts.
@@ -239,7 +239,7 @@ pub(super) fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
 /// starting from the collocation polynomial's end velocity v₀ + Σ dᵢ (Vᵢ − v₀), dᵀ = bᵀA⁻¹,
 /// which is exact when p = M v with M constant.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
-fn finish<M: Mechanism<N>, const N: usize, const S: usize>(
+fn finish<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
     t: f64,
@@ -277,7 +277,7 @@ fn finish<M: Mechanism<N>, const N: usize, const S: usize>(
 /// anew): quadratic convergence, the fallback when a simplified iteration with a fresh matrix
 /// does not contract (steps far too large for the mechanism's time scales).
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
-fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
+fn exact_collocation<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
     t: f64,

@@ -6,7 +6,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::algebra::*;
-use super::step::Radau5Memory;
+use super::memory::Radau5Memory;
 use super::Radau5;
 use crate::error::{Error, Result};
 use crate::integrate::pair::{AccelerationField, StepStart};

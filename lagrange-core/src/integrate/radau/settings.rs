@@ -1,13 +1,10 @@
-//! The settings of [`Radau5`](super::Radau5) and its one-call integration.
+//! The settings of [`Radau5`](super::Radau5).
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::super::solver::{check_step, Stepper};
-use super::{Event, Observation, Outcome, Radau5Stepper, StopReason};
 use crate::error::{Error, Result};
-use crate::mechanism::Mechanism;
-use crate::model::State;
+use crate::integrate::check_step;
 
 /// Settings of the adaptive Radau IIA method of order 5 (see the [module docs](super)).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -20,7 +17,8 @@ pub struct Radau5 {
     pub h_init: Option<f64>,
     /// Largest step.
     pub h_max: f64,
-    /// Most step attempts (accepted + rejected) of one [`Stepper::integrate`] call.
+    /// Most step attempts (accepted + rejected) of one integration
+    /// ([`Stepper::integrate`](crate::integrate::Stepper::integrate)).
     pub max_steps: usize,
     /// Most Newton iterations per step attempt (`radau5.f`: 7).
     pub max_newton_iterations: usize,
@@ -116,36 +114,5 @@ impl Radau5 {
             check_step(h)?;
         }
         Ok(())
-    }
-
-    /// Integrates from `state` to `t_end` as [`Dopri5::integrate`](crate::integrate::Dopri5::integrate) does:
-    /// on success `state` is the final state, on error it is unchanged. A declaration with
-    /// unilateral contacts or friction is integrated with its contact mode held per step and the
-    /// switches located ([`ContactRadau5`](crate::constraints::ContactRadau5), default
-    /// [`ContactOptions`](crate::constraints::ContactOptions)), as Dopri5 does.
-    pub fn integrate<M: Mechanism<N>, const N: usize>(
-        &self,
-        mechanism: &M,
-        state: &mut State<M::Coords>,
-        t_end: f64,
-        events: &mut [Event<'_, M::Coords>],
-        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
-    ) -> Result<Outcome<M::Coords>> {
-        if !(t_end.is_finite() && t_end >= state.t) {
-            return Err(Error::InvalidEndTime { t: state.t, t_end });
-        }
-        // Unilateral and friction rows: the mode held per step, its switches located.
-        if let Some(outcome) =
-            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
-        {
-            return outcome;
-        }
-        let mut stepper = Radau5Stepper::new(mechanism, *self, state)?;
-        let outcome = stepper.integrate(t_end, events, observer)?;
-        *state = match outcome.reason {
-            StopReason::Event(hit) => hit.state,
-            _ => stepper.state(),
-        };
-        Ok(outcome)
     }
 }

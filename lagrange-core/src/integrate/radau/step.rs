@@ -1,65 +1,24 @@
 //! One accepted step of [`Radau5`] on any [`AccelerationField`] ([`EmbeddedPair`]): the step-size
 //! control of the [parent module](super) around the Newton iteration of
-//! [`iteration`](super::iteration), shared by the plain [`Radau5Stepper`](super::Radau5Stepper) and the contact solver
-//! [`ContactRadau5`](crate::constraints::ContactRadau5).
+//! [`iteration`](super::iteration), on a mechanism's accelerations or those of a held contact mode.
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::algebra::*;
 use super::iteration::Attempt;
+use super::memory::Radau5Memory;
 use super::Radau5;
 use crate::error::{Error, Result};
-use crate::integrate::dopri5::{initial_step_on, DenseOutput, Dopri5};
-use crate::integrate::pair::{AccelerationField, Accepted, EmbeddedPair, StepStart};
+use crate::integrate::control::initial_step_on;
+use crate::integrate::dense::DenseOutput;
+use crate::integrate::dopri5::Dopri5;
+use crate::integrate::pair::{sealed, AccelerationField, Accepted, EmbeddedPair, StepStart};
 use crate::integrate::Stats;
 use crate::model::{check_state, Coordinates};
 use nalgebra::SVector;
 
-/// What [`Radau5`] keeps from one step to the next ([`EmbeddedPair::Memory`]): the converted
-/// tolerances, the proposed step and the controller's history, the Jacobian and factorisation
-/// being reused, the Newton iteration's contraction estimates, and the last step's collocation
-/// polynomial (the next iteration's starting values).
-#[derive(Clone, Copy, Debug)]
-pub struct Radau5Memory<const N: usize> {
-    /// The converted tolerances (rtol′, atol′) and the Newton tolerance κ·tol.
-    pub(super) rtol: f64,
-    pub(super) atol: f64,
-    pub(super) newton_tol: f64,
-    pub(super) h: f64,
-    pub(super) jacobians: Option<Jacobians<N>>,
-    /// Whether the Jacobian was evaluated at the current point (no accepted step since).
-    pub(super) jacobian_current: bool,
-    pub(super) factors: Option<Factors<N>>,
-    /// Contraction rate of the last Newton iteration, and η of HW II (8.10).
-    pub(super) theta: f64,
-    pub(super) faccon: f64,
-    /// No step accepted yet.
-    pub(super) first: bool,
-    /// Gustafsson's controller: the last accepted step and its error.
-    pub(super) h_acc: f64,
-    pub(super) err_acc: f64,
-    /// The last accepted step's collocation polynomial; `None` at the start and after the field
-    /// changed (then the Newton iteration starts from Z = 0).
-    pub(super) last: Option<DenseOutput<N>>,
-}
-
-impl<const N: usize> Radau5Memory<N> {
-    /// After a failed attempt: a Jacobian not evaluated at the current point is evaluated anew.
-    pub(super) fn renew_jacobian_if_old(&mut self) {
-        if !self.jacobian_current {
-            self.jacobians = None;
-        }
-    }
-
-    /// scᵢ = atol′ + rtol′·|y₀ᵢ|.
-    pub(super) fn scale(&self, y: &Pair<N>) -> Pair<N> {
-        Pair {
-            q: y.q.map(|x| self.atol + self.rtol * x.abs()),
-            v: y.v.map(|x| self.atol + self.rtol * x.abs()),
-        }
-    }
-}
+impl sealed::Sealed for Radau5 {}
 
 /// The start of a step as first-order vectors: y₀ = (q₀, v₀) and f(y₀) = (v₀, q̈₀).
 fn first_order<const N: usize>((_, q, v, a): StepStart<'_, N>) -> (Pair<N>, Pair<N>) {
@@ -83,6 +42,7 @@ impl Radau5 {
         t_new: f64,
         h: f64,
         z: &[Pair<N>; 3],
+        dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
         let y1 = Pair::combine([1.0, 1.0], [y0, &z[2]]);
         let (q1, v1): ([f64; N], [f64; N]) = (y1.q.into(), y1.v.into());
@@ -100,7 +60,7 @@ impl Radau5 {
             }
             r
         };
-        let dense = DenseOutput::from_coefficients(
+        *dense = DenseOutput::from_coefficients(
             t,
             h,
             make(&y0.q, [&z[0].q, &z[1].q, &z[2].q]),
@@ -111,7 +71,6 @@ impl Radau5 {
             q: q1,
             v: v1,
             a: None,
-            dense,
         })
     }
 }
@@ -119,6 +78,8 @@ impl Radau5 {
 impl EmbeddedPair for Radau5 {
     const NAME: &'static str = "Radau5";
     type Memory<const N: usize> = Radau5Memory<N>;
+    /// Nothing: the stages are the Newton iteration's own.
+    type Scratch<const N: usize> = ();
 
     fn validate(&self) -> Result<()> {
         Radau5::validate(self)
@@ -127,6 +88,8 @@ impl EmbeddedPair for Radau5 {
     fn max_steps(&self) -> usize {
         self.max_steps
     }
+
+    fn scratch<const N: usize>() {}
 
     fn start<const N: usize>(
         &self,
@@ -181,13 +144,15 @@ impl EmbeddedPair for Radau5 {
     fn step<C: Coordinates<N>, const N: usize>(
         &self,
         memory: &mut Radau5Memory<N>,
+        _scratch: &mut (),
         field: &impl AccelerationField<N>,
         start: StepStart<'_, N>,
         t_limit: f64,
         stats: &mut Stats,
+        dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
         let t = start.0;
-        if !(t_limit > t) || !t_limit.is_finite() {
+        if !(t_limit > t) {
             return Err(Error::InvalidEndTime { t, t_end: t_limit });
         }
         let (y0, f0) = first_order(start);
@@ -265,9 +230,9 @@ impl EmbeddedPair for Radau5 {
             memory.h_acc = h;
             memory.err_acc = err.max(1e-2);
             let t_new = if last { t_limit } else { t + h };
-            let accepted = Self::accepted::<C, N>((t, &y0), t_new, h, &z)?;
+            let accepted = Self::accepted::<C, N>((t, &y0), t_new, h, &z, dense)?;
             stats.accepted += 1;
-            memory.last = Some(accepted.dense);
+            memory.last = Some(*dense);
             memory.first = false;
             memory.jacobian_current = false;
             // The next step: keep h and the factorisation when the proposal is within keep_step and
@@ -299,10 +264,12 @@ impl EmbeddedPair for Radau5 {
     fn shorten<C: Coordinates<N>, const N: usize>(
         &self,
         memory: &mut Radau5Memory<N>,
+        _scratch: &mut (),
         field: &impl AccelerationField<N>,
         start: StepStart<'_, N>,
         h: f64,
         stats: &mut Stats,
+        dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
         let t = start.0;
         let (y0, _) = first_order(start);
@@ -316,8 +283,8 @@ impl EmbeddedPair for Radau5 {
             };
             match attempt {
                 Attempt::Converged(z, _) => {
-                    let accepted = Self::accepted::<C, N>((t, &y0), t + h, h, &z)?;
-                    memory.last = Some(accepted.dense);
+                    let accepted = Self::accepted::<C, N>((t, &y0), t + h, h, &z, dense)?;
+                    memory.last = Some(*dense);
                     memory.jacobian_current = false;
                     return Ok(accepted);
                 }
