@@ -65,7 +65,6 @@ pub mod prelude {
     pub use lagrange_macros::{mechanism, urdf};
 }
 
-pub use prelude::*;
 /// A robot's URDF file read at compile time into the declaration a user would write, expanded by
 /// [`mechanism`](macro@mechanism).
 ///
@@ -134,6 +133,7 @@ pub use prelude::*;
 /// or link); two joints or links whose identifiers coincide, or that collide with the
 /// declaration's own names (`t`, `g`, `gravity`, `<name>_dot`).
 pub use lagrange_macros::urdf;
+pub use prelude::*;
 
 pub use lagrange_core::analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability, Branch,

@@ -168,7 +168,10 @@ fn two_link_arm_matches_its_closed_form() {
 #[test]
 fn branched_tree_takes_the_tree_pass_and_equals_the_dense_pass() {
     assert_eq!(<branched::Branched as RigidTree<5, 5>>::JOINTS.len(), 5);
-    agrees_with_dense::<_, _, 5, 60>(&branched::Branched::default(), &branched::Branched::default());
+    agrees_with_dense::<_, _, 5, 60>(
+        &branched::Branched::default(),
+        &branched::Branched::default(),
+    );
     agrees_with_dense::<_, _, 5, 60>(&sprung::Sprung::default(), &sprung::Sprung::default());
     // The user's spring is there: at rest with the neck turned, it changes the neck's q̈ by
     // −2 q / M's share, so the two differ.
