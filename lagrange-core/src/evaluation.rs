@@ -10,6 +10,7 @@ use crate::dynamics::{solve_accelerations, EquationsOfMotion};
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::model::{check_state, Coordinates, State};
+use nalgebra::SMatrix;
 use num_dual::DualSVec;
 
 /// What a mechanism computes once from its parameters, when it is validated, so that every
@@ -54,6 +55,7 @@ pub type Constants<'a, M> = Option<&'a <M as Prepare>::Prepared>;
 /// | `CONSTRAINT_COUNTS`, `CONSTRAINTS`, `SCLERONOMIC`, `CLOSED_FORM` | what the declaration states |
 /// | `check_parameters` | finite parameters, positive masses and inertias |
 /// | `equations_of_motion_at(prepared, t, q, q̇)` | M, 𝓕 and b |
+/// | `mass_matrix_at(prepared, t, q)` | M alone (by default from the equations of motion) |
 /// | `accelerations_at(prepared, t, q, q̇)` | q̈ (by default M q̈ = 𝓕 − b solved) |
 /// | `regular_accelerations_at(prepared, t, q, q̇)` | q̈ with every check in one branch, where the equations are straight-line code |
 /// | `inverse_dynamics_at(prepared, t, q, q̇, q̈)` | τ = M q̈ + b − 𝓕 (by default from the equations of motion) |
@@ -121,6 +123,19 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
         q: &[S; N],
         v: &[S; N],
     ) -> EquationsOfMotion<S, N>;
+
+    /// M(q, t) alone, for any scalar. By default the equations of motion's (evaluated at q̇ = 0,
+    /// on which M does not depend); a rigid tree forms it by the composite-rigid-body algorithm
+    /// without the Newton–Euler sweep and the forces the equations of motion also compute.
+    #[inline]
+    fn mass_matrix_at<S: Scalar>(
+        &self,
+        prepared: Constants<'_, Self>,
+        t: S,
+        q: &[S; N],
+    ) -> SMatrix<S, N, N> {
+        Dynamics::equations_of_motion_at(self, prepared, t, q, &[S::zero(); N]).mass_matrix
+    }
 
     /// q̈ at (t, q, q̇) for any scalar: solves M q̈ = 𝓕 − b (with the constraint forces of a
     /// constrained mechanism). No validation (the hot path of integrators, which validate once
@@ -314,6 +329,11 @@ pub trait Evaluate<const N: usize>: Sized {
         v: &[S; N],
     ) -> EquationsOfMotion<S, N> {
         Dynamics::equations_of_motion_at(self.model(), self.prepared(), t, q, v)
+    }
+    /// [`Dynamics::mass_matrix_at`].
+    #[inline(always)]
+    fn mass_matrix_at<S: Scalar>(&self, t: S, q: &[S; N]) -> SMatrix<S, N, N> {
+        Dynamics::mass_matrix_at(self.model(), self.prepared(), t, q)
     }
     /// [`Dynamics::accelerations_at`].
     #[inline(always)]

@@ -100,6 +100,7 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let regular = regular_accelerations(glue);
     let canonical = canonical_field(glue);
     let (kinetic, inverse_dynamics) = (kinetic_energy(glue), inverse_dynamics(glue));
+    let mass_matrix = mass_matrix(glue);
     let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
     quote! {
         #prepare
@@ -117,6 +118,7 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
                 #p::core::result::Result::Ok(())
             }
             #equations_of_motion
+            #mass_matrix
             #accelerations
             #regular
             #inverse_dynamics
@@ -234,6 +236,26 @@ fn kinetic_energy(glue: &Glue) -> TokenStream {
             #body
         }
     }
+}
+
+/// `mass_matrix_at` of a rigid tree: the composite-rigid-body algorithm alone (the default, from
+/// the equations of motion, otherwise).
+fn mass_matrix(glue: &Glue) -> Option<TokenStream> {
+    let p = private();
+    let n = lit(glue.n);
+    let Equations::Rigid(b) = glue.equations else {
+        return None;
+    };
+    let b = lit(b);
+    let body = with_rigid_constants(quote!(
+        #p::tree::rigid::mass_matrix::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, __k, q)
+    ));
+    Some(quote! {
+        #[inline]
+        fn mass_matrix_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, _t: S, q: &[S; #n]) -> #p::nalgebra::SMatrix<S, #n, #n> {
+            #body
+        }
+    })
 }
 
 /// `inverse_dynamics_at` of a rigid tree: the recursive Newton–Euler algorithm (the default, from

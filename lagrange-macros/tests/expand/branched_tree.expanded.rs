@@ -1055,6 +1055,36 @@ pub mod legs {
             }
         }
         #[inline]
+        fn mass_matrix_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            _t: S,
+            q: &[S; 3],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 3, 3> {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::mass_matrix::<
+                    S,
+                    3,
+                    3,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        3,
+                        3,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                )
+            }
+        }
+        #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
             prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,

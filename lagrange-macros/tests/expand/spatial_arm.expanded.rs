@@ -839,6 +839,36 @@ pub mod arm {
             }
         }
         #[inline]
+        fn mass_matrix_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            _t: S,
+            q: &[S; 2],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::mass_matrix::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                )
+            }
+        }
+        #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
             prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
