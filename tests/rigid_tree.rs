@@ -228,6 +228,50 @@ pub mod bars {
     }
 }
 
+/// A root link turned by a constant rotation written out as a matrix (`rot3([[..]; 3])`) and one
+/// given by roll, pitch and yaw, each before its joint: both constants of the tree pass.
+#[mechanism]
+pub mod turned {
+    pub struct Coords {
+        pub q1: f64,
+        pub q2: f64,
+    }
+    pub struct Turned {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[rigid_body(mass = m, inertia = [0.03, 0.02, 0.01])]
+    fn upper() -> Spatial {
+        let r = rot3([[0.0, -1.0, 0.0], [0.6, 0.0, 0.8], [-0.8, 0.0, 0.6]]) * rot_x(q1);
+        spatial(r * vec3(0.0, 0.0, -0.5 * l), r)
+    }
+    #[rigid_body(mass = m * 0.5, inertia = [0.02, 0.02, 0.005])]
+    fn lower() -> Spatial {
+        let r = upper.rotation * rpy(0.1, -0.2, 0.3) * rot_y(q2);
+        spatial(
+            upper.point(vec3(0.0, 0.0, -0.5 * l)) + r * vec3(0.0, 0.0, -0.5 * l),
+            r,
+        )
+    }
+    #[gravity]
+    fn down() -> Vec3 {
+        vec3(0.0, 0.0, -g)
+    }
+}
+
+#[test]
+fn constant_rotations_written_as_a_matrix_or_by_roll_pitch_yaw_keep_the_tree_pass() {
+    assert_eq!(<turned::Turned as RigidTree<2, 2>>::JOINTS.len(), 2);
+    let sys = || turned::Turned {
+        m: 1.3,
+        l: 0.6,
+        g: 9.81,
+    };
+    agrees_with_dense::<_, _, 2, 24>(&sys(), &sys());
+    agrees_with_dense::<_, _, 2, 24>(&sys(), &sys().validated().unwrap());
+}
+
 /// An arm whose links are declared by their joint frames, each with its centre of mass and a
 /// full inertia tensor in that frame (`com`, `inertia = [[..]; 3]`): the tree pass places the
 /// centre of mass and turns the tensor itself, the dense pass maps the frames to principal axes.
