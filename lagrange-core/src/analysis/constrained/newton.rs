@@ -1,18 +1,13 @@
-//! Newton's method with a backtracking line search on F(q, λ) = 0 for a fixed set of enforced
+//! Newton's method with a backtracking line search ([`line_search`](crate::analysis::line_search)) on F(q, λ) = 0 for a fixed set of enforced
 //! rows (see [`constrained_equilibrium`](super::constrained_equilibrium)).
 
 use super::kkt::{check_independent, kkt_terms, trial_residual, Kkt};
+use crate::analysis::line_search::{backtrack, descent_direction};
 use crate::analysis::{describe, max_abs, EquilibriumOptions};
 use crate::constraints::Constraints;
 use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
 use nalgebra::{DMatrix, DVector};
-
-/// Armijo constant, backtracking factor and smallest step, as for the unconstrained search
-/// (Nocedal & Wright, Alg. 3.1).
-const ARMIJO: f64 = 1e-4;
-const BACKTRACK: f64 = 0.5;
-const MIN_STEP: f64 = 1e-12;
 
 /// The result of one Newton solve with a fixed set of enforced rows.
 pub(super) struct Solved<const N: usize> {
@@ -20,11 +15,6 @@ pub(super) struct Solved<const N: usize> {
     pub(super) lambda: Vec<f64>,
     pub(super) kkt: Kkt<N>,
     pub(super) iterations: usize,
-}
-
-/// Every entry finite.
-fn finite_vec(f: &DVector<f64>) -> bool {
-    f.iter().all(|x| x.is_finite())
 }
 
 /// The initial multipliers: least squares on the force balance, (G Gᵀ) λ = −G r (zero where the
@@ -62,61 +52,65 @@ fn residual_converged<const N: usize>(
     force_ok && constraints_ok
 }
 
-/// The search direction on ½‖F‖² with its slope ∇(½‖F‖²)·p and whether it is the Newton step:
-/// J p = −F when that descends, else steepest descent scaled like a Newton step (see
-/// `equilibrium`); `None` at a stationary point of ½‖F‖² that is not a root.
-fn descent_direction(jac: &DMatrix<f64>, f: &DVector<f64>) -> Option<(DVector<f64>, f64, bool)> {
-    let grad = jac.transpose() * f;
-    let newton = jac.clone().lu().solve(&(-f)).filter(finite_vec);
-    match newton {
-        Some(p) if grad.dot(&p) < 0.0 => {
-            let s = grad.dot(&p);
-            Some((p, s, true))
-        }
-        _ => {
-            let g2 = grad.norm_squared();
-            if g2 == 0.0 {
-                return None;
-            }
-            let p = -&grad * (f.norm_squared() / g2);
-            let s = grad.dot(&p);
-            Some((p, s, false))
-        }
-    }
-}
-
-/// Backtracking line search on ½‖F‖² along `direction` (Nocedal & Wright, Alg. 3.1): the first
-/// (q, λ) + α·direction, α = 1, ½, ¼, …, that satisfies Armijo's condition, or `None` once α is
-/// below [`MIN_STEP`].
-#[allow(clippy::too_many_arguments)]
-fn backtrack<M, const N: usize, const K: usize, const C: usize>(
+/// The terms at the starting point q with the least-squares multipliers, once they are finite
+/// and the enforced rows independent.
+fn starting_terms<M, const N: usize, const K: usize, const C: usize>(
     mechanism: &M,
     t: f64,
     q: &[f64; N],
-    lambda: &[f64],
     rows: &[usize],
-    direction: &DVector<f64>,
-    merit: f64,
-    slope: f64,
-) -> Option<([f64; N], Vec<f64>)>
+) -> Result<(Kkt<N>, Vec<f64>)>
 where
     M: Constraints<N, K, C> + Mechanism<N>,
 {
-    let m = rows.len();
-    let mut alpha = 1.0;
-    loop {
-        let trial_q: [f64; N] = std::array::from_fn(|k| q[k] + alpha * direction[k]);
-        let trial_l: Vec<f64> = (0..m)
-            .map(|a| lambda[a] + alpha * direction[N + a])
-            .collect();
-        let f_trial = trial_residual(mechanism, t, &trial_q, &trial_l, rows);
-        if finite_vec(&f_trial) && 0.5 * f_trial.norm_squared() <= merit + ARMIJO * alpha * slope {
-            return Some((trial_q, trial_l));
-        }
-        alpha *= BACKTRACK;
-        if alpha < MIN_STEP {
-            return None;
-        }
+    let kkt = kkt_terms(mechanism, t, q, rows);
+    if !kkt.finite() {
+        return Err(Error::NonFiniteDynamics {
+            t,
+            configuration: describe::<M, N>(q),
+        });
+    }
+    check_independent::<M, N, K, C>(&kkt, rows, t, q)?;
+    let lambda = least_squares_multipliers(&kkt, rows.len());
+    Ok((kkt, lambda))
+}
+
+/// The search direction on ½‖F‖² at (q, λ) (see [`descent_direction`]): from the Newton step
+/// J p = −F with the KKT matrix J, or steepest descent along Jᵀ F.
+fn search_direction<const N: usize>(
+    kkt: &Kkt<N>,
+    lambda: &[f64],
+    f: &DVector<f64>,
+) -> Option<(DVector<f64>, f64, bool)> {
+    let jac = kkt.jacobian(lambda);
+    let grad = jac.transpose() * f;
+    let newton_step = (jac.clone().lu().solve(&(-f))).filter(|p| p.iter().all(|x| x.is_finite()));
+    descent_direction(newton_step, &grad, f.norm_squared())
+}
+
+/// Whether a step `direction` = (δq, δλ) passes the step criterion: δq against max(1, ‖q‖∞), δλ
+/// against max(‖λ‖∞, force scale / ‖∇g‖).
+fn step_converged<const N: usize>(
+    kkt: &Kkt<N>,
+    q: &[f64; N],
+    lambda: &[f64],
+    direction: &DVector<f64>,
+    options: &EquilibriumOptions,
+) -> bool {
+    let q_step = max_abs(direction.rows(0, N).iter());
+    let l_step = max_abs(direction.rows(N, lambda.len()).iter());
+    let l_scale = max_abs(lambda.iter()).max(kkt.multiplier_scale(q, lambda));
+    q_step <= options.step_tolerance * max_abs(q.iter()).max(1.0)
+        && l_step <= options.step_tolerance * l_scale
+}
+
+/// (q, λ) += `direction` = (δq, δλ).
+fn take_step<const N: usize>(q: &mut [f64; N], lambda: &mut [f64], direction: &DVector<f64>) {
+    for k in 0..N {
+        q[k] += direction[k];
+    }
+    for (a, l) in lambda.iter_mut().enumerate() {
+        *l += direction[N + a];
     }
 }
 
@@ -140,15 +134,7 @@ where
         residual,
         configuration: describe::<M, N>(q),
     };
-    let mut kkt = kkt_terms(mechanism, t, &q, rows);
-    if !kkt.finite() {
-        return Err(Error::NonFiniteDynamics {
-            t,
-            configuration: describe::<M, N>(&q),
-        });
-    }
-    check_independent::<M, N, K, C>(&kkt, rows, t, &q)?;
-    let mut lambda = least_squares_multipliers(&kkt, m);
+    let (mut kkt, mut lambda) = starting_terms(mechanism, t, &q, rows)?;
     let mut iterations = 0;
     loop {
         let f = kkt.residual(&lambda);
@@ -167,26 +153,13 @@ where
         }
         iterations += 1;
 
-        let jac = kkt.jacobian(&lambda);
         let merit = 0.5 * f.norm_squared();
-        let Some((direction, slope, is_newton)) = descent_direction(&jac, &f) else {
+        let Some((direction, slope, is_newton)) = search_direction(&kkt, &lambda, &f) else {
             return Err(not_found(total + 1, f_norm, &q));
         };
-
-        let q_step = max_abs(direction.rows(0, N).iter());
-        let l_step = max_abs(direction.rows(N, m).iter());
-        let l_scale = max_abs(lambda.iter()).max(kkt.multiplier_scale(&q, &lambda));
-        if is_newton
-            && q_step <= options.step_tolerance * max_abs(q.iter()).max(1.0)
-            && l_step <= options.step_tolerance * l_scale
-        {
+        if is_newton && step_converged(&kkt, &q, &lambda, &direction, options) {
             // A Newton step below the step tolerance: take it and stop.
-            for k in 0..N {
-                q[k] += direction[k];
-            }
-            for a in 0..m {
-                lambda[a] += direction[N + a];
-            }
+            take_step(&mut q, &mut lambda, &direction);
             kkt = kkt_terms(mechanism, t, &q, rows);
             if !kkt.finite() {
                 return Err(not_found(total + 1, f64::NAN, &q));
@@ -199,7 +172,14 @@ where
             });
         }
 
-        let accepted = backtrack(mechanism, t, &q, &lambda, rows, &direction, merit, slope);
+        let accepted = backtrack(merit, slope, |alpha| {
+            let trial_q: [f64; N] = std::array::from_fn(|k| q[k] + alpha * direction[k]);
+            let trial_l: Vec<f64> = (0..m)
+                .map(|a| lambda[a] + alpha * direction[N + a])
+                .collect();
+            let f_trial = trial_residual(mechanism, t, &trial_q, &trial_l, rows);
+            ((trial_q, trial_l), f_trial)
+        });
         let Some((next_q, next_l)) = accepted else {
             return Err(not_found(total, f_norm, &q));
         };

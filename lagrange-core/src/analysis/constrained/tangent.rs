@@ -2,6 +2,7 @@
 //! pencil K_Z u = ω² M_Z u (see [`constrained_equilibrium`](super::constrained_equilibrium)).
 
 use super::kkt::Kkt;
+use crate::analysis::stability::symmetric_eigen_dynamic;
 use crate::analysis::{
     describe, mass_cholesky, rest_velocity_matrix, Stability, MARGINAL_TOLERANCE,
 };
@@ -10,20 +11,6 @@ use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
 use nalgebra::{DMatrix, SMatrix};
-
-/// Iteration cap for nalgebra's symmetric eigen-solver (it loops forever with 0).
-const EIGEN_ITERATIONS: usize = 100_000;
-
-/// Eigen-decomposition of a symmetric `DMatrix`, eigenvalues ascending with their vectors.
-fn symmetric_eigen(m: DMatrix<f64>) -> Option<(Vec<f64>, DMatrix<f64>)> {
-    let n = m.nrows();
-    let eig = nalgebra::SymmetricEigen::try_new(m, f64::EPSILON, EIGEN_ITERATIONS)?;
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
-    let values = order.iter().map(|&i| eig.eigenvalues[i]).collect();
-    let vectors = DMatrix::from_fn(n, n, |r, c| eig.eigenvectors[(r, order[c])]);
-    Some((values, vectors))
-}
 
 /// Why ZᵀMZ (the mass matrix on the tangent space of the enforced rows) has no Cholesky factor. When
 /// M itself is singular or not finite, the error of M's own factorisation: the coordinate it stops
@@ -111,7 +98,8 @@ where
     let ggt = &g_mat * g_mat.transpose();
     let ggt_inv = ggt.try_inverse().ok_or_else(eigen_failure)?;
     let p = DMatrix::<f64>::identity(N, N) - g_mat.transpose() * ggt_inv * &g_mat;
-    let (_, vectors) = symmetric_eigen((&p + p.transpose()) * 0.5).ok_or_else(eigen_failure)?;
+    let (_, vectors) =
+        symmetric_eigen_dynamic((&p + p.transpose()) * 0.5).ok_or_else(eigen_failure)?;
     let z = vectors.columns(m, N - m).into_owned();
 
     let mut curvature = SMatrix::<f64, N, N>::zeros();
@@ -133,7 +121,7 @@ where
         &l_inv * (z.transpose() * xs * &z) * l_inv.transpose()
     };
     let reduced = normalized(&k_l);
-    let (values, _) = symmetric_eigen(reduced).ok_or_else(eigen_failure)?;
+    let (values, _) = symmetric_eigen_dynamic(reduced).ok_or_else(eigen_failure)?;
 
     // Scale: the parts of the tangent stiffness before they cancel (forces, inertial terms,
     // constraint curvature), mass-normalized, as in `stability`.
