@@ -176,20 +176,7 @@ pub fn equations_of_motion<
         mut force,
         mut generalized_forces,
     } = rows::<M, S, N, K, W, B>(model, t, q, v, &d);
-    // Aᵢ = A_p(i) + αᵢ, root to leaf.
-    let mut acceleration = own_acceleration;
-    for body in &M::BODIES {
-        if let Some(p) = body.parent {
-            for k in 0..3 {
-                if k >= body.dim {
-                    break;
-                }
-                let (i, ip) = (body.row + k, M::BODIES[p].row + k);
-                acceleration[i] += acceleration[ip];
-            }
-        }
-    }
-    let mut inertia = acceleration;
+    let mut inertia = accelerations_at_rest::<M, S, N, K, W, B>(own_acceleration);
     for i in 0..K {
         inertia[i] *= masses[i];
     }
@@ -226,19 +213,60 @@ pub fn equations_of_motion<
         }
     }
 
-    // D of each body, row by row (zero where a row does not depend on the seeds).
-    let jacobian: BodyJacobians<S, W, B> = std::array::from_fn(|b| {
-        let body = &M::BODIES[b];
-        std::array::from_fn(|k| match k < body.dim {
-            true => d[body.row + k].eps1.0.unwrap_or_else(SVector::zeros),
-            false => SVector::zeros(),
-        })
-    });
+    let jacobian = body_jacobians::<M, S, N, K, W, B>(&d);
     EquationsOfMotion {
         mass_matrix: M::mass_matrix(&jacobian, &composite),
         generalized_forces,
         inertial_terms,
     }
+}
+
+/// Aᵢ = A_p(i) + αᵢ, root to leaf: each row's acceleration at q̈ = 0, its parent's included.
+#[inline(always)]
+fn accelerations_at_rest<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+>(
+    own_acceleration: [S; K],
+) -> [S; K] {
+    let mut acceleration = own_acceleration;
+    for body in &M::BODIES {
+        if let Some(p) = body.parent {
+            for k in 0..3 {
+                if k >= body.dim {
+                    break;
+                }
+                let (i, ip) = (body.row + k, M::BODIES[p].row + k);
+                acceleration[i] += acceleration[ip];
+            }
+        }
+    }
+    acceleration
+}
+
+/// D of each body, row by row (zero where a row does not depend on the seeds).
+#[inline(always)]
+fn body_jacobians<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+>(
+    d: &[Seeded<S, W>; K],
+) -> BodyJacobians<S, W, B> {
+    std::array::from_fn(|b| {
+        let body = &M::BODIES[b];
+        std::array::from_fn(|k| match k < body.dim {
+            true => d[body.row + k].eps1.0.unwrap_or_else(SVector::zeros),
+            false => SVector::zeros(),
+        })
+    })
 }
 
 /// What M, 𝓕 and b and the articulated-body recursion both start from, row by row of x.

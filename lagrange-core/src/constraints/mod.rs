@@ -229,6 +229,7 @@ mod mode;
 mod prepared;
 mod projection;
 mod rows;
+mod sliding;
 mod solve;
 mod switch;
 

@@ -24,7 +24,7 @@
 //! where one of them is; each is tested against M's largest diagonal entry, C_c |D_c eⱼ|² (C_c
 //! the mass of c's subtree), as [`crate::linalg::Ldlt`] tests M's own pivots.
 
-use super::{Seed, Tree};
+use super::{Seed, Seeded, Tree};
 use crate::dynamics::{finite_accelerations, non_finite_dynamics, singular_mass_matrix};
 use crate::error::Result;
 use crate::geometry::Scalar;
@@ -80,9 +80,30 @@ pub(super) fn accelerations<
     let d = model.displacements(t, q, v);
     let masses = model.masses();
     let rows = super::rows::<M, S, N, K, W, B>(model, t, q, v, &d);
-    let zero = S::zero();
+    let (jacobian, own) = own_terms::<M, S, N, K, W, B, DIM>(&d, &rows.own_acceleration);
+    let scale = diagonal_scale::<M, S, N, K, W, B, DIM>(&jacobian, &masses);
+    let (free, coupling) =
+        leaf_to_root::<M, S, N, K, W, B, DIM>(t, q, &rows, &masses, &jacobian, &own, scale)?;
+    let qdd = root_to_leaf::<M, S, N, K, W, B, DIM>(&jacobian, &own, &free, &coupling);
+    finite_accelerations::<M::Coords, S, N>(qdd, t, q)
+}
 
-    // Each body's own D (only its coordinates' columns) and α, and the scale of M's diagonal.
+/// Each body's own D (only its coordinates' columns) and α, in `DIM` rows.
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+fn own_terms<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+    const DIM: usize,
+>(
+    d: &[Seeded<S, W>; K],
+    own_acceleration: &[S; K],
+) -> ([SMatrix<S, DIM, W>; B], [SVector<S, DIM>; B]) {
+    let zero = S::zero();
     let jacobian: [SMatrix<S, DIM, W>; B] = std::array::from_fn(|b| {
         let body = &M::BODIES[b];
         SMatrix::from_fn(|k, j| match (k < body.dim, body.seeds[j]) {
@@ -93,10 +114,27 @@ pub(super) fn accelerations<
     let own: [SVector<S, DIM>; B] = std::array::from_fn(|b| {
         let body = &M::BODIES[b];
         SVector::from_fn(|k, _| match k < body.dim {
-            true => rows.own_acceleration[body.row + k],
+            true => own_acceleration[body.row + k],
             false => zero,
         })
     });
+    (jacobian, own)
+}
+
+/// The scale of M's diagonal: the largest C_b |D_b eⱼ|², C_b the mass of b's subtree.
+#[inline(always)]
+fn diagonal_scale<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+    const DIM: usize,
+>(
+    jacobian: &[SMatrix<S, DIM, W>; B],
+    masses: &[f64; K],
+) -> f64 {
     let mut composite = [0.0; B];
     let mut scale = 0.0f64;
     for b in (0..B).rev() {
@@ -113,8 +151,29 @@ pub(super) fn accelerations<
             composite[p] += composite[b];
         }
     }
+    scale
+}
 
-    // Leaf to root: I_b and p_b; per body, H⁻¹u and H⁻¹Uᵀ for the way back.
+/// Leaf to root: I_b and p_b, and per body H⁻¹u and H⁻¹Uᵀ for the way back.
+#[inline(always)]
+#[allow(clippy::type_complexity, clippy::too_many_arguments)]
+fn leaf_to_root<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+    const DIM: usize,
+>(
+    t: S,
+    q: &[S; N],
+    rows: &super::Rows<S, N, K>,
+    masses: &[f64; K],
+    jacobian: &[SMatrix<S, DIM, W>; B],
+    own: &[SVector<S, DIM>; B],
+    scale: f64,
+) -> Result<([SVector<S, W>; B], [SMatrix<S, W, DIM>; B])> {
     let mut inertia = [SMatrix::<S, DIM, DIM>::zeros(); B];
     let mut bias = [SVector::<S, DIM>::zeros(); B];
     let mut free = [SVector::<S, W>::zeros(); B];
@@ -133,32 +192,7 @@ pub(super) fn accelerations<
                 at_rest[r] += i_b[(r, k)] * own[b][k];
             }
         }
-        // U = I D, H = Dᵀ U, u = Q − Dᵀ (I α + p); slots that are not coordinates get H = scale.
-        let mut u_mat = SMatrix::<S, DIM, W>::zeros();
-        for r in 0..DIM {
-            for j in 0..W {
-                for k in 0..DIM {
-                    u_mat[(r, j)] += i_b[(r, k)] * dj[(k, j)];
-                }
-            }
-        }
-        let mut h = SMatrix::<S, W, W>::zeros();
-        let mut u = SVector::<S, W>::zeros();
-        for (i, seed) in body.seeds.iter().enumerate() {
-            let Seed::Coordinate(c) = *seed else {
-                h[(i, i)] = S::from(scale);
-                continue;
-            };
-            for j in 0..W {
-                for k in 0..DIM {
-                    h[(i, j)] += dj[(k, i)] * u_mat[(k, j)];
-                }
-            }
-            u[i] = rows.generalized_forces[c];
-            for k in 0..DIM {
-                u[i] -= dj[(k, i)] * at_rest[k];
-            }
-        }
+        let (u_mat, h, u) = joint_terms(&i_b, dj, &at_rest, &body.seeds, rows, scale);
         let factors = match Ldlt::with_scale(&h, Dense, scale) {
             Ok(factors) => factors,
             Err(e) => return Err(failure::<M, S, N, K, W, B>(body.seeds, e, scale, t, q)),
@@ -188,8 +222,65 @@ pub(super) fn accelerations<
             }
         }
     }
+    Ok((free, coupling))
+}
 
-    // Root to leaf: q̈ of each body's coordinates from its parent's ẍ, then its own ẍ.
+/// U = I D, H = Dᵀ U and u = Q − Dᵀ (I α + p) of a body with articulated inertia `i_b`, own
+/// Jacobian `dj` and I α + p = `at_rest`; slots that are not coordinates get H = `scale`.
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+fn joint_terms<S: Scalar, const N: usize, const K: usize, const W: usize, const DIM: usize>(
+    i_b: &SMatrix<S, DIM, DIM>,
+    dj: &SMatrix<S, DIM, W>,
+    at_rest: &SVector<S, DIM>,
+    seeds: &[Seed; W],
+    rows: &super::Rows<S, N, K>,
+    scale: f64,
+) -> (SMatrix<S, DIM, W>, SMatrix<S, W, W>, SVector<S, W>) {
+    let mut u_mat = SMatrix::<S, DIM, W>::zeros();
+    for r in 0..DIM {
+        for j in 0..W {
+            for k in 0..DIM {
+                u_mat[(r, j)] += i_b[(r, k)] * dj[(k, j)];
+            }
+        }
+    }
+    let mut h = SMatrix::<S, W, W>::zeros();
+    let mut u = SVector::<S, W>::zeros();
+    for (i, seed) in seeds.iter().enumerate() {
+        let Seed::Coordinate(c) = *seed else {
+            h[(i, i)] = S::from(scale);
+            continue;
+        };
+        for j in 0..W {
+            for k in 0..DIM {
+                h[(i, j)] += dj[(k, i)] * u_mat[(k, j)];
+            }
+        }
+        u[i] = rows.generalized_forces[c];
+        for k in 0..DIM {
+            u[i] -= dj[(k, i)] * at_rest[k];
+        }
+    }
+    (u_mat, h, u)
+}
+
+/// Root to leaf: q̈ of each body's coordinates from its parent's ẍ, then its own ẍ.
+#[inline(always)]
+fn root_to_leaf<
+    M: Tree<N, K, W, B>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const W: usize,
+    const B: usize,
+    const DIM: usize,
+>(
+    jacobian: &[SMatrix<S, DIM, W>; B],
+    own: &[SVector<S, DIM>; B],
+    free: &[SVector<S, W>; B],
+    coupling: &[SMatrix<S, W, DIM>; B],
+) -> SVector<S, N> {
     let mut qdd = SVector::<S, N>::zeros();
     let mut body_acceleration = [SVector::<S, DIM>::zeros(); B];
     for b in 0..B {
@@ -217,7 +308,7 @@ pub(super) fn accelerations<
             }
         }
     }
-    finite_accelerations::<M::Coords, S, N>(qdd, t, q)
+    qdd
 }
 
 /// The error for a pivot that failed: non-finite dynamics when the pivot or the scale overflowed,
