@@ -184,26 +184,6 @@ pub fn vec3<D>(x: D, y: D, z: D) -> Vec3<D> {
 }
 
 impl<D: Scalar> Vec2<D> {
-    /// The zero vector.
-    #[inline(always)]
-    pub fn zero() -> Self {
-        vec2(D::zero(), D::zero())
-    }
-    /// Scalar product.
-    #[inline(always)]
-    pub fn dot(&self, other: &Self) -> D {
-        self.x * other.x + self.y * other.y
-    }
-    /// Squared Euclidean length.
-    #[inline(always)]
-    pub fn norm_squared(&self) -> D {
-        self.dot(self)
-    }
-    /// Euclidean length.
-    #[inline(always)]
-    pub fn norm(&self) -> D {
-        self.norm_squared().sqrt()
-    }
     /// The planar cross product `self.x * other.y - self.y * other.x` (a scalar).
     #[inline(always)]
     pub fn cross(&self, other: &Self) -> D {
@@ -215,24 +195,9 @@ impl<D: Scalar> Vec2<D> {
         let (s, c) = angle.sin_cos();
         vec2(c * self.x - s * self.y, s * self.x + c * self.y)
     }
-    /// The components as an array.
-    #[inline(always)]
-    pub fn to_array(self) -> [D; 2] {
-        [self.x, self.y]
-    }
 }
 
 impl<D: Scalar> Vec3<D> {
-    /// The zero vector.
-    #[inline(always)]
-    pub fn zero() -> Self {
-        vec3(D::zero(), D::zero(), D::zero())
-    }
-    /// Scalar product.
-    #[inline(always)]
-    pub fn dot(&self, other: &Self) -> D {
-        self.x * other.x + self.y * other.y + self.z * other.z
-    }
     /// Vector product.
     #[inline(always)]
     pub fn cross(&self, o: &Self) -> Self {
@@ -242,25 +207,43 @@ impl<D: Scalar> Vec3<D> {
             self.x * o.y - self.y * o.x,
         )
     }
-    /// Squared Euclidean length.
-    #[inline(always)]
-    pub fn norm_squared(&self) -> D {
-        self.dot(self)
-    }
-    /// Euclidean length.
-    #[inline(always)]
-    pub fn norm(&self) -> D {
-        self.norm_squared().sqrt()
-    }
-    /// The components as an array.
-    #[inline(always)]
-    pub fn to_array(self) -> [D; 3] {
-        [self.x, self.y, self.z]
-    }
 }
 
+/// What Vec2 and Vec3 share, component by component: the zero vector, the scalar product
+/// Σ aᵢbᵢ (summed in component order), the Euclidean length, the array of components, and the
+/// arithmetic operators.
 macro_rules! vector_ops {
-    ($V:ident { $($f:ident),+ }) => {
+    ($V:ident { $first:ident $(, $f:ident)+ }, $len:literal) => {
+        impl<D: Scalar> $V<D> {
+            /// The zero vector.
+            #[inline(always)]
+            pub fn zero() -> Self {
+                $V { $first: D::zero() $(, $f: D::zero())+ }
+            }
+            /// Scalar product.
+            #[inline(always)]
+            pub fn dot(&self, other: &Self) -> D {
+                self.$first * other.$first $(+ self.$f * other.$f)+
+            }
+            /// Squared Euclidean length.
+            #[inline(always)]
+            pub fn norm_squared(&self) -> D {
+                self.dot(self)
+            }
+            /// Euclidean length.
+            #[inline(always)]
+            pub fn norm(&self) -> D {
+                self.norm_squared().sqrt()
+            }
+            /// The components as an array.
+            #[inline(always)]
+            pub fn to_array(self) -> [D; $len] {
+                [self.$first $(, self.$f)+]
+            }
+        }
+        vector_ops!(@ops $V { $first $(, $f)+ });
+    };
+    (@ops $V:ident { $($f:ident),+ }) => {
         impl<D: Scalar> Add for $V<D> {
             type Output = Self;
             #[inline(always)]
@@ -298,8 +281,8 @@ macro_rules! vector_ops {
         }
     };
 }
-vector_ops!(Vec2 { x, y });
-vector_ops!(Vec3 { x, y, z });
+vector_ops!(Vec2 { x, y }, 2);
+vector_ops!(Vec3 { x, y, z }, 3);
 
 /// A rotation (or any 3×3 matrix) acting on [`Vec3`], stored by rows.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,5 +1,5 @@
 use super::*;
-use crate::error::Result;
+use crate::test_models::test_model_items;
 
 /// The lecture's wedge and block written by hand: rows wedge (X, 0) and block
 /// (X + d cos α, h − d sin α). The wedge's height never depends on q (no Jacobian row) and every
@@ -13,14 +13,7 @@ struct Wedge {
 }
 
 impl Model<2, 4> for Wedge {
-    type Coords = [f64; 2];
-    const RHEONOMIC: bool = false;
-    const HAS_POTENTIAL: bool = false;
-    const HAS_FORCES: bool = false;
-    const HAS_GRAVITY: bool = true;
-    fn validate(&self) -> Result<()> {
-        Ok(())
-    }
+    test_model_items!(2; rheonomic: false, potential: false, forces: false, gravity: true);
     fn masses(&self) -> [f64; 4] {
         let (big_m, m) = (self.wedge_mass, self.block_mass);
         [big_m, big_m, m, m]
@@ -75,13 +68,7 @@ struct ShakenRod {
 }
 
 impl Model<1, 2> for ShakenRod {
-    type Coords = [f64; 1];
-    const RHEONOMIC: bool = true;
-    const HAS_POTENTIAL: bool = false;
-    const HAS_FORCES: bool = false;
-    fn validate(&self) -> Result<()> {
-        Ok(())
-    }
+    test_model_items!(1; rheonomic: true, potential: false, forces: false, gravity: false);
     fn masses(&self) -> [f64; 2] {
         [2.0, 2.0]
     }

@@ -1,6 +1,21 @@
 use super::*;
 use crate::dynamics;
-use crate::error::Result;
+use crate::test_models::test_model_items;
+
+/// Body of `dim` rows from row `row` of x, below `parent`, displaced by the slots `seeds`.
+const fn body<const W: usize>(
+    row: usize,
+    dim: usize,
+    parent: Option<usize>,
+    seeds: [Seed; W],
+) -> Body<W> {
+    Body {
+        row,
+        dim,
+        parent,
+        seeds,
+    }
+}
 use crate::geometry::vec2;
 use num_dual::DualNum;
 
@@ -14,15 +29,8 @@ struct Branchy {
 }
 
 impl Model<3, 6> for Branchy {
-    type Coords = [f64; 3];
+    test_model_items!(3; rheonomic: true, potential: true, forces: true, gravity: true);
     const INERTIAL: usize = 4;
-    const RHEONOMIC: bool = true;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = true;
-    const HAS_GRAVITY: bool = true;
-    fn validate(&self) -> Result<()> {
-        Ok(())
-    }
     fn masses(&self) -> [f64; 6] {
         [2.0, 2.0, 0.5, 0.5, 0.0, 0.0]
     }
@@ -57,24 +65,9 @@ impl Model<3, 6> for Branchy {
 
 impl Tree<3, 6, 2, 3> for Branchy {
     const BODIES: [Body<2>; 3] = [
-        Body {
-            row: 0,
-            dim: 2,
-            parent: None,
-            seeds: [Seed::Coordinate(0), Seed::Time],
-        },
-        Body {
-            row: 2,
-            dim: 2,
-            parent: Some(0),
-            seeds: [Seed::Coordinate(1), Seed::Coordinate(2)],
-        },
-        Body {
-            row: 4,
-            dim: 2,
-            parent: Some(1),
-            seeds: [Seed::Coordinate(0), Seed::Unused],
-        },
+        body(0, 2, None, [Seed::Coordinate(0), Seed::Time]),
+        body(2, 2, Some(0), [Seed::Coordinate(1), Seed::Coordinate(2)]),
+        body(4, 2, Some(1), [Seed::Coordinate(0), Seed::Unused]),
     ];
     fn displacements<S: Scalar>(&self, t: S, q: &[S; 3], v: &[S; 3]) -> [Seeded<S, 2>; 6] {
         let (q0, t0) = (seed(q[0], v[0], 0), time(t, Some(1)));
@@ -94,15 +87,7 @@ impl Tree<3, 6, 2, 3> for Branchy {
 struct Joints;
 
 impl Model<5, 12> for Joints {
-    type Coords = [f64; 5];
-    const INERTIAL: usize = 12;
-    const RHEONOMIC: bool = true;
-    const HAS_POTENTIAL: bool = true;
-    const HAS_FORCES: bool = true;
-    const HAS_GRAVITY: bool = true;
-    fn validate(&self) -> Result<()> {
-        Ok(())
-    }
+    test_model_items!(5; rheonomic: true, potential: true, forces: true, gravity: true);
     fn masses(&self) -> [f64; 12] {
         [2.0, 2.0, 2.0, 0.5, 0.5, 0.5, 0.8, 0.8, 0.8, 1.1, 1.1, 1.1]
     }
@@ -169,30 +154,10 @@ impl Joints {
 
 impl Tree<5, 12, 2, 4> for Joints {
     const BODIES: [Body<2>; 4] = [
-        Body {
-            row: 0,
-            dim: 3,
-            parent: None,
-            seeds: [Seed::Coordinate(0), Seed::Time],
-        },
-        Body {
-            row: 3,
-            dim: 3,
-            parent: Some(0),
-            seeds: [Seed::Coordinate(1), Seed::Coordinate(2)],
-        },
-        Body {
-            row: 6,
-            dim: 3,
-            parent: Some(1),
-            seeds: [Seed::Coordinate(3), Seed::Unused],
-        },
-        Body {
-            row: 9,
-            dim: 3,
-            parent: Some(0),
-            seeds: [Seed::Unused, Seed::Coordinate(4)],
-        },
+        body(0, 3, None, [Seed::Coordinate(0), Seed::Time]),
+        body(3, 3, Some(0), [Seed::Coordinate(1), Seed::Coordinate(2)]),
+        body(6, 3, Some(1), [Seed::Coordinate(3), Seed::Unused]),
+        body(9, 3, Some(0), [Seed::Unused, Seed::Coordinate(4)]),
     ];
     fn displacements<S: Scalar>(&self, t: S, q: &[S; 5], v: &[S; 5]) -> [Seeded<S, 2>; 12] {
         let t_seeded = time(t, Some(1));
