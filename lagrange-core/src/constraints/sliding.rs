@@ -27,157 +27,138 @@ pub(super) struct SlidingSystem<'a, S: Scalar, const N: usize, const C: usize> {
     pub(super) sliding: [bool; C],
 }
 
-/// q̈ and λ with sliding friction, from u = M⁻¹(𝓕 − b) and the frictionless multipliers `lambda`
-/// (whose signs start the bilateral normal forces' signs).
-#[inline(always)]
-pub(super) fn solve_sliding<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    mode: &Mode<C>,
-    system: &SlidingSystem<S, N, C>,
-    u: SVector<S, N>,
-    lambda: SVector<S, C>,
-) -> Result<ConstrainedAccelerations<S, N, C>> {
-    let (enforced, sliding) = (&system.enforced, &system.sliding);
-    let direction = slip_directions::<M, S, N, K, C>(mode, system.rows, sliding);
-    let sign_n: [f64; C] = std::array::from_fn(|n| match M::KINDS[n] {
-        ConstraintKind::Unilateral => 1.0,
-        _ => {
-            if lambda[n].re() < 0.0 {
-                -1.0
-            } else {
-                1.0
+impl<S: Scalar, const N: usize, const C: usize> SlidingSystem<'_, S, N, C> {
+    /// q̈ and λ with sliding friction, from u = M⁻¹(𝓕 − b) and the frictionless multipliers `lambda`
+    /// (whose signs start the bilateral normal forces' signs).
+    #[inline(always)]
+    pub(super) fn solve<M: Constraints<N, K, C>, const K: usize>(
+        &self,
+        model: &M,
+        t: S,
+        q: &[S; N],
+        mode: &Mode<C>,
+        u: SVector<S, N>,
+        lambda: SVector<S, C>,
+    ) -> Result<ConstrainedAccelerations<S, N, C>> {
+        let (enforced, sliding) = (&self.enforced, &self.sliding);
+        let direction = self.slip_directions::<M, K>(mode);
+        let sign_n: [f64; C] = std::array::from_fn(|n| match M::KINDS[n] {
+            ConstraintKind::Unilateral => 1.0,
+            _ => {
+                if lambda[n].re() < 0.0 {
+                    -1.0
+                } else {
+                    1.0
+                }
             }
-        }
-    });
-    let (columns, lambda, sign_n) = consistent_signs(model, t, q, system, &direction, sign_n)?;
-    let mut multipliers = [S::zero(); C];
-    let mut qdd = u;
-    for k in 0..C {
-        if enforced[k] {
-            qdd += columns[k] * lambda[k];
-            multipliers[k] = lambda[k];
-        }
-    }
-    for j in 0..C {
-        if let (true, Some(normal)) = (sliding[j], M::KINDS[j].friction_normal()) {
-            let mu = model.friction_coefficients(j).kinetic;
-            multipliers[j] = lambda[normal] * direction[j] * S::from(-mu * sign_n[normal]);
-        }
-    }
-    finish::<M, S, N, K, C>(qdd, multipliers, t, q, false)
-}
-
-/// σⱼ of each sliding row: the slip sign of a planar row, the component ŝⱼ of the unit slip
-/// direction of a cone's row (held at the reference while the slip is stopping).
-#[inline(always)]
-fn slip_directions<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    mode: &Mode<C>,
-    cr: &ConstraintRows<S, N, C>,
-    sliding: &[bool; C],
-) -> [S; C] {
-    std::array::from_fn(|j| match M::KINDS[j] {
-        ConstraintKind::FrictionCone { .. } if sliding[j] && mode.stopping[j] => {
-            S::from(mode.reference[j])
-        }
-        ConstraintKind::FrictionCone { partner, .. } if sliding[j] => cone::sliding_direction(
-            cr.value[j],
-            cr.value[partner],
-            mode.reference[j],
-            mode.reference[partner],
-        ),
-        _ => S::from(slip_sign(mode.rows[j])),
-    })
-}
-
-/// The columns λₙ multiplies (M⁻¹ times the generalized force per unit λ), λ and the signs of the
-/// normal forces, solved until the signs agree with the solution they give.
-///
-/// Each attempt solves with the current signs and flips those the solution contradicts. With
-/// one bilateral normal row two attempts decide: if both signs contradict themselves, no normal
-/// force is consistent with sliding friction (Painlevé's inconsistent case). Several normal rows
-/// get a few more attempts; signs still inconsistent after them are the same error, never a
-/// solution computed with a sign its own normal force contradicts.
-#[inline(always)]
-#[allow(clippy::type_complexity)]
-fn consistent_signs<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    system: &SlidingSystem<S, N, C>,
-    direction: &[S; C],
-    mut sign_n: [f64; C],
-) -> Result<([SVector<S, N>; C], SVector<S, C>, [f64; C])> {
-    let (cr, y, enforced, sliding) = (system.rows, system.y, &system.enforced, &system.sliding);
-    let mut columns = [SVector::<S, N>::zeros(); C];
-    let indeterminate = || Error::FrictionIndeterminate {
-        t: t.re(),
-        configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, &real(q)),
-        constraints: (0..C)
-            .filter(|&j| sliding[j])
-            .map(|j| format!("`{}`", M::NAMES[j]))
-            .collect::<Vec<_>>()
-            .join(", "),
-    };
-    for _attempt in 0..SIGN_ATTEMPTS {
+        });
+        let (columns, lambda, sign_n) = self.consistent_signs(model, t, q, &direction, sign_n)?;
+        let mut multipliers = [S::zero(); C];
+        let mut qdd = u;
         for k in 0..C {
             if enforced[k] {
-                columns[k] = y[k];
+                qdd += columns[k] * lambda[k];
+                multipliers[k] = lambda[k];
             }
         }
         for j in 0..C {
             if let (true, Some(normal)) = (sliding[j], M::KINDS[j].friction_normal()) {
                 let mu = model.friction_coefficients(j).kinetic;
-                columns[normal] -= y[j] * direction[j] * S::from(mu * sign_n[normal]);
+                multipliers[j] = lambda[normal] * direction[j] * S::from(-mu * sign_n[normal]);
             }
         }
-        let mut a = SMatrix::<S, C, C>::zeros();
-        for i in 0..C {
-            if enforced[i] {
-                for k in 0..C {
-                    if enforced[k] {
-                        a[(i, k)] = cr.rows[i].dot(&columns[k]);
-                    }
-                }
-            } else {
-                a[(i, i)] = S::from(system.filler);
-            }
-        }
-        let lambda = lu_solve_generic(&a, &system.rhs).ok_or_else(indeterminate)?;
-        let mut consistent = true;
-        for n in 0..C {
-            if enforced[n]
-                && !matches!(M::KINDS[n], ConstraintKind::Unilateral)
-                && lambda[n].re() * sign_n[n] < 0.0
-            {
-                sign_n[n] = -sign_n[n];
-                consistent = false;
-            }
-        }
-        if consistent {
-            return Ok((columns, lambda, sign_n));
-        }
+        finish::<M, S, N, K, C>(qdd, multipliers, t, q, false)
     }
-    Err(indeterminate())
+
+    /// σⱼ of each sliding row: the slip sign of a planar row, the component ŝⱼ of the unit slip
+    /// direction of a cone's row (held at the reference while the slip is stopping).
+    #[inline(always)]
+    fn slip_directions<M: Constraints<N, K, C>, const K: usize>(&self, mode: &Mode<C>) -> [S; C] {
+        let (cr, sliding) = (self.rows, &self.sliding);
+        std::array::from_fn(|j| match M::KINDS[j] {
+            ConstraintKind::FrictionCone { .. } if sliding[j] && mode.stopping[j] => {
+                S::from(mode.reference[j])
+            }
+            ConstraintKind::FrictionCone { partner, .. } if sliding[j] => cone::sliding_direction(
+                cr.value[j],
+                cr.value[partner],
+                mode.reference[j],
+                mode.reference[partner],
+            ),
+            _ => S::from(slip_sign(mode.rows[j])),
+        })
+    }
+
+    /// The columns λₙ multiplies (M⁻¹ times the generalized force per unit λ), λ and the signs of the
+    /// normal forces, solved until the signs agree with the solution they give.
+    ///
+    /// Each attempt solves with the current signs and flips those the solution contradicts. With
+    /// one bilateral normal row two attempts decide: if both signs contradict themselves, no normal
+    /// force is consistent with sliding friction (Painlevé's inconsistent case). Several normal rows
+    /// get a few more attempts; signs still inconsistent after them are the same error, never a
+    /// solution computed with a sign its own normal force contradicts.
+    #[inline(always)]
+    #[allow(clippy::type_complexity)]
+    fn consistent_signs<M: Constraints<N, K, C>, const K: usize>(
+        &self,
+        model: &M,
+        t: S,
+        q: &[S; N],
+        direction: &[S; C],
+        mut sign_n: [f64; C],
+    ) -> Result<([SVector<S, N>; C], SVector<S, C>, [f64; C])> {
+        let (cr, y, enforced, sliding) = (self.rows, self.y, &self.enforced, &self.sliding);
+        let mut columns = [SVector::<S, N>::zeros(); C];
+        let indeterminate = || Error::FrictionIndeterminate {
+            t: t.re(),
+            configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, &real(q)),
+            constraints: (0..C)
+                .filter(|&j| sliding[j])
+                .map(|j| format!("`{}`", M::NAMES[j]))
+                .collect::<Vec<_>>()
+                .join(", "),
+        };
+        for _attempt in 0..SIGN_ATTEMPTS {
+            for k in 0..C {
+                if enforced[k] {
+                    columns[k] = y[k];
+                }
+            }
+            for j in 0..C {
+                if let (true, Some(normal)) = (sliding[j], M::KINDS[j].friction_normal()) {
+                    let mu = model.friction_coefficients(j).kinetic;
+                    columns[normal] -= y[j] * direction[j] * S::from(mu * sign_n[normal]);
+                }
+            }
+            let mut a = SMatrix::<S, C, C>::zeros();
+            for i in 0..C {
+                if enforced[i] {
+                    for k in 0..C {
+                        if enforced[k] {
+                            a[(i, k)] = cr.rows[i].dot(&columns[k]);
+                        }
+                    }
+                } else {
+                    a[(i, i)] = S::from(self.filler);
+                }
+            }
+            let lambda = lu_solve_generic(&a, &self.rhs).ok_or_else(indeterminate)?;
+            let mut consistent = true;
+            for n in 0..C {
+                if enforced[n]
+                    && !matches!(M::KINDS[n], ConstraintKind::Unilateral)
+                    && lambda[n].re() * sign_n[n] < 0.0
+                {
+                    sign_n[n] = -sign_n[n];
+                    consistent = false;
+                }
+            }
+            if consistent {
+                return Ok((columns, lambda, sign_n));
+            }
+        }
+        Err(indeterminate())
+    }
 }
 
 /// Solves A x = b (general square, fixed size) by LU with partial pivoting on the real parts;

@@ -2,7 +2,7 @@
 //! [`accelerations_in_mode`] (sliding friction included).
 
 use super::rows::{constraint_rows, real, rows_from_pass, ConstraintRows};
-use super::sliding::{self, SlidingSystem};
+use super::sliding::SlidingSystem;
 use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
 use crate::dynamics;
@@ -254,7 +254,7 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
         enforced,
         sliding,
     };
-    sliding::solve_sliding(model, t, q, mode, &system, u, lambda)
+    system.solve(model, t, q, mode, u, lambda)
 }
 
 /// Which rows slide and act: a sliding friction row (planar or cone) whose contact is enforced.
