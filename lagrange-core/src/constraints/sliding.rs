@@ -3,8 +3,7 @@
 
 use super::cone;
 use super::rows::{real, ConstraintRows};
-use super::solve::{finish, slip_sign, ConstrainedAccelerations};
-use super::{ConstraintKind, Constraints, Mode};
+use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::model::Coordinates;
@@ -14,6 +13,15 @@ use nalgebra::{SMatrix, SVector};
 /// inconsistent ([`Error::FrictionIndeterminate`]): two decide one normal row, the rest allow for
 /// a flip of a second row.
 const SIGN_ATTEMPTS: usize = 4;
+
+/// σ of a planar friction row: +1 sliding with s > 0, −1 with s < 0, 0 otherwise.
+pub(super) fn slip_sign(mode: RowMode) -> f64 {
+    match mode {
+        RowMode::SlipPositive => 1.0,
+        RowMode::SlipNegative => -1.0,
+        _ => 0.0,
+    }
+}
 
 /// The frictionless system a sliding solve starts from: the constraint rows, yₖ = M⁻¹rₖ, the
 /// right-hand side −β − R u of the Schur complement, the diagonal `filler` of the rows not
@@ -29,7 +37,7 @@ pub(super) struct SlidingSystem<'a, S: Scalar, const N: usize, const C: usize> {
 
 impl<S: Scalar, const N: usize, const C: usize> SlidingSystem<'_, S, N, C> {
     /// q̈ and λ with sliding friction, from u = M⁻¹(𝓕 − b) and the frictionless multipliers `lambda`
-    /// (whose signs start the bilateral normal forces' signs).
+    /// (whose signs start the bilateral normal forces' signs), not yet checked finite.
     #[inline(always)]
     pub(super) fn solve<M: Constraints<N, K, C>, const K: usize>(
         &self,
@@ -39,7 +47,7 @@ impl<S: Scalar, const N: usize, const C: usize> SlidingSystem<'_, S, N, C> {
         mode: &Mode<C>,
         u: SVector<S, N>,
         lambda: SVector<S, C>,
-    ) -> Result<ConstrainedAccelerations<S, N, C>> {
+    ) -> Result<(SVector<S, N>, [S; C])> {
         let (enforced, sliding) = (&self.enforced, &self.sliding);
         let direction = self.slip_directions::<M, K>(mode);
         let sign_n: [f64; C] = std::array::from_fn(|n| match M::KINDS[n] {
@@ -67,7 +75,7 @@ impl<S: Scalar, const N: usize, const C: usize> SlidingSystem<'_, S, N, C> {
                 multipliers[j] = lambda[normal] * direction[j] * S::from(-mu * sign_n[normal]);
             }
         }
-        finish::<M, S, N, K, C>(qdd, multipliers, t, q, false)
+        Ok((qdd, multipliers))
     }
 
     /// σⱼ of each sliding row: the slip sign of a planar row, the component ŝⱼ of the unit slip

@@ -2,7 +2,7 @@
 //! [`accelerations_in_mode`] (sliding friction included).
 
 use super::rows::{constraint_rows, real, rows_from_pass, ConstraintRows};
-use super::sliding::SlidingSystem;
+use super::sliding::{slip_sign, SlidingSystem};
 use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
 use crate::dynamics;
@@ -115,15 +115,6 @@ fn schur_solve<S: Scalar, const C: usize>(
         return Ok(rhs / s);
     }
     Ok(Ldlt::new(schur)?.solve(rhs))
-}
-
-/// σ of a planar friction row: +1 sliding with s > 0, −1 with s < 0, 0 otherwise.
-pub(super) fn slip_sign(mode: RowMode) -> f64 {
-    match mode {
-        RowMode::SlipPositive => 1.0,
-        RowMode::SlipNegative => -1.0,
-        _ => 0.0,
-    }
 }
 
 /// q̈ and λ in a given [`Mode`], for any scalar: the Schur-complement solve of the KKT system (see the
@@ -254,7 +245,8 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
         enforced,
         sliding,
     };
-    system.solve(model, t, q, mode, u, lambda)
+    let (qdd, multipliers) = system.solve(model, t, q, mode, u, lambda)?;
+    finish::<M, S, N, K, C>(qdd, multipliers, t, q, false)
 }
 
 /// Which rows slide and act: a sliding friction row (planar or cone) whose contact is enforced.
