@@ -43,6 +43,8 @@ pub mod model;
 pub mod parameters;
 pub mod scalar_ext;
 pub mod sensitivity;
+#[cfg(test)]
+mod test_models;
 pub mod tree;
 pub mod validated;
 
