@@ -99,3 +99,57 @@ fn the_tree_reader_reads_what_it_can_differentiate_exactly() {
         assert!(gradient.contains("DualSVec"), "{body}: {gradient}");
     }
 }
+
+/// Springs between the masses of a chain, read through the bodies' rows: each row's derivative
+/// multiplied by its row of J, and every slot, which two springs add to, scaled once its sum is
+/// done (`__gradient[j] *= __scale[j]`).
+#[test]
+fn springs_between_bodies_add_through_the_rows_of_j() {
+    let out = snapshot(
+        "spring_chain",
+        quote! {
+            pub mod spring_chain {
+                pub const MASSES: usize = 3;
+                pub struct Coords { pub x: [f64; MASSES] }
+                pub struct SpringChain { pub m: f64, pub k_wall: f64, pub k: f64 }
+                #[particle(mass = m, count = MASSES)]
+                fn mass(i: usize) -> Vec2 { vec2(x[i], 0.0) }
+                #[potential]
+                fn springs() -> f64 {
+                    let d1 = mass[1].x - mass[0].x;
+                    let d2 = mass[2].x - mass[1].x;
+                    0.5 * k_wall * mass[0].x * mass[0].x + 0.5 * k * (d1 * d1 + d2 * d2)
+                }
+            }
+        },
+    );
+    let gradient = &out[out.find("fn potential_gradient").unwrap()..];
+    assert!(!gradient.contains("DualSVec"), "{gradient}");
+    assert!(out.contains("__row[0]"), "{gradient}");
+    assert!(out.contains("__gradient[1] *= __scale[1];"), "{out}");
+}
+
+/// Two particles on perpendicular lines tied by a spring, and a pin on one coordinate: a slot
+/// one derivative alone adds to takes its scale into its row of J's entry
+/// (`__row[j] * __scale[j]`).
+#[test]
+fn a_slot_one_derivative_adds_to_takes_the_scale_into_the_row() {
+    let out = snapshot(
+        "stretched",
+        quote! {
+            pub mod stretched {
+                pub struct Coords { pub a: f64, pub b: f64 }
+                pub struct Stretched { pub m1: f64, pub m2: f64, pub k: f64 }
+                #[particle(mass = m1)]
+                fn p() -> Vec2 { vec2(2.0 * a + 0.3, 0.0) }
+                #[particle(mass = m2)]
+                fn r() -> Vec2 { vec2(0.0, 3.0 * b) }
+                #[potential]
+                fn spring() -> f64 { k * ((p - r).norm() - 1.0).powi(2) }
+                #[potential]
+                fn pin() -> f64 { k * a.powi(2) / 3.0 }
+            }
+        },
+    );
+    assert!(out.contains("__row[1] * __scale[1])"), "{out}");
+}
