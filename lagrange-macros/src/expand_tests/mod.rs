@@ -21,22 +21,27 @@ fn pretty(tokens: TokenStream) -> String {
 /// Expands `module`, compares with the snapshot `name`, and returns the pretty-printed expansion.
 fn snapshot(name: &str, module: TokenStream) -> String {
     let expanded = pretty(expand(TokenStream::new(), module));
+    compare_with_snapshot(&format!("{name}.expanded.rs"), &expanded);
+    expanded
+}
+
+/// Compares `text` with the file `tests/expand/<file>` (rewrites it with `LAGRANGE_BLESS=1`).
+pub(crate) fn compare_with_snapshot(file: &str, text: &str) {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("tests/expand")
-        .join(format!("{name}.expanded.rs"));
+        .join(file);
     if std::env::var_os("LAGRANGE_BLESS").is_some() {
-        std::fs::write(&path, &expanded).unwrap();
+        std::fs::write(&path, text).unwrap();
     } else {
         let want = std::fs::read_to_string(&path).unwrap_or_else(|_| {
             panic!("no snapshot {}; run with LAGRANGE_BLESS=1", path.display())
         });
         assert!(
-            want == expanded,
-            "expansion of `{name}` differs from {}:\n{expanded}",
+            want == text,
+            "`{file}` differs from {}:\n{text}",
             path.display()
         );
     }
-    expanded
 }
 
 fn pendulum() -> TokenStream {
