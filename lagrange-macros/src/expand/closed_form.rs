@@ -91,12 +91,7 @@ fn closed_form_fns(model: &Model, motion: &Motion, count: usize) -> TokenStream 
     let (p, d) = (private(), scalar());
     let n = lit(model.dof());
     let count = lit(count);
-    let prelude = super::prelude();
-    let variables = motion.body.variable_inputs(model);
-    // One `let` for the products: each `let` opens a scope, and thousands of nested scopes (a
-    // chain of 64 links) overflow the compiler's stack when it writes debug information.
-    let products = tuple_let(&motion.body.product_lets);
-    let select_coefficients = select_coefficients(&count);
+    let opening = motion.body.opening(model, &count);
     let Motion {
         columns,
         forces,
@@ -123,10 +118,7 @@ fn closed_form_fns(model: &Model, motion: &Motion, count: usize) -> TokenStream 
             __q: &[#d; #n],
             __v: &[#d; #n],
         ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
-            #prelude
-            #variables
-            #select_coefficients
-            #products
+            #opening
             #p::dynamics::EquationsOfMotion::from_columns(
                 [#(#columns),*],
                 [#(#forces),*],
@@ -141,10 +133,7 @@ fn canonical_field_fn(model: &Model, canonical: &Canonical, count: usize) -> Tok
     let (p, d) = (private(), scalar());
     let n = lit(model.dof());
     let count = lit(count);
-    let prelude = super::prelude();
-    let variables = canonical.body.variable_inputs(model);
-    let products = tuple_let(&canonical.body.product_lets);
-    let select_coefficients = select_coefficients(&count);
+    let opening = canonical.body.opening(model, &count);
     let Canonical { momenta, rates, .. } = canonical;
     quote! {
         /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
@@ -157,10 +146,7 @@ fn canonical_field_fn(model: &Model, canonical: &Canonical, count: usize) -> Tok
             __q: &[#d; #n],
             __v: &[#d; #n],
         ) -> ([#d; #n], [#d; #n]) {
-            #prelude
-            #variables
-            #select_coefficients
-            #products
+            #opening
             ([#(#momenta),*], [#(#rates),*])
         }
     }
@@ -489,6 +475,23 @@ impl Writer {
 }
 
 impl Body {
+    /// What the function opens with: the prelude, its sines and cosines, the coefficients
+    /// (after the trigonometric calls) and its products.
+    fn opening(&self, model: &Model, count: &Literal) -> TokenStream {
+        let prelude = super::prelude();
+        let variables = self.variable_inputs(model);
+        let select_coefficients = select_coefficients(count);
+        // One `let` for the products: each `let` opens a scope, and thousands of nested scopes (a
+        // chain of 64 links) overflow the compiler's stack when it writes debug information.
+        let products = tuple_let(&self.product_lets);
+        quote! {
+            #prelude
+            #variables
+            #select_coefficients
+            #products
+        }
+    }
+
     /// The sines and cosines used: one `sin_cos` per coordinate whose sine and cosine both
     /// appear.
     fn variable_inputs(&self, model: &Model) -> TokenStream {

@@ -220,35 +220,21 @@ impl Graph {
 /// What the generated function reads for a node of the state: `__t`, `__q[j]`, `__x[r]`, `__v[j]`,
 /// `__x_dot[r]`, `__x_accel[r]`, `__jacobian[r][j]`.
 fn state_input(node: &Node) -> TokenStream {
-    let index = |i: usize| Literal::usize_unsuffixed(i);
-    match *node {
-        Node::Time => quote!(__t),
-        Node::Coordinate(j) => {
-            let j = index(j);
-            quote!(__q[#j])
-        }
-        Node::Row(r) => {
-            let r = index(r);
-            quote!(__x[#r])
-        }
-        Node::Velocity(j) => {
-            let j = index(j);
-            quote!(__v[#j])
-        }
-        Node::RowVelocity(r) => {
-            let r = index(r);
-            quote!(__x_dot[#r])
-        }
-        Node::RowAcceleration(r) => {
-            let r = index(r);
-            quote!(__x_accel[#r])
-        }
+    let (array, i) = match *node {
+        Node::Time => return quote!(__t),
         Node::Jacobian(r, j) => {
-            let (r, j) = (index(r), index(j));
-            quote!(__jacobian[#r][#j])
+            let (r, j) = (Literal::usize_unsuffixed(r), Literal::usize_unsuffixed(j));
+            return quote!(__jacobian[#r][#j]);
         }
+        Node::Coordinate(j) => (quote!(__q), j),
+        Node::Row(r) => (quote!(__x), r),
+        Node::Velocity(j) => (quote!(__v), j),
+        Node::RowVelocity(r) => (quote!(__x_dot), r),
+        Node::RowAcceleration(r) => (quote!(__x_accel), r),
         _ => unreachable!("an operation is no input of the state"),
-    }
+    };
+    let i = Literal::usize_unsuffixed(i);
+    quote!(#array[#i])
 }
 
 fn method(receiver: TokenStream, name: &str) -> TokenStream {
