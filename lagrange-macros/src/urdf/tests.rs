@@ -1,5 +1,5 @@
 //! The declarations written for the repository's test files, checked by eye and by the
-//! integration tests; here, that the refusals name their element.
+//! integration tests; here, compared with their snapshots, and the refusals name their element.
 
 use super::*;
 
@@ -57,6 +57,76 @@ fn refusals_name_the_element_or_the_position() {
     for (file, expected) in cases {
         let message = written(file);
         assert!(message.contains(expected), "{file}: {message}");
+    }
+}
+
+/// The declarations written for the test files, compared with the snapshots
+/// `tests/expand/urdf_<file>.declaration.rs` (the file's directory written as `tests/urdf/`).
+#[test]
+fn the_test_files_are_written_as_their_snapshots() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/urdf/");
+    for name in ["two_link_arm", "branched", "every_joint"] {
+        let text = written(&format!("{name}.urdf")).replace(dir, "tests/urdf/");
+        crate::expand_tests::compare_with_snapshot(&format!("urdf_{name}.declaration.rs"), &text);
+    }
+}
+
+/// The tree's refusals, on files written here: each names the link or joint at fault.
+#[test]
+fn refusals_of_the_tree_name_the_link_or_the_joint() {
+    let link = |name: &str| {
+        format!(
+            r#"<link name="{name}"><inertial><mass value="1.0"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>"#
+        )
+    };
+    let joint = |name: &str, kind: &str, parent: &str, child: &str| {
+        format!(
+            r#"<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/><axis xyz="0 0 1"/></joint>"#
+        )
+    };
+    let cases = [
+        (vec![link("a"), link("a")], "link `a` is declared twice"),
+        (
+            vec![
+                link("a"),
+                link("b"),
+                link("c"),
+                joint("j", "revolute", "a", "b"),
+                joint("j", "revolute", "b", "c"),
+            ],
+            "joint `j` is declared twice",
+        ),
+        (
+            vec![link("a"), link("b"), joint("j", "planar", "a", "b")],
+            "joint `j` is planar, which is not supported",
+        ),
+        (
+            vec![link("a"), joint("j", "revolute", "a", "b")],
+            "joint `j` names link `b`, which the file does not declare",
+        ),
+        (vec![], "the file declares no link"),
+        (
+            vec![link("a"), link("b")],
+            "links `a` and `b` both have no parent",
+        ),
+        (
+            vec![
+                link("a"),
+                link("b"),
+                joint("j", "revolute", "a", "b"),
+                joint("k", "revolute", "b", "a"),
+            ],
+            "the joints form a loop (link `a` is its own ancestor)",
+        ),
+    ];
+    for (elements, expected) in cases {
+        let text = format!(
+            r#"<?xml version="1.0"?><robot name="r">{}</robot>"#,
+            elements.concat()
+        );
+        let robot = parse::parse(&text).unwrap_or_else(|e| panic!("{text}: {}", e.message));
+        let message = tree::bodies(&robot).expect_err("a refusal");
+        assert!(message.contains(expected), "{text}: {message}");
     }
 }
 

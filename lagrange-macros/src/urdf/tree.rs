@@ -158,15 +158,6 @@ struct Order {
 
 /// One root, every link with at most one parent, no loop, every joint supported.
 fn topology(robot: &Robot) -> Result<Order, Refusal> {
-    let link = |name: &str, joint: &str| {
-        robot
-            .links
-            .iter()
-            .position(|l| l.name == name)
-            .ok_or_else(|| {
-                format!("joint `{joint}` names link `{name}`, which the file does not declare")
-            })
-    };
     for (k, l) in robot.links.iter().enumerate() {
         if robot.links[..k].iter().any(|m| m.name == l.name) {
             return Err(format!("link `{}` is declared twice", l.name));
@@ -179,28 +170,10 @@ fn topology(robot: &Robot) -> Result<Order, Refusal> {
         if robot.joints[..j].iter().any(|k| k.name == joint.name) {
             return Err(format!("joint `{}` is declared twice", joint.name));
         }
-        if joint.mimic {
-            return Err(format!(
-                "joint `{}` is a mimic joint, which is not supported (its coordinate would be \
-                 another's multiple: declare it by hand, or as a constraint)",
-                joint.name
-            ));
-        }
-        if matches!(joint.kind, JointType::Floating | JointType::Planar) {
-            let kind = if joint.kind == JointType::Floating {
-                "floating"
-            } else {
-                "planar"
-            };
-            return Err(format!(
-                "joint `{}` is {kind}, which is not supported: only revolute, continuous, \
-                 prismatic and fixed joints",
-                joint.name
-            ));
-        }
+        supported(joint)?;
         let (p, c) = (
-            link(&joint.parent, &joint.name)?,
-            link(&joint.child, &joint.name)?,
+            link_index(robot, &joint.parent, &joint.name)?,
+            link_index(robot, &joint.child, &joint.name)?,
         );
         if let Some(other) = parent_joint[c] {
             return Err(format!(
@@ -212,25 +185,7 @@ fn topology(robot: &Robot) -> Result<Order, Refusal> {
         parent_of.push(p);
         child_of.push(c);
     }
-    let roots: Vec<usize> = (0..robot.links.len())
-        .filter(|&l| parent_joint[l].is_none())
-        .collect();
-    let root = match roots.as_slice() {
-        [root] => *root,
-        [] if robot.links.is_empty() => return Err("the file declares no link".into()),
-        [] => {
-            return Err(format!(
-                "the joints form a loop (link `{}` is its own ancestor): a URDF model is a tree",
-                robot.links[0].name
-            ))
-        }
-        [a, b, ..] => {
-            return Err(format!(
-                "links `{}` and `{}` both have no parent: a URDF model has one root link",
-                robot.links[*a].name, robot.links[*b].name
-            ))
-        }
-    };
+    let root = root(robot, &parent_joint)?;
     let joints = depth_first(robot, root, &parent_of, &child_of, &parent_joint)?;
     Ok(Order {
         root,
@@ -238,6 +193,60 @@ fn topology(robot: &Robot) -> Result<Order, Refusal> {
         parent_of,
         child_of,
     })
+}
+
+/// The index of the link `name` that joint `joint` names.
+fn link_index(robot: &Robot, name: &str, joint: &str) -> Result<usize, Refusal> {
+    robot
+        .links
+        .iter()
+        .position(|l| l.name == name)
+        .ok_or_else(|| {
+            format!("joint `{joint}` names link `{name}`, which the file does not declare")
+        })
+}
+
+/// A joint the declaration can write: no mimic, no floating or planar joint.
+fn supported(joint: &super::parse::Joint) -> Result<(), Refusal> {
+    if joint.mimic {
+        return Err(format!(
+            "joint `{}` is a mimic joint, which is not supported (its coordinate would be \
+             another's multiple: declare it by hand, or as a constraint)",
+            joint.name
+        ));
+    }
+    if matches!(joint.kind, JointType::Floating | JointType::Planar) {
+        let kind = if joint.kind == JointType::Floating {
+            "floating"
+        } else {
+            "planar"
+        };
+        return Err(format!(
+            "joint `{}` is {kind}, which is not supported: only revolute, continuous, \
+             prismatic and fixed joints",
+            joint.name
+        ));
+    }
+    Ok(())
+}
+
+/// The one link no joint moves.
+fn root(robot: &Robot, parent_joint: &[Option<usize>]) -> Result<usize, Refusal> {
+    let roots: Vec<usize> = (0..robot.links.len())
+        .filter(|&l| parent_joint[l].is_none())
+        .collect();
+    match roots.as_slice() {
+        [root] => Ok(*root),
+        [] if robot.links.is_empty() => Err("the file declares no link".into()),
+        [] => Err(format!(
+            "the joints form a loop (link `{}` is its own ancestor): a URDF model is a tree",
+            robot.links[0].name
+        )),
+        [a, b, ..] => Err(format!(
+            "links `{}` and `{}` both have no parent: a URDF model has one root link",
+            robot.links[*a].name, robot.links[*b].name
+        )),
+    }
 }
 
 /// The joints depth first from the root, children in file order: parents first, every link
