@@ -1,7 +1,7 @@
 //! Step-size control of the embedded pairs: the starting step, the PI controller and its step
 //! loop (the explicit pairs), and the scaled error component.
 
-use super::dopri5::Dopri5;
+use super::dopri5::settings::Dopri5;
 use super::Stats;
 use crate::error::{Error, Result};
 

@@ -41,10 +41,13 @@
     clippy::unreadable_literal
 )]
 
-use super::dopri5::Dopri5;
+use super::dense::DenseOutput;
+use super::dopri5::settings::Dopri5;
+use super::pair::{explicit_embedded_pair, sealed, AccelerationField, ExplicitPair, StepStart};
 use super::{Integrator, Stats};
 use crate::error::Result;
 use crate::evaluation::Evaluate;
+use crate::model::Coordinates;
 
 mod attempt;
 mod dense;
@@ -193,3 +196,53 @@ impl Integrator for Dop853 {
         super::adaptive::advance_over(mechanism, settings, (t, q, v), h, stats)
     }
 }
+
+impl sealed::Sealed for Dop853 {}
+
+impl ExplicitPair for Dop853 {
+    const NAME: &'static str = "Dop853";
+
+    const ORDER: i32 = 8;
+    const EXPONENTS: (f64, f64) = (1.0 / 8.0, 0.2);
+    type Stages<const N: usize> = Stages<N>;
+
+    fn controls(&self) -> Dopri5 {
+        self.shared()
+    }
+
+    fn bounded_to(&self, interval: f64) -> Self {
+        Dop853::bounded_to(self, interval)
+    }
+
+    fn stages<const N: usize>() -> Self::Stages<N> {
+        Stages::new()
+    }
+
+    fn attempt<C: Coordinates<N>, const N: usize>(
+        &self,
+        start: StepStart<'_, N>,
+        h: f64,
+        stages: &mut Self::Stages<N>,
+        stats: &mut Stats,
+        field: &impl AccelerationField<N>,
+    ) -> Result<([f64; N], [f64; N], f64)> {
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        attempt::<C, N>(self, start, h, stages, stats, &acc)
+    }
+
+    fn accept<const N: usize>(
+        &self,
+        start: StepStart<'_, N>,
+        h: f64,
+        end: (&[f64; N], &[f64; N]),
+        stages: &mut Self::Stages<N>,
+        stats: &mut Stats,
+        field: &impl AccelerationField<N>,
+        dense: &mut DenseOutput<N>,
+    ) -> Result<[f64; N]> {
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        accept(self, start, h, end, stages, stats, &acc, dense)
+    }
+}
+
+explicit_embedded_pair!(Dop853, Stages<N>);

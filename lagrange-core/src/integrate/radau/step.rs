@@ -12,7 +12,7 @@ use super::Radau5;
 use crate::error::{Error, Result};
 use crate::integrate::control::{check_limit, initial_step_on, next_attempt};
 use crate::integrate::dense::DenseOutput;
-use crate::integrate::dopri5::Dopri5;
+use crate::integrate::dopri5::settings::Dopri5;
 use crate::integrate::pair::{sealed, AccelerationField, Accepted, EmbeddedPair, StepStart};
 use crate::integrate::Stats;
 use crate::model::{check_state, Coordinates};
