@@ -140,6 +140,10 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
     /// Most step attempts of one integration.
     fn max_steps(&self) -> usize;
 
+    /// The settings `sys.step::<Self>(&mut state, h)` integrates over h with: the defaults (for
+    /// Dop853 without the dense output, which the step does not need).
+    fn one_step_settings() -> Self;
+
     /// The settings for an integration over an interval of this length (Dop853 bounds an
     /// infinite largest step by it, as `dop853.f` does); unchanged by default.
     fn bounded_to(&self, interval: f64) -> Self {
@@ -239,6 +243,9 @@ pub(crate) trait ExplicitPair: Copy {
 
     /// The step-control settings, in the form both methods share.
     fn controls(&self) -> Dopri5;
+
+    /// [`EmbeddedPair::one_step_settings`].
+    fn one_step_settings() -> Self;
 
     /// [`EmbeddedPair::bounded_to`].
     fn bounded_to(&self, interval: f64) -> Self {
@@ -382,6 +389,10 @@ macro_rules! explicit_embedded_pair {
 
             fn max_steps(&self) -> usize {
                 self.controls().max_steps
+            }
+
+            fn one_step_settings() -> Self {
+                <$method as $crate::integrate::pair::ExplicitPair>::one_step_settings()
             }
 
             fn bounded_to(&self, interval: f64) -> Self {

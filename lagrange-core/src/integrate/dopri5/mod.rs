@@ -29,9 +29,8 @@
 
 use super::dense::DenseOutput;
 use super::pair::{explicit_embedded_pair, sealed, AccelerationField, ExplicitPair, StepStart};
-use super::{Integrator, Stats};
+use super::Stats;
 use crate::error::Result;
-use crate::evaluation::Evaluate;
 use crate::geometry::Scalar;
 use crate::model::Coordinates;
 
@@ -42,59 +41,10 @@ mod tableau;
 pub use settings::Dopri5;
 pub(crate) use stages::{dense_output, stages, trial, Stages};
 
-/// `sys.step::<Dopri5>(&mut state, h)`: integrates over [t, t + h] with the
-/// [default](Dopri5::default) tolerances (rtol 1e-6, atol 1e-9), as many adaptive steps as that
-/// takes, landing exactly on t + h — the state advances by h, as with every fixed-step method.
-/// For other tolerances, dense output or events use a [`Stepper`](super::Stepper).
-///
-/// ```
-/// use lagrange_core::{Dopri5, Mechanism, State};
-/// # use lagrange_core::{vec2, Model, Scalar};
-/// # struct Pendulum;
-/// # impl Model<1, 2> for Pendulum {
-/// #     type Coords = [f64; 1];
-/// #     const RHEONOMIC: bool = false;
-/// #     const HAS_POTENTIAL: bool = true;
-/// #     const HAS_FORCES: bool = false;
-/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
-/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
-/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
-/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
-/// #     }
-/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
-/// # }
-/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
-/// Pendulum.step::<Dopri5>(&mut s, 0.5)?;
-/// assert_eq!(s.t, 0.5);
-/// // rtol 1e-6 per step: the energy moves by about that much of its size (4.3 J).
-/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-5);
-/// # Ok::<(), lagrange_core::Error>(())
-/// ```
-impl Integrator for Dopri5 {
-    const NAME: &'static str = "Dopri5";
-    type Memory<const N: usize> = ();
-    const ADAPTIVE: bool = true;
-
-    fn advance<M: Evaluate<N>, const N: usize>(
-        mechanism: &M,
-        _memory: &mut (),
-        t: f64,
-        q: &[f64; N],
-        v: &[f64; N],
-        h: f64,
-        stats: &mut Stats,
-    ) -> Result<([f64; N], [f64; N])> {
-        super::adaptive::advance_over(mechanism, Dopri5::default(), (t, q, v), h, stats)
-    }
-}
-
 impl sealed::Sealed for Dopri5 {}
 
 impl ExplicitPair for Dopri5 {
     const NAME: &'static str = "Dopri5";
-
     const ORDER: i32 = 5;
     const EXPONENTS: (f64, f64) = (0.2, 0.75);
     const REPLAYS_ON_DUALS: bool = true;
@@ -102,6 +52,10 @@ impl ExplicitPair for Dopri5 {
 
     fn controls(&self) -> Dopri5 {
         *self
+    }
+
+    fn one_step_settings() -> Self {
+        Dopri5::default()
     }
 
     /// The method's stages ([`stages`]) on any scalar, from q̈ evaluated at the start.

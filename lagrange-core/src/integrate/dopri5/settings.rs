@@ -8,6 +8,37 @@ use crate::error::{Error, Result};
 use crate::integrate::check_step;
 
 /// Settings of the adaptive Dormand–Prince 5(4) method (see the [module docs](super)).
+///
+/// One step: `sys.step::<Dopri5>(&mut state, h)` integrates over [t, t + h] with the
+/// [default](Dopri5::default) tolerances (rtol 1e-6, atol 1e-9), as many adaptive steps as that
+/// takes, landing exactly on t + h — the state advances by h, as with every fixed-step method.
+/// For other tolerances, dense output or events use a [`Stepper`](crate::integrate::Stepper).
+///
+/// ```
+/// use lagrange_core::{Dopri5, Mechanism, State};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&s)?;
+/// Pendulum.step::<Dopri5>(&mut s, 0.5)?;
+/// assert_eq!(s.t, 0.5);
+/// // rtol 1e-6 per step: the energy moves by about that much of its size (4.3 J).
+/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-5);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dopri5 {
     /// Relative tolerance (per component, against max(|y₀|, |y₁|)).

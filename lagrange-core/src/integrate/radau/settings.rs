@@ -7,6 +7,36 @@ use crate::error::{Error, Result};
 use crate::integrate::check_step;
 
 /// Settings of the adaptive Radau IIA method of order 5 (see the [module docs](super)).
+///
+/// One step: `sys.step::<Radau5>(&mut state, h)` integrates over [t, t + h] with the
+/// [default](Radau5::default) tolerances, as many adaptive steps as that takes, landing exactly on
+/// t + h (as [`Dopri5`](crate::integrate::Dopri5) does).
+///
+/// ```
+/// use lagrange_core::{Mechanism, Radau5, State};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&s)?;
+/// Pendulum.step::<Radau5>(&mut s, 0.5)?;
+/// assert_eq!(s.t, 0.5);
+/// // rtol 1e-6: the energy (4.3 J) moves by about that much of its size.
+/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-4);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Radau5 {
     /// Relative tolerance (per component; converted as in `radau5.f`, see the module docs).

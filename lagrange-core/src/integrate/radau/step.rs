@@ -205,6 +205,10 @@ impl EmbeddedPair for Radau5 {
         self.max_steps
     }
 
+    fn one_step_settings() -> Self {
+        Radau5::default()
+    }
+
     fn scratch<const N: usize>() {}
 
     fn start<const N: usize>(
