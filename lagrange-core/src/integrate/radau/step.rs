@@ -13,6 +13,7 @@ use crate::error::{Error, Result};
 use crate::integrate::control::{check_limit, initial_step_on, next_attempt};
 use crate::integrate::dense::DenseOutput;
 use crate::integrate::dopri5::settings::Dopri5;
+use crate::integrate::newton::breakdown;
 use crate::integrate::pair::{sealed, AccelerationField, Accepted, EmbeddedPair, StepStart};
 use crate::integrate::Stats;
 use crate::model::{check_state, Coordinates};
@@ -94,16 +95,8 @@ impl Radau5 {
         let (jac, factors) = Self::newton_matrices(memory, field, start, h, stats)?;
         memory.factors = factors;
         let Some(f) = factors else {
-            return Ok(Err((
-                0.5,
-                Some(Error::NewtonBreakdown {
-                    method: "Radau5",
-                    t,
-                    h,
-                    iteration: 0,
-                    reason: "the Newton matrix is singular or not finite".to_string(),
-                }),
-            )));
+            let singular = "the Newton matrix is singular or not finite";
+            return Ok(Err((0.5, Some(breakdown("Radau5", t, h, 0, singular)))));
         };
         Ok(
             match self.newton(memory, field, (t, y0), h, &jac, &f, stats) {
@@ -348,13 +341,9 @@ impl EmbeddedPair for Radau5 {
                     return Ok(accepted);
                 }
                 Attempt::Failed(_, error) if fresh => {
-                    return Err(error.unwrap_or(Error::NewtonBreakdown {
-                        method: "Radau5",
-                        t,
-                        h,
-                        iteration: self.max_newton_iterations,
-                        reason: "the step cut at an event did not converge".to_string(),
-                    }))
+                    let reason = "the step cut at an event did not converge";
+                    let iteration = self.max_newton_iterations;
+                    return Err(error.unwrap_or(breakdown("Radau5", t, h, iteration, reason)));
                 }
                 Attempt::Failed(..) => {
                     memory.jacobians = None;
