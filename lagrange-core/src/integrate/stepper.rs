@@ -237,6 +237,29 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
     }
 }
 
+impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
+    /// The same solver carrying `tangent` (trajectory sensitivities) from here on.
+    pub(crate) fn carrying<T>(self, tangent: T) -> Stepper<'m, M, Me, N, T> {
+        Stepper {
+            mechanism: self.mechanism,
+            method: self.method,
+            memory: self.memory,
+            scratch: self.scratch,
+            t: self.t,
+            q: self.q,
+            v: self.v,
+            a: self.a,
+            dense: self.dense,
+            stats: self.stats,
+            contacts: self.contacts,
+            options: self.options,
+            changes: self.changes,
+            instant_events: self.instant_events,
+            tangent,
+        }
+    }
+}
+
 impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize, T: Tangent<M, N>> Stepper<'m, M, Me, N, T> {
     /// The same solver with these contact options (restitution, event tolerance, mode changes per
     /// step; see [`ContactOptions`]), checked. They act on a declaration with unilateral or

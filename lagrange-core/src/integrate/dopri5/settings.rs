@@ -4,8 +4,8 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::error::{Error, Result};
-use crate::integrate::check_step;
+use crate::error::Result;
+use crate::integrate::{check_step, check_step_bounds, check_tolerances, invalid_setting};
 
 /// Settings of the adaptive Dormand–Prince 5(4) method (see the [module docs](super)).
 ///
@@ -98,19 +98,9 @@ impl Dopri5 {
     /// [`validate`](Self::validate), naming `method` in the errors (the settings are shared with
     /// [`Dop853`](super::Dop853)).
     pub(crate) fn validate_as(&self, method: &'static str) -> Result<()> {
-        let invalid = |setting, value, requirement| {
-            Err(Error::InvalidSetting {
-                method,
-                setting,
-                value,
-                requirement,
-            })
-        };
-        for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
-            if !(value.is_finite() && value >= 0.0) {
-                return invalid(name, value, "finite and non-negative");
-            }
-        }
+        let invalid =
+            |setting, value, requirement| Err(invalid_setting(method, setting, value, requirement));
+        check_tolerances(method, self.rtol, self.atol)?;
         if self.rtol == 0.0 && self.atol == 0.0 {
             return invalid("rtol", 0.0, "positive when atol is zero");
         }
@@ -144,12 +134,7 @@ impl Dopri5 {
                 return invalid(name, value, requirement);
             }
         }
-        if !(self.h_max > 0.0) {
-            return invalid("h_max", self.h_max, "positive");
-        }
-        if self.max_steps == 0 {
-            return invalid("max_steps", 0.0, "at least 1");
-        }
+        check_step_bounds(method, self.h_max, self.max_steps)?;
         if let Some(h) = self.h_init {
             check_step(h)?;
         }

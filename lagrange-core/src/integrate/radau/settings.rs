@@ -3,8 +3,8 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::error::{Error, Result};
-use crate::integrate::check_step;
+use crate::error::Result;
+use crate::integrate::{check_step, check_step_bounds, check_tolerances, invalid_setting};
 
 /// Settings of the adaptive Radau IIA method of order 5 (see the [module docs](super)).
 ///
@@ -95,18 +95,9 @@ impl Radau5 {
     /// for a bad `h_init`).
     pub fn validate(&self) -> Result<()> {
         let invalid = |setting, value, requirement| {
-            Err(Error::InvalidSetting {
-                method: "Radau5",
-                setting,
-                value,
-                requirement,
-            })
+            Err(invalid_setting("Radau5", setting, value, requirement))
         };
-        for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
-            if !(value.is_finite() && value >= 0.0) {
-                return invalid(name, value, "finite and non-negative");
-            }
-        }
+        check_tolerances("Radau5", self.rtol, self.atol)?;
         // Both positive: the error and Newton norms divide by atol′ + rtol′·|yᵢ|, which a
         // component at zero would make 0 with atol = 0.
         if !(self.rtol > 0.0) {
@@ -115,12 +106,7 @@ impl Radau5 {
         if !(self.atol > 0.0) {
             return invalid("atol", self.atol, "positive");
         }
-        if !(self.h_max > 0.0) {
-            return invalid("h_max", self.h_max, "positive");
-        }
-        if self.max_steps == 0 {
-            return invalid("max_steps", 0.0, "at least 1");
-        }
+        check_step_bounds("Radau5", self.h_max, self.max_steps)?;
         if !(2..=50).contains(&self.max_newton_iterations) {
             let n = self.max_newton_iterations as f64;
             return invalid("max_newton_iterations", n, "between 2 and 50");
