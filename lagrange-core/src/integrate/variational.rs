@@ -117,6 +117,23 @@ fn residual<M: Evaluate<N>, S: Scalar, const N: usize>(
     std::array::from_fn(|k| p[k] - g[k] * (0.5 * h) - p0[k])
 }
 
+/// The discrete flow's update from the converged midpoint velocity v_m: q₁ = q₀ + h v_m, and
+/// ṗ at the midpoint (t_m, q₀ + (h/2) v_m, v_m) (one evaluation), for p₁ = p₀ + h ṗ (plus RATTLE's
+/// Dg(q₀)ᵀΛ on a constrained step).
+fn midpoint_update<M: Evaluate<N>, const N: usize>(
+    mechanism: &M,
+    tm: f64,
+    q0: &[f64; N],
+    vm: &[f64; N],
+    h: f64,
+    stats: &mut Stats,
+) -> ([f64; N], [f64; N]) {
+    let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
+    let rate = momentum_rate(mechanism, tm, &qm, vm);
+    stats.evaluations += 1;
+    (std::array::from_fn(|j| q0[j] + h * vm[j]), rate)
+}
+
 /// What a variational step cost.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct VariationalStepStats {
@@ -200,10 +217,7 @@ impl Variational {
         count_exact_jacobians(stats, before);
         let iterations = end.converged(t)?;
         let vm: [f64; N] = vm.into();
-        let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
-        let g = momentum_rate(mechanism, tm, &qm, &vm);
-        stats.evaluations += 1;
-        let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
+        let (q1, g) = midpoint_update(mechanism, tm, q0, &vm, h, stats);
         let p1 = std::array::from_fn(|j| p0[j] + h * g[j]);
         Ok((q1, p1, vm, iterations))
     }
@@ -274,11 +288,8 @@ impl Variational {
         count_exact_jacobians(stats, before);
         let iterations = end.converged(t)?;
         let vm: [f64; N] = x[0].into();
-        let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
-        let rate = momentum_rate(mechanism, tm, &qm, &vm);
-        stats.evaluations += 1;
+        let (q1, rate) = midpoint_update(mechanism, tm, q0, &vm, h, stats);
         let push = g0.transpose() * x[1];
-        let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
         let p1 = std::array::from_fn(|j| p0[j] + push[j] + h * rate[j]);
         Ok((q1, p1, vm, iterations))
     }
