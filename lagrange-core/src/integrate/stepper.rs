@@ -29,8 +29,8 @@ use crate::model::{check_state, Coordinates, State};
 /// The contact mode of the mechanism a handle `M` evaluates.
 pub type ContactsOf<M, const N: usize> = <<M as Evaluate<N>>::Model as Dynamics<N>>::Contacts;
 
-/// A method a [`Stepper`] steps with: a one-step method with its step ([`Fixed`]), or an adaptive
-/// method's settings ([`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853),
+/// A method a [`Stepper`] steps with: a one-step method with its step ([`Fixed`](super::Fixed)), or
+/// an adaptive method's settings ([`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853),
 /// [`Radau5`](super::Radau5)). Each kind has one loop: the fixed-step one, generic over the
 /// one-step method, and the adaptive one, generic over the embedded pair.
 pub trait Method<const N: usize>: Copy {

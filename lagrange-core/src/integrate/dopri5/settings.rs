@@ -88,9 +88,10 @@ impl Dopri5 {
         }
     }
 
-    /// Checks the settings: tolerances finite, non-negative and not both zero, step-control
-    /// factors in their ranges, `max_steps` at least 1 ([`Error::InvalidSetting`] naming the
-    /// setting), the initial step positive and finite ([`Error::InvalidStep`]).
+    /// Checks the settings: tolerances finite, non-negative and not both zero, step-control factors
+    /// in their ranges, `max_steps` at least 1
+    /// ([`Error::InvalidSetting`](crate::Error::InvalidSetting) naming the setting), the initial
+    /// step positive and finite ([`Error::InvalidStep`](crate::Error::InvalidStep)).
     pub fn validate(&self) -> Result<()> {
         self.validate_as("Dopri5")
     }

@@ -91,8 +91,8 @@ impl Radau5 {
         }
     }
 
-    /// Checks the settings ([`Error::InvalidSetting`] naming the setting; [`Error::InvalidStep`]
-    /// for a bad `h_init`).
+    /// Checks the settings ([`Error::InvalidSetting`](crate::Error::InvalidSetting) naming the
+    /// setting; [`Error::InvalidStep`](crate::Error::InvalidStep) for a bad `h_init`).
     pub fn validate(&self) -> Result<()> {
         let invalid = |setting, value, requirement| {
             Err(invalid_setting("Radau5", setting, value, requirement))
