@@ -30,19 +30,19 @@ const NOT_FINITE: &str =
     "the collocation residual is not finite (the stages left the region where \
                           the equations of motion are finite; reduce h)";
 
-/// Qⱼ = q₀ + h Σₖ aⱼₖ Vₖ.
-fn stage_position<const N: usize, const S: usize>(
+/// Stage j's point (tⱼ, Qⱼ, Vⱼ): tⱼ = t + cⱼh, Qⱼ = q₀ + h Σₖ aⱼₖ Vₖ.
+fn stage_point<const N: usize, const S: usize>(
     tableau: &Tableau<S>,
-    q0: &SVector<f64, N>,
+    (t, q0): (f64, &SVector<f64, N>),
     stages: &[SVector<f64, N>; S],
     h: f64,
     j: usize,
-) -> SVector<f64, N> {
+) -> (f64, [f64; N], [f64; N]) {
     let mut qj = *q0;
     for k in 0..S {
         qj += stages[k] * (h * tableau.a[j][k]);
     }
-    qj
+    (t + tableau.c[j] * h, qj.into(), stages[j].into())
 }
 
 /// The start of a collocation step: (q₀, v₀) as vectors, p₀, the solver's previous step if this
@@ -211,14 +211,8 @@ fn simplified_iteration<M: Evaluate<N>, const N: usize, const S: usize>(
     let end = newton(stages, MAX_NEWTON_ITERATIONS, true, stats, |stages| {
         let mut p = [SVector::<f64, N>::zeros(); S];
         for j in 0..S {
-            let qj = stage_position(tableau, q0, stages, h, j);
-            let (pj, rj) = canonical_field(
-                mechanism,
-                t + tableau.c[j] * h,
-                &qj.into(),
-                &stages[j].into(),
-                constrained,
-            )?;
+            let (tj, qj, vj) = stage_point(tableau, (t, q0), stages, h, j);
+            let (pj, rj) = canonical_field(mechanism, tj, &qj, &vj, constrained)?;
             evaluations += 1;
             p[j] = pj.into();
             rates[j] = rj.into();
@@ -440,14 +434,8 @@ fn exact_collocation<M: Evaluate<N>, const N: usize, const S: usize>(
     let end = newton(&mut stages, MAX_NEWTON_ITERATIONS, false, stats, |stages| {
         iteration += 1;
         for j in 0..S {
-            let qj = stage_position(tableau, q0, stages, h, j);
-            field[j] = field_jacobians(
-                mechanism,
-                t + tableau.c[j] * h,
-                &qj.into(),
-                &stages[j].into(),
-                constrained,
-            )?;
+            let (tj, qj, vj) = stage_point(tableau, (t, q0), stages, h, j);
+            field[j] = field_jacobians(mechanism, tj, &qj, &vj, constrained)?;
             rates[j] = field[j].rate;
         }
         let (residual, norm) =
