@@ -31,6 +31,7 @@ const NOT_FINITE: &str =
                           the equations of motion are finite; reduce h)";
 
 /// Stage j's point (tⱼ, Qⱼ, Vⱼ): tⱼ = t + cⱼh, Qⱼ = q₀ + h Σₖ aⱼₖ Vₖ.
+#[inline(always)]
 fn stage_point<const N: usize, const S: usize>(
     tableau: &Tableau<S>,
     (t, q0): (f64, &SVector<f64, N>),
@@ -60,6 +61,7 @@ struct Start<const N: usize, const S: usize> {
 /// predictor: the previous step's stages extrapolated and corrected by that extrapolation's error
 /// on it when it had the same h, else Vᵢ = v₀ + cᵢ h q̈(t₀, q₀, v₀), O(h²) from the solution (one
 /// plain evaluation).
+#[inline(always)]
 fn start_of_step<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
@@ -103,6 +105,7 @@ fn start_of_step<M: Evaluate<N>, const N: usize, const S: usize>(
 /// ∂p/∂v = M(q₀) where the last step left it (the block that goes stale fastest: the others are
 /// scaled by h or h²).
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 fn attempt_matrix<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
@@ -146,6 +149,7 @@ fn attempt_matrix<M: Evaluate<N>, const N: usize, const S: usize>(
 
 /// The collocation residuals Rᵢ = pᵢ − p₀ − h Σⱼ aᵢⱼ ṗⱼ of the stages' momenta `p` and rates, and
 /// their largest max-norm.
+#[inline(always)]
 fn collocation_residual<const N: usize, const S: usize>(
     tableau: &Tableau<S>,
     h: f64,
@@ -169,6 +173,7 @@ fn collocation_residual<const N: usize, const S: usize>(
 /// ṗᵢ carried from the last evaluation to the final iterate by the stage's Jacobians
 /// (`jacobians(i)`): ṗᵢ −= ∂ṗ/∂q h Σₖ aᵢₖ δₖ + ∂ṗ/∂v δᵢ, first order in the last increment δ,
 /// which is at the round-off floor: no extra evaluation.
+#[inline(always)]
 fn carry_rates<'a, const N: usize, const S: usize>(
     rates: &mut [SVector<f64, N>; S],
     last: &[SVector<f64, N>; S],
@@ -189,6 +194,7 @@ fn carry_rates<'a, const N: usize, const S: usize>(
 /// The simplified Newton iteration on the stages with `matrix` (stopping when it is slow): how it
 /// ended, the stages' rates ṗⱼ at the last evaluation and the last increment.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
+#[inline(always)]
 fn simplified_iteration<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
@@ -313,6 +319,7 @@ pub(super) fn collocation_step<M: Evaluate<N>, const N: usize, const S: usize>(
 /// What the next step of the solver takes from this one, which ended at (q₁, v₁, p₁) with the
 /// mass matrix `mass1` there (if it was evaluated): its stages, and their error against the
 /// extrapolation of the step before (zero without one).
+#[inline(always)]
 fn remember<const N: usize, const S: usize>(
     start: &Start<N, S>,
     (t, h): (f64, f64),
@@ -379,6 +386,7 @@ fn finish<M: Evaluate<N>, const N: usize, const S: usize>(
 
 /// The Newton matrix of the collocation equations at the stages, from each stage's field
 /// Jacobians: block (i, k) = ∂pᵢ/∂q h aᵢₖ + δᵢₖ ∂pᵢ/∂v − h² Σⱼ aᵢⱼ aⱼₖ ∂ṗⱼ/∂q − h aᵢₖ ∂ṗₖ/∂v.
+#[inline(always)]
 fn exact_matrix<const N: usize, const S: usize>(
     tableau: &Tableau<S>,
     field: &[FieldJacobians<N>; S],
