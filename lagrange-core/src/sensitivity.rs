@@ -225,40 +225,7 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
         }
         let tangent =
             seeded::<M::Coords, _, N, K, NP, P>(self.mechanism.model(), (&self.q, &self.v), seeds)?;
-        let Stepper {
-            mechanism,
-            method,
-            memory,
-            scratch,
-            t,
-            q,
-            v,
-            a,
-            dense,
-            stats,
-            contacts,
-            options,
-            changes,
-            instant_events,
-            tangent: _,
-        } = self;
-        Ok(Stepper {
-            mechanism,
-            method,
-            memory,
-            scratch,
-            t,
-            q,
-            v,
-            a,
-            dense,
-            stats,
-            contacts,
-            options,
-            changes,
-            instant_events,
-            tangent,
-        })
+        Ok(self.carrying(tangent))
     }
 }
 

@@ -25,7 +25,7 @@ use super::dense::DenseOutput;
 use super::newton::jacobians_by_duals;
 use super::pair::{AccelerationField, OfMechanism, StepStart};
 use super::stepper::{ContactsOf, Method, Stepper, Tangent};
-use super::{EmbeddedPair, Stats};
+use super::{EmbeddedPair, Integrator, Stats};
 use crate::constraints::{ContactModel, ModeChange};
 use crate::error::{Error, Result};
 use crate::evaluation::{diagnose, Dynamics, Evaluate};
@@ -97,24 +97,34 @@ impl<P: EmbeddedPair, const N: usize> Method<N> for P {
     }
 }
 
-/// `sys.step::<P>(&mut state, h)` for an adaptive method: integrates from (t, q, q̇) over
-/// [t, t + h] with `method`, as many accepted steps as that takes, landing on t + h; adds their cost
-/// to `stats`.
-pub(super) fn advance_over<P: EmbeddedPair, M: Evaluate<N>, const N: usize>(
-    mechanism: &M,
-    method: P,
-    (t, q, v): (f64, &[f64; N], &[f64; N]),
-    h: f64,
-    stats: &mut Stats,
-) -> Result<([f64; N], [f64; N])> {
-    let mut stepper = Stepper::from_checked(mechanism, method, t, *q, *v)?;
-    let t_end = t + h;
-    let mut result = Ok(());
-    while stepper.t < t_end && result.is_ok() {
-        result = stepper.step(t_end);
+/// `sys.step::<P>(&mut state, h)` for an adaptive method ([`Dopri5`](super::Dopri5),
+/// [`Dop853`](super::Dop853), [`Radau5`](super::Radau5)): integrates over [t, t + h] with its
+/// [one-step settings](EmbeddedPair::one_step_settings) (the default tolerances), as many adaptive
+/// steps as that takes, landing exactly on t + h — the state advances by h, as with every
+/// fixed-step method. For other tolerances, dense output or events use a [`Stepper`].
+impl<P: EmbeddedPair> Integrator for P {
+    const NAME: &'static str = <P as EmbeddedPair>::NAME;
+    type Memory<const N: usize> = ();
+    const ADAPTIVE: bool = true;
+
+    fn advance<M: Evaluate<N>, const N: usize>(
+        mechanism: &M,
+        _memory: &mut (),
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<([f64; N], [f64; N])> {
+        let mut stepper = Stepper::from_checked(mechanism, P::one_step_settings(), t, *q, *v)?;
+        let t_end = t + h;
+        let mut result = Ok(());
+        while stepper.t < t_end && result.is_ok() {
+            result = stepper.step(t_end);
+        }
+        *stats += stepper.stats;
+        result.map(|()| (stepper.q, stepper.v))
     }
-    *stats += stepper.stats;
-    result.map(|()| (stepper.q, stepper.v))
 }
 
 /// One accepted step on the mechanism's own accelerations: the method's step with its dense output

@@ -16,7 +16,7 @@
 //! dual pass over q at fixed q̇, plus 𝓕 — the potential and the non-conservative part need not be
 //! separated ([`momentum_rate`]).
 
-use super::newton::{jacobian_rows, max_norm, newton, NewtonEnd, MAX_NEWTON_ITERATIONS};
+use super::newton::{jacobian_rows, max_norm, newton, MAX_NEWTON_ITERATIONS};
 use super::Stats;
 use crate::error::{describe_configuration, Error, Result};
 pub(crate) use crate::evaluation::momentum_rate;
@@ -182,15 +182,6 @@ pub(crate) fn velocities_and_mass_from_momenta<M: Evaluate<N>, const N: usize>(
     // Every iteration evaluated the momenta with their Jacobian ∂p/∂v = M (counted as an
     // evaluation: it is the mass matrix, not a Jacobian of the step's equations).
     stats.evaluations += stats.newton_iterations - before;
-    match end {
-        NewtonEnd::Converged { iterations, .. } => Ok((v.into(), iterations, None)),
-        NewtonEnd::Slow {
-            iterations,
-            residual,
-        } => Err(Error::NewtonDiverged {
-            t,
-            iterations,
-            residual,
-        }),
-    }
+    let iterations = end.converged(t)?;
+    Ok((v.into(), iterations, None))
 }

@@ -1,7 +1,7 @@
 //! Step-size control of the embedded pairs: the starting step, the PI controller and its step
 //! loop (the explicit pairs), and the scaled error component.
 
-use super::dopri5::Dopri5;
+use super::dopri5::settings::Dopri5;
 use super::Stats;
 use crate::error::{Error, Result};
 
@@ -87,22 +87,12 @@ pub(crate) fn adaptive_step<T>(
     stats: &mut Stats,
     mut attempt: impl FnMut(f64, &mut Stats) -> Result<(T, f64)>,
 ) -> Result<(T, f64, f64)> {
-    // Written so that a NaN limit is refused too.
-    if !(t_limit > t) {
-        return Err(Error::InvalidEndTime { t, t_end: t_limit });
-    }
+    check_limit(t, t_limit)?;
     let expo1 = exponent - st.beta * weight;
     let mut last_rejected = false;
     let mut last_error: Option<Error> = None;
     loop {
-        let mut h = control.h.min(st.h_max);
-        let last = t + 1.01 * h >= t_limit;
-        if last {
-            h = t_limit - t;
-        }
-        if !(t + 0.1 * h > t) {
-            return Err(last_error.unwrap_or(Error::StepSizeUnderflow { method, t, h }));
-        }
+        let (h, last) = next_attempt(method, (t, t_limit), control.h, st.h_max, &mut last_error)?;
         match attempt(h, stats) {
             Ok((trial, err)) => {
                 // err^(1/8) (Dop853's classical controller) as three square roots, a few
@@ -141,6 +131,45 @@ pub(crate) fn adaptive_step<T>(
         last_rejected = true;
         stats.rejected += 1;
     }
+}
+
+/// Refuses a step limit not after t ([`Error::InvalidEndTime`]; written so that a NaN limit is
+/// refused too).
+// `!(a > b)` is deliberate: it also refuses NaN.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+#[inline(always)]
+pub(crate) fn check_limit(t: f64, t_limit: f64) -> Result<()> {
+    if !(t_limit > t) {
+        return Err(Error::InvalidEndTime { t, t_end: t_limit });
+    }
+    Ok(())
+}
+
+/// The size of the next attempt of an adaptive step from t towards `t_limit`: the `proposed` step
+/// bounded by `h_max`, and shortened to land on `t_limit` when it would end within 1 % of it or
+/// past it (then `true`: the last step before the limit). When the step can no longer shrink
+/// (0.1·h below round-off of t) the last failure is returned, [`Error::StepSizeUnderflow`] if
+/// there was none.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+#[inline(always)]
+pub(crate) fn next_attempt(
+    method: &'static str,
+    (t, t_limit): (f64, f64),
+    proposed: f64,
+    h_max: f64,
+    last_error: &mut Option<Error>,
+) -> Result<(f64, bool)> {
+    let mut h = proposed.min(h_max);
+    let last = t + 1.01 * h >= t_limit;
+    if last {
+        h = t_limit - t;
+    }
+    if !(t + 0.1 * h > t) {
+        return Err(last_error
+            .take()
+            .unwrap_or(Error::StepSizeUnderflow { method, t, h }));
+    }
+    Ok((h, last))
 }
 
 /// e/sc of the error norm, with 0/0 = 0 (an exact component with a zero scale, possible when

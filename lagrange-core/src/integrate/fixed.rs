@@ -6,6 +6,7 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use super::control::check_limit;
 use super::held::HeldMode;
 use super::stepper::{ContactsOf, Method, Stepper, Tangent};
 use super::{check_step_at, commit, Integrator, Stats};
@@ -92,12 +93,7 @@ impl<I: Integrator, const N: usize> Method<N> for Fixed<I> {
         s: &mut Stepper<'_, M, Self, N, T>,
         t_limit: f64,
     ) -> Result<()> {
-        if !(t_limit > s.t) {
-            return Err(Error::InvalidEndTime {
-                t: s.t,
-                t_end: t_limit,
-            });
-        }
+        check_limit(s.t, t_limit)?;
         let (mut h, mut t1) = (s.method.h, s.t + s.method.h);
         if s.t + 1.01 * s.method.h >= t_limit {
             (h, t1) = (t_limit - s.t, t_limit);

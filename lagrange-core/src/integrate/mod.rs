@@ -144,6 +144,51 @@ pub fn check_step(h: f64) -> Result<()> {
     }
 }
 
+/// [`Error::InvalidSetting`]: `method`'s `setting` has a `value` that does not meet `requirement`.
+pub(crate) fn invalid_setting(
+    method: &'static str,
+    setting: &'static str,
+    value: f64,
+    requirement: &'static str,
+) -> Error {
+    Error::InvalidSetting {
+        method,
+        setting,
+        value,
+        requirement,
+    }
+}
+
+/// Checks the tolerances every adaptive method has: `rtol` and `atol` finite and non-negative
+/// ([`Error::InvalidSetting`] naming the first that is not).
+pub(crate) fn check_tolerances(method: &'static str, rtol: f64, atol: f64) -> Result<()> {
+    for (name, value) in [("rtol", rtol), ("atol", atol)] {
+        if !(value.is_finite() && value >= 0.0) {
+            return Err(invalid_setting(
+                method,
+                name,
+                value,
+                "finite and non-negative",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks the step bounds every adaptive method has: `h_max` positive, `max_steps` at least 1
+/// ([`Error::InvalidSetting`]).
+// `!(a > b)` is deliberate: it also refuses NaN.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+pub(crate) fn check_step_bounds(method: &'static str, h_max: f64, max_steps: usize) -> Result<()> {
+    if !(h_max > 0.0) {
+        return Err(invalid_setting(method, "h_max", h_max, "positive"));
+    }
+    if max_steps == 0 {
+        return Err(invalid_setting(method, "max_steps", 0.0, "at least 1"));
+    }
+    Ok(())
+}
+
 /// Checks a step size from time `t`: positive and finite ([`Error::InvalidStep`]), and large enough
 /// that t + h ≠ t in floating point ([`Error::StepDoesNotAdvance`]; a subnormal h at t = 1, say).
 /// A non-finite `t` passes here and is refused by the state check that follows.

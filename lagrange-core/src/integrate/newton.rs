@@ -5,7 +5,8 @@
 // `!(a < b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::error::Result;
+use super::Stats;
+use crate::error::{Error, Result};
 use crate::evaluation::Evaluate;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
@@ -116,6 +117,48 @@ pub(crate) enum NewtonEnd {
     /// residual norm: the caller refreshes its Jacobian or reports
     /// [`Error::NewtonDiverged`](crate::Error::NewtonDiverged).
     Slow { iterations: usize, residual: f64 },
+}
+
+impl NewtonEnd {
+    /// The iterations of a converged iteration; a slow one is [`Error::NewtonDiverged`] at t.
+    pub(crate) fn converged(self, t: f64) -> Result<usize> {
+        match self {
+            NewtonEnd::Converged { iterations, .. } => Ok(iterations),
+            NewtonEnd::Slow {
+                iterations,
+                residual,
+            } => Err(Error::NewtonDiverged {
+                t,
+                iterations,
+                residual,
+            }),
+        }
+    }
+}
+
+/// Counts the iterations of a Newton loop since `before` (`stats.newton_iterations` then) each of
+/// which evaluated its exact Jacobian and factorised it.
+pub(crate) fn count_exact_jacobians(stats: &mut Stats, before: usize) {
+    let n = stats.newton_iterations - before;
+    stats.jacobians += n;
+    stats.factorizations += n;
+}
+
+/// [`Error::NewtonBreakdown`] of `method`'s step of h from t at Newton iteration `iteration`.
+pub(crate) fn breakdown(
+    method: &'static str,
+    t: f64,
+    h: f64,
+    iteration: usize,
+    reason: &str,
+) -> Error {
+    Error::NewtonBreakdown {
+        method,
+        t,
+        h,
+        iteration,
+        reason: reason.to_string(),
+    }
 }
 
 /// The one Newton loop of the implicit methods. `iteration(x)` evaluates the residual at x and

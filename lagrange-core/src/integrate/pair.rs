@@ -1,13 +1,12 @@
 //! [`EmbeddedPair`]: the adaptive methods with an embedded error estimate and a dense output — the
-//! explicit Runge–Kutta pairs [`Dopri5`] and [`Dop853`] and the implicit
+//! explicit Runge–Kutta pairs [`Dopri5`] and [`Dop853`](super::Dop853) and the implicit
 //! [`Radau5`](super::Radau5) — as one interface that takes accepted steps on any
 //! [`AccelerationField`]: a mechanism's own accelerations, or those of a contact mode the adaptive
 //! loop ([`Stepper`](super::Stepper)) holds over a step.
 
 use super::control::{adaptive_step, initial_step_on, Controller};
 use super::dense::DenseOutput;
-use super::dop853::{self, Dop853};
-use super::dopri5::{self, Dopri5};
+use super::dopri5::settings::Dopri5;
 use super::newton::acceleration_jacobians;
 use super::Stats;
 use crate::error::{Error, Result};
@@ -20,8 +19,6 @@ use nalgebra::SMatrix;
 pub(crate) mod sealed {
     pub trait Sealed {}
 }
-impl sealed::Sealed for Dopri5 {}
-impl sealed::Sealed for Dop853 {}
 
 /// The right-hand side a step of an [`EmbeddedPair`] integrates: the accelerations q̈(t, q, q̇) of
 /// the first-order system y = (q, q̇), y' = (q̇, q̈), and their exact Jacobians for the Newton
@@ -118,7 +115,7 @@ pub struct Accepted<const N: usize> {
     pub a: Option<[f64; N]>,
 }
 
-/// An adaptive method with an embedded error estimate and a dense output: [`Dopri5`], [`Dop853`]
+/// An adaptive method with an embedded error estimate and a dense output: [`Dopri5`], [`Dop853`](super::Dop853)
 /// or [`Radau5`](super::Radau5) (sealed). Its steps are taken on any [`AccelerationField`] and
 /// accepted by its own error control; what it keeps from one step to the next (its step-size
 /// controller, and Radau5's Jacobian, factorisation and last collocation polynomial) is its
@@ -136,12 +133,16 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
     /// time; what it holds between steps is never read.
     type Scratch<const N: usize>: Clone;
 
-    /// Checks the settings ([`Dopri5::validate`], [`Dop853::validate`],
+    /// Checks the settings ([`Dopri5::validate`], [`Dop853::validate`](super::Dop853::validate),
     /// [`Radau5::validate`](super::Radau5::validate)).
     fn validate(&self) -> Result<()>;
 
     /// Most step attempts of one integration.
     fn max_steps(&self) -> usize;
+
+    /// The settings `sys.step::<Self>(&mut state, h)` integrates over h with: the defaults (for
+    /// Dop853 without the dense output, which the step does not need).
+    fn one_step_settings() -> Self;
 
     /// The settings for an integration over an interval of this length (Dop853 bounds an
     /// infinite largest step by it, as `dop853.f` does); unchanged by default.
@@ -219,7 +220,7 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
 }
 
 /// [`EmbeddedPair::replay`] of a method whose steps are not taken again on dual numbers.
-fn not_replayed(method: &'static str) -> Error {
+pub(crate) fn not_replayed(method: &'static str) -> Error {
     Error::UnsuitableMethod {
         method,
         reason: "its steps are not taken again on dual numbers: sensitivities of an adaptive run \
@@ -242,6 +243,9 @@ pub(crate) trait ExplicitPair: Copy {
 
     /// The step-control settings, in the form both methods share.
     fn controls(&self) -> Dopri5;
+
+    /// [`EmbeddedPair::one_step_settings`].
+    fn one_step_settings() -> Self;
 
     /// [`EmbeddedPair::bounded_to`].
     fn bounded_to(&self, interval: f64) -> Self {
@@ -291,113 +295,8 @@ pub(crate) trait ExplicitPair: Copy {
     ) -> Result<[f64; N]>;
 }
 
-impl ExplicitPair for Dopri5 {
-    const NAME: &'static str = "Dopri5";
-    const ORDER: i32 = 5;
-    const EXPONENTS: (f64, f64) = (0.2, 0.75);
-    const REPLAYS_ON_DUALS: bool = true;
-    type Stages<const N: usize> = dopri5::Stages<N>;
-
-    fn controls(&self) -> Dopri5 {
-        *self
-    }
-
-    /// The method's stages ([`dopri5::stages`]) on any scalar, from q̈ evaluated at the start.
-    fn replay<S: Scalar, const N: usize>(
-        t: f64,
-        (q, v): (&[S; N], &[S; N]),
-        h: f64,
-        mut acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
-    ) -> Option<Result<([S; N], [S; N])>> {
-        let step = || {
-            let a = acc(t, q, v)?;
-            let (q1, v1, _, _) = dopri5::stages(t, q, v, a, h, acc)?;
-            Ok((q1, v1))
-        };
-        Some(step())
-    }
-
-    fn stages<const N: usize>() -> Self::Stages<N> {
-        ([0.0; N], [[0.0; N]; 6])
-    }
-
-    #[inline(always)]
-    fn attempt<C: Coordinates<N>, const N: usize>(
-        &self,
-        start: StepStart<'_, N>,
-        h: f64,
-        stages: &mut Self::Stages<N>,
-        stats: &mut Stats,
-        field: &impl AccelerationField<N>,
-    ) -> Result<([f64; N], [f64; N], f64)> {
-        dopri5::trial::<C, N>(self, start, h, stages, stats, |t, q, v| {
-            field.accelerations(t, q, v)
-        })
-    }
-
-    #[inline(always)]
-    fn accept<const N: usize>(
-        &self,
-        (t, q, v, _): StepStart<'_, N>,
-        h: f64,
-        end: (&[f64; N], &[f64; N]),
-        (a1, k): &mut Self::Stages<N>,
-        _stats: &mut Stats,
-        _field: &impl AccelerationField<N>,
-        dense: &mut DenseOutput<N>,
-    ) -> Result<[f64; N]> {
-        *dense = dopri5::dense_output(t, h, (q, v), end, k);
-        Ok(*a1)
-    }
-}
-
-impl ExplicitPair for Dop853 {
-    const NAME: &'static str = "Dop853";
-    const ORDER: i32 = 8;
-    const EXPONENTS: (f64, f64) = (1.0 / 8.0, 0.2);
-    type Stages<const N: usize> = dop853::Stages<N>;
-
-    fn controls(&self) -> Dopri5 {
-        self.shared()
-    }
-
-    fn bounded_to(&self, interval: f64) -> Self {
-        Dop853::bounded_to(self, interval)
-    }
-
-    fn stages<const N: usize>() -> Self::Stages<N> {
-        dop853::Stages::new()
-    }
-
-    fn attempt<C: Coordinates<N>, const N: usize>(
-        &self,
-        start: StepStart<'_, N>,
-        h: f64,
-        stages: &mut Self::Stages<N>,
-        stats: &mut Stats,
-        field: &impl AccelerationField<N>,
-    ) -> Result<([f64; N], [f64; N], f64)> {
-        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-        dop853::attempt::<C, N>(self, start, h, stages, stats, &acc)
-    }
-
-    fn accept<const N: usize>(
-        &self,
-        start: StepStart<'_, N>,
-        h: f64,
-        end: (&[f64; N], &[f64; N]),
-        stages: &mut Self::Stages<N>,
-        stats: &mut Stats,
-        field: &impl AccelerationField<N>,
-        dense: &mut DenseOutput<N>,
-    ) -> Result<[f64; N]> {
-        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-        dop853::accept(self, start, h, end, stages, stats, &acc, dense)
-    }
-}
-
 /// [`EmbeddedPair::start`] of an explicit pair: the controller at the first step.
-fn explicit_start<P: ExplicitPair, const N: usize>(
+pub(crate) fn explicit_start<P: ExplicitPair, const N: usize>(
     method: &P,
     field: &impl AccelerationField<N>,
     start: StepStart<'_, N>,
@@ -455,7 +354,7 @@ pub(crate) fn explicit_step<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
 }
 
 /// [`EmbeddedPair::shorten`] of an explicit pair: one trial of length h, accepted.
-fn explicit_shorten<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
+pub(crate) fn explicit_shorten<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     method: &P,
     stages: &mut P::Stages<N>,
     field: &impl AccelerationField<N>,
@@ -473,16 +372,18 @@ fn explicit_shorten<P: ExplicitPair, C: Coordinates<N>, const N: usize>(
     })
 }
 
-/// The [`EmbeddedPair`] implementation of an explicit pair (the same for both).
+/// The [`EmbeddedPair`] implementation of an explicit pair (the same for both), invoked where each
+/// is defined.
 macro_rules! explicit_embedded_pair {
     ($method:ty, $stages:ty) => {
-        impl EmbeddedPair for $method {
-            const NAME: &'static str = <$method as ExplicitPair>::NAME;
-            const REPLAYS_ON_DUALS: bool = <$method as ExplicitPair>::REPLAYS_ON_DUALS;
-            type Memory<const N: usize> = Controller;
+        impl $crate::integrate::pair::EmbeddedPair for $method {
+            const NAME: &'static str = <$method as $crate::integrate::pair::ExplicitPair>::NAME;
+            const REPLAYS_ON_DUALS: bool =
+                <$method as $crate::integrate::pair::ExplicitPair>::REPLAYS_ON_DUALS;
+            type Memory<const N: usize> = $crate::integrate::control::Controller;
             type Scratch<const N: usize> = $stages;
 
-            fn validate(&self) -> Result<()> {
+            fn validate(&self) -> $crate::error::Result<()> {
                 <$method>::validate(self)
             }
 
@@ -490,42 +391,48 @@ macro_rules! explicit_embedded_pair {
                 self.controls().max_steps
             }
 
+            fn one_step_settings() -> Self {
+                <$method as $crate::integrate::pair::ExplicitPair>::one_step_settings()
+            }
+
             fn bounded_to(&self, interval: f64) -> Self {
-                <$method as ExplicitPair>::bounded_to(self, interval)
+                <$method as $crate::integrate::pair::ExplicitPair>::bounded_to(self, interval)
             }
 
             fn scratch<const N: usize>() -> Self::Scratch<N> {
-                <$method as ExplicitPair>::stages()
+                <$method as $crate::integrate::pair::ExplicitPair>::stages()
             }
 
             fn start<const N: usize>(
                 &self,
-                field: &impl AccelerationField<N>,
-                start: StepStart<'_, N>,
-                stats: &mut Stats,
-            ) -> Controller {
-                explicit_start(self, field, start, stats)
+                field: &impl $crate::integrate::pair::AccelerationField<N>,
+                start: $crate::integrate::pair::StepStart<'_, N>,
+                stats: &mut $crate::integrate::Stats,
+            ) -> $crate::integrate::control::Controller {
+                $crate::integrate::pair::explicit_start(self, field, start, stats)
             }
 
-            fn proposed_step<const N: usize>(memory: &Controller) -> f64 {
+            fn proposed_step<const N: usize>(
+                memory: &$crate::integrate::control::Controller,
+            ) -> f64 {
                 memory.h
             }
 
             #[inline(always)]
-            fn step<C: Coordinates<N>, const N: usize>(
+            fn step<C: $crate::model::Coordinates<N>, const N: usize>(
                 &self,
-                memory: &mut Controller,
+                memory: &mut $crate::integrate::control::Controller,
                 scratch: &mut Self::Scratch<N>,
-                field: &impl AccelerationField<N>,
-                start: StepStart<'_, N>,
+                field: &impl $crate::integrate::pair::AccelerationField<N>,
+                start: $crate::integrate::pair::StepStart<'_, N>,
                 t_limit: f64,
-                stats: &mut Stats,
-                dense: &mut DenseOutput<N>,
-            ) -> Result<Accepted<N>> {
-                let (t, q, v, a) = explicit_step::<Self, C, N>(
+                stats: &mut $crate::integrate::Stats,
+                dense: &mut $crate::integrate::DenseOutput<N>,
+            ) -> $crate::error::Result<$crate::integrate::pair::Accepted<N>> {
+                let (t, q, v, a) = $crate::integrate::pair::explicit_step::<Self, C, N>(
                     self, memory, scratch, field, start, t_limit, stats, dense,
                 )?;
-                Ok(Accepted {
+                Ok($crate::integrate::pair::Accepted {
                     t,
                     q,
                     v,
@@ -533,34 +440,44 @@ macro_rules! explicit_embedded_pair {
                 })
             }
 
-            fn shorten<C: Coordinates<N>, const N: usize>(
+            fn shorten<C: $crate::model::Coordinates<N>, const N: usize>(
                 &self,
-                _memory: &mut Controller,
+                _memory: &mut $crate::integrate::control::Controller,
                 scratch: &mut Self::Scratch<N>,
-                field: &impl AccelerationField<N>,
-                start: StepStart<'_, N>,
+                field: &impl $crate::integrate::pair::AccelerationField<N>,
+                start: $crate::integrate::pair::StepStart<'_, N>,
                 h: f64,
-                stats: &mut Stats,
-                dense: &mut DenseOutput<N>,
-            ) -> Result<Accepted<N>> {
-                explicit_shorten::<Self, C, N>(self, scratch, field, start, h, (stats, dense))
+                stats: &mut $crate::integrate::Stats,
+                dense: &mut $crate::integrate::DenseOutput<N>,
+            ) -> $crate::error::Result<$crate::integrate::pair::Accepted<N>> {
+                $crate::integrate::pair::explicit_shorten::<Self, C, N>(
+                    self,
+                    scratch,
+                    field,
+                    start,
+                    h,
+                    (stats, dense),
+                )
             }
 
-            fn field_changed<const N: usize>(_memory: &mut Controller) {}
+            fn field_changed<const N: usize>(_memory: &mut $crate::integrate::control::Controller) {
+            }
 
-            fn replay<S: Scalar, const N: usize>(
+            fn replay<S: $crate::geometry::Scalar, const N: usize>(
                 &self,
                 t: f64,
                 y: (&[S; N], &[S; N]),
                 h: f64,
-                acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
-            ) -> Result<([S; N], [S; N])> {
-                <$method as ExplicitPair>::replay(t, y, h, acc)
-                    .unwrap_or_else(|| Err(not_replayed(<$method as ExplicitPair>::NAME)))
+                acc: impl FnMut(f64, &[S; N], &[S; N]) -> $crate::error::Result<[S; N]>,
+            ) -> $crate::error::Result<([S; N], [S; N])> {
+                <$method as $crate::integrate::pair::ExplicitPair>::replay(t, y, h, acc)
+                    .unwrap_or_else(|| {
+                        Err($crate::integrate::pair::not_replayed(
+                            <$method as $crate::integrate::pair::ExplicitPair>::NAME,
+                        ))
+                    })
             }
         }
     };
 }
-
-explicit_embedded_pair!(Dopri5, dopri5::Stages<N>);
-explicit_embedded_pair!(Dop853, dop853::Stages<N>);
+pub(crate) use explicit_embedded_pair;

@@ -47,7 +47,8 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::newton::{jacobian_rows, max_norm, newton, seeded, NewtonEnd, MAX_NEWTON_ITERATIONS};
+use super::newton::MAX_NEWTON_ITERATIONS;
+use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
 use super::Stats;
 use crate::error::{Error, Result};
 use crate::evaluation::Evaluate;
@@ -189,23 +190,6 @@ pub(crate) fn rows_on<M: Evaluate<N>, const N: usize>(
         .ok_or_else(|| rows_not_provided(method))
 }
 
-/// The Newton breakdown of a RATTLE position stage.
-pub(crate) fn breakdown(
-    method: &'static str,
-    t: f64,
-    h: f64,
-    iteration: usize,
-    reason: &str,
-) -> Error {
-    Error::NewtonBreakdown {
-        method,
-        t,
-        h,
-        iteration,
-        reason: reason.to_string(),
-    }
-}
-
 /// Störmer–Verlet's position stage: Λ (= (h/2)λ, entries beyond `rows` zero) with
 /// g(q̂ + h W Λ, t₁) = 0, W = M⁻¹G(q₀)ᵀ given as `directions` = h W, q̂ the unconstrained position.
 /// Newton on r(Λ) = g(q₁(Λ), t₁)/h with the exact Jacobian G(q₁) W (from dual numbers at each
@@ -257,18 +241,7 @@ pub(crate) fn position_stage<M: Evaluate<N>, const N: usize>(
         };
         Ok((delta, norm))
     })?;
-    let n = stats.newton_iterations - before;
-    stats.jacobians += n;
-    stats.factorizations += n;
-    match end {
-        NewtonEnd::Converged { .. } => Ok((unconstrained + directions * lambda, lambda)),
-        NewtonEnd::Slow {
-            iterations,
-            residual,
-        } => Err(Error::NewtonDiverged {
-            t,
-            iterations,
-            residual,
-        }),
-    }
+    count_exact_jacobians(stats, before);
+    end.converged(t)?;
+    Ok((unconstrained + directions * lambda, lambda))
 }

@@ -29,8 +29,8 @@ use crate::model::{check_state, Coordinates, State};
 /// The contact mode of the mechanism a handle `M` evaluates.
 pub type ContactsOf<M, const N: usize> = <<M as Evaluate<N>>::Model as Dynamics<N>>::Contacts;
 
-/// A method a [`Stepper`] steps with: a one-step method with its step ([`Fixed`]), or an adaptive
-/// method's settings ([`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853),
+/// A method a [`Stepper`] steps with: a one-step method with its step ([`Fixed`](super::Fixed)), or
+/// an adaptive method's settings ([`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853),
 /// [`Radau5`](super::Radau5)). Each kind has one loop: the fixed-step one, generic over the
 /// one-step method, and the adaptive one, generic over the embedded pair.
 pub trait Method<const N: usize>: Copy {
@@ -234,6 +234,29 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
             instant_events: 0,
             tangent: NoTangent,
         })
+    }
+}
+
+impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
+    /// The same solver carrying `tangent` (trajectory sensitivities) from here on.
+    pub(crate) fn carrying<T>(self, tangent: T) -> Stepper<'m, M, Me, N, T> {
+        Stepper {
+            mechanism: self.mechanism,
+            method: self.method,
+            memory: self.memory,
+            scratch: self.scratch,
+            t: self.t,
+            q: self.q,
+            v: self.v,
+            a: self.a,
+            dense: self.dense,
+            stats: self.stats,
+            contacts: self.contacts,
+            options: self.options,
+            changes: self.changes,
+            instant_events: self.instant_events,
+            tangent,
+        }
     }
 }
 

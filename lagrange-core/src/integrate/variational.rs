@@ -54,11 +54,12 @@
 //! step (see [`rattle`](super::rattle)).
 
 use super::canonical::{self, momentum_rate};
-use super::newton::{jacobian_rows, max_norm, newton, seeded, NewtonEnd, MAX_NEWTON_ITERATIONS};
-use super::rattle::{breakdown, rows_and_jacobian, rows_in_force, rows_on};
+use super::newton::MAX_NEWTON_ITERATIONS;
+use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
+use super::rattle::{rows_and_jacobian, rows_in_force, rows_on};
 use super::validated_step;
 use super::{Integrator, Stats};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::evaluation::Evaluate;
 use crate::geometry::Scalar;
 use crate::linalg::{lu_solve, lu_solve_blocks};
@@ -114,6 +115,23 @@ fn residual<M: Evaluate<N>, S: Scalar, const N: usize>(
     let p = mechanism.momenta_at(t, &qm, vm);
     let g = momentum_rate(mechanism, t, &qm, vm);
     std::array::from_fn(|k| p[k] - g[k] * (0.5 * h) - p0[k])
+}
+
+/// The discrete flow's update from the converged midpoint velocity v_m: q₁ = q₀ + h v_m, and
+/// ṗ at the midpoint (t_m, q₀ + (h/2) v_m, v_m) (one evaluation), for p₁ = p₀ + h ṗ (plus RATTLE's
+/// Dg(q₀)ᵀΛ on a constrained step).
+fn midpoint_update<M: Evaluate<N>, const N: usize>(
+    mechanism: &M,
+    tm: f64,
+    q0: &[f64; N],
+    vm: &[f64; N],
+    h: f64,
+    stats: &mut Stats,
+) -> ([f64; N], [f64; N]) {
+    let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
+    let rate = momentum_rate(mechanism, tm, &qm, vm);
+    stats.evaluations += 1;
+    (std::array::from_fn(|j| q0[j] + h * vm[j]), rate)
 }
 
 /// What a variational step cost.
@@ -178,22 +196,16 @@ impl Variational {
             let r = residual(mechanism, tm, q0, p0, &seeded(&(*vm).into()), h);
             let value = SVector::<f64, N>::from_fn(|i, _| r[i].re);
             let residual_norm = max_norm(&value);
-            let breakdown = |reason: &str| Error::NewtonBreakdown {
-                method: Self::NAME,
-                t,
-                h,
-                iteration,
-                reason: reason.to_string(),
-            };
+            let broke = |reason: &str| breakdown(Self::NAME, t, h, iteration, reason);
             if !residual_norm.is_finite() {
-                return Err(breakdown(
+                return Err(broke(
                     "the discrete Euler-Lagrange residual is not finite (the midpoint left the \
                      region where the equations of motion are finite; reduce h)",
                 ));
             }
             let jac = jacobian_rows(&r);
             let Some(delta) = lu_solve(&jac, &value) else {
-                return Err(breakdown(if jac.iter().all(|x| x.is_finite()) {
+                return Err(broke(if jac.iter().all(|x| x.is_finite()) {
                     "the Newton matrix is singular"
                 } else {
                     "the Newton matrix is not finite (h is too large for this mechanism)"
@@ -202,28 +214,12 @@ impl Variational {
             Ok((delta, residual_norm))
         })?;
         // Every iteration evaluated the residual with its exact Jacobian and factorised it.
-        let n = stats.newton_iterations - before;
-        stats.jacobians += n;
-        stats.factorizations += n;
-        match end {
-            NewtonEnd::Converged { iterations, .. } => {
-                let vm: [f64; N] = vm.into();
-                let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
-                let g = momentum_rate(mechanism, tm, &qm, &vm);
-                stats.evaluations += 1;
-                let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
-                let p1 = std::array::from_fn(|j| p0[j] + h * g[j]);
-                Ok((q1, p1, vm, iterations))
-            }
-            NewtonEnd::Slow {
-                iterations,
-                residual,
-            } => Err(Error::NewtonDiverged {
-                t,
-                iterations,
-                residual,
-            }),
-        }
+        count_exact_jacobians(stats, before);
+        let iterations = end.converged(t)?;
+        let vm: [f64; N] = vm.into();
+        let (q1, g) = midpoint_update(mechanism, tm, q0, &vm, h, stats);
+        let p1 = std::array::from_fn(|j| p0[j] + h * g[j]);
+        Ok((q1, p1, vm, iterations))
     }
 
     /// The position stage of RATTLE on the discrete Euler–Lagrange equations (see the
@@ -289,29 +285,13 @@ impl Variational {
             };
             Ok((delta, norm))
         })?;
-        let n = stats.newton_iterations - before;
-        stats.jacobians += n;
-        stats.factorizations += n;
-        match end {
-            NewtonEnd::Converged { iterations, .. } => {
-                let vm: [f64; N] = x[0].into();
-                let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
-                let rate = momentum_rate(mechanism, tm, &qm, &vm);
-                stats.evaluations += 1;
-                let push = g0.transpose() * x[1];
-                let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
-                let p1 = std::array::from_fn(|j| p0[j] + push[j] + h * rate[j]);
-                Ok((q1, p1, vm, iterations))
-            }
-            NewtonEnd::Slow {
-                iterations,
-                residual,
-            } => Err(Error::NewtonDiverged {
-                t,
-                iterations,
-                residual,
-            }),
-        }
+        count_exact_jacobians(stats, before);
+        let iterations = end.converged(t)?;
+        let vm: [f64; N] = x[0].into();
+        let (q1, rate) = midpoint_update(mechanism, tm, q0, &vm, h, stats);
+        let push = g0.transpose() * x[1];
+        let p1 = std::array::from_fn(|j| p0[j] + push[j] + h * rate[j]);
+        Ok((q1, p1, vm, iterations))
     }
 
     /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method

@@ -155,30 +155,7 @@ impl StormerVerlet {
         };
         let eom1 = mechanism.equations_of_motion_at(t1, &q1, &vh);
         stats.evaluations += 1;
-        // A step that blew up (M overflowing at q₁) is non-finite dynamics there, not a mass matrix
-        // that "changed by NaN".
-        if !eom1.mass_matrix.iter().all(|x| x.is_finite()) {
-            return Err(Error::NonFiniteDynamics {
-                t: t1,
-                configuration: crate::error::describe_configuration(&M::Coords::NAMES, &q1),
-            });
-        }
-        let scale = eom0.mass_matrix.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let change = (eom1.mass_matrix - eom0.mass_matrix)
-            .iter()
-            .fold(0.0f64, |m, x| m.max(x.abs()));
-        // `!(a <= b)` also refuses NaN.
-        if !(change <= MASS_MATRIX_VARIATION * scale) {
-            return Err(Error::UnsuitableMethod {
-                method: Self::NAME,
-                reason: format!(
-                    "the mass matrix is not constant: it changed by {change:e} (relative {:e}) over the step from \
-                     t = {t} to t = {t1}; use a method for general mass matrices (implicit midpoint, Gauss-Legendre, \
-                     variational, RK4, Dopri5)",
-                    change / scale
-                ),
-            });
-        }
+        constant_mass::<M::Coords, N>((t, &eom0.mass_matrix), (t1, &eom1.mass_matrix), &q1)?;
         let a1 = solve_accelerations::<M::Coords, f64, N>(&eom1, t1, &q1)?;
         let mut v1 = std::array::from_fn(|i| vh[i] + 0.5 * h * a1[i]);
         if rows > 0 {
@@ -208,4 +185,37 @@ impl Integrator for StormerVerlet {
         // Two solves with the mass matrix, and RATTLE's Newton iterations (counted there).
         Self::step_counted(mechanism, t, q, v, h, stats)
     }
+}
+
+/// Refuses a step over which the mass matrix changed (M(q₁) against M(q₀), relative to M(q₀)'s
+/// largest entry) by more than [`MASS_MATRIX_VARIATION`] ([`Error::UnsuitableMethod`]), and a
+/// mass matrix that overflowed at q₁ ([`Error::NonFiniteDynamics`]).
+fn constant_mass<C: Coordinates<N>, const N: usize>(
+    (t, m0): (f64, &SMatrix<f64, N, N>),
+    (t1, m1): (f64, &SMatrix<f64, N, N>),
+    q1: &[f64; N],
+) -> Result<()> {
+    // A step that blew up (M overflowing at q₁) is non-finite dynamics there, not a mass matrix
+    // that "changed by NaN".
+    if !m1.iter().all(|x| x.is_finite()) {
+        return Err(Error::NonFiniteDynamics {
+            t: t1,
+            configuration: crate::error::describe_configuration(&C::NAMES, q1),
+        });
+    }
+    let scale = m0.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let change = (m1 - m0).iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    // `!(a <= b)` also refuses NaN.
+    if !(change <= MASS_MATRIX_VARIATION * scale) {
+        return Err(Error::UnsuitableMethod {
+            method: StormerVerlet::NAME,
+            reason: format!(
+                "the mass matrix is not constant: it changed by {change:e} (relative {:e}) over the step from \
+                 t = {t} to t = {t1}; use a method for general mass matrices (implicit midpoint, Gauss-Legendre, \
+                 variational, RK4, Dopri5)",
+                change / scale
+            ),
+        });
+    }
+    Ok(())
 }

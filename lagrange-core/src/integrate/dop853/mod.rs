@@ -41,10 +41,12 @@
     clippy::unreadable_literal
 )]
 
-use super::dopri5::Dopri5;
-use super::{Integrator, Stats};
+use super::dense::DenseOutput;
+use super::dopri5::settings::Dopri5;
+use super::pair::{explicit_embedded_pair, sealed, AccelerationField, ExplicitPair, StepStart};
+use super::Stats;
 use crate::error::Result;
-use crate::evaluation::Evaluate;
+use crate::model::Coordinates;
 
 mod attempt;
 mod dense;
@@ -55,6 +57,10 @@ pub use attempt::Stages;
 pub(crate) use dense::accept;
 
 /// Settings of the adaptive Dormand–Prince 8(5,3) method (see the [module docs](self)).
+///
+/// One step: `sys.step::<Dop853>(&mut state, h)` integrates over [t, t + h] with the
+/// [default](Dop853::default) tolerances, without the dense output (the step does not need it),
+/// landing exactly on t + h (as [`Dopri5`] does).
 ///
 /// ```
 /// use lagrange_core::integrate::{Dop853, Stepper};
@@ -170,26 +176,58 @@ impl Dop853 {
     }
 }
 
-/// `sys.step::<Dop853>(&mut state, h)`: integrates over [t, t + h] with the
-/// [default](Dop853::default) tolerances, landing exactly on t + h (as `Dopri5` does).
-impl Integrator for Dop853 {
-    const NAME: &'static str = "Dop853";
-    type Memory<const N: usize> = ();
-    const ADAPTIVE: bool = true;
+impl sealed::Sealed for Dop853 {}
 
-    fn advance<M: Evaluate<N>, const N: usize>(
-        mechanism: &M,
-        _memory: &mut (),
-        t: f64,
-        q: &[f64; N],
-        v: &[f64; N],
-        h: f64,
-        stats: &mut Stats,
-    ) -> Result<([f64; N], [f64; N])> {
-        let settings = Dop853 {
+impl ExplicitPair for Dop853 {
+    const NAME: &'static str = "Dop853";
+    const ORDER: i32 = 8;
+    const EXPONENTS: (f64, f64) = (1.0 / 8.0, 0.2);
+    type Stages<const N: usize> = Stages<N>;
+
+    fn controls(&self) -> Dopri5 {
+        self.shared()
+    }
+
+    fn one_step_settings() -> Self {
+        Dop853 {
             dense: false,
             ..Dop853::default()
-        };
-        super::adaptive::advance_over(mechanism, settings, (t, q, v), h, stats)
+        }
+    }
+
+    fn bounded_to(&self, interval: f64) -> Self {
+        Dop853::bounded_to(self, interval)
+    }
+
+    fn stages<const N: usize>() -> Self::Stages<N> {
+        Stages::new()
+    }
+
+    fn attempt<C: Coordinates<N>, const N: usize>(
+        &self,
+        start: StepStart<'_, N>,
+        h: f64,
+        stages: &mut Self::Stages<N>,
+        stats: &mut Stats,
+        field: &impl AccelerationField<N>,
+    ) -> Result<([f64; N], [f64; N], f64)> {
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        attempt::<C, N>(self, start, h, stages, stats, &acc)
+    }
+
+    fn accept<const N: usize>(
+        &self,
+        start: StepStart<'_, N>,
+        h: f64,
+        end: (&[f64; N], &[f64; N]),
+        stages: &mut Self::Stages<N>,
+        stats: &mut Stats,
+        field: &impl AccelerationField<N>,
+        dense: &mut DenseOutput<N>,
+    ) -> Result<[f64; N]> {
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        accept(self, start, h, end, stages, stats, &acc, dense)
     }
 }
+
+explicit_embedded_pair!(Dop853, Stages<N>);

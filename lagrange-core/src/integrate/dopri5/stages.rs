@@ -4,8 +4,8 @@
 // Stage loops index several arrays.
 #![allow(clippy::needless_range_loop)]
 
+use super::settings::Dopri5;
 use super::tableau::*;
-use super::Dopri5;
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
 use crate::integrate::control::ratio;

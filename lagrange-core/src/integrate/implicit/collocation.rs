@@ -10,7 +10,8 @@ use crate::integrate::canonical::{
     canonical_field, field_jacobians, velocities_and_mass_from_momenta, FieldJacobians,
 };
 use crate::integrate::newton::{
-    self, carries_constraint_forces, max_norm, newton, BlockLu, NewtonEnd, MAX_NEWTON_ITERATIONS,
+    self, breakdown, carries_constraint_forces, max_norm, newton, BlockLu, NewtonEnd,
+    MAX_NEWTON_ITERATIONS,
 };
 use crate::integrate::Stats;
 use nalgebra::{SMatrix, SVector};
@@ -24,16 +25,6 @@ type StepEnd<const N: usize> = (
     Option<SMatrix<f64, N, N>>,
     ImplicitStepStats,
 );
-
-fn breakdown(tableau_name: &'static str, t: f64, h: f64, iteration: usize, reason: &str) -> Error {
-    Error::NewtonBreakdown {
-        method: tableau_name,
-        t,
-        h,
-        iteration,
-        reason: reason.to_string(),
-    }
-}
 
 const NOT_FINITE: &str =
     "the collocation residual is not finite (the stages left the region where \
@@ -367,29 +358,18 @@ fn exact_collocation<M: Evaluate<N>, const N: usize, const S: usize>(
     counts.iterations += n;
     counts.jacobian_evaluations += S * iteration;
     counts.factorizations += n;
-    match end? {
-        NewtonEnd::Converged { .. } => {
-            // ṗⱼ carried to the final iterate by its own Jacobians (first order in the last
-            // increment, which is at the round-off floor: no extra evaluation).
-            for j in 0..S {
-                let mut dq = SVector::<f64, N>::zeros();
-                for k in 0..S {
-                    dq += last[k] * (h * tableau.a[j][k]);
-                }
-                rates[j] -= field[j].rate_q * dq + field[j].rate_v * last[j];
-            }
-            finish(
-                mechanism, tableau, t, q0, v0, p0, &stages, &rates, h, stats, counts,
-            )
-            .map(|(q1, v1, _, _, counts)| (q1, v1, counts))
+    end?.converged(t)?;
+    // ṗⱼ carried to the final iterate by its own Jacobians (first order in the last increment,
+    // which is at the round-off floor: no extra evaluation).
+    for j in 0..S {
+        let mut dq = SVector::<f64, N>::zeros();
+        for k in 0..S {
+            dq += last[k] * (h * tableau.a[j][k]);
         }
-        NewtonEnd::Slow {
-            iterations,
-            residual,
-        } => Err(Error::NewtonDiverged {
-            t,
-            iterations,
-            residual,
-        }),
+        rates[j] -= field[j].rate_q * dq + field[j].rate_v * last[j];
     }
+    finish(
+        mechanism, tableau, t, q0, v0, p0, &stages, &rates, h, stats, counts,
+    )
+    .map(|(q1, v1, _, _, counts)| (q1, v1, counts))
 }

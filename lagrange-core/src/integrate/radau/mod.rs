@@ -40,7 +40,7 @@
 //! - Dense output: the collocation polynomial (cubic; order 3 uniformly, the stage order), as
 //!   `radau5.f`'s CONTR5.
 //! - Events, the observer, the statistics and the contact mode are those of every solver
-//!   ([`Stepper`](super::Stepper)). [`Stats::factorizations`] counts one per refactorisation (the
+//!   ([`Stepper`](super::Stepper)). [`Stats::factorizations`](super::Stats::factorizations) counts one per refactorisation (the
 //!   real and the complex matrix together, as `radau5.f`'s NDEC).
 //! - Constraints: as [`Dopri5`](super::Dopri5), the start state must satisfy them and every
 //!   accepted step is projected onto them; the dense output interpolates the step before
@@ -92,55 +92,5 @@ mod memory;
 mod settings;
 mod step;
 
-use super::{Integrator, Stats};
-use crate::error::Result;
-use crate::evaluation::Evaluate;
 pub use memory::Radau5Memory;
 pub use settings::Radau5;
-
-/// `sys.step::<Radau5>(&mut state, h)`: integrates over [t, t + h] with the
-/// [default](Radau5::default) tolerances, as many adaptive steps as that takes, landing exactly on
-/// t + h (as [`Dopri5`](super::Dopri5) does).
-///
-/// ```
-/// use lagrange_core::{Mechanism, Radau5, State};
-/// # use lagrange_core::{vec2, Model, Scalar};
-/// # struct Pendulum;
-/// # impl Model<1, 2> for Pendulum {
-/// #     type Coords = [f64; 1];
-/// #     const RHEONOMIC: bool = false;
-/// #     const HAS_POTENTIAL: bool = true;
-/// #     const HAS_FORCES: bool = false;
-/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
-/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
-/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
-/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
-/// #     }
-/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
-/// # }
-/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
-/// Pendulum.step::<Radau5>(&mut s, 0.5)?;
-/// assert_eq!(s.t, 0.5);
-/// // rtol 1e-6: the energy (4.3 J) moves by about that much of its size.
-/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-4);
-/// # Ok::<(), lagrange_core::Error>(())
-/// ```
-impl Integrator for Radau5 {
-    const NAME: &'static str = "Radau5";
-    type Memory<const N: usize> = ();
-    const ADAPTIVE: bool = true;
-
-    fn advance<M: Evaluate<N>, const N: usize>(
-        mechanism: &M,
-        _memory: &mut (),
-        t: f64,
-        q: &[f64; N],
-        v: &[f64; N],
-        h: f64,
-        stats: &mut Stats,
-    ) -> Result<([f64; N], [f64; N])> {
-        super::adaptive::advance_over(mechanism, Radau5::default(), (t, q, v), h, stats)
-    }
-}
