@@ -1,7 +1,7 @@
 //! `robots`: lagrange's side of the robot peer benchmark (`scripts/peers/robots.sh`), on the five
 //! declarations of `lagrange-robots` (and, with the feature `example-robot-data`, the five robot
 //! files of that package), at the states of the file `robots.py states` (or
-//! `example_robot_data.py`) writes.
+//! `example_robots.py`) writes.
 //!
 //! ```text
 //! robots values --states FILE        q̈ (`accelerations`), τ (`inverse_dynamics` at the file's q̈)
@@ -134,7 +134,7 @@ fn read_states(path: &Path) -> BoxResult<Vec<(String, Rows)>> {
 }
 
 /// A URDF joint's name as `#[lagrange::urdf]` names its coordinate (for the states of
-/// `example_robot_data.py`, which carry the files' joint names): lower case, every character that
+/// `example_robots.py`, which carry the files' joint names): lower case, every character that
 /// cannot be in an identifier turned into `_` (the names of these files need no other rule).
 fn as_coordinate(joint: &str) -> String {
     joint

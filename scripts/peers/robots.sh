@@ -12,7 +12,7 @@
 #   scripts/peers/robots.sh build-time   # release build time of the declarations' crate
 #
 # ROBOTS=example-robot-data: the same on five robot files of the `example-robot-data` package
-# (UR5, Panda, Solo12, ANYmal C, Talos; example_robot_data.py says what it changes in them),
+# (UR5, Panda, Solo12, ANYmal C, Talos; example_robots.py says what it changes in them),
 # read by lagrange through `#[lagrange::urdf]` (lagrange-robots' feature of that name).
 #
 # Environment: ROUNDS, CALLS, ROBOTS (synthetic, example-robot-data), ERD_VERSION; the versions
@@ -85,9 +85,9 @@ fi
 if [ "$ROBOTS" = synthetic ]; then
   .venv/bin/python robots.py states "$out/states.tsv"
 else
-  .venv/bin/python -c "import example_robot_data" 2>/dev/null ||
-    .venv/bin/pip install --quiet "example-robot-data==${ERD_VERSION:-6.0.0}"
-  .venv/bin/python example_robot_data.py "$urdf_dir" "$out/states.tsv"
+  .venv/bin/python -m pip show --quiet example-robot-data 2>/dev/null ||
+    .venv/bin/python -m pip install --quiet "example-robot-data==${ERD_VERSION:-6.0.0}"
+  .venv/bin/python example_robots.py "$urdf_dir" "$out/states.tsv"
 fi
 .venv/bin/python -c "
 import sys, pinocchio

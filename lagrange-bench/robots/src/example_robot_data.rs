@@ -1,6 +1,6 @@
 //! Five robots of the `example-robot-data` package, read from their URDF files at compile time.
 //!
-//! The files are not part of the repository: `scripts/peers/example_robot_data.py` copies them
+//! The files are not part of the repository: `scripts/peers/example_robots.py` copies them
 //! from the package into `example-robot-data/` beside this crate's manifest, with the mimic
 //! joints (and the joints they follow) locked and joint damping and friction removed, the same
 //! files the peers read (see that script).

@@ -1,7 +1,7 @@
 """Five robot files of the `example-robot-data` package, made ready for the robot peer benchmark
 (`ROBOTS=example-robot-data scripts/peers/robots.sh`), and the random states every side reads.
 
-    scripts/peers/.venv/bin/python scripts/peers/example_robot_data.py URDF_DIR STATES
+    scripts/peers/.venv/bin/python scripts/peers/example_robots.py URDF_DIR STATES
 
 Needs the venv's `example-robot-data` (the files) and `pin` (the coordinate order). The robots,
 fixed-base as the files give them:
@@ -46,11 +46,14 @@ DROPPED = ("visual", "collision", "transmission", "gazebo")
 
 
 def package_dir() -> Path:
-    import example_robot_data  # noqa: F401  (the venv's wheel; its files live in cmeel.prefix)
+    """Where the venv's `example-robot-data` wheel put its robots (it ships data, no module)."""
     import cmeel
 
-    return Path(cmeel.__file__).resolve().parent.parent / "cmeel.prefix" / "share" / \
+    robots = Path(cmeel.__file__).resolve().parent.parent / "cmeel.prefix" / "share" / \
         "example-robot-data" / "robots"
+    if not robots.is_dir():
+        sys.exit(f"no {robots}: install example-robot-data into the venv")
+    return robots
 
 
 def prepare(source: Path, target: Path) -> None:
