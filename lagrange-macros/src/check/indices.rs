@@ -5,7 +5,7 @@ use crate::ctxt::Ctxt;
 use std::collections::HashMap;
 use syn::Ident;
 
-/// Indexing an array coordinate or a family: a literal index must be in range, and a family's own
+/// Indexing an array coordinate, an array of parameters or a family: a literal index must be in range, and a family's own
 /// index must not run past an array shorter than the family. Either would index out of bounds at
 /// run time; here it is reported at the index.
 pub(super) fn check_indices(cx: &Ctxt, model: &Model) {
@@ -26,6 +26,12 @@ pub(super) fn check_indices(cx: &Ctxt, model: &Model) {
             family_name: decl.ident(),
         };
         syn::visit::Visit::visit_block(&mut visitor, &decl.block);
+        // A family's mass, inertia and centre of mass may index by its index (`mass = m[i]`).
+        let args = &decl.args;
+        let attributes = args.mass.iter().chain(&args.com).cloned();
+        for expr in attributes.chain(args.inertia.as_ref().map(|i| i.expr())) {
+            syn::visit::Visit::visit_expr(&mut visitor, &expr);
+        }
     }
 }
 
@@ -39,6 +45,11 @@ fn indexable_lengths(model: &Model) -> HashMap<String, usize> {
             let n = *n;
             lengths.insert(c.ident.to_string(), n);
             lengths.insert(format!("{}_dot", c.ident), n);
+        }
+    }
+    for p in model.params {
+        if let Some((_, n)) = p.array.as_ref().filter(|(_, n)| *n > 0) {
+            lengths.insert(p.ident.to_string(), *n);
         }
     }
     for b in &model.bodies {
