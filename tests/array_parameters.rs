@@ -466,3 +466,50 @@ fn planar_bars_by_member_take_the_tree_pass_and_agree_with_the_dense_one() {
         other => panic!("expected InvalidInertia for bar[1], got {other:?}"),
     }
 }
+
+/// A family whose masses follow from its index by arithmetic, without an array.
+#[mechanism]
+pub mod tapered {
+    pub const LINKS: usize = 3;
+
+    pub struct Coords {
+        pub theta: [f64; LINKS],
+    }
+
+    pub struct Tapered {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+
+    #[particle(mass = m * (3.0 - 0.3 * i as f64), count = LINKS)]
+    fn bob(i: usize) -> Vec2 {
+        let link = vec2(theta[i].sin(), -theta[i].cos()) * l;
+        if i == 0 {
+            link
+        } else {
+            bob[i - 1] + link
+        }
+    }
+
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+}
+
+#[test]
+fn a_family_s_masses_may_be_arithmetic_in_its_index() {
+    use lagrange::model::Model;
+    let sys = tapered::Tapered {
+        m: 2.0,
+        l: 1.0,
+        g: 9.81,
+    };
+    let masses = Model::<3, 6>::masses(&sys);
+    let expected = [6.0, 6.0, 5.4, 5.4, 4.8, 4.8];
+    for (a, b) in masses.iter().zip(expected) {
+        // 2 (3 − 0.3 i) in floating point: one rounding of 0.3 i and one of the product.
+        assert!((a - b).abs() < 1e-14, "{masses:?}");
+    }
+}
