@@ -114,6 +114,14 @@ impl Body<'_> {
     }
 }
 
+/// Each of `bodies` with each of its attribute sets ([`Body::attribute_members`]): `(body, None)`,
+/// or `(body, Some(k))` for every member k of a family whose attributes are by member.
+pub fn attribute_sets<'b, 'a: 'b>(
+    bodies: impl Iterator<Item = &'b Body<'a>>,
+) -> impl Iterator<Item = (&'b Body<'a>, Option<usize>)> {
+    bodies.flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)))
+}
+
 /// A force, torque or generalized force and what it acts on.
 pub struct Force<'a> {
     pub decl: &'a Decl,

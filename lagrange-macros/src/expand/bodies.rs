@@ -6,7 +6,7 @@ use super::{
     bind_inputs_from, lit, optimized_blocks_from, position_type, prelude, private, Params,
 };
 use crate::attr::Inertia;
-use crate::check::{self, Body, Dim, Model, Shape};
+use crate::check::{self, attribute_sets, Body, Dim, Model, Shape};
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 
@@ -132,9 +132,8 @@ pub(crate) fn mass_frame_method(body: &Body, member: Option<usize>) -> Ident {
 fn mass_frame_fns(model: &Model) -> TokenStream {
     let p = private();
     let prelude = prelude();
-    let framed = model.bodies.iter().filter(|b| b.is_framed());
-    let members = framed.flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)));
-    let methods = members.map(|(body, member)| {
+    let framed = attribute_sets(model.bodies.iter().filter(|b| b.is_framed()));
+    let methods = framed.map(|(body, member)| {
         let args = &body.decl.args;
         let method = mass_frame_method(body, member);
         let index = super::model::bind_family_index(body, member);
@@ -338,9 +337,8 @@ fn flatten_one(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
 /// `let __frame_<body> = self.__lagrange_mass_frame_<body>();` for each framed body (each member
 /// of a family whose frames are by member).
 fn bind_mass_frames(model: &Model) -> TokenStream {
-    let framed = model.bodies.iter().filter(|b| b.is_framed());
-    let members = framed.flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)));
-    let frames = members.map(|(b, member)| {
+    let framed = attribute_sets(model.bodies.iter().filter(|b| b.is_framed()));
+    let frames = framed.map(|(b, member)| {
         let (frame, method) = (mass_frame_binding(b, member), mass_frame_method(b, member));
         quote!(let #frame = self.#method();)
     });

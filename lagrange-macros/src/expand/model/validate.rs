@@ -5,7 +5,7 @@
 use super::super::{lit, prelude, private};
 use super::{attribute_ident, bind_family_index, mass_bindings};
 use crate::attr::Inertia;
-use crate::check::{Body, Model, Shape};
+use crate::check::{attribute_sets, Body, Model, Shape};
 use proc_macro2::TokenStream;
 use quote::quote;
 use std::collections::BTreeSet;
@@ -18,8 +18,7 @@ pub(super) fn validate_fn(model: &Model) -> TokenStream {
     let finite = model.params.iter().map(finite_parameter);
     let bindings = mass_bindings(model);
     let coms = com_bindings(model);
-    let bodies = model.bodies.iter().filter(|b| b.shape.has_mass());
-    let bodies = bodies.flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)));
+    let bodies = attribute_sets(model.bodies.iter().filter(|b| b.shape.has_mass()));
     let bodies = bodies.map(|(body, member)| body_checks(body, member));
     let rotations = rotation_checks(model);
     // Centres of mass and rotations are written with the geometry's constructors.
@@ -92,11 +91,7 @@ fn parameters_pass_fn(model: &Model) -> Option<TokenStream> {
     });
     // Every mass and moment: one sum for their finiteness (with the parameters'), one comparison
     // each for their sign.
-    let derived: Vec<_> = model
-        .bodies
-        .iter()
-        .filter(|b| b.shape.has_mass())
-        .flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)))
+    let derived: Vec<_> = attribute_sets(model.bodies.iter().filter(|b| b.shape.has_mass()))
         .flat_map(|(body, member)| {
             let mass = attribute_ident("mass", body, member);
             let inertia = attribute_ident("inertia", body, member);
@@ -107,8 +102,7 @@ fn parameters_pass_fn(model: &Model) -> Option<TokenStream> {
         })
         .collect();
     // A planar body's centre of mass: finite, of either sign.
-    let coms = model.bodies.iter().filter(|b| b.has_com());
-    let coms = coms.flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)));
+    let coms = attribute_sets(model.bodies.iter().filter(|b| b.has_com()));
     let coms = coms.map(|(body, member)| {
         let com = attribute_ident("com", body, member);
         quote!(+ #com.x + #com.y)
@@ -134,9 +128,7 @@ fn parameters_pass_fn(model: &Model) -> Option<TokenStream> {
 /// parameters are bound as `f64`.
 fn com_bindings(model: &Model) -> TokenStream {
     let g = quote!(::lagrange::__private::geometry);
-    let bodies = model.bodies.iter();
-    let members = bodies.flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)));
-    let coms = members.filter_map(|(body, member)| {
+    let coms = attribute_sets(model.bodies.iter()).filter_map(|(body, member)| {
         let com = body.decl.args.com.as_ref()?;
         let ident = attribute_ident("com", body, member);
         let ty = match body.shape {
