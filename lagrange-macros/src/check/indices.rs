@@ -35,6 +35,34 @@ pub(super) fn check_indices(cx: &Ctxt, model: &Model) {
     }
 }
 
+/// An array of parameters is read by element: standing alone in arithmetic (`vec2(..) * l` with
+/// `l: [f64; 2]`) it is a mistake that rustc would report twice, in terms of the generated scalar;
+/// here it is one message at the name. (Passed whole to a helper or a method, it is rustc's.)
+pub(super) fn check_arrays_read_by_element(cx: &Ctxt, model: &Model) {
+    let arrays: Vec<String> = model
+        .params
+        .iter()
+        .filter(|p| p.array.is_some())
+        .map(|p| p.ident.to_string())
+        .collect();
+    if arrays.is_empty() {
+        return;
+    }
+    for decl in &model.mechanism.decls {
+        let args = &decl.args;
+        let attributes = args.mass.iter().chain(&args.com).cloned();
+        let attributes = attributes.chain(args.inertia.as_ref().map(|i| i.expr()));
+        let mut operands = crate::names::free_operands(&decl.block);
+        operands.extend(attributes.flat_map(|e| crate::names::free_operands_of_expr(&e)));
+        for name in operands.iter().filter(|n| arrays.contains(&n.to_string())) {
+            cx.error_spanned_by(
+                name,
+                format!("`{name}` is an array of parameters: name one element, `{name}[0]` (or `{name}[i]` in a family)"),
+            );
+        }
+    }
+}
+
 /// The length of everything a function may index, by name: array coordinates and families of
 /// bodies, and their velocities.
 fn indexable_lengths(model: &Model) -> HashMap<String, usize> {

@@ -36,6 +36,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     potentials::check_gravity_covers_every_body(cx, &model);
     masses::check_masses(cx, &model);
     indices::check_indices(cx, &model);
+    indices::check_arrays_read_by_element(cx, &model);
     constraints::check_constraint_count(cx, &model);
     masses::check_coordinates_are_used(cx, &model);
     helpers::check_helper_calls(cx, &model);
