@@ -154,6 +154,7 @@ pub use lagrange_core::integrate::{
 pub use lagrange_core::sensitivity::{Seed, Sensitivities};
 
 pub use lagrange_core::ensemble;
+pub use lagrange_core::inputs::{self, Driven, Inputs};
 pub use lagrange_core::{
     analysis, animation, constraints, declaration, dynamics, error, evaluation, geometry, inertia,
     integrate, linalg, mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,

@@ -37,9 +37,49 @@ pub trait Prepare {
     fn prepare(&self) -> Result<Self::Prepared>;
 }
 
-/// The constants a [`Dynamics`] method is handed: `Some` through a
-/// [`Validated`](crate::Validated) handle, `None` on the plain mechanism.
-pub type Constants<'a, M> = Option<&'a <M as Prepare>::Prepared>;
+/// What a [`Dynamics`] method is handed besides the state: the prepared constants (`Some`
+/// through a [`Validated`](crate::Validated) handle, `None` on the plain mechanism) and the
+/// inputs held over the evaluation (a declaration's `#[inputs]`, in declaration order; empty
+/// where none are set, which the generated force functions read as zeros, see
+/// [`crate::inputs`]).
+pub struct Constants<'a, M: Prepare + ?Sized> {
+    /// The constants [`Prepare::prepare`] computed, if any.
+    pub prepared: Option<&'a M::Prepared>,
+    /// The inputs, flat (empty when none are set).
+    pub inputs: &'a [f64],
+}
+
+impl<M: Prepare + ?Sized> Clone for Constants<'_, M> {
+    #[inline(always)]
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<M: Prepare + ?Sized> Copy for Constants<'_, M> {}
+
+impl<'a, M: Prepare + ?Sized> Constants<'a, M> {
+    /// Nothing prepared, no inputs: what the plain mechanism evaluates with.
+    pub const NONE: Self = Constants {
+        prepared: None,
+        inputs: &[],
+    };
+
+    /// The prepared constants, no inputs: what a validated handle evaluates with.
+    #[inline(always)]
+    pub fn prepared(prepared: &'a M::Prepared) -> Self {
+        Constants {
+            prepared: Some(prepared),
+            inputs: &[],
+        }
+    }
+
+    /// The same constants with `inputs` held.
+    #[inline(always)]
+    pub fn with_inputs(self, inputs: &'a [f64]) -> Self {
+        Constants { inputs, ..self }
+    }
+}
 
 /// The equations of a mechanism with `N` degrees of freedom, evaluated at a state: what
 /// `#[mechanism]` generates for a declaration (and [`impl_mechanism!`](crate::impl_mechanism) for a
@@ -232,11 +272,12 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
         q: &[S; N],
         v: &[S; N],
     ) -> ([S; N], [S; N]) {
-        let _ = prepared;
-        (
-            Dynamics::momenta_at(self, None, t, q, v),
-            momentum_rate(self, t, q, v),
-        )
+        // Without the prepared constants, with the inputs.
+        let plain = WithConstants {
+            model: self,
+            constants: Constants::NONE.with_inputs(prepared.inputs),
+        };
+        (plain.momenta_at(t, q, v), momentum_rate(&plain, t, q, v))
     }
 
     /// Mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any scalar, in
@@ -435,6 +476,26 @@ pub trait Evaluate<const N: usize>: Sized {
     }
 }
 
+/// A model evaluated with the constants a [`Dynamics`] method was handed: what a default method
+/// evaluates the model's other quantities through.
+struct WithConstants<'a, M: Prepare> {
+    model: &'a M,
+    constants: Constants<'a, M>,
+}
+
+impl<M: Dynamics<N>, const N: usize> Evaluate<N> for WithConstants<'_, M> {
+    type Model = M;
+    type Coords = M::Coords;
+    #[inline(always)]
+    fn model(&self) -> &M {
+        self.model
+    }
+    #[inline(always)]
+    fn prepared(&self) -> Constants<'_, M> {
+        self.constants
+    }
+}
+
 /// Every mechanism evaluates itself, without prepared constants.
 impl<M: Dynamics<N>, const N: usize> Evaluate<N> for M {
     type Model = M;
@@ -445,7 +506,7 @@ impl<M: Dynamics<N>, const N: usize> Evaluate<N> for M {
     }
     #[inline(always)]
     fn prepared(&self) -> Constants<'_, M> {
-        None
+        Constants::NONE
     }
 }
 

@@ -36,6 +36,7 @@ pub mod error;
 pub mod evaluation;
 pub mod geometry;
 pub mod inertia;
+pub mod inputs;
 pub mod integrate;
 pub mod linalg;
 pub mod mechanism;

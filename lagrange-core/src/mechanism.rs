@@ -4,6 +4,7 @@
 use crate::error::{describe_configuration, Error, Result};
 use crate::evaluation::non_finite_at;
 pub use crate::evaluation::{diagnose, Dynamics, Evaluate, Prepare};
+use crate::inputs::{Actuated, Driven, Inputs as _};
 use crate::integrate::{Event, Integrator, Method, Observation, Outcome, Stepper};
 use crate::model::{Coordinates, State};
 use nalgebra::SMatrix;
@@ -30,6 +31,19 @@ pub trait Mechanism<const N: usize>: Evaluate<N> {
         Self: Dynamics<N>,
     {
         crate::validated::validate(self)
+    }
+
+    /// The mechanism with the inputs `inputs` held (a declaration with `#[inputs]`): every
+    /// evaluation, step and analysis of the result sees them, constant over each step (see
+    /// [`Driven`](crate::inputs::Driven)). Without it the inputs are zero.
+    fn driven<const NU: usize>(
+        &self,
+        inputs: &<Self::Model as Actuated<NU>>::Inputs,
+    ) -> Driven<'_, Self, NU>
+    where
+        Self::Model: Actuated<NU>,
+    {
+        Driven::new(self, inputs.to_array())
     }
 
     /// The generalized accelerations q̈, by name.
@@ -433,7 +447,7 @@ macro_rules! impl_mechanism {
             }
             fn accelerations_at<S: $crate::Scalar>(
                 &self,
-                _prepared: Option<&Self::Prepared>,
+                _constants: $crate::evaluation::Constants<'_, Self>,
                 t: S,
                 q: &[S; $n],
                 v: &[S; $n],
@@ -442,7 +456,7 @@ macro_rules! impl_mechanism {
             }
             fn project(
                 &self,
-                _prepared: Option<&Self::Prepared>,
+                _constants: $crate::evaluation::Constants<'_, Self>,
                 t: f64,
                 q: &mut [f64; $n],
                 v: &mut [f64; $n],
@@ -472,12 +486,12 @@ macro_rules! impl_mechanism {
                 Some($crate::constraints::ConstraintCounts::NONE);
             fn accelerations_at<S: $crate::Scalar>(
                 &self,
-                prepared: Option<&Self::Prepared>,
+                constants: $crate::evaluation::Constants<'_, Self>,
                 t: S,
                 q: &[S; $n],
                 v: &[S; $n],
             ) -> $crate::Result<[S; $n]> {
-                match prepared {
+                match constants.prepared {
                     Some(prepared) => {
                         $crate::affine::accelerations::<$ty, S, $n, $k>(self, prepared, t, q, v)
                     }
@@ -532,7 +546,7 @@ macro_rules! impl_mechanism {
             }
             fn equations_of_motion_at<S: $crate::Scalar>(
                 &self,
-                _prepared: Option<&Self::Prepared>,
+                _constants: $crate::evaluation::Constants<'_, Self>,
                 t: S,
                 q: &[S; $n],
                 v: &[S; $n],
@@ -541,7 +555,7 @@ macro_rules! impl_mechanism {
             }
             fn kinetic_energy_at<S: $crate::Scalar>(
                 &self,
-                _prepared: Option<&Self::Prepared>,
+                _constants: $crate::evaluation::Constants<'_, Self>,
                 t: S,
                 q: &[S; $n],
                 v: &[S; $n],
@@ -550,7 +564,7 @@ macro_rules! impl_mechanism {
             }
             fn potential_energy_at<S: $crate::Scalar>(
                 &self,
-                _prepared: Option<&Self::Prepared>,
+                _constants: $crate::evaluation::Constants<'_, Self>,
                 t: S,
                 q: &[S; $n],
             ) -> S {
@@ -558,7 +572,7 @@ macro_rules! impl_mechanism {
             }
             fn momenta_at<S: $crate::Scalar>(
                 &self,
-                _prepared: Option<&Self::Prepared>,
+                _constants: $crate::evaluation::Constants<'_, Self>,
                 t: S,
                 q: &[S; $n],
                 v: &[S; $n],
@@ -567,7 +581,7 @@ macro_rules! impl_mechanism {
             }
             fn lagrangian_time_derivative_at(
                 &self,
-                _prepared: Option<&Self::Prepared>,
+                _constants: $crate::evaluation::Constants<'_, Self>,
                 t: f64,
                 q: &[f64; $n],
                 v: &[f64; $n],

@@ -104,7 +104,7 @@ impl<M: Dynamics<N>, const N: usize> Evaluate<N> for Validated<M> {
     }
     #[inline(always)]
     fn prepared(&self) -> Constants<'_, M> {
-        Some(&self.1)
+        Constants::prepared(&self.1)
     }
     /// Checked when the handle was made.
     #[inline(always)]

@@ -444,22 +444,22 @@ macro_rules! forward_pendulum {
             fn check_parameters(&self) -> lagrange_core::Result<()> {
                 Ok(())
             }
-            fn equations_of_motion_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
+            fn equations_of_motion_at<S: Scalar>(&self, _: lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
                 dynamics::equations_of_motion(&CartesianPendulum, t, q, v)
             }
-            fn kinetic_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> S {
+            fn kinetic_energy_at<S: Scalar>(&self, _: lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; 2], v: &[S; 2]) -> S {
                 dynamics::kinetic_energy(&CartesianPendulum, t, q, v)
             }
-            fn potential_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2]) -> S {
+            fn potential_energy_at<S: Scalar>(&self, _: lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; 2]) -> S {
                 dynamics::potential_energy(&CartesianPendulum, t, q)
             }
-            fn momenta_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
+            fn momenta_at<S: Scalar>(&self, _: lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
                 dynamics::momenta(&CartesianPendulum, t, q, v)
             }
-            fn lagrangian_time_derivative_at(&self, _: Option<&()>, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
+            fn lagrangian_time_derivative_at(&self, _: lagrange_core::evaluation::Constants<'_, Self>, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
                 dynamics::lagrangian_time_derivative(&CartesianPendulum, t, q, v)
             }
-            fn project(&self, _: Option<&()>, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
+            fn project(&self, _: lagrange_core::evaluation::Constants<'_, Self>, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
                 Evaluate::project(&CartesianPendulum, t, q, v)
             }
             fn check_constraints(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> lagrange_core::Result<()> {
@@ -472,7 +472,7 @@ macro_rules! forward_pendulum {
 forward_pendulum!(Undeclared, {
     fn accelerations_at<S: Scalar>(
         &self,
-        _: Option<&()>,
+        _: lagrange_core::evaluation::Constants<'_, Self>,
         t: S,
         q: &[S; 2],
         v: &[S; 2],

@@ -133,6 +133,9 @@ pub struct Mechanism {
     pub coords: Option<(ItemStruct, Vec<Field>)>,
     /// The parameter struct, as written, and its fields.
     pub params: Option<(ItemStruct, Vec<Field>)>,
+    /// The `#[inputs]` struct, as written less that attribute, and its fields: what a program
+    /// driving the mechanism sets between steps, read by the forces.
+    pub inputs: Option<(ItemStruct, Vec<Field>)>,
     pub decls: Vec<Decl>,
     /// Everything else (`use`, helper functions, constants), re-emitted untouched.
     pub other_items: Vec<Item>,
@@ -159,6 +162,7 @@ impl Mechanism {
             ident: module.ident,
             coords: None,
             params: None,
+            inputs: None,
             decls: Vec::new(),
             other_items: Vec::new(),
             item_names: Vec::new(),
@@ -221,6 +225,10 @@ impl Mechanism {
         if let Some((params_struct, mut fields)) = self.params.take() {
             self.resolve_lengths(cx, &mut fields, "parameters");
             self.params = Some((params_struct, fields));
+        }
+        if let Some((inputs_struct, mut fields)) = self.inputs.take() {
+            self.resolve_lengths(cx, &mut fields, "inputs");
+            self.inputs = Some((inputs_struct, fields));
         }
     }
 
@@ -310,7 +318,15 @@ impl Mechanism {
             self.other_items.push(Item::Struct(s));
             return;
         }
-        let fields = struct_fields(cx, &s, s.ident == "Coords");
+        if let Some(at) = s.attrs.iter().position(|a| a.path().is_ident("inputs")) {
+            let marker = s.attrs.remove(at);
+            return self.add_inputs(cx, s, marker);
+        }
+        let what = match s.ident == "Coords" {
+            true => Fields::Coordinates,
+            false => Fields::Parameters,
+        };
+        let fields = struct_fields(cx, &s, what);
         reject_cfg(cx, &s.attrs, &format!("`{}`", s.ident));
         if s.ident == "Coords" {
             // Two `struct Coords`: rustc would say so too, but only once here.
@@ -332,6 +348,32 @@ impl Mechanism {
         } else {
             self.params = Some((s, fields));
         }
+    }
+
+    /// `#[inputs] pub struct Torques { pub tau: f64 }`: the one struct of inputs, its fields
+    /// `f64` or arrays like the parameters'.
+    fn add_inputs(&mut self, cx: &Ctxt, s: ItemStruct, marker: Attribute) {
+        // `#[inputs(tau)]`: the attribute marks the struct, its fields are the inputs.
+        if !matches!(marker.meta, syn::Meta::Path(_)) {
+            cx.error_spanned_by(
+                &marker,
+                "`#[inputs]` takes no arguments: the struct's fields are the inputs",
+            );
+        }
+        reject_cfg(cx, &s.attrs, &format!("`{}`", s.ident));
+        if s.ident == "Coords" {
+            cx.error_spanned_by(&marker, "`Coords` are the coordinates; inputs are a struct of their own (`#[inputs] pub struct Torques { .. }`)");
+            return;
+        }
+        if let Some((first, _)) = &self.inputs {
+            cx.error_spanned_by(
+                &s.ident,
+                format!("a mechanism has one `#[inputs]` struct, `{}`", first.ident),
+            );
+            return;
+        }
+        let fields = struct_fields(cx, &s, Fields::Inputs);
+        self.inputs = Some((s, fields));
     }
 
     fn record_names(&mut self, item: &Item) {
@@ -392,8 +434,16 @@ impl Mechanism {
     }
 }
 
-/// The named fields of the coordinates or parameters struct, each checked to be `f64`.
-fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
+/// Which struct's fields are read.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Fields {
+    Coordinates,
+    Parameters,
+    Inputs,
+}
+
+/// The named fields of the coordinates, parameters or inputs struct, each checked to be `f64`.
+fn struct_fields(cx: &Ctxt, s: &ItemStruct, what: Fields) -> Vec<Field> {
     match &s.fields {
         syn::Fields::Named(named) => named
             .named
@@ -402,10 +452,10 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
                 reject_cfg(
                     cx,
                     &f.attrs,
-                    if coords {
-                        "a coordinate"
-                    } else {
-                        "a parameter"
+                    match what {
+                        Fields::Coordinates => "a coordinate",
+                        Fields::Parameters => "a parameter",
+                        Fields::Inputs => "an input",
                     },
                 );
                 let array = match ungroup_type(&f.ty) {
@@ -414,10 +464,10 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
                     Type::Array(a) if is_f64(&a.elem) => Some((a.len.clone(), 0)),
                     // `pub l: f32`: everything is f64 (and lifted to dual numbers).
                     ty if !is_f64(ty) => {
-                        let message = if coords {
-                            "coordinates are `f64` or arrays `[f64; LEN]`"
-                        } else {
-                            "parameters are `f64` or arrays `[f64; LEN]`"
+                        let message = match what {
+                            Fields::Coordinates => "coordinates are `f64` or arrays `[f64; LEN]`",
+                            Fields::Parameters => "parameters are `f64` or arrays `[f64; LEN]`",
+                            Fields::Inputs => "inputs are `f64` or arrays `[f64; LEN]`",
                         };
                         cx.error_spanned_by(ty, message);
                         None

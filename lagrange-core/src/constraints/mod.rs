@@ -135,7 +135,7 @@
 //! ```
 //! use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 //! use lagrange_core::dynamics::{self, EquationsOfMotion};
-//! use lagrange_core::evaluation::{Dynamics, Prepare};
+//! use lagrange_core::evaluation::{Constants, Dynamics, Prepare};
 //! use lagrange_core::{vec2, Mechanism, Model, Rk4, Scalar, State};
 //!
 //! struct Pendulum { m: f64, l: f64, g: f64 }
@@ -170,26 +170,26 @@
 //!     // Its contact modes: none switch (a holonomic row is always enforced).
 //!     type Contacts = constraints::ContactState<2, 1>;
 //!     fn check_parameters(&self) -> lagrange_core::Result<()> { Model::validate(self) }
-//!     fn equations_of_motion_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
+//!     fn equations_of_motion_at<S: Scalar>(&self, _: Constants<'_, Self>, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
 //!         dynamics::equations_of_motion(self, t, q, v)
 //!     }
-//!     fn kinetic_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> S {
+//!     fn kinetic_energy_at<S: Scalar>(&self, _: Constants<'_, Self>, t: S, q: &[S; 2], v: &[S; 2]) -> S {
 //!         dynamics::kinetic_energy(self, t, q, v)
 //!     }
-//!     fn potential_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2]) -> S {
+//!     fn potential_energy_at<S: Scalar>(&self, _: Constants<'_, Self>, t: S, q: &[S; 2]) -> S {
 //!         dynamics::potential_energy(self, t, q)
 //!     }
-//!     fn momenta_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
+//!     fn momenta_at<S: Scalar>(&self, _: Constants<'_, Self>, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
 //!         dynamics::momenta(self, t, q, v)
 //!     }
-//!     fn lagrangian_time_derivative_at(&self, _: Option<&()>, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
+//!     fn lagrangian_time_derivative_at(&self, _: Constants<'_, Self>, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
 //!         dynamics::lagrangian_time_derivative(self, t, q, v)
 //!     }
 //!     // The three overrides of a constrained mechanism:
-//!     fn accelerations_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
+//!     fn accelerations_at<S: Scalar>(&self, _: Constants<'_, Self>, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
 //!         constraints::accelerations(self, t, q, v)
 //!     }
-//!     fn project(&self, _: Option<&()>, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
+//!     fn project(&self, _: Constants<'_, Self>, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
 //!         let mode = constraints::infer_mode(self, t, q, v)?;
 //!         constraints::project(self, t, q, v, &mode)
 //!     }

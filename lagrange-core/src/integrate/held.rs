@@ -34,7 +34,7 @@ impl<M: Dynamics<N>, X: ContactModel<M, N>, const N: usize> Evaluate<N> for Held
     /// A held mode lives for one step: nothing is prepared.
     #[inline(always)]
     fn prepared(&self) -> Constants<'_, M> {
-        None
+        Constants::NONE
     }
     #[inline]
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {

@@ -38,6 +38,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     indices::check_indices(cx, &model);
     indices::check_arrays_read_by_element(cx, &model);
     constraints::check_constraint_count(cx, &model);
+    constraints::check_inputs_without_contacts(cx, &model);
     masses::check_coordinates_are_used(cx, &model);
     helpers::check_helper_calls(cx, &model);
     Some(model)
@@ -91,11 +92,11 @@ fn check_kind<'a>(cx: &Ctxt, model: &mut Model<'a>, decl: &'a Decl) -> (Context,
         }
         Kind::VelocityConstraint => {
             constraints::check_velocity_constraint(cx, decl);
-            Context::Force
+            Context::VelocityRow
         }
         Kind::Friction => {
             constraints::check_friction(cx, model, decl);
-            Context::Force
+            Context::VelocityRow
         }
     };
     (context, None)

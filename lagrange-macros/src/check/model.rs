@@ -158,6 +158,9 @@ pub struct Model<'a> {
     pub params_ident: &'a Ident,
     pub coords: &'a [Field],
     pub params: &'a [Field],
+    /// The `#[inputs]` struct's name and fields (empty without one): read by the forces.
+    pub inputs_ident: Option<&'a Ident>,
+    pub inputs: &'a [Field],
     /// Bodies and points in declaration order.
     pub bodies: Vec<Body<'a>>,
     pub potentials: Vec<&'a Decl>,
@@ -187,6 +190,13 @@ impl<'a> Model<'a> {
         scalars.map(|p| p.ident.to_string()).collect()
     }
 
+    /// The number of inputs, flat (an array counts its elements), when the declaration has
+    /// `#[inputs]`.
+    pub fn input_count(&self) -> Option<usize> {
+        self.inputs_ident
+            .map(|_| crate::ast::slot_count(self.inputs))
+    }
+
     /// The model before its functions are checked: bodies laid out in x and the constraint rows;
     /// potentials, gravities, forces, friction contacts and free names are added function by
     /// function.
@@ -198,11 +208,14 @@ impl<'a> Model<'a> {
         params: &'a [Field],
     ) -> Self {
         let bodies = lay_out_bodies(cx, mechanism);
+        let inputs = mechanism.inputs.as_ref();
         Model {
             mechanism,
             params_ident,
             coords,
             params,
+            inputs_ident: inputs.map(|(s, _)| &s.ident),
+            inputs: inputs.map_or(&[], |(_, fields)| fields.as_slice()),
             potentials: Vec::new(),
             gravities: Vec::new(),
             uniform_gravities: Vec::new(),

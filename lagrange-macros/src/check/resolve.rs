@@ -68,6 +68,8 @@ pub(super) enum Context {
     Constraint,
     /// A force, torque or generalized force.
     Force,
+    /// A velocity constraint or a friction row: velocities in scope, inputs not.
+    VelocityRow,
     /// A mass, inertia or friction coefficient: a constant.
     Mass,
     /// A rigid body's centre of mass in its frame (`com = ..`): a constant.
@@ -83,6 +85,7 @@ enum Name {
     Body(usize),
     CoordVelocity,
     BodyVelocity,
+    Input,
     Item,
 }
 
@@ -102,6 +105,8 @@ impl Resolver<'_, '_> {
             Some(Name::Coord)
         } else if model.params.iter().any(|p| p.ident == name) {
             Some(Name::Param)
+        } else if model.inputs.iter().any(|u| u.ident == name) {
+            Some(Name::Input)
         } else if name == "t" {
             Some(Name::Time)
         } else if let Some(b) = model.bodies.iter().position(|b| b.decl.ident() == &name) {
@@ -150,7 +155,8 @@ impl Resolver<'_, '_> {
         let in_scope = match self.context {
             Context::Position(_) => "a coordinate, parameter, `t`, body or point declared earlier, or item of this module",
             Context::Potential | Context::Constraint => "a coordinate, parameter, `t`, body, point, or item of this module",
-            Context::Force => "a coordinate, parameter, `t`, body, point, their `_dot` velocities, or item of this module",
+            Context::Force => "a coordinate, parameter, input, `t`, body, point, their `_dot` velocities, or item of this module",
+            Context::VelocityRow => "a coordinate, parameter, `t`, body, point, their `_dot` velocities, or item of this module",
             Context::Mass | Context::CentreOfMass => "a parameter or an item of this module",
         };
         Some(format!("unknown name `{ident}`: it is not {in_scope}"))
@@ -174,6 +180,12 @@ impl Resolver<'_, '_> {
                 "a centre of mass `com` is a constant point of the body's frame: it cannot depend on `{ident}` (write the motion in the body's function)"
             )),
             (_, Name::CoordVelocity | Name::BodyVelocity) => self.velocity_out_of_place(ident),
+            // `#[particle(mass = m + tau)]`, `fn bob() -> Vec2 { vec2(tau, 0.0) }`: what a
+            // program sets between steps acts on the mechanism as a force.
+            (Context::Force, Name::Input) => None,
+            (_, Name::Input) => Some(format!(
+                "`{ident}` is an input: inputs act through forces, read in `#[force]`, `#[torque]` and `#[generalized_force]` functions only"
+            )),
             (Context::Position(me), Name::Body(b)) => self.body_out_of_order(ident, me, b),
             _ => None,
         }
@@ -190,7 +202,7 @@ impl Resolver<'_, '_> {
             Context::Constraint => Some(format!("a position constraint cannot depend on velocities: `{ident}` is in scope in `#[velocity_constraint]`s, `#[friction]` and forces")),
             // `#[potential] fn v() -> f64 { theta_dot * theta_dot }`.
             Context::Potential => Some(format!("potentials cannot depend on velocities: `{ident}` is in scope in forces only (write a `#[force]` or `#[generalized_force]`)")),
-            Context::Force | Context::Mass | Context::CentreOfMass => None,
+            Context::Force | Context::VelocityRow | Context::Mass | Context::CentreOfMass => None,
         }
     }
 

@@ -98,6 +98,12 @@ pub(super) fn check_duplicates(
         .iter()
         .map(|f| (&f.ident, "a coordinate"))
         .chain(params.iter().map(|f| (&f.ident, "a parameter")))
+        .chain(
+            mechanism
+                .inputs
+                .iter()
+                .flat_map(|(_, inputs)| inputs.iter().map(|f| (&f.ident, "an input"))),
+        )
         .chain(mechanism.decls.iter().map(|d| (d.ident(), "a function")));
     for (ident, what) in names {
         // `pub struct Coords { pub t: f64 }`: `t` is time.

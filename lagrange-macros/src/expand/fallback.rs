@@ -107,11 +107,11 @@ fn trait_stubs(ident: &syn::Ident, n: &proc_macro2::Literal) -> TokenStream {
             type Coords = Coords;
             type Contacts = #p::lagrange_core::constraints::NoContacts;
             fn check_parameters(&self) -> #p::Result<()> { #unreachable }
-            fn equations_of_motion_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> { #unreachable }
-            fn kinetic_energy_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n], v: &[S; #n]) -> S { #unreachable }
-            fn potential_energy_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n]) -> S { #unreachable }
-            fn momenta_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] { #unreachable }
-            fn lagrangian_time_derivative_at(&self, prepared: #p::core::option::Option<&()>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 { #unreachable }
+            fn equations_of_motion_at<S: #p::Scalar>(&self, _constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> { #unreachable }
+            fn kinetic_energy_at<S: #p::Scalar>(&self, _constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> S { #unreachable }
+            fn potential_energy_at<S: #p::Scalar>(&self, _constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n]) -> S { #unreachable }
+            fn momenta_at<S: #p::Scalar>(&self, _constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] { #unreachable }
+            fn lagrangian_time_derivative_at(&self, _constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 { #unreachable }
         }
         impl #p::lagrange_core::declaration::Declaration for #ident {
             const DOF: usize = #n;

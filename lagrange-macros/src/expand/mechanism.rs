@@ -46,6 +46,8 @@ pub(super) struct Glue<'a> {
     pub(super) equations: Equations,
     pub(super) rheonomic: bool,
     pub(super) positions: Positions,
+    /// The number of inputs, flat, when the declaration has `#[inputs]`.
+    pub(super) inputs: Option<usize>,
 }
 
 /// What a validated handle prepares.
@@ -80,6 +82,22 @@ impl Glue<'_> {
 
     fn sizes(&self) -> (Literal, Literal) {
         (lit(self.n), lit(self.k))
+    }
+
+    /// The model the forces are evaluated on, as a type and a value: the declaration itself, or
+    /// with inputs the declaration with the inputs its method's constants hold
+    /// (`lagrange_core::inputs::WithInputs`).
+    fn forces(&self) -> (TokenStream, TokenStream) {
+        let p = private();
+        match self.inputs {
+            None => (quote!(Self), quote!(self)),
+            Some(nu) => {
+                let nu = lit(nu);
+                let ty = quote!(#p::lagrange_core::inputs::WithInputs<'_, Self, f64, #nu>);
+                let value = quote!(&#p::lagrange_core::inputs::WithInputs::<Self, f64, #nu>::held(self, __constants.inputs));
+                (ty, value)
+            }
+        }
     }
 }
 
@@ -124,11 +142,13 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
             #inverse_dynamics
             #kinetic
             #[inline]
-            fn potential_energy_at<S: #p::Scalar>(&self, _prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n]) -> S {
+            fn potential_energy_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n]) -> S {
+            let _prepared = __constants.prepared;
                 #p::dynamics::potential_energy::<Self, S, #n, #k>(self, t, q)
             }
             #[inline]
-            fn lagrangian_time_derivative_at(&self, _prepared: #p::core::option::Option<&Self::Prepared>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
+            fn lagrangian_time_derivative_at(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
+            let _prepared = __constants.prepared;
                 #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
             }
             #canonical
@@ -165,6 +185,7 @@ fn declared_rows(glue: &Glue) -> (TokenStream, TokenStream) {
 fn equations_of_motion(glue: &Glue) -> TokenStream {
     let p = private();
     let (n, k) = glue.sizes();
+    let (forces_ty, forces) = glue.forces();
     let body = match glue.equations {
         Equations::ClosedForm(_) => quote!(self.__lagrange_closed_form::<S>(q, v)),
         Equations::Tree(w, b) => {
@@ -174,17 +195,18 @@ fn equations_of_motion(glue: &Glue) -> TokenStream {
         Equations::Rigid(b) => {
             let b = lit(b);
             with_rigid_constants(
-                quote!(#p::tree::rigid::equations_of_motion::<Self, S, #n, #k, #b>(self, __k, t, q, v)),
+                quote!(#p::tree::rigid::equations_of_motion::<#forces_ty, S, #n, #k, #b>(#forces, __k, t, q, v)),
             )
         }
         Equations::Dense => {
-            quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v))
+            quote!(#p::dynamics::equations_of_motion::<#forces_ty, S, #n, #k>(#forces, t, q, v))
         }
     };
     let prepared = prepared_argument(glue);
     quote! {
         #[inline(always)]
-        fn equations_of_motion_at<S: #p::Scalar>(&self, #prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
+        fn equations_of_motion_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
+            let #prepared = __constants.prepared;
             #body
         }
     }
@@ -232,7 +254,8 @@ fn kinetic_energy(glue: &Glue) -> TokenStream {
     let prepared = prepared_argument(glue);
     quote! {
         #[inline]
-        fn kinetic_energy_at<S: #p::Scalar>(&self, #prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> S {
+        fn kinetic_energy_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> S {
+            let #prepared = __constants.prepared;
             #body
         }
     }
@@ -252,7 +275,8 @@ fn mass_matrix(glue: &Glue) -> Option<TokenStream> {
     ));
     Some(quote! {
         #[inline]
-        fn mass_matrix_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, _t: S, q: &[S; #n]) -> #p::nalgebra::SMatrix<S, #n, #n> {
+        fn mass_matrix_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, _t: S, q: &[S; #n]) -> #p::nalgebra::SMatrix<S, #n, #n> {
+            let prepared = __constants.prepared;
             #body
         }
     })
@@ -262,16 +286,18 @@ fn mass_matrix(glue: &Glue) -> Option<TokenStream> {
 /// the equations of motion, otherwise).
 fn inverse_dynamics(glue: &Glue) -> Option<TokenStream> {
     let p = private();
+    let (_, forces) = glue.forces();
     let n = lit(glue.n);
     let Equations::Rigid(_) = glue.equations else {
         return None;
     };
     let body = with_rigid_constants(quote!(
-        self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+        self.__lagrange_rigid_inverse_dynamics(#forces, __k, t, q, v, a)
     ));
     Some(quote! {
         #[inline]
-        fn inverse_dynamics_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n], a: &[S; #n]) -> [S; #n] {
+        fn inverse_dynamics_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n], a: &[S; #n]) -> [S; #n] {
+            let prepared = __constants.prepared;
             #body
         }
     })
@@ -284,11 +310,12 @@ fn inverse_dynamics(glue: &Glue) -> Option<TokenStream> {
 fn accelerations(glue: &Glue) -> Option<TokenStream> {
     let p = private();
     let (n, k) = glue.sizes();
+    let (forces_ty, forces) = glue.forces();
     let constraints = quote!(#p::lagrange_core::constraints);
     let plain = match (&glue.equations, glue.constrained) {
         (_, Some(c)) => {
             let c = lit(c);
-            Some(quote!(#constraints::accelerations::<Self, S, #n, #k, #c>(self, t, q, v)))
+            Some(quote!(#constraints::accelerations::<#forces_ty, S, #n, #k, #c>(#forces, t, q, v)))
         }
         (Equations::Tree(w, b), None) => {
             let (w, b) = (lit(*w), lit(*b));
@@ -296,6 +323,7 @@ fn accelerations(glue: &Glue) -> Option<TokenStream> {
         }
         // The constants computed for the call: a validated handle prepares them once.
         (Equations::Rigid(_), None) => Some(quote!(self.__lagrange_rigid_accelerations(
+            #forces,
             &self.__lagrange_rigid_constants(),
             t,
             q,
@@ -307,18 +335,18 @@ fn accelerations(glue: &Glue) -> Option<TokenStream> {
         (Prepared::Affine { .. }, Some(c)) => {
             let c = lit(c);
             Some(
-                quote!(#constraints::accelerations_prepared::<Self, S, #n, #k, #c>(self, prepared, t, q, v)),
+                quote!(#constraints::accelerations_prepared::<#forces_ty, S, #n, #k, #c>(#forces, prepared, t, q, v)),
             )
         }
         (Prepared::Affine { .. }, None) => Some(
-            quote!(#p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v)),
+            quote!(#p::lagrange_core::affine::accelerations::<#forces_ty, S, #n, #k>(#forces, prepared, t, q, v)),
         ),
         (Prepared::Coefficients(_), _) => Some(quote!({
             let eom = self.__lagrange_closed_form_with::<S>(#p::core::option::Option::Some(prepared), q, v);
             #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
         })),
         (Prepared::Rigid(_), None) => Some(quote!(
-            self.__lagrange_rigid_accelerations(prepared, t, q, v)
+            self.__lagrange_rigid_accelerations(#forces, prepared, t, q, v)
         )),
         (Prepared::Rigid(_), Some(_)) | (Prepared::Nothing, _) => None,
     };
@@ -328,14 +356,15 @@ fn accelerations(glue: &Glue) -> Option<TokenStream> {
     // The default: M q̈ = 𝓕 − b from the equations of motion.
     let plain = plain.unwrap_or_else(|| {
         quote!({
-            let eom = <Self as #p::Dynamics<#n>>::equations_of_motion_at(self, #p::core::option::Option::None, t, q, v);
+            let eom = <Self as #p::Dynamics<#n>>::equations_of_motion_at(self, #p::lagrange_core::evaluation::Constants::NONE.with_inputs(__constants.inputs), t, q, v);
             #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
         })
     });
     let with_constants = with_constants.unwrap_or_else(|| plain.clone());
     Some(quote! {
         #[inline]
-        fn accelerations_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+        fn accelerations_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+            let prepared = __constants.prepared;
             match prepared {
                 #p::core::option::Option::Some(prepared) => #with_constants,
                 #p::core::option::Option::None => #plain,
@@ -393,7 +422,8 @@ fn regular_accelerations(glue: &Glue) -> Option<TokenStream> {
     let with_constants = with_constants.unwrap_or_else(|| plain.clone());
     Some(quote! {
         #[inline(always)]
-        fn regular_accelerations_at(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+        fn regular_accelerations_at(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+            let prepared = __constants.prepared;
             match prepared {
                 #p::core::option::Option::Some(prepared) => #with_constants,
                 #p::core::option::Option::None => #plain,
@@ -407,7 +437,8 @@ fn regular_accelerations(glue: &Glue) -> Option<TokenStream> {
 fn canonical_field(glue: &Glue) -> TokenStream {
     let p = private();
     let (n, k) = glue.sizes();
-    let prepared_type = quote!(#p::core::option::Option<&Self::Prepared>);
+    let (forces_ty, forces) = glue.forces();
+
     let none = quote!(#p::core::option::Option::None);
     let prepared_argument = prepared_argument(glue);
     let momenta = match glue.equations {
@@ -433,7 +464,7 @@ fn canonical_field(glue: &Glue) -> TokenStream {
         _ => (!glue.rheonomic).then(|| {
             quote!({
                 let _ = prepared;
-                #p::dynamics::canonical_field::<Self, S, #n, #k>(self, t, q, v)
+                #p::dynamics::canonical_field::<#forces_ty, S, #n, #k>(#forces, t, q, v)
             })
         }),
     };
@@ -444,14 +475,16 @@ fn canonical_field(glue: &Glue) -> TokenStream {
     let field = field.map(|body| {
         quote! {
             #inline
-            fn canonical_field_at<S: #p::Scalar>(&self, prepared: #prepared_type, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+            fn canonical_field_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+                let prepared = __constants.prepared;
                 #body
             }
         }
     });
     quote! {
         #[inline]
-        fn momenta_at<S: #p::Scalar>(&self, #prepared_argument: #prepared_type, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
+        fn momenta_at<S: #p::Scalar>(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
+            let #prepared_argument = __constants.prepared;
             #momenta
         }
         #field
@@ -544,7 +577,8 @@ fn constraint_hooks(glue: &Glue, c: Literal) -> TokenStream {
         fn holonomic_constraints_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> #p::core::option::Option<[S; #n]> {
             #p::core::option::Option::Some(#constraints::holonomic_values::<Self, S, #n, #k, #c>(self, t, q))
         }
-        fn project(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
+        fn project(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
+            let prepared = __constants.prepared;
             #projection
         }
         // Inlined (the mechanism is often declared in another crate than the caller): without

@@ -25,6 +25,7 @@ mod coords;
 mod declaration;
 mod drawable;
 mod fallback;
+mod inputs;
 mod mechanism;
 mod model;
 mod parametrized;
@@ -171,16 +172,19 @@ fn generate(model: &Model) -> TokenStream {
         equations,
         rheonomic: model.rheonomic,
         positions,
+        inputs: model.input_count(),
     });
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);
     let drawable_impl = drawable_impl(model);
     let parametrized = parametrized_items(model);
+    let inputs = inputs::inputs_items(model);
     quote! {
         #(#attrs)*
         #vis mod #ident {
             #(#other_items)*
             #params_struct
+            #inputs
             #coords
             #bodies
             #inherent
@@ -206,7 +210,12 @@ fn equations_items(model: &Model, affine: bool) -> (Equations, TokenStream) {
         true => None,
         false => crate::structure::rigid::rigid_tree(model),
     };
-    let closed_form = crate::symbolic::equations(model).filter(|equations| {
+    // Inputs reach the forces as data the closed form and a tree of translations do not read:
+    // a declaration with inputs takes the rigid tree's recursion or the dense pass.
+    let actuated = model.inputs_ident.is_some();
+    let tree = tree.filter(|_| !actuated);
+    let closed_form = crate::symbolic::equations(model).filter(|_| !actuated);
+    let closed_form = closed_form.filter(|equations| {
         !recursion_is_cheaper(model, equations, tree.as_ref())
             && !rigid_recursion_is_cheaper(equations, rigid.as_ref())
     });

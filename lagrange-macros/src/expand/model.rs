@@ -16,7 +16,7 @@ mod forces;
 mod gradient;
 mod validate;
 
-pub(super) use forces::applied_forces_fn;
+pub(super) use forces::{applied_forces_fn, Forces};
 pub(super) use gradient::gradient_on_trees;
 use validate::validate_fn;
 
@@ -117,7 +117,7 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     let masses = masses_fn(model);
     let cartesian = cartesian_fn(model, Params::Fields);
     let potential = has_potential.then(|| potential_fn(model, Params::Fields));
-    let forces = has_forces.then(|| applied_forces_fn(model, Params::Fields));
+    let forces = has_forces.then(|| applied_forces_fn(model, Forces::Plain));
     let weights = (!model.uniform_gravities.is_empty()).then(|| weights_fn(model));
     let depends = depends_const(model);
     let (potential_gradient, potential_methods) = gradient::potential_gradient(model);

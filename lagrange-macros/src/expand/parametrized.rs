@@ -5,7 +5,7 @@
 //! being generic, they cost nothing in a program that never differentiates by a parameter.
 
 use super::bodies::bodies_fn;
-use super::model::{applied_forces_fn, cartesian_fn, potential_fn};
+use super::model::{applied_forces_fn, cartesian_fn, potential_fn, Forces};
 use super::{lit, private, Params};
 use crate::attr::Inertia;
 use crate::check::Model;
@@ -48,7 +48,7 @@ pub(super) fn parametrized_items(model: &Model) -> TokenStream {
     let cartesian = cartesian_fn(model, Params::Array);
     let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
     let potential = has_potential.then(|| potential_fn(model, Params::Array));
-    let forces = (!model.forces.is_empty()).then(|| applied_forces_fn(model, Params::Array));
+    let forces = (!model.forces.is_empty()).then(|| applied_forces_fn(model, Forces::Parametrized));
     quote! {
         impl #params {
             #bodies

@@ -325,15 +325,16 @@ fn accelerations_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
-        fn __lagrange_rigid_accelerations<S: #p::Scalar>(
+        fn __lagrange_rigid_accelerations<S: #p::Scalar, __F: #p::Model<#n, #k>>(
             &self,
+            __forces: &__F,
             __k: &#r::RigidConstants<#b>,
             __t: S,
             __q: &[S; #n],
             __v: &[S; #n],
         ) -> #p::Result<[S; #n]> {
             let __joints = &<Self as #r::RigidTree<#n, #b>>::JOINTS;
-            let __tau: [S; #n] = #r::other_generalized_forces::<Self, S, #n, #k>(self, __t, __q, __v).into();
+            let __tau: [S; #n] = #r::other_generalized_forces::<__F, S, #n, #k>(__forces, __t, __q, __v).into();
             let mut __ws = #r::Articulated::<S, #b>::new();
             let mut __qdd = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
             if let ::lagrange::__private::core::result::Result::Err(__pivot) =
@@ -395,8 +396,9 @@ fn inverse_dynamics_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
-        fn __lagrange_rigid_inverse_dynamics<S: #p::Scalar>(
+        fn __lagrange_rigid_inverse_dynamics<S: #p::Scalar, __F: #p::Model<#n, #k>>(
             &self,
+            __forces: &__F,
             __k: &#r::RigidConstants<#b>,
             __t: S,
             __q: &[S; #n],
@@ -407,7 +409,7 @@ fn inverse_dynamics_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             let mut __ws = #r::NewtonEuler::<S, #b>::new();
             let mut __tau = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
             let _ = self.__lagrange_rigid_newton_euler(&mut __ws, __joints, __k, (__q, __v, __qdd), &mut __tau);
-            #r::less_other_forces::<Self, S, #n, #k>(self, __tau, __t, __q, __v)
+            #r::less_other_forces::<__F, S, #n, #k>(__forces, __tau, __t, __q, __v)
         }
     }
 }

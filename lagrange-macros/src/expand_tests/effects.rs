@@ -211,3 +211,29 @@ fn array_coordinates_and_a_family_of_bodies() {
     assert!(squashed.contains("parent:::lagrange::__private::core::option::Option::Some(1)"));
     assert!(squashed.contains("tree::seed(__q[2],__v[2],0)"));
 }
+
+#[test]
+fn inputs_are_read_by_the_forces_and_held_by_the_constants() {
+    let out = snapshot(
+        "driven_motor",
+        quote! {
+            pub mod motor {
+                pub struct Coords { pub theta: f64 }
+                pub struct Motor { pub j: f64, pub c: f64 }
+                #[inputs]
+                pub struct Torque { pub tau: f64 }
+                #[rigid_body(mass = 1.0, inertia = j)]
+                fn disc() -> Planar { planar(vec2(0.0, 0.0), theta) }
+                #[generalized_force(on = theta)]
+                fn drive() -> f64 { tau - c * theta_dot }
+            }
+        },
+    );
+    // The forces read the inputs from the array the constants hold; the plain forces at zero.
+    assert!(out.contains("fn applied_forces_with_inputs<"));
+    assert!(out.contains("(&__u[0])"));
+    assert!(out.contains("&[0.0; 1]"));
+    assert!(out.contains("::held(self, __constants.inputs)"));
+    // The closed form does not read inputs: the dense pass.
+    assert!(out.contains("const CLOSED_FORM: bool = false;"));
+}

@@ -847,8 +847,12 @@ pub mod legs {
             ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
-        fn __lagrange_rigid_accelerations<S: ::lagrange::__private::Scalar>(
+        fn __lagrange_rigid_accelerations<
+            S: ::lagrange::__private::Scalar,
+            __F: ::lagrange::__private::Model<3, 36>,
+        >(
             &self,
+            __forces: &__F,
             __k: &::lagrange::__private::tree::rigid::RigidConstants<3>,
             __t: S,
             __q: &[S; 3],
@@ -859,11 +863,11 @@ pub mod legs {
                 3,
             >>::JOINTS;
             let __tau: [S; 3] = ::lagrange::__private::tree::rigid::other_generalized_forces::<
-                Self,
+                __F,
                 S,
                 3,
                 36,
-            >(self, __t, __q, __v)
+            >(__forces, __t, __q, __v)
                 .into();
             let mut __ws = ::lagrange::__private::tree::rigid::Articulated::<
                 S,
@@ -969,8 +973,12 @@ pub mod legs {
             ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
-        fn __lagrange_rigid_inverse_dynamics<S: ::lagrange::__private::Scalar>(
+        fn __lagrange_rigid_inverse_dynamics<
+            S: ::lagrange::__private::Scalar,
+            __F: ::lagrange::__private::Model<3, 36>,
+        >(
             &self,
+            __forces: &__F,
             __k: &::lagrange::__private::tree::rigid::RigidConstants<3>,
             __t: S,
             __q: &[S; 3],
@@ -997,11 +1005,11 @@ pub mod legs {
                     &mut __tau,
                 );
             ::lagrange::__private::tree::rigid::less_other_forces::<
-                Self,
+                __F,
                 S,
                 3,
                 36,
-            >(self, __tau, __t, __q, __v)
+            >(__forces, __tau, __t, __q, __v)
         }
     }
     impl ::lagrange::__private::Prepare for Legs {
@@ -1031,11 +1039,15 @@ pub mod legs {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 3> {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1057,10 +1069,14 @@ pub mod legs {
         #[inline]
         fn mass_matrix_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             _t: S,
             q: &[S; 3],
         ) -> ::lagrange::__private::nalgebra::SMatrix<S, 3, 3> {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1087,17 +1103,22 @@ pub mod legs {
         #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> ::lagrange::__private::Result<[S; 3]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
-                    self.__lagrange_rigid_accelerations(prepared, t, q, v)
+                    self.__lagrange_rigid_accelerations(self, prepared, t, q, v)
                 }
                 ::lagrange::__private::core::option::Option::None => {
                     self.__lagrange_rigid_accelerations(
+                        self,
                         &self.__lagrange_rigid_constants(),
                         t,
                         q,
@@ -1109,12 +1130,16 @@ pub mod legs {
         #[inline]
         fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
             a: &[S; 3],
         ) -> [S; 3] {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1124,17 +1149,21 @@ pub mod legs {
                         &__owned
                     }
                 };
-                self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+                self.__lagrange_rigid_inverse_dynamics(self, __k, t, q, v, a)
             }
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> S {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1162,10 +1191,14 @@ pub mod legs {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 3],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::potential_energy::<
                 Self,
                 S,
@@ -1176,11 +1209,15 @@ pub mod legs {
         #[inline]
         fn lagrangian_time_derivative_at(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 3],
             v: &[f64; 3],
         ) -> f64 {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::lagrangian_time_derivative::<
                 Self,
                 3,
@@ -1190,11 +1227,15 @@ pub mod legs {
         #[inline]
         fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> [S; 3] {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1222,11 +1263,15 @@ pub mod legs {
         #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> ([S; 3], [S; 3]) {
+            let prepared = __constants.prepared;
             {
                 let _ = prepared;
                 ::lagrange::__private::dynamics::canonical_field::<

@@ -427,21 +427,29 @@ pub mod double_pendulum {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            let _prepared = __constants.prepared;
             self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::Result<[S; 2]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     let eom = self
@@ -463,7 +471,8 @@ pub mod double_pendulum {
                         2,
                     >>::equations_of_motion_at(
                         self,
-                        ::lagrange::__private::core::option::Option::None,
+                        ::lagrange::__private::lagrange_core::evaluation::Constants::NONE
+                            .with_inputs(__constants.inputs),
                         t,
                         q,
                         v,
@@ -479,11 +488,15 @@ pub mod double_pendulum {
         #[inline(always)]
         fn regular_accelerations_at(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     let eom = self
@@ -513,11 +526,15 @@ pub mod double_pendulum {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::kinetic_energy::<
                 Self,
                 S,
@@ -528,10 +545,14 @@ pub mod double_pendulum {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::potential_energy::<
                 Self,
                 S,
@@ -542,11 +563,15 @@ pub mod double_pendulum {
         #[inline]
         fn lagrangian_time_derivative_at(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> f64 {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::lagrangian_time_derivative::<
                 Self,
                 2,
@@ -556,11 +581,15 @@ pub mod double_pendulum {
         #[inline]
         fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
+            let _prepared = __constants.prepared;
             self.__lagrange_canonical_field_with::<
                     S,
                 >(::lagrange::__private::core::option::Option::None, q, v)
@@ -569,11 +598,15 @@ pub mod double_pendulum {
         #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
+            let prepared = __constants.prepared;
             self.__lagrange_canonical_field_with::<S>(prepared, q, v)
         }
     }

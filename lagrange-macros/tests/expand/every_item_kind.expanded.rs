@@ -598,11 +598,15 @@ pub mod everything {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::equations_of_motion::<
                 Self,
                 S,
@@ -613,11 +617,15 @@ pub mod everything {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::kinetic_energy::<
                 Self,
                 S,
@@ -628,10 +636,14 @@ pub mod everything {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::potential_energy::<
                 Self,
                 S,
@@ -642,11 +654,15 @@ pub mod everything {
         #[inline]
         fn lagrangian_time_derivative_at(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> f64 {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::lagrangian_time_derivative::<
                 Self,
                 2,
@@ -656,21 +672,29 @@ pub mod everything {
         #[inline]
         fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::momenta::<Self, S, 2, 17>(self, t, q, v)
         }
         #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
+            let prepared = __constants.prepared;
             {
                 let _ = prepared;
                 ::lagrange::__private::dynamics::canonical_field::<

@@ -872,8 +872,12 @@ pub mod arm {
             ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
-        fn __lagrange_rigid_accelerations<S: ::lagrange::__private::Scalar>(
+        fn __lagrange_rigid_accelerations<
+            S: ::lagrange::__private::Scalar,
+            __F: ::lagrange::__private::Model<2, 24>,
+        >(
             &self,
+            __forces: &__F,
             __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
             __t: S,
             __q: &[S; 2],
@@ -884,11 +888,11 @@ pub mod arm {
                 2,
             >>::JOINTS;
             let __tau: [S; 2] = ::lagrange::__private::tree::rigid::other_generalized_forces::<
-                Self,
+                __F,
                 S,
                 2,
                 24,
-            >(self, __t, __q, __v)
+            >(__forces, __t, __q, __v)
                 .into();
             let mut __ws = ::lagrange::__private::tree::rigid::Articulated::<
                 S,
@@ -974,8 +978,12 @@ pub mod arm {
             ::lagrange::__private::core::result::Result::Ok(())
         }
         #[inline(always)]
-        fn __lagrange_rigid_inverse_dynamics<S: ::lagrange::__private::Scalar>(
+        fn __lagrange_rigid_inverse_dynamics<
+            S: ::lagrange::__private::Scalar,
+            __F: ::lagrange::__private::Model<2, 24>,
+        >(
             &self,
+            __forces: &__F,
             __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
             __t: S,
             __q: &[S; 2],
@@ -1002,11 +1010,11 @@ pub mod arm {
                     &mut __tau,
                 );
             ::lagrange::__private::tree::rigid::less_other_forces::<
-                Self,
+                __F,
                 S,
                 2,
                 24,
-            >(self, __tau, __t, __q, __v)
+            >(__forces, __tau, __t, __q, __v)
         }
     }
     impl ::lagrange::__private::Prepare for Arm {
@@ -1036,11 +1044,15 @@ pub mod arm {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1062,10 +1074,14 @@ pub mod arm {
         #[inline]
         fn mass_matrix_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             _t: S,
             q: &[S; 2],
         ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1092,17 +1108,22 @@ pub mod arm {
         #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::Result<[S; 2]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
-                    self.__lagrange_rigid_accelerations(prepared, t, q, v)
+                    self.__lagrange_rigid_accelerations(self, prepared, t, q, v)
                 }
                 ::lagrange::__private::core::option::Option::None => {
                     self.__lagrange_rigid_accelerations(
+                        self,
                         &self.__lagrange_rigid_constants(),
                         t,
                         q,
@@ -1114,12 +1135,16 @@ pub mod arm {
         #[inline]
         fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
             a: &[S; 2],
         ) -> [S; 2] {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1129,17 +1154,21 @@ pub mod arm {
                         &__owned
                     }
                 };
-                self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+                self.__lagrange_rigid_inverse_dynamics(self, __k, t, q, v, a)
             }
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> S {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1167,10 +1196,14 @@ pub mod arm {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::potential_energy::<
                 Self,
                 S,
@@ -1181,11 +1214,15 @@ pub mod arm {
         #[inline]
         fn lagrangian_time_derivative_at(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> f64 {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::lagrangian_time_derivative::<
                 Self,
                 2,
@@ -1195,11 +1232,15 @@ pub mod arm {
         #[inline]
         fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
+            let prepared = __constants.prepared;
             {
                 let __owned;
                 let __k = match prepared {
@@ -1227,11 +1268,15 @@ pub mod arm {
         #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
+            let prepared = __constants.prepared;
             {
                 let _ = prepared;
                 ::lagrange::__private::dynamics::canonical_field::<

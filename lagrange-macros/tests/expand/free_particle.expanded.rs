@@ -295,21 +295,29 @@ pub mod free {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            let _prepared = __constants.prepared;
             self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::Result<[S; 2]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     ::lagrange::__private::lagrange_core::affine::accelerations::<
@@ -324,7 +332,8 @@ pub mod free {
                         2,
                     >>::equations_of_motion_at(
                         self,
-                        ::lagrange::__private::core::option::Option::None,
+                        ::lagrange::__private::lagrange_core::evaluation::Constants::NONE
+                            .with_inputs(__constants.inputs),
                         t,
                         q,
                         v,
@@ -340,11 +349,15 @@ pub mod free {
         #[inline(always)]
         fn regular_accelerations_at(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
@@ -368,11 +381,15 @@ pub mod free {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::kinetic_energy::<
                 Self,
                 S,
@@ -383,10 +400,14 @@ pub mod free {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::potential_energy::<
                 Self,
                 S,
@@ -397,11 +418,15 @@ pub mod free {
         #[inline]
         fn lagrangian_time_derivative_at(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> f64 {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::lagrangian_time_derivative::<
                 Self,
                 2,
@@ -411,11 +436,15 @@ pub mod free {
         #[inline]
         fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
+            let _prepared = __constants.prepared;
             self.__lagrange_canonical_field_with::<
                     S,
                 >(::lagrange::__private::core::option::Option::None, q, v)
@@ -424,11 +453,15 @@ pub mod free {
         #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
+            let prepared = __constants.prepared;
             {
                 let _ = prepared;
                 self.__lagrange_canonical_field_with::<

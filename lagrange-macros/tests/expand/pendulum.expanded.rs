@@ -325,21 +325,29 @@ pub mod pendulum {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 1> {
+            let _prepared = __constants.prepared;
             self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> ::lagrange::__private::Result<[S; 1]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     let eom = self
@@ -361,7 +369,8 @@ pub mod pendulum {
                         1,
                     >>::equations_of_motion_at(
                         self,
-                        ::lagrange::__private::core::option::Option::None,
+                        ::lagrange::__private::lagrange_core::evaluation::Constants::NONE
+                            .with_inputs(__constants.inputs),
                         t,
                         q,
                         v,
@@ -377,11 +386,15 @@ pub mod pendulum {
         #[inline(always)]
         fn regular_accelerations_at(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 1],
             v: &[f64; 1],
         ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     let eom = self
@@ -411,11 +424,15 @@ pub mod pendulum {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::kinetic_energy::<
                 Self,
                 S,
@@ -426,10 +443,14 @@ pub mod pendulum {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 1],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::potential_energy::<
                 Self,
                 S,
@@ -440,11 +461,15 @@ pub mod pendulum {
         #[inline]
         fn lagrangian_time_derivative_at(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 1],
             v: &[f64; 1],
         ) -> f64 {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::lagrangian_time_derivative::<
                 Self,
                 1,
@@ -454,11 +479,15 @@ pub mod pendulum {
         #[inline]
         fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> [S; 1] {
+            let _prepared = __constants.prepared;
             self.__lagrange_canonical_field_with::<
                     S,
                 >(::lagrange::__private::core::option::Option::None, q, v)
@@ -467,11 +496,15 @@ pub mod pendulum {
         #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> ([S; 1], [S; 1]) {
+            let prepared = __constants.prepared;
             self.__lagrange_canonical_field_with::<S>(prepared, q, v)
         }
     }

@@ -259,11 +259,15 @@ pub mod sliding_block {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::equations_of_motion::<
                 Self,
                 S,
@@ -274,11 +278,15 @@ pub mod sliding_block {
         #[inline]
         fn accelerations_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::Result<[S; 2]> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     ::lagrange::__private::lagrange_core::constraints::accelerations_prepared::<
@@ -303,11 +311,15 @@ pub mod sliding_block {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::kinetic_energy::<
                 Self,
                 S,
@@ -318,10 +330,14 @@ pub mod sliding_block {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
         ) -> S {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::potential_energy::<
                 Self,
                 S,
@@ -332,11 +348,15 @@ pub mod sliding_block {
         #[inline]
         fn lagrangian_time_derivative_at(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
         ) -> f64 {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::lagrangian_time_derivative::<
                 Self,
                 2,
@@ -346,21 +366,29 @@ pub mod sliding_block {
         #[inline]
         fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
-            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> [S; 2] {
+            let _prepared = __constants.prepared;
             ::lagrange::__private::dynamics::momenta::<Self, S, 2, 2>(self, t, q, v)
         }
         #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
+            let prepared = __constants.prepared;
             {
                 let _ = prepared;
                 ::lagrange::__private::dynamics::canonical_field::<
@@ -389,11 +417,15 @@ pub mod sliding_block {
         }
         fn project(
             &self,
-            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            __constants: ::lagrange::__private::lagrange_core::evaluation::Constants<
+                '_,
+                Self,
+            >,
             t: f64,
             q: &mut [f64; 2],
             v: &mut [f64; 2],
         ) -> ::lagrange::__private::Result<()> {
+            let prepared = __constants.prepared;
             match prepared {
                 ::lagrange::__private::core::option::Option::Some(prepared) => {
                     ::lagrange::__private::lagrange_core::constraints::project_prepared::<

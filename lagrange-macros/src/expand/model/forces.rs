@@ -11,18 +11,40 @@ use crate::check::{self, Dim, Force, Model, Shape};
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 
-/// The applied forces: `applied_forces` with the parameters from the fields, `applied_forces_with`
-/// from an array (see [`Params`]).
-pub(in crate::expand) fn applied_forces_fn(model: &Model, params: Params) -> TokenStream {
+/// Which applied-forces function is written.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(in crate::expand) enum Forces {
+    /// `Model::applied_forces`: the parameters from the fields (the inputs, if any, zero).
+    Plain,
+    /// `Parametrized::applied_forces_with`: the parameters from an array (the inputs zero).
+    Parametrized,
+    /// `ActuatedModel::applied_forces_with_inputs`: the parameters from the fields, the inputs
+    /// from `__u: &[__U; NU]`.
+    WithInputs,
+}
+
+/// The applied forces, as `which` function (see [`Forces`]). A declaration with inputs has its
+/// `applied_forces` forward to `applied_forces_with_inputs` at zero inputs.
+pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> TokenStream {
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
+    if let (Forces::Plain, Some(nu)) = (which, model.input_count()) {
+        let nu = lit(nu);
+        return quote! {
+            #[inline(always)]
+            fn applied_forces<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], __x: &[__D; #k], __x_dot: &[__D; #k], __cartesian_force: &mut [__D; #k], __generalized_force: &mut [__D; #n]) {
+                <Self as #p::lagrange_core::inputs::ActuatedModel<#n, #k, #nu>>::applied_forces_with_inputs::<__D, f64>(self, &[0.0; #nu], __t, __q, __v, __x, __x_dot, __cartesian_force, __generalized_force)
+            }
+        };
+    }
+    let params = match which {
+        Forces::Parametrized => Params::Array,
+        Forces::Plain | Forces::WithInputs => Params::Fields,
+    };
     let prelude = prelude();
-    let inputs = bind_inputs_from(
-        model,
-        &model.names_used_by(model.forces.iter().map(|f| f.decl)),
-        quote!(__q),
-        params,
-    );
+    let used = model.names_used_by(model.forces.iter().map(|f| f.decl));
+    let inputs = bind_inputs_from(model, &used, quote!(__q), params);
+    let input_values = bind_input_values(model, &used, which);
     let velocities = bind_coordinates(model, &quote!(__v), "_dot");
     let bodies = bind_bodies(model);
     let names = model.bodies.iter().map(|b| b.decl.ident());
@@ -37,14 +59,22 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, params: Params) -> Tok
         .iter()
         .zip(blocks)
         .map(|(force, block)| applied_force(model, force, &block));
-    let (name, generics, array) = match params {
-        Params::Fields => (quote!(applied_forces), quote!(<__D: #p::Scalar>), quote!()),
-        Params::Array => {
+    let (name, generics, array) = match which {
+        Forces::Plain => (quote!(applied_forces), quote!(<__D: #p::Scalar>), quote!()),
+        Forces::Parametrized => {
             let np = lit(crate::ast::slot_count(model.params));
             (
                 quote!(applied_forces_with),
                 quote!(<__S: #p::Scalar, __D: #p::Scalar>),
                 quote!(__p: &[__S; #np],),
+            )
+        }
+        Forces::WithInputs => {
+            let nu = lit(model.input_count().unwrap_or(0));
+            (
+                quote!(applied_forces_with_inputs),
+                quote!(<__D: #p::Scalar, __U: #p::Scalar>),
+                quote!(__u: &[__U; #nu],),
             )
         }
     };
@@ -63,6 +93,7 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, params: Params) -> Tok
         ) {
             #prelude
             #inputs
+            #input_values
             #shared
             #velocities
             #bodies
@@ -70,6 +101,45 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, params: Params) -> Tok
             #(#forces)*
         }
     }
+}
+
+/// `let tau: __D = input::<__U, __D>(&__u[0]);` for each input the forces name (an array input
+/// element by element): from `__u` in `applied_forces_with_inputs`, zero in the parametrized
+/// forces.
+fn bind_input_values(
+    model: &Model,
+    used: &std::collections::BTreeSet<String>,
+    which: Forces,
+) -> TokenStream {
+    let p = private();
+    let value = |slot: usize| match which {
+        Forces::WithInputs => {
+            let slot = lit(slot);
+            quote!(#p::lagrange_core::inputs::input::<__U, __D>(&__u[#slot]))
+        }
+        Forces::Plain | Forces::Parametrized => quote!(<__D>::from(0.0)),
+    };
+    let mut slot = 0;
+    let mut bindings = Vec::new();
+    for u in model.inputs {
+        let first = slot;
+        slot += u.slots();
+        if !used.contains(&u.ident.to_string()) {
+            continue;
+        }
+        let ident = &u.ident;
+        bindings.push(match &u.array {
+            Some((_, len)) => {
+                let (values, len) = ((first..first + len).map(value), lit(*len));
+                quote!(let #ident: [__D; #len] = [#(#values),*];)
+            }
+            None => {
+                let value = value(first);
+                quote!(let #ident: __D = #value;)
+            }
+        });
+    }
+    quote!(#(#bindings)*)
 }
 
 /// One declared force: its value `block` bound to `__<kind>_<name>` and added where it acts.

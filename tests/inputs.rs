@@ -1,0 +1,340 @@
+//! Inputs (`#[inputs]`): what a program sets between steps, read by the forces and held over each
+//! evaluation. Each mechanism here is declared twice — with inputs, and with the same quantities
+//! as parameters — and `sys.driven(&u)` must equal the parameter twin with the parameters set to
+//! `u`, on every path the macro chooses for it (the dense pass, the rigid tree's recursions, the
+//! constrained solve), for accelerations, the equations of motion, inverse dynamics and a run.
+//!
+//! Tolerances: the two declarations evaluate the same formulas, the twin reading `tau` as a
+//! parameter (which the optimiser may fold with other constants), so they agree to a few rounding
+//! errors; 1e-12 relative leaves a margin of ~10³ over the ~1e-15 seen.
+
+use lagrange::prelude::*;
+use lagrange::tree::rigid::RigidTree;
+
+/// A disc on a shaft with viscous friction, driven by a motor: j θ̈ = τ − c θ̇.
+#[mechanism]
+pub mod motor {
+    pub struct Coords {
+        pub theta: f64,
+    }
+    pub struct Motor {
+        pub j: f64,
+        pub c: f64,
+    }
+    #[inputs]
+    pub struct Torque {
+        pub tau: f64,
+    }
+    #[rigid_body(mass = 1.0, inertia = j)]
+    fn disc() -> Planar {
+        planar(vec2(0.0, 0.0), theta)
+    }
+    #[generalized_force(on = theta)]
+    fn drive() -> f64 {
+        tau - c * theta_dot
+    }
+}
+
+/// Two spatial links on revolute joints, a motor at each joint, gravity: the rigid tree pass. The
+/// motors' torques are written at the call (a name bound by the declaration and read in a
+/// `macro_rules!` body would be two names to the compiler).
+macro_rules! two_link_arm {
+    ($name:ident, $params:ident, { $($extra:tt)* }, { $($inputs:tt)* },
+     $motor1:block, $motor2:block, $wrist:block) => {
+        #[mechanism]
+        pub mod $name {
+            pub struct Coords {
+                pub q1: f64,
+                pub q2: f64,
+            }
+            pub struct $params {
+                pub m1: f64,
+                pub m2: f64,
+                pub l: f64,
+                pub g: f64,
+                $($extra)*
+            }
+            $($inputs)*
+            #[rigid_body(mass = m1, com = vec3(0.0, 0.02, 0.5 * l),
+                         inertia = [[0.03, 0.001, 0.0], [0.001, 0.025, 0.0], [0.0, 0.0, 0.012]])]
+            fn link1() -> Spatial {
+                spatial(vec3(0.0, 0.0, 0.1), rot_y(q1))
+            }
+            #[rigid_body(mass = m2, com = vec3(0.01, 0.0, 0.4 * l),
+                         inertia = [[0.02, 0.0, 0.002], [0.0, 0.02, 0.0], [0.002, 0.0, 0.011]])]
+            fn link2() -> Spatial {
+                link1.joint(vec3(0.0, 0.05, l), rot_x(0.2) * rot_y(q2))
+            }
+            #[gravity]
+            fn down() -> Vec3 {
+                vec3(0.0, 0.0, -g)
+            }
+            #[generalized_force(on = q1)]
+            fn motor1() -> f64 $motor1
+            #[generalized_force(on = q2)]
+            fn motor2() -> f64 $motor2
+            #[torque(on = link2)]
+            fn wrist() -> Vec3 $wrist
+        }
+    };
+}
+
+two_link_arm!(
+    driven_arm,
+    DrivenArm,
+    {},
+    {
+        #[inputs]
+        pub struct Torques {
+            pub tau: [f64; 2],
+            pub push: f64,
+        }
+    },
+    { tau[0] },
+    { tau[1] },
+    { vec3(0.0, 0.0, push) }
+);
+two_link_arm!(twin_arm, TwinArm, { pub tau: [f64; 2], pub push: f64, }, {},
+    { tau[0] }, { tau[1] }, { vec3(0.0, 0.0, push) });
+
+/// A pendulum in Cartesian coordinates held by a rod (a bilateral constraint), pushed sideways:
+/// the constrained solve.
+macro_rules! pushed_pendulum {
+    ($name:ident, $params:ident, { $($extra:tt)* }, { $($inputs:tt)* }, $push:block) => {
+        #[mechanism]
+        pub mod $name {
+            pub struct Coords {
+                pub x: f64,
+                pub y: f64,
+            }
+            pub struct $params {
+                pub m: f64,
+                pub l: f64,
+                pub g: f64,
+                $($extra)*
+            }
+            $($inputs)*
+            #[particle(mass = m)]
+            fn bob() -> Vec2 {
+                vec2(x, y)
+            }
+            #[gravity]
+            fn down() -> Vec2 {
+                vec2(0.0, -g)
+            }
+            #[force(on = bob)]
+            fn push() -> Vec2 $push
+            #[constraint]
+            fn rod() -> f64 {
+                x * x + y * y - l * l
+            }
+        }
+    };
+}
+
+pushed_pendulum!(
+    driven_pendulum,
+    DrivenPendulum,
+    {},
+    {
+        #[inputs]
+        pub struct Push {
+            pub f: f64,
+        }
+    },
+    { vec2(f, 0.0) }
+);
+pushed_pendulum!(twin_pendulum, TwinPendulum, { pub f: f64, }, {}, { vec2(f, 0.0) });
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-12 * (1.0 + a.abs().max(b.abs()))
+}
+
+#[test]
+fn a_motor_torque_is_read_where_the_mechanism_is_driven_and_zero_where_it_is_not() {
+    let sys = motor::Motor { j: 0.5, c: 0.1 };
+    let state = motor::State {
+        t: 0.0,
+        q: motor::Coords { theta: 0.3 },
+        v: motor::Coords { theta: 2.0 },
+    };
+    let u = motor::Torque { tau: 1.5 };
+    // j θ̈ = τ − c θ̇, exactly (one division and two products).
+    let driven = sys.driven(&u).accelerations(&state).unwrap();
+    assert!((driven.theta - (1.5 - 0.1 * 2.0) / 0.5).abs() < 1e-15);
+    let plain = sys.accelerations(&state).unwrap();
+    assert!((plain.theta - (-0.1 * 2.0) / 0.5).abs() < 1e-15);
+    assert_eq!(
+        sys.driven(&motor::Torque::default())
+            .accelerations(&state)
+            .unwrap(),
+        plain
+    );
+    // Through a validated handle, the same.
+    let handle = sys.validated().unwrap();
+    assert_eq!(handle.driven(&u).accelerations(&state).unwrap(), driven);
+    assert_eq!(<motor::Torque as lagrange::Inputs<1>>::NAMES, ["tau"]);
+}
+
+fn arm_pair(
+    tau: [f64; 2],
+    push: f64,
+) -> (
+    driven_arm::DrivenArm,
+    driven_arm::Torques,
+    twin_arm::TwinArm,
+) {
+    let (m1, m2, l, g) = (1.2, 0.8, 0.45, 9.81);
+    (
+        driven_arm::DrivenArm { m1, m2, l, g },
+        driven_arm::Torques { tau, push },
+        twin_arm::TwinArm {
+            m1,
+            m2,
+            l,
+            g,
+            tau,
+            push,
+        },
+    )
+}
+
+#[test]
+fn a_driven_rigid_arm_equals_its_twin_with_the_inputs_as_parameters() {
+    // The inputs do not change the path: the arm takes the rigid tree's recursions.
+    assert_eq!(<driven_arm::DrivenArm as RigidTree<2, 2>>::JOINTS.len(), 2);
+    for (tau, push) in [([0.0, 0.0], 0.0), ([1.5, -0.7], 0.3), ([-4.0, 2.5], -1.1)] {
+        let (arm, u, twin) = arm_pair(tau, push);
+        let handle = arm_pair(tau, push).0.validated().unwrap();
+        let twin_handle = twin.validated().unwrap();
+        for (q1, q2, v1, v2) in [(0.3, -0.8, 0.5, 1.2), (1.9, 0.4, -2.0, 0.1)] {
+            let state = driven_arm::State {
+                t: 0.0,
+                q: driven_arm::Coords { q1, q2 },
+                v: driven_arm::Coords { q1: v1, q2: v2 },
+            };
+            let twin_state = twin_arm::State {
+                t: 0.0,
+                q: twin_arm::Coords { q1, q2 },
+                v: twin_arm::Coords { q1: v1, q2: v2 },
+            };
+            let expected = twin_handle.accelerations(&twin_state).unwrap();
+            for a in [
+                handle.driven(&u).accelerations(&state).unwrap(),
+                arm.driven(&u).accelerations(&state).unwrap(),
+            ] {
+                assert!(
+                    close(a.q1, expected.q1) && close(a.q2, expected.q2),
+                    "{a:?} {expected:?}"
+                );
+            }
+            let forces = handle.driven(&u).generalized_forces(&state).unwrap();
+            let twin_forces = twin_handle.generalized_forces(&twin_state).unwrap();
+            assert!(close(forces.q1, twin_forces.q1) && close(forces.q2, twin_forces.q2));
+            // Inverse dynamics (Newton–Euler) sees the inputs as the twin sees its parameters.
+            let wanted = driven_arm::Coords { q1: 0.7, q2: -1.3 };
+            let tau_id = handle.driven(&u).inverse_dynamics(&state, &wanted).unwrap();
+            let twin_id = twin_handle
+                .inverse_dynamics(&twin_state, &twin_arm::Coords { q1: 0.7, q2: -1.3 })
+                .unwrap();
+            assert!(close(tau_id.q1, twin_id.q1) && close(tau_id.q2, twin_id.q2));
+        }
+    }
+}
+
+#[test]
+fn computed_torque_from_inverse_dynamics_gives_the_wanted_accelerations() {
+    // With the motors the only inputs and each acting on its own coordinate, the generalized
+    // forces inverse dynamics returns at zero inputs are the motor torques that produce q̈.
+    let (arm, _, _) = arm_pair([0.0, 0.0], 0.0);
+    let handle = arm.validated().unwrap();
+    let state = driven_arm::State {
+        t: 0.0,
+        q: driven_arm::Coords { q1: 0.4, q2: 1.1 },
+        v: driven_arm::Coords { q1: -0.3, q2: 0.9 },
+    };
+    let wanted = driven_arm::Coords { q1: 2.0, q2: -0.5 };
+    let tau = handle.inverse_dynamics(&state, &wanted).unwrap();
+    let u = driven_arm::Torques {
+        tau: [tau.q1, tau.q2],
+        push: 0.0,
+    };
+    let a = handle.driven(&u).accelerations(&state).unwrap();
+    assert!(close(a.q1, wanted.q1) && close(a.q2, wanted.q2), "{a:?}");
+}
+
+#[test]
+fn a_driven_run_holds_the_inputs_over_each_step() {
+    let (arm, u, twin) = arm_pair([0.8, -0.4], 0.2);
+    let state = driven_arm::State {
+        t: 0.0,
+        q: driven_arm::Coords { q1: 0.2, q2: -0.5 },
+        v: driven_arm::Coords { q1: 0.0, q2: 0.0 },
+    };
+    let twin_state = twin_arm::State {
+        t: 0.0,
+        q: twin_arm::Coords { q1: 0.2, q2: -0.5 },
+        v: twin_arm::Coords { q1: 0.0, q2: 0.0 },
+    };
+    let handle = arm.validated().unwrap();
+    let driven = handle.driven(&u);
+    let (mut s, mut s_twin) = (state, twin_state);
+    for _ in 0..200 {
+        driven.step::<Rk4>(&mut s, 1e-3).unwrap();
+        twin.step::<Rk4>(&mut s_twin, 1e-3).unwrap();
+    }
+    assert!(close(s.q.q1, s_twin.q.q1) && close(s.q.q2, s_twin.q.q2));
+    assert!(close(s.v.q1, s_twin.v.q1) && close(s.v.q2, s_twin.v.q2));
+    // A zero-order hold: stepping in two halves with the inputs set again between them is the
+    // same run (the inputs are constant over each step, and nothing else is held between steps).
+    let mut halves = state;
+    for _ in 0..2 {
+        let driven = handle.driven(&u);
+        for _ in 0..100 {
+            driven.step::<Rk4>(&mut halves, 1e-3).unwrap();
+        }
+    }
+    assert_eq!(halves, s);
+}
+
+#[test]
+fn a_driven_constrained_mechanism_equals_its_twin() {
+    let (m, l, g, f) = (0.7, 1.3, 9.81, 2.2);
+    let sys = driven_pendulum::DrivenPendulum { m, l, g };
+    let twin = twin_pendulum::TwinPendulum { m, l, g, f };
+    let (x, y) = (l * 0.6f64.sin(), -l * 0.6f64.cos());
+    let (vx, vy) = (0.8 * 0.6f64.cos(), 0.8 * 0.6f64.sin());
+    let state = driven_pendulum::State {
+        t: 0.0,
+        q: driven_pendulum::Coords { x, y },
+        v: driven_pendulum::Coords { x: vx, y: vy },
+    };
+    let twin_state = twin_pendulum::State {
+        t: 0.0,
+        q: twin_pendulum::Coords { x, y },
+        v: twin_pendulum::Coords { x: vx, y: vy },
+    };
+    let u = driven_pendulum::Push { f };
+    for handle_or_not in [false, true] {
+        let a = match handle_or_not {
+            false => sys.driven(&u).accelerations(&state).unwrap(),
+            true => driven_pendulum::DrivenPendulum { m, l, g }
+                .validated()
+                .unwrap()
+                .driven(&u)
+                .accelerations(&state)
+                .unwrap(),
+        };
+        let expected = twin.accelerations(&twin_state).unwrap();
+        assert!(
+            close(a.x, expected.x) && close(a.y, expected.y),
+            "{a:?} {expected:?}"
+        );
+    }
+    let (mut s, mut s_twin) = (state, twin_state);
+    for _ in 0..100 {
+        sys.driven(&u).step::<Rk4>(&mut s, 1e-3).unwrap();
+        twin.step::<Rk4>(&mut s_twin, 1e-3).unwrap();
+    }
+    assert!(close(s.q.x, s_twin.q.x) && close(s.q.y, s_twin.q.y));
+}
