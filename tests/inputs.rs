@@ -10,6 +10,7 @@
 
 use lagrange::prelude::*;
 use lagrange::tree::rigid::RigidTree;
+use lagrange::Seed;
 
 /// A disc on a shaft with viscous friction, driven by a motor: j θ̈ = τ − c θ̇.
 #[mechanism]
@@ -337,4 +338,90 @@ fn a_driven_constrained_mechanism_equals_its_twin() {
         twin.step::<Rk4>(&mut s_twin, 1e-3).unwrap();
     }
     assert!(close(s.q.x, s_twin.q.x) && close(s.q.y, s_twin.q.y));
+}
+
+#[test]
+fn the_input_matrix_is_the_derivative_of_the_accelerations_by_the_inputs() {
+    use lagrange::inputs::input_matrix;
+    // The motor: j θ̈ = τ − c θ̇, so ∂θ̈/∂τ = 1/j exactly.
+    let motor = motor::Motor { j: 0.5, c: 0.1 };
+    let state = motor::State {
+        t: 0.0,
+        q: motor::Coords { theta: 0.3 },
+        v: motor::Coords { theta: 2.0 },
+    };
+    let b = input_matrix(&motor, &motor::Torque { tau: 1.0 }, &state).unwrap();
+    assert!((b[(0, 0)] - 2.0).abs() < 1e-15);
+    // The arm, against central differences of the driven accelerations. The accelerations are
+    // affine in the inputs, so the differences' error is rounding alone: ~1e-16 |q̈| / h with
+    // h = 1e-4, far inside 1e-9.
+    let (arm, u, _) = arm_pair([0.6, -0.2], 0.4);
+    let state = driven_arm::State {
+        t: 0.0,
+        q: driven_arm::Coords { q1: 0.5, q2: -0.9 },
+        v: driven_arm::Coords { q1: 0.3, q2: 0.7 },
+    };
+    let b = input_matrix(&arm, &u, &state).unwrap();
+    let flat = |u: &driven_arm::Torques| [u.tau[0], u.tau[1], u.push];
+    let h = 1e-4;
+    for j in 0..3 {
+        let shifted = |s: f64| {
+            let mut values = flat(&u);
+            values[j] += s;
+            let u = driven_arm::Torques {
+                tau: [values[0], values[1]],
+                push: values[2],
+            };
+            arm.driven(&u).accelerations(&state).unwrap()
+        };
+        let (plus, minus) = (shifted(h), shifted(-h));
+        let column = [
+            (plus.q1 - minus.q1) / (2.0 * h),
+            (plus.q2 - minus.q2) / (2.0 * h),
+        ];
+        for i in 0..2 {
+            assert!(
+                (b[(i, j)] - column[i]).abs() < 1e-9,
+                "B[{i},{j}] = {} vs {}",
+                b[(i, j)],
+                column[i]
+            );
+        }
+    }
+    // The wrist torque acts on both joints through the arm's geometry: a column of its own.
+    assert!(b[(1, 2)].abs() > 1e-3);
+}
+
+#[test]
+fn sensitivities_to_a_parameter_are_refused_on_a_driven_mechanism() {
+    let (arm, u, _) = arm_pair([0.6, -0.2], 0.4);
+    let driven = arm.driven(&u);
+    let start = driven_arm::State {
+        t: 0.0,
+        q: driven_arm::Coords { q1: 0.5, q2: -0.9 },
+        v: driven_arm::Coords { q1: 0.3, q2: 0.7 },
+    };
+    let refused = Stepper::new(&driven, Rk4::with_step(1e-3), &start)
+        .unwrap()
+        .with_sensitivities([Seed::Parameter("l")]);
+    assert!(matches!(
+        refused,
+        Err(Error::ParameterSeedWithInputs { name: "l" })
+    ));
+    // Seeded on initial values, the run carries the inputs.
+    let mut run = Stepper::new(&driven, Rk4::with_step(1e-3), &start)
+        .unwrap()
+        .with_sensitivities([Seed::Coordinate("q1")])
+        .unwrap();
+    run.integrate(0.1, &mut [], |_| {}).unwrap();
+    // Against the driven run stepped by hand (the same steps; the stepper lands on 0.1 by its
+    // own step count, so a few rounding errors apart) and unlike the undriven one.
+    let (mut by_hand, mut undriven) = (start, start);
+    for _ in 0..100 {
+        driven.step::<Rk4>(&mut by_hand, 1e-3).unwrap();
+        arm.step::<Rk4>(&mut undriven, 1e-3).unwrap();
+    }
+    let q = run.sensitivities().state.q;
+    assert!(close(q.q1, by_hand.q.q1) && close(q.q2, by_hand.q.q2));
+    assert!((q.q1 - undriven.q.q1).abs() > 1e-4);
 }

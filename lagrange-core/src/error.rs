@@ -335,6 +335,19 @@ pub enum Error {
         name: &'static str,
     },
 
+    /// A sensitivity seed names a parameter of a mechanism driven by inputs
+    /// ([`crate::inputs::Driven`]): the forces the parameters are lifted into read no inputs, so the
+    /// run would drop them. Seeds on initial values carry the inputs.
+    #[error(
+        "parameter `{name}` cannot be differentiated by on a driven mechanism: the forces with \
+         the parameters lifted read no inputs (seed initial values, or declare the input as a \
+         parameter)"
+    )]
+    ParameterSeedWithInputs {
+        /// The parameter's name.
+        name: &'static str,
+    },
+
     /// Holding the named coordinates (or velocities) leaves fewer free ones than there are
     /// constraint rows to satisfy with them, so the constraints cannot be solved for the rest.
     #[error(

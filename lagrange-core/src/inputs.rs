@@ -296,3 +296,54 @@ where
         self.mechanism.check_parameters()
     }
 }
+
+/// ∂q̈/∂u: how the accelerations of a mechanism without constraint rows change with its inputs at
+/// a state, the inputs at `inputs` — the input matrix B of the linearized system
+/// d/dt (δq, δq̇) = A (δq, δq̇) + [0; B] δu beside [`linearize`](crate::analysis::linearize)'s A.
+/// With M q̈ = 𝓕(u) − b, B = M⁻¹ ∂𝓕/∂u: ∂𝓕/∂u from one pass of the generalized forces on dual
+/// numbers seeded on the inputs ([`WithInputs`] on `DualSVec<f64, NU>`), M⁻¹ from its Cholesky
+/// factor. Exact for inputs that enter the forces non-linearly too.
+///
+/// Errors: those of [`Mechanism::accelerations`](crate::Mechanism::accelerations) at the state;
+/// a mechanism with constraint rows ([`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod):
+/// its B is the constrained solve's, not M⁻¹ ∂𝓕/∂u).
+pub fn input_matrix<M, const N: usize, const K: usize, const NU: usize>(
+    mechanism: &M,
+    inputs: &M::Inputs,
+    state: &crate::State<<M as crate::evaluation::Dynamics<N>>::Coords>,
+) -> crate::Result<nalgebra::SMatrix<f64, N, NU>>
+where
+    M: ActuatedModel<N, K, NU> + Actuated<NU> + crate::evaluation::Dynamics<N>,
+{
+    use crate::evaluation::Dynamics;
+    use crate::Mechanism;
+    use num_dual::DualSVec;
+    if M::CONSTRAINTS != Some(0) {
+        return Err(crate::Error::UnsuitableMethod {
+            method: "input_matrix",
+            reason:
+                "the mechanism has constraint rows: its input matrix is the constrained solve's"
+                    .to_string(),
+        });
+    }
+    let u = inputs.to_array();
+    let driven = Driven::new(mechanism, u);
+    let (q, v) = driven.check(state)?;
+    driven.accelerations(state)?;
+    let seeded: [DualSVec<f64, NU>; NU] =
+        std::array::from_fn(|j| DualSVec::from_re(u[j]).derivative(j));
+    let with = WithInputs::new(mechanism, seeded);
+    let constant = |x: &[f64; N]| x.map(DualSVec::<f64, NU>::from_re);
+    let t = DualSVec::from_re(state.t);
+    let forces = crate::dynamics::equations_of_motion(&with, t, &constant(&q), &constant(&v))
+        .generalized_forces;
+    let mass_matrix = Dynamics::mass_matrix_at(mechanism, Constants::NONE, state.t, &q);
+    let l = crate::analysis::mass_cholesky::<M, N>(&mass_matrix, state.t, &q)?;
+    let mut b = nalgebra::SMatrix::<f64, N, NU>::zeros();
+    for j in 0..NU {
+        let column =
+            nalgebra::SVector::<f64, N>::from_fn(|i, _| forces[i].eps.0.map_or(0.0, |d| d[j]));
+        b.set_column(j, &crate::linalg::cholesky_substitute(&l, &column));
+    }
+    Ok(b)
+}

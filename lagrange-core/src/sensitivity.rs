@@ -223,6 +223,13 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
                     .to_string(),
             });
         }
+        let parameter = seeds.iter().find_map(|seed| match seed {
+            Seed::Parameter(name) => Some(*name),
+            _ => None,
+        });
+        if let (Some(name), false) = (parameter, self.mechanism.prepared().inputs.is_empty()) {
+            return Err(Error::ParameterSeedWithInputs { name });
+        }
         let tangent =
             seeded::<M::Coords, _, N, K, NP, P>(self.mechanism.model(), (&self.q, &self.v), seeds)?;
         Ok(self.carrying(tangent))
