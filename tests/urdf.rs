@@ -128,7 +128,12 @@ pub mod every_joint_by_hand {
 /// M₁₁ = m₁lc₁² + m₂(l₁² + lc₂² + 2l₁lc₂ cos q₂) + I₁ + I₂, M₁₂ = m₂(lc₂² + l₁lc₂ cos q₂) + I₂,
 /// M₂₂ = m₂lc₂² + I₂; h = −m₂l₁lc₂ sin q₂, C q̇ = (2h q̇₁q̇₂ + h q̇₂², −h q̇₁²);
 /// φ = ((m₁lc₁ + m₂l₁) g cos q₁ + m₂lc₂ g cos(q₁+q₂), m₂lc₂ g cos(q₁+q₂)).
+/// With the joints' efforts u (the inputs), M q̈ = u − C q̇ − c q̇ − φ.
 fn two_link_closed_form(q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
+    two_link_driven_closed_form(q, v, [0.0, 0.0])
+}
+
+fn two_link_driven_closed_form(q: [f64; 2], v: [f64; 2], u: [f64; 2]) -> [f64; 2] {
     // The file's numbers: I is iyy, the axis being ∓y.
     let (m1, m2, l1, lc1, lc2, i1, i2, g) = (2.0, 1.5, 0.6, 0.3, 0.25, 0.06, 0.03, 9.81);
     let (c1, c2) = (0.3, 0.1);
@@ -138,8 +143,8 @@ fn two_link_closed_form(q: [f64; 2], v: [f64; 2]) -> [f64; 2] {
     let h = -m2 * l1 * lc2 * q[1].sin();
     let phi1 = (m1 * lc1 + m2 * l1) * g * q[0].cos() + m2 * lc2 * g * (q[0] + q[1]).cos();
     let phi2 = m2 * lc2 * g * (q[0] + q[1]).cos();
-    let r1 = -c1 * v[0] - (2.0 * h * v[0] * v[1] + h * v[1] * v[1]) - phi1;
-    let r2 = -c2 * v[1] + h * v[0] * v[0] - phi2;
+    let r1 = u[0] - c1 * v[0] - (2.0 * h * v[0] * v[1] + h * v[1] * v[1]) - phi1;
+    let r2 = u[1] - c2 * v[1] + h * v[0] * v[0] - phi2;
     let det = m11 * m22 - m12 * m12;
     [(m22 * r1 - m12 * r2) / det, (m11 * r2 - m12 * r1) / det]
 }
@@ -163,6 +168,46 @@ fn two_link_arm_matches_its_closed_form() {
         }
     }
     agrees_with_dense::<_, _, 2, 24>(&TwoLinkArm::default(), &TwoLinkArm::default());
+}
+
+#[test]
+fn a_driven_two_link_arm_matches_its_closed_form_and_inverse_dynamics_gives_its_efforts() {
+    use two_link_arm::{Coords, Efforts, State, TwoLinkArm};
+    assert_eq!(
+        <Efforts as lagrange::Inputs<2>>::NAMES,
+        ["shoulder_effort", "elbow_effort"]
+    );
+    let sys = TwoLinkArm::default().validated().unwrap();
+    for (k, (q, v)) in states::<2>(6).into_iter().enumerate() {
+        let s = State::new(0.0, Coords::from_array(q), Coords::from_array(v));
+        let u = [3.0 - k as f64, 0.5 * k as f64 - 1.0];
+        let efforts = Efforts {
+            shoulder_effort: u[0],
+            elbow_effort: u[1],
+        };
+        let qdd = sys.driven(&efforts).accelerations(&s).unwrap().to_array();
+        let exact = two_link_driven_closed_form(q, v, u);
+        // As in the undriven comparison: exact formulas, rounding apart.
+        let scale = exact[0].abs().max(exact[1].abs());
+        for j in 0..2 {
+            close(qdd[j], exact[j], scale, "driven q̈ against the closed form");
+        }
+        // Computed torque: the generalized forces inverse dynamics returns at zero efforts are
+        // the efforts that give the wanted q̈ (each effort acts on its own joint).
+        let wanted = Coords::from_array([1.0 - 0.3 * k as f64, 0.7]);
+        let tau = sys.inverse_dynamics(&s, &wanted).unwrap();
+        let efforts = Efforts {
+            shoulder_effort: tau.shoulder,
+            elbow_effort: tau.elbow,
+        };
+        let reached = sys.driven(&efforts).accelerations(&s).unwrap();
+        for (got, want) in [
+            (reached.shoulder, wanted.shoulder),
+            (reached.elbow, wanted.elbow),
+        ] {
+            close(got, want, 1.0 + want.abs(), "q̈ under computed torque");
+        }
+    }
 }
 
 #[test]

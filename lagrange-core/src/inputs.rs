@@ -110,6 +110,7 @@ where
     const RHEONOMIC: bool = M::RHEONOMIC;
     const HAS_POTENTIAL: bool = M::HAS_POTENTIAL;
     const HAS_FORCES: bool = M::HAS_FORCES;
+    const GENERALIZED_FORCES_ONLY: bool = M::GENERALIZED_FORCES_ONLY;
     const DEPENDS: [[bool; N]; K] = M::DEPENDS;
     const HAS_GRAVITY: bool = M::HAS_GRAVITY;
 

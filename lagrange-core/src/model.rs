@@ -169,6 +169,11 @@ pub trait Model<const N: usize, const K: usize> {
     const HAS_POTENTIAL: bool;
     /// Whether applied Cartesian or generalized forces are declared.
     const HAS_FORCES: bool;
+    /// Whether every applied force is a generalized force on a coordinate that reads no body's
+    /// position or velocity (a motor, joint damping): [`applied_forces`](Model::applied_forces)
+    /// then reads neither `x` nor `x_dot`, and a rigid tree evaluates it without forming x or
+    /// its Jacobian. `false`, the safe default, for an implementation that does not say.
+    const GENERALIZED_FORCES_ONLY: bool = false;
 
     /// `DEPENDS[i][j]`: row i of x may depend on coordinate j. `false` only where the declaration
     /// shows it cannot (row i's body, and the bodies it is placed from, never name coordinate j; or

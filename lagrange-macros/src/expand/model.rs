@@ -101,6 +101,23 @@ fn depends_const(model: &Model) -> Option<TokenStream> {
     Some(quote!(const DEPENDS: [[bool; #n]; #k] = [#(#rows),*];))
 }
 
+/// Whether every force is a `#[generalized_force]` that names no body and no body velocity (a
+/// motor, joint damping): its value needs neither x nor ẋ (`Model::GENERALIZED_FORCES_ONLY`).
+fn generalized_forces_only(model: &Model) -> bool {
+    let bodies: std::collections::BTreeSet<String> = model
+        .bodies
+        .iter()
+        .flat_map(|b| {
+            let name = b.decl.ident().to_string();
+            [format!("{name}_dot"), name]
+        })
+        .collect();
+    model.forces.iter().all(|f| {
+        f.kind == crate::attr::Kind::GeneralizedForce
+            && model.names_used_by([f.decl]).is_disjoint(&bodies)
+    })
+}
+
 /// The `Model` impl.
 pub(super) fn model_impl(model: &Model) -> TokenStream {
     let p = private();
@@ -113,6 +130,11 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     let rheonomic = model.rheonomic;
     let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
     let has_forces = !model.forces.is_empty();
+    let generalized_only = (has_forces && generalized_forces_only(model)).then(|| {
+        quote!(
+            const GENERALIZED_FORCES_ONLY: bool = true;
+        )
+    });
     let validate = validate_fn(model);
     let masses = masses_fn(model);
     let cartesian = cartesian_fn(model, Params::Fields);
@@ -129,6 +151,7 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
             const RHEONOMIC: bool = #rheonomic;
             const HAS_POTENTIAL: bool = #has_potential;
             const HAS_FORCES: bool = #has_forces;
+            #generalized_only
             #depends
             #validate
             #masses

@@ -1,7 +1,8 @@
 //! The declaration a user would write for the bodies of a file, as tokens for `#[mechanism]`:
 //! `Coords` (one field per moving joint), the parameter struct (`g`, and a damping and a friction
 //! coefficient per joint whose `<dynamics>` gives one) with a `Default` holding the file's values,
-//! one `#[rigid_body]` per body placed by its joint frame, gravity, and the joint forces.
+//! the inputs (`Efforts`, one per moving joint), one `#[rigid_body]` per body placed by its joint
+//! frame, gravity, and the joint forces (each joint's actuator, damping and friction).
 
 use super::frames::{turn_z_to, Vec3};
 use super::parse::Robot;
@@ -33,9 +34,20 @@ impl Declaration<'_> {
             quote!(g: #g)
         }];
         let mut forces = Vec::new();
+        let mut efforts = Vec::new();
         for (b, q) in self.bodies.iter().zip(coords) {
             let joint = &self.robot.joints[b.joint];
             let dot = format_ident!("{}_dot", q);
+            // Every moving joint is actuated: its effort (torque, or force along a prismatic
+            // axis) is an input, acting on its coordinate.
+            let effort = format_ident!("{}_effort", q);
+            let on = format_ident!("{}_actuator", q);
+            efforts.push(effort.clone());
+            forces.push(quote! {
+                /// The joint's actuator: the effort the program sets (an input).
+                #[generalized_force(on = #q)]
+                fn #on() -> f64 { #effort }
+            });
             if joint.damping != 0.0 {
                 let c = format_ident!("{}_damping", q);
                 let f = format_ident!("{}_damping_force", q);
@@ -78,6 +90,10 @@ impl Declaration<'_> {
             impl ::core::default::Default for #ty {
                 fn default() -> Self { Self { #(#defaults,)* } }
             }
+            /// One input per moving joint: the effort its actuator applies (a torque about a
+            /// revolute or continuous joint's axis, a force along a prismatic joint's).
+            #[inputs]
+            pub struct Efforts { #(pub #efforts: f64,)* }
             #(#bodies)*
             /// Gravity along −z.
             #[gravity]

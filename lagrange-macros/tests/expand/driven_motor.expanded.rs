@@ -206,6 +206,7 @@ pub mod motor {
         const RHEONOMIC: bool = false;
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = true;
+        const GENERALIZED_FORCES_ONLY: bool = true;
         const DEPENDS: [[bool; 1]; 3] = [[false], [false], [true]];
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

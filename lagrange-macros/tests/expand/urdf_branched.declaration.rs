@@ -18,6 +18,16 @@ pub mod m {
             Self { g: 9.81 }
         }
     }
+    /// One input per moving joint: the effort its actuator applies (a torque about a
+    /// revolute or continuous joint's axis, a force along a prismatic joint's).
+    #[inputs]
+    pub struct Efforts {
+        pub l_shoulder_effort: f64,
+        pub l_elbow_effort: f64,
+        pub r_shoulder_effort: f64,
+        pub r_elbow_effort: f64,
+        pub neck_effort: f64,
+    }
     ///Link `l_upper`, moved by joint `l_shoulder`.
     #[rigid_body(
         mass = 1.8,
@@ -116,5 +126,30 @@ pub mod m {
     #[gravity]
     fn gravity() -> Vec3 {
         vec3(0.0, 0.0, -g)
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = l_shoulder)]
+    fn l_shoulder_actuator() -> f64 {
+        l_shoulder_effort
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = l_elbow)]
+    fn l_elbow_actuator() -> f64 {
+        l_elbow_effort
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = r_shoulder)]
+    fn r_shoulder_actuator() -> f64 {
+        r_shoulder_effort
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = r_elbow)]
+    fn r_elbow_actuator() -> f64 {
+        r_elbow_effort
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = neck)]
+    fn neck_actuator() -> f64 {
+        neck_effort
     }
 }

@@ -26,6 +26,16 @@ pub mod m {
             }
         }
     }
+    /// One input per moving joint: the effort its actuator applies (a torque about a
+    /// revolute or continuous joint's axis, a force along a prismatic joint's).
+    #[inputs]
+    pub struct Efforts {
+        pub yaw_effort: f64,
+        pub reach_effort: f64,
+        pub spin_effort: f64,
+        pub slide_effort: f64,
+        pub tilt_effort: f64,
+    }
     ///Link `turret`, moved by joint `yaw`.
     #[rigid_body(
         mass = 3.3,
@@ -137,6 +147,26 @@ pub mod m {
     fn gravity() -> Vec3 {
         vec3(0.0, 0.0, -g)
     }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = yaw)]
+    fn yaw_actuator() -> f64 {
+        yaw_effort
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = reach)]
+    fn reach_actuator() -> f64 {
+        reach_effort
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = spin)]
+    fn spin_actuator() -> f64 {
+        spin_effort
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = slide)]
+    fn slide_actuator() -> f64 {
+        slide_effort
+    }
     /// Viscous joint damping, −c q̇ (`<dynamics damping>`).
     #[generalized_force(on = slide)]
     fn slide_damping_force() -> f64 {
@@ -149,6 +179,11 @@ pub mod m {
     #[generalized_force(on = slide)]
     fn slide_friction_force() -> f64 {
         -slide_friction * (slide_dot / slide_dot.abs().max(2.2250738585072014e-308))
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = tilt)]
+    fn tilt_actuator() -> f64 {
+        tilt_effort
     }
     /// Viscous joint damping, −c q̇ (`<dynamics damping>`).
     #[generalized_force(on = tilt)]

@@ -21,6 +21,13 @@ pub mod m {
             }
         }
     }
+    /// One input per moving joint: the effort its actuator applies (a torque about a
+    /// revolute or continuous joint's axis, a force along a prismatic joint's).
+    #[inputs]
+    pub struct Efforts {
+        pub shoulder_effort: f64,
+        pub elbow_effort: f64,
+    }
     ///Link `upper`, moved by joint `shoulder`.
     #[rigid_body(
         mass = 2.0,
@@ -60,10 +67,20 @@ pub mod m {
     fn gravity() -> Vec3 {
         vec3(0.0, 0.0, -g)
     }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = shoulder)]
+    fn shoulder_actuator() -> f64 {
+        shoulder_effort
+    }
     /// Viscous joint damping, −c q̇ (`<dynamics damping>`).
     #[generalized_force(on = shoulder)]
     fn shoulder_damping_force() -> f64 {
         -shoulder_damping * shoulder_dot
+    }
+    /// The joint's actuator: the effort the program sets (an input).
+    #[generalized_force(on = elbow)]
+    fn elbow_actuator() -> f64 {
+        elbow_effort
     }
     /// Viscous joint damping, −c q̇ (`<dynamics damping>`).
     #[generalized_force(on = elbow)]

@@ -24,6 +24,14 @@ pub fn other_generalized_forces<M: Model<N, K>, S: Scalar, const N: usize, const
     if !M::HAS_FORCES && !M::HAS_POTENTIAL {
         return forces;
     }
+    // Motors and joint damping alone: no x, no Jacobian (the forces read neither).
+    if M::GENERALIZED_FORCES_ONLY && !M::HAS_POTENTIAL {
+        let unread = [S::zero(); K];
+        let mut cartesian = [S::zero(); K];
+        let mut direct = [S::zero(); N];
+        model.applied_forces(t, q, v, &unread, &unread, &mut cartesian, &mut direct);
+        return SVector::from(direct);
+    }
     let (x1, _, _) = dynamics::cartesian_with_jacobian(model, t, q);
     let x: [S; K] = std::array::from_fn(|i| x1[i].re);
     let rows: [Option<SVector<S, N>>; K] = std::array::from_fn(|i| x1[i].eps.0);
