@@ -425,3 +425,86 @@ fn sensitivities_to_a_parameter_are_refused_on_a_driven_mechanism() {
     assert!(close(q.q1, by_hand.q.q1) && close(q.q2, by_hand.q.q2));
     assert!((q.q1 - undriven.q.q1).abs() > 1e-4);
 }
+
+/// Two point masses on massless rods, a motor at the elbow only (an acrobot): underactuated.
+#[mechanism]
+pub mod acrobot {
+    pub struct Coords {
+        pub shoulder: f64,
+        pub elbow: f64,
+    }
+    pub struct Acrobot {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[inputs]
+    pub struct Motor {
+        pub torque: f64,
+    }
+    #[particle(mass = m)]
+    fn upper() -> Vec2 {
+        vec2(shoulder.sin(), -shoulder.cos()) * l
+    }
+    #[particle(mass = m)]
+    fn lower() -> Vec2 {
+        upper + vec2((shoulder + elbow).sin(), -(shoulder + elbow).cos()) * l
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+    #[generalized_force(on = elbow)]
+    fn motor() -> f64 {
+        torque
+    }
+}
+
+#[test]
+fn inverse_dynamics_gives_the_inputs_where_each_acts_on_a_coordinate_of_its_own() {
+    use lagrange::inputs::Actuated;
+    assert_eq!(<acrobot::Acrobot as Actuated<1>>::COORDINATES, Some([1]));
+    // The arm's wrist torque acts through the body: no coordinate map.
+    assert_eq!(<driven_arm::DrivenArm as Actuated<3>>::COORDINATES, None);
+    let sys = acrobot::Acrobot {
+        m: 1.0,
+        l: 0.8,
+        g: 9.81,
+    };
+    let state = acrobot::State {
+        t: 0.0,
+        q: acrobot::Coords {
+            shoulder: 0.4,
+            elbow: -0.3,
+        },
+        v: acrobot::Coords {
+            shoulder: 1.0,
+            elbow: 0.5,
+        },
+    };
+    // Accelerations the motor can produce (those of a torque of 2.5) give back that torque; the
+    // shoulder's generalized force is then zero to rounding.
+    let reachable = sys
+        .driven(&acrobot::Motor { torque: 2.5 })
+        .accelerations(&state)
+        .unwrap();
+    let u = sys.inverse_dynamics_inputs(&state, &reachable).unwrap();
+    assert!((u.torque - 2.5).abs() < 1e-12, "{u:?}");
+    // Accelerations that need a shoulder torque are refused, naming the shoulder.
+    let wanted = acrobot::Coords {
+        shoulder: 1.0,
+        elbow: 1.0,
+    };
+    let refused = sys.inverse_dynamics_inputs(&state, &wanted);
+    assert!(
+        matches!(&refused, Err(Error::UnsuitableMethod { reason, .. }) if reason.contains("`shoulder`")),
+        "{refused:?}"
+    );
+    // Inputs that are not one generalized force per coordinate are refused.
+    let (arm, _, _) = arm_pair([0.0, 0.0], 0.0);
+    let arm_state = driven_arm::State::at_rest(driven_arm::Coords { q1: 0.1, q2: 0.2 });
+    assert!(matches!(
+        arm.inverse_dynamics_inputs(&arm_state, &driven_arm::Coords { q1: 0.0, q2: 0.0 }),
+        Err(Error::UnsuitableMethod { .. })
+    ));
+}

@@ -200,6 +200,8 @@ fn a_driven_two_link_arm_matches_its_closed_form_and_inverse_dynamics_gives_its_
             shoulder_effort: tau.shoulder,
             elbow_effort: tau.elbow,
         };
+        // Every joint is actuated: the same efforts, read off by name.
+        assert_eq!(sys.inverse_dynamics_inputs(&s, &wanted).unwrap(), efforts);
         let reached = sys.driven(&efforts).accelerations(&s).unwrap();
         for (got, want) in [
             (reached.shoulder, wanted.shoulder),

@@ -39,6 +39,13 @@ pub trait Inputs<const NU: usize>: Copy + Default + std::fmt::Debug {
 pub trait Actuated<const NU: usize> {
     /// The `#[inputs]` struct.
     type Inputs: Inputs<NU>;
+    /// Where every input is a generalized force on a coordinate of its own — declared as
+    /// `#[generalized_force(on = q)] fn motor() -> f64 { u }` (or `{ tau[2] }`), read nowhere
+    /// else — the coordinate each input acts on, in input order: then the inputs that give wanted
+    /// accelerations are read off inverse dynamics
+    /// ([`Mechanism::inverse_dynamics_inputs`](crate::Mechanism::inverse_dynamics_inputs)).
+    /// `None` otherwise.
+    const COORDINATES: Option<[usize; NU]> = None;
 }
 
 /// A [`Model`] whose applied forces read inputs: `#[mechanism]` implements it for a declaration

@@ -46,6 +46,52 @@ pub trait Mechanism<const N: usize>: Evaluate<N> {
         Driven::new(self, inputs.to_array())
     }
 
+    /// The inputs that make the mechanism move with `accelerations` at `state` (computed torque),
+    /// for a declaration whose every input is a generalized force on a coordinate of its own
+    /// ([`Actuated::COORDINATES`]): the generalized forces τ of
+    /// [`inverse_dynamics`](Mechanism::inverse_dynamics) at zero inputs, read on the actuated
+    /// coordinates. The unactuated coordinates must need none: τⱼ there is zero to rounding
+    /// (|τⱼ| ≤ 1e-12 · (1 + max |τ|)).
+    ///
+    /// Errors: those of `inverse_dynamics`; inputs that are not one generalized force per
+    /// coordinate, or accelerations an unactuated coordinate cannot follow
+    /// ([`Error::UnsuitableMethod`], naming the coordinate).
+    fn inverse_dynamics_inputs<const NU: usize>(
+        &self,
+        state: &State<Self::Coords>,
+        accelerations: &Self::Coords,
+    ) -> Result<<Self::Model as Actuated<NU>>::Inputs>
+    where
+        Self::Model: Actuated<NU>,
+    {
+        let Some(coordinates) = <Self::Model as Actuated<NU>>::COORDINATES else {
+            return Err(Error::UnsuitableMethod {
+                method: "inverse_dynamics_inputs",
+                reason: "the inputs are not each one generalized force on a coordinate of its own"
+                    .to_string(),
+            });
+        };
+        let tau = self.inverse_dynamics(state, accelerations)?.to_array();
+        let scale = 1.0 + tau.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        for (j, name) in Self::Coords::NAMES.iter().enumerate() {
+            if !coordinates.contains(&j) && tau[j].abs() > 1e-12 * scale {
+                return Err(Error::UnsuitableMethod {
+                    method: "inverse_dynamics_inputs",
+                    reason: format!(
+                        "coordinate `{name}` has no input, and the wanted accelerations need a \
+                         generalized force of {} on it",
+                        tau[j]
+                    ),
+                });
+            }
+        }
+        Ok(
+            <<Self::Model as Actuated<NU>>::Inputs as crate::inputs::Inputs<NU>>::from_array(
+                coordinates.map(|j| tau[j]),
+            ),
+        )
+    }
+
     /// The generalized accelerations q̈, by name.
     ///
     /// Errors: non-finite parameters or state, a singular mass matrix (the error names the

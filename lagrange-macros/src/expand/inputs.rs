@@ -48,6 +48,10 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
         }
     }
     let forces = applied_forces_fn(model, Forces::WithInputs);
+    let coordinates = input_coordinates(model).map(|js| {
+        let js = js.into_iter().map(lit);
+        quote!(const COORDINATES: #p::core::option::Option<[usize; #nu]> = #p::core::option::Option::Some([#(#js),*]);)
+    });
     quote! {
         #[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq)]
         #declared
@@ -70,9 +74,70 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
         }
         impl #p::lagrange_core::inputs::Actuated<#nu> for #params {
             type Inputs = #ident;
+            #coordinates
         }
         impl #p::lagrange_core::inputs::ActuatedModel<#n, #k, #nu> for #params {
             #forces
         }
     }
+}
+
+/// The coordinate each input acts on, in input order, where every input is the whole of one
+/// `#[generalized_force(on = q)]` (`{ u }`, or `{ tau[2] }` for an element) named by no other
+/// force, each on a coordinate of its own; `None` otherwise.
+fn input_coordinates(model: &Model) -> Option<Vec<usize>> {
+    // Slot of the input an expression is, if it is one: `u`, or `tau[k]` with a literal k.
+    let slot_of = |expr: &syn::Expr| -> Option<usize> {
+        let (name, element) = match expr {
+            syn::Expr::Path(p) => (p.path.get_ident()?, None),
+            syn::Expr::Index(i) => match (&*i.expr, &*i.index) {
+                (
+                    syn::Expr::Path(p),
+                    syn::Expr::Lit(syn::ExprLit {
+                        lit: syn::Lit::Int(k),
+                        ..
+                    }),
+                ) => (p.path.get_ident()?, Some(k.base10_parse::<usize>().ok()?)),
+                _ => return None,
+            },
+            _ => return None,
+        };
+        let mut first = 0;
+        for u in model.inputs {
+            if u.ident == *name {
+                return match (&u.array, element) {
+                    (None, None) => Some(first),
+                    (Some((_, len)), Some(k)) if k < *len => Some(first + k),
+                    _ => None,
+                };
+            }
+            first += u.slots();
+        }
+        None
+    };
+    let count = model.input_count()?;
+    let mut coordinates: Vec<Option<usize>> = vec![None; count];
+    let inputs: std::collections::BTreeSet<String> =
+        model.inputs.iter().map(|u| u.ident.to_string()).collect();
+    for force in &model.forces {
+        let whole = match force.decl.block.stmts.as_slice() {
+            [syn::Stmt::Expr(expr, None)] if force.kind == crate::attr::Kind::GeneralizedForce => {
+                slot_of(expr)
+            }
+            _ => None,
+        };
+        match whole {
+            // A second force for the same input, or a second input on the coordinate.
+            Some(slot)
+                if coordinates[slot].is_none() && !coordinates.contains(&Some(force.target)) =>
+            {
+                coordinates[slot] = Some(force.target)
+            }
+            Some(_) => return None,
+            // Any other force that names an input.
+            None if !model.names_used_by([force.decl]).is_disjoint(&inputs) => return None,
+            None => {}
+        }
+    }
+    coordinates.into_iter().collect()
 }
