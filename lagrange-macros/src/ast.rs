@@ -365,14 +365,16 @@ impl Mechanism {
             cx.error_spanned_by(&marker, "`Coords` are the coordinates; inputs are a struct of their own (`#[inputs] pub struct Torques { .. }`)");
             return;
         }
-        if let Some((first, _)) = &self.inputs {
+        let fields = struct_fields(cx, &s, Fields::Inputs);
+        if let Some((first, known)) = &mut self.inputs {
             cx.error_spanned_by(
                 &s.ident,
                 format!("a mechanism has one `#[inputs]` struct, `{}`", first.ident),
             );
+            // Its fields are still names the functions may read: one message, not one per use.
+            known.extend(fields);
             return;
         }
-        let fields = struct_fields(cx, &s, Fields::Inputs);
         self.inputs = Some((s, fields));
     }
 

@@ -155,8 +155,8 @@ impl Resolver<'_, '_> {
         let in_scope = match self.context {
             Context::Position(_) => "a coordinate, parameter, `t`, body or point declared earlier, or item of this module",
             Context::Potential | Context::Constraint => "a coordinate, parameter, `t`, body, point, or item of this module",
-            Context::Force => "a coordinate, parameter, input, `t`, body, point, their `_dot` velocities, or item of this module",
-            Context::VelocityRow => "a coordinate, parameter, `t`, body, point, their `_dot` velocities, or item of this module",
+            Context::Force if !self.model.inputs.is_empty() => "a coordinate, parameter, input, `t`, body, point, their `_dot` velocities, or item of this module",
+            Context::Force | Context::VelocityRow => "a coordinate, parameter, `t`, body, point, their `_dot` velocities, or item of this module",
             Context::Mass | Context::CentreOfMass => "a parameter or an item of this module",
         };
         Some(format!("unknown name `{ident}`: it is not {in_scope}"))

@@ -4,17 +4,13 @@
 //! error of its own.
 
 use super::bodies::bodies_structs;
+use super::{lit, private};
 use crate::ast::{Field, Mechanism};
 use crate::check::Model;
 use crate::ctxt;
 use proc_macro2::TokenStream;
 use quote::quote;
 use std::collections::BTreeSet;
-
-/// An unsuffixed integer literal (`3`, not `3usize`).
-fn lit(n: usize) -> proc_macro2::Literal {
-    proc_macro2::Literal::usize_unsuffixed(n)
-}
 
 /// On error: the user's items, stubs for what the rest of their code names (`Coords`, the
 /// parameter struct, `State`, a `Mechanism`, `Declaration` and `Drawable` impl that is never
@@ -48,6 +44,15 @@ pub(crate) fn fallback(
             #impls
         }
     });
+    // The inputs struct as written (its `#[inputs]` removed), so code naming it still compiles.
+    let inputs = mechanism.inputs.as_ref().map(|(s, _)| {
+        let s = params_struct(s);
+        let p = private();
+        quote! {
+            #[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::default::Default, #p::core::cmp::PartialEq)]
+            #s
+        }
+    });
     let errors = ctxt::to_compile_errors(errors);
     quote! {
         #(#attrs)*
@@ -55,6 +60,7 @@ pub(crate) fn fallback(
         #vis mod #ident {
             #(#other_items)*
             #params
+            #inputs
             #coords_items
             #errors
         }
@@ -96,7 +102,7 @@ fn bodies_stub(model: &Model, ident: &syn::Ident) -> TokenStream {
 
 /// The `Prepare`, `Dynamics`, `Declaration` and `Drawable` impls, never run.
 fn trait_stubs(ident: &syn::Ident, n: &proc_macro2::Literal) -> TokenStream {
-    let p = quote!(::lagrange::__private);
+    let p = private();
     let unreachable = unreachable();
     quote! {
         impl #p::Prepare for #ident {
@@ -165,7 +171,7 @@ fn is_cfg(attr: &syn::Attribute) -> bool {
 /// `State`: what code outside the module names. An array whose length the macro could not read
 /// keeps the length as written, so the user's own uses of it type-check as they would have.
 fn coords_stub(mechanism: &Mechanism, coords: &[Field]) -> TokenStream {
-    let p = quote!(::lagrange::__private);
+    let p = private();
     let n = lit(crate::ast::slot_count(coords));
     let attrs = mechanism
         .coords

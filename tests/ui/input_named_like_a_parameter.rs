@@ -1,0 +1,31 @@
+use lagrange::prelude::*;
+
+// `f` is both a parameter and an input.
+#[mechanism]
+pub mod cart {
+    pub struct Coords {
+        pub x: f64,
+    }
+
+    pub struct Cart {
+        pub m: f64,
+        pub f: f64,
+    }
+
+    #[inputs]
+    pub struct Push {
+        pub f: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[generalized_force(on = x)]
+    fn drive() -> f64 {
+        f
+    }
+}
+
+fn main() {}

@@ -1,0 +1,35 @@
+use lagrange::prelude::*;
+
+// Two structs of inputs: a mechanism has one.
+#[mechanism]
+pub mod cart {
+    pub struct Coords {
+        pub x: f64,
+    }
+
+    pub struct Cart {
+        pub m: f64,
+    }
+
+    #[inputs]
+    pub struct Push {
+        pub f: f64,
+    }
+
+    #[inputs]
+    pub struct Brake {
+        pub b: f64,
+    }
+
+    #[particle(mass = m)]
+    fn bob() -> Vec2 {
+        vec2(x, 0.0)
+    }
+
+    #[generalized_force(on = x)]
+    fn drive() -> f64 {
+        f - b
+    }
+}
+
+fn main() {}
