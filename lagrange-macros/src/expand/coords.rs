@@ -78,36 +78,57 @@ fn default_impl(coords: &[Field]) -> TokenStream {
     }
 }
 
-/// The `Coordinates` impl: the names, the flattened values and the values' fields, element by
-/// element for arrays, in declaration order.
-fn coordinates_impl(coords: &[Field], n: &Literal) -> TokenStream {
-    let p = private();
-    let mut strings = Vec::new();
-    let mut flat = Vec::new();
-    let mut rebuilt = Vec::new();
+/// A struct of `f64` fields (and arrays) as flat values, element by element for arrays, in
+/// declaration order: each value's name (`theta`, `q[0]`), its expression on `self`, and each
+/// field rebuilt from the array `values`.
+pub(super) struct FlatFields {
+    pub(super) names: Vec<String>,
+    pub(super) flat: Vec<TokenStream>,
+    pub(super) rebuilt: Vec<TokenStream>,
+}
+
+/// [`FlatFields`] of `fields`, rebuilt from the array named `values`.
+pub(super) fn flat_fields(fields: &[Field], values: &TokenStream) -> FlatFields {
+    let mut out = FlatFields {
+        names: Vec::new(),
+        flat: Vec::new(),
+        rebuilt: Vec::new(),
+    };
     let mut slot = 0;
-    for field in coords {
+    for field in fields {
         let name = &field.ident;
         match &field.array {
             Some((_, len)) => {
                 let slots: Vec<_> = (slot..slot + len).map(lit).collect();
-                strings.extend((0..*len).map(|k| format!("{name}[{k}]")));
-                flat.extend((0..*len).map(|k| {
+                out.names.extend((0..*len).map(|k| format!("{name}[{k}]")));
+                out.flat.extend((0..*len).map(|k| {
                     let k = lit(k);
                     quote!(self.#name[#k])
                 }));
-                rebuilt.push(quote!(#name: [#(values[#slots]),*]));
+                out.rebuilt.push(quote!(#name: [#(#values[#slots]),*]));
                 slot += len;
             }
             None => {
                 let s = lit(slot);
-                strings.push(name.to_string());
-                flat.push(quote!(self.#name));
-                rebuilt.push(quote!(#name: values[#s]));
+                out.names.push(name.to_string());
+                out.flat.push(quote!(self.#name));
+                out.rebuilt.push(quote!(#name: #values[#s]));
                 slot += 1;
             }
         }
     }
+    out
+}
+
+/// The `Coordinates` impl: the names, the flattened values and the values' fields, element by
+/// element for arrays, in declaration order.
+fn coordinates_impl(coords: &[Field], n: &Literal) -> TokenStream {
+    let p = private();
+    let FlatFields {
+        names: strings,
+        flat,
+        rebuilt,
+    } = flat_fields(coords, &quote!(values));
     quote! {
         impl #p::Coordinates<#n> for Coords<f64> {
             const NAMES: [&'static str; #n] = [#(#strings),*];

@@ -2,6 +2,7 @@
 //! flat values, zero by default), the mechanism's `Actuated` impl naming it, and the
 //! `ActuatedModel` impl whose applied forces read the inputs (see `lagrange_core::inputs`).
 
+use super::coords::{flat_fields, FlatFields};
 use super::model::{applied_forces_fn, Forces};
 use super::{lit, private};
 use crate::check::Model;
@@ -21,32 +22,11 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
     // The user's attributes but their derives: the struct derives what `Inputs` needs itself.
     let mut declared = inputs_struct.clone();
     declared.attrs.retain(|a| !a.path().is_ident("derive"));
-    let mut names = Vec::new();
-    let mut values = Vec::new();
-    let mut fields_from = Vec::new();
-    let mut slot = 0;
-    for f in fields {
-        let field = &f.ident;
-        match &f.array {
-            Some((_, len)) => {
-                let slots: Vec<_> = (slot..slot + len).map(lit).collect();
-                names.extend((0..*len).map(|i| format!("{field}[{i}]")));
-                values.extend((0..*len).map(|i| {
-                    let i = lit(i);
-                    quote!(self.#field[#i])
-                }));
-                fields_from.push(quote!(#field: [#(__values[#slots]),*]));
-                slot += len;
-            }
-            None => {
-                let i = lit(slot);
-                names.push(field.to_string());
-                values.push(quote!(self.#field));
-                fields_from.push(quote!(#field: __values[#i]));
-                slot += 1;
-            }
-        }
-    }
+    let FlatFields {
+        names,
+        flat: values,
+        rebuilt: fields_from,
+    } = flat_fields(fields, &quote!(__values));
     let forces = applied_forces_fn(model, Forces::WithInputs);
     let coordinates = input_coordinates(model).map(|js| {
         let js = js.into_iter().map(lit);

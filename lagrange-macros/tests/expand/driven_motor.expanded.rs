@@ -64,9 +64,6 @@ pub mod motor {
                 __D,
             >(&__u[0]);
             let [theta_dot] = *__v;
-            let Bodies { disc } = self.__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { disc: disc_dot } = self
-                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __generalized_force_drive: __D = { tau - c * theta_dot };
             __generalized_force[0] += __generalized_force_drive;
         }
@@ -634,9 +631,6 @@ pub mod motor {
             let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
             let tau: __D = <__D>::from(0.0);
             let [theta_dot] = *__v;
-            let Bodies { disc } = self.__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { disc: disc_dot } = self
-                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __generalized_force_drive: __D = { tau - c * theta_dot };
             __generalized_force[0] += __generalized_force_drive;
         }

@@ -538,9 +538,6 @@ pub mod everything {
                 -c
             });
             let [theta_dot, phi_dot] = *__v;
-            let Bodies { bar, tip, top } = self.__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = self
-                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_push: ::lagrange::__private::geometry::Vec2<__D> = {
                 vec2(c, <__D>::from(0.0))
             };
@@ -905,9 +902,6 @@ pub mod everything {
             let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
             let tau: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[4]);
             let [theta_dot, phi_dot] = *__v;
-            let Bodies { bar, tip, top } = self.__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = self
-                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_push: ::lagrange::__private::geometry::Vec2<__D> = {
                 vec2(c, <__D>::from(0.0))
             };

@@ -234,7 +234,6 @@ pub mod pendulum {
                 -c
             });
             let [theta_dot] = *__v;
-            let Bodies { bob } = self.__lagrange_bodies_from_cartesian(__x);
             let BodyVelocities { bob: bob_dot } = self
                 .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_drag: ::lagrange::__private::geometry::Vec2<__D> = {
@@ -497,7 +496,6 @@ pub mod pendulum {
             let [theta] = *__q;
             let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
             let [theta_dot] = *__v;
-            let Bodies { bob } = self.__lagrange_bodies_from_cartesian(__x);
             let BodyVelocities { bob: bob_dot } = self
                 .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_drag: ::lagrange::__private::geometry::Vec2<__D> = {

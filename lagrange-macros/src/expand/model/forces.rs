@@ -46,12 +46,24 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> Toke
     let inputs = bind_inputs_from(model, &used, quote!(__q), params);
     let input_values = bind_input_values(model, &used, which);
     let velocities = bind_coordinates(model, &quote!(__v), "_dot");
-    let bodies = bind_bodies(model);
+    // The bodies and their velocities, where a force names them: a spatial body's frame from its
+    // rows costs a decomposition of its inertia (its principal axes), which forces on coordinates
+    // alone (motors, joint damping) do not pay.
+    let names_body = |suffix: &str| {
+        model
+            .bodies
+            .iter()
+            .any(|b| used.contains(&format!("{}{suffix}", b.decl.ident())))
+    };
+    let bodies = names_body("").then(|| bind_bodies(model));
     let names = model.bodies.iter().map(|b| b.decl.ident());
     let body_velocities = model
         .bodies
         .iter()
         .map(|b| format_ident!("{}_dot", b.decl.ident()));
+    let velocities_of_bodies = names_body("_dot").then(|| {
+        quote!(let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);)
+    });
     let (shared, blocks) =
         optimized_blocks_from(model, model.forces.iter().map(|f| &f.decl.block), params);
     let forces = model
@@ -97,7 +109,7 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> Toke
             #shared
             #velocities
             #bodies
-            let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);
+            #velocities_of_bodies
             #(#forces)*
         }
     }
