@@ -65,6 +65,31 @@ pub trait ActuatedModel<const N: usize, const K: usize, const NU: usize>: Model<
         cartesian_force: &mut [S; K],
         generalized_force: &mut [S; N],
     );
+
+    /// [`Model::coordinate_forces`] with the inputs `u`: by default the applied forces with x
+    /// and ẋ zero (which forces on coordinates alone do not read).
+    #[inline(always)]
+    fn coordinate_forces_with_inputs<S: Scalar, U: Scalar>(
+        &self,
+        u: &[U; NU],
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+        generalized_force: &mut [S; N],
+    ) {
+        let unread = [S::zero(); K];
+        let mut cartesian = [S::zero(); K];
+        self.applied_forces_with_inputs(
+            u,
+            t,
+            q,
+            v,
+            &unread,
+            &unread,
+            &mut cartesian,
+            generalized_force,
+        );
+    }
 }
 
 /// An input's value `u` as the scalar `S` a force function evaluates on (see [`lift`]).
@@ -169,6 +194,17 @@ where
     }
     fn gradient_coefficients(&self, scale: &[f64; N]) -> [f64; GRADIENT_COEFFICIENTS] {
         self.model.gradient_coefficients(scale)
+    }
+    #[inline(always)]
+    fn coordinate_forces<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+        generalized_force: &mut [S; N],
+    ) {
+        self.model
+            .coordinate_forces_with_inputs(&self.inputs, t, q, v, generalized_force)
     }
     #[inline(always)]
     fn applied_forces<S: Scalar>(

@@ -175,6 +175,23 @@ pub trait Model<const N: usize, const K: usize> {
     /// its Jacobian. `false`, the safe default, for an implementation that does not say.
     const GENERALIZED_FORCES_ONLY: bool = false;
 
+    /// Adds the applied forces of a model whose forces are all generalized forces that read no
+    /// body ([`GENERALIZED_FORCES_ONLY`](Model::GENERALIZED_FORCES_ONLY)) to `generalized_force`,
+    /// without x. By default [`applied_forces`](Model::applied_forces) with x and ẋ zero (which
+    /// such forces do not read); `#[mechanism]` writes it without them.
+    #[inline(always)]
+    fn coordinate_forces<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+        generalized_force: &mut [S; N],
+    ) {
+        let unread = [S::zero(); K];
+        let mut cartesian = [S::zero(); K];
+        self.applied_forces(t, q, v, &unread, &unread, &mut cartesian, generalized_force);
+    }
+
     /// `DEPENDS[i][j]`: row i of x may depend on coordinate j. `false` only where the declaration
     /// shows it cannot (row i's body, and the bodies it is placed from, never name coordinate j; or
     /// the body writes its components out and row i's component does not): a structural zero of

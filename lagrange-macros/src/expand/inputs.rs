@@ -3,7 +3,7 @@
 //! `ActuatedModel` impl whose applied forces read the inputs (see `lagrange_core::inputs`).
 
 use super::coords::{flat_fields, FlatFields};
-use super::model::{applied_forces_fn, Forces};
+use super::model::{applied_forces_fn, coordinate_forces_fn, generalized_forces_only, Forces};
 use super::{lit, private};
 use crate::check::Model;
 use proc_macro2::TokenStream;
@@ -28,6 +28,8 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
         rebuilt: fields_from,
     } = flat_fields(fields, &quote!(__values));
     let forces = applied_forces_fn(model, Forces::WithInputs);
+    let coordinate_forces = (!model.forces.is_empty() && generalized_forces_only(model))
+        .then(|| coordinate_forces_fn(model, Forces::WithInputs));
     let coordinates = input_coordinates(model).map(|js| {
         let js = js.into_iter().map(lit);
         quote!(const COORDINATES: #p::core::option::Option<[usize; #nu]> = #p::core::option::Option::Some([#(#js),*]);)
@@ -58,6 +60,7 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
         }
         impl #p::lagrange_core::inputs::ActuatedModel<#n, #k, #nu> for #params {
             #forces
+            #coordinate_forces
         }
     }
 }

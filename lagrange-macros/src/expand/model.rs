@@ -16,7 +16,7 @@ mod forces;
 mod gradient;
 mod validate;
 
-pub(super) use forces::{applied_forces_fn, Forces};
+pub(super) use forces::{applied_forces_fn, coordinate_forces_fn, Forces};
 pub(super) use gradient::gradient_on_trees;
 use validate::validate_fn;
 
@@ -103,7 +103,7 @@ fn depends_const(model: &Model) -> Option<TokenStream> {
 
 /// Whether every force is a `#[generalized_force]` that names no body and no body velocity (a
 /// motor, joint damping): its value needs neither x nor ẋ (`Model::GENERALIZED_FORCES_ONLY`).
-fn generalized_forces_only(model: &Model) -> bool {
+pub(super) fn generalized_forces_only(model: &Model) -> bool {
     let bodies: std::collections::BTreeSet<String> = model
         .bodies
         .iter()
@@ -131,9 +131,8 @@ pub(super) fn model_impl(model: &Model) -> TokenStream {
     let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
     let has_forces = !model.forces.is_empty();
     let generalized_only = (has_forces && generalized_forces_only(model)).then(|| {
-        quote!(
-            const GENERALIZED_FORCES_ONLY: bool = true;
-        )
+        let forces = coordinate_forces_fn(model, Forces::Plain);
+        quote!(const GENERALIZED_FORCES_ONLY: bool = true; #forces)
     });
     let validate = validate_fn(model);
     let masses = masses_fn(model);

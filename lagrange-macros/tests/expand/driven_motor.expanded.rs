@@ -67,6 +67,35 @@ pub mod motor {
             let __generalized_force_drive: __D = { tau - c * theta_dot };
             __generalized_force[0] += __generalized_force_drive;
         }
+        #[allow(unused_variables, clippy::all)]
+        fn coordinate_forces_with_inputs<
+            __D: ::lagrange::__private::Scalar,
+            __U: ::lagrange::__private::Scalar,
+        >(
+            &self,
+            __u: &[__U; 1],
+            __t: __D,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+            __generalized_force: &mut [__D; 1],
+        ) {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [theta] = *__q;
+            let c = <__D>::from(self.c);
+            let tau: __D = ::lagrange::__private::lagrange_core::inputs::input::<
+                __U,
+                __D,
+            >(&__u[0]);
+            let [theta_dot] = *__v;
+            let __generalized_force_drive: __D = { tau - c * theta_dot };
+            __generalized_force[0] += __generalized_force_drive;
+        }
     }
     #[derive(
         ::lagrange::__private::core::clone::Clone,
@@ -204,6 +233,23 @@ pub mod motor {
         const HAS_POTENTIAL: bool = false;
         const HAS_FORCES: bool = true;
         const GENERALIZED_FORCES_ONLY: bool = true;
+        #[inline(always)]
+        fn coordinate_forces<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+            __generalized_force: &mut [__D; 1],
+        ) {
+            <Self as ::lagrange::__private::lagrange_core::inputs::ActuatedModel<
+                1,
+                3,
+                1,
+            >>::coordinate_forces_with_inputs::<
+                __D,
+                f64,
+            >(self, &[0.0; 1], __t, __q, __v, __generalized_force)
+        }
         const DEPENDS: [[bool; 1]; 3] = [[false], [false], [true]];
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

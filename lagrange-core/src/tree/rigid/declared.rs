@@ -26,10 +26,8 @@ pub fn other_generalized_forces<M: Model<N, K>, S: Scalar, const N: usize, const
     }
     // Motors and joint damping alone: no x, no Jacobian (the forces read neither).
     if M::GENERALIZED_FORCES_ONLY && !M::HAS_POTENTIAL {
-        let unread = [S::zero(); K];
-        let mut cartesian = [S::zero(); K];
         let mut direct = [S::zero(); N];
-        model.applied_forces(t, q, v, &unread, &unread, &mut cartesian, &mut direct);
+        model.coordinate_forces(t, q, v, &mut direct);
         return SVector::from(direct);
     }
     let (x1, _, _) = dynamics::cartesian_with_jacobian(model, t, q);

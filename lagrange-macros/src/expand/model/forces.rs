@@ -26,14 +26,42 @@ pub(in crate::expand) enum Forces {
 /// The applied forces, as `which` function (see [`Forces`]). A declaration with inputs has its
 /// `applied_forces` forward to `applied_forces_with_inputs` at zero inputs.
 pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> TokenStream {
+    forces_fn(model, which, false)
+}
+
+/// The forces of a declaration whose forces are all on coordinates and name no body
+/// (`Model::GENERALIZED_FORCES_ONLY`), without x: `coordinate_forces` (`Forces::Plain`) or
+/// `coordinate_forces_with_inputs` (`Forces::WithInputs`).
+pub(in crate::expand) fn coordinate_forces_fn(model: &Model, which: Forces) -> TokenStream {
+    forces_fn(model, which, true)
+}
+
+/// The applied forces as `which` function, with the Cartesian rows (`applied_forces…`) or, where
+/// every force acts on a coordinate and names no body, without (`coordinate_forces…`).
+fn forces_fn(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream {
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
+    let (rows, row_args) = match on_coordinates {
+        false => (
+            quote!(__x: &[__D; #k], __x_dot: &[__D; #k], __cartesian_force: &mut [__D; #k],),
+            quote!(__x, __x_dot, __cartesian_force,),
+        ),
+        true => (quote!(), quote!()),
+    };
+    let prefix = match on_coordinates {
+        false => "applied_forces",
+        true => "coordinate_forces",
+    };
     if let (Forces::Plain, Some(nu)) = (which, model.input_count()) {
         let nu = lit(nu);
+        let (name, with_inputs) = (
+            format_ident!("{prefix}"),
+            format_ident!("{prefix}_with_inputs"),
+        );
         return quote! {
             #[inline(always)]
-            fn applied_forces<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], __x: &[__D; #k], __x_dot: &[__D; #k], __cartesian_force: &mut [__D; #k], __generalized_force: &mut [__D; #n]) {
-                <Self as #p::lagrange_core::inputs::ActuatedModel<#n, #k, #nu>>::applied_forces_with_inputs::<__D, f64>(self, &[0.0; #nu], __t, __q, __v, __x, __x_dot, __cartesian_force, __generalized_force)
+            fn #name<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], #rows __generalized_force: &mut [__D; #n]) {
+                <Self as #p::lagrange_core::inputs::ActuatedModel<#n, #k, #nu>>::#with_inputs::<__D, f64>(self, &[0.0; #nu], __t, __q, __v, #row_args __generalized_force)
             }
         };
     }
@@ -55,13 +83,13 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> Toke
             .iter()
             .any(|b| used.contains(&format!("{}{suffix}", b.decl.ident())))
     };
-    let bodies = names_body("").then(|| bind_bodies(model));
+    let bodies = (names_body("") && !on_coordinates).then(|| bind_bodies(model));
     let names = model.bodies.iter().map(|b| b.decl.ident());
     let body_velocities = model
         .bodies
         .iter()
         .map(|b| format_ident!("{}_dot", b.decl.ident()));
-    let velocities_of_bodies = names_body("_dot").then(|| {
+    let velocities_of_bodies = (names_body("_dot") && !on_coordinates).then(|| {
         quote!(let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);)
     });
     let (shared, blocks) =
@@ -72,7 +100,10 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> Toke
         .zip(blocks)
         .map(|(force, block)| applied_force(model, force, &block));
     let (name, generics, array) = match which {
-        Forces::Plain => (quote!(applied_forces), quote!(<__D: #p::Scalar>), quote!()),
+        Forces::Plain => {
+            let name = format_ident!("{prefix}");
+            (quote!(#name), quote!(<__D: #p::Scalar>), quote!())
+        }
         Forces::Parametrized => {
             let np = lit(crate::ast::slot_count(model.params));
             (
@@ -83,8 +114,9 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> Toke
         }
         Forces::WithInputs => {
             let nu = lit(model.input_count().unwrap_or(0));
+            let name = format_ident!("{prefix}_with_inputs");
             (
-                quote!(applied_forces_with_inputs),
+                quote!(#name),
                 quote!(<__D: #p::Scalar, __U: #p::Scalar>),
                 quote!(__u: &[__U; #nu],),
             )
@@ -98,9 +130,7 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, which: Forces) -> Toke
             __t: __D,
             __q: &[__D; #n],
             __v: &[__D; #n],
-            __x: &[__D; #k],
-            __x_dot: &[__D; #k],
-            __cartesian_force: &mut [__D; #k],
+            #rows
             __generalized_force: &mut [__D; #n],
         ) {
             #prelude
