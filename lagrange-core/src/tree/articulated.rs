@@ -21,8 +21,9 @@
 //! its coordinates — the same terms [`super::equations_of_motion`] assembles into M, 𝓕 and b.
 //!
 //! The H_c are the pivots of a factorisation of M taken leaves first, so M is singular exactly
-//! where one of them is; each is tested against M's largest diagonal entry, C_c |D_c eⱼ|² (C_c
-//! the mass of c's subtree), as [`crate::linalg::Ldlt`] tests M's own pivots.
+//! where one of them is; each pivot is tested against M's diagonal entry for its coordinate,
+//! C_c |D_c eⱼ|² (C_c the mass of c's subtree), as [`crate::linalg::Ldlt`] tests M's own pivots
+//! against their own diagonal entries: a test that rescaling a coordinate does not change.
 
 use super::{Seed, Tree};
 use crate::dynamics::{finite_accelerations, non_finite_dynamics, singular_mass_matrix};
@@ -82,7 +83,7 @@ pub(super) fn accelerations<
     let rows = super::rows::<M, S, N, K, W, B>(model, t, q, v, &d);
     let zero = S::zero();
 
-    // Each body's own D (only its coordinates' columns) and α, and the scale of M's diagonal.
+    // Each body's own D (only its coordinates' columns) and α, and M's diagonal entry per slot.
     let jacobian: [SMatrix<S, DIM, W>; B] = std::array::from_fn(|b| {
         let body = &M::BODIES[b];
         SMatrix::from_fn(|k, j| match (k < body.dim, body.seeds[j]) {
@@ -98,16 +99,16 @@ pub(super) fn accelerations<
         })
     });
     let mut composite = [0.0; B];
-    let mut scale = 0.0f64;
+    let mut diagonal = [[0.0f64; W]; B];
     for b in (0..B).rev() {
         composite[b] += masses[M::BODIES[b].row];
-        for j in 0..W {
+        for (j, entry) in diagonal[b].iter_mut().enumerate() {
             let column = jacobian[b].column(j);
             let mut norm = 0.0;
             for k in 0..DIM {
                 norm += column[k].re() * column[k].re();
             }
-            scale = scale.max(composite[b] * norm);
+            *entry = composite[b] * norm;
         }
         if let Some(p) = M::BODIES[b].parent {
             composite[p] += composite[b];
@@ -133,7 +134,8 @@ pub(super) fn accelerations<
                 at_rest[r] += i_b[(r, k)] * own[b][k];
             }
         }
-        // U = I D, H = Dᵀ U, u = Q − Dᵀ (I α + p); slots that are not coordinates get H = scale.
+        // U = I D, H = Dᵀ U, u = Q − Dᵀ (I α + p); slots that are not coordinates get H = 1, a
+        // pivot tested against 1.
         let mut u_mat = SMatrix::<S, DIM, W>::zeros();
         for r in 0..DIM {
             for j in 0..W {
@@ -144,9 +146,11 @@ pub(super) fn accelerations<
         }
         let mut h = SMatrix::<S, W, W>::zeros();
         let mut u = SVector::<S, W>::zeros();
+        let mut scales = diagonal[b];
         for (i, seed) in body.seeds.iter().enumerate() {
             let Seed::Coordinate(c) = *seed else {
-                h[(i, i)] = S::from(scale);
+                h[(i, i)] = S::one();
+                scales[i] = 1.0;
                 continue;
             };
             for j in 0..W {
@@ -159,9 +163,9 @@ pub(super) fn accelerations<
                 u[i] -= dj[(k, i)] * at_rest[k];
             }
         }
-        let factors = match Ldlt::with_scale(&h, Dense, scale) {
+        let factors = match Ldlt::with_scales(&h, Dense, &scales) {
             Ok(factors) => factors,
-            Err(e) => return Err(failure::<M, S, N, K, W, B>(body.seeds, e, scale, t, q)),
+            Err(e) => return Err(failure::<M, S, N, K, W, B>(body.seeds, e, &scales, t, q)),
         };
         free[b] = factors.solve(&u);
         for r in 0..DIM {
@@ -220,9 +224,9 @@ pub(super) fn accelerations<
     finite_accelerations::<M::Coords, S, N>(qdd, t, q)
 }
 
-/// The error for a pivot that failed: non-finite dynamics when the pivot or the scale overflowed,
-/// otherwise a singular mass matrix named by the pivot's coordinate (the body's first coordinate
-/// when the failing slot is not one, which only a scale of zero — no mass — can make fail).
+/// The error for a pivot that failed: non-finite dynamics when the pivot or a diagonal entry
+/// overflowed, otherwise a singular mass matrix named by the pivot's coordinate (the body's first
+/// coordinate when the failing slot is not one).
 #[cold]
 #[inline(never)]
 fn failure<
@@ -235,11 +239,11 @@ fn failure<
 >(
     seeds: [Seed; W],
     e: NotPositiveDefinite,
-    scale: f64,
+    scales: &[f64; W],
     t: S,
     q: &[S; N],
 ) -> crate::error::Error {
-    if !e.pivot.is_finite() || !scale.is_finite() {
+    if !e.pivot.is_finite() || scales.iter().any(|s| !s.is_finite()) {
         return non_finite_dynamics::<M::Coords, S, N>(t, q);
     }
     let coordinate = |seed: Seed| match seed {

@@ -9,7 +9,8 @@ use crate::integrate::canonical::{
     canonical_field, field_jacobians, velocities_and_mass_from_momenta, FieldJacobians,
 };
 use crate::integrate::newton::{
-    self, carries_constraint_forces, max_norm, newton, BlockLu, NewtonEnd, MAX_NEWTON_ITERATIONS,
+    self, carries_constraint_forces, mass_weights, max_norm, newton, position_floor, BlockLu,
+    NewtonEnd, NewtonScale, Unknowns as _, MAX_NEWTON_ITERATIONS,
 };
 use crate::integrate::Stats;
 use crate::mechanism::Mechanism;
@@ -52,6 +53,26 @@ fn stage_position<const N: usize, const S: usize>(
         qj += stages[k] * (h * tableau.a[j][k]);
     }
     qj
+}
+
+/// What the stage velocities' increments are measured against (see `NewtonScale`): weighted by
+/// √Mᵢᵢ, sized by the step's velocities (v₀ and the predicted stages), resolved to the positions'
+/// size over h.
+fn step_scale<const N: usize, const S: usize>(
+    weights: SVector<f64, N>,
+    q0: &SVector<f64, N>,
+    v0: &SVector<f64, N>,
+    predictor: &[SVector<f64, N>; S],
+    h: f64,
+) -> NewtonScale<[SVector<f64, N>; S]> {
+    let stages = [weights; S];
+    NewtonScale {
+        weights: stages,
+        size: v0
+            .weighted_norm(&weights)
+            .max(predictor.weighted_norm(&stages)),
+        resolution: position_floor(&weights, q0, h),
+    }
 }
 
 /// One collocation step: the simplified Newton iteration with the memory's matrix (or a fresh one),
@@ -139,37 +160,47 @@ pub(super) fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
         let mut last = [SVector::<f64, N>::zeros(); S];
         let mut evaluations = 0;
         let before = stats.newton_iterations;
-        let end = newton(&mut stages, MAX_NEWTON_ITERATIONS, true, stats, |stages| {
-            let mut p = [SVector::<f64, N>::zeros(); S];
-            for j in 0..S {
-                let qj = stage_position(tableau, &q0, stages, h, j);
-                let (pj, rj) = canonical_field(
-                    mechanism,
-                    t + tableau.c[j] * h,
-                    &qj.into(),
-                    &stages[j].into(),
-                    constrained,
-                )?;
-                evaluations += 1;
-                p[j] = pj.into();
-                rates[j] = rj.into();
-            }
-            let mut residual = [SVector::<f64, N>::zeros(); S];
-            let mut norm = 0.0f64;
-            for i in 0..S {
-                let mut r = p[i] - p0;
+        // Stage velocities weighted by √Mᵢᵢ (M = ∂p/∂v), against the step's velocities; resolved
+        // to the positions' size over h.
+        let scale = || step_scale(mass_weights(&jacobians.p_v), &q0, &v0, &predictor, h);
+        let end = newton(
+            &mut stages,
+            MAX_NEWTON_ITERATIONS,
+            true,
+            stats,
+            scale,
+            |stages| {
+                let mut p = [SVector::<f64, N>::zeros(); S];
                 for j in 0..S {
-                    r -= rates[j] * (h * tableau.a[i][j]);
+                    let qj = stage_position(tableau, &q0, stages, h, j);
+                    let (pj, rj) = canonical_field(
+                        mechanism,
+                        t + tableau.c[j] * h,
+                        &qj.into(),
+                        &stages[j].into(),
+                        constrained,
+                    )?;
+                    evaluations += 1;
+                    p[j] = pj.into();
+                    rates[j] = rj.into();
                 }
-                norm = norm.max(max_norm(&r));
-                residual[i] = r;
-            }
-            if !norm.is_finite() {
-                return Err(breakdown(tableau.name, t, h, evaluations / S, NOT_FINITE));
-            }
-            last = matrix.lu.solve(&residual);
-            Ok((last, norm))
-        });
+                let mut residual = [SVector::<f64, N>::zeros(); S];
+                let mut norm = 0.0f64;
+                for i in 0..S {
+                    let mut r = p[i] - p0;
+                    for j in 0..S {
+                        r -= rates[j] * (h * tableau.a[i][j]);
+                    }
+                    norm = norm.max(max_norm(&r));
+                    residual[i] = r;
+                }
+                if !norm.is_finite() {
+                    return Err(breakdown(tableau.name, t, h, evaluations / S, NOT_FINITE));
+                }
+                last = matrix.lu.solve(&residual);
+                Ok((last, norm))
+            },
+        );
         stats.evaluations += evaluations;
         counts.field_evaluations += evaluations;
         counts.iterations += stats.newton_iterations - before;
@@ -303,64 +334,78 @@ fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
     }; S];
     let mut iteration = 0;
     let before = stats.newton_iterations;
-    let end = newton(&mut stages, MAX_NEWTON_ITERATIONS, false, stats, |stages| {
-        iteration += 1;
-        for j in 0..S {
-            let qj = stage_position(tableau, q0, stages, h, j);
-            field[j] = field_jacobians(
-                mechanism,
-                t + tableau.c[j] * h,
-                &qj.into(),
-                &stages[j].into(),
-                constrained,
-            )?;
-            rates[j] = field[j].rate;
-        }
-        let mut residual = [SVector::<f64, N>::zeros(); S];
-        let mut jac = [[zero; S]; S];
-        let mut norm = 0.0f64;
-        for i in 0..S {
-            let mut r = field[i].p - p0;
+    // Weighted by the first iterate's M = ∂p/∂v at the first stage (see `NewtonScale`).
+    let weights = std::cell::Cell::new(SVector::<f64, N>::zeros());
+    let predictor = stages;
+    let scale = || step_scale(weights.get(), q0, v0, &predictor, h);
+    let end = newton(
+        &mut stages,
+        MAX_NEWTON_ITERATIONS,
+        false,
+        stats,
+        scale,
+        |stages| {
+            iteration += 1;
             for j in 0..S {
-                r -= field[j].rate * (h * tableau.a[i][j]);
+                let qj = stage_position(tableau, q0, stages, h, j);
+                field[j] = field_jacobians(
+                    mechanism,
+                    t + tableau.c[j] * h,
+                    &qj.into(),
+                    &stages[j].into(),
+                    constrained,
+                )?;
+                rates[j] = field[j].rate;
             }
-            norm = norm.max(max_norm(&r));
-            residual[i] = r;
-            for k in 0..S {
-                let mut block = field[i].p_q * (h * tableau.a[i][k]);
-                if i == k {
-                    block += field[i].p_v;
-                }
+            if iteration == 1 {
+                weights.set(mass_weights(&field[0].p_v));
+            }
+            let mut residual = [SVector::<f64, N>::zeros(); S];
+            let mut jac = [[zero; S]; S];
+            let mut norm = 0.0f64;
+            for i in 0..S {
+                let mut r = field[i].p - p0;
                 for j in 0..S {
-                    block -= field[j].rate_q * (h * h * tableau.a[i][j] * tableau.a[j][k]);
+                    r -= field[j].rate * (h * tableau.a[i][j]);
                 }
-                block -= field[k].rate_v * (h * tableau.a[i][k]);
-                jac[i][k] = block;
+                norm = norm.max(max_norm(&r));
+                residual[i] = r;
+                for k in 0..S {
+                    let mut block = field[i].p_q * (h * tableau.a[i][k]);
+                    if i == k {
+                        block += field[i].p_v;
+                    }
+                    for j in 0..S {
+                        block -= field[j].rate_q * (h * h * tableau.a[i][j] * tableau.a[j][k]);
+                    }
+                    block -= field[k].rate_v * (h * tableau.a[i][k]);
+                    jac[i][k] = block;
+                }
             }
-        }
-        if !norm.is_finite() {
-            return Err(breakdown(tableau.name, t, h, iteration, NOT_FINITE));
-        }
-        let Some(lu) = BlockLu::factor(&jac) else {
-            let finite = jac
-                .iter()
-                .flatten()
-                .all(|b| b.iter().all(|x| x.is_finite()));
-            return Err(breakdown(
-                tableau.name,
-                t,
-                h,
-                iteration,
-                if finite {
-                    "the Newton matrix is singular"
-                } else {
-                    "the Newton matrix is not finite (h is too large for this mechanism)"
-                },
-            ));
-        };
-        last = lu.solve(&residual);
-        Ok((last, norm))
-    });
+            if !norm.is_finite() {
+                return Err(breakdown(tableau.name, t, h, iteration, NOT_FINITE));
+            }
+            let Some(lu) = BlockLu::factor(&jac) else {
+                let finite = jac
+                    .iter()
+                    .flatten()
+                    .all(|b| b.iter().all(|x| x.is_finite()));
+                return Err(breakdown(
+                    tableau.name,
+                    t,
+                    h,
+                    iteration,
+                    if finite {
+                        "the Newton matrix is singular"
+                    } else {
+                        "the Newton matrix is not finite (h is too large for this mechanism)"
+                    },
+                ));
+            };
+            last = lu.solve(&residual);
+            Ok((last, norm))
+        },
+    );
     let n = stats.newton_iterations - before;
     stats.jacobians += S * iteration;
     stats.factorizations += n;

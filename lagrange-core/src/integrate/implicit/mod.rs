@@ -44,9 +44,9 @@
 //! **State.** [`ImplicitMidpoint`] and [`GaussLegendre2`] implement [`Integrator`] on the (q, v)
 //! [`State`] as the [`Variational`](super::Variational) integrator does: p₀ = ∂L/∂q̇(t₀, q₀, v₀)
 //! before the step (in a solver, the previous step's p₁ when the state is exactly where that step
-//! left it), and after it v₁ solves ∂L/∂q̇(t₁, q₁, v₁) = p₁ by Newton's method with the exact
-//! Jacobian M (one iteration for a Lagrangian quadratic in q̇, v₁ = M⁻¹(p₁ − p(t₁, q₁, 0)); a second
-//! confirms it). The Legendre transform is inverted to round-off, so the next step starts from this
+//! left it), and after it v₁ solves ∂L/∂q̇(t₁, q₁, v₁) = p₁: T is quadratic in q̇, so
+//! v₁ = M⁻¹(p₁ − p(t₁, q₁, 0)), one solve with the mass matrix. The Legendre transform is inverted
+//! to round-off, so the next step starts from this
 //! step's p₁: the sequence of (q, p) is that of the Gauss method.
 //!
 //! **Geometric properties.** Gauss collocation methods are symplectic for Hamiltonian systems
@@ -108,8 +108,7 @@ pub struct ImplicitStepStats {
     pub field_evaluations: usize,
     /// LU factorisations of the (S·N)-square Newton matrix.
     pub factorizations: usize,
-    /// Newton iterations of the velocity recovery ∂L/∂v(t₁, q₁, v₁) = p₁ (each one dual pass of the
-    /// momenta).
+    /// Solves of the velocity recovery ∂L/∂v(t₁, q₁, v₁) = p₁ (one: T is quadratic in q̇).
     pub velocity_iterations: usize,
 }
 
