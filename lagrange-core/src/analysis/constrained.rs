@@ -6,7 +6,7 @@
 
 use super::{check_configuration, describe, max_abs, rest_residual, rest_terms};
 use super::{rest_velocity_matrix, EquilibriumOptions, Stability, MARGINAL_TOLERANCE};
-use crate::constraints::{ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
+use crate::constraints::{rows_and_scales, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
@@ -583,9 +583,12 @@ where
         });
     }
     let (c0, _, _) = position_terms(mechanism, t, &q0);
+    // Contact closed within CONSISTENCY_TOLERANCE of each row's size at the configuration.
+    let sizes = |q: &[f64; N]| rows_and_scales(mechanism, t, q, &[0.0; N]).1.position;
+    let sizes0 = sizes(&q0);
     let mut active: [bool; C] = std::array::from_fn(|i| match M::KINDS[i] {
         ConstraintKind::Holonomic => true,
-        ConstraintKind::Unilateral => c0[i] <= CONSISTENCY_TOLERANCE,
+        ConstraintKind::Unilateral => c0[i] <= CONSISTENCY_TOLERANCE * sizes0[i],
         _ => false,
     });
     let unilateral: Vec<usize> = (0..C)
@@ -618,10 +621,11 @@ where
             continue;
         }
         let (c, _, _) = position_terms(mechanism, t, &q);
+        let size = sizes(&q);
         let penetrated = unilateral
             .iter()
             .copied()
-            .filter(|&i| !active[i] && c[i] < -CONSISTENCY_TOLERANCE)
+            .filter(|&i| !active[i] && c[i] < -CONSISTENCY_TOLERANCE * size[i])
             .min_by(|&x, &y| c[x].total_cmp(&c[y]));
         if let Some(i) = penetrated {
             active[i] = true;

@@ -243,8 +243,10 @@ pub(super) fn triggered_rows<
         )
     };
     let separating: [bool; C] = if (0..C).any(|i| !armed[i] && phi_end[i] < 0.0 && separated(i)) {
-        let rate = super::constraint_rows(model, t, q, v).rate;
-        std::array::from_fn(|i| separated(i) && rate[i] > CONSISTENCY_TOLERANCE)
+        let (cr, scales) = super::rows::rows_and_scales(model, t, q, v);
+        std::array::from_fn(|i| {
+            separated(i) && cr.rate[i] > CONSISTENCY_TOLERANCE * scales.velocity[i]
+        })
     } else {
         [false; C]
     };
@@ -529,14 +531,14 @@ impl<const C: usize> ContactRk4<C> {
         mode: &mut Mode<C>,
         row: usize,
     ) -> Result<()> {
-        let follow = |mode: &mut Mode<C>, slip: &[f64; C]| {
-            super::mode::friction_rows_follow(&M::KINDS, mode, slip, Some(row));
+        let follow = |mode: &mut Mode<C>, slip: &[f64; C], stick: &[f64; C]| {
+            super::mode::friction_rows_follow(&M::KINDS, mode, slip, Some(row), stick);
         };
         match (M::KINDS[row], mode.rows[row]) {
             (ConstraintKind::Unilateral, RowMode::Inactive) => {
                 // Impact: a frictionless impulse along the contact row (and the rows already
                 // enforced, which stay satisfied), ċ⁺ = −e ċ⁻.
-                let cr = super::constraint_rows(model, t, q, v);
+                let (cr, scales) = super::rows::rows_and_scales(model, t, q, v);
                 let approach = cr.rate[row];
                 let e = self.options.restitution;
                 mode.rows[row] = RowMode::Active;
@@ -559,17 +561,17 @@ impl<const C: usize> ContactRk4<C> {
                         }
                     }
                     impulse(model, t, q, v, &velocity_only, &decrease)?;
-                    if e * -approach > CONSISTENCY_TOLERANCE {
+                    if e * -approach > CONSISTENCY_TOLERANCE * scales.velocity[row] {
                         mode.rows[row] = RowMode::Inactive; // bounces off
                     }
                 }
-                let slip = super::constraint_rows(model, t, q, v).value;
-                follow(mode, &slip);
+                let (after, scales) = super::rows::rows_and_scales(model, t, q, v);
+                follow(mode, &after.value, &scales.stick());
             }
             (ConstraintKind::Unilateral, RowMode::Active) => {
                 mode.rows[row] = RowMode::Inactive;
                 let slip = [0.0; C];
-                follow(mode, &slip);
+                follow(mode, &slip, &[0.0; C]);
             }
             (ConstraintKind::Friction { .. }, RowMode::SlipPositive | RowMode::SlipNegative) => {
                 // The slip velocity reached zero: make it exactly zero, then test static friction.

@@ -239,6 +239,7 @@ pub use mode::infer_mode;
 pub use prepared::{project_prepared, regular_accelerations_prepared};
 pub use projection::project;
 pub use routing::{integrate_declared_contacts, step_declared_contacts};
+pub(crate) use rows::rows_and_scales;
 pub use rows::{constraint_rows, holonomic_values, CartesianMotion, ConstraintRows};
 pub use solve::{
     accelerations, accelerations_in_mode, accelerations_prepared, ConstrainedAccelerations,
