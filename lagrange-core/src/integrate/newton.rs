@@ -164,6 +164,10 @@ pub(crate) enum NewtonEnd {
     Slow { iterations: usize, residual: f64 },
 }
 
+/// An increment below this multiple of the unknowns' size is the rounding of the residual's
+/// evaluation (see [`newton`]).
+const ROUNDING_INCREMENT: f64 = 64.0 * f64::EPSILON;
+
 /// The one Newton loop of the implicit methods. `iteration(x)` evaluates the residual at x and
 /// returns the increment δ (the solution of the Newton system, with an exact Jacobian or a reused
 /// one) and the residual's norm; the loop applies x ← x − δ and tests convergence on the
@@ -171,11 +175,13 @@ pub(crate) enum NewtonEnd {
 /// every norm the weighted one of `scale` (asked for once, after the first iteration, so that a
 /// driver can take its weights from the first Newton matrix):
 ///
-/// - converged when ‖δₖ‖ ≤ 4ε·s (s = max(‖x‖, size), see [`NewtonScale`]), when the estimated
-///   remaining error θₖ/(1 − θₖ)·‖δₖ‖ is below 4ε·s, or when ‖δₖ‖ ≤ 1e-10·max(s, resolution) and
-///   θₖ > ½ (the increments have reached the round-off floor of the residual evaluation and only
-///   add noise): the methods are iterated to round-off, as their symmetry and symplecticity
-///   require;
+/// - converged when ‖δₖ‖ ≤ 64ε·s (s = max(‖x‖, size), see [`NewtonScale`]: an increment within
+///   the rounding of the residual's evaluation, which sums tens of terms — so an increment that
+///   is that rounding, as when the predictor is exact, ends the iteration whatever its digits),
+///   when the estimated remaining error θₖ/(1 − θₖ)·‖δₖ‖ is below 4ε·s, or when
+///   ‖δₖ‖ ≤ 1e-10·max(s, resolution) and θₖ > ½ (the increments have reached the round-off floor
+///   and only add noise): the methods are iterated to round-off, as their symmetry and
+///   symplecticity require;
 /// - slow when θₖ ≥ 1 above that floor (diverging, or a Jacobian too stale to contract) if
 ///   `stop_when_slow` (a simplified Newton iteration, whose caller then refreshes the Jacobian; an
 ///   exact Newton iteration may grow once before it converges quadratically), or after
@@ -210,11 +216,13 @@ pub(crate) fn newton<U: Unknowns>(
         let s = x.weighted_norm(&weights).max(size);
         let theta = d / previous;
         let floor = d <= 1e-10 * s.max(resolution);
-        if d <= 4.0 * f64::EPSILON * s
+        if d <= ROUNDING_INCREMENT * s
             || (k > 1 && theta < 1.0 && theta / (1.0 - theta) * d <= 4.0 * f64::EPSILON * s)
             || (floor && theta > 0.5)
         {
-            if !floor || theta <= 0.5 {
+            // θ of an increment at the rounding level is that rounding over the last increment:
+            // no measure of the contraction.
+            if (!floor || theta <= 0.5) && d > ROUNDING_INCREMENT * s {
                 theta_max = theta_max.max(if k == 1 { 0.0 } else { theta });
             }
             return Ok(NewtonEnd::Converged {
