@@ -10,7 +10,7 @@
 //! [`constraint_forces`]). Everything else — the low-level [`model::Model`]
 //! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
 //! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
-//! [`constraints`], [`geometry`], [`scalar_ext`], [`error`], [`sensitivity`] (trajectory
+//! [`constraints`], [`geometry`], [`inertia`], [`scalar_ext`], [`error`], [`sensitivity`] (trajectory
 //! sensitivities), [`declaration`], and [`ffi`] with [`export_c!`] (C embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
@@ -62,8 +62,8 @@ pub use lagrange_core::error::{Error, Result};
 /// helper function called from one, `fn arm<D: lagrange::Scalar>(angle: D) -> D`.
 pub use lagrange_core::geometry::Scalar;
 pub use lagrange_core::geometry::{
-    planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, SpatialVelocity, Vec2,
-    Vec3,
+    planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Spatial,
+    SpatialVelocity, Vec2, Vec3,
 };
 pub use lagrange_core::integrate::{
     Dop853, Dop853Stepper, Dopri5, Dopri5Stepper, Event, FixedStepper, GaussLegendre2,
@@ -76,8 +76,8 @@ pub use lagrange_core::validated::Validated;
 
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
-    analysis, constraints, declaration, dynamics, error, geometry, integrate, linalg, mechanism,
-    model, parameters, scalar_ext, sensitivity, tree, validated,
+    analysis, constraints, declaration, dynamics, error, geometry, inertia, integrate, linalg,
+    mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
 };
 /// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
 pub use lagrange_ffi as ffi;
@@ -85,7 +85,9 @@ pub use lagrange_ffi::export_c;
 
 /// Everything a declaration and its user need: `use lagrange::prelude::*;`.
 pub mod prelude {
-    pub use lagrange_core::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3};
+    pub use lagrange_core::geometry::{
+        planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+    };
     pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
     pub use lagrange_core::integrate::{
         Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
@@ -102,6 +104,7 @@ pub mod __private {
     pub use lagrange_core;
     pub use lagrange_core::dynamics;
     pub use lagrange_core::geometry;
+    pub use lagrange_core::inertia;
     pub use lagrange_core::mechanism::{Dynamics, Prepare};
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
     pub use lagrange_core::parameters;

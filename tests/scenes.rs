@@ -141,3 +141,8 @@ fn gauss_newton_converges_in_a_handful_of_iterations() {
     assert!((l - truth.l).abs() < 1e-9 * truth.l);
     assert!((c - truth.c).abs() < 1e-9 * truth.c);
 }
+
+#[test]
+fn spatial_arm_as_a_kinematic_tree() {
+    assert_scene(spatial_arm::run);
+}

@@ -36,6 +36,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     rough_plane::run,
     pushed_block::run,
     identify_pendulum::run,
+    spatial_arm::run,
 ];
 
 fn main() {

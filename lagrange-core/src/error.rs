@@ -15,13 +15,25 @@ pub enum Error {
         value: f64,
     },
 
-    /// A mass or moment of inertia is not positive, or an inertia tensor violates the triangle
-    /// inequality (I₁ + I₂ ≥ I₃ and permutations).
+    /// A mass or moment of inertia is not positive, principal moments violate the triangle
+    /// inequality (I₁ + I₂ ≥ I₃ and permutations), a full inertia tensor is not finite, symmetric
+    /// and positive definite, or a centre of mass offset is not finite.
     #[error("body `{body}`: {reason}")]
     InvalidInertia {
         /// The body, by its declared name.
         body: &'static str,
         /// Which mass or moment is wrong, and how.
+        reason: String,
+    },
+
+    /// A rotation a declaration writes from constants (parameters and literals) is not one: a
+    /// `rot3` matrix that is not orthonormal with determinant +1, or a `rot_axis` axis without a
+    /// direction (zero length, or not finite).
+    #[error("`{body}`: {reason}")]
+    InvalidRotation {
+        /// The body (or other declared function) whose expression writes it, by its declared name.
+        body: &'static str,
+        /// What is wrong with it.
         reason: String,
     },
 

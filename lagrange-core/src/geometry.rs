@@ -59,6 +59,9 @@ use nalgebra::{DefaultAllocator, Dim, U1};
 use num_dual::DualNum;
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
+mod rotations;
+pub use rotations::{rot3, rot_axis, rpy};
+
 /// A real number or a dual number over `f64`: what positions, potentials and the dynamics are
 /// generic over.
 ///
@@ -386,46 +389,71 @@ impl<D: Scalar> Mul<Vec3<D>> for Rot3<D> {
     }
 }
 
-/// Where a planar rigid body is: its centre of mass and its angle (counter-clockwise).
+/// Where a planar rigid body is: a point of it and its angle (counter-clockwise). The point is the
+/// centre of mass, unless the body is declared with `#[rigid_body(com = ..)]`: then it is the origin
+/// of the body's frame, and the centre of mass lies at `com` in that frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Planar<D> {
-    /// The centre of mass in the world frame (the point the moment of inertia is taken about).
+    /// The centre of mass in the world frame (the point the moment of inertia is taken about), or
+    /// the origin of the body's frame when its `com` is declared.
     pub position: Vec2<D>,
     /// The body's orientation: the angle in radians, counter-clockwise, from the world x axis to
     /// the body's x axis (0 when the body frame is the world frame).
     pub angle: D,
 }
 
-/// `planar(centre_of_mass, angle)`.
+/// `planar(centre_of_mass, angle)` (or `planar(frame_origin, angle)` for a body declared with
+/// its `com`).
 #[inline(always)]
 pub fn planar<D>(position: Vec2<D>, angle: D) -> Planar<D> {
     Planar { position, angle }
 }
 
 impl<D: Scalar> Planar<D> {
-    /// The world position of a point fixed in the body at `offset` (body frame, from the centre of
-    /// mass).
+    /// The world position of a point fixed in the body at `offset` (body frame, from the body's
+    /// position: its centre of mass, or the origin of its frame when its `com` is given).
     #[inline(always)]
     pub fn point(&self, offset: Vec2<D>) -> Vec2<D> {
         self.position + offset.rotated(self.angle)
     }
+
+    /// A child's frame at the parent's point `origin`, turned by `angle` relative to the parent (a
+    /// robot file's joint origin followed by the joint's own rotation):
+    /// `planar(self.point(origin), self.angle + angle)`.
+    ///
+    /// ```
+    /// use lagrange_core::geometry::{planar, vec2};
+    /// let upper = planar(vec2(0.0, 0.0), -1.2_f64);
+    /// let lower = upper.joint(vec2(0.5, 0.0), 0.3);
+    /// assert_eq!(lower, planar(upper.point(vec2(0.5, 0.0)), upper.angle + 0.3));
+    /// ```
+    #[inline(always)]
+    pub fn joint(&self, origin: Vec2<D>, angle: D) -> Planar<D> {
+        planar(self.point(origin), self.angle + angle)
+    }
 }
 
-/// Where a spatial rigid body is: its centre of mass and its orientation (body frame → world frame).
+/// Where a spatial rigid body is: a point of it and its orientation (body frame → world frame).
+/// The point is the centre of mass, unless the body is declared with `#[rigid_body(com = ..)]`:
+/// then it is the origin of the body's frame (a joint frame, say), and the centre of mass lies at
+/// `com` in that frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spatial<D> {
-    /// The centre of mass in the world frame.
+    /// The centre of mass in the world frame, or the origin of the body's frame when its `com` is
+    /// declared.
     pub position: Vec3<D>,
-    /// The rotation from the body frame to the world frame: column k is the body's k-th principal
-    /// axis in world coordinates (the axes the principal moments `inertia = [I1, I2, I3]` refer to).
+    /// The rotation from the body frame to the world frame: column k is the body's k-th axis in
+    /// world coordinates (the axes the principal moments `inertia = [I1, I2, I3]`, or the rows and
+    /// columns of a full tensor `inertia = [[..], [..], [..]]`, refer to).
     pub rotation: Rot3<D>,
 }
 
-/// The velocity of a spatial rigid body: its centre of mass's and its angular velocity, both in the
-/// world frame. What a spatial body's `body_dot` is in forces, velocity constraints and friction.
+/// The velocity of a spatial rigid body: the velocity of its position (the centre of mass, or the
+/// frame's origin for a body declared with its `com`) and its angular velocity, both in the world
+/// frame. What a spatial body's `body_dot` is in forces, velocity constraints and friction.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct SpatialVelocity<D> {
-    /// The centre of mass's velocity.
+    /// The velocity of the body's position (`Spatial::position`).
     pub linear: Vec3<D>,
     /// The angular velocity ω (Ṙ = \[ω\]× R).
     pub angular: Vec3<D>,
@@ -441,18 +469,39 @@ pub fn angular_velocity<D: Scalar>(columns: [Vec3<D>; 3], rates: [Vec3<D>; 3]) -
     sum * D::from(0.5)
 }
 
-/// `spatial(centre_of_mass, rotation)`.
+/// `spatial(centre_of_mass, rotation)` (or `spatial(frame_origin, rotation)` for a body declared
+/// with its `com`).
 #[inline(always)]
 pub fn spatial<D>(position: Vec3<D>, rotation: Rot3<D>) -> Spatial<D> {
     Spatial { position, rotation }
 }
 
 impl<D: Scalar> Spatial<D> {
-    /// The world position of a point fixed in the body at `offset` (body frame, from the centre of
-    /// mass).
+    /// The world position of a point fixed in the body at `offset` (body frame, from the body's
+    /// position: its centre of mass, or the origin of its frame when its `com` is given).
     #[inline(always)]
     pub fn point(&self, offset: Vec3<D>) -> Vec3<D> {
         self.position + self.rotation * offset
+    }
+
+    /// A child's frame at the parent's point `origin`, turned by `rotation` relative to the parent
+    /// (a robot file's joint origin followed by the joint's own rotation):
+    /// `spatial(self.point(origin), self.rotation * rotation)`.
+    ///
+    /// ```
+    /// use lagrange_core::geometry::{rot_y, rpy, spatial, vec3, Rot3};
+    /// let base = spatial(vec3(0.0, 0.0, 0.3), Rot3::identity());
+    /// let q = 0.4_f64;
+    /// let link = base.joint(vec3(0.0, 0.1, 0.2), rpy(0.0, 0.0, 1.5) * rot_y(q));
+    /// let written_out = spatial(
+    ///     base.point(vec3(0.0, 0.1, 0.2)),
+    ///     base.rotation * (rpy(0.0, 0.0, 1.5) * rot_y(q)),
+    /// );
+    /// assert_eq!(link, written_out);
+    /// ```
+    #[inline(always)]
+    pub fn joint(&self, origin: Vec3<D>, rotation: Rot3<D>) -> Spatial<D> {
+        spatial(self.point(origin), self.rotation * rotation)
     }
 }
 

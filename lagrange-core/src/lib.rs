@@ -3,6 +3,8 @@
 //! - [`model`]: what a declaration compiles to (Cartesian coordinates x(q, t) with masses) and the
 //!   [`State`] a mechanism is simulated in;
 //! - [`dynamics`]: M q̈ = 𝓕 − b by dual-number automatic differentiation;
+//! - [`inertia`]: a rigid body declared by its frame (centre of mass offset, full inertia tensor)
+//!   and the checks of the constants a declaration writes;
 //! - [`tree`]: the same for bodies that form a tree of translations, seeded body by body;
 //! - [`linalg`]: small dense solves generic over dual numbers;
 //! - [`mechanism`]: the user-facing [`Mechanism`] trait, and [`Validated`] for parameters checked once;
@@ -27,6 +29,7 @@ pub mod dynamics;
 pub mod ensemble;
 pub mod error;
 pub mod geometry;
+pub mod inertia;
 pub mod integrate;
 pub mod linalg;
 pub mod mechanism;
@@ -44,7 +47,8 @@ pub use analysis::{
 pub use constraints::{Constraints, ContactDopri5, ContactRk4};
 pub use error::{Error, Result};
 pub use geometry::{
-    planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Scalar, Spatial, Vec2, Vec3,
+    planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Scalar,
+    Spatial, Vec2, Vec3,
 };
 pub use integrate::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, StormerVerlet, Variational,

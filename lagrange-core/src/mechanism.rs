@@ -74,6 +74,63 @@ pub trait Mechanism<const N: usize>: Dynamics<N> {
         Ok(Self::Coords::from_array(f))
     }
 
+    /// Inverse dynamics: the generalized forces τ that, added to those the declaration states,
+    /// make the mechanism move with accelerations `accelerations` at `state`,
+    /// τ = M q̈ + b − 𝓕 (for a kinematic tree of rigid bodies, by the recursive Newton–Euler
+    /// algorithm: work proportional to the bodies). For a mechanism with constraints, τ includes
+    /// what the constraint forces would supply (Gᵀλ): it is the generalized force of everything
+    /// not declared.
+    ///
+    /// ```
+    /// use lagrange_core::{impl_mechanism, vec2, Mechanism, Model, Scalar, State};
+    ///
+    /// /// A pendulum of mass 2 on a rod of length 1/2, written by hand (`#[mechanism]` writes the
+    /// /// same).
+    /// struct Pendulum;
+    /// impl Model<1, 2> for Pendulum {
+    ///     type Coords = [f64; 1];
+    ///     const RHEONOMIC: bool = false;
+    ///     const HAS_POTENTIAL: bool = true;
+    ///     const HAS_FORCES: bool = false;
+    ///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+    ///     fn masses(&self) -> [f64; 2] { [2.0, 2.0] }
+    ///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+    ///         (vec2(q[0].sin(), -q[0].cos()) * D::from(0.5)).to_array()
+    ///     }
+    ///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * (2.0 * 9.81) }
+    /// }
+    /// impl_mechanism!(Pendulum, 1, 2);
+    ///
+    /// # fn main() -> lagrange_core::Result<()> {
+    /// // The torque that holds the pendulum still at 0.3 rad: m g l sin θ.
+    /// let tau = Pendulum.inverse_dynamics(&State::at_rest([0.3]), &[0.0])?;
+    /// assert!((tau[0] - 2.0 * 9.81 * 0.5 * 0.3f64.sin()).abs() < 1e-12);
+    /// # Ok(())
+    /// # }
+    /// ```
+    ///
+    /// Errors: non-finite parameters, state or accelerations, a result that is not finite
+    /// ([`Error::NonFiniteDynamics`]).
+    fn inverse_dynamics(
+        &self,
+        state: &State<Self::Coords>,
+        accelerations: &Self::Coords,
+    ) -> Result<Self::Coords> {
+        let (q, v) = self.check(state)?;
+        let qdd = accelerations.to_array();
+        if !qdd.iter().all(|a| a.is_finite()) {
+            return Err(Error::NonFiniteState {
+                state: format!(
+                    "accelerations ({})",
+                    describe_configuration(&Self::Coords::NAMES, &qdd)
+                ),
+            });
+        }
+        let tau = self.inverse_dynamics_at(state.t, &q, &v, &qdd);
+        finite_or_error::<Self::Coords, N>(tau.iter(), state.t, &q, Some(&v))?;
+        Ok(Self::Coords::from_array(tau))
+    }
+
     /// T: kinetic energy.
     ///
     /// Errors: non-finite parameters or state, a kinetic energy that overflows
@@ -324,6 +381,34 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     ) -> Result<[S; N]> {
         let _ = prepared;
         self.accelerations_at(t, q, v)
+    }
+
+    #[doc(hidden)]
+    /// τ = M q̈ + b − 𝓕 at (t, q, q̇, q̈), for any scalar: inverse dynamics. By default from
+    /// [`equations_of_motion_at`](Dynamics::equations_of_motion_at); a kinematic tree of rigid
+    /// bodies takes the recursive Newton–Euler algorithm.
+    #[inline]
+    fn inverse_dynamics_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N], qdd: &[S; N]) -> [S; N] {
+        let eom = self.equations_of_motion_at(t, q, v);
+        let qdd = nalgebra::SVector::from(*qdd);
+        (eom.mass_matrix * qdd + eom.inertial_terms - eom.generalized_forces).into()
+    }
+
+    #[doc(hidden)]
+    /// [`inverse_dynamics_at`](Dynamics::inverse_dynamics_at) with the constants
+    /// [`Prepare::prepare`] computed when the mechanism was validated: what a
+    /// [`Validated`](crate::Validated) handle calls. By default the constants are not used.
+    #[inline]
+    fn inverse_dynamics_prepared_at<S: Scalar>(
+        &self,
+        prepared: &Self::Prepared,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+        qdd: &[S; N],
+    ) -> [S; N] {
+        let _ = prepared;
+        self.inverse_dynamics_at(t, q, v, qdd)
     }
 
     #[doc(hidden)]

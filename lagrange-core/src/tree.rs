@@ -36,6 +36,7 @@ use nalgebra::{Const, SMatrix, SVector, U1};
 use num_dual::{Derivative, HyperDualVec};
 
 mod articulated;
+pub mod rigid;
 pub use articulated::each_coordinate_moves_one_body;
 
 /// A hyper-dual number with a `W`-wide first part (the seeded coordinates of one body) and a scalar

@@ -149,6 +149,10 @@ impl<M: Dynamics<N>, const N: usize> Dynamics<N> for Validated<M> {
         self.0.accelerations_prepared_at(&self.1, t, q, v)
     }
     #[inline(always)]
+    fn inverse_dynamics_at<S: Scalar>(&self, t: S, q: &[S; N], v: &[S; N], qdd: &[S; N]) -> [S; N] {
+        self.0.inverse_dynamics_prepared_at(&self.1, t, q, v, qdd)
+    }
+    #[inline(always)]
     fn regular_accelerations_at(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Option<[f64; N]> {
         self.0.regular_accelerations_prepared_at(&self.1, t, q, v)
     }

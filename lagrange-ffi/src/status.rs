@@ -156,6 +156,7 @@ pub fn status_of(e: &Error) -> Status {
     match e {
         Error::NonFiniteParameter { .. }
         | Error::InvalidInertia { .. }
+        | Error::InvalidRotation { .. }
         | Error::InvalidFriction { .. }
         | Error::InvalidConstraintDeclaration { .. } => Status::InvalidParameter,
         Error::NonFiniteState { .. } | Error::ConstraintViolation { .. } => Status::InvalidState,

@@ -10,7 +10,7 @@
 //! array coordinate or a family by a constant. Anything else that involves a coordinate (a method
 //! call such as `theta.sin()`, a product of two coordinates, a closure, a macro) is not affine,
 //! and neither is a declaration whose positions name `t` or that holds a spatial body (its rows
-//! are a rotation matrix).
+//! are a rotation matrix) or a body declared with its `com` (its centre of mass turns with it).
 
 use crate::check::{family_index, Model, Shape};
 use std::collections::HashMap;
@@ -48,7 +48,9 @@ pub fn is_affine(model: &Model) -> bool {
         names.insert(body.decl.ident().to_string(), Other);
     }
     for body in &model.bodies {
-        if body.shape == Shape::Spatial {
+        // A body declared by its frame has its centre of mass at its position plus its `com`
+        // turned by its angle: not affine in the angle.
+        if body.shape == Shape::Spatial || body.is_framed() {
             return false;
         }
         let own = body.decl.ident().to_string();

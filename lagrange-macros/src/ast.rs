@@ -10,9 +10,12 @@ use syn::{
 /// What `lagrange::prelude` exports.
 const LAGRANGE_PRELUDE: &[&str] = &[
     "planar",
+    "rot3",
+    "rot_axis",
     "rot_x",
     "rot_y",
     "rot_z",
+    "rpy",
     "spatial",
     "vec2",
     "vec3",

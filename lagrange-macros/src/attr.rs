@@ -65,7 +65,7 @@ impl Kind {
     fn allowed_arguments(self) -> &'static [&'static str] {
         match self {
             Kind::Particle => &["mass", "count"],
-            Kind::RigidBody => &["mass", "inertia", "count"],
+            Kind::RigidBody => &["mass", "inertia", "com", "count"],
             Kind::Point => &["count"],
             Kind::Force => &["on", "count"],
             Kind::Torque | Kind::GeneralizedForce => &["on"],
@@ -89,11 +89,25 @@ impl Kind {
     }
 }
 
-/// A moment of inertia: one about the centre of mass (planar), or three principal moments (spatial).
+/// A moment of inertia: one about the centre of mass (planar), three principal moments (spatial),
+/// or a full tensor about the centre of mass written as three rows (spatial).
 #[derive(Clone)]
 pub enum Inertia {
     Moment(Expr),
     Principal(syn::ExprArray),
+    /// `[[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]`: an array with an array among its
+    /// elements (its shape is checked later).
+    Tensor(syn::ExprArray),
+}
+
+impl Inertia {
+    /// The inertia as the expression written.
+    pub fn expr(&self) -> Expr {
+        match self {
+            Inertia::Moment(e) => e.clone(),
+            Inertia::Principal(a) | Inertia::Tensor(a) => Expr::Array(a.clone()),
+        }
+    }
 }
 
 /// The parsed arguments of one kind attribute.
@@ -104,6 +118,8 @@ pub struct Args {
     pub attr: Attribute,
     pub mass: Option<Expr>,
     pub inertia: Option<Inertia>,
+    /// A rigid body's centre of mass in the frame its function returns.
+    pub com: Option<Expr>,
     pub on: Option<Ident>,
     /// Coulomb coefficients of a friction row.
     pub kinetic: Option<Expr>,
@@ -154,6 +170,7 @@ pub fn parse_args(cx: &Ctxt, kind: Kind, attr: &Attribute) -> Args {
         attr: attr.clone(),
         mass: None,
         inertia: None,
+        com: None,
         on: None,
         kinetic: None,
         stiction: None,
@@ -215,8 +232,17 @@ fn add_argument(cx: &Ctxt, args: &mut Args, Argument { key, value }: Argument) {
         "kinetic" => args.kinetic.replace(value).is_some(),
         "stiction" => args.stiction.replace(value).is_some(),
         "count" => args.count.replace(value).is_some(),
+        "com" => args.com.replace(value).is_some(),
         "inertia" => {
             let inertia = match crate::ast::ungroup(&value).clone() {
+                Expr::Array(array)
+                    if array
+                        .elems
+                        .iter()
+                        .any(|e| matches!(crate::ast::ungroup(e), Expr::Array(_))) =>
+                {
+                    Inertia::Tensor(array)
+                }
                 Expr::Array(array) => Inertia::Principal(array),
                 other => Inertia::Moment(other),
             };

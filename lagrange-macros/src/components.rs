@@ -62,9 +62,13 @@ pub fn dependencies(model: &Model) -> (Vec<Vec<bool>>, BTreeMap<String, Vec<bool
         let deps = deps_of(&free, &name, &body_deps);
         // A single body written component by component: each row its own names (`vec2(x, y)`,
         // a planar body's angle).
+        // A body declared by its frame: each centre-of-mass row mixes the frame's position with
+        // its orientation, so every row gets the names of the whole.
         let components = match body.count {
-            None => crate::components::component_names(&body.decl.block, body.shape),
-            Some(_) => None,
+            None if !body.is_framed() => {
+                crate::components::component_names(&body.decl.block, body.shape)
+            }
+            _ => None,
         };
         match components {
             Some(components) => {

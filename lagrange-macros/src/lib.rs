@@ -43,7 +43,8 @@ use proc_macro::TokenStream;
 /// ```
 ///
 /// Items: `#[particle(mass = ..)]` and `#[point]` (return `Vec2`/`Vec3`), `#[rigid_body(mass = ..,
-/// inertia = ..)]` (`Planar`, or `Spatial` with `inertia = [I1, I2, I3]`), `#[potential]` (`f64`),
+/// inertia = ..)]` (`Planar`, or `Spatial` with `inertia = [I1, I2, I3]` or a full tensor
+/// `[[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]`, optionally `com = ..`), `#[potential]` (`f64`),
 /// `#[gravity]` (`Vec2`/`Vec3`), `#[force(on = body)]` (`Vec2`/`Vec3`), `#[torque(on = rigid_body)]`
 /// (`f64` on a planar body, `Vec3` on a spatial one) and `#[generalized_force(on = coordinate)]`
 /// (`f64`); constraint rows `#[constraint]` (g = 0),
@@ -54,6 +55,41 @@ use proc_macro::TokenStream;
 /// name coordinates, parameters, `t` and earlier bodies; potentials and position constraints every
 /// body; forces, velocity constraints and friction also `<coordinate>_dot` and `<body>_dot`. Other
 /// items of the module are kept as written.
+///
+/// **Rigid bodies by their frames.** Without `com`, a rigid body's function returns its centre of
+/// mass and its axes (`planar(centre, angle)`, `spatial(centre, rotation)`), and `inertia` is about
+/// the centre of mass in those axes: one moment (planar), or the principal moments `[I1, I2, I3]`
+/// (spatial: the axes are principal). With `com = EXPR` (`vec2(..)` for a `Planar` body, `vec3(..)`
+/// for a `Spatial` one; parameters and literals only, like `mass`) the function returns the pose of
+/// the body's *frame* — a joint frame, as a robot file gives it — and the centre of mass lies at
+/// `com` in that frame (world position `pose.point(com)`). A spatial body's inertia may be the full
+/// tensor about the centre of mass in the frame's axes, `inertia = [[ixx, ixy, ixz], [ixy, iyy,
+/// iyz], [ixz, iyz, izz]]` (the tensor's entries: a robot file's products of inertia `ixy`, `ixz`,
+/// `iyz` as they stand in the tensor), with or without `com`. Such a body is, everywhere a
+/// declaration names it, what its function returns: `Bodies.<body>` and `<body>` in later bodies,
+/// potentials and forces are the frame; `<body>_dot` its derivative (`linear`, or a planar body's
+/// `position`, the velocity of the frame's origin; the angular velocity unchanged). Gravity and
+/// `#[force(on = body)]` act at the centre of mass; `#[torque]` as for any body. `validate` refuses
+/// a tensor that is not finite, symmetric (to 1e-12 of its size) and positive definite, or whose
+/// principal moments violate the triangle inequality, and a `com` that is not finite
+/// (`Error::InvalidInertia`). A link placed from its parent's joint reads like a row of a robot
+/// file's table:
+///
+/// ```text
+/// #[rigid_body(mass = m2, com = vec3(0.0, 0.02, 0.15),
+///              inertia = [[ixx2, ixy2, 0.0], [ixy2, iyy2, 0.0], [0.0, 0.0, izz2]])]
+/// fn link2() -> Spatial {
+///     link1.joint(vec3(0.0, 0.0, 0.33), rpy(1.5707963267948966, 0.0, 0.0) * rot_z(q2))
+/// }
+/// ```
+///
+/// `Spatial::joint(origin, rotation)` is `spatial(self.point(origin), self.rotation * rotation)`,
+/// `Planar::joint(origin, angle)` is `planar(self.point(origin), self.angle + angle)`. Constant
+/// rotations are written `rpy(roll, pitch, yaw)` (Rz(yaw)·Ry(pitch)·Rx(roll), a robot file's
+/// convention), `rot_axis(axis, angle)` (the axis normalised) or `rot3([[..], [..], [..]])` (rows);
+/// a `rot3` matrix or a `rot_axis` axis written from parameters and literals is checked by
+/// `validate` (`Error::InvalidRotation`: not orthonormal to 1e-9 with determinant +1, or an axis of
+/// zero length).
 ///
 /// **Arrays and families.** A coordinate may be an array, `pub theta: [f64; LINKS]`, its length an
 /// integer literal or a `const LINKS: usize = 8;` of the module; in every function `theta` is then

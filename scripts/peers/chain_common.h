@@ -1,6 +1,6 @@
 /* Shared by mujoco_chain.c and pinocchio_chain.cpp: the N-link planar pendulum of
  * benches/chain.rs (its state, its hand-written closed form, the conversion between absolute and
- * relative joint angles) and the timing loop.
+ * relative joint angles); the timing loop is in timing.h.
  *
  * Chain: N point masses m = 1 on massless rods of length l = 0.5; absolute angles θⱼ from the
  * downward vertical; bob k at Σ_{j≤k} l (sin θⱼ, −cos θⱼ); gravity g = 9.81 along −y.
@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+#include "timing.h"
 
 #include <quadmath.h>
 
@@ -111,65 +113,11 @@ static double chain_max_abs_diff(int n, const double *a, const double *b, int *o
   return worst;
 }
 
-static double chain_now_ns(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
-}
-
-static int chain_cmp_double(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-#define CHAIN_REPS 21          /* repetitions timed (min and median reported) */
-#define CHAIN_REP_NS 10e6      /* target length of one repetition: 10 ms */
-#define CHAIN_WARMUP_NS 50e6   /* warm-up before timing: 50 ms */
-
-typedef struct {
-  double min_ns, median_ns; /* per call */
-  long iters;               /* calls per repetition */
-} chain_timing;
-
-/* Times STMT: a warm-up of ≈ 50 ms that also sizes a repetition to ≈ 10 ms, then CHAIN_REPS
- * repetitions; min and median of the per-call time. A compiler barrier after each call keeps
- * the calls from being merged or hoisted. */
-#define CHAIN_TIME(result, STMT)                                                       \
-  do {                                                                                 \
-    long chain_it_ = 1;                                                                \
-    double chain_t0_ = chain_now_ns(), chain_el_ = 0.0, chain_tot_ = 0.0;              \
-    for (;;) {                                                                         \
-      chain_t0_ = chain_now_ns();                                                      \
-      for (long chain_i_ = 0; chain_i_ < chain_it_; chain_i_++) {                      \
-        STMT;                                                                          \
-        __asm__ __volatile__("" ::: "memory");                                         \
-      }                                                                                \
-      chain_el_ = chain_now_ns() - chain_t0_;                                          \
-      chain_tot_ += chain_el_;                                                         \
-      if (chain_tot_ >= CHAIN_WARMUP_NS && chain_el_ >= CHAIN_REP_NS / 4) break;       \
-      if (chain_el_ < CHAIN_REP_NS) chain_it_ *= 2;                                    \
-    }                                                                                  \
-    chain_it_ = (long)(chain_it_ * CHAIN_REP_NS / chain_el_) + 1;                      \
-    double chain_per_[CHAIN_REPS];                                                     \
-    for (int chain_r_ = 0; chain_r_ < CHAIN_REPS; chain_r_++) {                        \
-      chain_t0_ = chain_now_ns();                                                      \
-      for (long chain_i_ = 0; chain_i_ < chain_it_; chain_i_++) {                      \
-        STMT;                                                                          \
-        __asm__ __volatile__("" ::: "memory");                                         \
-      }                                                                                \
-      chain_per_[chain_r_] = (chain_now_ns() - chain_t0_) / (double)chain_it_;         \
-    }                                                                                  \
-    qsort(chain_per_, CHAIN_REPS, sizeof(double), chain_cmp_double);                   \
-    (result).min_ns = chain_per_[0];                                                   \
-    (result).median_ns = chain_per_[CHAIN_REPS / 2];                                   \
-    (result).iters = chain_it_;                                                        \
-  } while (0)
-
 /* One result line, tab-separated, read by run.sh:
  * peer  variant  N  max|q̈ − closed form|  check  max|q̈ − float128 reference|  min_ns  median_ns
  * calls_per_rep. check is "ok" when |q̈ⱼ − closed formⱼ| ≤ 1e-10 (1 + |closed formⱼ|) for all j. */
 static void chain_report(const char *peer, const char *variant, int n, double err, int ok,
-                         double err_ref, chain_timing t) {
+                         double err_ref, peer_timing t) {
   printf("%s\t%s\t%d\t%.3e\t%s\t%.3e\t%.1f\t%.1f\t%ld\n", peer, variant, n, err,
          ok ? "ok" : "FAIL", err_ref, t.min_ns, t.median_ns, t.iters);
   fflush(stdout);

@@ -100,7 +100,7 @@ int main(void) {
     chain_reference(n, q, v, ref);
     int ok_cf;
     double err_cf = chain_max_abs_diff(n, expect, ref, &ok_cf);
-    chain_timing none = {0.0, 0.0, 0};
+    peer_timing none = {0.0, 0.0, 0};
     chain_report("closed_form", "double", n, 0.0, 1, err_cf, none);
 
     mjModel *m = load_chain(n);
@@ -121,10 +121,10 @@ int main(void) {
            n, err_tiny, ref_tiny, err_fwd, ref_fwd);
     all_ok &= ok_fwd & ok_part;
 
-    chain_timing t;
-    CHAIN_TIME(t, mj_forward(m, d));
+    peer_timing t;
+    PEER_TIME(t, mj_forward(m, d));
     chain_report("mujoco", "mj_forward", n, err_fwd, ok_fwd, ref_fwd, t);
-    CHAIN_TIME(t, (mj_fwdPosition(m, d), mj_fwdVelocity(m, d), mj_fwdActuation(m, d),
+    PEER_TIME(t, (mj_fwdPosition(m, d), mj_fwdVelocity(m, d), mj_fwdActuation(m, d),
                    mj_fwdAcceleration(m, d)));
     chain_report("mujoco", "fwd_pos_vel_act_acc", n, err_part, ok_part, ref_part, t);
 

@@ -95,12 +95,12 @@ int main() {
     double err_minv = compare(n, out, expect, &ok_minv, ref, &ref_minv);
     all_ok &= ok_local & ok_world & ok_minv;
 
-    chain_timing t;
-    CHAIN_TIME(t, pinocchio::aba(model, data, q, v, tau, Convention::LOCAL));
+    peer_timing t;
+    PEER_TIME(t, pinocchio::aba(model, data, q, v, tau, Convention::LOCAL));
     chain_report("pinocchio", "aba_local", n, err_local, ok_local, ref_local, t);
-    CHAIN_TIME(t, pinocchio::aba(model, data, q, v, tau, Convention::WORLD));
+    PEER_TIME(t, pinocchio::aba(model, data, q, v, tau, Convention::WORLD));
     chain_report("pinocchio", "aba_world", n, err_world, ok_world, ref_world, t);
-    CHAIN_TIME(t, minverse_nle(model, data, q, v, out));
+    PEER_TIME(t, minverse_nle(model, data, q, v, out));
     chain_report("pinocchio", "minverse_nle", n, err_minv, ok_minv, ref_minv, t);
   }
   return all_ok ? 0 : 2;

@@ -6,51 +6,18 @@
 #   scripts/peers/run.sh            # full run (first run: venv, pip install, ≈ 2-3 min compile)
 #
 # Environment: MUJOCO_VERSION, PIN_VERSION, EIGEN_VERSION override the pinned PyPI versions;
-# CC, CXX the compilers.
+# CC, CXX the compilers (env.sh).
 set -euo pipefail
 cd "$(dirname "$0")"
 
-MUJOCO_VERSION=${MUJOCO_VERSION:-4.0.0}
-PIN_VERSION=${PIN_VERSION:-4.1.0}
-EIGEN_VERSION=${EIGEN_VERSION:-3.4.1}
-CC=${CC:-cc}
-CXX=${CXX:-c++}
-
-# 1. Virtual environment with the two wheels. `pin` brings Pinocchio's headers and Boost's
-# (cmeel-boost) under site-packages/cmeel.prefix; Eigen's headers come from cmeel-eigen, which
-# the pin wheel does not pull in at run time.
-if [ ! -x .venv/bin/python ]; then
-  python3 -m venv .venv
+# 1. Virtual environment and compile commands (env.sh); 2. drivers, rebuilt when a source is
+# newer than the binary.
+. ./env.sh
+if stale build/mujoco_chain mujoco_chain.c chain_common.h timing.h "$mj_lib"; then
+  build_mujoco mujoco_chain.c build/mujoco_chain
 fi
-site=$(.venv/bin/python -c "import sysconfig; print(sysconfig.get_paths()['purelib'])")
-if ! .venv/bin/python -c "import mujoco, pinocchio" 2>/dev/null ||
-  [ ! -e "$site/cmeel.prefix/include/eigen3/Eigen/Core" ]; then
-  .venv/bin/pip install --quiet "mujoco==$MUJOCO_VERSION" "pin==$PIN_VERSION" "cmeel-eigen==$EIGEN_VERSION"
-fi
-mj_inc="$site/mujoco/include"
-mj_lib=$(ls "$site"/mujoco/libmujoco.so* | head -n 1)
-prefix="$site/cmeel.prefix"
-for f in "$mj_inc/mujoco/mujoco.h" "$mj_lib" "$prefix/include/pinocchio/algorithm/aba.hpp" \
-  "$prefix/include/eigen3/Eigen/Core" "$prefix/include/boost/variant.hpp"; do
-  [ -e "$f" ] || { echo "missing: $f" >&2; exit 1; }
-done
-
-# 2. Drivers, rebuilt when a source is newer than the binary.
-mkdir -p build
-stale() { [ ! -x "$1" ] || [ -n "$(find "${@:2}" -newer "$1")" ]; }
-if stale build/mujoco_chain mujoco_chain.c chain_common.h "$mj_lib"; then
-  echo "building build/mujoco_chain" >&2
-  "$CC" -O3 -march=native -std=gnu11 -Wall -Wextra -I"$mj_inc" mujoco_chain.c "$mj_lib" \
-    -Wl,-rpath,"$(dirname "$mj_lib")" -lquadmath -lm -o build/mujoco_chain
-fi
-if stale build/pinocchio_chain pinocchio_chain.cpp chain_common.h; then
-  echo "building build/pinocchio_chain (header-only Pinocchio, a few minutes)" >&2
-  # The definitions are those Pinocchio's CMake package exports for its header-only target.
-  "$CXX" -O3 -march=native -std=c++17 -DNDEBUG \
-    -DBOOST_MPL_LIMIT_LIST_SIZE=30 -DBOOST_MPL_LIMIT_VECTOR_SIZE=30 \
-    -DBOOST_MPL_CFG_NO_PREPROCESSED_HEADERS -DBOOST_FUSION_INVOKE_MAX_ARITY=12 \
-    -w -I"$prefix/include" -I"$prefix/include/eigen3" pinocchio_chain.cpp -lquadmath \
-    -o build/pinocchio_chain
+if stale build/pinocchio_chain pinocchio_chain.cpp chain_common.h timing.h; then
+  build_pinocchio pinocchio_chain.cpp build/pinocchio_chain
 fi
 
 # 3. Check and time. A driver exits 2 when a check failed (it still times); anything else

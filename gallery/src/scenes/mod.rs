@@ -19,6 +19,7 @@ pub mod rough_plane;
 pub mod rough_ramp;
 pub mod rough_wedge;
 pub mod small_oscillations;
+pub mod spatial_arm;
 pub mod sphere_release;
 pub mod spinning_hoop;
 pub mod wedge_block;

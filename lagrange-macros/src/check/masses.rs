@@ -1,6 +1,6 @@
 //! What the mass matrix needs: constant masses and inertias, and every coordinate moving a body.
 
-use super::model::{Body, Model};
+use super::model::{Body, Model, Shape};
 use super::resolve::{resolve_free_names, Context};
 use crate::attr::{Inertia, Kind};
 use crate::ctxt::Ctxt;
@@ -18,6 +18,7 @@ pub(super) fn check_masses(cx: &Ctxt, model: &Model) {
         check_mass(cx, model, body);
         if args.kind == Kind::RigidBody {
             check_inertia(cx, model, body);
+            check_centre_of_mass(cx, model, body);
         }
     }
 }
@@ -54,6 +55,53 @@ fn check_inertia(cx: &Ctxt, model: &Model, body: &Body) {
                 cx.error_spanned_by(array, "principal moments are three: `[I1, I2, I3]`");
             }
             array.elems.iter().for_each(|e| check_constant(cx, model, e));
+        }
+        Some(Inertia::Tensor(rows)) => {
+            // `inertia = [[a, 0.0], [0.0, b]]`: a tensor in space is 3×3.
+            let square = rows.elems.len() == 3
+                && rows.elems.iter().all(|row| {
+                    matches!(crate::ast::ungroup(row), syn::Expr::Array(r) if r.elems.len() == 3)
+                });
+            if !square {
+                cx.error_spanned_by(
+                    rows,
+                    "an inertia tensor is three rows of three: `[[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]`",
+                );
+            }
+            check_constant(cx, model, &syn::Expr::Array(rows.clone()));
+        }
+    }
+}
+
+/// A rigid body's `com`, if given, is a constant vector of the body's dimension: `vec2(..)` for a
+/// `Planar` body, `vec3(..)` for a `Spatial` one. A constructor of the other dimension is reported
+/// here; any other expression is typed by rustc, at its tokens, as a `Vec2<f64>` or `Vec3<f64>`.
+fn check_centre_of_mass(cx: &Ctxt, model: &Model, body: &Body) {
+    let Some(com) = &body.decl.args.com else {
+        return;
+    };
+    resolve_free_names(
+        cx,
+        model,
+        Context::CentreOfMass,
+        &names::free_names_of_expr(com),
+    );
+    let (expected, other) = match body.shape {
+        Shape::Planar => ("vec2", "vec3"),
+        _ => ("vec3", "vec2"),
+    };
+    // `#[rigid_body(mass = m, inertia = i, com = vec3(0.0, 0.0, l))] fn arm() -> Planar`.
+    if let syn::Expr::Call(call) = crate::ast::ungroup(com) {
+        if matches!(crate::ast::ungroup(&call.func), syn::Expr::Path(p) if p.path.is_ident(other)) {
+            let shape = if body.shape == Shape::Planar {
+                "Planar"
+            } else {
+                "Spatial"
+            };
+            cx.error_spanned_by(
+                com,
+                format!("the centre of mass of a `{shape}` body is a point of its frame: `com = {expected}(..)`"),
+            );
         }
     }
 }

@@ -16,6 +16,7 @@ mod signatures;
 mod structs;
 
 pub use model::{family_index, Body, Dim, Model, Shape};
+pub(crate) use resolve::GEOMETRY_FUNCTIONS;
 
 use crate::ast::{Decl, Mechanism};
 use crate::attr::Kind;

@@ -57,6 +57,24 @@ pub struct Body<'a> {
 }
 
 impl Body<'_> {
+    /// Whether the body's function returns its frame with the centre of mass at a declared `com`
+    /// in it.
+    pub fn has_com(&self) -> bool {
+        self.decl.args.com.is_some()
+    }
+
+    /// Whether the body's inertia is a full tensor, whose principal axes differ from its frame's.
+    pub fn has_tensor(&self) -> bool {
+        matches!(self.decl.args.inertia, Some(Inertia::Tensor(_)))
+    }
+
+    /// Whether the pose the body's function returns is not its centre of mass and principal axes
+    /// (a `com`, or a full tensor): its rows of x are then the pose's `principal` image under
+    /// `lagrange_core::inertia::{SpatialMassFrame, PlanarMassFrame}`, not the pose itself.
+    pub fn is_framed(&self) -> bool {
+        self.has_com() || self.has_tensor()
+    }
+
     /// Members: 1, or the family's count.
     pub fn members(&self) -> usize {
         self.count.unwrap_or(1)
@@ -307,10 +325,14 @@ fn body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
     }
 }
 
-/// A rigid body is `Planar` with one moment of inertia and `Spatial` with three principal moments;
-/// a return type that disagrees with the inertia is reported (and the body taken as `Spatial`).
+/// A rigid body is `Planar` with one moment of inertia and `Spatial` with three principal moments
+/// or a full tensor; a return type that disagrees with the inertia is reported (and the body taken
+/// as `Spatial`).
 fn rigid_body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
-    let principal = matches!(decl.args.inertia, Some(Inertia::Principal(_)));
+    let principal = matches!(
+        decl.args.inertia,
+        Some(Inertia::Principal(_) | Inertia::Tensor(_))
+    );
     // `#[rigid_body(..)] fn bar() -> Vec2`: a rigid body has an orientation too.
     let name = expect_return_type(
         cx,
@@ -323,10 +345,11 @@ fn rigid_body_shape(cx: &Ctxt, decl: &Decl) -> Shape {
         (Some("Planar"), false) | (None, false) => Shape::Planar,
         // `#[rigid_body(mass = m, inertia = [a, b, c])] fn top() -> Planar`.
         (Some(_), true) => {
-            cx.error_spanned_by(
-                decl.output(),
-                "three principal moments `inertia = [I1, I2, I3]` make a spatial body: return `Spatial`",
-            );
+            let message = match decl.args.inertia {
+                Some(Inertia::Tensor(_)) => "an inertia tensor `inertia = [[..], [..], [..]]` makes a spatial body: return `Spatial`",
+                _ => "three principal moments `inertia = [I1, I2, I3]` make a spatial body: return `Spatial`",
+            };
+            cx.error_spanned_by(decl.output(), message);
             Shape::Spatial
         }
         // `#[rigid_body(mass = m, inertia = i)] fn top() -> Spatial`.

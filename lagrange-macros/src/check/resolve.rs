@@ -9,8 +9,8 @@ use syn::ext::IdentExt;
 use syn::Ident;
 
 /// Functions of the geometry module, in scope in every function body.
-const GEOMETRY_FUNCTIONS: &[&str] = &[
-    "vec2", "vec3", "planar", "spatial", "rot_x", "rot_y", "rot_z",
+pub(crate) const GEOMETRY_FUNCTIONS: &[&str] = &[
+    "vec2", "vec3", "planar", "spatial", "rot_x", "rot_y", "rot_z", "rpy", "rot_axis", "rot3",
 ];
 /// Single-segment values of Rust's prelude.
 const PRELUDE_VALUES: &[&str] = &["Some", "None", "Ok", "Err", "drop"];
@@ -70,6 +70,8 @@ pub(super) enum Context {
     Force,
     /// A mass, inertia or friction coefficient: a constant.
     Mass,
+    /// A rigid body's centre of mass in its frame (`com = ..`): a constant.
+    CentreOfMass,
 }
 
 /// What a free name refers to.
@@ -149,7 +151,7 @@ impl Resolver<'_, '_> {
             Context::Position(_) => "a coordinate, parameter, `t`, body or point declared earlier, or item of this module",
             Context::Potential | Context::Constraint => "a coordinate, parameter, `t`, body, point, or item of this module",
             Context::Force => "a coordinate, parameter, `t`, body, point, their `_dot` velocities, or item of this module",
-            Context::Mass => "a parameter or an item of this module",
+            Context::Mass | Context::CentreOfMass => "a parameter or an item of this module",
         };
         Some(format!("unknown name `{ident}`: it is not {in_scope}"))
     }
@@ -163,6 +165,13 @@ impl Resolver<'_, '_> {
                 Name::Coord | Name::Time | Name::Body(_) | Name::CoordVelocity | Name::BodyVelocity,
             ) => Some(format!(
                 "masses and inertias are constant: they cannot depend on `{ident}`"
+            )),
+            // `#[rigid_body(.., com = vec3(0.0, 0.0, theta))]`: the body's own geometry.
+            (
+                Context::CentreOfMass,
+                Name::Coord | Name::Time | Name::Body(_) | Name::CoordVelocity | Name::BodyVelocity,
+            ) => Some(format!(
+                "a centre of mass `com` is a constant point of the body's frame: it cannot depend on `{ident}` (write the motion in the body's function)"
             )),
             (_, Name::CoordVelocity | Name::BodyVelocity) => self.velocity_out_of_place(ident),
             (Context::Position(me), Name::Body(b)) => self.body_out_of_order(ident, me, b),
@@ -181,7 +190,7 @@ impl Resolver<'_, '_> {
             Context::Constraint => Some(format!("a position constraint cannot depend on velocities: `{ident}` is in scope in `#[velocity_constraint]`s, `#[friction]` and forces")),
             // `#[potential] fn v() -> f64 { theta_dot * theta_dot }`.
             Context::Potential => Some(format!("potentials cannot depend on velocities: `{ident}` is in scope in forces only (write a `#[force]` or `#[generalized_force]`)")),
-            Context::Force | Context::Mass => None,
+            Context::Force | Context::Mass | Context::CentreOfMass => None,
         }
     }
 

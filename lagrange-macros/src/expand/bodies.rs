@@ -5,9 +5,10 @@
 use super::{
     bind_inputs_from, lit, optimized_blocks_from, position_type, prelude, private, Params,
 };
+use crate::attr::Inertia;
 use crate::check::{self, Body, Dim, Model, Shape};
 use proc_macro2::{Ident, TokenStream};
-use quote::quote;
+use quote::{format_ident, quote};
 
 /// The type of a body's position and velocity in `Bodies<T>` / `BodyVelocities<T>`.
 fn body_types(shape: Shape) -> (TokenStream, TokenStream) {
@@ -55,7 +56,8 @@ pub(super) fn bodies_structs(model: &Model) -> TokenStream {
     let derive = quote!(#[derive(#p::core::clone::Clone, #p::core::marker::Copy, #p::core::fmt::Debug, #p::core::cmp::PartialEq)]);
     quote! {
         /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-        /// body's centre of mass and orientation.
+        /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+        /// body declared with its `com`, its frame).
         #derive
         #[allow(dead_code)]
         pub struct Bodies<T = f64> {
@@ -65,6 +67,8 @@ pub(super) fn bodies_structs(model: &Model) -> TokenStream {
         /// The velocity of every body and point, by name: a particle or point's velocity; for a
         /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
         /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+        /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+        /// centre of mass's.
         #derive
         #[allow(dead_code)]
         pub struct BodyVelocities<T = f64> {
@@ -84,6 +88,7 @@ pub(super) fn inherent_impl(model: &Model) -> TokenStream {
         || !model.constraints.is_empty())
     .then(|| positions_from_cartesian(model));
     let velocities_from_cartesian = velocities_from_cartesian(model);
+    let mass_frames = mass_frame_fns(model);
     quote! {
         impl #params {
             /// Every body and point at `state`, by name.
@@ -100,14 +105,66 @@ pub(super) fn inherent_impl(model: &Model) -> TokenStream {
                 let q = <Coords as #p::Coordinates<#n>>::to_array(&state.q);
                 let v = <Coords as #p::Coordinates<#n>>::to_array(&state.v);
                 let (x, x_dot) = #p::dynamics::cartesian_velocities::<Self, f64, #n, #k>(self, state.t, &q, &v);
-                Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+                self.__lagrange_velocities_from_cartesian(&x, &x_dot)
             }
 
             #bodies_fn
             #from_cartesian
             #velocities_from_cartesian
+            #mass_frames
         }
     }
+}
+
+/// The name of the method that gives a framed body's mass frame ([`mass_frame_fns`]).
+pub(crate) fn mass_frame_method(body: &Body) -> Ident {
+    format_ident!("__lagrange_mass_frame_{}", body.decl.ident())
+}
+
+/// For each body declared by its frame ([`Body::is_framed`]), `__lagrange_mass_frame_<body>`:
+/// where its mass lies in that frame (`lagrange_core::inertia::SpatialMassFrame` or
+/// `PlanarMassFrame`), from its `com` and the principal axes of its tensor. The parameters are
+/// read as `f64`: a centre of mass and an inertia are constants, never seeded.
+fn mass_frame_fns(model: &Model) -> TokenStream {
+    let p = private();
+    let prelude = prelude();
+    let methods = model.bodies.iter().filter(|b| b.is_framed()).map(|body| {
+        let args = &body.decl.args;
+        let method = mass_frame_method(body);
+        let mut used = std::collections::BTreeSet::new();
+        for expr in args.com.iter().cloned().chain(args.inertia.as_ref().map(|i| i.expr())) {
+            used.extend(crate::names::free_names_of_expr(&expr).iter().map(|i| i.to_string()));
+        }
+        let params = model.params.iter().map(|f| &f.ident).filter(|f| used.contains(&f.to_string()));
+        let (ty, value) = match body.shape {
+            Shape::Planar => {
+                let com = args.com.as_ref().expect("a framed planar body has a `com`");
+                (quote!(#p::inertia::PlanarMassFrame), quote!(#p::inertia::PlanarMassFrame { com: #com }))
+            }
+            _ => {
+                let com = match &args.com {
+                    Some(com) => quote!(#p::core::option::Option::Some(#com)),
+                    None => quote!(#p::core::option::Option::None),
+                };
+                let axes = match &args.inertia {
+                    Some(Inertia::Tensor(tensor)) => quote!(#p::core::option::Option::Some(#p::inertia::principal_axes(&#tensor).1)),
+                    _ => quote!(#p::core::option::Option::None),
+                };
+                (quote!(#p::inertia::SpatialMassFrame), quote!(#p::inertia::SpatialMassFrame { com: #com, axes: #axes }))
+            }
+        };
+        quote! {
+            #[doc(hidden)]
+            #[inline(always)]
+            #[allow(unused_variables, clippy::all)]
+            fn #method(&self) -> #ty {
+                #prelude
+                #( let #params: f64 = self.#params; )*
+                #value
+            }
+        }
+    });
+    quote!(#(#methods)*)
 }
 
 /// The user's position functions as `let` bindings in declaration order, on any scalar:
@@ -187,18 +244,6 @@ fn zero_position(shape: Shape) -> TokenStream {
 fn row(x: &TokenStream, i: usize) -> TokenStream {
     let i = lit(i);
     quote!(#x[#i])
-}
-
-/// A body rebuilt from its rows of x (or ẋ, for velocities).
-fn unflatten(body: &Body, x: &TokenStream, velocity: bool) -> TokenStream {
-    match body.count {
-        Some(n) => {
-            let members =
-                (0..n).map(|k| unflatten_at(body, body.row + k * body.shape.rows(), x, velocity));
-            quote!([#(#members),*])
-        }
-        None => unflatten_at(body, body.row, x, velocity),
-    }
 }
 
 /// One body (or family member) whose first row is `first`.
@@ -281,17 +326,77 @@ fn flatten_one(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
     }
 }
 
+/// `let __frame_<body> = self.__lagrange_mass_frame_<body>();` for each framed body.
+fn bind_mass_frames(model: &Model) -> TokenStream {
+    let frames = model.bodies.iter().filter(|b| b.is_framed()).map(|b| {
+        let (frame, method) = (mass_frame_binding(b), mass_frame_method(b));
+        quote!(let #frame = self.#method();)
+    });
+    quote!(#(#frames)*)
+}
+
+/// The local a body's mass frame is bound to ([`bind_mass_frames`]).
+fn mass_frame_binding(body: &Body) -> Ident {
+    format_ident!("__frame_{}", body.decl.ident())
+}
+
+/// A body (every member of a family) from its rows of x: its pose as its function returns it
+/// (for a framed body, the frame of its centre of mass and principal axes mapped back).
+fn body_from_rows(body: &Body) -> TokenStream {
+    let x = quote!(__x);
+    let member = |first: usize| {
+        let principal = unflatten_at(body, first, &x, false);
+        match body.is_framed() {
+            true => {
+                let frame = mass_frame_binding(body);
+                quote!(#frame.frame(#principal))
+            }
+            false => principal,
+        }
+    };
+    match body.count {
+        Some(n) => {
+            let members = (0..n).map(|k| member(body.row + k * body.shape.rows()));
+            quote!([#(#members),*])
+        }
+        None => member(body.row),
+    }
+}
+
+/// A body's velocity (every member of a family) from its rows of x and ẋ: the velocity of the
+/// pose its function returns (for a framed body, of the frame's origin).
+fn velocity_from_rows(body: &Body) -> TokenStream {
+    let (x, x_dot) = (quote!(__x), quote!(__x_dot));
+    let member = |first: usize| {
+        let velocity = unflatten_at(body, first, &x_dot, true);
+        match body.is_framed() {
+            true => {
+                let frame = mass_frame_binding(body);
+                let principal = unflatten_at(body, first, &x, false);
+                quote!(#frame.frame_velocity(&#principal, #velocity))
+            }
+            false => velocity,
+        }
+    };
+    match body.count {
+        Some(n) => {
+            let members = (0..n).map(|k| member(body.row + k * body.shape.rows()));
+            quote!([#(#members),*])
+        }
+        None => member(body.row),
+    }
+}
+
 fn positions_from_cartesian(model: &Model) -> TokenStream {
     let p = private();
     let k = lit(model.rows);
     let names = model.bodies.iter().map(|b| b.decl.ident());
-    let values = model
-        .bodies
-        .iter()
-        .map(|b| unflatten(b, &quote!(__x), false));
+    let frames = bind_mass_frames(model);
+    let values = model.bodies.iter().map(body_from_rows);
     quote! {
         #[inline(always)]
-        fn __lagrange_bodies_from_cartesian<__D: #p::Scalar>(__x: &[__D; #k]) -> Bodies<__D> {
+        fn __lagrange_bodies_from_cartesian<__D: #p::Scalar>(&self, __x: &[__D; #k]) -> Bodies<__D> {
+            #frames
             Bodies { #(#names: #values),* }
         }
     }
@@ -301,14 +406,13 @@ fn velocities_from_cartesian(model: &Model) -> TokenStream {
     let p = private();
     let k = lit(model.rows);
     let names = model.bodies.iter().map(|b| b.decl.ident());
-    let values = model
-        .bodies
-        .iter()
-        .map(|b| unflatten(b, &quote!(__x_dot), true));
+    let frames = bind_mass_frames(model);
+    let values = model.bodies.iter().map(velocity_from_rows);
     quote! {
         #[inline(always)]
         #[allow(unused_variables)]
-        fn __lagrange_velocities_from_cartesian<__D: #p::Scalar>(__x: &[__D; #k], __x_dot: &[__D; #k]) -> BodyVelocities<__D> {
+        fn __lagrange_velocities_from_cartesian<__D: #p::Scalar>(&self, __x: &[__D; #k], __x_dot: &[__D; #k]) -> BodyVelocities<__D> {
+            #frames
             BodyVelocities { #(#names: #values),* }
         }
     }

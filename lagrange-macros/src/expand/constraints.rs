@@ -180,7 +180,7 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
         let body_velocities = model.bodies.iter().map(|b| format_ident!("{}_dot", b.decl.ident()));
         quote! {
             #coords
-            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x, __x_dot);
+            let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);
         }
     });
     // Inlined like `cartesian`: which derivatives of x are structurally absent is then known where

@@ -11,6 +11,8 @@ pub(super) enum Equations {
     ClosedForm(usize),
     /// `lagrange_core::tree` over a tree of translations (seed width, bodies).
     Tree(usize, usize),
+    /// `lagrange_core::tree::rigid` over a kinematic tree of rigid bodies (bodies).
+    Rigid(usize),
     /// The dual-number passes of `lagrange_core::dynamics`.
     Dense,
 }
@@ -45,6 +47,7 @@ pub(super) fn mechanism_impl(
     let prepared = match (positions, &equations) {
         (Positions::Affine { straight_line }, _) => Prepared::Affine { straight_line },
         (_, Equations::ClosedForm(count)) => Prepared::Coefficients(*count),
+        (_, Equations::Rigid(b)) => Prepared::Rigid(*b),
         _ => Prepared::Nothing,
     };
     let prepare = prepare_impl(params, &n, &k, prepared);
@@ -135,6 +138,7 @@ pub(super) fn mechanism_impl(
                 #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, true)
             }
         }),
+        Prepared::Rigid(_) => Some(rigid_prepared_calls(n.clone())),
         Prepared::Nothing => None,
     };
     let scleronomic = !rheonomic;
@@ -167,10 +171,23 @@ pub(super) fn mechanism_impl(
             }
         }),
     };
+    let rigid = |call: TokenStream| match equations {
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            Some(quote!({
+                let __k = self.__lagrange_rigid_constants();
+                #p::tree::rigid::#call::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, &__k, q, v)
+            }))
+        }
+        _ => None,
+    };
+    let kinetic = rigid(quote!(kinetic_energy))
+        .unwrap_or_else(|| quote!(#p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)));
     let momenta = match equations {
         Equations::ClosedForm(_) => quote! {
             self.__lagrange_canonical_field_with::<S>(#p::core::option::Option::None, q, v).0
         },
+        Equations::Rigid(_) => rigid(quote!(momenta)).expect("a rigid tree"),
         _ => quote!(#p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)),
     };
     let closed_form = matches!(equations, Equations::ClosedForm(_));
@@ -179,6 +196,10 @@ pub(super) fn mechanism_impl(
         Equations::Tree(w, b) => {
             let (w, b) = (lit(w), lit(b));
             quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
+        }
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            quote!(#p::tree::rigid::equations_of_motion::<Self, S, #n, #k, #b>(self, &self.__lagrange_rigid_constants(), t, q, v))
         }
         Equations::Dense => {
             quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v))
@@ -196,6 +217,17 @@ pub(super) fn mechanism_impl(
                 }
             })
         }
+        // The constants computed for the call: a validated handle prepares them once.
+        (Equations::Rigid(_), None) => Some(quote! {
+            #[inline]
+            fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+                self.__lagrange_rigid_accelerations(&self.__lagrange_rigid_constants(), t, q, v)
+            }
+            #[inline]
+            fn inverse_dynamics_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n], qdd: &[S; #n]) -> [S; #n] {
+                self.__lagrange_rigid_inverse_dynamics(&self.__lagrange_rigid_constants(), t, q, v, qdd)
+            }
+        }),
         _ => None,
     };
     let validate_constraints = constrained.map(|c| {
@@ -234,7 +266,7 @@ pub(super) fn mechanism_impl(
             }
             #[inline]
             fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S {
-                #p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)
+                #kinetic
             }
             #[inline]
             fn potential_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> S {
@@ -264,6 +296,9 @@ enum Prepared {
     },
     /// The closed form's coefficients (`expand::closed_form`).
     Coefficients(usize),
+    /// A rigid tree's joint frames and inertias (`lagrange_core::tree::rigid::RigidConstants`),
+    /// for its bodies.
+    Rigid(usize),
     Nothing,
 }
 
@@ -283,6 +318,18 @@ fn prepare_impl(
                 #[inline]
                 fn prepare(&self) -> #p::Result<Self::Prepared> {
                     #p::core::result::Result::Ok(self.__lagrange_coefficients())
+                }
+            }
+        };
+    }
+    if let Prepared::Rigid(b) = prepared {
+        let b = lit(b);
+        return quote! {
+            impl #p::Prepare for #params {
+                type Prepared = #p::tree::rigid::RigidConstants<#b>;
+                #[inline]
+                fn prepare(&self) -> #p::Result<Self::Prepared> {
+                    #p::core::result::Result::Ok(self.__lagrange_rigid_constants())
                 }
             }
         };
@@ -365,6 +412,22 @@ fn constrained_overrides(
             __O: #p::core::ops::FnMut(#p::lagrange_core::integrate::Observation<'_, Coords, #n>),
         {
             #constraints::integrate_declared_contacts::<__P, Self, #n, #k, #c>(method, self, state, t_end, events, observer)
+        }
+    }
+}
+
+/// Through a validated handle, a rigid tree's q̈ and inverse dynamics from the constants it
+/// prepared.
+fn rigid_prepared_calls(n: proc_macro2::Literal) -> TokenStream {
+    let p = private();
+    quote! {
+        #[inline]
+        fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+            self.__lagrange_rigid_accelerations(prepared, t, q, v)
+        }
+        #[inline]
+        fn inverse_dynamics_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n], qdd: &[S; #n]) -> [S; #n] {
+            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
         }
     }
 }

@@ -26,6 +26,7 @@ mod fallback;
 mod mechanism;
 mod model;
 mod parametrized;
+mod rigid;
 mod tree;
 
 use bodies::{bodies_structs, inherent_impl};
@@ -102,7 +103,7 @@ pub(crate) fn prelude() -> TokenStream {
     let p = private();
     quote! {
         #[allow(unused_imports)]
-        use #p::geometry::{planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
+        use #p::geometry::{planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
         #[allow(unused_imports)]
         use #p::DualNum as _;
     }
@@ -126,6 +127,15 @@ fn recursion_is_cheaper(
         tree.moves_each_coordinate_once(model.dof())
             && equations.terms() > RECURSION_TERMS_PER_BODY * tree.bodies.len()
     })
+}
+
+/// Whether a rigid tree's articulated-body recursion beats the closed form's `equations`, by the
+/// same measure as [`recursion_is_cheaper`].
+fn rigid_recursion_is_cheaper(
+    equations: &crate::symbolic::Equations,
+    tree: Option<&crate::structure::rigid::RigidTree>,
+) -> bool {
+    tree.is_some_and(|tree| equations.terms() > RECURSION_TERMS_PER_BODY * tree.nodes.len())
 }
 
 /// The whole module for a declaration that passed every check.
@@ -153,17 +163,27 @@ fn generate(model: &Model) -> TokenStream {
     // plain mechanism's call, which prepares nothing), otherwise a tree of translations from each
     // body's own seeds, or the dense pass.
     let tree = crate::structure::tree(model);
-    let closed_form = crate::symbolic::equations(model)
-        .filter(|equations| !recursion_is_cheaper(model, equations, tree.as_ref()));
-    let tree = tree.filter(|_| closed_form.is_none());
+    // Positions affine in the coordinates need no recursion: M is a constant.
+    let rigid = match affine {
+        true => None,
+        false => crate::structure::rigid::rigid_tree(model),
+    };
+    let closed_form = crate::symbolic::equations(model).filter(|equations| {
+        !recursion_is_cheaper(model, equations, tree.as_ref())
+            && !rigid_recursion_is_cheaper(equations, rigid.as_ref())
+    });
+    let rigid = rigid.filter(|_| closed_form.is_none());
+    let tree = tree.filter(|_| closed_form.is_none() && rigid.is_none());
     let tree_items = tree.as_ref().map(|tree| tree::tree_items(model, tree));
+    let rigid_items = rigid.as_ref().map(|tree| rigid::rigid_items(model, tree));
     let closed_form_impl = closed_form
         .as_ref()
         .map(|equations| closed_form::closed_form_impl(model, equations));
-    let equations = match (&closed_form_impl, &tree) {
-        (Some((_, coefficients)), _) => Equations::ClosedForm(*coefficients),
-        (None, Some(tree)) => Equations::Tree(tree.width, tree.bodies.len()),
-        (None, None) => Equations::Dense,
+    let equations = match (&closed_form_impl, &rigid, &tree) {
+        (Some((_, coefficients)), _, _) => Equations::ClosedForm(*coefficients),
+        (None, Some(rigid), _) => Equations::Rigid(rigid.nodes.len()),
+        (None, None, Some(tree)) => Equations::Tree(tree.width, tree.bodies.len()),
+        (None, None, None) => Equations::Dense,
     };
     let closed_form_impl = closed_form_impl.map(|(tokens, _)| tokens);
     let mechanism_impl = mechanism_impl(
@@ -188,6 +208,7 @@ fn generate(model: &Model) -> TokenStream {
             #inherent
             #model_impl
             #tree_items
+            #rigid_items
             #closed_form_impl
             #mechanism_impl
             #constraints_impl
@@ -325,5 +346,5 @@ pub(crate) fn position_type(shape: Shape) -> TokenStream {
 /// `let Bodies { bob1, .. } = …;` from x.
 fn bind_bodies(model: &Model) -> TokenStream {
     let names = model.bodies.iter().map(|b| b.decl.ident());
-    quote!(let Bodies { #(#names),* } = Self::__lagrange_bodies_from_cartesian(__x);)
+    quote!(let Bodies { #(#names),* } = self.__lagrange_bodies_from_cartesian(__x);)
 }

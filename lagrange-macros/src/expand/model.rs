@@ -1,7 +1,7 @@
 //! The `Model` impl: masses, `validate`, `cartesian`, the weights of uniform fields, the potential
 //! and the applied forces.
 
-use super::bodies::flatten;
+use super::bodies::{flatten, mass_frame_method};
 use super::{
     bind_bodies, bind_coordinates, bind_inputs_from, lit, optimized_blocks_from, position_type,
     prelude, private, scalar, Params,
@@ -10,11 +10,13 @@ use crate::attr::{Inertia, Kind};
 use crate::check::{self, Body, Dim, Model, Shape};
 use crate::lift;
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::{format_ident, quote, ToTokens};
 
 mod gradient;
+mod validate;
 
 pub(super) use gradient::gradient_on_trees;
+use validate::validate_fn;
 
 /// Parameters bound as `f64`, then each body's mass and inertia: shared by `validate` and `masses`.
 fn mass_bindings(model: &Model) -> TokenStream {
@@ -29,6 +31,7 @@ fn mass_bindings(model: &Model) -> TokenStream {
         match &args.inertia {
             Some(Inertia::Moment(i)) => out.extend(quote!(let #inertia_ident: f64 = #i;)),
             Some(Inertia::Principal(i)) => out.extend(quote!(let #inertia_ident: [f64; 3] = #i;)),
+            Some(Inertia::Tensor(i)) => out.extend(quote!(let #inertia_ident: [[f64; 3]; 3] = #i;)),
             None => {}
         }
     }
@@ -148,103 +151,15 @@ fn weights_fn(model: &Model) -> TokenStream {
     }
 }
 
-fn validate_fn(model: &Model) -> TokenStream {
-    let p = private();
-    let (n, k) = (lit(model.dof()), lit(model.rows));
-    let params = model.params.iter().map(|f| &f.ident);
-    let strings = model.params.iter().map(|f| f.ident.to_string());
-    let bindings = mass_bindings(model);
-    let err = quote!(return #p::core::result::Result::Err);
-    let bodies = model.bodies.iter().filter(|b| b.shape.has_mass()).map(|body| {
-        let name = body.decl.ident().to_string();
-        let mass = format_ident!("__mass_{}", body.decl.ident());
-        let inertia = format_ident!("__inertia_{}", body.decl.ident());
-        let check_mass = quote! {
-            if !(#mass.is_finite() && #mass > 0.0) {
-                #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("mass must be positive and finite, got {}", #mass) });
-            }
-        };
-        let check_inertia = match body.shape {
-            Shape::Planar => quote! {
-                if !(#inertia.is_finite() && #inertia > 0.0) {
-                    #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("moment of inertia must be positive and finite, got {}", #inertia) });
-                }
-            },
-            Shape::Spatial => quote! {
-                let __sum: f64 = #inertia[0] + #inertia[1] + #inertia[2];
-                for (__k, __moment) in #inertia.into_iter().enumerate() {
-                    if !(__moment.is_finite() && __moment > 0.0) {
-                        #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("principal moment I{} must be positive and finite, got {}", __k + 1, __moment) });
-                    }
-                    // I_k ≤ I_i + I_j (equality for a flat body), up to rounding.
-                    if __moment > __sum - __moment + 1e-12 * __sum {
-                        #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("principal moments {:?} violate the triangle inequality: I{} exceeds the sum of the other two", #inertia, __k + 1) });
-                    }
-                }
-            },
-            _ => quote!(),
-        };
-        quote!(#check_mass #check_inertia)
-    });
-    // The common case first, branch-free: x·0 is 0 exactly when x is finite, so one comparison
-    // checks every parameter; masses and moments compare positive. Only a failure (or a spatial
-    // body, whose moments have more to check) goes on to the checks that name the culprit.
-    let fast = (!model.bodies.iter().any(|b| b.shape == Shape::Spatial)).then(|| {
-        let fields = model.params.iter().map(|f| &f.ident);
-        // Every mass and moment: one sum for their finiteness (with the parameters'), one
-        // comparison each for their sign.
-        let derived: Vec<_> = model
-            .bodies
-            .iter()
-            .filter(|b| b.shape.has_mass())
-            .flat_map(|body| {
-                let mass = format_ident!("__mass_{}", body.decl.ident());
-                let inertia = format_ident!("__inertia_{}", body.decl.ident());
-                match body.shape {
-                    Shape::Planar => vec![mass, inertia],
-                    _ => vec![mass],
-                }
-            })
-            .collect();
-        let bindings = &bindings;
-        // The sum of finite values is finite (one that overflows only sends the caller to the
-        // checks that name a culprit, which then pass), and s·0 is 0 exactly when s is finite.
-        quote! {
-            #[inline(always)]
-            #[allow(unused_variables, clippy::all)]
-            fn parameters_pass(&self) -> bool {
-                #bindings
-                ((0.0 #( + self.#fields )* #( + #derived )*) * 0.0 == 0.0) #( & (#derived > 0.0) )*
-            }
-        }
-    });
-    let fast_path = fast.is_some().then(|| {
-        quote! {
-            if <Self as #p::Model<#n, #k>>::parameters_pass(self) {
-                return #p::core::result::Result::Ok(());
-            }
-        }
-    });
-    quote! {
-        #fast
-        #[allow(unused_variables, clippy::all)]
-        fn validate(&self) -> #p::Result<()> {
-            #fast_path
-            #(
-                if !self.#params.is_finite() {
-                    #err(#p::Error::NonFiniteParameter { name: #strings, value: self.#params });
-                }
-            )*
-            #bindings
-            #(#bodies)*
-            #p::core::result::Result::Ok(())
-        }
-    }
-}
-
 fn masses_fn(model: &Model) -> TokenStream {
+    let p = private();
     let k = lit(model.rows);
     let bindings = mass_bindings(model);
+    let principal = model.bodies.iter().filter(|b| b.has_tensor()).map(|body| {
+        let inertia = format_ident!("__inertia_{}", body.decl.ident());
+        let moments = format_ident!("__moments_{}", body.decl.ident());
+        quote!(let #moments: [f64; 3] = #p::inertia::principal_axes(&#inertia).0;)
+    });
     let mut rows = vec![quote!(0.0); model.rows];
     for body in &model.bodies {
         let mass = format_ident!("__mass_{}", body.decl.ident());
@@ -264,9 +179,15 @@ fn masses_fn(model: &Model) -> TokenStream {
                 }
                 Shape::Spatial => {
                     (0..3).for_each(|i| rows[r + i] = quote!(#mass));
+                    // A full tensor's principal moments, in the order of the principal axes its
+                    // mass frame turns the body's columns into (lagrange_core::inertia).
+                    let moments = match body.has_tensor() {
+                        true => format_ident!("__moments_{}", body.decl.ident()),
+                        false => inertia.clone(),
+                    };
                     // Column k carries J_k = (I₁ + I₂ + I₃)/2 − I_k (see lagrange_core::model).
                     for col in 0..3usize {
-                        let j = quote!(((#inertia[0] + #inertia[1] + #inertia[2]) * 0.5 - #inertia[#col]));
+                        let j = quote!(((#moments[0] + #moments[1] + #moments[2]) * 0.5 - #moments[#col]));
                         (0..3).for_each(|i| rows[r + 3 + 3 * col + i] = j.clone());
                     }
                 }
@@ -277,6 +198,7 @@ fn masses_fn(model: &Model) -> TokenStream {
         #[allow(unused_variables, clippy::all)]
         fn masses(&self) -> [f64; #k] {
             #bindings
+            #(#principal)*
             [#(#rows),*]
         }
     }
@@ -289,9 +211,21 @@ pub(super) fn cartesian_fn(model: &Model, params: Params) -> TokenStream {
     let (n, k) = (lit(model.dof()), lit(model.rows));
     let mut by_row: Vec<&Body> = model.bodies.iter().collect();
     by_row.sort_by_key(|b| b.row);
+    // A body declared by its frame enters x by its centre of mass and principal axes.
+    let principal = model.bodies.iter().filter(|b| b.is_framed()).map(|b| {
+        let (name, method) = (b.decl.ident(), mass_frame_method(b));
+        let principal = format_ident!("__principal_{}", name);
+        match b.count {
+            Some(_) => quote!(let #principal = { let __frame = self.#method(); __bodies.#name.map(|__b| __frame.principal(__b)) };),
+            None => quote!(let #principal = self.#method().principal(__bodies.#name);),
+        }
+    });
     let rows = by_row.iter().flat_map(|b| {
         let name = b.decl.ident();
-        flatten(b, &quote!(__bodies.#name))
+        match b.is_framed() {
+            true => flatten(b, &format_ident!("__principal_{}", name).to_token_stream()),
+            false => flatten(b, &quote!(__bodies.#name)),
+        }
     });
     let (signature, bodies) = match params {
         Params::Fields => (
@@ -310,6 +244,7 @@ pub(super) fn cartesian_fn(model: &Model, params: Params) -> TokenStream {
         #[inline(always)]
         #signature {
             let __bodies = #bodies;
+            #(#principal)*
             [#(#rows),*]
         }
     }
@@ -388,7 +323,22 @@ fn gravity_terms(model: &Model, decl: &crate::ast::Decl, dim: Dim) -> TokenStrea
                     }
                     None => quote!(#name),
                 };
+                // A body declared by its frame: its centre of mass is its position rows of x.
                 let centre = match b.shape {
+                    Shape::Planar | Shape::Spatial if b.is_framed() => {
+                        let g = quote!(::lagrange::__private::geometry);
+                        let r = |i: usize| lit(b.row + member * b.shape.rows() + i);
+                        match b.shape {
+                            Shape::Planar => {
+                                let (x, y) = (r(0), r(1));
+                                quote!(#g::vec2(__x[#x], __x[#y]))
+                            }
+                            _ => {
+                                let (x, y, z) = (r(0), r(1), r(2));
+                                quote!(#g::vec3(__x[#x], __x[#y], __x[#z]))
+                            }
+                        }
+                    }
                     Shape::Planar | Shape::Spatial => quote!(#body.position),
                     _ => body,
                 };
@@ -504,7 +454,7 @@ pub(super) fn applied_forces_fn(model: &Model, params: Params) -> TokenStream {
             #shared
             #velocities
             #bodies
-            let BodyVelocities { #(#names: #body_velocities),* } = Self::__lagrange_velocities_from_cartesian(__x, __x_dot);
+            let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);
             #(#forces)*
         }
     }

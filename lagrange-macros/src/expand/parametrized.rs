@@ -54,8 +54,8 @@ pub(super) fn parametrized_items(model: &Model) -> TokenStream {
     }
 }
 
-/// Parameters the dynamics take as plain `f64`: those named in a mass, a moment of inertia or a
-/// uniform field (`Model::masses`, `Model::weights`).
+/// Parameters the dynamics take as plain `f64`: those named in a mass, a moment of inertia, a
+/// centre of mass or a uniform field (`Model::masses`, the bodies' mass frames, `Model::weights`).
 fn plain_parameters(model: &Model) -> BTreeSet<String> {
     let mut names: BTreeSet<String> = model
         .names_used_by(model.uniform_gravities.iter().map(|(g, _)| *g))
@@ -63,12 +63,13 @@ fn plain_parameters(model: &Model) -> BTreeSet<String> {
         .collect();
     for body in &model.bodies {
         let args = &body.decl.args;
-        let inertia = match &args.inertia {
-            Some(Inertia::Moment(e)) => Some(e.clone()),
-            Some(Inertia::Principal(moments)) => Some(syn::Expr::Array(moments.clone())),
-            None => None,
-        };
-        for expr in args.mass.iter().chain(inertia.as_ref()) {
+        let inertia = args.inertia.as_ref().map(Inertia::expr);
+        for expr in args
+            .mass
+            .iter()
+            .chain(inertia.as_ref())
+            .chain(args.com.as_ref())
+        {
             names.extend(free_names_of_expr(expr).iter().map(|i| i.to_string()));
         }
     }

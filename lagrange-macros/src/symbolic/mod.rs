@@ -18,7 +18,8 @@
 //! polynomials out as straight-line code.
 //!
 //! The path is taken when the declaration is scleronomic and unconstrained, its bodies are
-//! particles, points and planar bodies declared one by one (no family, no spatial body), its only
+//! particles, points and planar bodies declared one by one (no family, no spatial body; a planar
+//! body's `com` turned by its angle, read like `Planar::point`), its only
 //! field is uniform and it has no potential and no force; and every position is read (an array
 //! coordinate by literal indices), with no sum of coordinates multiplying the same factor unless
 //! the row is affine in the coordinates (its derivatives are then constants). Otherwise the dual-number passes of `lagrange_core::dynamics` serve it.
@@ -97,7 +98,12 @@ pub fn equations(model: &Model) -> Option<Equations> {
     let mut rows: Vec<Row> = Vec::new();
     for body in &model.bodies {
         let value = reader.block(&body.decl.block)?;
-        let components = match (&value, body.shape) {
+        // A planar body declared by its frame enters x by its centre of mass.
+        let mass_frame = match &body.decl.args.com {
+            Some(com) => reader.centre_of_mass(&value, com)?,
+            None => value.clone(),
+        };
+        let components = match (&mass_frame, body.shape) {
             (Value::Vector(v), Shape::Particle(d) | Shape::Point(d))
                 if v.len() == Shape::Particle(d).rows() =>
             {

@@ -4,7 +4,8 @@
 //! differences, negation, products, quotients by one monomial in constants and coordinates, `powi` with a literal
 //! exponent, `sin`/`cos` of an integer combination of coordinates (expanded by the angle-sum
 //! formulas, so sin(θ₁ − θ₂) = sin θ₁ cos θ₂ − cos θ₁ sin θ₂), the vector constructors `vec2`,
-//! `vec3`, `planar`, the fields `x`, `y`, `z`, `position`, `angle`, and an element of an array
+//! `vec3`, `planar`, the fields `x`, `y`, `z`, `position`, `angle`, a planar pose's `point` and
+//! `joint` (its angle an integer combination of coordinates), and an element of an array
 //! coordinate at an integer literal (`theta[1]`). Any other expression is
 //! read as an opaque constant when it names no coordinate, body, local or `t` (`alpha.cos()`,
 //! `std::f64::consts::PI`), and otherwise not at all: the declaration then keeps the dual-number
@@ -165,9 +166,49 @@ impl Reader {
         self.constant(expr)
     }
 
-    /// `receiver.sin()`, `.cos()`, `.powi(n)`.
+    /// The centre of mass of a planar body whose frame is `frame` and whose `com` is written
+    /// `com`: `planar(frame.point(com), frame.angle)`.
+    pub fn centre_of_mass(&mut self, frame: &Value, com: &Expr) -> Option<Value> {
+        let Value::Planar(position, angle) = frame else {
+            return None;
+        };
+        let Value::Vector(offset) = self.expr(com)? else {
+            return None;
+        };
+        Some(Value::Planar(
+            planar_point(position, angle, &offset)?,
+            angle.clone(),
+        ))
+    }
+
+    /// `pose.point(offset)` and `pose.joint(origin, angle)` of a planar pose.
+    fn pose_method(&mut self, call: &syn::ExprMethodCall) -> Option<Value> {
+        let Value::Planar(position, angle) = self.expr(&call.receiver)? else {
+            return None;
+        };
+        let args = call
+            .args
+            .iter()
+            .map(|a| self.expr(a))
+            .collect::<Option<Vec<_>>>()?;
+        match (call.method.to_string().as_str(), &args[..]) {
+            ("point", [Value::Vector(offset)]) => {
+                Some(Value::Vector(planar_point(&position, &angle, offset)?))
+            }
+            ("joint", [Value::Vector(origin), Value::Scalar(turn)]) => Some(Value::Planar(
+                planar_point(&position, &angle, origin)?,
+                angle.add(turn),
+            )),
+            _ => None,
+        }
+    }
+
+    /// `receiver.sin()`, `.cos()`, `.powi(n)`; `.point(..)` and `.joint(..)` of a planar pose.
     fn method(&mut self, call: &syn::ExprMethodCall) -> Option<Value> {
         let method = call.method.to_string();
+        if matches!(method.as_str(), "point" | "joint") {
+            return self.pose_method(call);
+        }
         if !matches!(method.as_str(), "sin" | "cos" | "powi") {
             return None;
         }
@@ -335,6 +376,19 @@ fn binary_op(op: &BinOp, lhs: Value, rhs: Value) -> Option<Value> {
         }
         _ => None,
     }
+}
+
+/// `position + offset` turned by `angle`: (x + c oₓ − s o_y, y + s oₓ + c o_y), with (s, c) of the
+/// angle by [`sin_cos`] (`Planar::point`).
+fn planar_point(position: &[Poly], angle: &Poly, offset: &[Poly]) -> Option<Vec<Poly>> {
+    let ([x, y], [ox, oy]) = (position, offset) else {
+        return None;
+    };
+    let (s, c) = sin_cos(angle)?;
+    Some(vec![
+        x.add(&c.mul(ox)).sub(&s.mul(oy)),
+        y.add(&s.mul(ox)).add(&c.mul(oy)),
+    ])
 }
 
 /// (sin φ, cos φ) of φ = Σ kⱼ qⱼ with integer kⱼ, by sin(a + b) = sin a cos b + cos a sin b and

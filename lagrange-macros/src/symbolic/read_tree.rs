@@ -35,7 +35,8 @@ pub struct Reader<'g> {
     coords: HashMap<String, usize>,
     /// First slot and length.
     arrays: HashMap<String, (usize, usize)>,
-    /// Bodies as the rows they occupy; `None` for a body not read (a spatial body).
+    /// Bodies as the rows they occupy; `None` for a body not read (a spatial body, a body declared
+    /// by its frame).
     bodies: HashMap<String, Option<Value>>,
     locals: Vec<HashMap<String, Value>>,
 }
@@ -46,6 +47,12 @@ impl<'g> Reader<'g> {
         let (coords, arrays) = super::coordinate_slots(model);
         let mut bodies = HashMap::new();
         for body in &model.bodies {
+            // A body declared by its frame has its centre of mass in x, not the pose its
+            // function returns: not read.
+            if body.is_framed() {
+                bodies.insert(body.decl.ident().to_string(), None);
+                continue;
+            }
             let stride = body.shape.rows();
             let member = |graph: &mut Graph, first: usize| {
                 let mut row = |k: usize| graph.node(Node::Row(first + k));

@@ -43,7 +43,8 @@ pub mod chain {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -57,6 +58,8 @@ pub mod chain {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -92,7 +95,7 @@ pub mod chain {
                 3,
                 6,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -103,8 +106,8 @@ pub mod chain {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -129,6 +132,7 @@ pub mod chain {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 6],
             __x_dot: &[__D; 6],
         ) -> BodyVelocities<__D> {
@@ -257,8 +261,8 @@ pub mod chain {
         ) -> ::lagrange::__private::geometry::Vec2<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -530,8 +534,8 @@ pub mod chain {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 3]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

@@ -38,7 +38,8 @@ pub mod double_pendulum {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -53,6 +54,8 @@ pub mod double_pendulum {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -89,7 +92,7 @@ pub mod double_pendulum {
                 2,
                 4,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -100,8 +103,8 @@ pub mod double_pendulum {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -121,6 +124,7 @@ pub mod double_pendulum {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 4],
             __x_dot: &[__D; 4],
         ) -> BodyVelocities<__D> {
@@ -260,8 +264,8 @@ pub mod double_pendulum {
         fn __lagrange_coefficients(&self) -> [f64; 5] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -304,8 +308,8 @@ pub mod double_pendulum {
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -358,8 +362,8 @@ pub mod double_pendulum {
         ) -> ([__D; 2], [__D; 2]) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -585,8 +589,8 @@ pub mod double_pendulum {
         >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

@@ -41,7 +41,8 @@ pub mod everything {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -58,6 +59,8 @@ pub mod everything {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -96,7 +99,7 @@ pub mod everything {
                 2,
                 17,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -107,8 +110,8 @@ pub mod everything {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -130,6 +133,7 @@ pub mod everything {
         }
         #[inline(always)]
         fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 17],
         ) -> Bodies<__D> {
             Bodies {
@@ -153,6 +157,7 @@ pub mod everything {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 17],
             __x_dot: &[__D; 17],
         ) -> BodyVelocities<__D> {
@@ -220,14 +225,14 @@ pub mod everything {
         ) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let [theta, phi] = *__q;
             let k = <__D>::from(self.k);
-            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { bar, tip, top } = self.__lagrange_bodies_from_cartesian(__x);
             let __value: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
             __value
         }
@@ -430,14 +435,14 @@ pub mod everything {
         ) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let [theta, phi] = *__q;
             let k = <__D>::from(self.k);
-            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { bar, tip, top } = self.__lagrange_bodies_from_cartesian(__x);
             let mut __potential = <__D>::zero();
             let __potential_spring: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
             __potential += __potential_spring;
@@ -520,8 +525,8 @@ pub mod everything {
         ) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -533,11 +538,9 @@ pub mod everything {
                 -c
             });
             let [theta_dot, phi_dot] = *__v;
-            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = Self::__lagrange_velocities_from_cartesian(
-                __x,
-                __x_dot,
-            );
+            let Bodies { bar, tip, top } = self.__lagrange_bodies_from_cartesian(__x);
+            let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = self
+                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_push: ::lagrange::__private::geometry::Vec2<__D> = {
                 vec2(c, <__D>::from(0.0))
             };
@@ -702,8 +705,8 @@ pub mod everything {
         >(&self, __p: &[__S; 6], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -764,14 +767,14 @@ pub mod everything {
         >(&self, __p: &[__S; 6], __t: __D, __q: &[__D; 2], __x: &[__D; 17]) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let [theta, phi] = *__q;
             let k: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
-            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { bar, tip, top } = self.__lagrange_bodies_from_cartesian(__x);
             let mut __potential = <__D>::zero();
             let __potential_spring: __D = { k * phi.powf(2.0) * <__D>::from(0.5) };
             __potential += __potential_spring;
@@ -794,8 +797,8 @@ pub mod everything {
         ) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -803,11 +806,9 @@ pub mod everything {
             let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
             let tau: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[4]);
             let [theta_dot, phi_dot] = *__v;
-            let Bodies { bar, tip, top } = Self::__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = Self::__lagrange_velocities_from_cartesian(
-                __x,
-                __x_dot,
-            );
+            let Bodies { bar, tip, top } = self.__lagrange_bodies_from_cartesian(__x);
+            let BodyVelocities { bar: bar_dot, tip: tip_dot, top: top_dot } = self
+                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_push: ::lagrange::__private::geometry::Vec2<__D> = {
                 vec2(c, <__D>::from(0.0))
             };

@@ -33,7 +33,8 @@ pub mod pendulum {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -47,6 +48,8 @@ pub mod pendulum {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -82,7 +85,7 @@ pub mod pendulum {
                 1,
                 2,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -93,8 +96,8 @@ pub mod pendulum {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -108,6 +111,7 @@ pub mod pendulum {
         }
         #[inline(always)]
         fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 2],
         ) -> Bodies<__D> {
             Bodies {
@@ -117,6 +121,7 @@ pub mod pendulum {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 2],
             __x_dot: &[__D; 2],
         ) -> BodyVelocities<__D> {
@@ -217,8 +222,8 @@ pub mod pendulum {
         ) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -229,11 +234,9 @@ pub mod pendulum {
                 -c
             });
             let [theta_dot] = *__v;
-            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { bob: bob_dot } = Self::__lagrange_velocities_from_cartesian(
-                __x,
-                __x_dot,
-            );
+            let Bodies { bob } = self.__lagrange_bodies_from_cartesian(__x);
+            let BodyVelocities { bob: bob_dot } = self
+                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_drag: ::lagrange::__private::geometry::Vec2<__D> = {
                 bob_dot * (__param_0)
             };
@@ -384,8 +387,8 @@ pub mod pendulum {
         >(&self, __p: &[__S; 4], __t: __D, __q: &[__D; 1]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -430,19 +433,17 @@ pub mod pendulum {
         ) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let [theta] = *__q;
             let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
             let [theta_dot] = *__v;
-            let Bodies { bob } = Self::__lagrange_bodies_from_cartesian(__x);
-            let BodyVelocities { bob: bob_dot } = Self::__lagrange_velocities_from_cartesian(
-                __x,
-                __x_dot,
-            );
+            let Bodies { bob } = self.__lagrange_bodies_from_cartesian(__x);
+            let BodyVelocities { bob: bob_dot } = self
+                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             let __force_drag: ::lagrange::__private::geometry::Vec2<__D> = {
                 bob_dot * (-c)
             };

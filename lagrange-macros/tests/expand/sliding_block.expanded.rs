@@ -36,7 +36,8 @@ pub mod sliding_block {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -50,6 +51,8 @@ pub mod sliding_block {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -85,7 +88,7 @@ pub mod sliding_block {
                 2,
                 2,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -96,8 +99,8 @@ pub mod sliding_block {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -107,6 +110,7 @@ pub mod sliding_block {
         }
         #[inline(always)]
         fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 2],
         ) -> Bodies<__D> {
             Bodies {
@@ -116,6 +120,7 @@ pub mod sliding_block {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 2],
             __x_dot: &[__D; 2],
         ) -> BodyVelocities<__D> {
@@ -507,13 +512,13 @@ pub mod sliding_block {
         ) -> [__D; 2] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let [x, y] = *__q;
-            let Bodies { block } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { block } = self.__lagrange_bodies_from_cartesian(__x);
             [
                 {
                     let __row: __D = { block.y };
@@ -534,18 +539,16 @@ pub mod sliding_block {
         ) -> [__D; 2] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
             let [x, y] = *__q;
-            let Bodies { block } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { block } = self.__lagrange_bodies_from_cartesian(__x);
             let [x_dot, y_dot] = *__v;
-            let BodyVelocities { block: block_dot } = Self::__lagrange_velocities_from_cartesian(
-                __x,
-                __x_dot,
-            );
+            let BodyVelocities { block: block_dot } = self
+                .__lagrange_velocities_from_cartesian(__x, __x_dot);
             [
                 <__D>::zero(),
                 {
@@ -658,8 +661,8 @@ pub mod sliding_block {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

@@ -48,7 +48,8 @@ pub mod springs {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -63,6 +64,8 @@ pub mod springs {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -99,7 +102,7 @@ pub mod springs {
                 4,
                 6,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -110,8 +113,8 @@ pub mod springs {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -135,6 +138,7 @@ pub mod springs {
         }
         #[inline(always)]
         fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 6],
         ) -> Bodies<__D> {
             Bodies {
@@ -148,6 +152,7 @@ pub mod springs {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 6],
             __x_dot: &[__D; 6],
         ) -> BodyVelocities<__D> {
@@ -273,8 +278,8 @@ pub mod springs {
         ) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -293,7 +298,7 @@ pub mod springs {
                 let mu: f64 = self.mu;
                 -mu * m
             });
-            let Bodies { mass, planet } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { mass, planet } = self.__lagrange_bodies_from_cartesian(__x);
             let mut __potential = <__D>::zero();
             let __potential_stiff: __D = { __param_0 * (q[1] - q[0]).powi(2) };
             __potential += __potential_stiff;
@@ -439,8 +444,8 @@ pub mod springs {
         ) -> ::lagrange::__private::geometry::Vec2<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -456,8 +461,8 @@ pub mod springs {
         ) -> ::lagrange::__private::geometry::Vec2<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -743,8 +748,8 @@ pub mod springs {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 4]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -796,8 +801,8 @@ pub mod springs {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 4], __x: &[__D; 6]) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -810,7 +815,7 @@ pub mod springs {
                 __D,
             >(&__p[1]);
             let mu: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
-            let Bodies { mass, planet } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { mass, planet } = self.__lagrange_bodies_from_cartesian(__x);
             let mut __potential = <__D>::zero();
             let __potential_stiff: __D = {
                 omega * omega / <__D>::from(4.0) * (q[1] - q[0]).powi(2)

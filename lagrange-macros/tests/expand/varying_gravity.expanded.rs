@@ -32,7 +32,8 @@ pub mod varying {
     #[allow(dead_code)]
     pub type State = ::lagrange::__private::State<Coords>;
     /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
-    /// body's centre of mass and orientation.
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -46,6 +47,8 @@ pub mod varying {
     /// The velocity of every body and point, by name: a particle or point's velocity; for a
     /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
     /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
     #[derive(
         ::lagrange::__private::core::clone::Clone,
         ::lagrange::__private::core::marker::Copy,
@@ -81,7 +84,7 @@ pub mod varying {
                 1,
                 2,
             >(self, state.t, &q, &v);
-            Self::__lagrange_velocities_from_cartesian(&x, &x_dot)
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
         }
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]
@@ -92,8 +95,8 @@ pub mod varying {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -105,6 +108,7 @@ pub mod varying {
         }
         #[inline(always)]
         fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 2],
         ) -> Bodies<__D> {
             Bodies {
@@ -114,6 +118,7 @@ pub mod varying {
         #[inline(always)]
         #[allow(unused_variables)]
         fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
             __x: &[__D; 2],
             __x_dot: &[__D; 2],
         ) -> BodyVelocities<__D> {
@@ -202,8 +207,8 @@ pub mod varying {
         ) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -211,7 +216,7 @@ pub mod varying {
             let g = <__D>::from(self.g);
             let w = <__D>::from(self.w);
             let t = __t;
-            let Bodies { ball } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { ball } = self.__lagrange_bodies_from_cartesian(__x);
             let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
             let mut __potential = <__D>::zero();
             let __gravity_down: ::lagrange::__private::geometry::Vec2<__D> = {
@@ -334,8 +339,8 @@ pub mod varying {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 1]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -368,8 +373,8 @@ pub mod varying {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 1], __x: &[__D; 2]) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot_x, rot_y, rot_z, spatial, vec2, vec3, Planar, Rot3, Spatial,
-                Vec2, Vec3,
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -377,7 +382,7 @@ pub mod varying {
             let g: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
             let w: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
             let t = __t;
-            let Bodies { ball } = Self::__lagrange_bodies_from_cartesian(__x);
+            let Bodies { ball } = self.__lagrange_bodies_from_cartesian(__x);
             let __masses = <Self as ::lagrange::__private::Model<1, 2>>::masses(self);
             let mut __potential = <__D>::zero();
             let __gravity_down: ::lagrange::__private::geometry::Vec2<__D> = {

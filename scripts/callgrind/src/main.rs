@@ -31,6 +31,11 @@ mod squeezer_model;
 #[path = "../../../lagrange-bench/src/kepler.rs"]
 mod kepler_report;
 use kepler_report::{kepler, kepler_rhs, KEPLER};
+// A three-link spatial arm declared by its joint frames (centres of mass, full inertia tensors)
+// and by its principal axes, as in tests/body_frames.rs.
+#[path = "../../../tests/common/framed_arms.rs"]
+#[allow(dead_code)]
+mod framed_arms;
 
 #[mechanism]
 pub mod pendulum {
@@ -893,6 +898,28 @@ fn main() {
             };
             let s = State::new(0.2, Coords { theta: 0.7 }, Coords { theta: 1.1 });
             acc += calls(sys, &s, n, via);
+        }
+        // The arm by its frames, by its principal axes; one eigen-decomposition of a tensor.
+        "framed_arm" | "principal_arm" => {
+            use framed_arms::{framed_arm as fa, principal_arm as pa};
+            let (q, v) = ([0.3, 1.2, -0.8], [1.0, -0.5, 2.0]);
+            if which == "framed_arm" {
+                let s = fa::State::new(0.0, fa::Coords::from_array(q), fa::Coords::from_array(v));
+                acc += calls(framed_arms::framed(), &s, n, via);
+            } else {
+                let s = pa::State::new(0.0, pa::Coords::from_array(q), pa::Coords::from_array(v));
+                acc += calls(framed_arms::principal(), &s, n, via);
+            }
+        }
+        "principal_axes" => {
+            let tensor = [
+                [0.02, 0.001, -0.002],
+                [0.001, 0.03, 0.0005],
+                [-0.002, 0.0005, 0.04],
+            ];
+            for _ in 0..n {
+                acc += lagrange::inertia::principal_axes(black_box(&tensor)).0[0];
+            }
         }
         "none" => {}
         _ => panic!(),

@@ -28,6 +28,8 @@ use std::collections::BTreeSet;
 use syn::visit_mut::{self, VisitMut};
 use syn::{BinOp, Block, Expr, Ident, Lit, Stmt};
 
+pub mod rigid;
+
 /// A body of the tree: one point, or one member of a family of points.
 pub struct TreeBody {
     /// Index into `Model::bodies`.
@@ -213,7 +215,7 @@ fn names_a_body(model: &Model, block: &Block) -> bool {
 }
 
 /// The family index and the member it stands for.
-type Family<'a> = Option<(&'a Ident, usize)>;
+pub(crate) type Family<'a> = Option<(&'a Ident, usize)>;
 
 /// The block with the parent taken out of its final expression (`None` for a root), following
 /// `if`s on the family index and nested blocks to the expression that is the position.
@@ -348,7 +350,7 @@ fn shadows_a_body(model: &Model, block: &Block) -> bool {
 }
 
 /// The value of a condition on the family index for this member: `i == 0`, `i > 0`, `0 < i`, …
-fn condition(cond: &Expr, family: (&Ident, usize)) -> Option<bool> {
+pub(crate) fn condition(cond: &Expr, family: (&Ident, usize)) -> Option<bool> {
     let Expr::Binary(c) = strip(cond) else {
         return None;
     };
@@ -367,8 +369,9 @@ fn condition(cond: &Expr, family: (&Ident, usize)) -> Option<bool> {
     })
 }
 
-/// The value of an index written with integer literals and the family index (`i`, `i - 1`, `3`).
-fn evaluate(expr: &Expr, family: Family) -> Option<usize> {
+/// The value of an index written with integer literals and the family index (`i`, `i - 1`, `3`,
+/// `i % 2`).
+pub(crate) fn evaluate(expr: &Expr, family: Family) -> Option<usize> {
     match strip(expr) {
         Expr::Lit(syn::ExprLit {
             lit: Lit::Int(i), ..
@@ -382,6 +385,9 @@ fn evaluate(expr: &Expr, family: Family) -> Option<usize> {
             match b.op {
                 BinOp::Add(_) => l.checked_add(r),
                 BinOp::Sub(_) => l.checked_sub(r),
+                BinOp::Mul(_) => l.checked_mul(r),
+                BinOp::Rem(_) => l.checked_rem(r),
+                BinOp::Div(_) => l.checked_div(r),
                 _ => None,
             }
         }
@@ -480,7 +486,7 @@ fn element_local(array: &Ident, index: &Expr) -> Ident {
 }
 
 /// The expression inside parentheses and invisible groups.
-fn strip(expr: &Expr) -> &Expr {
+pub(crate) fn strip(expr: &Expr) -> &Expr {
     match expr {
         Expr::Paren(p) => strip(&p.expr),
         Expr::Group(g) => strip(&g.expr),

@@ -1,0 +1,308 @@
+//! `robots`: lagrange's side of the robot peer benchmark (`scripts/peers/robots.sh`), on the five
+//! declarations of `lagrange-robots`, at the states of the file `robots.py states` writes.
+//!
+//! ```text
+//! robots values --states FILE        q̈ (`accelerations`), τ (`inverse_dynamics` at the file's q̈)
+//!                                    and M (`mass_matrix`) at every state
+//! robots time --states FILE          per-call times of `accelerations`, `inverse_dynamics` and
+//!                                    `mass_matrix`
+//! robots count --states FILE --robot NAME --label LABEL --calls C
+//!                                    C calls of one label (for callgrind)
+//! ```
+//!
+//! Every call goes through the validated handle (`Arm7 { g: 9.81 }.validated()?`), as a
+//! simulation makes it. The lines printed are those of the C drivers (tab-separated): `lagrange
+//! robot quantity k x…` and `lagrange robot label min_ns median_ns calls_per_rep`; the timing
+//! loop is theirs too (a warm-up of about 50 ms that sizes a repetition to about 10 ms, then 21
+//! repetitions, each one call at every state of the robot; min and median per call).
+
+use clap::{Parser, Subcommand, ValueEnum};
+use lagrange::prelude::*;
+use lagrange_robots::quadruped::Quadruped;
+use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
+use std::error::Error as StdError;
+use std::hint::black_box;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+type BoxResult<T> = std::result::Result<T, Box<dyn StdError>>;
+
+/// A state of the states file and the q̈ at which inverse dynamics is evaluated there.
+type Sample<C> = (State<C>, C);
+
+#[derive(Parser)]
+#[command(about = "lagrange's side of the robot peer benchmark (scripts/peers/robots.sh)")]
+struct Cli {
+    #[command(subcommand)]
+    mode: Mode,
+}
+
+#[derive(Subcommand)]
+enum Mode {
+    /// q̈, τ and M at every state of every robot.
+    Values {
+        #[arg(long)]
+        states: PathBuf,
+    },
+    /// Per-call times of every label, every robot.
+    Time {
+        #[arg(long)]
+        states: PathBuf,
+    },
+    /// CALLS calls of one label on one robot, cycling through its states.
+    Count {
+        #[arg(long)]
+        states: PathBuf,
+        #[arg(long)]
+        robot: String,
+        #[arg(long, value_enum)]
+        label: Label,
+        #[arg(long)]
+        calls: usize,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Label {
+    Accelerations,
+    InverseDynamics,
+    MassMatrix,
+}
+
+impl Label {
+    const ALL: [Label; 3] = [
+        Label::Accelerations,
+        Label::InverseDynamics,
+        Label::MassMatrix,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Label::Accelerations => "accelerations",
+            Label::InverseDynamics => "inverse_dynamics",
+            Label::MassMatrix => "mass_matrix",
+        }
+    }
+}
+
+/// One robot's rows of the states file: coordinate names, then (q, q̇, q̈) per state.
+struct Rows {
+    names: Vec<String>,
+    states: Vec<Vec<f64>>,
+}
+
+/// The states file: per robot, a row `robot names c…`, then rows `robot k q… q̇… q̈…`.
+fn read_states(path: &Path) -> BoxResult<Vec<(String, Rows)>> {
+    let mut reader = csv::ReaderBuilder::new()
+        .delimiter(b'\t')
+        .has_headers(false)
+        .flexible(true)
+        .from_path(path)?;
+    let mut robots: Vec<(String, Rows)> = Vec::new();
+    for record in reader.records() {
+        let record = record?;
+        let (robot, kind) = (&record[0], &record[1]);
+        let rest = record.iter().skip(2);
+        if kind == "names" {
+            let names = rest.map(str::to_owned).collect();
+            robots.push((
+                robot.to_owned(),
+                Rows {
+                    names,
+                    states: Vec::new(),
+                },
+            ));
+            continue;
+        }
+        let rows = match robots.last_mut() {
+            Some((name, rows)) if name == robot => rows,
+            _ => return Err(format!("state row of `{robot}` before its names row").into()),
+        };
+        let values = rest
+            .map(str::parse)
+            .collect::<std::result::Result<Vec<f64>, _>>()?;
+        if values.len() != 3 * rows.names.len() {
+            return Err(format!("state row of `{robot}` has {} values", values.len()).into());
+        }
+        rows.states.push(values);
+    }
+    Ok(robots)
+}
+
+/// A robot's states as the declaration's `State`s, with the q̈ for inverse dynamics; the file's
+/// coordinate names must be the declaration's, in its order.
+fn states<M: Mechanism<N>, const N: usize>(
+    robot: &str,
+    rows: &Rows,
+) -> BoxResult<Vec<Sample<M::Coords>>> {
+    let declared = <M::Coords as Coordinates<N>>::NAMES;
+    if rows.names != declared {
+        return Err(format!("`{robot}`: the file's coordinates are not the declaration's").into());
+    }
+    let part = |s: &[f64], i: usize| M::Coords::from_array(std::array::from_fn(|j| s[i * N + j]));
+    Ok(rows
+        .states
+        .iter()
+        .map(|s| {
+            (
+                State {
+                    t: 0.0,
+                    q: part(s, 0),
+                    v: part(s, 1),
+                },
+                part(s, 2),
+            )
+        })
+        .collect())
+}
+
+fn print_values(robot: &str, quantity: &str, k: usize, values: impl IntoIterator<Item = f64>) {
+    let mut line = format!("lagrange\t{robot}\t{quantity}\t{k}");
+    for x in values {
+        // `{}` prints an f64's shortest decimal that reads back to the same value.
+        line.push_str(&format!("\t{x}"));
+    }
+    println!("{line}");
+}
+
+/// One call of `label` at a state; the result is kept from the optimiser.
+#[inline(always)]
+fn call<M: Mechanism<N>, const N: usize>(
+    sys: &M,
+    label: Label,
+    (state, qdd): &Sample<M::Coords>,
+) -> lagrange::Result<()> {
+    match label {
+        Label::Accelerations => {
+            black_box(sys.accelerations(black_box(state))?);
+        }
+        Label::InverseDynamics => {
+            black_box(sys.inverse_dynamics(black_box(state), black_box(qdd))?);
+        }
+        Label::MassMatrix => {
+            black_box(sys.mass_matrix(black_box(state))?);
+        }
+    }
+    Ok(())
+}
+
+/// The timing loop of the C drivers (`timing.h`): `batch` runs one call at each state; a warm-up
+/// of at least 50 ms sizes a repetition to about 10 ms, then 21 repetitions; min and median of the
+/// time per batch, in ns, and the batches per repetition.
+fn time_batches(mut batch: impl FnMut()) -> (f64, f64, u64) {
+    const REPS: usize = 21;
+    const REP_NS: f64 = 10e6;
+    const WARMUP_NS: f64 = 50e6;
+    let run = |batch: &mut dyn FnMut(), iters: u64| {
+        let t0 = Instant::now();
+        for _ in 0..iters {
+            batch();
+        }
+        t0.elapsed().as_nanos() as f64
+    };
+    let (mut iters, mut total) = (1u64, 0.0);
+    let mut elapsed;
+    loop {
+        elapsed = run(&mut batch, iters);
+        total += elapsed;
+        if total >= WARMUP_NS && elapsed >= REP_NS / 4.0 {
+            break;
+        }
+        if elapsed < REP_NS {
+            iters *= 2;
+        }
+    }
+    let iters = (iters as f64 * REP_NS / elapsed) as u64 + 1;
+    let mut per: Vec<f64> = (0..REPS)
+        .map(|_| run(&mut batch, iters) / iters as f64)
+        .collect();
+    per.sort_by(f64::total_cmp);
+    (per[0], per[REPS / 2], iters)
+}
+
+fn run<M: Mechanism<N>, const N: usize>(
+    sys: &M,
+    robot: &str,
+    rows: &Rows,
+    mode: &Mode,
+) -> BoxResult<()> {
+    let states = states::<M, N>(robot, rows)?;
+    match *mode {
+        Mode::Values { .. } => {
+            for (k, (state, qdd)) in states.iter().enumerate() {
+                print_values(robot, "qdd", k, sys.accelerations(state)?.to_array());
+                print_values(
+                    robot,
+                    "tau",
+                    k,
+                    sys.inverse_dynamics(state, qdd)?.to_array(),
+                );
+                // Row-major: M(i, j) for i, then j.
+                let m = sys.mass_matrix(state)?;
+                print_values(
+                    robot,
+                    "M",
+                    k,
+                    (0..N).flat_map(|i| (0..N).map(move |j| m[(i, j)])),
+                );
+            }
+        }
+        Mode::Time { .. } => {
+            for label in Label::ALL {
+                // Every state evaluated once first: a call that failed would be timed as a
+                // quick return.
+                for s in &states {
+                    call(sys, label, s)?;
+                }
+                let (min, median, iters) = time_batches(|| {
+                    for s in &states {
+                        let _ = call(sys, label, s);
+                    }
+                });
+                let n = states.len() as f64;
+                println!(
+                    "lagrange\t{robot}\t{}\t{:.1}\t{:.1}\t{}",
+                    label.name(),
+                    min / n,
+                    median / n,
+                    iters * states.len() as u64
+                );
+            }
+        }
+        Mode::Count { label, calls, .. } => {
+            for c in 0..calls {
+                call(sys, label, &states[c % states.len()])?;
+            }
+        }
+    }
+    Ok(())
+}
+
+fn main() -> BoxResult<()> {
+    let cli = Cli::parse();
+    let (Mode::Values { states } | Mode::Time { states } | Mode::Count { states, .. }) = &cli.mode;
+    let only = match &cli.mode {
+        Mode::Count { robot, .. } => Some(robot.as_str()),
+        _ => None,
+    };
+    let mut found = false;
+    for (robot, rows) in read_states(states)? {
+        if only.is_some_and(|name| name != robot) {
+            continue;
+        }
+        found = true;
+        let mode = &cli.mode;
+        match robot.as_str() {
+            "arm3" => run(&Arm3 { g: 9.81 }.validated()?, &robot, &rows, mode)?,
+            "arm7" => run(&Arm7 { g: 9.81 }.validated()?, &robot, &rows, mode)?,
+            "arm14" => run(&Arm14 { g: 9.81 }.validated()?, &robot, &rows, mode)?,
+            "quadruped" => run(&Quadruped { g: 9.81 }.validated()?, &robot, &rows, mode)?,
+            "humanoid" => run(&Humanoid { g: 9.81 }.validated()?, &robot, &rows, mode)?,
+            other => return Err(format!("no declaration of the robot `{other}`").into()),
+        }
+    }
+    if !found {
+        return Err("no robot of that name in the states file".into());
+    }
+    Ok(())
+}

@@ -1,0 +1,182 @@
+//! Inverse dynamics of a rigid tree by the recursive Newton–Euler algorithm (Featherstone, *Rigid
+//! Body Dynamics Algorithms*, 2008, §5.3, Table 5.1):
+//!
+//! ```text
+//! root → leaf:  v_b = X_b v_p + S_b q̇_b,   a_b = X_b a_p + S_b q̈_b + v_b × S_b q̇_b,
+//!               f_b = I_b a_b + v_b ×* I_b v_b,
+//! leaf → root:  τ_b = S_bᵀ f_b,   f_p += X_bᵀ f_b,
+//! ```
+//!
+//! with a₀ = (0; −g) for the uniform field: τ = M q̈ + b − 𝓕_g, the generalized forces the joints
+//! must add to the field's for the bodies to move with q̈.
+
+use super::kinematics::{
+    force_to_parent, ground_acceleration, motion_to_child, rate_of, velocity, JointState,
+};
+use super::spatial::{Force, Motion};
+use super::{joint_at, Joint, JointKind, RigidConstants, RUNTIME};
+use crate::geometry::Scalar;
+use nalgebra::SVector;
+
+/// The recursive Newton–Euler algorithm's working memory for `B` bodies, swept body by body:
+/// [`forward`](Self::forward) root to leaf, [`backward`](Self::backward) leaf to root.
+/// [`inverse_dynamics`] runs the sweeps as loops; `#[mechanism]` writes one call per body with a
+/// constant index, so that each call is compiled for its own joint.
+pub struct NewtonEuler<S, const B: usize> {
+    state: [JointState<S>; B],
+    velocity: [Motion<S>; B],
+    acceleration: [Motion<S>; B],
+    force: [Force<S>; B],
+}
+
+impl<S: Scalar, const B: usize> Default for NewtonEuler<S, B> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
+    /// Empty working memory.
+    #[inline(always)]
+    pub fn new() -> Self {
+        NewtonEuler {
+            state: [JointState::Welded; B],
+            velocity: [Motion::zero(); B],
+            acceleration: [Motion::zero(); B],
+            force: [Force::zero(); B],
+        }
+    }
+
+    /// Body `b`, root to leaf: its velocity, acceleration and the force its motion takes,
+    /// f_b = I_b a_b + v_b ×* I_b v_b.
+    #[inline(always)]
+    pub fn forward<const CODE: u16, const N: usize>(
+        &mut self,
+        joints: &[Joint; B],
+        k: &RigidConstants<B>,
+        (q, v, qdd): (&[S; N], &[S; N], &[S; N]),
+        b: usize,
+    ) {
+        let (joint, kb) = (&joint_at::<CODE, B>(joints, b), &k.bodies[b]);
+        let state = JointState::of(joint, q);
+        let parent = joint.parent.map(|p| &self.velocity[p]);
+        let (vb, c) = velocity(joint, kb, state, parent, rate_of(joint, v));
+        let above = match joint.parent {
+            Some(p) => self.acceleration[p],
+            None => ground_acceleration(k),
+        };
+        let mut ab = motion_to_child(joint, kb, state, &above) + c;
+        add_along_joint(joint, &mut ab, rate_of(joint, qdd));
+        let inertia = &kb.inertia;
+        self.force[b] = inertia.apply(&ab) + vb.cross_force(&inertia.apply(&vb));
+        self.state[b] = state;
+        self.velocity[b] = vb;
+        self.acceleration[b] = ab;
+    }
+
+    /// Body `b`, leaf to root: τ_b = S_bᵀ f_b, and f_b passed to its parent.
+    #[inline(always)]
+    pub fn backward<const CODE: u16, const N: usize>(
+        &mut self,
+        joints: &[Joint; B],
+        k: &RigidConstants<B>,
+        tau: &mut [S; N],
+        b: usize,
+    ) {
+        let joint = &joint_at::<CODE, B>(joints, b);
+        if let Some(t) = along_joint(joint, &self.force[b]) {
+            tau[joint.coordinate] = t;
+        }
+        if let Some(p) = joint.parent {
+            let pushed = force_to_parent(joint, &k.bodies[b], self.state[b], &self.force[b]);
+            self.force[p] = self.force[p] + pushed;
+        }
+    }
+}
+
+/// τ = M q̈ + b − 𝓕_g at (q, q̇, q̈): what the joints must supply beyond the uniform field, by
+/// the two sweeps as loops.
+pub fn inverse_dynamics<S: Scalar, const N: usize, const B: usize>(
+    joints: &[Joint; B],
+    k: &RigidConstants<B>,
+    q: &[S; N],
+    v: &[S; N],
+    qdd: &[S; N],
+) -> [S; N] {
+    let mut ws = NewtonEuler::<S, B>::new();
+    for b in 0..B {
+        ws.forward::<RUNTIME, N>(joints, k, (q, v, qdd), b);
+    }
+    let mut tau = [S::zero(); N];
+    for b in (0..B).rev() {
+        ws.backward::<RUNTIME, N>(joints, k, &mut tau, b);
+    }
+    tau
+}
+
+/// b and 𝓕_g at (q, q̇) in one sweep: the inertial terms b = RNEA(q, q̇, 0) without the field and
+/// the field's generalized forces 𝓕_g = −RNEA(q, 0, 0) — two chains of accelerations and forces
+/// over the same joints and velocities.
+pub fn bias_and_gravity<S: Scalar, const N: usize, const B: usize>(
+    joints: &[Joint; B],
+    k: &RigidConstants<B>,
+    q: &[S; N],
+    v: &[S; N],
+) -> (SVector<S, N>, SVector<S, N>) {
+    let mut state = [JointState::Welded; B];
+    let mut vel = [Motion::zero(); B];
+    let (mut acc, mut fall) = ([Motion::zero(); B], [Motion::zero(); B]);
+    let (mut force, mut weight) = ([Force::zero(); B], [Force::zero(); B]);
+    for b in 0..B {
+        let (joint, kb) = (&joints[b], &k.bodies[b]);
+        state[b] = JointState::of(joint, q);
+        let parent = joint.parent.map(|p| &vel[p]);
+        let (vb, c) = velocity(joint, kb, state[b], parent, rate_of(joint, v));
+        let (above, falling) = match joint.parent {
+            Some(p) => (acc[p], fall[p]),
+            None => (Motion::zero(), ground_acceleration(k)),
+        };
+        let ab = motion_to_child(joint, kb, state[b], &above) + c;
+        let gb = motion_to_child(joint, kb, state[b], &falling);
+        let inertia = &kb.inertia;
+        force[b] = inertia.apply(&ab) + vb.cross_force(&inertia.apply(&vb));
+        weight[b] = inertia.apply(&gb);
+        (vel[b], acc[b], fall[b]) = (vb, ab, gb);
+    }
+    let (mut bias, mut gravity) = (SVector::<S, N>::zeros(), SVector::<S, N>::zeros());
+    for b in (0..B).rev() {
+        let (joint, kb) = (&joints[b], &k.bodies[b]);
+        if let (Some(f), Some(w)) = (
+            along_joint(joint, &force[b]),
+            along_joint(joint, &weight[b]),
+        ) {
+            bias[joint.coordinate] = f;
+            gravity[joint.coordinate] = -w;
+        }
+        if let Some(p) = joint.parent {
+            force[p] = force[p] + force_to_parent(joint, kb, state[b], &force[b]);
+            weight[p] = weight[p] + force_to_parent(joint, kb, state[b], &weight[b]);
+        }
+    }
+    (bias, gravity)
+}
+
+/// a += S q̈ for the joint's axis.
+#[inline(always)]
+fn add_along_joint<S: Scalar>(joint: &Joint, a: &mut Motion<S>, qdd: S) {
+    match joint.kind {
+        JointKind::Revolute(axis) => a.angular[axis.indices().0] += qdd,
+        JointKind::Prismatic(axis) => a.linear[axis.indices().0] += qdd,
+        JointKind::Fixed => {}
+    }
+}
+
+/// Sᵀ f: the force's component along the joint (`None` for a fixed joint).
+#[inline(always)]
+pub(crate) fn along_joint<S: Scalar>(joint: &Joint, f: &Force<S>) -> Option<S> {
+    match joint.kind {
+        JointKind::Revolute(axis) => Some(f.moment[axis.indices().0]),
+        JointKind::Prismatic(axis) => Some(f.force[axis.indices().0]),
+        JointKind::Fixed => None,
+    }
+}

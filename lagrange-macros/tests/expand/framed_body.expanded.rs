@@ -1,0 +1,927 @@
+pub mod arm {
+    pub struct Arm {
+        pub m: f64,
+        pub l: f64,
+        pub c: f64,
+        pub ixx: f64,
+        pub ixy: f64,
+        pub izz: f64,
+        pub k: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq,
+        ::lagrange::__private::core::default::Default
+    )]
+    pub struct Coords<T = f64> {
+        pub q1: T,
+        pub q2: T,
+    }
+    impl ::lagrange::__private::Coordinates<2> for Coords<f64> {
+        const NAMES: [&'static str; 2] = ["q1", "q2"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 2] {
+            [self.q1, self.q2]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 2]) -> Self {
+            Coords {
+                q1: values[0],
+                q2: values[1],
+            }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 2;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub upper: ::lagrange::__private::geometry::Spatial<T>,
+        pub lower: ::lagrange::__private::geometry::Spatial<T>,
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub upper: ::lagrange::__private::geometry::SpatialVelocity<T>,
+        pub lower: ::lagrange::__private::geometry::SpatialVelocity<T>,
+    }
+    impl Arm {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.v);
+            let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                2,
+                24,
+            >(self, state.t, &q, &v);
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [q1, q2] = *__q;
+            let l = <__D>::from(self.l);
+            let upper: ::lagrange::__private::geometry::Spatial<__D> = {
+                spatial(
+                    vec3(<__D>::from(0.0), <__D>::from(0.0), <__D>::from(0.0)),
+                    rot_z(q1),
+                )
+            };
+            let lower: ::lagrange::__private::geometry::Spatial<__D> = {
+                upper
+                    .joint(
+                        vec3(<__D>::from(0.0), <__D>::from(0.0), l),
+                        rot3([
+                            [<__D>::from(1.0), <__D>::from(0.0), <__D>::from(0.0)],
+                            [<__D>::from(0.0), <__D>::from(0.0), -<__D>::from(1.0)],
+                            [<__D>::from(0.0), <__D>::from(1.0), <__D>::from(0.0)],
+                        ])
+                            * rot_axis(
+                                vec3(<__D>::from(0.0), <__D>::from(1.0), <__D>::from(0.0)),
+                                q2,
+                            ),
+                    )
+            };
+            Bodies { upper, lower }
+        }
+        #[inline(always)]
+        fn __lagrange_bodies_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __x: &[__D; 24],
+        ) -> Bodies<__D> {
+            let __frame_upper = self.__lagrange_mass_frame_upper();
+            let __frame_lower = self.__lagrange_mass_frame_lower();
+            Bodies {
+                upper: __frame_upper
+                    .frame(
+                        ::lagrange::__private::geometry::spatial(
+                            ::lagrange::__private::geometry::vec3(
+                                __x[0],
+                                __x[1],
+                                __x[2],
+                            ),
+                            ::lagrange::__private::geometry::Rot3 {
+                                rows: [
+                                    [__x[3], __x[6], __x[9]],
+                                    [__x[4], __x[7], __x[10]],
+                                    [__x[5], __x[8], __x[11]],
+                                ],
+                            },
+                        ),
+                    ),
+                lower: __frame_lower
+                    .frame(
+                        ::lagrange::__private::geometry::spatial(
+                            ::lagrange::__private::geometry::vec3(
+                                __x[12],
+                                __x[13],
+                                __x[14],
+                            ),
+                            ::lagrange::__private::geometry::Rot3 {
+                                rows: [
+                                    [__x[15], __x[18], __x[21]],
+                                    [__x[16], __x[19], __x[22]],
+                                    [__x[17], __x[20], __x[23]],
+                                ],
+                            },
+                        ),
+                    ),
+            }
+        }
+        #[inline(always)]
+        #[allow(unused_variables)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __x: &[__D; 24],
+            __x_dot: &[__D; 24],
+        ) -> BodyVelocities<__D> {
+            let __frame_upper = self.__lagrange_mass_frame_upper();
+            let __frame_lower = self.__lagrange_mass_frame_lower();
+            BodyVelocities {
+                upper: __frame_upper
+                    .frame_velocity(
+                        &::lagrange::__private::geometry::spatial(
+                            ::lagrange::__private::geometry::vec3(
+                                __x[0],
+                                __x[1],
+                                __x[2],
+                            ),
+                            ::lagrange::__private::geometry::Rot3 {
+                                rows: [
+                                    [__x[3], __x[6], __x[9]],
+                                    [__x[4], __x[7], __x[10]],
+                                    [__x[5], __x[8], __x[11]],
+                                ],
+                            },
+                        ),
+                        ::lagrange::__private::geometry::SpatialVelocity {
+                            linear: ::lagrange::__private::geometry::vec3(
+                                __x_dot[0],
+                                __x_dot[1],
+                                __x_dot[2],
+                            ),
+                            angular: ::lagrange::__private::geometry::angular_velocity(
+                                [
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x[3],
+                                        __x[4],
+                                        __x[5],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x[6],
+                                        __x[7],
+                                        __x[8],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x[9],
+                                        __x[10],
+                                        __x[11],
+                                    ),
+                                ],
+                                [
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x_dot[3],
+                                        __x_dot[4],
+                                        __x_dot[5],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x_dot[6],
+                                        __x_dot[7],
+                                        __x_dot[8],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x_dot[9],
+                                        __x_dot[10],
+                                        __x_dot[11],
+                                    ),
+                                ],
+                            ),
+                        },
+                    ),
+                lower: __frame_lower
+                    .frame_velocity(
+                        &::lagrange::__private::geometry::spatial(
+                            ::lagrange::__private::geometry::vec3(
+                                __x[12],
+                                __x[13],
+                                __x[14],
+                            ),
+                            ::lagrange::__private::geometry::Rot3 {
+                                rows: [
+                                    [__x[15], __x[18], __x[21]],
+                                    [__x[16], __x[19], __x[22]],
+                                    [__x[17], __x[20], __x[23]],
+                                ],
+                            },
+                        ),
+                        ::lagrange::__private::geometry::SpatialVelocity {
+                            linear: ::lagrange::__private::geometry::vec3(
+                                __x_dot[12],
+                                __x_dot[13],
+                                __x_dot[14],
+                            ),
+                            angular: ::lagrange::__private::geometry::angular_velocity(
+                                [
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x[15],
+                                        __x[16],
+                                        __x[17],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x[18],
+                                        __x[19],
+                                        __x[20],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x[21],
+                                        __x[22],
+                                        __x[23],
+                                    ),
+                                ],
+                                [
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x_dot[15],
+                                        __x_dot[16],
+                                        __x_dot[17],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x_dot[18],
+                                        __x_dot[19],
+                                        __x_dot[20],
+                                    ),
+                                    ::lagrange::__private::geometry::vec3(
+                                        __x_dot[21],
+                                        __x_dot[22],
+                                        __x_dot[23],
+                                    ),
+                                ],
+                            ),
+                        },
+                    ),
+            }
+        }
+        #[doc(hidden)]
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_mass_frame_upper(
+            &self,
+        ) -> ::lagrange::__private::inertia::SpatialMassFrame {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let c: f64 = self.c;
+            let ixx: f64 = self.ixx;
+            let ixy: f64 = self.ixy;
+            let izz: f64 = self.izz;
+            ::lagrange::__private::inertia::SpatialMassFrame {
+                com: ::lagrange::__private::core::option::Option::Some(
+                    vec3(0.0, 0.0, c),
+                ),
+                axes: ::lagrange::__private::core::option::Option::Some(
+                    ::lagrange::__private::inertia::principal_axes(
+                            &[[ixx, ixy, 0.0], [ixy, ixx, 0.0], [0.0, 0.0, izz]],
+                        )
+                        .1,
+                ),
+            }
+        }
+        #[doc(hidden)]
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_mass_frame_lower(
+            &self,
+        ) -> ::lagrange::__private::inertia::SpatialMassFrame {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let c: f64 = self.c;
+            let ixx: f64 = self.ixx;
+            let izz: f64 = self.izz;
+            ::lagrange::__private::inertia::SpatialMassFrame {
+                com: ::lagrange::__private::core::option::Option::Some(
+                    vec3(0.0, 0.0, c),
+                ),
+                axes: ::lagrange::__private::core::option::Option::None,
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<2, 24> for Arm {
+        type Coords = Coords;
+        const INERTIAL: usize = 24;
+        const RHEONOMIC: bool = false;
+        const HAS_POTENTIAL: bool = true;
+        const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 24] = [
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+        ];
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            if !self.m.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m",
+                    value: self.m,
+                });
+            }
+            if !self.l.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "l",
+                    value: self.l,
+                });
+            }
+            if !self.c.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "c",
+                    value: self.c,
+                });
+            }
+            if !self.ixx.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "ixx",
+                    value: self.ixx,
+                });
+            }
+            if !self.ixy.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "ixy",
+                    value: self.ixy,
+                });
+            }
+            if !self.izz.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "izz",
+                    value: self.izz,
+                });
+            }
+            if !self.k.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "k",
+                    value: self.k,
+                });
+            }
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let c: f64 = self.c;
+            let ixx: f64 = self.ixx;
+            let ixy: f64 = self.ixy;
+            let izz: f64 = self.izz;
+            let k: f64 = self.k;
+            let __mass_upper: f64 = m;
+            let __inertia_upper: [[f64; 3]; 3] = [
+                [ixx, ixy, 0.0],
+                [ixy, ixx, 0.0],
+                [0.0, 0.0, izz],
+            ];
+            let __mass_lower: f64 = m;
+            let __inertia_lower: [f64; 3] = [ixx, ixx, izz];
+            let __com_upper: ::lagrange::__private::geometry::Vec3<f64> = vec3(
+                0.0,
+                0.0,
+                c,
+            );
+            let __com_lower: ::lagrange::__private::geometry::Vec3<f64> = vec3(
+                0.0,
+                0.0,
+                c,
+            );
+            if !(__mass_upper.is_finite() && __mass_upper > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "upper",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_upper
+                    ),
+                });
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__error) = ::lagrange::__private::inertia::check_inertia_tensor(
+                "upper",
+                &__inertia_upper,
+            ) {
+                return ::lagrange::__private::core::result::Result::Err(__error);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__error) = ::lagrange::__private::inertia::check_centre_of_mass(
+                "upper",
+                &__com_upper.to_array(),
+            ) {
+                return ::lagrange::__private::core::result::Result::Err(__error);
+            }
+            if !(__mass_lower.is_finite() && __mass_lower > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "lower",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_lower
+                    ),
+                });
+            }
+            let __sum: f64 = __inertia_lower[0] + __inertia_lower[1]
+                + __inertia_lower[2];
+            for (__k, __moment) in __inertia_lower.into_iter().enumerate() {
+                if !(__moment.is_finite() && __moment > 0.0) {
+                    return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                        body: "lower",
+                        reason: ::lagrange::__private::std::format!(
+                            "principal moment I{} must be positive and finite, got {}",
+                            __k + 1, __moment
+                        ),
+                    });
+                }
+                if __moment > __sum - __moment + 1e-12 * __sum {
+                    return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                        body: "lower",
+                        reason: ::lagrange::__private::std::format!(
+                            "principal moments {:?} violate the triangle inequality: I{} exceeds the sum of the other two",
+                            __inertia_lower, __k + 1
+                        ),
+                    });
+                }
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__error) = ::lagrange::__private::inertia::check_centre_of_mass(
+                "lower",
+                &__com_lower.to_array(),
+            ) {
+                return ::lagrange::__private::core::result::Result::Err(__error);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__error) = ::lagrange::__private::inertia::check_rotation(
+                "lower",
+                &rot3([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]),
+            ) {
+                return ::lagrange::__private::core::result::Result::Err(__error);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__error) = ::lagrange::__private::inertia::check_axis(
+                "lower",
+                &vec3(0.0, 1.0, 0.0),
+            ) {
+                return ::lagrange::__private::core::result::Result::Err(__error);
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 24] {
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let c: f64 = self.c;
+            let ixx: f64 = self.ixx;
+            let ixy: f64 = self.ixy;
+            let izz: f64 = self.izz;
+            let k: f64 = self.k;
+            let __mass_upper: f64 = m;
+            let __inertia_upper: [[f64; 3]; 3] = [
+                [ixx, ixy, 0.0],
+                [ixy, ixx, 0.0],
+                [0.0, 0.0, izz],
+            ];
+            let __mass_lower: f64 = m;
+            let __inertia_lower: [f64; 3] = [ixx, ixx, izz];
+            let __moments_upper: [f64; 3] = ::lagrange::__private::inertia::principal_axes(
+                    &__inertia_upper,
+                )
+                .0;
+            [
+                __mass_upper,
+                __mass_upper,
+                __mass_upper,
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[0usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[0usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[0usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[1usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[1usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[1usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[2usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[2usize]),
+                ((__moments_upper[0] + __moments_upper[1] + __moments_upper[2]) * 0.5
+                    - __moments_upper[2usize]),
+                __mass_lower,
+                __mass_lower,
+                __mass_lower,
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[0usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[0usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[0usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[1usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[1usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[1usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[2usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[2usize]),
+                ((__inertia_lower[0] + __inertia_lower[1] + __inertia_lower[2]) * 0.5
+                    - __inertia_lower[2usize]),
+            ]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> [__D; 24] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            let __principal_upper = self
+                .__lagrange_mass_frame_upper()
+                .principal(__bodies.upper);
+            let __principal_lower = self
+                .__lagrange_mass_frame_lower()
+                .principal(__bodies.lower);
+            [
+                __principal_upper.position.x,
+                __principal_upper.position.y,
+                __principal_upper.position.z,
+                __principal_upper.rotation.rows[0][0],
+                __principal_upper.rotation.rows[1][0],
+                __principal_upper.rotation.rows[2][0],
+                __principal_upper.rotation.rows[0][1],
+                __principal_upper.rotation.rows[1][1],
+                __principal_upper.rotation.rows[2][1],
+                __principal_upper.rotation.rows[0][2],
+                __principal_upper.rotation.rows[1][2],
+                __principal_upper.rotation.rows[2][2],
+                __principal_lower.position.x,
+                __principal_lower.position.y,
+                __principal_lower.position.z,
+                __principal_lower.rotation.rows[0][0],
+                __principal_lower.rotation.rows[1][0],
+                __principal_lower.rotation.rows[2][0],
+                __principal_lower.rotation.rows[0][1],
+                __principal_lower.rotation.rows[1][1],
+                __principal_lower.rotation.rows[2][1],
+                __principal_lower.rotation.rows[0][2],
+                __principal_lower.rotation.rows[1][2],
+                __principal_lower.rotation.rows[2][2],
+            ]
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn potential<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+            __x: &[__D; 24],
+        ) -> __D {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [q1, q2] = *__q;
+            let k = <__D>::from(self.k);
+            let __param_0: __D = <__D>::from({
+                let k: f64 = self.k;
+                0.5 * k
+            });
+            let Bodies { upper, lower } = self.__lagrange_bodies_from_cartesian(__x);
+            let mut __potential = <__D>::zero();
+            let __potential_spring: __D = { __param_0 * lower.position.norm_squared() };
+            __potential += __potential_spring;
+            __potential
+        }
+    }
+    impl ::lagrange::__private::Prepare for Arm {
+        type Prepared = ();
+        #[inline(always)]
+        fn prepare(&self) -> ::lagrange::__private::Result<()> {
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+    }
+    impl ::lagrange::__private::Dynamics<2> for Arm {
+        type Coords = Coords;
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
+        );
+        const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = false;
+        #[inline]
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<2, 24>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            ::lagrange::__private::dynamics::equations_of_motion::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 24>(self, t, q, v)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                2,
+                24,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, t, q, v)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Arm {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &[
+            "m",
+            "l",
+            "c",
+            "ixx",
+            "ixy",
+            "izz",
+            "k",
+        ];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Arm {
+                m: values[0],
+                l: values[1],
+                c: values[2],
+                ixx: values[3],
+                ixy: values[4],
+                izz: values[5],
+                k: values[6],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![
+                self.m, self.l, self.c, self.ixx, self.ixy, self.izz, self.k
+            ]
+        }
+    }
+    impl Arm {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 7], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [q1, q2] = *__q;
+            let l: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
+            let upper: ::lagrange::__private::geometry::Spatial<__D> = {
+                spatial(
+                    vec3(<__D>::from(0.0), <__D>::from(0.0), <__D>::from(0.0)),
+                    rot_z(q1),
+                )
+            };
+            let lower: ::lagrange::__private::geometry::Spatial<__D> = {
+                upper
+                    .joint(
+                        vec3(<__D>::from(0.0), <__D>::from(0.0), l),
+                        rot3([
+                            [<__D>::from(1.0), <__D>::from(0.0), <__D>::from(0.0)],
+                            [<__D>::from(0.0), <__D>::from(0.0), -<__D>::from(1.0)],
+                            [<__D>::from(0.0), <__D>::from(1.0), <__D>::from(0.0)],
+                        ])
+                            * rot_axis(
+                                vec3(<__D>::from(0.0), <__D>::from(1.0), <__D>::from(0.0)),
+                                q2,
+                            ),
+                    )
+            };
+            Bodies { upper, lower }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 24, 7> for Arm {
+        const PARAMETER_NAMES: [&'static str; 7] = [
+            "m",
+            "l",
+            "c",
+            "ixx",
+            "ixy",
+            "izz",
+            "k",
+        ];
+        const SEEDABLE: [bool; 7] = [false, true, false, false, false, false, true];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 7] {
+            [self.m, self.l, self.c, self.ixx, self.ixy, self.izz, self.k]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 7], __t: __D, __q: &[__D; 2]) -> [__D; 24] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            let __principal_upper = self
+                .__lagrange_mass_frame_upper()
+                .principal(__bodies.upper);
+            let __principal_lower = self
+                .__lagrange_mass_frame_lower()
+                .principal(__bodies.lower);
+            [
+                __principal_upper.position.x,
+                __principal_upper.position.y,
+                __principal_upper.position.z,
+                __principal_upper.rotation.rows[0][0],
+                __principal_upper.rotation.rows[1][0],
+                __principal_upper.rotation.rows[2][0],
+                __principal_upper.rotation.rows[0][1],
+                __principal_upper.rotation.rows[1][1],
+                __principal_upper.rotation.rows[2][1],
+                __principal_upper.rotation.rows[0][2],
+                __principal_upper.rotation.rows[1][2],
+                __principal_upper.rotation.rows[2][2],
+                __principal_lower.position.x,
+                __principal_lower.position.y,
+                __principal_lower.position.z,
+                __principal_lower.rotation.rows[0][0],
+                __principal_lower.rotation.rows[1][0],
+                __principal_lower.rotation.rows[2][0],
+                __principal_lower.rotation.rows[0][1],
+                __principal_lower.rotation.rows[1][1],
+                __principal_lower.rotation.rows[2][1],
+                __principal_lower.rotation.rows[0][2],
+                __principal_lower.rotation.rows[1][2],
+                __principal_lower.rotation.rows[2][2],
+            ]
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn potential_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 7], __t: __D, __q: &[__D; 2], __x: &[__D; 24]) -> __D {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [q1, q2] = *__q;
+            let k: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[6]);
+            let Bodies { upper, lower } = self.__lagrange_bodies_from_cartesian(__x);
+            let mut __potential = <__D>::zero();
+            let __potential_spring: __D = {
+                <__D>::from(0.5) * k * lower.position.norm_squared()
+            };
+            __potential += __potential_spring;
+            __potential
+        }
+    }
+}

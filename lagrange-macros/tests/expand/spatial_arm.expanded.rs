@@ -1,0 +1,1064 @@
+pub mod arm {
+    pub struct Arm {
+        pub m1: f64,
+        pub m2: f64,
+        pub d: f64,
+        pub e: f64,
+        pub g: f64,
+    }
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq,
+        ::lagrange::__private::core::default::Default
+    )]
+    pub struct Coords<T = f64> {
+        pub q1: T,
+        pub q2: T,
+    }
+    impl ::lagrange::__private::Coordinates<2> for Coords<f64> {
+        const NAMES: [&'static str; 2] = ["q1", "q2"];
+        #[inline(always)]
+        fn to_array(&self) -> [f64; 2] {
+            [self.q1, self.q2]
+        }
+        #[inline(always)]
+        fn from_array(values: [f64; 2]) -> Self {
+            Coords {
+                q1: values[0],
+                q2: values[1],
+            }
+        }
+    }
+    /// Degrees of freedom: the number of generalized coordinates.
+    #[allow(dead_code)]
+    pub const DOF: usize = 2;
+    /// The state of this mechanism: time, coordinates, velocities.
+    #[allow(dead_code)]
+    pub type State = ::lagrange::__private::State<Coords>;
+    /// Every body and point of the mechanism, by name: a particle or point's position, a rigid
+    /// body's pose as its function returns it (its centre of mass and orientation, or, for a
+    /// body declared with its `com`, its frame).
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct Bodies<T = f64> {
+        pub link1: ::lagrange::__private::geometry::Spatial<T>,
+        pub link2: ::lagrange::__private::geometry::Spatial<T>,
+    }
+    /// The velocity of every body and point, by name: a particle or point's velocity; for a
+    /// planar body, its centre-of-mass velocity and angular velocity (as a `Planar`); for a
+    /// spatial body, a `SpatialVelocity` (centre-of-mass and angular velocity, world frame).
+    /// For a body declared with its `com`, the velocity of its frame's origin in place of the
+    /// centre of mass's.
+    #[derive(
+        ::lagrange::__private::core::clone::Clone,
+        ::lagrange::__private::core::marker::Copy,
+        ::lagrange::__private::core::fmt::Debug,
+        ::lagrange::__private::core::cmp::PartialEq
+    )]
+    #[allow(dead_code)]
+    pub struct BodyVelocities<T = f64> {
+        pub link1: ::lagrange::__private::geometry::SpatialVelocity<T>,
+        pub link2: ::lagrange::__private::geometry::SpatialVelocity<T>,
+    }
+    impl Arm {
+        /// Every body and point at `state`, by name.
+        #[allow(dead_code)]
+        pub fn bodies(&self, state: &State) -> Bodies {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            self.__lagrange_bodies(state.t, &q)
+        }
+        /// The velocity of every body and point at `state`, by name (one forward-mode pass
+        /// along (q̇, 1)).
+        #[allow(dead_code)]
+        pub fn body_velocities(&self, state: &State) -> BodyVelocities {
+            let q = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.q);
+            let v = <Coords as ::lagrange::__private::Coordinates<
+                2,
+            >>::to_array(&state.v);
+            let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
+                Self,
+                f64,
+                2,
+                24,
+            >(self, state.t, &q, &v);
+            self.__lagrange_velocities_from_cartesian(&x, &x_dot)
+        }
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [q1, q2] = *__q;
+            let d = <__D>::from(self.d);
+            let e = <__D>::from(self.e);
+            let __param_0: __D = <__D>::from({
+                let d: f64 = self.d;
+                0.5 * d
+            });
+            let __param_1: __D = <__D>::from({
+                let e: f64 = self.e;
+                -e
+            });
+            let link1: ::lagrange::__private::geometry::Spatial<__D> = {
+                let r = rot_z(q1);
+                spatial(r * vec3(<__D>::from(0.0), <__D>::from(0.0), __param_0), r)
+            };
+            let link2: ::lagrange::__private::geometry::Spatial<__D> = {
+                let r = link1.rotation * rot_y(q2);
+                let joint = link1.point(vec3(__param_1, <__D>::from(0.0), __param_0));
+                spatial(joint + r * vec3(e, <__D>::from(0.0), __param_0), r)
+            };
+            Bodies { link1, link2 }
+        }
+        #[inline(always)]
+        #[allow(unused_variables)]
+        fn __lagrange_velocities_from_cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __x: &[__D; 24],
+            __x_dot: &[__D; 24],
+        ) -> BodyVelocities<__D> {
+            BodyVelocities {
+                link1: ::lagrange::__private::geometry::SpatialVelocity {
+                    linear: ::lagrange::__private::geometry::vec3(
+                        __x_dot[0],
+                        __x_dot[1],
+                        __x_dot[2],
+                    ),
+                    angular: ::lagrange::__private::geometry::angular_velocity(
+                        [
+                            ::lagrange::__private::geometry::vec3(
+                                __x[3],
+                                __x[4],
+                                __x[5],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x[6],
+                                __x[7],
+                                __x[8],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x[9],
+                                __x[10],
+                                __x[11],
+                            ),
+                        ],
+                        [
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[3],
+                                __x_dot[4],
+                                __x_dot[5],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[6],
+                                __x_dot[7],
+                                __x_dot[8],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[9],
+                                __x_dot[10],
+                                __x_dot[11],
+                            ),
+                        ],
+                    ),
+                },
+                link2: ::lagrange::__private::geometry::SpatialVelocity {
+                    linear: ::lagrange::__private::geometry::vec3(
+                        __x_dot[12],
+                        __x_dot[13],
+                        __x_dot[14],
+                    ),
+                    angular: ::lagrange::__private::geometry::angular_velocity(
+                        [
+                            ::lagrange::__private::geometry::vec3(
+                                __x[15],
+                                __x[16],
+                                __x[17],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x[18],
+                                __x[19],
+                                __x[20],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x[21],
+                                __x[22],
+                                __x[23],
+                            ),
+                        ],
+                        [
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[15],
+                                __x_dot[16],
+                                __x_dot[17],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[18],
+                                __x_dot[19],
+                                __x_dot[20],
+                            ),
+                            ::lagrange::__private::geometry::vec3(
+                                __x_dot[21],
+                                __x_dot[22],
+                                __x_dot[23],
+                            ),
+                        ],
+                    ),
+                },
+            }
+        }
+    }
+    impl ::lagrange::__private::Model<2, 24> for Arm {
+        type Coords = Coords;
+        const INERTIAL: usize = 24;
+        const RHEONOMIC: bool = false;
+        const HAS_POTENTIAL: bool = false;
+        const HAS_FORCES: bool = false;
+        const DEPENDS: [[bool; 2]; 24] = [
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, false],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+            [true, true],
+        ];
+        #[allow(unused_variables, clippy::all)]
+        fn validate(&self) -> ::lagrange::__private::Result<()> {
+            if !self.m1.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m1",
+                    value: self.m1,
+                });
+            }
+            if !self.m2.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "m2",
+                    value: self.m2,
+                });
+            }
+            if !self.d.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "d",
+                    value: self.d,
+                });
+            }
+            if !self.e.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "e",
+                    value: self.e,
+                });
+            }
+            if !self.g.is_finite() {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::NonFiniteParameter {
+                    name: "g",
+                    value: self.g,
+                });
+            }
+            let m1: f64 = self.m1;
+            let m2: f64 = self.m2;
+            let d: f64 = self.d;
+            let e: f64 = self.e;
+            let g: f64 = self.g;
+            let __mass_link1: f64 = m1;
+            let __inertia_link1: [f64; 3] = [0.03, 0.025, 0.01];
+            let __mass_link2: f64 = m2;
+            let __inertia_link2: [f64; 3] = [0.03, 0.025, 0.01];
+            if !(__mass_link1.is_finite() && __mass_link1 > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "link1",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_link1
+                    ),
+                });
+            }
+            let __sum: f64 = __inertia_link1[0] + __inertia_link1[1]
+                + __inertia_link1[2];
+            for (__k, __moment) in __inertia_link1.into_iter().enumerate() {
+                if !(__moment.is_finite() && __moment > 0.0) {
+                    return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                        body: "link1",
+                        reason: ::lagrange::__private::std::format!(
+                            "principal moment I{} must be positive and finite, got {}",
+                            __k + 1, __moment
+                        ),
+                    });
+                }
+                if __moment > __sum - __moment + 1e-12 * __sum {
+                    return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                        body: "link1",
+                        reason: ::lagrange::__private::std::format!(
+                            "principal moments {:?} violate the triangle inequality: I{} exceeds the sum of the other two",
+                            __inertia_link1, __k + 1
+                        ),
+                    });
+                }
+            }
+            if !(__mass_link2.is_finite() && __mass_link2 > 0.0) {
+                return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                    body: "link2",
+                    reason: ::lagrange::__private::std::format!(
+                        "mass must be positive and finite, got {}", __mass_link2
+                    ),
+                });
+            }
+            let __sum: f64 = __inertia_link2[0] + __inertia_link2[1]
+                + __inertia_link2[2];
+            for (__k, __moment) in __inertia_link2.into_iter().enumerate() {
+                if !(__moment.is_finite() && __moment > 0.0) {
+                    return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                        body: "link2",
+                        reason: ::lagrange::__private::std::format!(
+                            "principal moment I{} must be positive and finite, got {}",
+                            __k + 1, __moment
+                        ),
+                    });
+                }
+                if __moment > __sum - __moment + 1e-12 * __sum {
+                    return ::lagrange::__private::core::result::Result::Err(::lagrange::__private::Error::InvalidInertia {
+                        body: "link2",
+                        reason: ::lagrange::__private::std::format!(
+                            "principal moments {:?} violate the triangle inequality: I{} exceeds the sum of the other two",
+                            __inertia_link2, __k + 1
+                        ),
+                    });
+                }
+            }
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn masses(&self) -> [f64; 24] {
+            let m1: f64 = self.m1;
+            let m2: f64 = self.m2;
+            let d: f64 = self.d;
+            let e: f64 = self.e;
+            let g: f64 = self.g;
+            let __mass_link1: f64 = m1;
+            let __inertia_link1: [f64; 3] = [0.03, 0.025, 0.01];
+            let __mass_link2: f64 = m2;
+            let __inertia_link2: [f64; 3] = [0.03, 0.025, 0.01];
+            [
+                __mass_link1,
+                __mass_link1,
+                __mass_link1,
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[0usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[0usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[0usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[1usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[1usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[1usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[2usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[2usize]),
+                ((__inertia_link1[0] + __inertia_link1[1] + __inertia_link1[2]) * 0.5
+                    - __inertia_link1[2usize]),
+                __mass_link2,
+                __mass_link2,
+                __mass_link2,
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[0usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[0usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[0usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[1usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[1usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[1usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[2usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[2usize]),
+                ((__inertia_link2[0] + __inertia_link2[1] + __inertia_link2[2]) * 0.5
+                    - __inertia_link2[2usize]),
+            ]
+        }
+        #[inline(always)]
+        fn cartesian<__D: ::lagrange::__private::Scalar>(
+            &self,
+            __t: __D,
+            __q: &[__D; 2],
+        ) -> [__D; 24] {
+            let __bodies = self.__lagrange_bodies(__t, __q);
+            [
+                __bodies.link1.position.x,
+                __bodies.link1.position.y,
+                __bodies.link1.position.z,
+                __bodies.link1.rotation.rows[0][0],
+                __bodies.link1.rotation.rows[1][0],
+                __bodies.link1.rotation.rows[2][0],
+                __bodies.link1.rotation.rows[0][1],
+                __bodies.link1.rotation.rows[1][1],
+                __bodies.link1.rotation.rows[2][1],
+                __bodies.link1.rotation.rows[0][2],
+                __bodies.link1.rotation.rows[1][2],
+                __bodies.link1.rotation.rows[2][2],
+                __bodies.link2.position.x,
+                __bodies.link2.position.y,
+                __bodies.link2.position.z,
+                __bodies.link2.rotation.rows[0][0],
+                __bodies.link2.rotation.rows[1][0],
+                __bodies.link2.rotation.rows[2][0],
+                __bodies.link2.rotation.rows[0][1],
+                __bodies.link2.rotation.rows[1][1],
+                __bodies.link2.rotation.rows[2][1],
+                __bodies.link2.rotation.rows[0][2],
+                __bodies.link2.rotation.rows[1][2],
+                __bodies.link2.rotation.rows[2][2],
+            ]
+        }
+        const HAS_GRAVITY: bool = true;
+        #[allow(unused_variables, clippy::all)]
+        fn weights(&self) -> [f64; 24] {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{vec2, vec3};
+            let g: f64 = self.g;
+            let __masses = <Self as ::lagrange::__private::Model<2, 24>>::masses(self);
+            let mut __weights = [0.0; 24];
+            let __gravity_down: ::lagrange::__private::geometry::Vec3<f64> = {
+                vec3(0.0, 0.0, -g)
+            };
+            __weights[0] += __gravity_down.x * __masses[0];
+            __weights[1] += __gravity_down.y * __masses[1];
+            __weights[2] += __gravity_down.z * __masses[2];
+            __weights[12] += __gravity_down.x * __masses[12];
+            __weights[13] += __gravity_down.y * __masses[13];
+            __weights[14] += __gravity_down.z * __masses[14];
+            __weights
+        }
+    }
+    impl ::lagrange::__private::tree::rigid::RigidTree<2, 2> for Arm {
+        const JOINTS: [::lagrange::__private::tree::rigid::Joint; 2] = [
+            ::lagrange::__private::tree::rigid::Joint {
+                parent: ::lagrange::__private::core::option::Option::None,
+                kind: ::lagrange::__private::tree::rigid::JointKind::Revolute(
+                    ::lagrange::__private::tree::rigid::spatial::Axis::Z,
+                ),
+                coordinate: 0,
+                rotated: false,
+                offset: [false, false, false],
+            },
+            ::lagrange::__private::tree::rigid::Joint {
+                parent: ::lagrange::__private::core::option::Option::Some(0),
+                kind: ::lagrange::__private::tree::rigid::JointKind::Revolute(
+                    ::lagrange::__private::tree::rigid::spatial::Axis::Y,
+                ),
+                coordinate: 1,
+                rotated: false,
+                offset: [true, false, true],
+            },
+        ];
+    }
+    impl Arm {
+        #[allow(unused_variables, unused_parens, clippy::all)]
+        fn __lagrange_rigid_constants(
+            &self,
+        ) -> ::lagrange::__private::tree::rigid::RigidConstants<2> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let m1: f64 = self.m1;
+            let m2: f64 = self.m2;
+            let d: f64 = self.d;
+            let e: f64 = self.e;
+            let g: f64 = self.g;
+            let __after_0: Rot3<f64> = (Rot3::<f64>::identity());
+            let __own_0: Vec3<f64> = (Vec3::<f64>::zero()
+                + (Rot3::<f64>::identity()) * vec3((0.0), (0.0), ((0.5) * (d))));
+            let __body_0 = {
+                let __rotation: Rot3<f64> = Rot3::<f64>::identity()
+                    * (Rot3::<f64>::identity());
+                let __offset: Vec3<f64> = Rot3::<f64>::identity()
+                    * (Vec3::<f64>::zero());
+                let __mass: f64 = m1;
+                let __tensor: [[f64; 3]; 3] = ::lagrange::__private::tree::rigid::turned_tensor(
+                    &__after_0,
+                    ::lagrange::__private::tree::rigid::diagonal([0.03, 0.025, 0.01]),
+                );
+                let __centre: Vec3<f64> = __own_0 + __after_0 * Vec3::<f64>::zero();
+                ::lagrange::__private::tree::rigid::body_constants(
+                    __rotation,
+                    __offset,
+                    __mass,
+                    __centre,
+                    __tensor,
+                )
+            };
+            let __after_1: Rot3<f64> = (Rot3::<f64>::identity());
+            let __own_1: Vec3<f64> = (Vec3::<f64>::zero()
+                + (Rot3::<f64>::identity()) * vec3((e), (0.0), ((0.5) * (d))));
+            let __body_1 = {
+                let __rotation: Rot3<f64> = __after_0 * (Rot3::<f64>::identity());
+                let __offset: Vec3<f64> = __own_0
+                    + __after_0
+                        * (Vec3::<f64>::zero()
+                            + (Rot3::<f64>::identity())
+                                * vec3((-(e)), (0.0), ((0.5) * (d))));
+                let __mass: f64 = m2;
+                let __tensor: [[f64; 3]; 3] = ::lagrange::__private::tree::rigid::turned_tensor(
+                    &__after_1,
+                    ::lagrange::__private::tree::rigid::diagonal([0.03, 0.025, 0.01]),
+                );
+                let __centre: Vec3<f64> = __own_1 + __after_1 * Vec3::<f64>::zero();
+                ::lagrange::__private::tree::rigid::body_constants(
+                    __rotation,
+                    __offset,
+                    __mass,
+                    __centre,
+                    __tensor,
+                )
+            };
+            ::lagrange::__private::tree::rigid::RigidConstants {
+                bodies: [__body_0, __body_1],
+                gravity: ((Vec3::<f64>::zero()
+                    + {
+                        let __g: Vec3<f64> = { vec3(0.0, 0.0, -g) };
+                        __g
+                    }))
+                    .to_array(),
+            }
+        }
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_sweeps<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::Articulated<S, 2>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 2],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            (__q, __v, __tau): (&[S; 2], &[S; 2], &[S; 2]),
+            __qdd: &mut [S; 2],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.velocity::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __q, __v, 0);
+            __ws.velocity::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __q, __v, 1);
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 1)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 0)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            __ws.accelerate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __qdd, 0);
+            __ws.accelerate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __qdd, 1);
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn __lagrange_rigid_accelerations<S: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            let __joints = &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                2,
+                2,
+            >>::JOINTS;
+            let __tau: [S; 2] = ::lagrange::__private::tree::rigid::other_generalized_forces::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, __t, __q, __v)
+                .into();
+            let mut __ws = ::lagrange::__private::tree::rigid::Articulated::<
+                S,
+                2,
+            >::new();
+            let mut __qdd = [<S as ::lagrange::__private::core::convert::From<
+                f64,
+            >>::from(0.0); 2];
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = self
+                .__lagrange_rigid_sweeps(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, &__tau),
+                    &mut __qdd,
+                )
+            {
+                return ::lagrange::__private::core::result::Result::Err(
+                    ::lagrange::__private::tree::rigid::singular::<
+                        Coords,
+                        S,
+                        2,
+                        2,
+                    >(__joints, __pivot, __t, __q),
+                );
+            }
+            ::lagrange::__private::tree::rigid::finished::<Coords, S, 2>(__qdd, __t, __q)
+        }
+        /// The two sweeps; neither fails (the chunks' `Result` is for the sweeps that can).
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_newton_euler<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::NewtonEuler<S, 2>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 2],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __state: (&[S; 2], &[S; 2], &[S; 2]),
+            __tau: &mut [S; 2],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.forward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __state, 0);
+            __ws.forward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __state, 1);
+            __ws.backward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 1);
+            __ws.backward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 0);
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn __lagrange_rigid_inverse_dynamics<S: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+            __qdd: &[S; 2],
+        ) -> [S; 2] {
+            let __joints = &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                2,
+                2,
+            >>::JOINTS;
+            let mut __ws = ::lagrange::__private::tree::rigid::NewtonEuler::<
+                S,
+                2,
+            >::new();
+            let mut __tau = [<S as ::lagrange::__private::core::convert::From<
+                f64,
+            >>::from(0.0); 2];
+            let _ = self
+                .__lagrange_rigid_newton_euler(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, __qdd),
+                    &mut __tau,
+                );
+            ::lagrange::__private::tree::rigid::less_other_forces::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, __tau, __t, __q, __v)
+        }
+    }
+    impl ::lagrange::__private::Prepare for Arm {
+        type Prepared = ::lagrange::__private::tree::rigid::RigidConstants<2>;
+        #[inline]
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::core::result::Result::Ok(
+                self.__lagrange_rigid_constants(),
+            )
+        }
+    }
+    impl ::lagrange::__private::Dynamics<2> for Arm {
+        type Coords = Coords;
+        const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
+        > = ::lagrange::__private::core::option::Option::Some(
+            ::lagrange::__private::lagrange_core::constraints::ConstraintCounts::NONE,
+        );
+        const SCLERONOMIC: bool = true;
+        const CLOSED_FORM: bool = false;
+        #[inline]
+        fn check_parameters(&self) -> ::lagrange::__private::Result<()> {
+            <Self as ::lagrange::__private::Model<2, 24>>::validate(self)?;
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            self.__lagrange_rigid_accelerations(
+                &self.__lagrange_rigid_constants(),
+                t,
+                q,
+                v,
+            )
+        }
+        #[inline]
+        fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+            qdd: &[S; 2],
+        ) -> [S; 2] {
+            self.__lagrange_rigid_inverse_dynamics(
+                &self.__lagrange_rigid_constants(),
+                t,
+                q,
+                v,
+                qdd,
+            )
+        }
+        #[inline(always)]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            ::lagrange::__private::tree::rigid::equations_of_motion::<
+                Self,
+                S,
+                2,
+                24,
+                2,
+            >(self, &self.__lagrange_rigid_constants(), t, q, v)
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> S {
+            {
+                let __k = self.__lagrange_rigid_constants();
+                ::lagrange::__private::tree::rigid::kinetic_energy::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    &__k,
+                    q,
+                    v,
+                )
+            }
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, t, q)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            {
+                let __k = self.__lagrange_rigid_constants();
+                ::lagrange::__private::tree::rigid::momenta::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    &__k,
+                    q,
+                    v,
+                )
+            }
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                2,
+                24,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            ::lagrange::__private::dynamics::canonical_field::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            self.__lagrange_rigid_accelerations(prepared, t, q, v)
+        }
+        #[inline]
+        fn inverse_dynamics_prepared_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: &Self::Prepared,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+            qdd: &[S; 2],
+        ) -> [S; 2] {
+            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
+        }
+    }
+    impl ::lagrange::__private::lagrange_core::declaration::Declaration for Arm {
+        const DOF: usize = 2;
+        const PARAMETERS: &'static [&'static str] = &["m1", "m2", "d", "e", "g"];
+        fn from_parameters(
+            values: &[f64],
+        ) -> ::lagrange::__private::core::option::Option<Self> {
+            if values.len() != Self::PARAMETERS.len() {
+                return ::lagrange::__private::core::option::Option::None;
+            }
+            ::lagrange::__private::core::option::Option::Some(Arm {
+                m1: values[0],
+                m2: values[1],
+                d: values[2],
+                e: values[3],
+                g: values[4],
+            })
+        }
+        fn parameters(&self) -> ::lagrange::__private::std::vec::Vec<f64> {
+            ::lagrange::__private::std::vec![self.m1, self.m2, self.d, self.e, self.g]
+        }
+    }
+    impl Arm {
+        #[inline(always)]
+        #[allow(unused_variables, clippy::all)]
+        fn __lagrange_bodies_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let [q1, q2] = *__q;
+            let d: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[2]);
+            let e: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[3]);
+            let link1: ::lagrange::__private::geometry::Spatial<__D> = {
+                let r = rot_z(q1);
+                spatial(
+                    r * vec3(<__D>::from(0.0), <__D>::from(0.0), <__D>::from(0.5) * d),
+                    r,
+                )
+            };
+            let link2: ::lagrange::__private::geometry::Spatial<__D> = {
+                let r = link1.rotation * rot_y(q2);
+                let joint = link1
+                    .point(vec3(-e, <__D>::from(0.0), <__D>::from(0.5) * d));
+                spatial(joint + r * vec3(e, <__D>::from(0.0), <__D>::from(0.5) * d), r)
+            };
+            Bodies { link1, link2 }
+        }
+    }
+    impl ::lagrange::__private::parameters::Parametrized<2, 24, 5> for Arm {
+        const PARAMETER_NAMES: [&'static str; 5] = ["m1", "m2", "d", "e", "g"];
+        const SEEDABLE: [bool; 5] = [false, false, true, true, false];
+        #[inline(always)]
+        fn parameters(&self) -> [f64; 5] {
+            [self.m1, self.m2, self.d, self.e, self.g]
+        }
+        #[inline(always)]
+        fn cartesian_with<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 2]) -> [__D; 24] {
+            let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
+            [
+                __bodies.link1.position.x,
+                __bodies.link1.position.y,
+                __bodies.link1.position.z,
+                __bodies.link1.rotation.rows[0][0],
+                __bodies.link1.rotation.rows[1][0],
+                __bodies.link1.rotation.rows[2][0],
+                __bodies.link1.rotation.rows[0][1],
+                __bodies.link1.rotation.rows[1][1],
+                __bodies.link1.rotation.rows[2][1],
+                __bodies.link1.rotation.rows[0][2],
+                __bodies.link1.rotation.rows[1][2],
+                __bodies.link1.rotation.rows[2][2],
+                __bodies.link2.position.x,
+                __bodies.link2.position.y,
+                __bodies.link2.position.z,
+                __bodies.link2.rotation.rows[0][0],
+                __bodies.link2.rotation.rows[1][0],
+                __bodies.link2.rotation.rows[2][0],
+                __bodies.link2.rotation.rows[0][1],
+                __bodies.link2.rotation.rows[1][1],
+                __bodies.link2.rotation.rows[2][1],
+                __bodies.link2.rotation.rows[0][2],
+                __bodies.link2.rotation.rows[1][2],
+                __bodies.link2.rotation.rows[2][2],
+            ]
+        }
+    }
+}

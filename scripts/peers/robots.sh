@@ -1,0 +1,148 @@
+#!/usr/bin/env bash
+# Peer benchmark of five synthetic fixed-base robots (robots.py: arms of 3, 7 and 14 joints, a
+# quadruped, a humanoid of 30 joints): lagrange's generated `accelerations`, `inverse_dynamics`
+# and `mass_matrix` against Pinocchio's ABA, RNEA and CRBA (C++) and MuJoCo's mj_forward (C), on
+# the same URDF files at the same random states. Every side's values are checked against
+# Pinocchio's to 1e-10 before anything is timed. Not part of CI. Writes only under
+# scripts/peers/ (.venv, build) and cargo's target directory.
+#
+#   scripts/peers/robots.sh              # check, then ROUNDS (5) interleaved rounds of timing
+#   scripts/peers/robots.sh check        # build and check only
+#   scripts/peers/robots.sh callgrind    # instructions per call (valgrind), CALLS (500)
+#   scripts/peers/robots.sh build-time   # release build time of the declarations' crate
+#
+# Environment: ROUNDS, CALLS; the versions and compilers of env.sh.
+set -euo pipefail
+cd "$(dirname "$0")"
+mode=${1:-time}
+case "$mode" in time | check | callgrind | build-time) ;; *)
+  sed -n '2,15p' "$0" >&2
+  exit 1
+  ;;
+esac
+root=$(cd ../.. && pwd)
+robots="arm3 arm7 arm14 quadruped humanoid"
+out=build/robots
+mkdir -p "$out/models"
+
+# The release build of lagrange-robots (the five declarations) alone, its dependencies built
+# first: each robot on its own (a cargo feature each), then all five.
+if [ "$mode" = build-time ]; then
+  cargo build --release --quiet --manifest-path "$root/Cargo.toml" -p lagrange-robots
+  echo "| robots declared | release build of lagrange-robots |"
+  echo "|---|---:|"
+  for set in $robots "$robots"; do
+    touch "$root/lagrange-bench/robots/src/lib.rs"
+    t0=$(date +%s.%N)
+    cargo build --release --quiet --manifest-path "$root/Cargo.toml" -p lagrange-robots \
+      --no-default-features --features "${set// /,}"
+    awk -v set="$set" -v t0="$t0" -v t1="$(date +%s.%N)" 'BEGIN { printf "| %s | %.1f s |\n", set, t1 - t0 }'
+  done
+  echo
+  echo "load: $(uptime)"
+  exit 0
+fi
+
+# 1. Virtual environment and compile commands (env.sh); the drivers, rebuilt when a source is
+# newer than the binary; lagrange's side.
+. ./env.sh
+if stale build/mujoco_robots mujoco_robots.c robots_common.h timing.h "$mj_lib"; then
+  build_mujoco mujoco_robots.c build/mujoco_robots
+fi
+if stale build/pinocchio_robots pinocchio_robots.cpp robots_common.h timing.h; then
+  build_pinocchio pinocchio_robots.cpp build/pinocchio_robots \
+    -L"$prefix/lib" -lboost_serialization -Wl,-rpath,"$prefix/lib"
+fi
+cargo build --release --quiet --manifest-path "$root/Cargo.toml" -p lagrange-bench --bin robots
+lagrange="$root/target/release/robots"
+
+# 2. The states every side reads, and Pinocchio's models: its URDF parser (the wheel's
+# libpinocchio_parsers), saved as text for the driver (see pinocchio_robots.cpp).
+.venv/bin/python robots.py states "$out/states.tsv"
+.venv/bin/python -c "
+import sys, pinocchio
+for name in sys.argv[1:]:
+    pinocchio.buildModelFromUrdf(f'robots/{name}.urdf').saveToText(f'$out/models/{name}.txt')
+" $robots
+dofs=$(awk -F'\t' '$2 == "names" { printf "%s%s=%d", sep, $1, NF - 2; sep = " " }' "$out/states.tsv")
+
+# side NAME MODE ARGS...: one side's driver.
+side() {
+  local name=$1
+  shift
+  case "$name" in
+  lagrange) "$lagrange" "$1" --states "$out/states.tsv" "${@:2}" ;;
+  pinocchio) build/pinocchio_robots "$1" "$out/states.tsv" "$out/models" "${@:2}" ;;
+  mujoco) build/mujoco_robots "$1" "$out/states.tsv" robots "${@:2}" ;;
+  esac
+}
+
+# 3. The check, before any timing: q̈ of every side, τ and M of lagrange (and M of MuJoCo),
+# against Pinocchio's. A driver exits 2 when its own check failed; the report exits 2 when a
+# side's values miss Pinocchio's.
+for s in pinocchio mujoco lagrange; do
+  rc=0
+  side "$s" values >"$out/values-$s.tsv" || rc=$?
+  if [ "$rc" -ne 0 ]; then
+    echo "$s values failed with exit code $rc" >&2
+    exit "$rc"
+  fi
+done
+grep -h '^#' "$out"/values-*.tsv
+echo
+rc=0
+.venv/bin/python robots_report.py check "$out"/values-*.tsv || rc=$?
+if [ "$rc" -ne 0 ] || [ "$mode" = check ]; then
+  exit "$rc"
+fi
+
+# 4a. Instructions per call under callgrind: the difference between 3·CALLS and CALLS calls,
+# divided by 2·CALLS (start-up cancels).
+if [ "$mode" = callgrind ]; then
+  calls=${CALLS:-500}
+  count() {
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 |
+      grep -o 'refs: *[0-9,]*' | tr -d ', ' | cut -d: -f2
+  }
+  : >"$out/counts.tsv"
+  for robot in $robots; do
+    for pair in lagrange:accelerations pinocchio:aba mujoco:mj_forward \
+      lagrange:inverse_dynamics pinocchio:rnea pinocchio:crba lagrange:mass_matrix; do
+      s=${pair%%:*} label=${pair#*:}
+      if [ "$s" = lagrange ]; then
+        a=$(count "$lagrange" count --states "$out/states.tsv" --robot "$robot" --label "$label" --calls "$calls")
+        b=$(count "$lagrange" count --states "$out/states.tsv" --robot "$robot" --label "$label" --calls $((3 * calls)))
+      else
+        dir=robots
+        [ "$s" = pinocchio ] && dir="$out/models"
+        a=$(count "build/${s}_robots" count "$out/states.tsv" "$dir" "$robot" "$label" "$calls")
+        b=$(count "build/${s}_robots" count "$out/states.tsv" "$dir" "$robot" "$label" $((3 * calls)))
+      fi
+      printf '%s\t%s\t%s\t%d\n' "$s" "$robot" "$label" $(((b - a) / (2 * calls))) >>"$out/counts.tsv"
+    done
+  done
+  .venv/bin/python robots_report.py counts "$out/counts.tsv"
+  echo
+  echo "valgrind $(valgrind --version | sed 's/valgrind-//'); load: $(uptime)"
+  exit 0
+fi
+
+# 4b. Timing: the sides in turn, A B C A B C ..., ROUNDS rounds, so that a change of the
+# machine's load hits every side alike.
+rounds=${ROUNDS:-5}
+load_before=$(uptime)
+rm -f "$out"/time-*.tsv
+for r in $(seq "$rounds"); do
+  for s in lagrange pinocchio mujoco; do
+    side "$s" time >"$out/time-$r-$s.tsv"
+  done
+done
+load_after=$(uptime)
+echo
+echo "MuJoCo $(.venv/bin/python -c 'import mujoco; print(mujoco.__version__)'), \
+Pinocchio $(.venv/bin/python -c 'import pinocchio; print(pinocchio.__version__)'), \
+Eigen $EIGEN_VERSION; $(rustc --version); $("$CC" --version | head -n 1); \
+$(grep -m 1 'model name' /proc/cpuinfo | sed 's/.*: //')"
+echo
+.venv/bin/python robots_report.py table "before:$load_before; after:$load_after" "$dofs" \
+  "$out"/time-*.tsv
