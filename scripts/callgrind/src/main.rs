@@ -568,9 +568,10 @@ fn main() {
         }
         // One step (h = 10⁻⁵ s) per call of Andrews' squeezer from the state 20 steps after Hairer &
         // Wanner's start: RK4 (`sys.step`, the constrained accelerations and the projection after
-        // the step), and Gauss–Legendre 2 as a solver takes it (`step_with_memory`: the Newton
-        // matrix and the stage predictor kept from step to step).
-        "rk4_squeezer" | "gl2_squeezer" => {
+        // the step), Gauss–Legendre 2 as a solver takes it (`step_with_memory`: the Newton
+        // matrix and the stage predictor kept from step to step), and through `sys.step` (a fresh
+        // Newton matrix every step).
+        "rk4_squeezer" | "gl2_squeezer" | "gl2_fresh_squeezer" => {
             use lagrange::integrate::NewtonMemory;
             use lagrange::GaussLegendre2;
             let sys = squeezer_model::ANDREWS;
@@ -583,6 +584,10 @@ fn main() {
             if which == "rk4_squeezer" {
                 for _ in 0..n {
                     black_box(&sys).step::<Rk4>(&mut s, h).unwrap();
+                }
+            } else if which == "gl2_fresh_squeezer" {
+                for _ in 0..n {
+                    black_box(&sys).step::<GaussLegendre2>(&mut s, h).unwrap();
                 }
             } else {
                 for _ in 0..n {
