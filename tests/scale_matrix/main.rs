@@ -33,6 +33,7 @@ mod squeezer_model;
 #[allow(dead_code)]
 mod units;
 
+mod arm;
 mod constrained;
 mod harness;
 mod satellite;
@@ -613,4 +614,41 @@ fn andrews_squeezer() {
     let mut list = entries(&setup);
     list.extend(constrained::entries(&setup));
     check(list, setup.name);
+}
+
+#[test]
+fn spatial_arm() {
+    use arm::arm::Arm;
+    // The gallery's arm (`scenes::spatial_arm`), swinging about its base.
+    let make = |u: &Units| Arm {
+        m1: u.express(3.0, MASS),
+        m2: u.express(2.0, MASS),
+        m3: u.express(1.2, MASS),
+        d1: u.express(0.4, LENGTH),
+        d2: u.express(0.5, LENGTH),
+        d3: u.express(0.4, LENGTH),
+        e: u.express(0.06, LENGTH),
+        g: u.express(9.81, ACCELERATION),
+        i1x: u.express(0.04, INERTIA),
+        i1y: u.express(0.04, INERTIA),
+        i1z: u.express(0.01, INERTIA),
+        i2x: u.express(0.03, INERTIA),
+        i2y: u.express(0.03, INERTIA),
+        i2z: u.express(0.004, INERTIA),
+        i3x: u.express(0.02, INERTIA),
+        i3y: u.express(0.018, INERTIA),
+        i3z: u.express(0.003, INERTIA),
+    };
+    let setup = Setup {
+        name: "spatial arm",
+        make: &make,
+        coords: [ONE, ONE, ONE],
+        start: [[0.0, 1.1, -0.6], [2.0, 0.3, 0.5]],
+        h: 1e-3,
+        steps: 20,
+        span: 0.05,
+        equilibrium: None,
+        contacts: false,
+    };
+    check(entries(&setup), setup.name);
 }
