@@ -182,6 +182,9 @@ const ROUNDING_INCREMENT: f64 = 64.0 * f64::EPSILON;
 ///   ‖δₖ‖ ≤ 1e-10·max(s, resolution) and θₖ > ½ (the increments have reached the round-off floor
 ///   and only add noise): the methods are iterated to round-off, as their symmetry and
 ///   symplecticity require;
+/// - the contraction θ it reports (the largest over the iterations) counts every θₖ whose
+///   increment is above 1e-10·s, inside the floor too: a `resolution` far above the unknowns'
+///   rounding (positions over a small h) must not hide a kept matrix that contracts slowly;
 /// - slow when θₖ ≥ 1 above that floor (diverging, or a Jacobian too stale to contract) if
 ///   `stop_when_slow` (a simplified Newton iteration, whose caller then refreshes the Jacobian; an
 ///   exact Newton iteration may grow once before it converges quadratically), or after
@@ -216,6 +219,10 @@ pub(crate) fn newton<U: Unknowns>(
         let s = x.weighted_norm(&weights).max(size);
         let theta = d / previous;
         let floor = d <= 1e-10 * s.max(resolution);
+        // An increment above 1e-10 of the unknowns' own size is far from their rounding: its θ
+        // measures the contraction (what the caller's Jacobian reuse is decided on) even where the
+        // equations' resolution already lets the iteration stop at the floor.
+        let measured = d > 1e-10 * s;
         if d <= ROUNDING_INCREMENT * s
             || (k > 1 && theta < 1.0 && theta / (1.0 - theta) * d <= 4.0 * f64::EPSILON * s)
             || (floor && theta > 0.5)
@@ -230,13 +237,13 @@ pub(crate) fn newton<U: Unknowns>(
                 theta: theta_max,
             });
         }
-        if k > 1 && !floor {
-            if stop_when_slow && !(theta < 1.0) {
-                return Ok(NewtonEnd::Slow {
-                    iterations: k,
-                    residual,
-                });
-            }
+        if k > 1 && !floor && stop_when_slow && !(theta < 1.0) {
+            return Ok(NewtonEnd::Slow {
+                iterations: k,
+                residual,
+            });
+        }
+        if k > 1 && measured {
             theta_max = theta_max.max(theta);
         }
         previous = d;

@@ -41,6 +41,14 @@
 //! p₁ = p₀ + h Σ bⱼ G(tⱼ, Qⱼ, Vⱼ). This is exactly the Gauss method applied to the system in (q, p)
 //! (given its stage values, Vᵢ := v(tᵢ, Qᵢ, Pᵢ) solves R = 0, and conversely).
 //!
+//! **Taking repeated steps.** A single `sys.step::<GaussLegendre2>(&mut s, h)` has no memory: it
+//! evaluates the Jacobians on dual numbers and factorises the Newton matrix at every step, and the
+//! Jacobians dominate its cost (for a constrained mechanism they are taken through the constrained
+//! solve; BENCHMARKS.md has the profile). Repeated steps are taken by a solver,
+//! [`FixedStepper`](super::FixedStepper) (or [`GaussLegendre2::step_with_memory`] with a
+//! [`NewtonMemory`]), which keeps the Jacobians and the factorisation while they contract, as the
+//! examples below do.
+//!
 //! **State.** [`ImplicitMidpoint`] and [`GaussLegendre2`] implement [`Integrator`] on the (q, v)
 //! [`State`] as the [`Variational`](super::Variational) integrator does: p₀ = ∂L/∂q̇(t₀, q₀, v₀)
 //! before the step (in a solver, the previous step's p₁ when the state is exactly where that step
@@ -157,6 +165,7 @@ impl<const N: usize, const S: usize> Default for NewtonMemory<N, S> {
 /// [`ContactAdaptive`](crate::constraints::ContactAdaptive)).
 ///
 /// ```
+/// use lagrange_core::integrate::{FixedStepper, Stepper};
 /// use lagrange_core::{ImplicitMidpoint, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
 /// # struct Pendulum;
@@ -173,12 +182,14 @@ impl<const N: usize, const S: usize> Default for NewtonMemory<N, S> {
 /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
 /// # }
 /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
+/// let start = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&start)?;
+/// // A solver keeps the Newton matrix from step to step (see the module docs).
+/// let mut solver = FixedStepper::<_, ImplicitMidpoint, 1>::new(&Pendulum, &start, 1e-2)?;
 /// let mut worst = 0.0f64;
 /// for _ in 0..10_000 {
-///     Pendulum.step::<ImplicitMidpoint>(&mut s, 1e-2)?;
-///     worst = worst.max((Pendulum.energy(&s)? - e0).abs());
+///     solver.step(f64::MAX)?;
+///     worst = worst.max((Pendulum.energy(&solver.state())? - e0).abs());
 /// }
 /// // Symplectic, order 2: the energy error oscillates, O(h²ω²E) ≈ 1e-3·E = 4e-3, without drift.
 /// assert!(worst < 1e-2);
@@ -197,6 +208,7 @@ pub struct ImplicitMidpoint;
 /// (see [`ImplicitMidpoint`] for the other methods that do).
 ///
 /// ```
+/// use lagrange_core::integrate::{FixedStepper, Stepper};
 /// use lagrange_core::{GaussLegendre2, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
 /// # struct Pendulum;
@@ -213,12 +225,14 @@ pub struct ImplicitMidpoint;
 /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
 /// # }
 /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
+/// let start = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&start)?;
+/// // A solver keeps the Newton matrix from step to step (see the module docs).
+/// let mut solver = FixedStepper::<_, GaussLegendre2, 1>::new(&Pendulum, &start, 1e-2)?;
 /// let mut worst = 0.0f64;
 /// for _ in 0..10_000 {
-///     Pendulum.step::<GaussLegendre2>(&mut s, 1e-2)?;
-///     worst = worst.max((Pendulum.energy(&s)? - e0).abs());
+///     solver.step(f64::MAX)?;
+///     worst = worst.max((Pendulum.energy(&solver.state())? - e0).abs());
 /// }
 /// // Symplectic, order 4: the energy error oscillates, O((hω)⁴E) ≈ 1e-6·E, without drift.
 /// assert!(worst < 1e-5);
