@@ -11,7 +11,8 @@
 //! trait that generated code implements, the dynamics kernels, the small dense solves — stays in its
 //! module: [`model`], [`dynamics`], [`tree`], [`linalg`], [`integrate`], [`analysis`],
 //! [`constraints`], [`geometry`], [`inertia`], [`scalar_ext`], [`error`], [`sensitivity`] (trajectory
-//! sensitivities), [`declaration`], and [`ffi`] with [`export_c!`] (C embedding).
+//! sensitivities), [`declaration`], [`animation`] (a trajectory as an HTML animation), and [`ffi`]
+//! with [`export_c!`] (C embedding).
 //!
 //! So `use lagrange::*;` brings one `validate` into scope, [`Mechanism::validate`]:
 //!
@@ -76,8 +77,8 @@ pub use lagrange_core::validated::Validated;
 
 pub use lagrange_core::ensemble;
 pub use lagrange_core::{
-    analysis, constraints, declaration, dynamics, error, geometry, inertia, integrate, linalg,
-    mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
+    analysis, animation, constraints, declaration, dynamics, error, geometry, inertia, integrate,
+    linalg, mechanism, model, parameters, scalar_ext, sensitivity, tree, validated,
 };
 /// C embedding: [`export_c!`] and what it uses ([`ffi::Status`], [`ffi::Export`], …).
 pub use lagrange_ffi as ffi;

@@ -14,7 +14,7 @@
 //! ([`can_flip`]); those cells are still integrated, so that the throughput is that of the whole
 //! grid and the picture shows what was simulated, not what was argued.
 
-use lagrange::ensemble::{self, rayon, Sweep};
+use lagrange::ensemble::{self, rayon, PartError, Parts, Sweep};
 use lagrange::prelude::*;
 use std::f64::consts::PI;
 use std::ops::Range;
@@ -141,6 +141,31 @@ pub fn flip_times(
         .run(|&release| flip_time(sys, release, H, t_max))
         .into_iter()
         .collect()
+}
+
+/// The flip time of one release for a sweep whose results are stored cells
+/// ([`ensemble::Cells`]): [`flip_time`] at the map's step `H`. The parameters are validated and a
+/// release at rest is finite, so an RK4 step of this smooth, bounded system cannot fail; if one
+/// did, that would be a defect of the integrator, and it panics naming the release.
+pub fn flip_cell(sys: &Validated<DoublePendulum>, release: (f64, f64), t_max: f64) -> Option<f64> {
+    flip_time(sys, release, H, t_max)
+        .unwrap_or_else(|e| panic!("RK4 failed from the release {release:?}: {e}"))
+}
+
+/// The map of an `n` × `n` grid capped at `t_max`, stored as `count` Parquet parts in `dir`
+/// (`flip_map-part-I-of-K.parquet`): columns `theta1`, `theta2` (the release) and `flip_time`
+/// (null for no flip), and metadata naming the mechanism, the integrator and its settings.
+pub fn parts(dir: &Path, n: usize, t_max: f64, count: usize) -> Result<Parts, PartError> {
+    Ok(Parts::new(dir, "flip_map", count)?
+        .columns(&["theta1", "theta2"], &["flip_time"])
+        .metadata(
+            "mechanism",
+            "double_pendulum: m1 = m2 = 1, l1 = l2 = 1, g = 9.81, released at rest",
+        )
+        .metadata("integrator", "Rk4")
+        .metadata("h", H)
+        .metadata("t_max", t_max)
+        .metadata("grid", format!("{n}x{n}")))
 }
 
 /// The map of an `n` × `n` grid on a pool of `threads` threads, and the wall time it took.

@@ -1,6 +1,6 @@
 //! Support for the example scenes of `lagrange`: a [`Check`] of a simulated quantity against its
-//! closed form, the results table the gallery prints, SVG line plots, and the special functions the
-//! closed forms need.
+//! closed form, the results table the gallery prints, SVG line plots, the gallery's page
+//! ([`page`]), and the special functions the closed forms need.
 //!
 //! Every scene in [`scenes`] exposes `pub fn run(plots: &Path) -> Vec<Check>`; the `gallery` binary
 //! of this crate and the `scenes` test both call it, so what the gallery prints is exactly what the
@@ -11,8 +11,36 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 pub mod flip_map;
+pub mod page;
 pub mod plot;
 pub mod scenes;
+
+use scenes::*;
+
+/// Every scene, in the order the README lists them: what the gallery runs and its page shows.
+pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
+    wedge_block::run,
+    ramp::run,
+    breathing_ellipse::run,
+    spinning_hoop::run,
+    pendulum::run,
+    double_pendulum::run,
+    rigid_triangle::run,
+    atwood::run,
+    hoop_bifurcation::run,
+    small_oscillations::run,
+    sphere_release::run,
+    rolling_wheel::run,
+    four_bar::run,
+    cartesian_pendulum::run,
+    rough_ramp::run,
+    rough_wedge::run,
+    gyroscope::run,
+    rough_plane::run,
+    pushed_block::run,
+    identify_pendulum::run,
+    spatial_arm::run,
+];
 
 /// One simulated quantity against its exact value.
 #[derive(Clone, Debug)]

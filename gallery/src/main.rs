@@ -1,5 +1,6 @@
-//! The gallery: every scene, simulated and printed against its closed form, with plots written to
-//! `plots/` (or `$LAGRANGE_PLOTS`). Exits non-zero if any check fails.
+//! The gallery: every scene, simulated and printed against its closed form, with plots and
+//! animations written to `plots/` (or `$LAGRANGE_PLOTS`) and all of it on one page,
+//! `plots/index.html`. Exits non-zero if any check fails.
 //!
 //! A binary of this crate rather than an example of `lagrange`, so that building it builds only
 //! `lagrange` and its normal dependencies, not the root package's test and benchmark
@@ -10,38 +11,13 @@
 //! cargo run --release -p lagrange-gallery
 //! ```
 
-use lagrange_gallery::scenes::*;
-use lagrange_gallery::{plots_dir, table, Check};
-use std::path::Path;
-
-/// Every scene, in the order the README lists them.
-pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
-    wedge_block::run,
-    ramp::run,
-    breathing_ellipse::run,
-    spinning_hoop::run,
-    pendulum::run,
-    double_pendulum::run,
-    rigid_triangle::run,
-    atwood::run,
-    hoop_bifurcation::run,
-    small_oscillations::run,
-    sphere_release::run,
-    rolling_wheel::run,
-    four_bar::run,
-    cartesian_pendulum::run,
-    rough_ramp::run,
-    rough_wedge::run,
-    gyroscope::run,
-    rough_plane::run,
-    pushed_block::run,
-    identify_pendulum::run,
-    spatial_arm::run,
-];
+use lagrange_gallery::page::{run_scene, write_index, SceneOutput};
+use lagrange_gallery::{plots_dir, table, Check, SCENES};
 
 fn main() {
     let plots = plots_dir();
-    let checks: Vec<Check> = SCENES.iter().flat_map(|run| run(&plots)).collect();
+    let scenes: Vec<SceneOutput> = SCENES.iter().map(|run| run_scene(&plots, *run)).collect();
+    let checks: Vec<Check> = scenes.iter().flat_map(|s| s.checks.clone()).collect();
     println!();
     print!("{}", table(&checks));
     let failed = checks.iter().filter(|c| !c.passed()).count();
@@ -51,6 +27,10 @@ fn main() {
         failed,
         plots.display()
     );
+    match write_index(&plots, &scenes) {
+        Ok(page) => println!("the page: {}", page.display()),
+        Err(e) => eprintln!("cannot write the page: {e}"),
+    }
     if failed > 0 {
         std::process::exit(1);
     }

@@ -62,7 +62,9 @@ enum Mode {
     },
 }
 
+/// The label of a call, as the drivers and the report name it (`inverse_dynamics`).
 #[derive(Clone, Copy, ValueEnum)]
+#[value(rename_all = "snake_case")]
 enum Label {
     Accelerations,
     InverseDynamics,

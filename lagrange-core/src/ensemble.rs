@@ -9,6 +9,9 @@
 //! `Result` of any of them (`results.into_iter().collect::<Result<Vec<_>>>()` turns a `Vec` of
 //! results into the first error or every value).
 //!
+//! [`sweep`] and [`Sweep`] need the `sweeps` feature (on by default; it brings rayon and
+//! indicatif); [`grid2`], [`linspace`] and [`shard_range`] are always there.
+//!
 //! A pendulum released from a list of angles, each simulated for one second:
 //!
 //! ```
@@ -32,6 +35,7 @@
 //! }
 //! impl_mechanism!(Pendulum, 1, 2);
 //!
+//! # #[cfg(feature = "sweeps")]
 //! # fn main() -> lagrange_core::Result<()> {
 //! let sys = Pendulum { g: 9.81 }.validated()?;
 //! let angles = ensemble::linspace(0.1, 3.0, 30);
@@ -46,6 +50,8 @@
 //! assert!(finals.iter().zip(&angles).all(|(q, q0)| q.abs() <= q0 + 1e-9));
 //! # Ok(())
 //! # }
+//! # #[cfg(not(feature = "sweeps"))]
+//! # fn main() {}
 //! ```
 //!
 //! # Determinism
@@ -63,15 +69,18 @@
 //! `RAYON_NUM_THREADS`), or one installed for the call,
 //!
 //! ```
+//! # #[cfg(feature = "sweeps")]
+//! # fn main() -> Result<(), lagrange_core::ensemble::rayon::ThreadPoolBuildError> {
 //! use lagrange_core::ensemble::{self, rayon};
 //!
-//! # fn main() -> Result<(), rayon::ThreadPoolBuildError> {
 //! let inputs: Vec<u64> = (0..100).collect();
 //! let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build()?;
 //! let squares = pool.install(|| ensemble::sweep(&inputs, |&n| n * n));
 //! assert_eq!(squares[7], 49);
 //! # Ok(())
 //! # }
+//! # #[cfg(not(feature = "sweeps"))]
+//! # fn main() {}
 //! ```
 //!
 //! # Sharding: a sweep on many machines
@@ -92,12 +101,27 @@
 //! Nothing here launches workers or moves results between machines: that is the job scheduler's
 //! and the file system's, which already do it well.
 
+mod cells;
+#[cfg(feature = "mpi")]
+pub mod mpi;
+#[cfg(feature = "parquet")]
+mod part_file;
+#[cfg(feature = "parquet")]
+pub mod parts;
+
+pub use cells::Cells;
+#[cfg(feature = "parquet")]
+pub use parts::{PartError, Parts, Shard, ShardRun};
+
+#[cfg(feature = "sweeps")]
 use indicatif::{ProgressBar, ProgressStyle};
+#[cfg(feature = "sweeps")]
 use rayon::prelude::*;
 use std::ops::Range;
 
 /// The rayon crate the sweeps run on, to build a thread pool of a chosen size
 /// (`rayon::ThreadPoolBuilder`) without depending on it separately.
+#[cfg(feature = "sweeps")]
 pub use rayon;
 
 /// Runs `run` on every input, in parallel, and returns the results in the order of the inputs:
@@ -115,6 +139,7 @@ pub use rayon;
 /// assert!((periods[2] - 2.006_066_680_710_6).abs() < 1e-12);
 /// assert!(periods.windows(2).all(|w| w[0] < w[1]));
 /// ```
+#[cfg(feature = "sweeps")]
 pub fn sweep<I, R, F>(inputs: &[I], run: F) -> Vec<R>
 where
     I: Sync,
@@ -135,6 +160,7 @@ where
 /// let part = Sweep::new(&inputs).shard(3..7).run(|x| x * x);
 /// assert_eq!(part, all[3..7]);
 /// ```
+#[cfg(feature = "sweeps")]
 #[derive(Clone, Debug)]
 pub struct Sweep<'a, I> {
     inputs: &'a [I],
@@ -142,6 +168,7 @@ pub struct Sweep<'a, I> {
     progress: bool,
 }
 
+#[cfg(feature = "sweeps")]
 impl<'a, I: Sync> Sweep<'a, I> {
     /// A sweep over every input, without a progress bar.
     ///
@@ -314,7 +341,7 @@ pub fn linspace(start: f64, end: f64, n: usize) -> Vec<f64> {
 /// at or past `shards` (or `shards` = 0) gives the empty range `len..len`.
 ///
 /// ```
-/// use lagrange_core::ensemble::{shard_range, Sweep};
+/// use lagrange_core::ensemble::shard_range;
 ///
 /// assert_eq!(shard_range(10, 0, 3), 0..3);
 /// assert_eq!(shard_range(10, 1, 3), 3..6);
@@ -324,9 +351,9 @@ pub fn linspace(start: f64, end: f64, n: usize) -> Vec<f64> {
 /// let inputs: Vec<f64> = (0..10).map(f64::from).collect();
 /// let mut merged = Vec::new();
 /// for i in 0..3 {
-///     merged.extend(Sweep::new(&inputs).shard(shard_range(inputs.len(), i, 3)).run(|x| x.sqrt()));
+///     merged.extend(inputs[shard_range(inputs.len(), i, 3)].iter().map(|x| x.sqrt()));
 /// }
-/// assert_eq!(merged, Sweep::new(&inputs).run(|x| x.sqrt()));
+/// assert_eq!(merged, inputs.iter().map(|x| x.sqrt()).collect::<Vec<_>>());
 /// ```
 pub fn shard_range(len: usize, shard: usize, shards: usize) -> Range<usize> {
     if shard >= shards {
@@ -340,6 +367,7 @@ pub fn shard_range(len: usize, shard: usize, shards: usize) -> Range<usize> {
 mod tests {
     use super::*;
 
+    #[cfg(feature = "sweeps")]
     /// A chaotic iteration (the logistic map at r = 3.99): any difference in how a result was
     /// computed would show in the low bits.
     fn logistic(x0: &f64) -> f64 {
@@ -350,10 +378,12 @@ mod tests {
         x
     }
 
+    #[cfg(feature = "sweeps")]
     fn inputs() -> Vec<f64> {
         linspace(0.01, 0.99, 1000)
     }
 
+    #[cfg(feature = "sweeps")]
     fn with_threads<R: Send>(n: usize, f: impl FnOnce() -> R + Send) -> R {
         rayon::ThreadPoolBuilder::new()
             .num_threads(n)
@@ -362,6 +392,7 @@ mod tests {
             .install(f)
     }
 
+    #[cfg(feature = "sweeps")]
     #[test]
     fn results_are_in_input_order() {
         let inputs: Vec<usize> = (0..10_000).rev().collect();
@@ -377,6 +408,7 @@ mod tests {
             .all(|(k, &(i, x))| i == k && x == inputs[k]));
     }
 
+    #[cfg(feature = "sweeps")]
     #[test]
     fn one_and_two_threads_agree_bit_for_bit() {
         let inputs = inputs();
@@ -393,6 +425,7 @@ mod tests {
         assert_eq!(bits(&two), bits(&serial));
     }
 
+    #[cfg(feature = "sweeps")]
     #[test]
     fn a_shard_is_the_slice_of_the_full_run() {
         let inputs = inputs();
@@ -411,6 +444,7 @@ mod tests {
         assert_eq!(merged, full);
     }
 
+    #[cfg(feature = "sweeps")]
     #[test]
     fn shard_ranges_are_clipped() {
         let inputs = [1, 2, 3];

@@ -14,6 +14,7 @@
 //! - [`sensitivity`]: trajectory sensitivities, the simulation on dual numbers;
 //! - [`parameters`]: a mechanism's parameters as values of any scalar (for sensitivities);
 //! - [`ensemble`]: one computation over many parameters or initial states, on every core;
+//! - [`animation`]: a trajectory of any declared mechanism as a self-contained HTML animation;
 //! - [`error`]: typed errors; nothing here panics on user input.
 //!
 //! Users depend on the `lagrange` facade crate, which exports the user-facing items by name and
@@ -23,6 +24,7 @@
 
 pub mod affine;
 pub mod analysis;
+pub mod animation;
 pub mod constraints;
 pub mod declaration;
 pub mod dynamics;

@@ -13,6 +13,7 @@ mod components;
 mod ctxt;
 mod expand;
 mod lift;
+mod named_bodies;
 mod names;
 mod optimize;
 mod potentials;

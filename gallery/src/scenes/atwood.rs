@@ -4,6 +4,7 @@
 //!   ÿ = (m₁ − m₂) g / (m₁ + m₂ + I/r²).
 
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -47,7 +48,7 @@ pub mod atwood {
 
 const SCENE: &str = "Atwood machine, massive pulley";
 
-pub fn run(_plots: &Path) -> Vec<Check> {
+pub fn run(plots: &Path) -> Vec<Check> {
     use atwood::{Atwood, Coords, State};
     let sys = Atwood {
         m1: 3.0,
@@ -61,8 +62,22 @@ pub fn run(_plots: &Path) -> Vec<Check> {
         (sys.m1 - sys.m2) * sys.g / (sys.m1 + sys.m2 + sys.pulley_inertia / (sys.r * sys.r));
     let mut s = State::at_rest(Coords { y: 0.0 });
     let acc = sys.accelerations(&s).expect("accelerations").y;
-    sys.simulate::<Rk4>(&mut s, 1e-3, 1000, |_| {})
+    // The rope leaves the pulley at (±r, 0); a mark on the rim shows the pulley turn.
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("rope left", &[-sys.r, 0.0])
+        .and_then(|f| {
+            f.fixed_point("rope right", &[sys.r, 0.0])?
+                .link("rope left", "left")
+        })
+        .and_then(|f| {
+            f.link("rope right", "right")?
+                .mark("rim", "pulley", &[sys.r, 0.0])
+        })
+        .expect("the rope");
+    film.push(&sys, &s).expect("a finite state");
+    sys.simulate::<Rk4>(&mut s, 1e-3, 1000, film.observer(&sys))
         .expect("simulation");
+    let _ = film.write_html(plots.join("atwood.html"));
     let t = s.t;
     vec![
         Check::new(

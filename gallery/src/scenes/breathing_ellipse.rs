@@ -7,6 +7,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -60,7 +61,13 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let (mut h_trace, mut e_trace, mut integral_trace) =
         (vec![(0.0, h0)], vec![(0.0, e0)], vec![(0.0, h0)]);
     let (mut e_min, mut e_max) = (e0, e0);
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("centre", &[0.0, 0.0])
+        .and_then(|f| f.trail("bead"))
+        .expect("the wire's centre");
+    film.push(&sys, &s).expect("a finite state");
     sys.simulate::<Rk4>(&mut s, h, steps, |s| {
+        film.push(&sys, s).expect("a finite state");
         rate.push(sys.lagrangian_time_derivative(s).expect("dL/dt"));
         let e = sys.energy(s).expect("T + V");
         e_min = e_min.min(e);
@@ -72,6 +79,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         }
     })
     .expect("simulation");
+    let _ = film.write_html(plots.join("breathing_ellipse.html"));
     let h_end = sys.energy_function(&s).expect("h");
     let predicted_change = -simpson(&rate, h);
     println!(

@@ -12,6 +12,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{constraint_forces, constraint_rows};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -120,8 +121,14 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let (mut worst_position, mut worst_tension, mut worst_g, mut worst_gdot, mut worst_energy) =
         (0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64);
     let (mut lambda_trace, mut tension_trace) = (Vec::new(), Vec::new());
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("pivot", &[0.0, 0.0])
+        .and_then(|f| f.link("pivot", "bob"))
+        .expect("the pivot");
+    film.push(&sys, &s).expect("a finite state");
     for step in 1..=LONG_RUN {
         sys.step::<Rk4>(&mut s, h).expect("Cartesian step");
+        film.push(&sys, &s).expect("a finite state");
         angle.step::<Rk4>(&mut a, h).expect("angle step");
         let rows = constraint_rows(&sys, s.t, &s.q.to_array(), &s.v.to_array());
         worst_g = worst_g.max(rows.value[0].abs());
@@ -146,6 +153,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             }
         }
     }
+    let _ = film.write_html(plots.join("cartesian_pendulum.html"));
     println!(
         "{SCENE}: {LONG_RUN} RK4 steps h = {h}: |g| ≤ {worst_g:.2e}, |ġ| ≤ {worst_gdot:.2e}, \
          energy drift {worst_energy:.2e} J, position vs angle form (1e4 steps) {worst_position:.2e}, \

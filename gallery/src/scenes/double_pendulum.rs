@@ -6,6 +6,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -58,12 +59,16 @@ pub fn closed_form(p: &double_pendulum::DoublePendulum, q: [f64; 2], v: [f64; 2]
 
 const SCENE: &str = "double pendulum";
 
-/// Maximum relative energy error of RK4 over `duration` at step `h`, and the trace.
+/// Maximum relative energy error of RK4 over `duration` at step `h`, the trace, and the motion.
 fn energy_run(
     sys: &double_pendulum::DoublePendulum,
     h: f64,
     duration: f64,
-) -> (f64, Vec<(f64, f64)>) {
+) -> (
+    f64,
+    Vec<(f64, f64)>,
+    Recorder<double_pendulum::DoublePendulum, 2>,
+) {
     use double_pendulum::{Coords, State};
     let half_pi = std::f64::consts::FRAC_PI_2;
     let mut s = State::at_rest(Coords {
@@ -77,7 +82,16 @@ fn energy_run(
     let steps = (duration / h).round() as usize;
     let every = (steps / 2000).max(1);
     let mut n = 0;
+    let mut film = Recorder::new(sys)
+        .title(SCENE)
+        .trail_length(2.0)
+        .expect("a trail of 2 s");
+    film.fixed_point("pivot", &[0.0, 0.0])
+        .and_then(|f| f.link("pivot", "bob1")?.trail("bob2"))
+        .expect("the pivot");
+    film.push(sys, &s).expect("a finite state");
     sys.simulate::<Rk4>(&mut s, h, steps, |s| {
+        film.push(sys, s).expect("a finite state");
         let err = (sys.energy(s).expect("energy") - e0) / scale;
         worst = worst.max(err.abs());
         n += 1;
@@ -86,7 +100,7 @@ fn energy_run(
         }
     })
     .expect("simulation");
-    (worst, trace)
+    (worst, trace, film)
 }
 
 pub fn run(plots: &Path) -> Vec<Check> {
@@ -114,12 +128,13 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let want = closed_form(&sys, q, v);
 
     // 10⁵ steps of h = 1e-3 (100 s), and the same span at 2h for the picture.
-    let (fine, trace) = energy_run(&sys, 1e-3, 100.0);
-    let (coarse, coarse_trace) = energy_run(&sys, 2e-3, 100.0);
+    let (fine, trace, film) = energy_run(&sys, 1e-3, 100.0);
+    let _ = film.write_html(plots.join("double_pendulum.html"));
+    let (coarse, coarse_trace, _) = energy_run(&sys, 2e-3, 100.0);
     // The order is measured over the first second, before chaos separates the trajectories of the
     // two step sizes: there the energy error is C·h⁴ with the same C for both.
-    let (short_coarse, _) = energy_run(&sys, 4e-3, 1.0);
-    let (short_fine, _) = energy_run(&sys, 2e-3, 1.0);
+    let (short_coarse, _, _) = energy_run(&sys, 4e-3, 1.0);
+    let (short_fine, _, _) = energy_run(&sys, 2e-3, 1.0);
     println!(
         "{SCENE}: max |ΔE|/|V₀| over 100 s: {fine:.3e} at h = 1e-3, {coarse:.3e} at h = 2e-3; over 1 s: {short_coarse:.3e} at h = 4e-3, {short_fine:.3e} at h = 2e-3"
     );

@@ -16,6 +16,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{consistent_state, constraint_forces, constraint_rows};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -129,8 +130,20 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let h = 1e-3;
     let (mut closure, mut closure_rate, mut energy) = (0.0f64, 0.0f64, 0.0f64);
     let (mut energy_trace, mut coupler_curve) = (Vec::new(), Vec::new());
+    // Each bar drawn as its two ends, marked on it; the fixed pivots O and D.
+    let mut film = Recorder::new(&sys).title(SCENE);
+    for (bar, half) in [("crank", sys.l1), ("coupler", sys.l2), ("rocker", sys.l3)] {
+        film.mark(&format!("{bar} −"), bar, &[-0.5 * half, 0.0])
+            .and_then(|f| f.mark(&format!("{bar} +"), bar, &[0.5 * half, 0.0]))
+            .expect("a bar's ends");
+    }
+    film.fixed_point("O", &[0.0, 0.0])
+        .and_then(|f| f.fixed_point("D", &[sys.d, 0.0])?.trail("coupler"))
+        .expect("the fixed pivots");
+    film.push(&sys, &s).expect("a finite state");
     for step in 1..=LONG_RUN {
         sys.step::<Rk4>(&mut s, h).expect("step");
+        film.push(&sys, &s).expect("a finite state");
         let rows = constraint_rows(&sys, s.t, &s.q.to_array(), &s.v.to_array());
         for i in 0..2 {
             closure = closure.max(rows.value[i].abs());
@@ -147,6 +160,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             coupler_curve.push((c.x, c.y));
         }
     }
+    let _ = film.write_html(plots.join("four_bar.html"));
     let f = constraint_forces(&sys, &s).expect("forces");
     // The joint's Cartesian force on each body's centre: entries (x, y, angle) per planar body, in
     // declaration order (crank 0–2, coupler 3–5, rocker 6–8).

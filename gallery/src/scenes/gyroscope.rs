@@ -10,6 +10,7 @@
 //! textbook gyroscopic precession.
 
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -47,7 +48,7 @@ pub mod gyroscope {
 
 const SCENE: &str = "gyroscope driven by a torque";
 
-pub fn run(_plots: &Path) -> Vec<Check> {
+pub fn run(plots: &Path) -> Vec<Check> {
     use gyroscope::{Coords, Gyroscope, State};
     let sys = Gyroscope {
         m: 1.0,
@@ -75,8 +76,18 @@ pub fn run(_plots: &Path) -> Vec<Check> {
     );
     let start = sys.accelerations(&s).expect("accelerations");
     let h = 1e-4;
-    sys.simulate::<Rk4>(&mut s, h, 20_000, |_| {})
+    // The symmetry axis's tip traces the precession cone; the rotor's frame shows the spin.
+    let mut film = Recorder::new(&sys)
+        .title(SCENE)
+        .frame_rate(60.0)
+        .expect("60 frames per second");
+    film.mark("axis tip", "rotor", &[0.0, 0.0, 1.0])
+        .and_then(|f| f.trail("axis tip"))
+        .expect("the symmetry axis");
+    film.push(&sys, &s).expect("a finite state");
+    sys.simulate::<Rk4>(&mut s, h, 20_000, film.observer(&sys))
         .expect("simulation");
+    let _ = film.write_html(plots.join("gyroscope.html"));
     let t = s.t;
     let spin_now = s.v.psi + s.v.phi * s.q.theta.cos();
     vec![

@@ -12,6 +12,7 @@ pub use super::spinning_hoop as scene;
 use crate::plot::{self, Series};
 use crate::Check;
 use lagrange::analysis::{continuation, normal_modes, stability, EquilibriumOptions, Stability};
+use lagrange::prelude::*;
 use scene::spinning_hoop::{Coords, SpinningHoop};
 use std::path::Path;
 
@@ -65,6 +66,19 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let modes = normal_modes(&hoop(omega_found), 0.0, &Coords { theta: theta_star })
         .map(|m| m.frequencies[0]);
     let frequency_exact = (omega_found.powi(2) - g * g / (omega_found.powi(2) * r * r)).sqrt();
+    // The animation: the bead released 0.15 rad below θ*, oscillating about it for 4 s.
+    let spun = hoop(omega_found);
+    let mut s = scene::spinning_hoop::State::at_rest(Coords {
+        theta: theta_star - 0.15,
+    });
+    let mut film = scene::recorder(&spun, SCENE);
+    if film.push(&spun, &s).is_ok()
+        && spun
+            .simulate::<Rk4>(&mut s, 1e-3, 4000, film.observer(&spun))
+            .is_ok()
+    {
+        let _ = film.write_html(plots.join("hoop_bifurcation.html"));
+    }
 
     // The bottom's frequency at ω = ω_c/2, and its instability at 2ω_c.
     let slow = 0.5 * critical;

@@ -9,6 +9,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use lagrange::sensitivity::{Seed, Tangent};
 use nalgebra::{Matrix2, Vector2};
@@ -153,6 +154,20 @@ pub fn run(plots: &Path) -> Vec<Check> {
             l - truth.l,
             c - truth.c
         );
+    }
+    // The animation: the fitted pendulum over the measured 3 s.
+    let fitted = DampedPendulum { l, c, ..truth };
+    let mut film = Recorder::new(&fitted).title(format!("{SCENE}: the fitted pendulum"));
+    film.fixed_point("pivot", &[0.0, 0.0])
+        .and_then(|f| f.link("pivot", "bob")?.trail("bob"))
+        .expect("the pivot");
+    let mut s = s0;
+    if film.push(&fitted, &s).is_ok()
+        && fitted
+            .simulate::<Rk4>(&mut s, H, SAMPLES * STRIDE, film.observer(&fitted))
+            .is_ok()
+    {
+        let _ = film.write_html(plots.join("identify_pendulum.html"));
     }
     let times: Vec<f64> = (1..=SAMPLES).map(|i| (i * STRIDE) as f64 * H).collect();
     let (at_guess, _) = trajectory(&guess, &s0).expect("guess");

@@ -6,6 +6,7 @@
 
 use crate::plot::{self, Series};
 use crate::{elliptic_k, upward_crossing, Check};
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -51,12 +52,19 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let (mut times, mut thetas, mut rates) = (vec![0.0], vec![theta0], vec![0.0]);
     let h = 1e-3;
     let steps = (period / h) as usize + 10;
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("pivot", &[0.0, 0.0])
+        .and_then(|f| f.link("pivot", "bob")?.trail("bob"))
+        .expect("the pivot");
+    film.push(&sys, &s).expect("a finite state");
     sys.simulate::<Rk4>(&mut s, h, steps, |s| {
+        film.push(&sys, s).expect("a finite state");
         times.push(s.t);
         thetas.push(s.q.theta);
         rates.push(s.v.theta);
     })
     .expect("simulation");
+    let _ = film.write_html(plots.join("pendulum.html"));
     let crossing = upward_crossing(&times, &thetas, &rates).unwrap_or(f64::NAN);
     println!(
         "{SCENE}: period {:.6} s, {:.3} times the small-amplitude 2π√(L/g)",

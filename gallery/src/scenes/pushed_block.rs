@@ -13,8 +13,10 @@
 //! Coulomb's law in the cone form: Stewart, "Rigid-body dynamics with friction and impact", SIAM
 //! Review 42(1), 2000 (|F_t| ≤ μN; F_t = −μN v_t/|v_t| while sliding).
 
+use crate::page::outline;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{ContactOptions, ContactRk4, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -93,6 +95,16 @@ pub fn slides(sys: &PushedBlock) -> Option<(f64, (f64, f64))> {
 /// The block from rest for `steps` steps of `h`: its displacement in the plane (level, up-slope)
 /// over time, and the stepper.
 pub fn push(sys: &PushedBlock, h: f64, steps: usize) -> (Vec<(f64, f64, f64)>, ContactRk4<3>) {
+    push_observed(sys, h, steps, |_| {})
+}
+
+/// [`push`], with `observe` called on every state from the first.
+pub fn push_observed(
+    sys: &PushedBlock,
+    h: f64,
+    steps: usize,
+    mut observe: impl FnMut(&State),
+) -> (Vec<(f64, f64, f64)>, ContactRk4<3>) {
     let (sn, cs) = sys.alpha.sin_cos();
     let mut s = State::at_rest(Coords {
         x: 0.0,
@@ -101,8 +113,10 @@ pub fn push(sys: &PushedBlock, h: f64, steps: usize) -> (Vec<(f64, f64, f64)>, C
     });
     let mut stepper = ContactRk4::new(sys, &s, ContactOptions::default()).expect("stepper");
     let mut trace = vec![(0.0, 0.0, 0.0)];
+    observe(&s);
     for _ in 0..steps {
         stepper.step(sys, &mut s, h).expect("step");
+        observe(&s);
         trace.push((s.t, s.q.x, s.q.y * cs + s.q.z * sn));
     }
     (trace, stepper)
@@ -130,7 +144,27 @@ pub fn run(plots: &Path) -> Vec<Check> {
             push: factor * threshold,
             ..base
         };
-        let (trace, stepper) = push(&sys, h, 2000);
+        let mut film = Recorder::new(&sys).title(SCENE);
+        film.trail("block").expect("the block's path");
+        let (trace, stepper) = push_observed(&sys, h, 2000, film.observer(&sys));
+        if factor > 1.0 {
+            // The incline under the path: level direction (1, 0, 0), up-slope (0, cos α, sin α).
+            let (sn, cs) = sys.alpha.sin_cos();
+            let (mut lo, mut hi) = ((-0.2f64, -0.2f64), (0.2f64, 0.2f64));
+            for &(_, level, up) in &trace {
+                lo = (lo.0.min(level - 0.2), lo.1.min(up - 0.2));
+                hi = (hi.0.max(level + 0.2), hi.1.max(up + 0.2));
+            }
+            let at = |level: f64, up: f64| [level, up * cs, up * sn];
+            let (a, b, c, d) = (
+                at(lo.0, lo.1),
+                at(hi.0, lo.1),
+                at(hi.0, hi.1),
+                at(lo.0, hi.1),
+            );
+            outline(&mut film, "incline", &[&a, &b, &c, &d], true).expect("the incline");
+            let _ = film.write_html(plots.join("pushed_block.html"));
+        }
         let &(t, level, up) = trace.last().unwrap();
         let rows = stepper.mode().rows;
         println!(

@@ -2,7 +2,9 @@
 //! down the ramp; the constraint force is normal to the ramp, does no virtual work, and drops out.
 //! Closed form: s̈ = g sin α, so s(t) = v₀ t + ½ g sin α t².
 
+use crate::page::outline;
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -33,7 +35,7 @@ pub mod ramp {
 
 const SCENE: &str = "block on a ramp";
 
-pub fn run(_plots: &Path) -> Vec<Check> {
+pub fn run(plots: &Path) -> Vec<Check> {
     use ramp::{Coords, Ramp, State};
     let sys = Ramp {
         m: 2.0,
@@ -44,8 +46,19 @@ pub fn run(_plots: &Path) -> Vec<Check> {
     let mut s = State::new(0.0, Coords { s: 0.0 }, Coords { s: v0 });
     let acc = sys.accelerations(&s).expect("accelerations").s;
     let e0 = sys.energy(&s).expect("energy");
-    sys.simulate::<Rk4>(&mut s, 1e-3, 1000, |_| {})
+    let mut film = Recorder::new(&sys).title(SCENE);
+    let (cos, sin) = (sys.alpha.cos(), sys.alpha.sin());
+    outline(
+        &mut film,
+        "ramp",
+        &[&[-0.5 * cos, 0.5 * sin], &[1.5 * cos, -1.5 * sin]],
+        false,
+    )
+    .expect("the ramp");
+    film.push(&sys, &s).expect("a finite state");
+    sys.simulate::<Rk4>(&mut s, 1e-3, 1000, film.observer(&sys))
         .expect("simulation");
+    let _ = film.write_html(plots.join("ramp.html"));
     let t = s.t;
     let exact = v0 * t + 0.5 * sys.g * sys.alpha.sin() * t * t;
     // Quadratic motion: RK4 is exact up to round-off accumulated over 1000 steps (≲ 1e-13).

@@ -7,6 +7,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -132,13 +133,26 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let acc_particles = particles.accelerations(&a).expect("accelerations").theta;
     let acc_body = body.accelerations(&b).expect("accelerations").theta;
     let (mut trace_a, mut trace_b, mut worst) = (Vec::new(), Vec::new(), 0.0f64);
+    // The rigid body, with the three particles' places marked on it and joined into the triangle.
+    let mut film = Recorder::new(&body).title(SCENE);
+    film.fixed_point("pivot", &[0.0, 0.0]).expect("the pivot");
+    for (k, o) in offsets.iter().enumerate() {
+        film.mark(&format!("m{}", k + 1), "body", &[o.0 - cx, o.1 - cy])
+            .expect("a particle's place");
+    }
+    film.link("m1", "m2")
+        .and_then(|f| f.link("m2", "m3")?.link("m3", "m1")?.link("pivot", "body"))
+        .expect("the triangle");
+    film.push(&body, &b).expect("a finite state");
     for _ in 0..5000 {
         particles.step::<Rk4>(&mut a, 1e-3).expect("step");
         body.step::<Rk4>(&mut b, 1e-3).expect("step");
+        film.push(&body, &b).expect("a finite state");
         worst = worst.max((a.q.theta - b.q.theta).abs());
         trace_a.push((a.t, a.q.theta));
         trace_b.push((b.t, b.q.theta));
     }
+    let _ = film.write_html(plots.join("rigid_triangle.html"));
     let _ = plot::lines(
         &plots.join("rigid_triangle.svg"),
         "Three particles and the equivalent rigid body: θ(t)",

@@ -16,6 +16,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -72,6 +73,7 @@ struct Run {
     energy: f64,
     path: Vec<(f64, f64)>,
     exact_path: Vec<(f64, f64)>,
+    film: Recorder<rolling_wheel::RollingWheel, 4>,
 }
 
 fn run_wheel(omega: f64) -> Run {
@@ -111,8 +113,18 @@ fn run_wheel(omega: f64) -> Run {
     let h = 1e-3;
     let mut slip = 0.0f64;
     let (mut path, mut exact_path) = (Vec::new(), Vec::new());
+    // A point on the rim (the wheel turns about its body y axis) and the centre leave trails.
+    let mut film = Recorder::new(&w)
+        .title(SCENE)
+        .trail_length(3.0)
+        .expect("a trail of 3 s");
+    film.mark("rim", "wheel", &[w.r, 0.0, 0.0])
+        .and_then(|f| f.trail("rim")?.trail("wheel"))
+        .expect("a point on the rim");
+    film.push(&w, &s).expect("a finite state");
     for step in 1..=LONG_RUN {
         w.step::<Rk4>(&mut s, h).expect("step");
+        film.push(&w, &s).expect("a finite state");
         slip = slip
             .max((s.v.x - w.r * s.v.theta * s.q.phi.cos()).abs())
             .max((s.v.y - w.r * s.v.theta * s.q.phi.sin()).abs());
@@ -132,6 +144,7 @@ fn run_wheel(omega: f64) -> Run {
         energy,
         path,
         exact_path,
+        film,
     }
 }
 
@@ -185,6 +198,9 @@ pub fn run(plots: &Path) -> Vec<Check> {
             0.0,
             1e-12,
         ));
+        if omega != 0.0 {
+            let _ = r.film.write_html(plots.join("rolling_wheel.html"));
+        }
         series.push(Series::new(format!("{label}, simulated"), r.path));
         series.push(Series::new(format!("{label}, closed form"), r.exact_path));
     }

@@ -17,8 +17,10 @@
 //! The friction force is −μₖ N ŝ while sliding (Stewart, "Rigid-body dynamics with friction and
 //! impact", SIAM Review 42(1), 2000: |F_t| ≤ μN, F_t = −μN v_t/|v_t|).
 
+use crate::page::outline;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{ContactOptions, ContactRk4, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -91,6 +93,17 @@ pub fn slide(
     h: f64,
     steps: usize,
 ) -> (State, ContactRk4<3>, Vec<(f64, f64)>) {
+    slide_observed(sys, v0, h, steps, |_| {})
+}
+
+/// [`slide`], with `observe` called on every state from the first.
+pub fn slide_observed(
+    sys: &RoughPlane,
+    v0: f64,
+    h: f64,
+    steps: usize,
+    mut observe: impl FnMut(&State),
+) -> (State, ContactRk4<3>, Vec<(f64, f64)>) {
     let mut s = State::new(
         0.0,
         Coords {
@@ -106,8 +119,10 @@ pub fn slide(
     );
     let mut stepper = ContactRk4::new(sys, &s, ContactOptions::default()).expect("stepper");
     let mut path = vec![(0.0, 0.0)];
+    observe(&s);
     for _ in 0..steps {
         stepper.step(sys, &mut s, h).expect("step");
+        observe(&s);
         path.push((s.q.x, s.q.y));
     }
     (s, stepper, path)
@@ -131,7 +146,24 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let mut series = Vec::new();
     for (sys, label) in [(straight, "no push"), (curved, "pushed sideways")] {
         let (t_s, x_s, y_s) = stop(&sys, v0);
-        let (s, stepper, path) = slide(&sys, v0, h, 1500);
+        let mut film = Recorder::new(&sys).title(SCENE);
+        film.trail("puck").expect("the puck's path");
+        let (s, stepper, path) = slide_observed(&sys, v0, h, 1500, film.observer(&sys));
+        if sys.push != 0.0 {
+            // The ground under the path.
+            let (x1, y1) = path
+                .iter()
+                .fold((0.0f64, 0.0f64), |(x, y), p| (x.max(p.0), y.max(p.1)));
+            let (x0, y0, x1, y1) = (-0.2, -0.2, x1 + 0.2, y1 + 0.2);
+            let ground: [&[f64]; 4] = [
+                &[x0, y0, 0.0],
+                &[x1, y0, 0.0],
+                &[x1, y1, 0.0],
+                &[x0, y1, 0.0],
+            ];
+            outline(&mut film, "ground", &ground, true).expect("the ground");
+            let _ = film.write_html(plots.join("rough_plane.html"));
+        }
         let events = &stepper.events;
         let sliding_at_start = events.first().map(|e| e.from) == Some(RowMode::Sliding);
         println!(

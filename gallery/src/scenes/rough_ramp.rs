@@ -15,8 +15,10 @@
 //! [`ContactRk4`] locates the stop (slip velocity reaching 0) and then decides stick or slide once:
 //! exactly one mode change, no chattering at the stick/slip boundary.
 
+use crate::page::outline;
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -180,14 +182,31 @@ pub fn run(plots: &Path) -> Vec<Check> {
         };
         let mut worst = 0.0f64;
         let (mut trace, mut closed) = (vec![(0.0, 0.0)], vec![(0.0, 0.0)]);
+        let mut film = Recorder::new(&sys).title(format!("{SCENE}: sent up, {label}"));
+        film.push(&sys, &s).expect("a finite state");
         for step in 1..=3000 {
             stepper.step(&sys, &mut s, h).expect("step");
+            film.push(&sys, &s).expect("a finite state");
             let (d, _) = along(&s);
             worst = worst.max((d - exact(s.t)).abs());
             if step % 10 == 0 {
                 trace.push((s.t, d));
                 closed.push((s.t, exact(s.t)));
             }
+        }
+        if !sticks {
+            // The ramp, over the stretch the block covers.
+            let (lo, hi) = trace
+                .iter()
+                .fold((0.0f64, 0.0f64), |(lo, hi), &(_, d)| (lo.min(d), hi.max(d)));
+            outline(
+                &mut film,
+                "ramp",
+                &[&[lo * cs, lo * sn], &[hi * cs, hi * sn]],
+                false,
+            )
+            .expect("the ramp");
+            let _ = film.write_html(plots.join("rough_ramp.html"));
         }
         let events = &stepper.events;
         println!(

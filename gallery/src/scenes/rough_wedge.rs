@@ -23,6 +23,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -121,8 +122,16 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let e0 = sys.energy(&s).expect("energy");
     let (mut worst, mut worst_momentum) = (0.0f64, 0.0f64);
     let (mut wedge_path, mut block_path) = (Vec::new(), Vec::new());
+    // The wedge is a particle at its lower back corner: its outline, drawn as marks it carries.
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.mark("top", "wedge", &[0.0, sys.h])
+        .and_then(|f| f.mark("toe", "wedge", &[sys.h * cs / sn, 0.0]))
+        .and_then(|f| f.link("top", "toe")?.link("toe", "wedge"))
+        .expect("the wedge's outline");
+    film.push(&sys, &s).expect("a finite state");
     for _ in 0..1000 {
         stepper.step(&sys, &mut s, 1e-3).expect("step");
+        film.push(&sys, &s).expect("a finite state");
         let q = s.q.to_array();
         let e = exact(s.t);
         worst = (0..3).fold(worst, |acc, i| acc.max((q[i] - e[i]).abs()));
@@ -133,6 +142,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         block_path.push((b.block.x, b.block.y));
     }
     let t = s.t;
+    let _ = film.write_html(plots.join("rough_wedge.html"));
     let f = constraint_forces(&sys, &s).expect("forces");
     let dissipated = e0 - sys.energy(&s).expect("energy");
     let friction_work = sys.mu_k * normal * 0.5 * a_r * t * t;

@@ -7,12 +7,14 @@ pub use super::double_pendulum as scene;
 
 use crate::Check;
 use lagrange::analysis::{equilibrium, normal_modes, EquilibriumOptions};
-use scene::double_pendulum::{Coords, DoublePendulum};
+use lagrange::animation::Recorder;
+use lagrange::prelude::*;
+use scene::double_pendulum::{Coords, DoublePendulum, State};
 use std::path::Path;
 
 const SCENE: &str = "double pendulum, normal modes";
 
-pub fn run(_plots: &Path) -> Vec<Check> {
+pub fn run(plots: &Path) -> Vec<Check> {
     let (m, l, g): (f64, f64, f64) = (0.7, 1.3, 9.81);
     let sys = DoublePendulum {
         m1: m,
@@ -44,6 +46,25 @@ pub fn run(_plots: &Path) -> Vec<Check> {
             .map_or(f64::NAN, |m| m.shapes[(1, j)] / m.shapes[(0, j)])
     };
     let root2 = std::f64::consts::SQRT_2;
+    // The animation: the fast mode, released from its shape at 0.1 rad, for 4 s.
+    if let Some(modes) = &modes {
+        let amplitude = 0.1 / modes.shapes[(0, 1)];
+        let mut s = State::at_rest(Coords {
+            theta1: rest.theta1 + amplitude * modes.shapes[(0, 1)],
+            theta2: rest.theta2 + amplitude * modes.shapes[(1, 1)],
+        });
+        let mut film = Recorder::new(&sys).title(SCENE);
+        film.fixed_point("pivot", &[0.0, 0.0])
+            .and_then(|f| f.link("pivot", "bob1")?.trail("bob2"))
+            .expect("the pivot");
+        if film.push(&sys, &s).is_ok()
+            && sys
+                .simulate::<Rk4>(&mut s, 1e-3, 4000, film.observer(&sys))
+                .is_ok()
+        {
+            let _ = film.write_html(plots.join("small_oscillations.html"));
+        }
+    }
     // All four are exact algebra on M and K assembled from dual numbers: agreement to round-off of a
     // 2×2 symmetric eigenproblem (~1e-15 relative); 1e-12 leaves room for the Cholesky transform.
     vec![

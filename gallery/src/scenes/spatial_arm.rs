@@ -13,6 +13,7 @@
 
 use crate::plot::{self, Series};
 use crate::{elliptic_k, Check};
+use lagrange::animation::Recorder;
 use lagrange::integrate::{Direction, Event, Observation, StopReason};
 use lagrange::prelude::*;
 use lagrange::Dop853;
@@ -137,11 +138,22 @@ fn free_swing(plots: &Path) -> Vec<Check> {
         sys.momenta(&s).expect("momenta").base,
     );
     let (mut times, mut drift) = (Vec::new(), Vec::new());
+    // The base on the floor and the hand (the forearm's far end), whose path is drawn.
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("base", &[0.0, 0.0, 0.0])
+        .and_then(|f| {
+            f.link("base", "column")?
+                .mark("hand", "fore", &[0.0, 0.0, 0.5 * sys.d3])
+        })
+        .and_then(|f| f.trail("hand"))
+        .expect("the base and the hand");
+    film.push(&sys, &s).expect("a finite state");
     let mut events = [];
     let t_end = 10.0;
     Dop853::new(1e-12, 1e-12)
         .integrate(&sys, &mut s, t_end, &mut events, |o| {
             if let Observation::Step { state, .. } = o {
+                film.push(&sys, state).expect("a finite state");
                 if let Ok(e) = sys.energy(state) {
                     times.push(state.t);
                     drift.push((e - e0) / e0.abs());
@@ -149,6 +161,7 @@ fn free_swing(plots: &Path) -> Vec<Check> {
             }
         })
         .expect("simulation");
+    let _ = film.write_html(plots.join("spatial_arm.html"));
     let _ = plot::lines(
         &plots.join("spatial_arm_energy.svg"),
         "Spatial arm swinging free: relative energy error (Dop853, tol 1e-12)",

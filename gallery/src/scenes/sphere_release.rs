@@ -16,6 +16,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
@@ -151,8 +152,14 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let mut s = s0;
     let (mut worst_normal, mut normal_trace, mut closed_trace) = (0.0f64, Vec::new(), Vec::new());
     let mut path = vec![(s.q.x, s.q.y)];
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.fixed_point("centre", &[0.0, 0.0])
+        .and_then(|f| f.trail("particle"))
+        .expect("the sphere's centre");
+    film.push(&sys, &s).expect("a finite state");
     while stepper.events.is_empty() {
         stepper.step(&sys, &mut s, h).expect("contact step");
+        film.push(&sys, &s).expect("a finite state");
         path.push((s.q.x, s.q.y));
         if stepper.events.is_empty() {
             let lambda = constraint_forces(&sys, &s).expect("forces").multipliers[0];
@@ -187,6 +194,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let mut parabola = Vec::new();
     while s.t < t_star + 0.4 {
         stepper.step(&sys, &mut s, h).expect("free step");
+        film.push(&sys, &s).expect("a finite state");
         path.push((s.q.x, s.q.y));
         let tau = s.t - t_star;
         let x = r_star[0] + v_star[0] * tau;
@@ -195,6 +203,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         worst_parabola = worst_parabola.max((s.q.x - x).abs()).max((s.q.y - y).abs());
         closest = closest.min(s.q.x.hypot(s.q.y) - r);
     }
+    let _ = film.write_html(plots.join("sphere_release.html"));
     let release_error = (release.t - t_star).abs() / t_star;
     println!(
         "{SCENE}: released at t = {:.15} s (quadrature {t_star:.15}, rel. error {release_error:.1e}), \

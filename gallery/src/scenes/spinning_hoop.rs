@@ -9,6 +9,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -45,6 +46,23 @@ pub mod spinning_hoop {
 
 const SCENE: &str = "bead on a spinning hoop";
 
+/// A recorder of the hoop titled `title`: the vertical axis it turns about, through its top and
+/// bottom, and the bead's path.
+pub fn recorder(
+    sys: &spinning_hoop::SpinningHoop,
+    title: &str,
+) -> Recorder<spinning_hoop::SpinningHoop, 1> {
+    let mut film = Recorder::new(sys).title(title);
+    film.fixed_point("top", &[0.0, 0.0, sys.r])
+        .and_then(|f| {
+            f.fixed_point("bottom", &[0.0, 0.0, -sys.r])?
+                .link("top", "bottom")?
+                .trail("bead")
+        })
+        .expect("the hoop's axis");
+    film
+}
+
 pub fn run(plots: &Path) -> Vec<Check> {
     use spinning_hoop::{Coords, SpinningHoop, State};
     let sys = SpinningHoop {
@@ -74,12 +92,16 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let h0 = sys.energy_function(&s).expect("h");
     let h0_exact = jacobi(s.q.theta, s.v.theta);
     let (mut h_trace, mut e_trace, mut theta_trace) = (Vec::new(), Vec::new(), Vec::new());
+    let mut film = recorder(&sys, SCENE);
+    film.push(&sys, &s).expect("a finite state");
     sys.simulate::<Rk4>(&mut s, 1e-3, 10_000, |s| {
+        film.push(&sys, s).expect("a finite state");
         h_trace.push((s.t, sys.energy_function(s).expect("h")));
         e_trace.push((s.t, sys.energy(s).expect("T + V")));
         theta_trace.push((s.t, s.q.theta));
     })
     .expect("simulation");
+    let _ = film.write_html(plots.join("spinning_hoop.html"));
     let (e_min, e_max) = e_trace
         .iter()
         .fold((f64::MAX, f64::MIN), |(a, b), &(_, e)| (a.min(e), b.max(e)));

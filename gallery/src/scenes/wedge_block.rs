@@ -11,6 +11,7 @@
 
 use crate::plot::{self, Series};
 use crate::Check;
+use lagrange::animation::Recorder;
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -68,7 +69,15 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let (h, steps) = (1e-3, 400);
     let mut trace = (Vec::new(), Vec::new());
     let mut worst_momentum = 0.0f64;
+    // The wedge is a particle at its lower back corner: its outline, drawn as marks it carries.
+    let mut film = Recorder::new(&sys).title(SCENE);
+    film.mark("top", "wedge", &[0.0, sys.h])
+        .and_then(|f| f.mark("toe", "wedge", &[sys.h / a.tan(), 0.0]))
+        .and_then(|f| f.link("top", "toe")?.link("toe", "wedge"))
+        .expect("the wedge's outline");
+    film.push(&sys, &s).expect("a finite state");
     sys.simulate::<Rk4>(&mut s, h, steps, |s| {
+        film.push(&sys, s).expect("a finite state");
         let bodies = sys.bodies(s);
         trace.0.push((bodies.wedge.x, bodies.wedge.y));
         trace.1.push((bodies.block.x, bodies.block.y));
@@ -76,6 +85,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     })
     .expect("simulation");
     let t = s.t;
+    let _ = film.write_html(plots.join("wedge_block.html"));
     let _ = plot::lines(
         &plots.join("wedge_block.svg"),
         "Wedge and block: paths from rest",

@@ -17,7 +17,7 @@ use super::{lit, private, scalar};
 use crate::check::Model;
 use crate::symbolic::poly::{Atom, Monomial, Poly};
 use crate::symbolic::Equations;
-use proc_macro2::{Ident, Literal, TokenStream};
+use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote, ToTokens};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -442,7 +442,7 @@ fn tuple_let(lets: &[(Ident, TokenStream)]) -> TokenStream {
 
 /// An `f64` literal, negative ones parenthesised.
 fn number(c: f64) -> TokenStream {
-    let literal = Literal::f64_unsuffixed(c.abs());
+    let literal = crate::symbolic::expr::f64_tokens(c.abs());
     if c < 0.0 {
         quote!((-#literal))
     } else {

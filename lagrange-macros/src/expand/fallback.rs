@@ -17,7 +17,8 @@ fn lit(n: usize) -> proc_macro2::Literal {
 }
 
 /// On error: the user's items, stubs for what the rest of their code names (`Coords`, the
-/// parameter struct, `State`, a `Mechanism` impl that is never run), and every error. So one
+/// parameter struct, `State`, a `Mechanism`, `Declaration` and `Drawable` impl that is never
+/// run), and every error. So one
 /// mistake gives one message, not a cascade of rustc errors about missing items.
 pub(crate) fn fallback(
     mechanism: &Mechanism,
@@ -77,6 +78,12 @@ pub(crate) fn fallback(
                 const PARAMETERS: &'static [&'static str] = &[];
                 fn from_parameters(values: &[f64]) -> #p::core::option::Option<Self> { #unreachable }
                 fn parameters(&self) -> #p::std::vec::Vec<f64> { #unreachable }
+            }
+            impl #p::lagrange_core::animation::Drawable<#n> for #ident {
+                const BODIES: &'static [#p::lagrange_core::animation::BodyLayout] = &[];
+                const LINKS: &'static [#p::lagrange_core::animation::Link] = &[];
+                const CONSTRAINT_BODIES: &'static [#p::lagrange_core::animation::ConstraintLayout] = &[];
+                fn cartesian_rows(&self, t: f64, q: &[f64; #n], rows: &mut #p::std::vec::Vec<f64>) { #unreachable }
             }
         }
     });

@@ -12,7 +12,8 @@
 //! [`bodies`] `Bodies`, `BodyVelocities` and the inherent impl; [`model`] the `Model` impl;
 //! [`mechanism`] the `Mechanism` impl; [`constraints`] the `Constraints` impl; [`tree`] the
 //! `Tree` impl of a tree of translations; [`declaration`] the `Declaration` impl (names and flat
-//! values, for the C export); [`parametrized`] the `Parametrized` impl (the position, potential and
+//! values, for the C export); [`drawable`] the `Drawable` impl (bodies, links and constraint
+//! bodies, for an animation); [`parametrized`] the `Parametrized` impl (the position, potential and
 //! force functions with the parameters as an array of any scalar, for sensitivities); [`fallback`] the stubs written after a failed check.
 //! This file holds the entry [`expand`], the whole module ([`generate`]) and the helpers the
 //! others share.
@@ -22,6 +23,7 @@ mod closed_form;
 mod constraints;
 mod coords;
 mod declaration;
+mod drawable;
 mod fallback;
 mod mechanism;
 mod model;
@@ -33,6 +35,7 @@ use bodies::{bodies_structs, inherent_impl};
 use constraints::constraints_impl;
 use coords::coords_items;
 use declaration::declaration_impl;
+use drawable::drawable_impl;
 use mechanism::{mechanism_impl, Equations, Positions};
 use model::{gradient_on_trees, model_impl};
 use parametrized::parametrized_items;
@@ -197,6 +200,7 @@ fn generate(model: &Model) -> TokenStream {
     );
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);
+    let drawable_impl = drawable_impl(model);
     let parametrized = parametrized_items(model);
     quote! {
         #(#attrs)*
@@ -213,6 +217,7 @@ fn generate(model: &Model) -> TokenStream {
             #mechanism_impl
             #constraints_impl
             #declaration_impl
+            #drawable_impl
             #parametrized
         }
     }

@@ -27,6 +27,7 @@ mod emit;
 mod product;
 
 pub use derivative::Direction;
+pub(crate) use emit::f64_tokens;
 
 /// A node's index in its [`Graph`].
 pub type Id = usize;

@@ -1201,6 +1201,100 @@ pub mod legs {
             ::lagrange::__private::std::vec![self.m, self.w, self.g]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<3> for Legs {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "torso",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "left_leg",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 12,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "right_leg",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 24,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 1,
+                    member: 0,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 0,
+                },
+            },
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 2,
+                    member: 0,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 0,
+                },
+            },
+        ];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 3],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(
+                &[
+                    __bodies.torso.position.x,
+                    __bodies.torso.position.y,
+                    __bodies.torso.position.z,
+                    __bodies.torso.rotation.rows[0][0],
+                    __bodies.torso.rotation.rows[1][0],
+                    __bodies.torso.rotation.rows[2][0],
+                    __bodies.torso.rotation.rows[0][1],
+                    __bodies.torso.rotation.rows[1][1],
+                    __bodies.torso.rotation.rows[2][1],
+                    __bodies.torso.rotation.rows[0][2],
+                    __bodies.torso.rotation.rows[1][2],
+                    __bodies.torso.rotation.rows[2][2],
+                    __bodies.left_leg.position.x,
+                    __bodies.left_leg.position.y,
+                    __bodies.left_leg.position.z,
+                    __bodies.left_leg.rotation.rows[0][0],
+                    __bodies.left_leg.rotation.rows[1][0],
+                    __bodies.left_leg.rotation.rows[2][0],
+                    __bodies.left_leg.rotation.rows[0][1],
+                    __bodies.left_leg.rotation.rows[1][1],
+                    __bodies.left_leg.rotation.rows[2][1],
+                    __bodies.left_leg.rotation.rows[0][2],
+                    __bodies.left_leg.rotation.rows[1][2],
+                    __bodies.left_leg.rotation.rows[2][2],
+                    __bodies.right_leg.position.x,
+                    __bodies.right_leg.position.y,
+                    __bodies.right_leg.position.z,
+                    __bodies.right_leg.rotation.rows[0][0],
+                    __bodies.right_leg.rotation.rows[1][0],
+                    __bodies.right_leg.rotation.rows[2][0],
+                    __bodies.right_leg.rotation.rows[0][1],
+                    __bodies.right_leg.rotation.rows[1][1],
+                    __bodies.right_leg.rotation.rows[2][1],
+                    __bodies.right_leg.rotation.rows[0][2],
+                    __bodies.right_leg.rotation.rows[1][2],
+                    __bodies.right_leg.rotation.rows[2][2],
+                ],
+            );
+        }
+    }
     impl Legs {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

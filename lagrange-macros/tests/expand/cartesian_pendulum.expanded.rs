@@ -625,6 +625,48 @@ pub mod cartesian_pendulum {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<2>
+    for CartesianPendulum {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "bob",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::ConstraintLayout {
+                name: "rod",
+                bodies: &[
+                    ::lagrange::__private::lagrange_core::animation::BodyRef {
+                        body: 0,
+                        member: 0,
+                    },
+                ],
+            },
+            ::lagrange::__private::lagrange_core::animation::ConstraintLayout {
+                name: "opaque",
+                bodies: &[
+                    ::lagrange::__private::lagrange_core::animation::BodyRef {
+                        body: 0,
+                        member: 0,
+                    },
+                ],
+            },
+        ];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(&[__bodies.bob.x, __bodies.bob.y]);
+        }
+    }
     impl CartesianPendulum {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

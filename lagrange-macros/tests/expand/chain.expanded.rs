@@ -525,6 +525,58 @@ pub mod chain {
             ::lagrange::__private::std::vec![self.m, self.l, self.g]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<3> for Chain {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "bob",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::Some(3),
+                row: 0,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 1,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 0,
+                },
+            },
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 2,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 1,
+                },
+            },
+        ];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 3],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(
+                &[
+                    __bodies.bob[0].x,
+                    __bodies.bob[0].y,
+                    __bodies.bob[1].x,
+                    __bodies.bob[1].y,
+                    __bodies.bob[2].x,
+                    __bodies.bob[2].y,
+                ],
+            );
+        }
+    }
     impl Chain {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

@@ -580,6 +580,48 @@ pub mod double_pendulum {
             ::lagrange::__private::std::vec![self.m1, self.m2, self.l1, self.l2, self.g]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<2>
+    for DoublePendulum {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "bob1",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "bob2",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 2,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 1,
+                    member: 0,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 0,
+                },
+            },
+        ];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(
+                &[__bodies.bob1.x, __bodies.bob1.y, __bodies.bob2.x, __bodies.bob2.y],
+            );
+        }
+    }
     impl DoublePendulum {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

@@ -696,6 +696,71 @@ pub mod everything {
             ]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<2> for Everything {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "bar",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Planar,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "tip",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Point2,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 15,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "top",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 3,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 1,
+                    member: 0,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 0,
+                },
+            },
+        ];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(
+                &[
+                    __bodies.bar.position.x,
+                    __bodies.bar.position.y,
+                    __bodies.bar.angle,
+                    __bodies.tip.x,
+                    __bodies.tip.y,
+                    __bodies.top.position.x,
+                    __bodies.top.position.y,
+                    __bodies.top.position.z,
+                    __bodies.top.rotation.rows[0][0],
+                    __bodies.top.rotation.rows[1][0],
+                    __bodies.top.rotation.rows[2][0],
+                    __bodies.top.rotation.rows[0][1],
+                    __bodies.top.rotation.rows[1][1],
+                    __bodies.top.rotation.rows[2][1],
+                    __bodies.top.rotation.rows[0][2],
+                    __bodies.top.rotation.rows[1][2],
+                    __bodies.top.rotation.rows[2][2],
+                ],
+            );
+        }
+    }
     impl Everything {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

@@ -807,6 +807,72 @@ pub mod arm {
             ]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<2> for Arm {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "upper",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "lower",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 12,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 1,
+                    member: 0,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 0,
+                },
+            },
+        ];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(
+                &[
+                    __bodies.upper.position.x,
+                    __bodies.upper.position.y,
+                    __bodies.upper.position.z,
+                    __bodies.upper.rotation.rows[0][0],
+                    __bodies.upper.rotation.rows[1][0],
+                    __bodies.upper.rotation.rows[2][0],
+                    __bodies.upper.rotation.rows[0][1],
+                    __bodies.upper.rotation.rows[1][1],
+                    __bodies.upper.rotation.rows[2][1],
+                    __bodies.upper.rotation.rows[0][2],
+                    __bodies.upper.rotation.rows[1][2],
+                    __bodies.upper.rotation.rows[2][2],
+                    __bodies.lower.position.x,
+                    __bodies.lower.position.y,
+                    __bodies.lower.position.z,
+                    __bodies.lower.rotation.rows[0][0],
+                    __bodies.lower.rotation.rows[1][0],
+                    __bodies.lower.rotation.rows[2][0],
+                    __bodies.lower.rotation.rows[0][1],
+                    __bodies.lower.rotation.rows[1][1],
+                    __bodies.lower.rotation.rows[2][1],
+                    __bodies.lower.rotation.rows[0][2],
+                    __bodies.lower.rotation.rows[1][2],
+                    __bodies.lower.rotation.rows[2][2],
+                ],
+            );
+        }
+    }
     impl Arm {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

@@ -475,6 +475,28 @@ pub mod pendulum {
             ::lagrange::__private::std::vec![self.m, self.l, self.g]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<1> for Pendulum {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "bob",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 1],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(&[__bodies.bob.x, __bodies.bob.y]);
+        }
+    }
     impl Pendulum {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

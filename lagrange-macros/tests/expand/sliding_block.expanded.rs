@@ -652,6 +652,42 @@ pub mod sliding_block {
             >(self, t, q, v)
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<2> for SlidingBlock {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "block",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::ConstraintLayout {
+                name: "floor",
+                bodies: &[
+                    ::lagrange::__private::lagrange_core::animation::BodyRef {
+                        body: 0,
+                        member: 0,
+                    },
+                ],
+            },
+            ::lagrange::__private::lagrange_core::animation::ConstraintLayout {
+                name: "slide",
+                bodies: &[],
+            },
+        ];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(&[__bodies.block.x, __bodies.block.y]);
+        }
+    }
     impl SlidingBlock {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

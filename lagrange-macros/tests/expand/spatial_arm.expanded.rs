@@ -987,6 +987,72 @@ pub mod arm {
             ::lagrange::__private::std::vec![self.m1, self.m2, self.d, self.e, self.g]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<2> for Arm {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "link1",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 0,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "link2",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Spatial,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 12,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[
+            ::lagrange::__private::lagrange_core::animation::Link {
+                from: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 1,
+                    member: 0,
+                },
+                to: ::lagrange::__private::lagrange_core::animation::BodyRef {
+                    body: 0,
+                    member: 0,
+                },
+            },
+        ];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(
+                &[
+                    __bodies.link1.position.x,
+                    __bodies.link1.position.y,
+                    __bodies.link1.position.z,
+                    __bodies.link1.rotation.rows[0][0],
+                    __bodies.link1.rotation.rows[1][0],
+                    __bodies.link1.rotation.rows[2][0],
+                    __bodies.link1.rotation.rows[0][1],
+                    __bodies.link1.rotation.rows[1][1],
+                    __bodies.link1.rotation.rows[2][1],
+                    __bodies.link1.rotation.rows[0][2],
+                    __bodies.link1.rotation.rows[1][2],
+                    __bodies.link1.rotation.rows[2][2],
+                    __bodies.link2.position.x,
+                    __bodies.link2.position.y,
+                    __bodies.link2.position.z,
+                    __bodies.link2.rotation.rows[0][0],
+                    __bodies.link2.rotation.rows[1][0],
+                    __bodies.link2.rotation.rows[2][0],
+                    __bodies.link2.rotation.rows[0][1],
+                    __bodies.link2.rotation.rows[1][1],
+                    __bodies.link2.rotation.rows[2][1],
+                    __bodies.link2.rotation.rows[0][2],
+                    __bodies.link2.rotation.rows[1][2],
+                    __bodies.link2.rotation.rows[2][2],
+                ],
+            );
+        }
+    }
     impl Arm {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

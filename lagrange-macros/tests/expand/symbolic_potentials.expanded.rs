@@ -739,6 +739,43 @@ pub mod springs {
             ::lagrange::__private::std::vec![self.m, self.omega, self.mu]
         }
     }
+    impl ::lagrange::__private::lagrange_core::animation::Drawable<4> for Springs {
+        const BODIES: &'static [::lagrange::__private::lagrange_core::animation::BodyLayout] = &[
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "mass",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::Some(2),
+                row: 0,
+            },
+            ::lagrange::__private::lagrange_core::animation::BodyLayout {
+                name: "planet",
+                shape: ::lagrange::__private::lagrange_core::animation::Shape::Particle2,
+                count: ::lagrange::__private::core::option::Option::None,
+                row: 4,
+            },
+        ];
+        const LINKS: &'static [::lagrange::__private::lagrange_core::animation::Link] = &[];
+        const CONSTRAINT_BODIES: &'static [::lagrange::__private::lagrange_core::animation::ConstraintLayout] = &[];
+        fn cartesian_rows(
+            &self,
+            t: f64,
+            q: &[f64; 4],
+            rows: &mut ::lagrange::__private::std::vec::Vec<f64>,
+        ) {
+            let __bodies = self.__lagrange_bodies(t, q);
+            rows.clear();
+            rows.extend_from_slice(
+                &[
+                    __bodies.mass[0].x,
+                    __bodies.mass[0].y,
+                    __bodies.mass[1].x,
+                    __bodies.mass[1].y,
+                    __bodies.planet.x,
+                    __bodies.planet.y,
+                ],
+            );
+        }
+    }
     impl Springs {
         #[inline(always)]
         #[allow(unused_variables, clippy::all)]

@@ -478,6 +478,18 @@ fn main() {
             }
             acc += s.q.theta1;
         }
+        // One RK4 step (h = 10⁻³) and one `Recorder::push` per call, at 30 frames per second of
+        // simulated time (a frame kept every 34 steps), against `rk4_validated_double_pendulum`.
+        "rk4_recorded_double_pendulum" => {
+            let sys = DOUBLE_PENDULUM.validated().unwrap();
+            let mut s = double_pendulum_start();
+            let mut recorder = lagrange::animation::Recorder::new(&sys);
+            for _ in 0..n {
+                black_box(&sys).step::<Rk4>(&mut s, 1e-3).unwrap();
+                recorder.push(&sys, &s).unwrap();
+            }
+            acc += s.q.theta1 + recorder.frames() as f64;
+        }
         // One RK4 step (h = 10⁻³) per call on dual numbers seeded on 1, 2 or 4 initial values, or
         // on the lengths (`l1`, `l1_l2`, and both with two initial values: `l1_l2_4`)
         // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.

@@ -22,11 +22,21 @@ use nalgebra::SVector;
 /// [`forward`](Self::forward) root to leaf, [`backward`](Self::backward) leaf to root.
 /// [`inverse_dynamics`] runs the sweeps as loops; `#[mechanism]` writes one call per body with a
 /// constant index, so that each call is compiled for its own joint.
+///
+/// As in [`Articulated`](super::Articulated), a body's slot is empty until its forward step fills
+/// it (nothing is zeroed first), and a step called out of sweep order panics.
 pub struct NewtonEuler<S, const B: usize> {
-    state: [JointState<S>; B],
-    velocity: [Motion<S>; B],
-    acceleration: [Motion<S>; B],
-    force: [Force<S>; B],
+    body: [Option<Moved<S>>; B],
+}
+
+/// A body after the forward sweep: its joint, v_b, a_b and the force f_b (which the backward
+/// sweep adds its children's to).
+#[derive(Clone, Copy)]
+struct Moved<S> {
+    state: JointState<S>,
+    velocity: Motion<S>,
+    acceleration: Motion<S>,
+    force: Force<S>,
 }
 
 impl<S: Scalar, const B: usize> Default for NewtonEuler<S, B> {
@@ -35,16 +45,17 @@ impl<S: Scalar, const B: usize> Default for NewtonEuler<S, B> {
     }
 }
 
+#[cold]
+#[inline(never)]
+fn out_of_order(sweep: &str) -> ! {
+    panic!("Newton–Euler sweeps called out of order: {sweep}")
+}
+
 impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
     /// Empty working memory.
     #[inline(always)]
     pub fn new() -> Self {
-        NewtonEuler {
-            state: [JointState::Welded; B],
-            velocity: [Motion::zero(); B],
-            acceleration: [Motion::zero(); B],
-            force: [Force::zero(); B],
-        }
+        NewtonEuler { body: [None; B] }
     }
 
     /// Body `b`, root to leaf: its velocity, acceleration and the force its motion takes,
@@ -59,19 +70,33 @@ impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
     ) {
         let (joint, kb) = (&joint_at::<CODE, B>(joints, b), &k.bodies[b]);
         let state = JointState::of(joint, q);
-        let parent = joint.parent.map(|p| &self.velocity[p]);
-        let (vb, c) = velocity(joint, kb, state, parent, rate_of(joint, v));
-        let above = match joint.parent {
-            Some(p) => self.acceleration[p],
+        let parent = match joint.parent {
+            Some(p) => match &self.body[p] {
+                Some(m) => Some((m.velocity, m.acceleration)),
+                None => out_of_order("a child before its parent"),
+            },
+            None => None,
+        };
+        let (vb, c) = velocity(
+            joint,
+            kb,
+            state,
+            parent.as_ref().map(|m| &m.0),
+            rate_of(joint, v),
+        );
+        let above = match parent {
+            Some((_, a)) => a,
             None => ground_acceleration(k),
         };
         let mut ab = motion_to_child(joint, kb, state, &above) + c;
         add_along_joint(joint, &mut ab, rate_of(joint, qdd));
         let inertia = &kb.inertia;
-        self.force[b] = inertia.apply(&ab) + vb.cross_force(&inertia.apply(&vb));
-        self.state[b] = state;
-        self.velocity[b] = vb;
-        self.acceleration[b] = ab;
+        self.body[b] = Some(Moved {
+            state,
+            velocity: vb,
+            acceleration: ab,
+            force: inertia.apply(&ab) + vb.cross_force(&inertia.apply(&vb)),
+        });
     }
 
     /// Body `b`, leaf to root: τ_b = S_bᵀ f_b, and f_b passed to its parent.
@@ -84,12 +109,18 @@ impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
         b: usize,
     ) {
         let joint = &joint_at::<CODE, B>(joints, b);
-        if let Some(t) = along_joint(joint, &self.force[b]) {
+        let Some(moved) = self.body[b] else {
+            out_of_order("a body backward before forward")
+        };
+        if let Some(t) = along_joint(joint, &moved.force) {
             tau[joint.coordinate] = t;
         }
         if let Some(p) = joint.parent {
-            let pushed = force_to_parent(joint, &k.bodies[b], self.state[b], &self.force[b]);
-            self.force[p] = self.force[p] + pushed;
+            let pushed = force_to_parent(joint, &k.bodies[b], moved.state, &moved.force);
+            match &mut self.body[p] {
+                Some(parent) => parent.force = parent.force + pushed,
+                None => out_of_order("a parent before its child"),
+            }
         }
     }
 }

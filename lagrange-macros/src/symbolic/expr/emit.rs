@@ -5,16 +5,30 @@ use super::{operands, Graph, Id, Node};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
+/// A constant as `f64` tokens: its literal, or, where no literal can write it (constants that fold
+/// to ±∞ or NaN, as `1.0 / 0.0` does), the named constant, so that the declaration still compiles
+/// and the run-time checks refuse the non-finite values it gives.
+pub(crate) fn f64_tokens(x: f64) -> TokenStream {
+    let f64_type = quote!(::lagrange::__private::core::primitive::f64);
+    if x.is_finite() {
+        let l = Literal::f64_unsuffixed(x);
+        quote!(#l)
+    } else if x.is_nan() {
+        quote!(#f64_type::NAN)
+    } else if x > 0.0 {
+        quote!(#f64_type::INFINITY)
+    } else {
+        quote!(#f64_type::NEG_INFINITY)
+    }
+}
+
 impl Graph {
     /// A node as an operand on scalar `S` (or in `f64` where `in_f64`).
     fn operand(&self, id: Id, in_f64: bool, s: &TokenStream) -> TokenStream {
         match (&self.nodes[id], in_f64 || self.varies[id]) {
-            (Node::Literal(bits), true) => {
-                let l = Literal::f64_unsuffixed(f64::from_bits(*bits));
-                quote!(#l)
-            }
+            (Node::Literal(bits), true) => f64_tokens(f64::from_bits(*bits)),
             (Node::Literal(bits), false) => {
-                let l = Literal::f64_unsuffixed(f64::from_bits(*bits));
+                let l = f64_tokens(f64::from_bits(*bits));
                 quote!(<#s>::from(#l))
             }
             (_, true) => {
@@ -202,4 +216,24 @@ fn name(id: Id) -> proc_macro2::Ident {
 /// `__r12`: the reciprocal of node 12, where quotients by it share it.
 fn reciprocal_name(id: Id) -> proc_macro2::Ident {
     format_ident!("__r{}", id)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::f64_tokens;
+
+    #[test]
+    fn constants_no_literal_can_write_are_named() {
+        assert_eq!(f64_tokens(-2.5).to_string(), "- 2.5");
+        let path = ":: lagrange :: __private :: core :: primitive :: f64 ::";
+        assert_eq!(
+            f64_tokens(f64::INFINITY).to_string(),
+            format!("{path} INFINITY")
+        );
+        assert_eq!(
+            f64_tokens(f64::NEG_INFINITY).to_string(),
+            format!("{path} NEG_INFINITY")
+        );
+        assert_eq!(f64_tokens(f64::NAN).to_string(), format!("{path} NAN"));
+    }
 }
