@@ -581,9 +581,9 @@ fn main() {
         // One step (h = 10⁻⁵ s) per call of Andrews' squeezer from the state 20 steps after Hairer &
         // Wanner's start: RK4 (`sys.step`, the constrained accelerations and the projection after
         // the step), Gauss–Legendre 2 as a solver takes it (`step_with_memory`: the Newton
-        // matrix and the stage predictor kept from step to step), and through `sys.step` (a fresh
-        // Newton matrix every step).
-        "rk4_squeezer" | "gl2_squeezer" | "gl2_fresh_squeezer" => {
+        // matrix and the stage predictor kept from step to step), through a `FixedStepper` (the
+        // same, with its end-of-step q̈), and through `sys.step` (a fresh Newton matrix every step).
+        "rk4_squeezer" | "gl2_squeezer" | "gl2_fresh_squeezer" | "gl2_stepper_squeezer" => {
             use lagrange::integrate::NewtonMemory;
             use lagrange::GaussLegendre2;
             let sys = squeezer_model::ANDREWS;
@@ -597,6 +597,15 @@ fn main() {
                 for _ in 0..n {
                     black_box(&sys).step::<Rk4>(&mut s, h).unwrap();
                 }
+            } else if which == "gl2_stepper_squeezer" {
+                // The documented way to take repeated implicit steps: a FixedStepper (the Newton
+                // memory kept, the projection and q̈ at the end of each step for dense output).
+                use lagrange::integrate::{FixedStepper, Stepper};
+                let mut solver = FixedStepper::<_, GaussLegendre2, 7>::new(&sys, &s, h).unwrap();
+                for _ in 0..n {
+                    black_box(&mut solver).step(f64::MAX).unwrap();
+                }
+                s = solver.state();
             } else if which == "gl2_fresh_squeezer" {
                 for _ in 0..n {
                     black_box(&sys).step::<GaussLegendre2>(&mut s, h).unwrap();
