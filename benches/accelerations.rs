@@ -27,7 +27,7 @@ mod common;
 
 use common::{interleave, mean_ns, print_interleaved, smoke_run};
 use criterion::{criterion_group, Criterion};
-use lagrange::mechanism::Dynamics as _;
+use lagrange::evaluation::Evaluate as _;
 use lagrange::prelude::*;
 use std::hint::black_box;
 
@@ -110,7 +110,7 @@ fn cart_pendulum_closed_form(
 /// The hand-written `baseline` against the generated `accelerations` of `checked`'s parameters at
 /// `s`, and through the validated handle itself: criterion's group `name` (benches `hand_written` and
 /// `generated`), then the interleaved ratios.
-fn compare<M: Mechanism<N>, const N: usize, R>(
+fn compare<M: lagrange::mechanism::Dynamics<N>, const N: usize, R>(
     c: &mut Criterion,
     name: &'static str,
     checked: &Validated<M>,

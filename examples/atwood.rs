@@ -12,47 +12,7 @@
 
 use lagrange::prelude::*;
 
-#[mechanism]
-pub mod atwood {
-    /// Descent of the first mass.
-    pub struct Coords {
-        pub y: f64,
-    }
-
-    pub struct Atwood {
-        /// The descending mass.
-        pub m1: f64,
-        /// The rising mass.
-        pub m2: f64,
-        pub pulley_mass: f64,
-        /// The pulley's moment of inertia about its axle.
-        pub pulley_inertia: f64,
-        /// The pulley's radius.
-        pub r: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m1)]
-    fn left() -> Vec2 {
-        vec2(-r, -1.0 - y)
-    }
-
-    #[particle(mass = m2)]
-    fn right() -> Vec2 {
-        vec2(r, -1.0 + y)
-    }
-
-    /// The rope does not slip: the pulley turns by −y/r.
-    #[rigid_body(mass = pulley_mass, inertia = pulley_inertia)]
-    fn pulley() -> Planar {
-        planar(vec2(0.0, 0.0), -y / r)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::atwood::atwood;
 
 fn main() -> Result<(), lagrange::Error> {
     use atwood::{Atwood, Coords, State};

@@ -14,37 +14,7 @@
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod breathing_ellipse {
-    /// The bead's eccentric angle on the ellipse, from the bottom.
-    pub struct Coords {
-        pub phi: f64,
-    }
-
-    pub struct BreathingEllipse {
-        pub m: f64,
-        /// Mean semi-axes, horizontal and vertical.
-        pub a0: f64,
-        pub b0: f64,
-        /// Relative amplitude and angular frequency of the breathing.
-        pub eps: f64,
-        pub omega: f64,
-        pub g: f64,
-    }
-
-    /// The wire's shape depends on time: the position is rheonomic.
-    #[particle(mass = m)]
-    fn bead() -> Vec2 {
-        let a = a0 * (1.0 + eps * (omega * t).sin());
-        let b = b0 * (1.0 + eps * (omega * t).cos());
-        vec2(a * phi.sin(), -b * phi.cos())
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::breathing_ellipse::breathing_ellipse;
 
 fn main() -> Result<(), lagrange::Error> {
     use breathing_ellipse::{BreathingEllipse, Coords, State};

@@ -19,37 +19,7 @@ use lagrange::constraints::constraint_forces;
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod cartesian_pendulum {
-    /// The bob's position, pivot at the origin.
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct CartesianPendulum {
-        pub m: f64,
-        /// Length of the rod.
-        pub l: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    /// The rod keeps the bob at distance l from the pivot.
-    #[constraint]
-    fn rod() -> f64 {
-        bob.norm() - l
-    }
-}
+use lagrange_gallery::scenes::cartesian_pendulum::cartesian_pendulum;
 
 fn main() -> Result<(), lagrange::Error> {
     use cartesian_pendulum::{CartesianPendulum, Coords, State};

@@ -13,38 +13,7 @@
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod double_pendulum {
-    /// Angles of the two arms from the downward vertical.
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-
-    pub struct DoublePendulum {
-        pub m1: f64,
-        pub m2: f64,
-        pub l1: f64,
-        pub l2: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m1)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l1
-    }
-
-    /// The second bob hangs from the first.
-    #[particle(mass = m2)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::double_pendulum::double_pendulum;
 
 use double_pendulum::{Coords, DoublePendulum, State};
 

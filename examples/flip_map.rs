@@ -17,7 +17,8 @@
 //! cargo run --release --example flip_map -- --out parts --parts 2
 //! # over MPI ranks, gathered on rank 0 (or, with --out, one part per rank)
 //! cargo build --release --example flip_map --features mpi
-//! mpirun -np 2 target/release/examples/flip_map --mpi
+//! mpirun -np 2 target/release/examples/flip_map --mpi --threads 1
+//! # (Open MPI binds each rank to one core: threads beyond one per rank need `--bind-to none`)
 //! ```
 //!
 //! Inside a Slurm job array `--shard` defaults to the task's (`SLURM_ARRAY_TASK_ID`). A release

@@ -20,64 +20,7 @@ use lagrange::constraints::{consistent_state, constraint_forces, constraint_rows
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod four_bar {
-    /// Absolute angles of the crank, the coupler and the rocker, from the x axis.
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-        pub theta3: f64,
-    }
-
-    /// Lengths and masses of crank, coupler and rocker.
-    pub struct FourBar {
-        pub l1: f64,
-        pub l2: f64,
-        pub l3: f64,
-        pub m1: f64,
-        pub m2: f64,
-        pub m3: f64,
-        /// Distance between the two fixed pivots.
-        pub d: f64,
-        pub g: f64,
-    }
-
-    #[rigid_body(mass = m1, inertia = m1 * l1 * l1 / 12.0)]
-    fn crank() -> Planar {
-        planar(vec2(theta1.cos(), theta1.sin()) * (0.5 * l1), theta1)
-    }
-
-    #[rigid_body(mass = m2, inertia = m2 * l2 * l2 / 12.0)]
-    fn coupler() -> Planar {
-        let tip = vec2(theta1.cos(), theta1.sin()) * l1;
-        planar(tip + vec2(theta2.cos(), theta2.sin()) * (0.5 * l2), theta2)
-    }
-
-    #[rigid_body(mass = m3, inertia = m3 * l3 * l3 / 12.0)]
-    fn rocker() -> Planar {
-        planar(
-            vec2(d, 0.0) + vec2(theta3.cos(), theta3.sin()) * (0.5 * l3),
-            theta3,
-        )
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    /// Joint B, x: the coupler's far end on the rocker's tip.
-    #[constraint]
-    fn joint_b_x() -> f64 {
-        coupler.point(vec2(0.5 * l2, 0.0)).x - rocker.point(vec2(0.5 * l3, 0.0)).x
-    }
-
-    /// Joint B, y.
-    #[constraint]
-    fn joint_b_y() -> f64 {
-        coupler.point(vec2(0.5 * l2, 0.0)).y - rocker.point(vec2(0.5 * l3, 0.0)).y
-    }
-}
+use lagrange_gallery::scenes::four_bar::four_bar;
 
 fn main() -> Result<(), lagrange::Error> {
     use four_bar::{Coords, FourBar, State};

@@ -17,36 +17,7 @@
 
 use lagrange::prelude::*;
 
-#[mechanism]
-pub mod gyroscope {
-    /// Euler angles z-x-z: precession, nutation, spin.
-    pub struct Coords {
-        pub phi: f64,
-        pub theta: f64,
-        pub psi: f64,
-    }
-
-    pub struct Gyroscope {
-        pub m: f64,
-        /// Moment of inertia about any axis through the pivot perpendicular to the symmetry axis.
-        pub a: f64,
-        /// Moment of inertia about the symmetry axis.
-        pub c: f64,
-        /// The torque's magnitude per unit sin θ.
-        pub k: f64,
-    }
-
-    #[rigid_body(mass = m, inertia = [a, a, c])]
-    fn rotor() -> Spatial {
-        spatial(vec3(0.0, 0.0, 0.0), rot_z(phi) * rot_x(theta) * rot_z(psi))
-    }
-
-    /// τ = k (e_z × a), a the symmetry axis (the rotation's third column), in the world frame.
-    #[torque(on = rotor)]
-    fn drive() -> Vec3 {
-        vec3(0.0, 0.0, k).cross(&rotor.rotation.column(2))
-    }
-}
+use lagrange_gallery::scenes::gyroscope::gyroscope;
 
 fn main() -> Result<(), lagrange::Error> {
     use gyroscope::{Coords, Gyroscope, State};

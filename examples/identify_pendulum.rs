@@ -16,51 +16,23 @@
 //! the true L and c.
 
 use lagrange::prelude::*;
-use lagrange::sensitivity::{Seed, Tangent};
+use lagrange::sensitivity::Seed;
+use lagrange::Fixed;
 use nalgebra::{Matrix2, Vector2};
 
-#[mechanism]
-pub mod damped_pendulum {
-    /// Angle from the downward vertical.
-    pub struct Coords {
-        pub theta: f64,
-    }
-
-    #[derive(Clone, Copy)]
-    pub struct DampedPendulum {
-        pub m: f64,
-        /// Length of the rod.
-        pub l: f64,
-        pub g: f64,
-        /// Viscous friction in the pivot (torque −c θ̇).
-        pub c: f64,
-    }
-
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    #[generalized_force(on = theta)]
-    fn friction() -> f64 {
-        -c * theta_dot
-    }
-}
+use lagrange_gallery::scenes::identify_pendulum::damped_pendulum;
 
 use damped_pendulum::{Coords, DampedPendulum, State};
 
 /// θ every 0.05 s for 3 s, with ∂θ/∂L and ∂θ/∂c, from one RK4 run (h = 1e-3) on dual numbers.
 fn samples(sys: &DampedPendulum, s0: &State) -> Result<Vec<(f64, Vector2<f64>)>, lagrange::Error> {
-    let mut run = Tangent::new(sys, s0, [Seed::Parameter("l"), Seed::Parameter("c")])?;
+    let seeds = [Seed::Parameter("l"), Seed::Parameter("c")];
+    let rk4 = Fixed::<Rk4>::new(1e-3).without_dense();
+    let mut run = Stepper::new(sys, rk4, s0)?.with_sensitivities(seeds)?;
     let mut out = Vec::new();
     for _ in 0..60 {
         for _ in 0..50 {
-            run.rk4_step(1e-3)?;
+            run.step(f64::INFINITY)?;
         }
         let at = run.sensitivities();
         out.push((

@@ -3,8 +3,8 @@
 //!   T = 4 K(k) √(L/g),  modulus k = sin(θ₀/2)
 //! (Landau & Lifshitz, *Mechanics*, §11, problem 1), 2.6 times the small-amplitude period.
 //!
-//! The period is measured here with an event: `Dopri5::integrate` locates the instant θ next crosses
-//! zero upwards, three quarters of a period after the release.
+//! The period is measured here with an event: `sys.integrate` with `Dopri5` locates the instant θ
+//! next crosses zero upwards, three quarters of a period after the release.
 //!
 //! ```text
 //! cargo run --release --example pendulum
@@ -17,30 +17,7 @@ use lagrange::integrate::{Direction, Event, Observation, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod pendulum {
-    /// Angle from the downward vertical.
-    pub struct Coords {
-        pub theta: f64,
-    }
-
-    pub struct Pendulum {
-        pub m: f64,
-        /// Length of the rod.
-        pub l: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::pendulum::pendulum;
 
 fn main() -> Result<(), lagrange::Error> {
     use pendulum::{Coords, Pendulum, State};
@@ -56,7 +33,7 @@ fn main() -> Result<(), lagrange::Error> {
     let theta = |s: &State| s.q.theta;
     let mut events = [Event::new(&theta).direction(Direction::Rising).terminal()];
     let mut swing = vec![(0.0, theta0)];
-    let outcome = Dopri5::new(1e-12, 1e-12).integrate(&sys, &mut s, 10.0, &mut events, |o| {
+    let outcome = sys.integrate(Dopri5::new(1e-12, 1e-12), &mut s, 10.0, &mut events, |o| {
         if let Observation::Step { state, .. } = o {
             swing.push((state.t, state.q.theta));
         }

@@ -10,59 +10,10 @@
 //! The gallery's scene `lagrange_gallery::scenes::pushed_block` checks the outcome and the
 //! acceleration a = (R − μₖ N)/m against the closed form.
 
-use lagrange::constraints::{ContactOptions, ContactRk4};
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod pushed_block {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-        pub z: f64,
-    }
-
-    #[derive(Clone, Copy)]
-    pub struct PushedBlock {
-        pub m: f64,
-        pub g: f64,
-        /// The incline rises along y at angle α; x is level.
-        pub alpha: f64,
-        pub mu_k: f64,
-        pub mu_s: f64,
-        pub push: f64,
-    }
-
-    #[particle(mass = m)]
-    fn block() -> Vec3 {
-        vec3(x, y, z)
-    }
-
-    #[gravity]
-    fn down() -> Vec3 {
-        vec3(0.0, 0.0, -g)
-    }
-
-    #[force(on = block)]
-    fn sideways() -> Vec3 {
-        vec3(push, 0.0, 0.0)
-    }
-
-    /// The incline pushes along its normal (0, −sin α, cos α) and cannot pull.
-    #[unilateral]
-    fn incline() -> f64 {
-        block.z * alpha.cos() - block.y * alpha.sin()
-    }
-
-    /// Friction in the incline's plane: slip along the level direction and up the slope.
-    #[friction(on = incline, kinetic = mu_k, stiction = mu_s)]
-    fn rub() -> Vec2 {
-        vec2(
-            block_dot.x,
-            block_dot.y * alpha.cos() + block_dot.z * alpha.sin(),
-        )
-    }
-}
+use lagrange_gallery::scenes::pushed_block::pushed_block;
 
 fn main() -> Result<(), lagrange::Error> {
     use pushed_block::{Coords, PushedBlock, State};
@@ -87,16 +38,17 @@ fn main() -> Result<(), lagrange::Error> {
             y: 0.0,
             z: 0.0,
         });
-        let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;
+        let mut stepper = Stepper::new(&sys, Rk4::with_step(1e-3), &s)?;
         let mut slid = vec![(0.0, 0.0)];
         for _ in 0..2000 {
-            stepper.step(&sys, &mut s, 1e-3)?;
+            stepper.step(f64::INFINITY)?;
+            s = stepper.state();
             slid.push((s.t, s.q.x.hypot(s.q.y).hypot(s.q.z)));
         }
         println!(
             "push {} N: friction {:?}, after {:.1} s at ({:.4}, {:.4}, {:.4}) m",
             sys.push,
-            stepper.mode().rows[1],
+            stepper.contacts().mode().rows[1],
             s.t,
             s.q.x,
             s.q.y,

@@ -13,30 +13,7 @@
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod ramp {
-    /// Distance down the ramp.
-    pub struct Coords {
-        pub s: f64,
-    }
-
-    pub struct Ramp {
-        pub m: f64,
-        /// The ramp's angle to the horizontal.
-        pub alpha: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn block() -> Vec2 {
-        vec2(alpha.cos(), -alpha.sin()) * s
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::ramp::ramp;
 
 fn main() -> Result<(), lagrange::Error> {
     use ramp::{Coords, Ramp, State};

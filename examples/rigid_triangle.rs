@@ -16,74 +16,9 @@
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod three_particles {
-    /// Rotation of the body about the pivot.
-    pub struct Coords {
-        pub theta: f64,
-    }
+use lagrange_gallery::scenes::rigid_triangle::three_particles;
 
-    /// Masses and body-frame offsets (from the pivot) of the three particles.
-    pub struct ThreeParticles {
-        pub m1: f64,
-        pub m2: f64,
-        pub m3: f64,
-        pub x1: f64,
-        pub y1: f64,
-        pub x2: f64,
-        pub y2: f64,
-        pub x3: f64,
-        pub y3: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m1)]
-    fn p1() -> Vec2 {
-        vec2(x1, y1).rotated(theta)
-    }
-
-    #[particle(mass = m2)]
-    fn p2() -> Vec2 {
-        vec2(x2, y2).rotated(theta)
-    }
-
-    #[particle(mass = m3)]
-    fn p3() -> Vec2 {
-        vec2(x3, y3).rotated(theta)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-#[mechanism]
-pub mod lamina {
-    /// Rotation of the body about the pivot.
-    pub struct Coords {
-        pub theta: f64,
-    }
-
-    /// Total mass, centre of mass offset (body frame, from the pivot), inertia about the centre.
-    pub struct Lamina {
-        pub mass: f64,
-        pub inertia: f64,
-        pub cx: f64,
-        pub cy: f64,
-        pub g: f64,
-    }
-
-    #[rigid_body(mass = mass, inertia = inertia)]
-    fn body() -> Planar {
-        planar(vec2(cx, cy).rotated(theta), theta)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::rigid_triangle::lamina;
 
 fn main() -> Result<(), lagrange::Error> {
     let particles = three_particles::ThreeParticles {

@@ -19,41 +19,7 @@
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod rolling_wheel {
-    /// Centre (x, y), heading φ, rolling angle θ.
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-        pub phi: f64,
-        pub theta: f64,
-    }
-
-    pub struct RollingWheel {
-        pub m: f64,
-        /// The wheel's radius.
-        pub r: f64,
-    }
-
-    /// A uniform disk, axle along its body y axis, held vertical: ½mR² about the axle, ¼mR² about
-    /// a diameter.
-    #[rigid_body(mass = m, inertia = [0.25 * m * r * r, 0.5 * m * r * r, 0.25 * m * r * r])]
-    fn wheel() -> Spatial {
-        spatial(vec3(x, y, r), rot_z(phi) * rot_y(theta))
-    }
-
-    /// No slip along x at the contact point.
-    #[velocity_constraint]
-    fn roll_x() -> f64 {
-        wheel_dot.linear.x - r * theta_dot * phi.cos()
-    }
-
-    /// No slip along y at the contact point.
-    #[velocity_constraint]
-    fn roll_y() -> f64 {
-        wheel_dot.linear.y - r * theta_dot * phi.sin()
-    }
-}
+use lagrange_gallery::scenes::rolling_wheel::rolling_wheel;
 
 fn main() -> Result<(), lagrange::Error> {
     use rolling_wheel::{Coords, RollingWheel, State};

@@ -10,53 +10,10 @@
 //! The gallery's scene `lagrange_gallery::scenes::rough_plane` checks the stop time and point
 //! against the closed form t_s = v₀ μₖg/((μₖg)² − a²), a = F/m.
 
-use lagrange::constraints::{ContactOptions, ContactRk4};
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod rough_plane {
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-        pub z: f64,
-    }
-
-    pub struct RoughPlane {
-        pub m: f64,
-        pub g: f64,
-        pub mu_k: f64,
-        pub mu_s: f64,
-        pub push: f64,
-    }
-
-    #[particle(mass = m)]
-    fn puck() -> Vec3 {
-        vec3(x, y, z)
-    }
-
-    #[gravity]
-    fn down() -> Vec3 {
-        vec3(0.0, 0.0, -g)
-    }
-
-    #[force(on = puck)]
-    fn sideways() -> Vec3 {
-        vec3(0.0, push, 0.0)
-    }
-
-    /// The plane z = 0 pushes up and cannot pull.
-    #[unilateral]
-    fn plane() -> f64 {
-        puck.z
-    }
-
-    /// Friction in the plane: the slip velocity's components along x and y.
-    #[friction(on = plane, kinetic = mu_k, stiction = mu_s)]
-    fn rub() -> Vec2 {
-        vec2(puck_dot.x, puck_dot.y)
-    }
-}
+use lagrange_gallery::scenes::rough_plane::rough_plane;
 
 fn main() -> Result<(), lagrange::Error> {
     use rough_plane::{Coords, RoughPlane, State};
@@ -80,14 +37,15 @@ fn main() -> Result<(), lagrange::Error> {
             z: 0.0,
         },
     );
-    // ContactRk4 locates the instant the slip stops, then decides stick or slide once.
-    let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;
+    // The solver locates the instant the slip stops, then decides stick or slide once.
+    let mut stepper = Stepper::new(&sys, Rk4::with_step(1e-3), &s)?;
     let mut path = vec![(0.0, 0.0)];
     for _ in 0..1000 {
-        stepper.step(&sys, &mut s, 1e-3)?;
+        stepper.step(f64::INFINITY)?;
+        s = stepper.state();
         path.push((s.q.x, s.q.y));
     }
-    for event in &stepper.events {
+    for event in stepper.mode_changes() {
         println!(
             "t = {:.6} s: `{}` {:?} → {:?}",
             event.t, event.constraint, event.from, event.to

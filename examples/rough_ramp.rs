@@ -7,7 +7,8 @@
 //! is N = m g cos α; sent up with speed u, the block decelerates at g (sin α + μₖ cos α), stops at
 //!   t_s = u / (g (sin α + μₖ cos α))  after  d_s = u² / (2 g (sin α + μₖ cos α)),
 //! and then sticks if tan α ≤ μₛ, or slides back with a = g (sin α − μₖ cos α).
-//! `ContactRk4` locates the stop and decides stick or slide once: one mode change, no chattering.
+//! The solver holds the contact mode over each step, locates the stop and decides stick or slide
+//! once: one mode change, no chattering.
 //!
 //! ```text
 //! cargo run --release --example rough_ramp
@@ -16,49 +17,10 @@
 //! The gallery's scene `lagrange_gallery::scenes::rough_ramp` checks the stop time, the motion, the
 //! normal and friction forces and the mode changes against the closed form.
 
-use lagrange::constraints::{ContactOptions, ContactRk4};
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod rough_ramp {
-    /// The block's position; the ramp's surface passes through the origin.
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct RoughRamp {
-        pub m: f64,
-        /// The ramp's angle to the horizontal.
-        pub alpha: f64,
-        pub g: f64,
-        pub mu_k: f64,
-        pub mu_s: f64,
-    }
-
-    #[particle(mass = m)]
-    fn block() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    /// The ramp pushes along its normal (−sin α, cos α) and cannot pull.
-    #[unilateral]
-    fn ramp() -> f64 {
-        block.y * alpha.cos() - block.x * alpha.sin()
-    }
-
-    /// Coulomb friction on the ramp contact; slip velocity positive up the ramp.
-    #[friction(on = ramp, kinetic = mu_k, stiction = mu_s)]
-    fn ramp_friction() -> f64 {
-        block_dot.x * alpha.cos() + block_dot.y * alpha.sin()
-    }
-}
+use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 
 fn main() -> Result<(), lagrange::Error> {
     use rough_ramp::{Coords, RoughRamp, State};
@@ -82,15 +44,16 @@ fn main() -> Result<(), lagrange::Error> {
                 y: u * sn,
             },
         );
-        let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;
+        let mut stepper = Stepper::new(&sys, Rk4::with_step(1e-3), &s)?;
         let mut climb = vec![(0.0, 0.0)];
         for _ in 0..3000 {
-            stepper.step(&sys, &mut s, 1e-3)?;
+            stepper.step(f64::INFINITY)?;
+            s = stepper.state();
             climb.push((s.t, s.q.x * cs + s.q.y * sn));
         }
         let up = g * (sn + mu_k * cs);
         println!("μₖ = {mu_k}, μₛ = {mu_s}:");
-        for event in &stepper.events {
+        for event in stepper.mode_changes() {
             println!(
                 "  t = {:.12} s: `{}` {:?} → {:?}  (closed-form stop u/(g(sin α + μₖ cos α)) = {:.12} s)",
                 event.t, event.constraint, event.from, event.to, u / up

@@ -19,58 +19,11 @@
 //! The gallery's scene `lagrange_gallery::scenes::rough_wedge` checks the motion, the forces, the
 //! momentum, the energy lost, the frictionless limit and the stuck case against the closed form.
 
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4};
+use lagrange::constraints::constraint_forces;
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod rough_wedge {
-    /// x: the wedge's position X on the floor; (bx, by): the block's position.
-    pub struct Coords {
-        pub x: f64,
-        pub bx: f64,
-        pub by: f64,
-    }
-
-    pub struct RoughWedge {
-        pub wedge_mass: f64,
-        pub block_mass: f64,
-        /// The face's angle; it slopes down from its top edge.
-        pub alpha: f64,
-        /// Height of the face's top edge above the wedge's reference point.
-        pub h: f64,
-        pub g: f64,
-        pub mu_k: f64,
-        pub mu_s: f64,
-    }
-
-    #[particle(mass = wedge_mass)]
-    fn wedge() -> Vec2 {
-        vec2(x, 0.0)
-    }
-
-    #[particle(mass = block_mass)]
-    fn block() -> Vec2 {
-        vec2(bx, by)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    /// The face pushes the block along its normal (sin α, cos α) and cannot pull.
-    #[unilateral]
-    fn face() -> f64 {
-        (block.x - wedge.x) * alpha.sin() + (block.y - wedge.y - h) * alpha.cos()
-    }
-
-    /// Coulomb friction between block and face; slip velocity positive down the face.
-    #[friction(on = face, kinetic = mu_k, stiction = mu_s)]
-    fn face_friction() -> f64 {
-        (block_dot.x - wedge_dot.x) * alpha.cos() - (block_dot.y - wedge_dot.y) * alpha.sin()
-    }
-}
+use lagrange_gallery::scenes::rough_wedge::rough_wedge;
 
 fn main() -> Result<(), lagrange::Error> {
     use rough_wedge::{Coords, RoughWedge, State};
@@ -97,17 +50,21 @@ fn main() -> Result<(), lagrange::Error> {
         by: sys.h - 0.3 * sn,
     });
     let e0 = sys.energy(&s)?;
-    let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;
+    let mut stepper = Stepper::new(&sys, Rk4::with_step(1e-3), &s)?;
     let (mut wedge, mut block) = (Vec::new(), Vec::new());
     for _ in 0..1000 {
-        stepper.step(&sys, &mut s, 1e-3)?;
+        stepper.step(f64::INFINITY)?;
+        s = stepper.state();
         wedge.push((s.q.x, 0.0));
         block.push((s.q.bx, s.q.by));
     }
     let f = constraint_forces(&sys, &s)?;
     let t = s.t;
     let p = sys.momenta(&s)?;
-    println!("after {t:.1} s, {} mode changes", stepper.events.len());
+    println!(
+        "after {t:.1} s, {} mode changes",
+        stepper.mode_changes().len()
+    );
     println!(
         "{:30} {:>18} {:>18}",
         "quantity", "simulated", "closed form"

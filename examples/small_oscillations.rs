@@ -12,40 +12,8 @@
 //! frequencies and both shapes against the closed form.
 
 use lagrange::analysis::{equilibrium, normal_modes, EquilibriumOptions};
-use lagrange::prelude::*;
 
-#[mechanism]
-pub mod double_pendulum {
-    /// Angles of the two arms from the downward vertical.
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-
-    pub struct DoublePendulum {
-        pub m1: f64,
-        pub m2: f64,
-        pub l1: f64,
-        pub l2: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m1)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l1
-    }
-
-    /// The second bob hangs from the first.
-    #[particle(mass = m2)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::double_pendulum::double_pendulum;
 
 fn main() -> Result<(), lagrange::Error> {
     use double_pendulum::{Coords, DoublePendulum};

@@ -9,7 +9,7 @@
 //! which vanishes at cos θ* = (2 + v₀²/(gR))/3: there the particle leaves, at the time
 //! t* = ∫₀^θ* R dθ / v(θ).
 //!
-//! The simulation knows none of this: `ContactRk4` keeps the contact while its multiplier λ = N is
+//! The simulation knows none of this: the solver keeps the contact while its multiplier λ = N is
 //! positive and locates the instant λ reaches 0.
 //!
 //! ```text
@@ -19,42 +19,12 @@
 //! The gallery's scene `lagrange_gallery::scenes::sphere_release` checks the release time and angle,
 //! λ against N(θ) and the parabola after release.
 
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4};
+use lagrange::constraints::constraint_forces;
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 use lagrange_gallery::scenes::sphere_release::gauss_legendre;
 
-#[mechanism]
-pub mod sphere_release {
-    /// The particle's position in the plane of its great circle, sphere centre at the origin.
-    pub struct Coords {
-        pub x: f64,
-        pub y: f64,
-    }
-
-    pub struct SphereRelease {
-        pub m: f64,
-        /// The sphere's radius.
-        pub r: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn particle() -> Vec2 {
-        vec2(x, y)
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-
-    /// The sphere can only push the particle outwards.
-    #[unilateral]
-    fn surface() -> f64 {
-        particle.norm() - r
-    }
-}
+use lagrange_gallery::scenes::sphere_release::sphere_release;
 
 fn main() -> Result<(), lagrange::Error> {
     use sphere_release::{Coords, SphereRelease, State};
@@ -65,15 +35,16 @@ fn main() -> Result<(), lagrange::Error> {
     };
     let (m, r, g, v0) = (sys.m, sys.r, sys.g, 1.2f64);
     let mut s = State::new(0.0, Coords { x: 0.0, y: r }, Coords { x: v0, y: 0.0 });
-    let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default())?;
+    let mut stepper = Stepper::new(&sys, Rk4::with_step(1e-3), &s)?;
     println!("θ (rad)    λ (N)        N(θ) = mg(3cos θ − 2) − mv₀²/R");
     let mut path = vec![(s.q.x, s.q.y)];
     let mut step = 0;
-    while stepper.events.is_empty() {
-        stepper.step(&sys, &mut s, 1e-3)?;
+    while stepper.mode_changes().is_empty() {
+        stepper.step(f64::INFINITY)?;
+        s = stepper.state();
         path.push((s.q.x, s.q.y));
         step += 1;
-        if step % 100 == 0 && stepper.events.is_empty() {
+        if step % 100 == 0 && stepper.mode_changes().is_empty() {
             let cos = s.q.y / r;
             let lambda = constraint_forces(&sys, &s)?.multipliers[0];
             println!(
@@ -83,7 +54,7 @@ fn main() -> Result<(), lagrange::Error> {
             );
         }
     }
-    let release = stepper.events[0];
+    let release = stepper.mode_changes()[0];
     let theta_star = ((2.0 + v0 * v0 / (g * r)) / 3.0).acos();
     let speed = |th: f64| (v0 * v0 + 2.0 * g * r * (1.0 - th.cos())).sqrt();
     let t_star = gauss_legendre(|th| r / speed(th), 0.0, theta_star, 400);
@@ -95,7 +66,8 @@ fn main() -> Result<(), lagrange::Error> {
 
     // Free flight: a parabola away from the sphere.
     while s.t < release.t + 0.4 {
-        stepper.step(&sys, &mut s, 1e-3)?;
+        stepper.step(f64::INFINITY)?;
+        s = stepper.state();
         path.push((s.q.x, s.q.y));
     }
     let circle = (0..=90)

@@ -16,37 +16,7 @@
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod spinning_hoop {
-    /// The bead's angle from the bottom of the hoop.
-    pub struct Coords {
-        pub theta: f64,
-    }
-
-    pub struct SpinningHoop {
-        pub m: f64,
-        /// Radius of the hoop.
-        pub r: f64,
-        /// The hoop's spin rate about the vertical.
-        pub omega: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = m)]
-    fn bead() -> Vec3 {
-        let azimuth = omega * t;
-        vec3(
-            theta.sin() * azimuth.cos(),
-            theta.sin() * azimuth.sin(),
-            -theta.cos(),
-        ) * r
-    }
-
-    #[gravity]
-    fn down() -> Vec3 {
-        vec3(0.0, 0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::spinning_hoop::spinning_hoop;
 
 fn main() -> Result<(), lagrange::Error> {
     use spinning_hoop::{Coords, SpinningHoop, State};

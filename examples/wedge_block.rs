@@ -18,39 +18,7 @@
 use lagrange::prelude::*;
 use lagrange_gallery::plot::{self, Series};
 
-#[mechanism]
-pub mod wedge_block {
-    /// x: the wedge's position X; d: the block's distance down the incline.
-    pub struct Coords {
-        pub x: f64,
-        pub d: f64,
-    }
-
-    pub struct WedgeBlock {
-        pub wedge_mass: f64,
-        pub block_mass: f64,
-        /// The incline's angle.
-        pub alpha: f64,
-        /// Height of the incline's top above the floor.
-        pub h: f64,
-        pub g: f64,
-    }
-
-    #[particle(mass = wedge_mass)]
-    fn wedge() -> Vec2 {
-        vec2(x, 0.0)
-    }
-
-    #[particle(mass = block_mass)]
-    fn block() -> Vec2 {
-        vec2(x + d * alpha.cos(), h - d * alpha.sin())
-    }
-
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
+use lagrange_gallery::scenes::wedge_block::wedge_block;
 
 fn main() -> Result<(), lagrange::Error> {
     use wedge_block::{Coords, State, WedgeBlock};

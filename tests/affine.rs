@@ -162,11 +162,11 @@ fn prepared_accelerations_differentiate_like_the_general_path() {
     let start = states().nth(3).unwrap();
     let (mut a, mut b) = (start, start);
     let settings = Radau5::new(1e-9, 1e-9);
-    settings
-        .integrate(&plain, &mut a, 2.0, &mut [], |_| {})
+    plain
+        .integrate(settings, &mut a, 2.0, &mut [], |_| {})
         .unwrap();
-    settings
-        .integrate(&validated, &mut b, 2.0, &mut [], |_| {})
+    validated
+        .integrate(settings, &mut b, 2.0, &mut [], |_| {})
         .unwrap();
     let (qa, qb) = (a.q.to_array(), b.q.to_array());
     for j in 0..3 {

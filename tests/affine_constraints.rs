@@ -5,6 +5,7 @@
 //! forces, on `f64` and on dual numbers — and refuse bad states the same way.
 
 use lagrange::__private::{Dynamics, Prepare};
+use lagrange::evaluation::Evaluate;
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::cartesian_pendulum::cartesian_pendulum::{self, CartesianPendulum};
 use lagrange_gallery::scenes::rough_plane::rough_plane::{self, RoughPlane};
@@ -77,7 +78,7 @@ fn prepared_size<M: Prepare>() -> usize {
 /// q̈ of `plain` and of its validated handle agree at `state` to a few ulps of the largest entry:
 /// the same Schur solve, with M factorised and M⁻¹Aᵀw formed once instead of at every call (for
 /// these diagonal M the same operations, for the others a different order of summation).
-fn assert_agree<M: Mechanism<N> + Copy + std::fmt::Debug, const N: usize>(
+fn assert_agree<M: Dynamics<N> + Copy + std::fmt::Debug, const N: usize>(
     plain: M,
     state: &State<M::Coords>,
 ) {
@@ -243,8 +244,8 @@ fn prepared_accelerations_differentiate_like_the_general_path() {
         ];
         let v = [Dual64::from(-0.9 * s), Dual64::from(0.9 * c)];
         let t = Dual64::from(0.0);
-        let a = Dynamics::accelerations_at(&BEAD, t, &q, &v).unwrap();
-        let b = Dynamics::accelerations_at(&validated, t, &q, &v).unwrap();
+        let a = Evaluate::accelerations_at(&BEAD, t, &q, &v).unwrap();
+        let b = Evaluate::accelerations_at(&validated, t, &q, &v).unwrap();
         let scale = a
             .iter()
             .fold(1.0f64, |m, x| m.max(x.re.abs()).max(x.eps.abs()));

@@ -5,6 +5,7 @@
 //! non-finite state, or name non-finite dynamics, with the same errors as the checked path.
 
 use lagrange::__private::{Dynamics, Prepare};
+use lagrange::evaluation::Evaluate;
 use lagrange::prelude::*;
 
 /// A planet about a fixed centre (Kepler's problem): M = m I, diagonal; a potential the only force.
@@ -147,7 +148,7 @@ fn the_declarations_take_the_one_branch_path_through_the_handle() {
     const { assert!(<chain::Chain as Prepare>::PREPARED_IN_ONE_BRANCH) };
     const { assert!(<tied_wedge::TiedWedge as Prepare>::PREPARED_IN_ONE_BRANCH) };
     const { assert!(<wedge::Wedge as Prepare>::PREPARED_IN_ONE_BRANCH) };
-    const { assert!(<Validated<planet::Planet> as Dynamics<2>>::CLOSED_FORM) };
+    const { assert!(<Validated<planet::Planet> as Evaluate<2>>::ONE_BRANCH) };
     // The parameters' struct has no constants to solve with: it keeps the checked path.
     const { assert!(!<planet::Planet as Dynamics<2>>::CLOSED_FORM) };
 }
@@ -166,7 +167,7 @@ fn states<const N: usize>(centre: f64, size: f64) -> impl Iterator<Item = ([f64;
 /// Through the handle: `accelerations` (one branch) equals the integrators' hook bit for bit (the
 /// same evaluation with the prepared constants), and agrees with the parameters' checked path to
 /// `tolerance` relative to the largest acceleration.
-fn agrees<M: Mechanism<N>, const N: usize>(
+fn agrees<M: Dynamics<N>, const N: usize>(
     sys: M,
     states: impl Iterator<Item = ([f64; N], [f64; N])>,
     tolerance: f64,
@@ -212,11 +213,7 @@ fn one_branch_accelerations_agree_with_the_checked_path() {
 
 /// Every non-finite entry of (t, q, q̇) in turn: the handle refuses it with the error the checked
 /// path gives, naming the same state.
-fn refuses_like_the_checked_path<M: Mechanism<N>, const N: usize>(
-    sys: M,
-    q: [f64; N],
-    v: [f64; N],
-) {
+fn refuses_like_the_checked_path<M: Dynamics<N>, const N: usize>(sys: M, q: [f64; N], v: [f64; N]) {
     let handle = sys.validated().unwrap();
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         for slot in 0..(2 * N + 1) {

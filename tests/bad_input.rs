@@ -11,8 +11,8 @@ use lagrange::analysis::{
 };
 use lagrange::constraints::{
     consistent_state, consistent_state_holding, constraint_forces, Constraints, ContactOptions,
-    ContactRk4,
 };
+use lagrange::integrate::Method;
 use lagrange::model::Model;
 use lagrange::prelude::*;
 use lagrange::{Dopri5, GaussLegendre2, ImplicitMidpoint, StormerVerlet, Variational};
@@ -219,7 +219,7 @@ fn mechanism_cases<M: Mechanism<N> + Debug, const N: usize>(
         || {
             stepping(s, |state| {
                 let t_end = state.t + 10.0 * h;
-                set.dopri5.integrate(sys, state, t_end, &mut [], |_| {})
+                sys.integrate(set.dopri5, state, t_end, &mut [], |_| {})
             })
         },
     );
@@ -228,7 +228,7 @@ fn mechanism_cases<M: Mechanism<N> + Debug, const N: usize>(
         || {
             stepping(s, |state| {
                 let t_end = state.t + 10.0 * h;
-                set.radau5.integrate(sys, state, t_end, &mut [], |_| {})
+                sys.integrate(set.radau5, state, t_end, &mut [], |_| {})
             })
         },
     );
@@ -248,13 +248,12 @@ fn mechanism_cases<M: Mechanism<N> + Debug, const N: usize>(
     );
 }
 
-/// The entry points of a mechanism with constraints, on top of [`mechanism_cases`]. `good` is a
-/// consistent state the contact stepper is started from before it is given `s`.
+/// The entry points of a mechanism with constraints, on top of [`mechanism_cases`]: the contact
+/// options and the solvers that hold a contact mode.
 fn constrained_cases<M, const N: usize, const K: usize, const C: usize>(
     tally: &mut Tally,
     what: &dyn Fn() -> String,
     sys: &M,
-    good: &State<<M as Model<N, K>>::Coords>,
     s: &State<<M as Model<N, K>>::Coords>,
     set: &Settings,
 ) where
@@ -281,75 +280,73 @@ fn constrained_cases<M, const N: usize, const K: usize, const C: usize>(
         || pure(constrained_equilibrium(sys, s.t, &s.q, &set.equilibrium)),
     );
     tally.run(
-        || label("ContactRk4::new"),
-        || pure(ContactRk4::new(sys, s, set.contact).map(|stepper| stepper.mode())),
-    );
-    tally.run(
-        || label("ContactRk4 step"),
+        || label("Stepper::new with contact options"),
         || {
-            // Started from a good state (with good options, which are then swapped for the ones
-            // under test), then given the state under test: the step does its own checks.
-            let Ok(mut stepper) = ContactRk4::new(sys, good, ContactOptions::default()) else {
-                return Outcome::Error {
-                    state_changed: false,
-                };
-            };
-            stepper.options = set.contact;
-            let (mode, events) = (stepper.mode(), stepper.events.len());
-            match stepping(s, |state| stepper.step(sys, state, set.h)) {
-                Outcome::Error { state_changed } => Outcome::Error {
-                    state_changed: state_changed
-                        || stepper.mode() != mode
-                        || stepper.events.len() != events,
-                },
-                ok => ok,
-            }
+            let solver = Stepper::new(sys, Rk4::with_step(set.h), s);
+            let solver = solver.and_then(|solver| solver.with_contact_options(set.contact));
+            pure(solver.map(|solver| *solver.contacts()))
         },
     );
     tally.run(
-        || label("ContactRk4 step_with GaussLegendre2"),
+        || label("Stepper step holding contacts, RK4"),
         || {
-            // As "ContactRk4 step", with Gauss–Legendre 2 in the event loop.
-            let Ok(mut stepper) = ContactRk4::new(sys, good, ContactOptions::default()) else {
-                return Outcome::Error {
-                    state_changed: false,
-                };
-            };
-            stepper.options = set.contact;
-            let (mode, events) = (stepper.mode(), stepper.events.len());
-            let step = |state: &mut State<<M as Model<N, K>>::Coords>| {
-                stepper.step_with::<GaussLegendre2, M, N, K>(sys, state, set.h)
-            };
-            match stepping(s, step) {
-                Outcome::Error { state_changed } => Outcome::Error {
-                    state_changed: state_changed
-                        || stepper.mode() != mode
-                        || stepper.events.len() != events,
-                },
-                ok => ok,
-            }
-        },
-    );
-    tally.run(
-        || label("Dopri5::integrate_contacts"),
-        || {
-            let t_end = s.t + set.h;
             stepping(s, |state| {
-                set.dopri5
-                    .integrate_contacts(sys, state, t_end, set.contact, &mut [], |_| {})
+                step_holding(sys, Rk4::with_step(set.h), set.contact, state)
             })
         },
     );
     tally.run(
-        || label("Radau5::integrate_contacts"),
+        || label("Stepper step holding contacts, GaussLegendre2"),
+        || {
+            let method = GaussLegendre2::with_step(set.h);
+            stepping(s, |state| step_holding(sys, method, set.contact, state))
+        },
+    );
+    tally.run(
+        || label("Stepper integrate holding contacts, Dopri5"),
         || {
             let t_end = s.t + set.h;
             stepping(s, |state| {
-                set.radau5
-                    .integrate_contacts(sys, state, t_end, set.contact, &mut [], |_| {})
+                integrate_holding(sys, set.dopri5, set.contact, state, t_end)
             })
         },
     );
+    tally.run(
+        || label("Stepper integrate holding contacts, Radau5"),
+        || {
+            let t_end = s.t + set.h;
+            stepping(s, |state| {
+                integrate_holding(sys, set.radau5, set.contact, state, t_end)
+            })
+        },
+    );
+}
+
+/// One step of a solver made at `state` with the contact options given, `state` moved to its end.
+fn step_holding<M: Mechanism<N>, Me: Method<N>, const N: usize>(
+    sys: &M,
+    method: Me,
+    options: ContactOptions,
+    state: &mut State<M::Coords>,
+) -> lagrange::Result<()> {
+    let mut solver = Stepper::new(sys, method, state)?.with_contact_options(options)?;
+    solver.step(f64::INFINITY)?;
+    *state = solver.state();
+    Ok(())
+}
+
+/// An integration to `t_end` by a solver made at `state` with the contact options given, `state`
+/// moved to its end.
+fn integrate_holding<M: Mechanism<N>, Me: Method<N>, const N: usize>(
+    sys: &M,
+    method: Me,
+    options: ContactOptions,
+    state: &mut State<M::Coords>,
+    t_end: f64,
+) -> lagrange::Result<()> {
+    let mut solver = Stepper::new(sys, method, state)?.with_contact_options(options)?;
+    *state = solver.integrate(t_end, &mut [], |_| {})?.state;
+    Ok(())
 }
 
 /// Replaces one input at a time by each bad value: state components, parameters, step size and
@@ -501,7 +498,7 @@ fn bad_input_matrix() {
             &params,
             base,
             good,
-            |what, p, s, set| constrained_cases(&mut tally, what, p, &good, s, set),
+            |what, p, s, set| constrained_cases(&mut tally, what, p, s, set),
         );
     }
     {
@@ -523,7 +520,7 @@ fn bad_input_matrix() {
             &params,
             base,
             good,
-            |what, p, s, set| constrained_cases(&mut tally, what, p, &good, s, set),
+            |what, p, s, set| constrained_cases(&mut tally, what, p, s, set),
         );
     }
     {
@@ -557,7 +554,7 @@ fn bad_input_matrix() {
             &params,
             base,
             good,
-            |what, p, s, set| constrained_cases(&mut tally, what, p, &good, s, set),
+            |what, p, s, set| constrained_cases(&mut tally, what, p, s, set),
         );
     }
     let _ = std::panic::take_hook();

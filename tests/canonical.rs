@@ -5,8 +5,8 @@
 //! points, rigid bodies, potentials, applied forces and constraints alike, and on dual numbers
 //! (the implicit methods differentiate it for their Newton matrix).
 
+use lagrange::evaluation::Evaluate as _;
 use lagrange::integrate::momentum_rate;
-use lagrange::mechanism::Dynamics as _;
 use lagrange::prelude::*;
 use nalgebra::SVector;
 use num_dual::DualSVec;

@@ -4,6 +4,7 @@
 //! differentiates q̈ with dual numbers.
 
 use lagrange::__private::{dynamics, Dynamics, Model};
+use lagrange::evaluation::Evaluate;
 use lagrange::prelude::*;
 
 /// A two-link arm in relative angles with a rod as a planar body, a marker point at its tip and a
@@ -82,7 +83,7 @@ fn agrees_with_the_dual_passes<M: Model<N, K> + Dynamics<N>, const N: usize, con
         "the declaration is not derived in closed form"
     );
     for (q, v) in states::<N>() {
-        let closed = sys.equations_of_motion_at(0.0, &q, &v);
+        let closed = Evaluate::equations_of_motion_at(sys, 0.0, &q, &v);
         let dual = dynamics::equations_of_motion::<M, f64, N, K>(sys, 0.0, &q, &v);
         // The same sums of products in another order (the closed form simplified by
         // sin² + cos² = 1 before evaluating): agreement to a few ulps of each term's scale.
@@ -183,9 +184,14 @@ fn closed_form_accelerations_differentiate_like_the_dual_passes() {
         },
     );
     let mut implicit = start;
-    Radau5::new(1e-10, 1e-10)
-        .integrate(&sys, &mut implicit, 2.0, &mut [], |_| {})
-        .unwrap();
+    sys.integrate(
+        Radau5::new(1e-10, 1e-10),
+        &mut implicit,
+        2.0,
+        &mut [],
+        |_| {},
+    )
+    .unwrap();
     let mut reference = start;
     for _ in 0..2000 {
         sys.step::<Rk4>(&mut reference, 1e-3).unwrap();
@@ -200,7 +206,7 @@ fn closed_form_accelerations_differentiate_like_the_dual_passes() {
 fn a_validated_handle_prepares_the_coefficients_once() {
     // The handle computes the closed form's constant factors when it is made and evaluates the
     // same expressions with them: the same operations in the same order, so the same bits.
-    fn same<M: Mechanism<N>, const N: usize>(
+    fn same<M: Dynamics<N>, const N: usize>(
         sys: M,
         states: impl Iterator<Item = State<M::Coords>>,
     ) {

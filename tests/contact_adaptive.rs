@@ -16,9 +16,7 @@
 //!   gallery's `rough_plane`.
 //! - Dop853 shares the solver: the sphere again.
 
-use lagrange::constraints::{
-    constraint_forces, ContactAdaptive, ContactDopri5, ContactOptions, RowMode,
-};
+use lagrange::constraints::{constraint_forces, ContactOptions, RowMode};
 use lagrange::integrate::{Direction, EmbeddedPair, Event, Stats, StopReason};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
@@ -40,7 +38,7 @@ fn cost(stats: Stats) -> (usize, usize) {
 /// release time and the cost.
 fn bilateral_release(start: Start, tol: f64) -> (f64, Stats) {
     bilateral_release_in(start, |sys, s, events| {
-        Dopri5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+        sys.integrate(Dopri5::new(tol, tol), s, 10.0, events, |_| {})
     })
 }
 
@@ -57,7 +55,7 @@ fn unilateral_sphere_in_dop853() {
     let tol = 1e-13;
     sphere_release_against_closed_form(Dop853::new(tol, tol), tol, |start| {
         bilateral_release_in(start, |sys, s, events| {
-            Dop853::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+            sys.integrate(Dop853::new(tol, tol), s, 10.0, events, |_| {})
         })
     });
 }
@@ -88,14 +86,13 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
         let (t_star, cos_star) = start.release();
         let ([x, y], [vx, vy]) = start.state();
         let state = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
-        let mut solver =
-            ContactAdaptive::new(&sys, method, &state, ContactOptions::default()).expect("solver");
-        assert_eq!(solver.mode().rows, [RowMode::Active]);
-        while solver.events().is_empty() {
+        let mut solver = Stepper::new(&sys, method, &state).expect("solver");
+        assert_eq!(solver.contacts().mode().rows, [RowMode::Active]);
+        while solver.mode_changes().is_empty() {
             solver.step(10.0).expect("step");
         }
         let in_contact = solver.stats();
-        let change = solver.events()[0];
+        let change = solver.mode_changes()[0];
         let (t_bil, bil) = bilateral(start);
         let (steps_u, evals_u) = cost(in_contact);
         let (steps_b, evals_b) = cost(bil);
@@ -150,7 +147,7 @@ fn sphere_release_against_closed_form<P: EmbeddedPair>(
         let outcome = solver.integrate(t_flight, &mut [], |_| {}).expect("flight");
         assert_eq!(outcome.reason, StopReason::Reached);
         assert_eq!(
-            solver.events().len(),
+            solver.mode_changes().len(),
             1,
             "no second contact: it flies off the sphere"
         );
@@ -174,7 +171,15 @@ fn ball_dropped_on_a_unilateral_floor_lands_at_the_closed_form_time() {
     // Free fall and flight are quadratic in t, which Dopri5 (order 5) integrates exactly: the only
     // errors are the root finder's 1e-13 and round-off over a few steps. Asserted to 1e-12.
     check_ball_dropped_on_the_floor(|sys, s, options| {
-        Dopri5::new(1e-10, 1e-10).integrate_contacts(sys, s, 2.0, options, &mut [], |_| {})
+        contact_scenes::integrate_contacts(
+            sys,
+            Dopri5::new(1e-10, 1e-10),
+            s,
+            2.0,
+            options,
+            &mut [],
+            |_| {},
+        )
     });
 }
 
@@ -183,16 +188,17 @@ fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
     // Piecewise constant accelerations: each phase is a quadratic in t, integrated exactly by
     // Dopri5; the stop is located to the root finder's 1e-13 and round-off. Asserted to 1e-12.
     check_block_sent_up_the_rough_ramp(|sys, start| {
-        let mut solver = ContactDopri5::new(
-            sys,
-            Dopri5::new(1e-10, 1e-10),
-            start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
-        assert_eq!(solver.mode().rows, [RowMode::Active, RowMode::SlipPositive]);
+        let mut solver = Stepper::new(sys, Dopri5::new(1e-10, 1e-10), start).expect("solver");
+        assert_eq!(
+            solver.contacts().mode().rows,
+            [RowMode::Active, RowMode::SlipPositive]
+        );
         let outcome = solver.integrate(1.5, &mut [], |_| {}).expect("integration");
-        (solver.events().to_vec(), solver.state(), outcome.stats)
+        (
+            solver.mode_changes().to_vec(),
+            solver.state(),
+            outcome.stats,
+        )
     });
 }
 
@@ -203,10 +209,11 @@ fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back() {
 #[test]
 fn integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
     check_integrate_takes_the_contact_solver(
-        |sys, s, t_end| Dopri5::new(1e-9, 1e-9).integrate(sys, s, t_end, &mut [], |_| {}),
+        |sys, s, t_end| sys.integrate(Dopri5::new(1e-9, 1e-9), s, t_end, &mut [], |_| {}),
         |sys, s, t_end| {
-            Dopri5::new(1e-9, 1e-9).integrate_contacts(
+            contact_scenes::integrate_contacts(
                 sys,
+                Dopri5::new(1e-9, 1e-9),
                 s,
                 t_end,
                 ContactOptions::default(),
@@ -216,10 +223,11 @@ fn integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
         },
     );
     check_integrate_takes_the_contact_solver(
-        |sys, s, t_end| Dop853::new(1e-9, 1e-9).integrate(sys, s, t_end, &mut [], |_| {}),
+        |sys, s, t_end| sys.integrate(Dop853::new(1e-9, 1e-9), s, t_end, &mut [], |_| {}),
         |sys, s, t_end| {
-            Dop853::new(1e-9, 1e-9).integrate_contacts(
+            contact_scenes::integrate_contacts(
                 sys,
+                Dop853::new(1e-9, 1e-9),
                 s,
                 t_end,
                 ContactOptions::default(),
@@ -246,22 +254,16 @@ fn cost_in_contact_table() {
     println!("|---|---|---|---|");
     for tol in [1e-6, 1e-10, 1e-13] {
         let start = State::new(0.0, Coords { x: 0.0, y: R }, Coords { x: v0, y: 0.0 });
-        let mut solver = ContactDopri5::new(
-            &sys,
-            Dopri5::new(tol, tol),
-            &start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
-        while solver.events().is_empty() {
+        let mut solver = Stepper::new(&sys, Dopri5::new(tol, tol), &start).expect("solver");
+        while solver.mode_changes().is_empty() {
             solver.step(10.0).expect("step");
         }
         let frozen = solver.stats();
         let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
         let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
         let mut s = start;
-        let plain = Dopri5::new(tol, tol)
-            .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
+        let plain = sys
+            .integrate(Dopri5::new(tol, tol), &mut s, 10.0, &mut events, |_| {})
             .expect("integration")
             .stats;
         let (_, bil) = bilateral_release(on_sphere(0.0, v0), tol);
@@ -286,8 +288,9 @@ fn puck_on_a_rough_plane_stops_at_the_closed_form_point() {
     // puck of the gallery's `rough_plane` from 3 m/s, straight and pushed sideways; closed forms of
     // the stop (time and point) in `stop`.
     let run = |sys: &_, s: &mut _, tol: f64| {
-        Dopri5::new(tol, tol).integrate_contacts(
+        contact_scenes::integrate_contacts(
             sys,
+            Dopri5::new(tol, tol),
             s,
             1.5,
             ContactOptions::default(),
@@ -328,9 +331,16 @@ fn bouncing_ball_comes_to_rest_at_the_accumulation_point() {
             restitution: e,
             ..Default::default()
         };
-        let (outcome, changes) = Dopri5::new(1e-10, 1e-10)
-            .integrate_contacts(&sys, &mut s, 30.0, options, &mut [], |_| {})
-            .expect("integration");
+        let (outcome, changes) = contact_scenes::integrate_contacts(
+            &sys,
+            Dopri5::new(1e-10, 1e-10),
+            &mut s,
+            30.0,
+            options,
+            &mut [],
+            |_| {},
+        )
+        .expect("integration");
         let last = *changes.last().expect("landings");
         let bound = 2.0 * CONSISTENCY_TOLERANCE / (G * (1.0 - e))
             + changes.len() as f64 * 1e-13 * (1.0 + e) / (1.0 - e);
@@ -357,7 +367,7 @@ fn bouncing_ball_comes_to_rest_at_the_accumulation_point() {
 /// nothing to follow), by the declaration, with the state unchanged; the same sphere declared
 /// bilateral steps.
 #[test]
-fn implicit_steppers_refuse_unilateral_declarations() {
+fn raw_implicit_steps_refuse_unilateral_declarations() {
     let start = on_sphere(0.0, 0.5);
     let ([x, y], [vx, vy]) = start.state();
     let sys = unilateral::SphereRelease { m: M, r: R, g: G };
@@ -374,8 +384,9 @@ fn implicit_steppers_refuse_unilateral_declarations() {
         );
     };
     let mut s = s0;
-    // Their solvers (working memory kept between steps) refuse it; a single `sys.step` holds the
-    // mode over the step instead (tests/contact_fixed_step.rs).
+    // A step on raw arrays has no contact mode to hold, so it refuses the declaration; the time
+    // loops (`sys.step`, a `Stepper`) hold the mode over each step instead
+    // (tests/contact_fixed_step.rs, tests/contact_implicit/).
     refused(
         GaussLegendre2::step_with_stats(&sys, &mut s, 1e-3).map(|_| ()),
         "Gauss-Legendre 2",
@@ -384,11 +395,9 @@ fn implicit_steppers_refuse_unilateral_declarations() {
         ImplicitMidpoint::step_with_stats(&sys, &mut s, 1e-3).map(|_| ()),
         "implicit midpoint",
     );
-    // The plain Radau5 stepper (its mode re-inferred at every evaluation) refuses it too;
-    // `Radau5::integrate` takes the contact solver instead (tests/contact_implicit/).
-    refused(
-        lagrange::integrate::Radau5Stepper::new(&sys, Radau5::new(1e-8, 1e-8), &s).map(|_| ()),
-        "Radau5",
+    assert!(
+        lagrange::integrate::Stepper::new(&sys, Radau5::new(1e-8, 1e-8), &s).is_ok(),
+        "a Radau5 stepper holds the contact mode"
     );
     assert_eq!(s, s0, "a refused step changes nothing");
     let bilateral = bilateral::Sphere { m: M, r: R, g: G };

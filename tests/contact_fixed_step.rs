@@ -1,7 +1,7 @@
 //! Unilateral contacts and friction with the fixed-step implicit methods, implicit midpoint and
-//! Gauss–Legendre 2, in the contact stepper's event loop (`ContactRk4::step_with`: a step in the
-//! held mode, the event located on the method's own steps, the step cut there and the rest taken
-//! as a shorter step in the new mode):
+//! Gauss–Legendre 2, in the fixed-step loop holding the contact mode (a step in the held mode, the
+//! event located on the method's own steps, the step cut there and the rest taken as a shorter
+//! step in the new mode):
 //!
 //! - a particle sliding off a sphere declared `#[unilateral]` (the gallery's `sphere_release`):
 //!   its release time against the closed form (Goldstein, Poole & Safko, *Classical Mechanics*,
@@ -10,7 +10,7 @@
 //!   rough ramp (`#[friction]`, the gallery's `rough_ramp`): landings and stop at the closed-form
 //!   times.
 
-use lagrange::constraints::{ContactOptions, ContactRk4, RowMode};
+use lagrange::constraints::{ContactOptions, RowMode};
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::{sphere_release as unilateral, Release};
@@ -21,20 +21,18 @@ use contact_scenes::{ball, G, M, R, STARTS};
 /// The release time as a function of the step size.
 type ReleaseTime<'a> = dyn Fn(f64) -> f64 + 'a;
 
-/// Fixed-step implicit methods with contacts: [`ContactRk4::step_with`] takes Gauss–Legendre 2 or
-/// implicit midpoint for RK4 in the contact stepper's event loop.
+/// Fixed-step implicit methods with contacts: a solver with Gauss–Legendre 2 or implicit midpoint
+/// holds the contact mode over its steps as it does with RK4.
 fn release_with_fixed_step<I: lagrange::Integrator>(start: Release, h: f64) -> f64 {
     use unilateral::{Coords, SphereRelease, State};
     let sys = SphereRelease { m: M, r: R, g: G };
     let ([x, y], [vx, vy]) = start.state();
-    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
-    let mut contact = ContactRk4::new(&sys, &s, ContactOptions::default()).expect("stepper");
-    while contact.events.is_empty() {
-        contact
-            .step_with::<I, _, 2, 2>(&sys, &mut s, h)
-            .expect("step");
+    let s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
+    let mut contact = Stepper::new(&sys, I::with_step(h), &s).expect("stepper");
+    while contact.mode_changes().is_empty() {
+        contact.step(f64::INFINITY).expect("step");
     }
-    let change = contact.events[0];
+    let change = contact.mode_changes()[0];
     assert_eq!(
         (change.constraint, change.from, change.to),
         ("surface", RowMode::Active, RowMode::Inactive)
@@ -84,18 +82,19 @@ fn ball_lands_and_block_stops_on_time_with_the_fixed_step_implicit_methods() {
     fn ball_run<I: lagrange::Integrator>(restitution: f64) -> (Vec<f64>, ball::State) {
         use ball::{Ball, Coords, State};
         let sys = Ball { m: 0.3, g: G };
-        let mut s = State::new(0.0, Coords { x: 0.2, y: 1.3 }, Coords { x: 0.5, y: 0.0 });
+        let s = State::new(0.0, Coords { x: 0.2, y: 1.3 }, Coords { x: 0.5, y: 0.0 });
         let options = ContactOptions {
             restitution,
             ..Default::default()
         };
-        let mut contact = ContactRk4::new(&sys, &s, options).expect("stepper");
+        let mut contact = Stepper::new(&sys, I::with_step(1e-2), &s)
+            .and_then(|solver| solver.with_contact_options(options))
+            .expect("stepper");
         for _ in 0..150 {
-            contact
-                .step_with::<I, _, 2, 2>(&sys, &mut s, 1e-2)
-                .expect("step");
+            contact.step(f64::INFINITY).expect("step");
         }
-        (contact.events.iter().map(|c| c.t).collect(), s)
+        let landings = contact.mode_changes().iter().map(|c| c.t).collect();
+        (landings, contact.state())
     }
     let t1 = (2.0 * 1.3 / G).sqrt();
     for (name, run) in [
@@ -130,7 +129,7 @@ fn ball_lands_and_block_stops_on_time_with_the_fixed_step_implicit_methods() {
         mu_s: 0.6,
     };
     let t_stop = u / (G * (sn + 0.5 * cs));
-    let mut s = State::new(
+    let s = State::new(
         0.0,
         Coords { x: 0.0, y: 0.0 },
         Coords {
@@ -138,22 +137,22 @@ fn ball_lands_and_block_stops_on_time_with_the_fixed_step_implicit_methods() {
             y: u * sn,
         },
     );
-    let mut contact = ContactRk4::new(&sys, &s, ContactOptions::default()).expect("stepper");
+    let mut contact = Stepper::new(&sys, GaussLegendre2::with_step(1e-2), &s).expect("stepper");
     for _ in 0..50 {
-        contact
-            .step_with::<GaussLegendre2, _, 2, 2>(&sys, &mut s, 1e-2)
-            .expect("step");
+        contact.step(f64::INFINITY).expect("step");
     }
-    assert_eq!(contact.events.len(), 1, "{:?}", contact.events);
-    assert_eq!(contact.events[0].to, RowMode::Stick);
-    assert!((contact.events[0].t - t_stop).abs() < 1e-12);
+    let changes = contact.mode_changes();
+    assert_eq!(changes.len(), 1, "{changes:?}");
+    assert_eq!(changes[0].to, RowMode::Stick);
+    assert!((changes[0].t - t_stop).abs() < 1e-12);
+    let s = contact.state();
     assert!(s.v.x.hypot(s.v.y) < 1e-12);
 }
 
 #[test]
 fn a_single_step_of_the_fixed_step_implicit_methods_holds_the_contact_mode() {
-    // `sys.step::<I>` on a declaration with unilateral or friction rows takes one step of
-    // `ContactRk4::step_with::<I>` from the state's own mode (default options: plastic impacts).
+    // `sys.step::<I>` on a declaration with unilateral or friction rows takes one step with the
+    // state's own mode held (default options: plastic impacts).
     // The ball's fall is a quadratic, integrated exactly by both Gauss methods, and its landing is
     // located to the event tolerance: after 1.5 s it rests on the floor at x = 0.2 + 0.5·1.5,
     // to 1e-12, as the persistent stepper's run above.

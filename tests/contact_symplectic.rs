@@ -13,8 +13,8 @@
 //! - A ball dropped on a `#[unilateral]` floor: impact at √(2h/g).
 //! - Friction is refused, naming what integrates it, and the state is left as it was.
 
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
-use lagrange::integrate::{Direction, Event, FixedStepper, Stats, Stepper, StopReason};
+use lagrange::constraints::{constraint_forces, ContactOptions, RowMode};
+use lagrange::integrate::{Direction, Event, Fixed, Stats, Stepper, StopReason};
 use lagrange::prelude::*;
 use lagrange::{Integrator, StormerVerlet, Variational};
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
@@ -55,21 +55,20 @@ fn unilateral_release<I: Integrator>(start: Release, h: f64) -> (f64, Stats, f64
     use unilateral::{Coords, SphereRelease, State};
     let sys = SphereRelease { m: M, r: R, g: G };
     let ([x, y], [vx, vy]) = start.state();
-    let mut s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
+    let s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
     let e0 = sys.energy(&s).expect("energy");
-    let mut contact = ContactRk4::new(&sys, &s, ContactOptions::default()).expect("stepper");
-    assert_eq!(contact.mode().rows, [RowMode::Active]);
+    let mut contact = Stepper::new(&sys, I::with_step(h), &s).expect("stepper");
+    assert_eq!(contact.contacts().mode().rows, [RowMode::Active]);
     let mut energy = 0.0f64;
     loop {
-        contact
-            .step_with::<I, _, 2, 2>(&sys, &mut s, h)
-            .expect("step");
-        if !contact.events.is_empty() {
+        contact.step(f64::INFINITY).expect("step");
+        if !contact.mode_changes().is_empty() {
             break;
         }
+        let s = contact.state();
         energy = energy.max((sys.energy(&s).expect("energy") - e0).abs());
     }
-    let change = contact.events[0];
+    let change = contact.mode_changes()[0];
     assert_eq!(
         (change.constraint, change.from, change.to),
         ("surface", RowMode::Active, RowMode::Inactive)
@@ -86,7 +85,7 @@ fn bilateral_release<I: Integrator>(start: Release, h: f64) -> (f64, Stats) {
     let s = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
     let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
     let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
-    let mut solver = FixedStepper::<_, I, 2>::new(&sys, &s, h).expect("solver");
+    let mut solver = Stepper::new(&sys, Fixed::<I>::new(h), &s).expect("solver");
     let outcome = solver
         .integrate(10.0, &mut events, |_| {})
         .expect("integration");
@@ -292,18 +291,19 @@ fn ball_lands_on_time_with_verlet_and_variational() {
     fn ball_run<I: Integrator>(restitution: f64) -> (Vec<f64>, ball::State) {
         use ball::{Ball, Coords, State};
         let sys = Ball { m: 0.3, g: G };
-        let mut s = State::new(0.0, Coords { x: 0.2, y: 1.3 }, Coords { x: 0.5, y: 0.0 });
+        let s = State::new(0.0, Coords { x: 0.2, y: 1.3 }, Coords { x: 0.5, y: 0.0 });
         let options = ContactOptions {
             restitution,
             ..Default::default()
         };
-        let mut contact = ContactRk4::new(&sys, &s, options).expect("stepper");
+        let mut contact = Stepper::new(&sys, I::with_step(1e-2), &s)
+            .and_then(|solver| solver.with_contact_options(options))
+            .expect("stepper");
         for _ in 0..150 {
-            contact
-                .step_with::<I, _, 2, 2>(&sys, &mut s, 1e-2)
-                .expect("step");
+            contact.step(f64::INFINITY).expect("step");
         }
-        (contact.events.iter().map(|c| c.t).collect(), s)
+        let landings = contact.mode_changes().iter().map(|c| c.t).collect();
+        (landings, contact.state())
     }
     /// 150 single steps `sys.step::<I>` (each one contact-loop step from the state's own mode).
     fn ball_steps<I: Integrator>() -> ball::State {
@@ -376,8 +376,6 @@ fn friction_is_refused_by_the_symplectic_methods_naming_what_integrates_it() {
             y: u * alpha.sin(),
         },
     );
-    let mut contact = ContactRk4::new(&sys, &start, ContactOptions::default()).expect("stepper");
-    let mode = contact.mode();
     let check = |name: &str, result: lagrange::Result<()>, s: &State| {
         let err = result.expect_err(name);
         let text = err.to_string();
@@ -403,13 +401,12 @@ fn friction_is_refused_by_the_symplectic_methods_naming_what_integrates_it() {
         sys.step::<Variational>(&mut s, 1e-2),
         &s,
     );
-    let result = contact.step_with::<StormerVerlet, _, 2, 2>(&sys, &mut s, 1e-2);
-    check("ContactRk4::step_with::<StormerVerlet>", result, &s);
-    assert!(contact.events.is_empty() && contact.mode() == mode);
+    let result = Stepper::new(&sys, StormerVerlet::with_step(1e-2), &start)
+        .and_then(|mut solver| solver.step(f64::INFINITY));
+    check("a Störmer–Verlet solver", result, &s);
     // What the error names integrates it: Gauss–Legendre in the same loop.
-    contact
-        .step_with::<GaussLegendre2, _, 2, 2>(&sys, &mut s, 1e-2)
-        .expect("Gauss-Legendre");
+    let mut solver = Stepper::new(&sys, GaussLegendre2::with_step(1e-2), &start).expect("solver");
+    solver.step(f64::INFINITY).expect("Gauss-Legendre");
 }
 
 /// A ball in a box [0, a] × [0, b] under a tilted gravity (gₓ, −g_y): four unilateral walls, more
@@ -479,19 +476,24 @@ fn ball_in_a_box_settles_in_the_corner_with_two_contacts_held_by_rattle() {
     let landing = (2.0 * y0 / G).sqrt();
     let against_wall = (2.0 * (sys.a - x0) / sys.gx).sqrt();
     fn run<I: Integrator>(sys: &TiltedBox, x0: f64, y0: f64) -> (Vec<(f64, &'static str)>, State) {
-        let mut s = State::new(0.0, Coords { x: x0, y: y0 }, Coords { x: 0.0, y: 0.0 });
-        let mut contact = ContactRk4::new(sys, &s, ContactOptions::default()).expect("stepper");
+        let s = State::new(0.0, Coords { x: x0, y: y0 }, Coords { x: 0.0, y: 0.0 });
+        let mut contact = Stepper::new(sys, I::with_step(1e-2), &s).expect("stepper");
         for _ in 0..150 {
-            contact
-                .step_with::<I, _, 2, 2>(sys, &mut s, 1e-2)
-                .expect("step");
+            contact.step(f64::INFINITY).expect("step");
         }
         // The right wall and the floor closed, the others open.
         use RowMode::{Active, Inactive};
-        assert_eq!(contact.mode().rows, [Inactive, Active, Active, Inactive]);
+        assert_eq!(
+            contact.contacts().mode().rows,
+            [Inactive, Active, Active, Inactive]
+        );
         (
-            contact.events.iter().map(|c| (c.t, c.constraint)).collect(),
-            s,
+            contact
+                .mode_changes()
+                .iter()
+                .map(|c| (c.t, c.constraint))
+                .collect(),
+            contact.state(),
         )
     }
     for (name, (events, s)) in [

@@ -132,8 +132,14 @@ fn an_early_flip_is_detected_within_one_step() {
     let mut events = [Event::new(&upright)
         .direction(Direction::Falling)
         .terminal()];
-    let outcome = Dopri5::new(1e-11, 1e-12)
-        .integrate(&sys, &mut s, T_MAX, &mut events, |_| {})
+    let outcome = sys
+        .integrate(
+            Dopri5::new(1e-11, 1e-12),
+            &mut s,
+            T_MAX,
+            &mut events,
+            |_| {},
+        )
         .unwrap();
     assert!(matches!(outcome.reason, StopReason::Event(_)));
     let located = s.t;

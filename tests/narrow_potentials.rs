@@ -433,11 +433,11 @@ fn separate_springs_differentiate_like_one_potential() {
         springs_together::Coords { x: v },
     );
     let settings = Radau5::new(1e-9, 1e-9);
-    settings
-        .integrate(&apart, &mut a, 1.0, &mut [], |_| {})
+    apart
+        .integrate(settings, &mut a, 1.0, &mut [], |_| {})
         .unwrap();
-    settings
-        .integrate(&together, &mut b, 1.0, &mut [], |_| {})
+    together
+        .integrate(settings, &mut b, 1.0, &mut [], |_| {})
         .unwrap();
     for j in 0..4 {
         assert!((a.q.x[j] - b.q.x[j]).abs() < 1e-10, "{a:?} vs {b:?}");

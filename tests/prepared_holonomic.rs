@@ -6,6 +6,7 @@
 
 use lagrange::__private::{Dynamics, Prepare};
 use lagrange::constraints::Constraints;
+use lagrange::evaluation::Evaluate;
 use lagrange::integrate::Dop853;
 use lagrange::prelude::*;
 use lagrange::{Error, Validated};
@@ -112,12 +113,12 @@ fn the_declarations_take_the_prepared_holonomic_path() {
     // path with itself.
     const { assert!(<LatitudeBead as Prepare>::PREPARED_IN_ONE_BRANCH) };
     const { assert!(<CartesianPendulum as Prepare>::PREPARED_IN_ONE_BRANCH) };
-    const { assert!(<Validated<CartesianPendulum> as Dynamics<2>>::CLOSED_FORM) };
+    const { assert!(<Validated<CartesianPendulum> as Evaluate<2>>::ONE_BRANCH) };
 }
 
 /// q̈ of the plain mechanism (general path), of the handle's one branch (`accelerations`) and of
 /// the handle's checked path (`accelerations_at`): one KKT system solved three ways.
-fn assert_agree<M: Mechanism<N> + Copy, const N: usize>(plain: &M, q: [f64; N], v: [f64; N]) {
+fn assert_agree<M: Dynamics<N> + Copy, const N: usize>(plain: &M, q: [f64; N], v: [f64; N]) {
     let handle = (*plain).validated().unwrap();
     let state = State::new(0.0, M::Coords::from_array(q), M::Coords::from_array(v));
     let general = plain.accelerations(&state).unwrap().to_array();
@@ -203,7 +204,7 @@ fn the_prepared_projection_agrees_with_the_general_one() {
     for (q0, v0) in bead_states() {
         let (mut q1, mut v1) = (q0, v0);
         let (mut q2, mut v2) = (q0, v0);
-        BEAD.project(0.0, &mut q1, &mut v1).unwrap();
+        Evaluate::project(&BEAD, 0.0, &mut q1, &mut v1).unwrap();
         handle.project(0.0, &mut q2, &mut v2).unwrap();
         // The same Newton iterates (the mass-weighted least-norm step, M⁻¹ by prepared factors
         // instead of a fresh Cholesky), each converged to round-off: they agree to a few ulps of
@@ -225,7 +226,7 @@ fn the_prepared_projection_agrees_with_the_general_one() {
     ] {
         let (mut q1, mut v1) = (q0, v0);
         let (mut q2, mut v2) = (q0, v0);
-        let plain = BEAD.project(0.0, &mut q1, &mut v1).unwrap_err();
+        let plain = Evaluate::project(&BEAD, 0.0, &mut q1, &mut v1).unwrap_err();
         let through = handle.project(0.0, &mut q2, &mut v2).unwrap_err();
         assert_eq!(
             std::mem::discriminant(&plain),
@@ -252,17 +253,13 @@ fn an_adaptive_run_through_the_handle_follows_the_plain_one() {
         ..Dop853::new(1e-10, 1e-10)
     };
     let (mut plain, mut through) = (start, start);
-    let a = method
-        .integrate(&PENDULUM, &mut plain, 2.0, &mut [], |_| {})
+    let a = PENDULUM
+        .integrate(method, &mut plain, 2.0, &mut [], |_| {})
         .unwrap();
-    let b = method
-        .integrate(
-            &PENDULUM.validated().unwrap(),
-            &mut through,
-            2.0,
-            &mut [],
-            |_| {},
-        )
+    let b = PENDULUM
+        .validated()
+        .unwrap()
+        .integrate(method, &mut through, 2.0, &mut [], |_| {})
         .unwrap();
     assert_eq!(a.stats.accepted, b.stats.accepted);
     let (p, t) = (plain.q.to_array(), through.q.to_array());

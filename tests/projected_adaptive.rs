@@ -49,8 +49,8 @@ fn reference_position() -> [f64; 2] {
         angle_pendulum::Coords { theta: THETA0 },
         angle_pendulum::Coords { theta: OMEGA0 },
     );
-    Dop853::new(1e-13, 1e-13)
-        .integrate(&ANGLE, &mut a, T_END, &mut [], |_| {})
+    ANGLE
+        .integrate(Dop853::new(1e-13, 1e-13), &mut a, T_END, &mut [], |_| {})
         .expect("angle form");
     let (s, c) = a.q.theta.sin_cos();
     [ROD.l * s, -ROD.l * c]
@@ -63,8 +63,8 @@ macro_rules! projected_run {
         let sys = ROD.validated().unwrap();
         let mut s = cartesian_start();
         let mut worst = 0.0f64;
-        let out = $method
-            .integrate(&sys, &mut s, T_END, &mut [], |o| {
+        let out = sys
+            .integrate($method, &mut s, T_END, &mut [], |o| {
                 if let Observation::Step { state, .. } = o {
                     let [x, y] = state.q.to_array();
                     worst = worst.max(((x * x + y * y).sqrt() - ROD.l).abs());

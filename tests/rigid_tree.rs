@@ -8,11 +8,13 @@
 //! velocities ≤ 2), so 1e-10 relative to the size of the result leaves a margin of about 10⁴ over
 //! the observed differences (~1e-14) while catching any wrong term.
 
-use lagrange::dynamics::{equations_of_motion, kinetic_energy, momenta};
-use lagrange::model::Model;
+use lagrange::dynamics::equations_of_motion;
 use lagrange::prelude::*;
 use lagrange::tree::rigid::RigidTree;
-use nalgebra::SVector;
+
+#[path = "common/tree_vs_dense.rs"]
+mod tree_vs_dense;
+use tree_vs_dense::{agrees_with_dense, close};
 
 /// A spatial arm of three links, revolute about z, y, y, declared as the README teaches (each
 /// body's pose is its centre of mass and principal axes), with a payload welded to the last link.
@@ -226,7 +228,50 @@ pub mod bars {
     }
 }
 
-/// Random states, the same every run (a linear congruential sequence in [−1, 1)).
+/// A root link turned by a constant rotation written out as a matrix (`rot3([[..]; 3])`) and one
+/// given by roll, pitch and yaw, each before its joint: both constants of the tree pass.
+#[mechanism]
+pub mod turned {
+    pub struct Coords {
+        pub q1: f64,
+        pub q2: f64,
+    }
+    pub struct Turned {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[rigid_body(mass = m, inertia = [0.03, 0.02, 0.01])]
+    fn upper() -> Spatial {
+        let r = rot3([[0.0, -1.0, 0.0], [0.6, 0.0, 0.8], [-0.8, 0.0, 0.6]]) * rot_x(q1);
+        spatial(r * vec3(0.0, 0.0, -0.5 * l), r)
+    }
+    #[rigid_body(mass = m * 0.5, inertia = [0.02, 0.02, 0.005])]
+    fn lower() -> Spatial {
+        let r = upper.rotation * rpy(0.1, -0.2, 0.3) * rot_y(q2);
+        spatial(
+            upper.point(vec3(0.0, 0.0, -0.5 * l)) + r * vec3(0.0, 0.0, -0.5 * l),
+            r,
+        )
+    }
+    #[gravity]
+    fn down() -> Vec3 {
+        vec3(0.0, 0.0, -g)
+    }
+}
+
+#[test]
+fn constant_rotations_written_as_a_matrix_or_by_roll_pitch_yaw_keep_the_tree_pass() {
+    assert_eq!(<turned::Turned as RigidTree<2, 2>>::JOINTS.len(), 2);
+    let sys = || turned::Turned {
+        m: 1.3,
+        l: 0.6,
+        g: 9.81,
+    };
+    agrees_with_dense::<_, _, 2, 24>(&sys(), &sys());
+    agrees_with_dense::<_, _, 2, 24>(&sys(), &sys().validated().unwrap());
+}
+
 /// An arm whose links are declared by their joint frames, each with its centre of mass and a
 /// full inertia tensor in that frame (`com`, `inertia = [[..]; 3]`): the tree pass places the
 /// centre of mass and turns the tensor itself, the dense pass maps the frames to principal axes.
@@ -262,96 +307,19 @@ pub mod framed {
     }
 }
 
-fn states<const N: usize>(count: usize) -> Vec<([f64; N], [f64; N])> {
-    let mut seed: u64 = 0x2545_f491_4f6c_dd1d;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    };
-    (0..count)
-        .map(|_| {
-            let q = std::array::from_fn(|_| 1.5 * next());
-            let v = std::array::from_fn(|_| 2.0 * next());
-            (q, v)
-        })
-        .collect()
-}
-
-fn close(a: f64, b: f64, scale: f64, what: &str) {
-    assert!(
-        (a - b).abs() <= 1e-10 * scale.max(1.0),
-        "{what}: tree {a}, dense {b}"
-    );
-}
-
-type Named<M, const N: usize> = <M as lagrange::mechanism::Dynamics<N>>::Coords;
-
-/// Every evaluation through the tree pass against the dense pass of the same declaration.
-fn agrees_with_dense<M, const N: usize, const K: usize>(sys: &M)
-where
-    M: Mechanism<N> + Model<N, K>,
-{
-    for (q, v) in states::<N>(6) {
-        let s = State::new(
-            0.0,
-            Named::<M, N>::from_array(q),
-            Named::<M, N>::from_array(v),
-        );
-        let dense = equations_of_motion::<M, f64, N, K>(sys, 0.0, &q, &v);
-        let m = sys.mass_matrix(&s).unwrap();
-        let scale = dense.mass_matrix.abs().max();
-        for (a, b) in m.iter().zip(dense.mass_matrix.iter()) {
-            close(*a, *b, scale, "M");
-        }
-        let f = sys.generalized_forces(&s).unwrap().to_array();
-        let rhs = dense.generalized_forces - dense.inertial_terms;
-        let expected = dense.mass_matrix.cholesky().unwrap().solve(&rhs);
-        let qdd = sys.accelerations(&s).unwrap().to_array();
-        let scale = expected.abs().max();
-        for j in 0..N {
-            close(
-                f[j],
-                dense.generalized_forces[j],
-                dense.generalized_forces.abs().max(),
-                "𝓕",
-            );
-            close(qdd[j], expected[j], scale, "q̈");
-        }
-        // Inverse dynamics of a q̈ that is not the free motion's: M q̈ + b − 𝓕.
-        let wanted = SVector::<f64, N>::from_fn(|j, _| 0.3 * j as f64 - 0.5);
-        let tau = sys
-            .inverse_dynamics(&s, &Named::<M, N>::from_array(wanted.into()))
-            .unwrap()
-            .to_array();
-        let expected = dense.mass_matrix * wanted + dense.inertial_terms - dense.generalized_forces;
-        for j in 0..N {
-            close(tau[j], expected[j], expected.abs().max(), "τ");
-        }
-        let t_dense = kinetic_energy::<M, f64, N, K>(sys, 0.0, &q, &v);
-        close(sys.kinetic_energy(&s).unwrap(), t_dense, t_dense, "T");
-        let p_dense = momenta::<M, f64, N, K>(sys, 0.0, &q, &v);
-        let p = sys.momenta(&s).unwrap().to_array();
-        for j in 0..N {
-            close(p[j], p_dense[j], 1.0, "p");
-        }
-    }
-}
-
 #[test]
 fn a_spatial_arm_takes_the_tree_pass_and_agrees_with_the_dense_one() {
     // The generated impl is the proof the recursion is taken: 4 bodies (the payload among them).
     assert_eq!(<arm::Arm as RigidTree<3, 4>>::JOINTS.len(), 4);
-    agrees_with_dense::<_, 3, 39>(&arm_params());
-    agrees_with_dense::<_, 3, 39>(&arm_params().validated().unwrap());
+    agrees_with_dense::<_, _, 3, 39>(&arm_params(), &arm_params());
+    agrees_with_dense::<_, _, 3, 39>(&arm_params(), &arm_params().validated().unwrap());
 }
 
 #[test]
 fn a_branched_tree_with_slides_forces_and_turned_axes_agrees_with_the_dense_pass() {
     assert_eq!(<walker::Walker as RigidTree<6, 6>>::JOINTS.len(), 6);
-    agrees_with_dense::<_, 6, 72>(&walker_params());
-    agrees_with_dense::<_, 6, 72>(&walker_params().validated().unwrap());
+    agrees_with_dense::<_, _, 6, 72>(&walker_params(), &walker_params());
+    agrees_with_dense::<_, _, 6, 72>(&walker_params(), &walker_params().validated().unwrap());
 }
 
 #[test]
@@ -362,7 +330,7 @@ fn a_planar_chain_of_bars_agrees_with_the_dense_pass() {
         l: 0.8,
         g: 9.81,
     };
-    agrees_with_dense::<_, 3, 9>(&sys);
+    agrees_with_dense::<_, _, 3, 9>(&sys, &sys);
 }
 
 #[test]
@@ -385,16 +353,21 @@ fn a_free_swinging_arm_keeps_its_energy() {
     );
     let e0 = sys.energy(&s).unwrap();
     let mut events = [];
-    lagrange::Dop853::new(1e-12, 1e-12)
-        .integrate(&sys, &mut s, 5.0, &mut events, |_| {})
-        .unwrap();
+    sys.integrate(
+        lagrange::Dop853::new(1e-12, 1e-12),
+        &mut s,
+        5.0,
+        &mut events,
+        |_| {},
+    )
+    .unwrap();
     assert!((sys.energy(&s).unwrap() - e0).abs() < 1e-8 * e0.abs().max(1.0));
 }
 
 #[test]
 fn links_declared_by_their_frames_with_full_tensors_agree_with_the_dense_pass() {
     assert_eq!(<framed::Framed as RigidTree<2, 2>>::JOINTS.len(), 2);
-    let sys = framed::Framed {
+    let sys = || framed::Framed {
         m1: 1.5,
         m2: 0.9,
         l: 0.6,
@@ -405,6 +378,135 @@ fn links_declared_by_their_frames_with_full_tensors_agree_with_the_dense_pass() 
         izz: 0.02,
         g: 9.81,
     };
-    agrees_with_dense::<_, 2, 24>(&sys);
-    agrees_with_dense::<_, 2, 24>(&sys.validated().unwrap());
+    agrees_with_dense::<_, _, 2, 24>(&sys(), &sys());
+    agrees_with_dense::<_, _, 2, 24>(&sys(), &sys().validated().unwrap());
+}
+
+/// The chain of bars with its last link's end held at a point: two loop-closure rows (a
+/// four-bar linkage with the ground as the fourth bar). The tree pass gives M and b, the rows are
+/// solved on top of them.
+#[mechanism]
+pub mod bars_loop {
+    pub struct Coords {
+        pub a: f64,
+        pub b: f64,
+        pub c: f64,
+    }
+    pub struct BarsLoop {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+        pub px: f64,
+        pub py: f64,
+    }
+    #[rigid_body(mass = m, inertia = m * l * l / 12.0)]
+    fn bar1() -> Planar {
+        planar(vec2(0.5 * l, 0.0).rotated(a), a)
+    }
+    #[rigid_body(mass = m * 1.5, inertia = m * l * l / 8.0)]
+    fn bar2() -> Planar {
+        let angle = bar1.angle + b;
+        planar(
+            bar1.point(vec2(0.5 * l, 0.0)) + vec2(0.5 * l, 0.0).rotated(angle),
+            angle,
+        )
+    }
+    #[rigid_body(mass = m * 0.7, inertia = m * l * l / 10.0)]
+    fn bar3() -> Planar {
+        let angle = bar2.angle + c;
+        planar(
+            bar2.point(vec2(0.5 * l, 0.0)) + vec2(0.5 * l, 0.0).rotated(angle),
+            angle,
+        )
+    }
+    #[gravity]
+    fn down() -> Vec2 {
+        vec2(0.0, -g)
+    }
+    /// The far end of bar 3, l (cos a + cos(a + b) + cos(a + b + c)) along x, held at px.
+    #[constraint]
+    fn end_x() -> f64 {
+        l * (a.cos() + (a + b).cos() + (a + b + c).cos()) - px
+    }
+    #[constraint]
+    fn end_y() -> f64 {
+        l * (a.sin() + (a + b).sin() + (a + b + c).sin()) - py
+    }
+}
+
+#[test]
+fn a_closed_loop_on_a_tree_takes_the_tree_pass_under_its_constraint_rows() {
+    assert_eq!(<bars_loop::BarsLoop as RigidTree<3, 3>>::JOINTS.len(), 3);
+    let (m, l, g) = (1.0, 0.8, 9.81);
+    // A closed configuration: the end's place at q0 is where it is held.
+    let q0 = [0.3, 0.9, -1.2];
+    let angles = |q: &[f64; 3]| [q[0], q[0] + q[1], q[0] + q[1] + q[2]];
+    let phi = angles(&q0);
+    let (px, py) = (
+        l * phi.iter().map(|p| p.cos()).sum::<f64>(),
+        l * phi.iter().map(|p| p.sin()).sum::<f64>(),
+    );
+    let sys = bars_loop::BarsLoop { m, l, g, px, py };
+    // J of the two rows: ∂/∂q_j of l Σ_i (cos φ_i, sin φ_i) sums the bars at and beyond joint j.
+    let jacobian = |q: &[f64; 3]| {
+        let phi = angles(q);
+        nalgebra::SMatrix::<f64, 2, 3>::from_fn(|r, j| {
+            (j..3)
+                .map(|i| match r {
+                    0 => -l * phi[i].sin(),
+                    _ => l * phi[i].cos(),
+                })
+                .sum()
+        })
+    };
+    let jac = jacobian(&q0);
+    // q̇ along the loop's one freedom: the null direction of J (the rows' cross product).
+    let (r0, r1) = (jac.row(0).transpose(), jac.row(1).transpose());
+    let v0: [f64; 3] = (0.7 * r0.cross(&r1) / r0.cross(&r1).norm()).into();
+    // J̇ q̇ = −l Σ_i (cos φ_i, sin φ_i) φ̇_i².
+    let rates = [v0[0], v0[0] + v0[1], v0[0] + v0[1] + v0[2]];
+    let jdot_v = nalgebra::Vector2::new(
+        -l * (0..3)
+            .map(|i| phi[i].cos() * rates[i] * rates[i])
+            .sum::<f64>(),
+        -l * (0..3)
+            .map(|i| phi[i].sin() * rates[i] * rates[i])
+            .sum::<f64>(),
+    );
+    // The reference: the KKT system [M Jᵀ; J 0] [q̈; −λ] = [𝓕 − b; −J̇ q̇] on the dense pass's M, 𝓕, b.
+    let dense = equations_of_motion::<_, f64, 3, 9>(&sys, 0.0, &q0, &v0);
+    let mut kkt = nalgebra::SMatrix::<f64, 5, 5>::zeros();
+    kkt.fixed_view_mut::<3, 3>(0, 0)
+        .copy_from(&dense.mass_matrix);
+    kkt.fixed_view_mut::<2, 3>(3, 0).copy_from(&jac);
+    kkt.fixed_view_mut::<3, 2>(0, 3).copy_from(&jac.transpose());
+    let mut rhs = nalgebra::SVector::<f64, 5>::zeros();
+    rhs.fixed_rows_mut::<3>(0)
+        .copy_from(&(dense.generalized_forces - dense.inertial_terms));
+    rhs.fixed_rows_mut::<2>(3).copy_from(&(-jdot_v));
+    let expected = kkt.lu().solve(&rhs).unwrap();
+    let scale = expected.fixed_rows::<3>(0).abs().max();
+    let s = State::new(
+        0.0,
+        bars_loop::Coords::from_array(q0),
+        bars_loop::Coords::from_array(v0),
+    );
+    for qdd in [
+        sys.accelerations(&s).unwrap().to_array(),
+        bars_loop::BarsLoop { m, l, g, px, py }
+            .validated()
+            .unwrap()
+            .accelerations(&s)
+            .unwrap()
+            .to_array(),
+    ] {
+        for j in 0..3 {
+            close(qdd[j], expected[j], scale, "q̈ under the loop's rows");
+        }
+    }
+    // And M, 𝓕 from the tree pass equal the dense pass's under the rows too.
+    let tree_m = sys.mass_matrix(&s).unwrap();
+    for (a, b) in tree_m.iter().zip(dense.mass_matrix.iter()) {
+        close(*a, *b, dense.mass_matrix.abs().max(), "M");
+    }
 }

@@ -1,7 +1,7 @@
 //! Trajectory sensitivities (`lagrange::sensitivity`) against closed forms and finite differences.
 
 use lagrange::prelude::*;
-use lagrange::sensitivity::{Seed, Tangent};
+use lagrange::sensitivity::Seed;
 
 mod common;
 use common::pendulum;
@@ -84,14 +84,10 @@ fn small_oscillations_have_the_linear_sensitivities() {
     .validated()
     .unwrap();
     let s0 = pendulum::State::at_rest(pendulum::Coords { theta: 1e-4 });
-    let mut run = Tangent::new(
-        &sys,
-        &s0,
-        [Seed::Coordinate("theta"), Seed::Velocity("theta")],
-    )
-    .unwrap();
+    let seeds = [Seed::Coordinate("theta"), Seed::Velocity("theta")];
+    let mut run = common::rk4_tangent(&sys, &s0, seeds, 1e-3).unwrap();
     for _ in 0..5000 {
-        run.rk4_step(1e-3).unwrap();
+        run.step(f64::INFINITY).unwrap();
     }
     let out = run.sensitivities();
     let (omega, t) = ((G / 2.0).sqrt(), out.state.t);
@@ -129,7 +125,7 @@ fn large_amplitude_period_derivative_matches_elliptic_integrals() {
     let (l, theta0) = (1.5, 2.0);
     let sys = pendulum::Pendulum { m: 1.0, l, g: G }.validated().unwrap();
     let s0 = pendulum::State::at_rest(pendulum::Coords { theta: theta0 });
-    let run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta")]).unwrap();
+    let run = common::rk4_tangent(&sys, &s0, [Seed::Coordinate("theta")], 1e-3).unwrap();
     // The first passage through θ = 0, RK4 steps of h = 1e-3.
     let at_bottom = common::first_passage(&sys, run, 1e-3);
     let quarter = at_bottom.state.t;
@@ -160,18 +156,25 @@ fn unknown_coordinates_are_named() {
         theta1: 0.1,
         theta2: 0.0,
     });
-    let err = Tangent::new(&sys, &s0, [Seed::Velocity("theta3")]).unwrap_err();
+    let err = common::rk4_tangent(&sys, &s0, [Seed::Velocity("theta3")], 1e-3)
+        .map(|_| ())
+        .unwrap_err();
     assert!(matches!(err, lagrange::Error::UnknownCoordinate { ref name, .. } if name == "theta3"));
-    let mut run = Tangent::new(&sys, &s0, [Seed::Coordinate("theta1")]).unwrap();
+    let err = common::rk4_tangent(&sys, &s0, [Seed::Coordinate("theta1")], -1.0)
+        .map(|_| ())
+        .unwrap_err();
+    assert!(matches!(err, lagrange::Error::InvalidStep { .. }), "{err}");
+    // A step before the solver's time is refused and changes nothing.
+    let mut run = common::rk4_tangent(&sys, &s0, [Seed::Coordinate("theta1")], 1e-3).unwrap();
     assert!(matches!(
-        run.rk4_step(-1.0),
-        Err(lagrange::Error::InvalidStep { .. })
+        run.step(-1.0),
+        Err(lagrange::Error::InvalidEndTime { .. })
     ));
     assert_eq!(run.state(), s0, "a refused step changes nothing");
 }
 
-/// Dopri5 with its step sizes frozen from the plain run: the real parts are that run bit for bit,
-/// and the derivatives agree with RK4's (h = 1e-3) on the double pendulum. Both approximate the
+/// Dopri5 with its step sizes frozen from the plain run: the state is that run bit for bit, and
+/// the derivatives agree with RK4's (h = 1e-3) on the double pendulum. Both approximate the
 /// exact sensitivities: RK4's error is that of its solution, O(h⁴) ≈ 1e-11 here (the
 /// finite-difference test above holds it to 1e-10); Dopri5's is governed by rtol = 1e-11 on the
 /// state, amplified by at most the largest sensitivity (≈ 4) over its ~1000 steps: ≤ 1e-7 at
@@ -192,17 +195,20 @@ fn dopri5_with_frozen_steps_matches_rk4() {
     );
     let seeds = [Seed::Coordinate("theta1"), Seed::Velocity("theta2")];
     let settings = Dopri5::new(1e-11, 1e-13);
-    let adaptive =
-        lagrange::sensitivity::integrate_dopri5(&sys, &s0, seeds, settings, 2.0).unwrap();
-    let mut plain = s0;
-    settings
-        .integrate(&sys, &mut plain, 2.0, &mut [], |_| {})
+    let mut run = Stepper::new(&sys, settings, &s0)
+        .unwrap()
+        .with_sensitivities(seeds)
         .unwrap();
-    assert_eq!(adaptive.state, plain, "the real parts are the plain run");
+    run.integrate(2.0, &mut [], |_| {}).unwrap();
+    let adaptive = run.sensitivities();
+    let mut plain = s0;
+    sys.integrate(settings, &mut plain, 2.0, &mut [], |_| {})
+        .unwrap();
+    assert_eq!(adaptive.state, plain, "the state is the plain run's");
 
-    let mut run = Tangent::new(&sys, &s0, seeds).unwrap();
+    let mut run = common::rk4_tangent(&sys, &s0, seeds, 1e-3).unwrap();
     for _ in 0..2000 {
-        run.rk4_step(1e-3).unwrap();
+        run.step(f64::INFINITY).unwrap();
     }
     let fixed = run.sensitivities();
     let mut worst: f64 = 0.0;
@@ -236,7 +242,9 @@ fn constrained_mechanisms_are_refused() {
         g: G,
     };
     let s0 = cartesian_pendulum::State::at_rest(cartesian_pendulum::Coords { x: 0.6, y: -0.8 });
-    let err = Tangent::new(&sys, &s0, [Seed::Coordinate("x")]).unwrap_err();
+    let err = common::rk4_tangent(&sys, &s0, [Seed::Coordinate("x")], 1e-3)
+        .map(|_| ())
+        .unwrap_err();
     assert!(matches!(
         err,
         lagrange::Error::UnsuitableMethod {

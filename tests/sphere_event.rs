@@ -69,8 +69,8 @@ fn leave(v0: f64, tol: f64) -> (f64, f64, usize) {
     let normal = |s: &State| constraint_forces(&sys, s).expect("forces").multipliers[0];
     let mut events = [Event::new(&normal).direction(Direction::Falling).terminal()];
     let mut s = s0;
-    let outcome = Dop853::new(tol, tol)
-        .integrate(&sys, &mut s, 10.0, &mut events, |_| {})
+    let outcome = sys
+        .integrate(Dop853::new(tol, tol), &mut s, 10.0, &mut events, |_| {})
         .expect("integration");
     let StopReason::Event(hit) = outcome.reason else {
         panic!("the particle did not leave: {:?}", outcome.reason)

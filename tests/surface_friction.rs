@@ -25,8 +25,8 @@ fn curved_stop_time_converges_as_the_step_shrinks() {
         .iter()
         .map(|&h| {
             let (s, stepper, _) = rough_plane::slide(&sys, 3.0, h, (0.8 / h) as usize);
-            assert_eq!(stepper.events.len(), 1, "one stop, no chattering");
-            let t = stepper.events[0].t;
+            assert_eq!(stepper.mode_changes().len(), 1, "one stop, no chattering");
+            let t = stepper.mode_changes()[0].t;
             ((t - t_s).abs() / t_s, (s.q.x - x_s).hypot(s.q.y - y_s))
         })
         .collect();
@@ -45,7 +45,7 @@ fn sliding_friction_is_mu_k_n_against_the_slip_direction() {
     // While sliding, the friction force (f₁, f₂) = −μₖ N ŝ exactly (N = m g): a solve, round-off.
     let sys = pushed_puck();
     let (s, stepper, _) = rough_plane::slide(&sys, 3.0, 1e-3, 300);
-    assert_eq!(stepper.mode().rows[1], RowMode::Sliding);
+    assert_eq!(stepper.contacts().mode().rows[1], RowMode::Sliding);
     let f = constraint_forces(&sys, &s).expect("forces");
     let normal = sys.m * sys.g;
     let speed = s.v.x.hypot(s.v.y);
@@ -59,7 +59,7 @@ fn stuck_friction_holds_the_push_within_the_cone() {
     // After the stop the push F < μₛ m g is held: the stick multipliers are (0, −F).
     let sys = pushed_puck();
     let (s, stepper, _) = rough_plane::slide(&sys, 3.0, 1e-3, 1000);
-    assert_eq!(stepper.mode().rows[1], RowMode::Stick);
+    assert_eq!(stepper.contacts().mode().rows[1], RowMode::Stick);
     let f = constraint_forces(&sys, &s).expect("forces");
     assert!(f.multipliers[1].abs() < 1e-12 && (f.multipliers[2] + sys.push).abs() < 1e-12);
 }
@@ -89,7 +89,7 @@ fn pushed_block_sticks_just_below_and_slides_just_above_the_cone() {
         match pushed_block::slides(&sys) {
             None => {
                 assert!(factor < 1.0);
-                assert_eq!(stepper.mode().rows[1], RowMode::Stick);
+                assert_eq!(stepper.contacts().mode().rows[1], RowMode::Stick);
                 assert!(level.hypot(up) < 1e-14);
             }
             Some((a, (e1, e2))) => {

@@ -9,7 +9,7 @@ mod squeezer_model;
 #[allow(dead_code)]
 mod units;
 
-use lagrange::integrate::{FixedStepper, Radau5Stepper, Stepper};
+use lagrange::integrate::{Method, Stepper};
 use lagrange::prelude::*;
 use lagrange::{GaussLegendre2, ImplicitMidpoint, StormerVerlet, Variational};
 use lagrange_gallery::scenes::{cartesian_pendulum, four_bar, spinning_hoop};
@@ -169,8 +169,8 @@ fn the_implicit_methods_step_a_planet_in_si_units_as_in_natural_units() {
         h_init: Some(h0),
         ..Radau5::new(1e-8, 1e-300)
     };
-    let mut a = Radau5Stepper::new(&sys, settings(h), &s).expect("Radau5 in SI units");
-    let mut b = Radau5Stepper::new(&natural, settings(h_natural), &s_natural).unwrap();
+    let mut a = Stepper::new(&sys, settings(h), &s).expect("Radau5 in SI units");
+    let mut b = Stepper::new(&natural, settings(h_natural), &s_natural).unwrap();
     a.integrate(20.0 * h, &mut [], |_| {}).unwrap();
     b.integrate(20.0 * h_natural, &mut [], |_| {}).unwrap();
     assert_eq!(a.stats(), b.stats());
@@ -444,7 +444,7 @@ fn every_newton_driver_takes_the_same_iterations_in_any_units() {
 
 /// `n` steps of the solver's h each (never shortened to land on an end time: whether t₀ + k·h
 /// rounds to the same end in every system of units is no question for the methods).
-fn steps<C: Coordinates<N>, const N: usize>(solver: &mut impl Stepper<C, N>, n: usize) {
+fn steps<M: Mechanism<N>, Me: Method<N>, const N: usize>(solver: &mut Stepper<M, Me, N>, n: usize) {
     for _ in 0..n {
         solver.step(f64::MAX).expect("step");
     }
@@ -458,7 +458,7 @@ fn squeezer_counts(u: &Units, h_si: f64) -> Vec<(usize, usize, usize)> {
     let mut counts = Vec::new();
     macro_rules! fixed {
         ($method:ty) => {{
-            let mut solver = FixedStepper::<_, $method, 7>::new(&sys, &s, h).unwrap();
+            let mut solver = Stepper::new(&sys, <$method>::with_step(h), &s).unwrap();
             steps(&mut solver, 10);
             let st = solver.stats();
             counts.push((st.newton_iterations, st.jacobians, st.factorizations));
@@ -479,7 +479,7 @@ fn squeezer_counts(u: &Units, h_si: f64) -> Vec<(usize, usize, usize)> {
         h_init: Some(h),
         ..Radau5::new(1e-8, 1e-300)
     };
-    let mut radau = Radau5Stepper::new(&sys, settings, &moving).unwrap();
+    let mut radau = Stepper::new(&sys, settings, &moving).unwrap();
     let end = moving.t + end;
     radau.integrate(end, &mut [], |_| {}).expect("Radau5");
     let st = radau.stats();
@@ -511,7 +511,7 @@ fn pendulum_counts(u: &Units) -> (usize, usize, usize) {
         },
     );
     let h = u.express(1e-3, units::TIME);
-    let mut solver = FixedStepper::<_, StormerVerlet, 2>::new(&sys, &s, h).unwrap();
+    let mut solver = Stepper::new(&sys, StormerVerlet::with_step(h), &s).unwrap();
     steps(&mut solver, 50);
     let st = solver.stats();
     (st.newton_iterations, st.jacobians, st.factorizations)
@@ -535,7 +535,7 @@ fn hoop_counts(u: &Units) -> (usize, usize, usize) {
         },
     );
     let h = u.express(1e-3, units::TIME);
-    let mut solver = FixedStepper::<_, GaussLegendre2, 1>::new(&sys, &s, h).unwrap();
+    let mut solver = Stepper::new(&sys, GaussLegendre2::with_step(h), &s).unwrap();
     steps(&mut solver, 50);
     let st = solver.stats();
     (st.newton_iterations, st.jacobians, st.evaluations)

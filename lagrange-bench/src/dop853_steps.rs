@@ -10,7 +10,7 @@
 //! and accuracy, the fewest evaluations of a run reaching it (the report's "cheapest" criterion).
 
 use crate::{distance, Setup};
-use lagrange_core::integrate::{Dop853, Stats};
+use lagrange_core::integrate::{Dop853, Stats, Stepper};
 use lagrange_core::{Coordinates, Mechanism, State};
 use std::fmt::Write as _;
 
@@ -25,10 +25,11 @@ fn ours<M: Mechanism<N>, const N: usize>(
     settings: Dop853,
 ) -> Run<N> {
     let s = start;
-    let mut state = State::new(s.t, M::Coords::from_array(s.q), M::Coords::from_array(s.v));
-    let out = settings
-        .integrate(mechanism, &mut state, t_end, &mut [], |_| {})
+    let start = State::new(s.t, M::Coords::from_array(s.q), M::Coords::from_array(s.v));
+    let out = Stepper::new(mechanism, settings, &start)
+        .and_then(|mut solver| solver.integrate(t_end, &mut [], |_| {}))
         .map_err(|e| e.to_string())?;
+    let state = out.state;
     let Stats {
         accepted,
         rejected,

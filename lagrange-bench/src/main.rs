@@ -25,7 +25,7 @@ mod stiff;
 
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
-use lagrange_core::integrate::{Dop853, ImplicitStepStats, NewtonMemory};
+use lagrange_core::integrate::{Dop853, ImplicitStepStats, NewtonMemory, Stepper};
 use lagrange_core::Coordinates;
 use lagrange_core::{
     Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Radau5, Rk4, State,
@@ -284,20 +284,22 @@ fn run_adaptive<M: Mechanism<N>, const N: usize>(
         }
     };
     // Dop853 without its dense output (no events here; the peer's sparse output skips it too).
+    let t_end = setup.t_end;
     let out = match method {
-        Adaptive::Dop853 => Dop853 {
-            dense: false,
-            ..Dop853::new(tol, tol)
+        Adaptive::Dop853 => {
+            let settings = Dop853 {
+                dense: false,
+                ..Dop853::new(tol, tol)
+            };
+            Stepper::new(m, settings, &s).and_then(|mut r| r.integrate(t_end, &mut [], observe))
         }
-        .integrate(m, &mut s, setup.t_end, &mut [], observe),
-        Adaptive::Dopri5 => {
-            Dopri5::new(tol, tol).integrate(m, &mut s, setup.t_end, &mut [], observe)
-        }
-        Adaptive::Radau5 => {
-            Radau5::new(tol, tol).integrate(m, &mut s, setup.t_end, &mut [], observe)
-        }
+        Adaptive::Dopri5 => Stepper::new(m, Dopri5::new(tol, tol), &s)
+            .and_then(|mut r| r.integrate(t_end, &mut [], observe)),
+        Adaptive::Radau5 => Stepper::new(m, Radau5::new(tol, tol), &s)
+            .and_then(|mut r| r.integrate(t_end, &mut [], observe)),
     }
     .map_err(|e| e.to_string())?;
+    s = out.state;
     Ok((
         s.q.to_array(),
         s.v.to_array(),
@@ -686,10 +688,14 @@ fn main() {
     // 3. Double pendulum, both arms horizontal at rest, to t = 10; reference by two methods.
     let dp_start = State::new(0.0, [std::f64::consts::FRAC_PI_2; 2], [0.0; 2]);
     let dp_t = 10.0;
-    let mut ref_a = in_coordinates::<double_pendulum::DoublePendulum, 2>(&dp_start);
-    Dopri5::new(1e-14, 1e-14)
-        .integrate(&DOUBLE_PENDULUM, &mut ref_a, dp_t, &mut [], |_| {})
-        .expect("reference");
+    let ref_a = Stepper::new(
+        &DOUBLE_PENDULUM,
+        Dopri5::new(1e-14, 1e-14),
+        &in_coordinates::<double_pendulum::DoublePendulum, 2>(&dp_start),
+    )
+    .and_then(|mut r| r.integrate(dp_t, &mut [], |_| {}))
+    .expect("reference")
+    .state;
     let mut ref_b = in_coordinates::<double_pendulum::DoublePendulum, 2>(&dp_start);
     let n_ref = 1 << 17;
     for _ in 0..n_ref {
@@ -718,10 +724,14 @@ fn main() {
     };
     // 4. FPU chain to t = 10 (hω = 2 at n = 250); reference Dopri5 1e-14, checked by GL2.
     let fpu_t = 10.0;
-    let mut fpu_ref = in_coordinates::<fpu_chain::Fpu, 6>(&fpu_start());
-    Dopri5::new(1e-14, 1e-14)
-        .integrate(&FPU, &mut fpu_ref, fpu_t, &mut [], |_| {})
-        .expect("reference");
+    let fpu_ref = Stepper::new(
+        &FPU,
+        Dopri5::new(1e-14, 1e-14),
+        &in_coordinates::<fpu_chain::Fpu, 6>(&fpu_start()),
+    )
+    .and_then(|mut r| r.integrate(fpu_t, &mut [], |_| {}))
+    .expect("reference")
+    .state;
     let mut fpu_ref_b = in_coordinates::<fpu_chain::Fpu, 6>(&fpu_start());
     for _ in 0..n_ref {
         FPU.step::<GaussLegendre2>(&mut fpu_ref_b, fpu_t / n_ref as f64)

@@ -3,7 +3,7 @@
 use crate::kepler::{kepler, KEPLER};
 use crate::problems::kepler_start;
 use crate::Row;
-use lagrange_core::integrate::Observation;
+use lagrange_core::integrate::{Observation, Stepper};
 use lagrange_core::{
     Coordinates, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State,
     StormerVerlet, Variational,
@@ -188,12 +188,13 @@ pub fn kepler_long_run(periods: usize) -> Vec<(String, Vec<(f64, f64)>)> {
             fixed::<StormerVerlet>(periods, per, h),
         ),
     ];
-    let mut s = kepler_state();
+    let s = kepler_state();
     let e0 = KEPLER.energy(&s).unwrap();
     let mut pts = Vec::new();
     let mut next = 2.0 * std::f64::consts::PI;
     let t_end = periods as f64 * 2.0 * std::f64::consts::PI;
-    let _ = Dopri5::new(1e-8, 1e-8).integrate(&KEPLER, &mut s, t_end, &mut [], |o| {
+    let mut solver = Stepper::new(&KEPLER, Dopri5::new(1e-8, 1e-8), &s).expect("start");
+    let _ = solver.integrate(t_end, &mut [], |o| {
         if let Observation::Step { state, .. } = o {
             if state.t >= next {
                 pts.push((state.t, (KEPLER.energy(state).unwrap() - e0).abs()));

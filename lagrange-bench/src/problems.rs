@@ -205,7 +205,7 @@ pub fn wedge_rhs(_t: f64, _q: &[f64; 2], _v: &[f64; 2]) -> [f64; 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lagrange_core::mechanism::Dynamics as _;
+    use lagrange_core::evaluation::Evaluate as _;
 
     #[test]
     fn hand_written_right_hand_sides_match_the_models() {

@@ -1,5 +1,7 @@
 //! `robots`: lagrange's side of the robot peer benchmark (`scripts/peers/robots.sh`), on the five
-//! declarations of `lagrange-robots`, at the states of the file `robots.py states` writes.
+//! declarations of `lagrange-robots` (and, with the feature `example-robot-data`, the five robot
+//! files of that package), at the states of the file `robots.py states` (or
+//! `example_robots.py`) writes.
 //!
 //! ```text
 //! robots values --states FILE        q̈ (`accelerations`), τ (`inverse_dynamics` at the file's q̈)
@@ -131,19 +133,66 @@ fn read_states(path: &Path) -> BoxResult<Vec<(String, Rows)>> {
     Ok(robots)
 }
 
-/// A robot's states as the declaration's `State`s, with the q̈ for inverse dynamics; the file's
-/// coordinate names must be the declaration's, in its order.
-fn states<M: Mechanism<N>, const N: usize>(
+/// A URDF joint's name as `#[lagrange::urdf]` names its coordinate (for the states of
+/// `example_robots.py`, which carry the files' joint names): lower case, every character that
+/// cannot be in an identifier turned into `_` (the names of these files need no other rule).
+fn as_coordinate(joint: &str) -> String {
+    joint
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// Where each of the file's coordinates stands in the declaration: `order[i]` is the declared
+/// index of the file's `i`-th name. The file may list the coordinates in another order (the
+/// peers' joint order) and by their URDF joint names, but every name must be a declared one, each
+/// once.
+fn declared_order<M: Mechanism<N>, const N: usize>(
     robot: &str,
     rows: &Rows,
-) -> BoxResult<Vec<Sample<M::Coords>>> {
+) -> BoxResult<[usize; N]> {
     let declared = <M::Coords as Coordinates<N>>::NAMES;
-    if rows.names != declared {
-        return Err(format!("`{robot}`: the file's coordinates are not the declaration's").into());
+    let mut order = [usize::MAX; N];
+    if rows.names.len() != N {
+        return Err(format!(
+            "`{robot}`: the file has {} coordinates, the declaration {N}",
+            rows.names.len()
+        )
+        .into());
     }
-    let part = |s: &[f64], i: usize| M::Coords::from_array(std::array::from_fn(|j| s[i * N + j]));
-    Ok(rows
-        .states
+    for (i, name) in rows.names.iter().enumerate() {
+        match declared.iter().position(|d| *d == as_coordinate(name)) {
+            Some(k) if !order.contains(&k) => order[i] = k,
+            _ => {
+                return Err(format!(
+                    "`{robot}`: the file's coordinate `{name}` is not one of the declaration's"
+                )
+                .into())
+            }
+        }
+    }
+    Ok(order)
+}
+
+/// A robot's states as the declaration's `State`s, with the q̈ for inverse dynamics.
+fn states<M: Mechanism<N>, const N: usize>(
+    rows: &Rows,
+    order: &[usize; N],
+) -> Vec<Sample<M::Coords>> {
+    let part = |s: &[f64], i: usize| {
+        let mut declared = [0.0; N];
+        for (j, &k) in order.iter().enumerate() {
+            declared[k] = s[i * N + j];
+        }
+        M::Coords::from_array(declared)
+    };
+    rows.states
         .iter()
         .map(|s| {
             (
@@ -155,7 +204,7 @@ fn states<M: Mechanism<N>, const N: usize>(
                 part(s, 2),
             )
         })
-        .collect())
+        .collect()
 }
 
 fn print_values(robot: &str, quantity: &str, k: usize, values: impl IntoIterator<Item = f64>) {
@@ -228,25 +277,23 @@ fn run<M: Mechanism<N>, const N: usize>(
     rows: &Rows,
     mode: &Mode,
 ) -> BoxResult<()> {
-    let states = states::<M, N>(robot, rows)?;
+    let order = declared_order::<M, N>(robot, rows)?;
+    let states = states::<M, N>(rows, &order);
+    // A declared vector in the file's order.
+    let in_file_order = |x: [f64; N]| order.map(|k| x[k]);
     match *mode {
         Mode::Values { .. } => {
             for (k, (state, qdd)) in states.iter().enumerate() {
-                print_values(robot, "qdd", k, sys.accelerations(state)?.to_array());
-                print_values(
-                    robot,
-                    "tau",
-                    k,
-                    sys.inverse_dynamics(state, qdd)?.to_array(),
-                );
-                // Row-major: M(i, j) for i, then j.
+                let qdd_out = in_file_order(sys.accelerations(state)?.to_array());
+                print_values(robot, "qdd", k, qdd_out);
+                let tau = in_file_order(sys.inverse_dynamics(state, qdd)?.to_array());
+                print_values(robot, "tau", k, tau);
+                // Row-major in the file's order: M(i, j) for i, then j.
                 let m = sys.mass_matrix(state)?;
-                print_values(
-                    robot,
-                    "M",
-                    k,
-                    (0..N).flat_map(|i| (0..N).map(move |j| m[(i, j)])),
-                );
+                let rows = order
+                    .iter()
+                    .flat_map(|&i| order.iter().map(move |&j| (i, j)));
+                print_values(robot, "M", k, rows.map(|ij| m[ij]));
             }
         }
         Mode::Time { .. } => {
@@ -280,6 +327,20 @@ fn run<M: Mechanism<N>, const N: usize>(
     Ok(())
 }
 
+/// The robots of `example-robot-data` (feature of that name), with the values their files give.
+#[cfg(feature = "example-robot-data")]
+fn example_robot_data(robot: &str, rows: &Rows, mode: &Mode) -> BoxResult<()> {
+    use lagrange_robots::example_robot_data::{anymal, panda, solo12, talos, ur5};
+    match robot {
+        "ur5" => run(&ur5::Ur5::default().validated()?, robot, rows, mode),
+        "panda" => run(&panda::Panda::default().validated()?, robot, rows, mode),
+        "solo12" => run(&solo12::Solo12::default().validated()?, robot, rows, mode),
+        "anymal" => run(&anymal::Anymal::default().validated()?, robot, rows, mode),
+        "talos" => run(&talos::Talos::default().validated()?, robot, rows, mode),
+        other => Err(format!("no declaration of the robot `{other}`").into()),
+    }
+}
+
 fn main() -> BoxResult<()> {
     let cli = Cli::parse();
     let (Mode::Values { states } | Mode::Time { states } | Mode::Count { states, .. }) = &cli.mode;
@@ -300,6 +361,10 @@ fn main() -> BoxResult<()> {
             "arm14" => run(&Arm14 { g: 9.81 }.validated()?, &robot, &rows, mode)?,
             "quadruped" => run(&Quadruped { g: 9.81 }.validated()?, &robot, &rows, mode)?,
             "humanoid" => run(&Humanoid { g: 9.81 }.validated()?, &robot, &rows, mode)?,
+            #[cfg(feature = "example-robot-data")]
+            name @ ("ur5" | "panda" | "solo12" | "anymal" | "talos") => {
+                example_robot_data(name, &rows, mode)?
+            }
             other => return Err(format!("no declaration of the robot `{other}`").into()),
         }
     }

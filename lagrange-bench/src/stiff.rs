@@ -202,7 +202,7 @@ pub fn cartesian_rhs(_t: f64, q: &[f64; 2], v: &[f64; 2]) -> [f64; 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lagrange::mechanism::Dynamics as _;
+    use lagrange::evaluation::Evaluate as _;
 
     fn close(a: &[f64], b: &[f64], tol: f64) {
         for (x, y) in a.iter().zip(b) {

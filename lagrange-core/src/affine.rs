@@ -12,7 +12,7 @@
 //!
 //! with M⁻¹ applied by its LDLᵀ factors. [`AffineConstants`] holds A, the factors and Aᵀ w,
 //! computed once when the mechanism is validated ([`crate::Validated`], through
-//! [`Prepare`](crate::mechanism::Prepare)); [`accelerations`] is an evaluation with them: x(q)
+//! [`Prepare`](crate::evaluation::Prepare)); [`accelerations`] is an evaluation with them: x(q)
 //! in plain arithmetic when a potential or a force needs it, ∇V on gradient duals, no pass of
 //! second derivatives, no assembly and no factorisation. `#[mechanism]` decides affinity from the
 //! declaration's expressions, at compile time.

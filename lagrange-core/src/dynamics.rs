@@ -17,13 +17,24 @@
 //! All functions are generic over the outer scalar `S`, so the accelerations themselves can be
 //! differentiated (implicit integrators, linearization) by calling them with dual numbers.
 
-use crate::error::{describe_configuration, Error, Result};
+use crate::error::Result;
 use crate::geometry::Scalar;
-use crate::linalg::{solve_spd, solve_spd_flagged, NotPositiveDefinite};
-use crate::model::{lane_sum, state_and_accelerations_finite, Coordinates, Model};
+use crate::linalg::{solve_spd, solve_spd_flagged};
+use crate::model::{state_and_accelerations_finite, Coordinates, Model};
 use nalgebra::{Const, U1};
 use nalgebra::{SMatrix, SVector};
-use num_dual::{Derivative, Dual, Dual2, DualSVec, HyperDualVec};
+use num_dual::{Derivative, Dual2, DualSVec, HyperDualVec};
+
+mod energy;
+mod failures;
+
+pub use energy::{
+    canonical_field, cartesian_velocities, kinetic_energy, lagrangian_time_derivative, momenta,
+    potential_energy,
+};
+pub(crate) use failures::{
+    finite_accelerations, mass_matrix_failure, non_finite_dynamics, singular_mass_matrix,
+};
 
 /// A hyper-dual number with an N-wide first part and a scalar second part.
 pub(crate) type HyperDualSVec<S, const N: usize, const M: usize> =
@@ -498,204 +509,6 @@ pub fn regular_accelerations<const N: usize>(
     (parameters_pass & pivots_pass & state_and_accelerations_finite(t, q, v, &qdd)).then_some(qdd)
 }
 
-/// `qdd` when every entry is finite, otherwise [`Error::NonFiniteDynamics`] at (t, q).
-#[inline(always)]
-pub(crate) fn finite_accelerations<C: Coordinates<N>, S: Scalar, const N: usize>(
-    qdd: SVector<S, N>,
-    t: S,
-    q: &[S; N],
-) -> Result<[S; N]> {
-    // One branch, one product: s·0 is 0 exactly when s is finite, and the sum s of the entries
-    // is finite when they all are. A sum that overflows although every entry is finite is sorted
-    // out off the hot path.
-    if lane_sum::<N>(|j| qdd[j].re()) * 0.0 == 0.0 {
-        Ok(qdd.into())
-    } else {
-        finite_or_overflowed::<C, S, N>(qdd, t, q)
-    }
-}
-
-/// [`finite_accelerations`] when the sum of the entries is not finite: `qdd` when every entry is
-/// (the sum overflowed), otherwise [`Error::NonFiniteDynamics`] at (t, q).
-#[cold]
-#[inline(never)]
-fn finite_or_overflowed<C: Coordinates<N>, S: Scalar, const N: usize>(
-    qdd: SVector<S, N>,
-    t: S,
-    q: &[S; N],
-) -> Result<[S; N]> {
-    if qdd.iter().all(|a| a.re().is_finite()) {
-        Ok(qdd.into())
-    } else {
-        Err(non_finite_dynamics::<C, S, N>(t, q))
-    }
-}
-
-/// Why a factorisation of the mass matrix failed at (t, q): a matrix that overflowed (a blown-up
-/// state) is not singular — [`Error::NonFiniteDynamics`] — otherwise the singular pivot.
-#[cold]
-#[inline(never)]
-pub(crate) fn mass_matrix_failure<C: Coordinates<N>, S: Scalar, const N: usize>(
-    mass_matrix: &SMatrix<S, N, N>,
-    e: NotPositiveDefinite,
-    t: S,
-    q: &[S; N],
-) -> Error {
-    if mass_matrix.iter().any(|m| !m.re().is_finite()) {
-        non_finite_dynamics::<C, S, N>(t, q)
-    } else {
-        singular_mass_matrix::<C, S, N>(e, t, q)
-    }
-}
-
-/// The error for a mass matrix that is singular at (t, q), naming the configuration and the pivot.
-#[cold]
-#[inline(never)]
-pub(crate) fn singular_mass_matrix<C: Coordinates<N>, S: Scalar, const N: usize>(
-    e: NotPositiveDefinite,
-    t: S,
-    q: &[S; N],
-) -> Error {
-    Error::SingularMassMatrix {
-        t: t.re(),
-        configuration: describe_configuration(&C::NAMES, &q.map(|q| q.re())),
-        coordinate: C::NAMES[e.index],
-        pivot: e.pivot,
-    }
-}
-
-/// The error for equations of motion that came out non-finite at (t, q).
-#[cold]
-#[inline(never)]
-pub(crate) fn non_finite_dynamics<C: Coordinates<N>, S: Scalar, const N: usize>(
-    t: S,
-    q: &[S; N],
-) -> Error {
-    Error::NonFiniteDynamics {
-        t: t.re(),
-        configuration: describe_configuration(&C::NAMES, &q.map(|q| q.re())),
-    }
-}
-
-/// ẋ = J q̇ + ∂x/∂t: the Cartesian coordinates and their velocities, by one forward-mode pass.
-pub fn cartesian_velocities<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> ([S; K], [S; K]) {
-    let qd: [Dual<S>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
-    let td = if M::RHEONOMIC {
-        Dual::new(t, S::one())
-    } else {
-        Dual::from_re(t)
-    };
-    let x = model.cartesian(td, &qd);
-    (
-        std::array::from_fn(|i| x[i].re),
-        std::array::from_fn(|i| x[i].eps),
-    )
-}
-
-/// T = ½ Σ μᵢ ẋᵢ².
-pub fn kinetic_energy<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> S {
-    let masses = model.masses();
-    let (_, x_dot) = cartesian_velocities(model, t, q, v);
-    let mut twice_t = S::zero();
-    for i in 0..M::INERTIAL {
-        twice_t += x_dot[i] * x_dot[i] * masses[i];
-    }
-    twice_t * 0.5
-}
-
-/// V(q, t).
-pub fn potential_energy<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
-    model: &M,
-    t: S,
-    q: &[S; N],
-) -> S {
-    if !M::HAS_POTENTIAL && !M::HAS_GRAVITY {
-        return S::zero();
-    }
-    let x = model.cartesian(t, q);
-    let mut v = if M::HAS_POTENTIAL {
-        model.potential(t, q, &x)
-    } else {
-        S::zero()
-    };
-    if M::HAS_GRAVITY {
-        let weights = model.weights();
-        for i in 0..K {
-            v -= x[i] * weights[i];
-        }
-    }
-    v
-}
-
-/// Generalized momenta pₖ = ∂L/∂q̇ₖ = Σᵢ μᵢ ẋᵢ ∂xᵢ/∂qₖ = (Jᵀ diag(μ) ẋ)ₖ.
-pub fn momenta<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> [S; N] {
-    let masses = model.masses();
-    let (x1, _, _) = cartesian_with_jacobian(model, t, q);
-    let (_, x_dot) = cartesian_velocities(model, t, q, v);
-    let mut p = SVector::<S, N>::zeros();
-    for i in 0..M::INERTIAL {
-        if masses[i] != 0.0 {
-            p += gradient(&x1[i]) * (x_dot[i] * masses[i]);
-        }
-    }
-    p.into()
-}
-
-/// The canonical field of a scleronomic mechanism, (p, ṗ) = (∂T/∂q̇, ∂T/∂q + 𝓕) at (t, q, q̇), from
-/// one hyper-dual pass ([`MotionPass`]): with T = ½ Σᵢ μᵢ ẋᵢ² and ẋ = J q̇,
-///
-/// ```text
-/// p = Jᵀ diag(μ) ẋ,     ∂T/∂q = (∂ẋ/∂q)ᵀ diag(μ) ẋ,
-/// ```
-///
-/// J, ẋ and ∂ẋ/∂q being the pass's ε₁, ε₂ and ε₁ε₂ parts, and 𝓕 (which holds −∇V and the applied
-/// forces) that of the equations of motion on the same pass. What the methods on (q, p) evaluate
-/// at every Newton iteration (see `integrate::canonical`); the momenta and the gradient of T by
-/// passes of their own would evaluate x several times over.
-#[doc(hidden)]
-#[inline]
-pub fn canonical_field<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> ([S; N], [S; N]) {
-    debug_assert!(!M::RHEONOMIC, "one pass carries no ∂x/∂t");
-    let pass = motion_pass(model, t, q, v);
-    let forces = equations_of_motion_from_pass(model, &pass, t, q, v).generalized_forces;
-    let masses = model.masses();
-    let mut p = SVector::<S, N>::zeros();
-    let mut kinetic_gradient = SVector::<S, N>::zeros();
-    for (x, &mass) in pass.x.iter().zip(&masses).take(M::INERTIAL) {
-        if mass == 0.0 {
-            continue;
-        }
-        let weighted_velocity = x.eps2.0.map_or(S::zero(), |e| e[0]) * mass;
-        if let Some(row) = &x.eps1.0 {
-            p += row * weighted_velocity;
-        }
-        if let Some(mixed) = &x.eps1eps2.0 {
-            kinetic_gradient += mixed * weighted_velocity;
-        }
-    }
-    (p.into(), (kinetic_gradient + forces).into())
-}
-
 /// The mass matrix alone (one gradient pass).
 pub fn mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
@@ -707,135 +520,5 @@ pub fn mass_matrix<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     assemble_mass_matrix::<M, S, N, K>(&model.masses(), &rows)
 }
 
-/// ∂L/∂t = ∂T/∂t − ∂V/∂t at fixed (q, q̇): the rate of change of the energy function
-/// h = Σ pₖq̇ₖ − L along a motion without non-conservative forces (dh/dt = −∂L/∂t).
-pub fn lagrangian_time_derivative<M: Model<N, K>, const N: usize, const K: usize>(
-    model: &M,
-    t: f64,
-    q: &[f64; N],
-    v: &[f64; N],
-) -> f64 {
-    if !M::RHEONOMIC {
-        return 0.0;
-    }
-    let td = Dual::new(t, 1.0);
-    let qd: [Dual<f64>; N] = std::array::from_fn(|j| Dual::from_re(q[j]));
-    let vd: [Dual<f64>; N] = std::array::from_fn(|j| Dual::from_re(v[j]));
-    let lagrangian = kinetic_energy(model, td, &qd, &vd) - potential_energy(model, td, &qd);
-    lagrangian.eps
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::error::Result;
-
-    /// The lecture's wedge and block written by hand: rows wedge (X, 0) and block
-    /// (X + d cos α, h − d sin α). The wedge's height never depends on q (no Jacobian row) and every
-    /// row is linear in q (no second-order part), so this exercises the sums that skip absent
-    /// derivatives.
-    struct Wedge {
-        wedge_mass: f64,
-        block_mass: f64,
-        alpha: f64,
-        g: f64,
-    }
-
-    impl Model<2, 4> for Wedge {
-        type Coords = [f64; 2];
-        const RHEONOMIC: bool = false;
-        const HAS_POTENTIAL: bool = false;
-        const HAS_FORCES: bool = false;
-        const HAS_GRAVITY: bool = true;
-        fn validate(&self) -> Result<()> {
-            Ok(())
-        }
-        fn masses(&self) -> [f64; 4] {
-            let (big_m, m) = (self.wedge_mass, self.block_mass);
-            [big_m, big_m, m, m]
-        }
-        fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 4] {
-            let (s, c) = self.alpha.sin_cos();
-            [q[0], D::from(0.0), q[0] + q[1] * c, D::from(1.0) - q[1] * s]
-        }
-        fn weights(&self) -> [f64; 4] {
-            let (big_m, m, g) = (self.wedge_mass, self.block_mass, self.g);
-            [0.0, -big_m * g, 0.0, -m * g]
-        }
-    }
-
-    #[test]
-    fn absent_jacobian_rows_and_second_order_parts_are_skipped_not_lost() {
-        let p = Wedge {
-            wedge_mass: 3.0,
-            block_mass: 1.0,
-            alpha: 0.5,
-            g: 9.81,
-        };
-        let (s, c) = p.alpha.sin_cos();
-        let eom = equations_of_motion(&p, 0.0, &[0.1, 0.2], &[-0.3, 0.5]);
-        // By hand: M = [[M + m, m c], [m c, m]], 𝓕 = (0, m g sin α), b = 0 (every row linear).
-        let m = p.block_mass;
-        let want = [[p.wedge_mass + m, m * c], [m * c, m * (c * c + s * s)]];
-        for (r, row) in want.iter().enumerate() {
-            for (k, entry) in row.iter().enumerate() {
-                // A few roundings of O(1) terms.
-                assert!((eom.mass_matrix[(r, k)] - entry).abs() < 1e-15);
-            }
-        }
-        assert_eq!(eom.mass_matrix[(0, 1)], eom.mass_matrix[(1, 0)]);
-        assert_eq!(eom.generalized_forces[0], 0.0);
-        assert!((eom.generalized_forces[1] - m * p.g * s).abs() < 1e-15);
-        assert_eq!(eom.inertial_terms, SVector::<f64, 2>::zeros());
-        // And the closed-form accelerations (the lecture's wedge); the 2×2 solve and the closed form
-        // round differently, by a few ulps of values of order 1–5.
-        let qdd = solve_accelerations::<[f64; 2], f64, 2>(&eom, 0.0, &[0.1, 0.2]).unwrap();
-        let den = p.wedge_mass + m * s * s;
-        assert!((qdd[0] + m * p.g * s * c / den).abs() < 1e-14);
-        assert!((qdd[1] - (p.wedge_mass + m) * p.g * s / den).abs() < 1e-14);
-    }
-
-    /// A bead on a rod shaken along itself and carried up and down: x = (q + A sin ωt, B cos ωt).
-    /// The second row depends on t only (no Jacobian row, but an acceleration of its own).
-    struct ShakenRod {
-        amplitude: f64,
-        lift: f64,
-        omega: f64,
-    }
-
-    impl Model<1, 2> for ShakenRod {
-        type Coords = [f64; 1];
-        const RHEONOMIC: bool = true;
-        const HAS_POTENTIAL: bool = false;
-        const HAS_FORCES: bool = false;
-        fn validate(&self) -> Result<()> {
-            Ok(())
-        }
-        fn masses(&self) -> [f64; 2] {
-            [2.0, 2.0]
-        }
-        fn cartesian<D: Scalar>(&self, t: D, q: &[D; 1]) -> [D; 2] {
-            [
-                q[0] + (t * self.omega).sin() * self.amplitude,
-                (t * self.omega).cos() * self.lift,
-            ]
-        }
-    }
-
-    #[test]
-    fn rheonomic_rows_without_jacobian_do_not_enter_the_inertial_terms() {
-        let p = ShakenRod {
-            amplitude: 0.3,
-            lift: 0.7,
-            omega: 2.0,
-        };
-        let t = 0.4;
-        let eom = equations_of_motion(&p, t, &[0.1], &[0.5]);
-        // M = m; b = m · d²/dt²(A sin ωt) = −m A ω² sin ωt; the vertical motion does no virtual work.
-        assert_eq!(eom.mass_matrix[(0, 0)], 2.0);
-        let want = -2.0 * p.amplitude * p.omega * p.omega * (p.omega * t).sin();
-        // The second-order dual's sin rule against the formula: a few ulps of |b| ≈ 1.7.
-        assert!((eom.inertial_terms[0] - want).abs() < 1e-15);
-        assert_eq!(eom.generalized_forces[0], 0.0);
-    }
-}
+mod tests;

@@ -105,6 +105,8 @@ mod cells;
 #[cfg(feature = "mpi")]
 pub mod mpi;
 #[cfg(feature = "parquet")]
+mod part_error;
+#[cfg(feature = "parquet")]
 mod part_file;
 #[cfg(feature = "parquet")]
 pub mod parts;

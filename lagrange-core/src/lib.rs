@@ -7,11 +7,14 @@
 //!   and the checks of the constants a declaration writes;
 //! - [`tree`]: the same for bodies that form a tree of translations, seeded body by body;
 //! - [`linalg`]: small dense solves generic over dual numbers;
+//! - [`evaluation`]: the equations a declaration implements ([`evaluation::Dynamics`]) and what
+//!   everything else evaluates through ([`evaluation::Evaluate`]);
 //! - [`mechanism`]: the user-facing [`Mechanism`] trait, and [`Validated`] for parameters checked once;
-//! - [`integrate`]: the integrators, generic over every mechanism;
+//! - [`integrate`]: the integrators, generic over every mechanism, behind one solver
+//!   ([`integrate::Stepper`]);
 //! - [`analysis`]: equilibria, their stability, linearization, normal modes, continuation;
 //! - [`declaration`]: a declaration's names and flat values, for code generic over declarations;
-//! - [`sensitivity`]: trajectory sensitivities, the simulation on dual numbers;
+//! - [`sensitivity`]: trajectory sensitivities, a solver carrying its trajectory's tangent;
 //! - [`parameters`]: a mechanism's parameters as values of any scalar (for sensitivities);
 //! - [`ensemble`]: one computation over many parameters or initial states, on every core;
 //! - [`animation`]: a trajectory of any declared mechanism as a self-contained HTML animation;
@@ -30,6 +33,7 @@ pub mod declaration;
 pub mod dynamics;
 pub mod ensemble;
 pub mod error;
+pub mod evaluation;
 pub mod geometry;
 pub mod inertia;
 pub mod integrate;
@@ -39,6 +43,8 @@ pub mod model;
 pub mod parameters;
 pub mod scalar_ext;
 pub mod sensitivity;
+#[cfg(test)]
+mod test_models;
 pub mod tree;
 pub mod validated;
 
@@ -46,14 +52,15 @@ pub use analysis::{
     constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability,
     ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization, NormalModes, Stability,
 };
-pub use constraints::{Constraints, ContactDopri5, ContactRk4};
+pub use constraints::Constraints;
 pub use error::{Error, Result};
 pub use geometry::{
     planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Scalar,
     Spatial, Vec2, Vec3,
 };
 pub use integrate::{
-    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, StormerVerlet, Variational,
+    Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,
+    StormerVerlet, Variational,
 };
 pub use mechanism::Mechanism;
 pub use model::{Coordinates, Model, State};

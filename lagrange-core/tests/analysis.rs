@@ -8,8 +8,8 @@ use lagrange_core::analysis::{
 #[macro_use]
 mod support;
 
+use lagrange_core::evaluation::Evaluate as _;
 use lagrange_core::impl_mechanism;
-use lagrange_core::mechanism::Dynamics as _;
 use lagrange_core::{Error, Mechanism, Model, Rk4, Scalar, State};
 use nalgebra::SMatrix;
 use std::f64::consts::PI;

@@ -1,7 +1,7 @@
 //! A [`Model`] written by hand (what `#[mechanism]` generates for a double pendulum), checked against
 //! the closed-form equations of motion. This pins the runtime down independently of the macro.
 
-use lagrange_core::mechanism::Dynamics as _;
+use lagrange_core::evaluation::Evaluate as _;
 use lagrange_core::{vec2, Error, Mechanism, Model, Rk4, Scalar, State};
 
 struct DoublePendulum {

@@ -3,7 +3,7 @@
 //! alone. Models are written by hand at the end of this file.
 
 use lagrange_core::constraints;
-use lagrange_core::integrate::{Direction, Dopri5Stepper, Event, Observation, StopReason};
+use lagrange_core::integrate::{Direction, Event, Fixed, Observation, Stepper, StopReason};
 use lagrange_core::{vec2, Model, Scalar};
 use lagrange_core::{
     Dopri5, Error, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State,
@@ -51,8 +51,8 @@ fn dopri5_fixed(h: f64) -> Dopri5 {
 fn kepler_error_dopri5(n: usize) -> f64 {
     let mut s = kepler_start(E);
     let h = 2.0 * PI / n as f64;
-    let out = dopri5_fixed(h)
-        .integrate(&Kepler, &mut s, 2.0 * PI, &mut [], |_| {})
+    let out = Kepler
+        .integrate(dopri5_fixed(h), &mut s, 2.0 * PI, &mut [], |_| {})
         .unwrap();
     assert_eq!(out.stats.accepted, n);
     let (q, v) = kepler_exact(E, s.t);
@@ -125,8 +125,8 @@ fn dopri5_meets_its_tolerance_on_the_oscillator() {
     // is controlled) keeps the sum of the order of tol. Bound: 10·tol (measured ratios ≈ 3).
     for tol in [1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
         let mut s = State::new(0.0, [1.0], [0.0]);
-        let out = Dopri5::new(tol, tol)
-            .integrate(&Oscillator { damping: 0.0 }, &mut s, 10.0, &mut [], |_| {})
+        let out = Oscillator { damping: 0.0 }
+            .integrate(Dopri5::new(tol, tol), &mut s, 10.0, &mut [], |_| {})
             .unwrap();
         assert_eq!(out.reason, StopReason::Reached);
         assert_eq!(s.t, 10.0);
@@ -143,7 +143,7 @@ fn dopri5_meets_its_tolerance_on_the_oscillator() {
 #[test]
 fn dopri5_dense_output_is_accurate_inside_steps() {
     let tol = 1e-9;
-    let mut stepper = Dopri5Stepper::new(
+    let mut stepper = Stepper::new(
         &Oscillator { damping: 0.0 },
         Dopri5::new(tol, tol),
         &State::new(0.0, [1.0], [0.0]),
@@ -177,18 +177,12 @@ fn dopri5_events_on_the_oscillator() {
     let mut seen = Vec::new();
     let mut s = State::new(0.0, [1.0], [0.0]);
     let tol = 1e-10;
-    let out = Dopri5::new(tol, tol)
-        .integrate(
-            &Oscillator { damping: 0.0 },
-            &mut s,
-            10.0,
-            &mut events,
-            |o| {
-                if let Observation::Event(hit) = o {
-                    seen.push(*hit)
-                }
-            },
-        )
+    let out = Oscillator { damping: 0.0 }
+        .integrate(Dopri5::new(tol, tol), &mut s, 10.0, &mut events, |o| {
+            if let Observation::Event(hit) = o {
+                seen.push(*hit)
+            }
+        })
         .unwrap();
     assert_eq!(seen.len(), 2, "{seen:?}");
     assert_eq!(
@@ -240,8 +234,8 @@ fn dopri5_locates_the_pendulum_quarter_period() {
     let mut events = [Event::new(&g).direction(Direction::Falling).terminal()];
     let mut s = State::new(0.0, [theta0], [0.0]);
     let tol = 1e-12;
-    let out = Dopri5::new(tol, tol)
-        .integrate(&Pendulum, &mut s, 10.0, &mut events, |_| {})
+    let out = Pendulum
+        .integrate(Dopri5::new(tol, tol), &mut s, 10.0, &mut events, |_| {})
         .unwrap();
     assert!(matches!(out.reason, StopReason::Event(_)));
     // The root of the dense output is bracketed to 1e-13 s, so |θ| there is ≤ 1e-13·|θ̇| ≈ 2e-13
@@ -359,8 +353,14 @@ fn variational_and_gauss_converge_on_the_double_pendulum() {
     let start = State::new(0.0, [1.0, -0.5], [0.0, 0.0]);
     let t_end = 2.0;
     let mut reference = start;
-    Dopri5::new(1e-13, 1e-13)
-        .integrate(&DoublePendulum, &mut reference, t_end, &mut [], |_| {})
+    DoublePendulum
+        .integrate(
+            Dopri5::new(1e-13, 1e-13),
+            &mut reference,
+            t_end,
+            &mut [],
+            |_| {},
+        )
         .unwrap();
     fn run<I: Integrator>(
         start: State<[f64; 2]>,
@@ -640,8 +640,8 @@ fn dopri5_blow_up_is_an_error_and_leaves_the_state_alone() {
     let start = State::new(0.0, [1.0], [(2.0f64 / 3.0).sqrt()]);
     let mut s = start;
     let mut last_t = 0.0;
-    let err = Dopri5::new(1e-8, 1e-8)
-        .integrate(&BlowUp, &mut s, 5.0, &mut [], |o| {
+    let err = BlowUp
+        .integrate(Dopri5::new(1e-8, 1e-8), &mut s, 5.0, &mut [], |o| {
             if let Observation::Step { state, .. } = o {
                 last_t = state.t
             }
@@ -662,14 +662,14 @@ fn dopri5_blow_up_is_an_error_and_leaves_the_state_alone() {
     assert_eq!(s, start);
     // Bad settings and a backwards end time are errors too.
     assert!(matches!(
-        Dopri5::new(-1.0, 1e-6).integrate(&BlowUp, &mut s, 1.0, &mut [], |_| {}),
+        BlowUp.integrate(Dopri5::new(-1.0, 1e-6), &mut s, 1.0, &mut [], |_| {}),
         Err(Error::InvalidSetting {
             setting: "rtol",
             ..
         })
     ));
     assert!(matches!(
-        Dopri5::default().integrate(&BlowUp, &mut s, -1.0, &mut [], |_| {}),
+        BlowUp.integrate(Dopri5::default(), &mut s, -1.0, &mut [], |_| {}),
         Err(Error::InvalidEndTime { .. })
     ));
     assert_eq!(s, start);
@@ -861,8 +861,8 @@ fn constrained_pendulum_with_implicit_methods_and_dopri5() {
     let mut events = [Event::new(&g).direction(Direction::Falling).terminal()];
     let mut s = start;
     let tol = 1e-10;
-    Dopri5::new(tol, tol)
-        .integrate(&CartesianPendulum, &mut s, 10.0, &mut events, |_| {})
+    CartesianPendulum
+        .integrate(Dopri5::new(tol, tol), &mut s, 10.0, &mut events, |_| {})
         .unwrap();
     assert!((radius(&s) - 1.0).abs() < 1e-9, "{s:?}");
     assert!((s.t - quarter).abs() < 1e-8, "{} vs {quarter}", s.t);
@@ -1118,8 +1118,8 @@ fn dopri5_tolerance_below_round_off_is_a_step_size_underflow() {
     // configuration where the dynamics are fine.
     let start = State::new(1.0, [1.0], [0.0]);
     let mut s = start;
-    let err = Dopri5::new(1e-300, 1e-300)
-        .integrate(&Oscillator { damping: 0.0 }, &mut s, 2.0, &mut [], |_| {})
+    let err = Oscillator { damping: 0.0 }
+        .integrate(Dopri5::new(1e-300, 1e-300), &mut s, 2.0, &mut [], |_| {})
         .unwrap_err();
     assert!(
         matches!(err, Error::StepSizeUnderflow { t, .. } if t == 1.0),
@@ -1170,8 +1170,8 @@ fn dopri5_end_time_before_the_start_is_named_as_such() {
     let start = State::new(1.0, [1.0], [0.0]);
     for t_end in [0.5, f64::NAN, f64::INFINITY] {
         let mut s = start;
-        let err = Dopri5::default()
-            .integrate(&Oscillator { damping: 0.0 }, &mut s, t_end, &mut [], |_| {})
+        let err = Oscillator { damping: 0.0 }
+            .integrate(Dopri5::default(), &mut s, t_end, &mut [], |_| {})
             .unwrap_err();
         assert!(
             matches!(err, Error::InvalidEndTime { t, t_end: end } if t == 1.0 && end.to_bits() == t_end.to_bits()),
@@ -1180,7 +1180,7 @@ fn dopri5_end_time_before_the_start_is_named_as_such() {
         assert_eq!(s, start);
     }
     let mut stepper =
-        Dopri5Stepper::new(&Oscillator { damping: 0.0 }, Dopri5::default(), &start).unwrap();
+        Stepper::new(&Oscillator { damping: 0.0 }, Dopri5::default(), &start).unwrap();
     assert!(matches!(
         stepper.step(1.0),
         Err(Error::InvalidEndTime { t_end, .. }) if t_end == 1.0
@@ -1192,10 +1192,9 @@ fn dopri5_end_time_before_the_start_is_named_as_such() {
 /// End-point error after one Kepler period with n steps of a solver that keeps its working
 /// memory (the implicit methods' Newton matrix) from step to step; also the Jacobians per step.
 fn kepler_error_solver<I: Integrator>(n: usize) -> (f64, f64) {
-    use lagrange_core::integrate::{FixedStepper, Stepper};
     let start = kepler_start(E);
     let h = 2.0 * PI / n as f64;
-    let mut solver = FixedStepper::<_, I, 2>::new(&Kepler, &start, h).unwrap();
+    let mut solver = Stepper::new(&Kepler, Fixed::<I>::new(h), &start).unwrap();
     let out = solver.integrate(2.0 * PI, &mut [], |_| {}).unwrap();
     assert_eq!(out.stats.accepted, n);
     let s = solver.state();
@@ -1266,13 +1265,13 @@ fn dopri5_as_a_type_parameter_advances_by_h() {
 
 #[test]
 fn every_solver_integrates_with_events_through_the_same_interface() {
-    use lagrange_core::integrate::{FixedStepper, Stepper};
+    use lagrange_core::integrate::Method;
     // Kepler from perihelion: the radial velocity r·ṙ = x·ẋ crosses zero (rising → falling) at
     // aphelion, t = π exactly (half the period 2π for a = 1). Each solver locates it on its dense
     // output: Dopri5's of order 4 at rtol 1e-10, GL2 at h = 2π/2000 with the cubic Hermite
     // interpolant (error O(h⁴) ≈ 1e-12, plus the method's O(h⁴) ≈ 1e-11 global error in the phase):
     // both well within 1e-8 of π.
-    fn run<S: Stepper<[f64; 2], 2>>(name: &str, solver: &mut S) {
+    fn run<Me: Method<2>>(name: &str, solver: &mut Stepper<'_, Kepler, Me, 2>) {
         let radial = |s: &State<[f64; 2]>| s.q[0] * s.v[0] + s.q[1] * s.v[1];
         let mut events = [Event::new(&radial).direction(Direction::Falling).terminal()];
         let out = solver.integrate(5.0, &mut events, |_| {}).unwrap();
@@ -1286,15 +1285,20 @@ fn every_solver_integrates_with_events_through_the_same_interface() {
     let start = kepler_start(E);
     run(
         "Dopri5",
-        &mut Dopri5Stepper::new(&Kepler, Dopri5::new(1e-10, 1e-12), &start).unwrap(),
+        &mut Stepper::new(&Kepler, Dopri5::new(1e-10, 1e-12), &start).unwrap(),
     );
     run(
         "Gauss-Legendre 2",
-        &mut FixedStepper::<_, GaussLegendre2, 2>::new(&Kepler, &start, 2.0 * PI / 2000.0).unwrap(),
+        &mut Stepper::new(
+            &Kepler,
+            Fixed::<GaussLegendre2>::new(2.0 * PI / 2000.0),
+            &start,
+        )
+        .unwrap(),
     );
     run(
         "RK4",
-        &mut FixedStepper::<_, Rk4, 2>::new(&Kepler, &start, 2.0 * PI / 2000.0).unwrap(),
+        &mut Stepper::new(&Kepler, Fixed::<Rk4>::new(2.0 * PI / 2000.0), &start).unwrap(),
     );
 }
 
@@ -1314,8 +1318,8 @@ fn kepler_error_dop853(e: f64, n: usize) -> f64 {
         ..Dop853::default()
     };
     let mut s = kepler_start(e);
-    let out = settings
-        .integrate(&Kepler, &mut s, 2.0 * PI, &mut [], |_| {})
+    let out = Kepler
+        .integrate(settings, &mut s, 2.0 * PI, &mut [], |_| {})
         .unwrap();
     assert_eq!(out.stats.accepted, n);
     let (q, v) = kepler_exact(e, s.t);
@@ -1349,8 +1353,8 @@ fn dop853_is_eighth_order() {
         };
         let mut s = State::new(0.0, [1.0], [0.0]);
         let t_end = 20.0 * PI;
-        let out = settings
-            .integrate(&Oscillator { damping: 0.0 }, &mut s, t_end, &mut [], |_| {})
+        let out = Oscillator { damping: 0.0 }
+            .integrate(settings, &mut s, t_end, &mut [], |_| {})
             .unwrap();
         assert_eq!(out.stats.accepted, 10 * n);
         (s.q[0] - t_end.cos())
@@ -1372,12 +1376,18 @@ fn dop853_locates_aphelion_to_1e_12_and_agrees_with_dopri5() {
     let mut s = kepler_start(E);
     let mut events = [Event::new(&radial).direction(Direction::Falling)];
     let mut hits = Vec::new();
-    let out = Dop853::new(1e-13, 1e-15)
-        .integrate(&Kepler, &mut s, 2.0 * PI, &mut events, |o| {
-            if let Observation::Event(hit) = o {
-                hits.push(hit.state.t);
-            }
-        })
+    let out = Kepler
+        .integrate(
+            Dop853::new(1e-13, 1e-15),
+            &mut s,
+            2.0 * PI,
+            &mut events,
+            |o| {
+                if let Observation::Event(hit) = o {
+                    hits.push(hit.state.t);
+                }
+            },
+        )
         .unwrap();
     assert_eq!(hits.len(), 1);
     eprintln!(
@@ -1392,8 +1402,14 @@ fn dop853_locates_aphelion_to_1e_12_and_agrees_with_dopri5() {
     // orbit (the tolerance is local; the global error of ≈ 1e3 steps is a few hundred times it), so
     // within 2e-10 of each other — and Dop853 takes fewer evaluations.
     let mut s5 = kepler_start(E);
-    let out5 = Dopri5::new(1e-13, 1e-15)
-        .integrate(&Kepler, &mut s5, 2.0 * PI, &mut [], |_| {})
+    let out5 = Kepler
+        .integrate(
+            Dopri5::new(1e-13, 1e-15),
+            &mut s5,
+            2.0 * PI,
+            &mut [],
+            |_| {},
+        )
         .unwrap();
     let err5 = distance(&s5.q, &s5.v, &q, &v);
     let between = distance(&s.q, &s.v, &s5.q, &s5.v);
@@ -1407,13 +1423,13 @@ fn dop853_locates_aphelion_to_1e_12_and_agrees_with_dopri5() {
 
 #[test]
 fn dop853_dense_output_is_seventh_order_accurate_inside_steps() {
-    use lagrange_core::integrate::{Dop853, Dop853Stepper, Stepper};
+    use lagrange_core::integrate::Dop853;
     // Inside each step of a Dop853 run at rtol 1e-11 the dense output is compared with the exact
     // orbit at the step's midpoint: the continuous extension of order 7 adds an O(h⁸) error of the
     // size of the step's local error, so it stays within 1e-8 (≫ the measured ≈ 1e-10, ≪ the
     // ≈ 1e-4 that a cubic Hermite interpolant would leave at these step sizes).
     let start = kepler_start(E);
-    let mut stepper = Dop853Stepper::new(&Kepler, Dop853::new(1e-11, 1e-13), &start).unwrap();
+    let mut stepper = Stepper::new(&Kepler, Dop853::new(1e-11, 1e-13), &start).unwrap();
     let mut worst = 0.0f64;
     while Stepper::t(&stepper) < 2.0 * PI {
         stepper.step(2.0 * PI).unwrap();

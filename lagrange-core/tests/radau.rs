@@ -3,7 +3,7 @@
 //! factorisation, dense output and events, constraints, and errors that leave the state alone.
 
 use lagrange_core::constraints::{ConstraintKind, Constraints};
-use lagrange_core::integrate::{Direction, Event, Observation, Radau5Stepper, Stepper, StopReason};
+use lagrange_core::integrate::{Direction, Event, Observation, Stepper, StopReason};
 use lagrange_core::{vec2, Dopri5, Error, Mechanism, Model, Radau5, Scalar, State};
 use std::f64::consts::PI;
 
@@ -35,8 +35,14 @@ fn radau5_fixed(h: f64) -> Radau5 {
 fn kepler_error(n: usize) -> f64 {
     let e: f64 = 0.6;
     let mut s = State::new(0.0, [1.0 - e, 0.0], [0.0, ((1.0 + e) / (1.0 - e)).sqrt()]);
-    let out = radau5_fixed(2.0 * PI / n as f64)
-        .integrate(&Kepler, &mut s, 2.0 * PI, &mut [], |_| {})
+    let out = Kepler
+        .integrate(
+            radau5_fixed(2.0 * PI / n as f64),
+            &mut s,
+            2.0 * PI,
+            &mut [],
+            |_| {},
+        )
         .unwrap();
     assert_eq!((out.stats.accepted, out.stats.rejected), (n, 0));
     let (q, v) = kepler_exact(e, s.t);
@@ -82,12 +88,12 @@ fn radau5_takes_far_fewer_steps_than_dopri5_on_a_stiff_chain() {
     let t_end = 10.0;
     let (rtol, atol) = (1e-6, 1e-8);
     let mut radau = start;
-    let r = Radau5::new(rtol, atol)
-        .integrate(&StiffPair, &mut radau, t_end, &mut [], |_| {})
+    let r = StiffPair
+        .integrate(Radau5::new(rtol, atol), &mut radau, t_end, &mut [], |_| {})
         .unwrap();
     let mut dopri = start;
-    let d = Dopri5::new(rtol, atol)
-        .integrate(&StiffPair, &mut dopri, t_end, &mut [], |_| {})
+    let d = StiffPair
+        .integrate(Dopri5::new(rtol, atol), &mut dopri, t_end, &mut [], |_| {})
         .unwrap();
     let c = (omega * t_end).cos();
     let s = (omega * t_end).sin();
@@ -128,8 +134,8 @@ fn radau5_meets_its_tolerance_on_the_stiff_chain_at_tight_tolerance() {
     let mut errors = vec![];
     for tol in [1e-6, 1e-8, 1e-10] {
         let mut s = start;
-        let out = Radau5::new(tol, tol)
-            .integrate(&StiffPair, &mut s, t_end, &mut [], |_| {})
+        let out = StiffPair
+            .integrate(Radau5::new(tol, tol), &mut s, t_end, &mut [], |_| {})
             .unwrap();
         let err = distance(&s.q, &s.v, &exact_q, &exact_v);
         eprintln!("tol {tol:e}: error {err:.2e}, {:?}", out.stats);
@@ -145,7 +151,7 @@ fn radau5_dense_output_and_events_on_the_oscillator() {
     // output of order 3 (the stage order): at rtol = 1e-9 its error inside a step is
     // O(h⁴)·|x⁽⁴⁾| with the h that rtol′ ≈ 1e-7 allows, well below 1e-5.
     let start = State::new(0.0, [1.0], [0.0]);
-    let mut solver = Radau5Stepper::new(&Oscillator, Radau5::new(1e-9, 1e-9), &start).unwrap();
+    let mut solver = Stepper::new(&Oscillator, Radau5::new(1e-9, 1e-9), &start).unwrap();
     let g = |s: &State<[f64; 1]>| s.q[0];
     let mut events = [Event::new(&g).direction(Direction::Either)];
     let mut hits = vec![];
@@ -176,12 +182,10 @@ fn radau5_keeps_the_constrained_pendulum_on_its_circle() {
     // with Dopri5's at tight tolerances to within both tolerances' global errors.
     let start = State::new(0.0, [1.0, 0.0], [0.0, 0.0]);
     let mut radau = start;
-    Radau5::new(1e-9, 1e-9)
-        .integrate(&Rod, &mut radau, 3.0, &mut [], |_| {})
+    Rod.integrate(Radau5::new(1e-9, 1e-9), &mut radau, 3.0, &mut [], |_| {})
         .unwrap();
     let mut dopri = start;
-    Dopri5::new(1e-11, 1e-11)
-        .integrate(&Rod, &mut dopri, 3.0, &mut [], |_| {})
+    Rod.integrate(Dopri5::new(1e-11, 1e-11), &mut dopri, 3.0, &mut [], |_| {})
         .unwrap();
     let r = (radau.q[0].powi(2) + radau.q[1].powi(2)).sqrt();
     assert!((r - 1.0).abs() < 1e-12, "{r}");
@@ -197,7 +201,7 @@ fn radau5_errors_name_their_cause_and_leave_the_state_alone() {
         ..Radau5::default()
     };
     assert!(matches!(
-        Radau5Stepper::new(&Oscillator, bad, &start),
+        Stepper::new(&Oscillator, bad, &start),
         Err(Error::InvalidSetting {
             setting: "rtol",
             ..
@@ -205,7 +209,7 @@ fn radau5_errors_name_their_cause_and_leave_the_state_alone() {
     ));
     let no_atol = Radau5::new(1e-6, 0.0);
     assert!(matches!(
-        Radau5Stepper::new(&Oscillator, no_atol, &start),
+        Stepper::new(&Oscillator, no_atol, &start),
         Err(Error::InvalidSetting {
             setting: "atol",
             ..
@@ -215,11 +219,11 @@ fn radau5_errors_name_their_cause_and_leave_the_state_alone() {
     // stays where it was.
     let mut s = State::new(0.0, [1.0], [(2.0f64 / 3.0).sqrt()]);
     let before = s;
-    let r = Radau5::new(1e-8, 1e-8).integrate(&BlowUp, &mut s, 3.0, &mut [], |_| {});
+    let r = BlowUp.integrate(Radau5::new(1e-8, 1e-8), &mut s, 3.0, &mut [], |_| {});
     assert!(r.is_err(), "{r:?}");
     assert_eq!(s, before);
     // An end time before the start.
-    let mut solver = Radau5Stepper::new(&Oscillator, Radau5::default(), &start).unwrap();
+    let mut solver = Stepper::new(&Oscillator, Radau5::default(), &start).unwrap();
     assert!(matches!(
         solver.integrate(-1.0, &mut [], |_| {}),
         Err(Error::InvalidEndTime { .. })

@@ -5,8 +5,8 @@
 
 use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 use lagrange_core::dynamics::{self, EquationsOfMotion};
+use lagrange_core::evaluation::{Dynamics, Evaluate};
 use lagrange_core::integrate::Dop853;
-use lagrange_core::mechanism::Dynamics;
 use lagrange_core::{vec2, Model, Scalar};
 use lagrange_core::{
     Error, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, State, StormerVerlet,
@@ -37,8 +37,8 @@ fn cartesian(theta: f64, theta_dot: f64) -> State<[f64; 2]> {
 /// against it), mapped to Cartesian coordinates.
 fn reference(theta0: f64, theta_dot0: f64, t_end: f64) -> State<[f64; 2]> {
     let mut s = State::new(0.0, [theta0], [theta_dot0]);
-    Dop853::new(1e-14, 1e-14)
-        .integrate(&AnglePendulum, &mut s, t_end, &mut [], |_| {})
+    AnglePendulum
+        .integrate(Dop853::new(1e-14, 1e-14), &mut s, t_end, &mut [], |_| {})
         .unwrap();
     let mut c = cartesian(s.q[0], s.v[0]);
     c.t = s.t;
@@ -221,8 +221,8 @@ fn rattle_follows_a_moving_constraint_to_second_order() {
     // exact).
     let (theta0, t_end) = (1.0, 1.0);
     let mut a = State::new(0.0, [theta0], [0.0]);
-    Dop853::new(1e-14, 1e-14)
-        .integrate(&MovingAngle, &mut a, t_end, &mut [], |_| {})
+    MovingAngle
+        .integrate(Dop853::new(1e-14, 1e-14), &mut a, t_end, &mut [], |_| {})
         .unwrap();
     let position = |t: f64, th: f64| [rod_length(t) * th.sin(), -rod_length(t) * th.cos()];
     let rate = L * EPS * OMEGA * (OMEGA * t_end).cos();
@@ -431,7 +431,7 @@ struct FreeFall;
 
 macro_rules! forward_pendulum {
     ($ty:ty, { $($extra:tt)* }) => {
-        impl lagrange_core::mechanism::Prepare for $ty {
+        impl lagrange_core::evaluation::Prepare for $ty {
             type Prepared = ();
             fn prepare(&self) -> lagrange_core::Result<()> {
                 Ok(())
@@ -439,27 +439,28 @@ macro_rules! forward_pendulum {
         }
         impl Dynamics<2> for $ty {
             type Coords = [f64; 2];
+            type Contacts = lagrange_core::constraints::NoContacts;
             $($extra)*
             fn check_parameters(&self) -> lagrange_core::Result<()> {
                 Ok(())
             }
-            fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
+            fn equations_of_motion_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
                 dynamics::equations_of_motion(&CartesianPendulum, t, q, v)
             }
-            fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
+            fn kinetic_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> S {
                 dynamics::kinetic_energy(&CartesianPendulum, t, q, v)
             }
-            fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; 2]) -> S {
+            fn potential_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2]) -> S {
                 dynamics::potential_energy(&CartesianPendulum, t, q)
             }
-            fn momenta_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
+            fn momenta_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
                 dynamics::momenta(&CartesianPendulum, t, q, v)
             }
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
+            fn lagrangian_time_derivative_at(&self, _: Option<&()>, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
                 dynamics::lagrangian_time_derivative(&CartesianPendulum, t, q, v)
             }
-            fn project(&self, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
-                CartesianPendulum.project(t, q, v)
+            fn project(&self, _: Option<&()>, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
+                Evaluate::project(&CartesianPendulum, t, q, v)
             }
             fn check_constraints(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> lagrange_core::Result<()> {
                 constraints::check_consistent(&CartesianPendulum, t, q, v, CONSISTENCY_TOLERANCE)
@@ -471,6 +472,7 @@ macro_rules! forward_pendulum {
 forward_pendulum!(Undeclared, {
     fn accelerations_at<S: Scalar>(
         &self,
+        _: Option<&()>,
         t: S,
         q: &[S; 2],
         v: &[S; 2],

@@ -8,8 +8,8 @@
 use crate::simulation::{Method, Simulation};
 use crate::status::Status;
 use lagrange_core::declaration::Declaration;
+use lagrange_core::evaluation::Dynamics;
 use lagrange_core::model::Coordinates;
-use lagrange_core::Mechanism;
 use std::ffi::c_char;
 use std::fmt::Write;
 
@@ -60,7 +60,7 @@ impl<T: CType> CType for *const T {
 }
 
 /// `PREFIX_simulation`: the header writes the prefix in (a handle's type does not know it).
-impl<M: Mechanism<N>, const N: usize> CType for Simulation<M, N> {
+impl<M: Dynamics<N>, const N: usize> CType for Simulation<M, N> {
     fn c_name() -> String {
         "PREFIX_simulation".to_string()
     }
@@ -181,7 +181,7 @@ fn indices(out: &mut String, prefix: &str, what: &str, names: &[&str]) {
 /// sizes (`PREFIX_DOF`, `PREFIX_PARAMETER_COUNT`, `PREFIX_CONSTRAINT_COUNT`), the index of every
 /// parameter, coordinate and constraint row by name, the opaque handle type, and every function
 /// with its documentation.
-pub fn header<E: Export, M: Mechanism<N> + Declaration, const N: usize>() -> String {
+pub fn header<E: Export, M: Dynamics<N> + Declaration, const N: usize>() -> String {
     let prefix = E::PREFIX;
     let upper = c_identifier(prefix);
     let mut out = String::new();

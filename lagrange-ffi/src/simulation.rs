@@ -12,8 +12,10 @@
 
 use crate::status::{guard, Failure, Status};
 use lagrange_core::declaration::Declaration;
+use lagrange_core::evaluation::Dynamics;
 use lagrange_core::integrate::{
-    Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Rk4, StopReason, StormerVerlet, Variational,
+    Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Rk4, Stepper, StopReason, StormerVerlet,
+    Variational,
 };
 use lagrange_core::model::{check_state, Coordinates, State};
 use lagrange_core::{Mechanism, Validated};
@@ -21,12 +23,12 @@ use lagrange_core::{Mechanism, Validated};
 /// A mechanism with validated parameters and its current state: what `PREFIX_create` returns to C
 /// as an opaque `PREFIX_simulation *`.
 #[derive(Debug)]
-pub struct Simulation<M: Mechanism<N>, const N: usize> {
+pub struct Simulation<M: Dynamics<N>, const N: usize> {
     sys: Validated<M>,
     state: State<M::Coords>,
 }
 
-impl<M: Mechanism<N>, const N: usize> Simulation<M, N> {
+impl<M: Dynamics<N>, const N: usize> Simulation<M, N> {
     /// The validated mechanism.
     pub fn mechanism(&self) -> &Validated<M> {
         &self.sys
@@ -163,7 +165,7 @@ fn output_len(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle from [`create`].
-unsafe fn handle<'a, M: Mechanism<N>, const N: usize>(
+unsafe fn handle<'a, M: Dynamics<N>, const N: usize>(
     sim: *const Simulation<M, N>,
 ) -> Result<&'a Simulation<M, N>, Failure> {
     // SAFETY: by the caller's contract.
@@ -174,7 +176,7 @@ unsafe fn handle<'a, M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle from [`create`], not aliased during the call.
-unsafe fn handle_mut<'a, M: Mechanism<N>, const N: usize>(
+unsafe fn handle_mut<'a, M: Dynamics<N>, const N: usize>(
     sim: *mut Simulation<M, N>,
 ) -> Result<&'a mut Simulation<M, N>, Failure> {
     // SAFETY: by the caller's contract.
@@ -186,7 +188,7 @@ unsafe fn handle_mut<'a, M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `params` is NULL or valid for `len` reads; `out` is NULL or valid for one write.
-pub unsafe fn create<M: Mechanism<N> + Declaration, const N: usize>(
+pub unsafe fn create<M: Dynamics<N> + Declaration, const N: usize>(
     params: *const f64,
     len: usize,
     out: *mut *mut Simulation<M, N>,
@@ -215,7 +217,7 @@ pub unsafe fn create<M: Mechanism<N> + Declaration, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle from [`create`], not used afterwards.
-pub unsafe fn free<M: Mechanism<N>, const N: usize>(sim: *mut Simulation<M, N>) {
+pub unsafe fn free<M: Dynamics<N>, const N: usize>(sim: *mut Simulation<M, N>) {
     if !sim.is_null() {
         // SAFETY: a live handle from `create` (a `Box::into_raw`), freed once.
         drop(unsafe { Box::from_raw(sim) });
@@ -227,7 +229,7 @@ pub unsafe fn free<M: Mechanism<N>, const N: usize>(sim: *mut Simulation<M, N>) 
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; `q` and `v` are NULL or valid for `dof` reads.
-pub unsafe fn set_state<M: Mechanism<N>, const N: usize>(
+pub unsafe fn set_state<M: Dynamics<N>, const N: usize>(
     sim: *mut Simulation<M, N>,
     t: f64,
     q: *const f64,
@@ -253,7 +255,7 @@ pub unsafe fn set_state<M: Mechanism<N>, const N: usize>(
 /// # Safety
 /// `sim` is NULL or a live handle; `t` NULL or valid for a write; `q`, `v` NULL or valid for `dof`
 /// writes.
-pub unsafe fn get_state<M: Mechanism<N>, const N: usize>(
+pub unsafe fn get_state<M: Dynamics<N>, const N: usize>(
     sim: *const Simulation<M, N>,
     t: *mut f64,
     q: *mut f64,
@@ -277,7 +279,7 @@ pub unsafe fn get_state<M: Mechanism<N>, const N: usize>(
 }
 
 /// One step of `method` (a `LAGRANGE_*` code) with the handle's mechanism.
-fn step_with<M: Mechanism<N>, const N: usize>(
+fn step_with<M: Dynamics<N>, const N: usize>(
     sim: &mut Simulation<M, N>,
     method: u32,
     h: f64,
@@ -305,7 +307,7 @@ fn step_with<M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle.
-pub unsafe fn step<M: Mechanism<N>, const N: usize>(
+pub unsafe fn step<M: Dynamics<N>, const N: usize>(
     sim: *mut Simulation<M, N>,
     method: u32,
     h: f64,
@@ -319,7 +321,7 @@ pub unsafe fn step<M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle.
-pub unsafe fn steps<M: Mechanism<N>, const N: usize>(
+pub unsafe fn steps<M: Dynamics<N>, const N: usize>(
     sim: *mut Simulation<M, N>,
     method: u32,
     h: f64,
@@ -342,7 +344,7 @@ pub unsafe fn steps<M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; `accepted` NULL or valid for a write.
-pub unsafe fn integrate_dopri5<M: Mechanism<N>, const N: usize>(
+pub unsafe fn integrate_dopri5<M: Dynamics<N>, const N: usize>(
     sim: *mut Simulation<M, N>,
     t_end: f64,
     rtol: f64,
@@ -353,16 +355,15 @@ pub unsafe fn integrate_dopri5<M: Mechanism<N>, const N: usize>(
         // SAFETY: by the caller's contract.
         let sim = unsafe { handle_mut(sim) }?;
         let settings = Dopri5::new(rtol, atol);
-        settings.validate()?;
-        let mut state = sim.state;
-        let outcome = settings.integrate(&sim.sys, &mut state, t_end, &mut [], |_| {})?;
+        let mut solver = Stepper::new(&sim.sys, settings, &sim.state)?;
+        let outcome = solver.integrate(t_end, &mut [], |_| {})?;
         if let StopReason::MaxSteps = outcome.reason {
             return Err(Failure::Solver(format!(
                 "Dopri5 made its {} step attempts before t_end = {t_end} (reached t = {})",
-                settings.max_steps, state.t
+                settings.max_steps, outcome.state.t
             )));
         }
-        sim.state = state;
+        sim.state = outcome.state;
         if !accepted.is_null() {
             // SAFETY: non-NULL, by the caller's contract valid for a write.
             unsafe { accepted.write(outcome.stats.accepted) };
@@ -375,7 +376,7 @@ pub unsafe fn integrate_dopri5<M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; the outputs NULL or valid for a write.
-pub unsafe fn energies<M: Mechanism<N>, const N: usize>(
+pub unsafe fn energies<M: Dynamics<N>, const N: usize>(
     sim: *const Simulation<M, N>,
     kinetic: *mut f64,
     potential: *mut f64,
@@ -400,7 +401,7 @@ pub unsafe fn energies<M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; `qdd` NULL or valid for `dof` writes.
-pub unsafe fn accelerations<M: Mechanism<N>, const N: usize>(
+pub unsafe fn accelerations<M: Dynamics<N>, const N: usize>(
     sim: *const Simulation<M, N>,
     qdd: *mut f64,
     dof: usize,
@@ -425,7 +426,7 @@ pub unsafe fn accelerations<M: Mechanism<N>, const N: usize>(
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; the outputs NULL or valid for `rows` and `len` writes.
-pub unsafe fn constraint_forces<M: Mechanism<N> + Declaration, const N: usize>(
+pub unsafe fn constraint_forces<M: Dynamics<N> + Declaration, const N: usize>(
     sim: *const Simulation<M, N>,
     multipliers: *mut f64,
     rows: usize,

@@ -41,6 +41,7 @@ const LAGRANGE_PRELUDE: &[&str] = &[
     "State",
     "Validated",
     "mechanism",
+    "urdf",
 ];
 
 /// One `f64` field of the coordinates or parameters struct, or an array `[f64; LEN]` of

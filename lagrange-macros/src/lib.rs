@@ -19,6 +19,7 @@ mod optimize;
 mod potentials;
 mod structure;
 mod symbolic;
+mod urdf;
 
 #[cfg(test)]
 mod expand_tests;
@@ -139,4 +140,13 @@ use proc_macro::TokenStream;
 #[proc_macro_attribute]
 pub fn mechanism(attr: TokenStream, item: TokenStream) -> TokenStream {
     expand::expand(attr.into(), item.into()).into()
+}
+
+/// A robot's URDF file read at compile time into the declaration `#[mechanism]` takes:
+/// `#[urdf("robots/arm.urdf")] pub mod arm {}`, the path relative to the calling crate's
+/// `CARGO_MANIFEST_DIR`. Documented, with an example, where the `lagrange` crate re-exports it
+/// (`lagrange::urdf`).
+#[proc_macro_attribute]
+pub fn urdf(attr: TokenStream, item: TokenStream) -> TokenStream {
+    urdf::expand(attr.into(), item.into()).into()
 }

@@ -174,7 +174,7 @@ fn mutate(pieces: &mut Vec<Piece>, op: u8, a: usize, b: usize, pool: &[proc_macr
         // A group's brackets changed, or the group dropped with its contents.
         _ => {
             let o = opens[a % opens.len()];
-            if b % 2 == 0 {
+            if b.is_multiple_of(2) {
                 let delimiters = [
                     proc_macro2::Delimiter::Parenthesis,
                     proc_macro2::Delimiter::Brace,

@@ -23,6 +23,11 @@ def bits(xs):
     return [None if x is None else struct.pack("<d", x) for x in xs]
 
 
+def shared(metadata):
+    """The sweep's metadata without the part's own shard."""
+    return {k: v for k, v in metadata.items() if k != "lagrange.shard"}
+
+
 def main():
     folder, n, t_max, flipped = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4])
     paths = sorted(glob.glob(f"{folder}/flip_map-part-*.parquet"))
@@ -39,7 +44,6 @@ def main():
     for p, t in zip(paths, tables):
         assert t.schema.equals(schema, check_metadata=False), f"{p}: schema differs"
         m = {k.decode(): v.decode() for k, v in (t.schema.metadata or {}).items()}
-        shared = lambda d: {k: v for k, v in d.items() if k != "lagrange.shard"}
         assert shared(m) == shared(meta), f"{p}: metadata differs"
     theta1 = [x for t in tables for x in t.column("theta1").to_pylist()]
     theta2 = [x for t in tables for x in t.column("theta2").to_pylist()]

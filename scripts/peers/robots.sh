@@ -11,7 +11,12 @@
 #   scripts/peers/robots.sh callgrind    # instructions per call (valgrind), CALLS (500)
 #   scripts/peers/robots.sh build-time   # release build time of the declarations' crate
 #
-# Environment: ROUNDS, CALLS; the versions and compilers of env.sh.
+# ROBOTS=example-robot-data: the same on five robot files of the `example-robot-data` package
+# (UR5, Panda, Solo12, ANYmal C, Talos; example_robots.py says what it changes in them),
+# read by lagrange through `#[lagrange::urdf]` (lagrange-robots' feature of that name).
+#
+# Environment: ROUNDS, CALLS, ROBOTS (synthetic, example-robot-data), ERD_VERSION; the versions
+# and compilers of env.sh.
 set -euo pipefail
 cd "$(dirname "$0")"
 mode=${1:-time}
@@ -21,8 +26,29 @@ case "$mode" in time | check | callgrind | build-time) ;; *)
   ;;
 esac
 root=$(cd ../.. && pwd)
-robots="arm3 arm7 arm14 quadruped humanoid"
-out=build/robots
+case "${ROBOTS:=synthetic}" in
+synthetic)
+  robots="arm3 arm7 arm14 quadruped humanoid"
+  urdf_dir=robots
+  out=build/robots
+  features=
+  sides="pinocchio mujoco lagrange"
+  ;;
+example-robot-data)
+  [ "$mode" = build-time ] && { echo "build-time measures the synthetic robots only" >&2; exit 1; }
+  robots="ur5 panda solo12 anymal talos"
+  urdf_dir="$root/lagrange-bench/robots/example-robot-data"
+  out=build/example-robot-data
+  features="--features example-robot-data"
+  # MuJoCo's URDF import fuses the bodies that fixed joints join and applies the files' joint
+  # limits, which the driver's strict model check (mujoco_robots.c) refuses: Pinocchio only.
+  sides="pinocchio lagrange"
+  ;;
+*)
+  echo "ROBOTS is synthetic or example-robot-data" >&2
+  exit 1
+  ;;
+esac
 mkdir -p "$out/models"
 
 # The release build of lagrange-robots (the five declarations) alone, its dependencies built
@@ -53,17 +79,24 @@ if stale build/pinocchio_robots pinocchio_robots.cpp robots_common.h timing.h; t
   build_pinocchio pinocchio_robots.cpp build/pinocchio_robots \
     -L"$prefix/lib" -lboost_serialization -Wl,-rpath,"$prefix/lib"
 fi
-cargo build --release --quiet --manifest-path "$root/Cargo.toml" -p lagrange-bench --bin robots
-lagrange="$root/target/release/robots"
-
-# 2. The states every side reads, and Pinocchio's models: its URDF parser (the wheel's
+# 2. The states every side reads (for example-robot-data, after the files are copied from the
+# package and made ready), and Pinocchio's models: its URDF parser (the wheel's
 # libpinocchio_parsers), saved as text for the driver (see pinocchio_robots.cpp).
-.venv/bin/python robots.py states "$out/states.tsv"
+if [ "$ROBOTS" = synthetic ]; then
+  .venv/bin/python robots.py states "$out/states.tsv"
+else
+  .venv/bin/python -m pip show --quiet example-robot-data 2>/dev/null ||
+    .venv/bin/python -m pip install --quiet "example-robot-data==${ERD_VERSION:-6.0.0}"
+  .venv/bin/python example_robots.py "$urdf_dir" "$out/states.tsv"
+fi
 .venv/bin/python -c "
 import sys, pinocchio
 for name in sys.argv[1:]:
-    pinocchio.buildModelFromUrdf(f'robots/{name}.urdf').saveToText(f'$out/models/{name}.txt')
+    pinocchio.buildModelFromUrdf(f'$urdf_dir/{name}.urdf').saveToText(f'$out/models/{name}.txt')
 " $robots
+# shellcheck disable=SC2086 # $features is empty or two words
+cargo build --release --quiet --manifest-path "$root/Cargo.toml" -p lagrange-bench --bin robots $features
+lagrange="$root/target/release/robots"
 dofs=$(awk -F'\t' '$2 == "names" { printf "%s%s=%d", sep, $1, NF - 2; sep = " " }' "$out/states.tsv")
 
 # side NAME MODE ARGS...: one side's driver.
@@ -73,14 +106,15 @@ side() {
   case "$name" in
   lagrange) "$lagrange" "$1" --states "$out/states.tsv" "${@:2}" ;;
   pinocchio) build/pinocchio_robots "$1" "$out/states.tsv" "$out/models" "${@:2}" ;;
-  mujoco) build/mujoco_robots "$1" "$out/states.tsv" robots "${@:2}" ;;
+  mujoco) build/mujoco_robots "$1" "$out/states.tsv" "$urdf_dir" "${@:2}" ;;
   esac
 }
 
 # 3. The check, before any timing: q̈ of every side, τ and M of lagrange (and M of MuJoCo),
 # against Pinocchio's. A driver exits 2 when its own check failed; the report exits 2 when a
 # side's values miss Pinocchio's.
-for s in pinocchio mujoco lagrange; do
+rm -f "$out"/values-*.tsv
+for s in $sides; do
   rc=0
   side "$s" values >"$out/values-$s.tsv" || rc=$?
   if [ "$rc" -ne 0 ]; then
@@ -109,11 +143,12 @@ if [ "$mode" = callgrind ]; then
     for pair in lagrange:accelerations pinocchio:aba mujoco:mj_forward \
       lagrange:inverse_dynamics pinocchio:rnea pinocchio:crba lagrange:mass_matrix; do
       s=${pair%%:*} label=${pair#*:}
+      case " $sides " in *" $s "*) ;; *) continue ;; esac
       if [ "$s" = lagrange ]; then
         a=$(count "$lagrange" count --states "$out/states.tsv" --robot "$robot" --label "$label" --calls "$calls")
         b=$(count "$lagrange" count --states "$out/states.tsv" --robot "$robot" --label "$label" --calls $((3 * calls)))
       else
-        dir=robots
+        dir=$urdf_dir
         [ "$s" = pinocchio ] && dir="$out/models"
         a=$(count "build/${s}_robots" count "$out/states.tsv" "$dir" "$robot" "$label" "$calls")
         b=$(count "build/${s}_robots" count "$out/states.tsv" "$dir" "$robot" "$label" $((3 * calls)))
@@ -133,7 +168,7 @@ rounds=${ROUNDS:-5}
 load_before=$(uptime)
 rm -f "$out"/time-*.tsv
 for r in $(seq "$rounds"); do
-  for s in lagrange pinocchio mujoco; do
+  for s in $sides; do
     side "$s" time >"$out/time-$r-$s.tsv"
   done
 done

@@ -11,7 +11,8 @@ the largest difference relative to the size of the reference, max_i |x_i − ref
 
 table: per robot and label, the min over rounds of each round's min per-call time, and the
 median over rounds of each round's median; ratios of the mins; the growth exponent of each
-column from `arm7` to `humanoid`, log(t_humanoid / t_arm7) / log(30 / 7).
+column from `arm7` to `humanoid`, log(t_humanoid / t_arm7) / log(30 / 7) (from `panda` to
+`talos` for the robots of example-robot-data).
 """
 
 import math
@@ -38,7 +39,7 @@ RATIOS = [
     (("lagrange", "inverse_dynamics"), ("pinocchio", "rnea"), "inverse dynamics / RNEA"),
     (("lagrange", "mass_matrix"), ("pinocchio", "crba"), "mass_matrix / CRBA"),
 ]
-GROWTH = ("arm7", "humanoid")
+GROWTH = [("arm7", "humanoid"), ("panda", "talos")]
 
 
 def rows(paths):
@@ -125,8 +126,9 @@ def table(load, paths) -> int:
             ta, tb = best((*a, robot)), best((*b, robot))
             cells.append("n/a" if ta is None or tb is None else f"{ta / tb:.2f}")
         print(f"| {robot} | {dof.get(robot, '?')} | " + " | ".join(cells) + " |")
-    lo, hi = GROWTH
-    if lo in dof and hi in dof:
+    for lo, hi in GROWTH:
+        if lo not in dof or hi not in dof or lo not in robots:
+            continue
         cells = []
         for side, label, _ in COLUMNS:
             ta, tb = best((side, label, lo)), best((side, label, hi))

@@ -2,11 +2,30 @@
 //! bottom carried with its sensitivities, the plain RK4 run a tangent is compared with, and the
 //! check of sensitivities against finite differences.
 
-use lagrange::mechanism::Dynamics;
+use lagrange::evaluation::Evaluate;
+use lagrange::integrate::Fixed;
 use lagrange::parameters::Parametrized;
 use lagrange::prelude::*;
-use lagrange::sensitivity::{Seed, Sensitivities, Tangent};
+use lagrange::sensitivity::{Seed, SeededTangent, Sensitivities};
 pub use lagrange_gallery::scenes::pendulum::pendulum;
+
+/// A solver of the mechanism (or handle) `M` with RK4 steps carrying the tangent of its trajectory.
+pub type Tangent<'m, M, const N: usize, const K: usize, const NP: usize, const P: usize> =
+    Stepper<'m, M, Fixed<Rk4>, N, SeededTangent<'m, <M as Evaluate<N>>::Model, N, K, NP, P>>;
+
+/// RK4 steps of `h` from `s0` carried with the sensitivities along `seeds` (no dense output).
+pub fn rk4_tangent<'m, M, const N: usize, const K: usize, const NP: usize, const P: usize>(
+    sys: &'m M,
+    s0: &State<<M as Evaluate<N>>::Coords>,
+    seeds: [Seed; P],
+    h: f64,
+) -> lagrange::Result<Tangent<'m, M, N, K, NP, P>>
+where
+    M: Evaluate<N>,
+    M::Model: Parametrized<N, K, NP>,
+{
+    Stepper::new(sys, Fixed::<Rk4>::new(h).without_dense(), s0)?.with_sensitivities(seeds)
+}
 
 /// Carries `run`, a tangent of the pendulum `sys` started at θ > 0, to its first passage through
 /// θ = 0: whole RK4 steps of `h` while θ stays positive, then the partial step τ that lands on
@@ -18,11 +37,12 @@ pub fn first_passage<'m, M, const K: usize, const NP: usize, const P: usize>(
     h: f64,
 ) -> Sensitivities<pendulum::Coords, P>
 where
-    M: Mechanism<1, Coords = pendulum::Coords> + Parametrized<1, K, NP>,
+    M: Evaluate<1, Coords = pendulum::Coords>,
+    M::Model: Parametrized<1, K, NP>,
 {
     loop {
         let mut next = run.clone();
-        next.rk4_step(h).unwrap();
+        next.step(f64::INFINITY).unwrap();
         if next.state().q.theta <= 0.0 {
             break;
         }
@@ -43,7 +63,7 @@ where
         (a, fa) = (b, fb);
         (b, fb) = (c, theta_after(c));
     }
-    run.rk4_step(b).unwrap();
+    run.step(run.t() + b).unwrap();
     run.sensitivities()
 }
 
@@ -51,20 +71,21 @@ where
 /// of `h`: its real parts x = (q₁, q₂, q̇₁, q̇₂) and, per seed j, their derivatives ∂x/∂(seed j).
 pub fn rk4_tangent_end<M, const K: usize, const NP: usize, const P: usize>(
     sys: &M,
-    s0: State<<M as Dynamics<2>>::Coords>,
+    s0: State<<M as Evaluate<2>>::Coords>,
     seeds: [Seed; P],
     h: f64,
     steps: usize,
 ) -> ([f64; 4], Vec<[f64; 4]>)
 where
-    M: Mechanism<2> + Parametrized<2, K, NP>,
+    M: Evaluate<2>,
+    M::Model: Parametrized<2, K, NP>,
 {
-    let mut run = Tangent::new(sys, &s0, seeds).unwrap();
+    let mut run = rk4_tangent(sys, &s0, seeds, h).unwrap();
     for _ in 0..steps {
-        run.rk4_step(h).unwrap();
+        run.step(f64::INFINITY).unwrap();
     }
     let ad = run.sensitivities();
-    let row = |q: <M as Dynamics<2>>::Coords, v: <M as Dynamics<2>>::Coords| {
+    let row = |q: <M as Evaluate<2>>::Coords, v: <M as Evaluate<2>>::Coords| {
         let ([q1, q2], [v1, v2]) = (q.to_array(), v.to_array());
         [q1, q2, v1, v2]
     };
@@ -74,9 +95,9 @@ where
 
 /// The plain RK4 run of the two-coordinate `sys` from `s0`: (q₁, q₂, q̇₁, q̇₂) after `steps` steps
 /// of `h`.
-pub fn rk4_end<M: Mechanism<2>>(
+pub fn rk4_end<M: Evaluate<2>>(
     sys: &M,
-    s0: State<<M as Dynamics<2>>::Coords>,
+    s0: State<<M as Evaluate<2>>::Coords>,
     h: f64,
     steps: usize,
 ) -> [f64; 4] {

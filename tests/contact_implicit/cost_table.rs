@@ -3,7 +3,6 @@
 use super::contact_scenes::on_sphere;
 use super::sphere::{bilateral_release, unilateral_release};
 use super::stiff_lander::{lander, LANDER};
-use lagrange::constraints::{ContactDopri5, ContactOptions, ContactRadau5};
 use lagrange::integrate::Stats;
 use lagrange::prelude::*;
 
@@ -50,21 +49,9 @@ fn cost_in_contact_table() {
         },
     );
     for tol in [1e-6, 1e-8, 1e-10] {
-        let mut r = ContactRadau5::new(
-            &sys,
-            Radau5::new(tol, tol),
-            &start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
+        let mut r = Stepper::new(&sys, Radau5::new(tol, tol), &start).expect("solver");
         r.integrate(1.0, &mut [], |_| {}).expect("Radau5");
-        let mut d = ContactDopri5::new(
-            &sys,
-            Dopri5::new(tol, tol),
-            &start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
+        let mut d = Stepper::new(&sys, Dopri5::new(tol, tol), &start).expect("solver");
         d.integrate(1.0, &mut [], |_| {}).expect("Dopri5");
         println!("| {tol:.0e} | ContactRadau5 | {} |", show(r.stats()));
         println!("| {tol:.0e} | ContactDopri5 | {} |", show(d.stats()));

@@ -12,7 +12,15 @@ fn ball_dropped_on_a_unilateral_floor_lands_at_the_closed_form_time_in_radau5() 
     // Jacobian exact): the only errors are the root finder's 1e-13 and round-off over a few steps.
     // Asserted to 1e-12.
     check_ball_dropped_on_the_floor(|sys, s, options| {
-        Radau5::new(1e-10, 1e-10).integrate_contacts(sys, s, 2.0, options, &mut [], |_| {})
+        super::contact_scenes::integrate_contacts(
+            sys,
+            Radau5::new(1e-10, 1e-10),
+            s,
+            2.0,
+            options,
+            &mut [],
+            |_| {},
+        )
     });
 }
 
@@ -33,8 +41,8 @@ fn user_events_and_contact_events_together_in_radau5_integrate() {
         Event::new(&rise).direction(Direction::Rising).terminal(),
     ];
     let mut crossings = Vec::new();
-    let outcome = Radau5::new(1e-10, 1e-10)
-        .integrate(&sys, &mut s, 1.0, &mut events, |o| {
+    let outcome = sys
+        .integrate(Radau5::new(1e-10, 1e-10), &mut s, 1.0, &mut events, |o| {
             if let lagrange::integrate::Observation::Event(hit) = o {
                 crossings.push((hit.index, hit.state.t));
             }

@@ -5,7 +5,7 @@ use super::contact_scenes::{
     puck_stop_errors,
 };
 use lagrange::constraints::ModeChange;
-use lagrange::constraints::{ContactOptions, ContactRadau5, RowMode};
+use lagrange::constraints::{ContactOptions, RowMode};
 use lagrange::integrate::Outcome;
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::rough_plane::rough_plane::{self, RoughPlane};
@@ -16,16 +16,17 @@ fn block_sent_up_a_rough_ramp_stops_then_sticks_or_slides_back_in_radau5() {
     // the ball's fall); the stop is located to the root finder's 1e-13 and round-off. Asserted to
     // 1e-12.
     check_block_sent_up_the_rough_ramp(|sys, start| {
-        let mut solver = ContactRadau5::new(
-            sys,
-            Radau5::new(1e-10, 1e-10),
-            start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
-        assert_eq!(solver.mode().rows, [RowMode::Active, RowMode::SlipPositive]);
+        let mut solver = Stepper::new(sys, Radau5::new(1e-10, 1e-10), start).expect("solver");
+        assert_eq!(
+            solver.contacts().mode().rows,
+            [RowMode::Active, RowMode::SlipPositive]
+        );
         let outcome = solver.integrate(1.5, &mut [], |_| {}).expect("integration");
-        (solver.events().to_vec(), solver.state(), outcome.stats)
+        (
+            solver.mode_changes().to_vec(),
+            solver.state(),
+            outcome.stats,
+        )
     });
 }
 
@@ -55,8 +56,9 @@ fn radau5_contacts(
     s: &mut rough_plane::State,
     tol: f64,
 ) -> lagrange::Result<(Outcome<rough_plane::Coords>, Vec<ModeChange>)> {
-    Radau5::new(tol, tol).integrate_contacts(
+    super::contact_scenes::integrate_contacts(
         sys,
+        Radau5::new(tol, tol),
         s,
         1.5,
         ContactOptions::default(),

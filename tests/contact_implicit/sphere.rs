@@ -4,7 +4,7 @@
 use super::contact_scenes::{
     bilateral_release_in, check_integrate_takes_the_contact_solver, Start, G, M, R, STARTS,
 };
-use lagrange::constraints::{ContactOptions, ContactRadau5, RowMode};
+use lagrange::constraints::{ContactOptions, RowMode};
 use lagrange::integrate::Stats;
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
@@ -13,7 +13,7 @@ use lagrange_gallery::scenes::sphere_release::sphere_release as unilateral;
 /// user event, located on the same collocation polynomials): the release time and the cost.
 pub(super) fn bilateral_release(start: Start, tol: f64) -> (f64, Stats) {
     bilateral_release_in(start, |sys, s, events| {
-        Radau5::new(tol, tol).integrate(sys, s, 10.0, events, |_| {})
+        sys.integrate(Radau5::new(tol, tol), s, 10.0, events, |_| {})
     })
 }
 
@@ -24,20 +24,14 @@ pub(super) fn unilateral_release(start: Start, tol: f64) -> (f64, Stats, f64) {
     let sys = SphereRelease { m: M, r: R, g: G };
     let ([x, y], [vx, vy]) = start.state();
     let state = State::new(0.0, Coords { x, y }, Coords { x: vx, y: vy });
-    let mut solver = ContactRadau5::new(
-        &sys,
-        Radau5::new(tol, tol),
-        &state,
-        ContactOptions::default(),
-    )
-    .expect("solver");
-    assert_eq!(solver.mode().rows, [RowMode::Active]);
+    let mut solver = Stepper::new(&sys, Radau5::new(tol, tol), &state).expect("solver");
+    assert_eq!(solver.contacts().mode().rows, [RowMode::Active]);
     let mut longest = 0.0f64;
-    while solver.events().is_empty() {
+    while solver.mode_changes().is_empty() {
         solver.step(10.0).expect("step");
         longest = longest.max(solver.dense().t_end() - solver.dense().t_start());
     }
-    let change = solver.events()[0];
+    let change = solver.mode_changes()[0];
     assert_eq!(
         (change.constraint, change.from, change.to),
         ("surface", RowMode::Active, RowMode::Inactive)
@@ -113,9 +107,17 @@ fn radau5_integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
     use unilateral::{Coords, SphereRelease, State};
     let method = Radau5::new(1e-9, 1e-9);
     check_integrate_takes_the_contact_solver(
-        |sys, s, t_end| method.integrate(sys, s, t_end, &mut [], |_| {}),
+        |sys, s, t_end| sys.integrate(method, s, t_end, &mut [], |_| {}),
         |sys, s, t_end| {
-            method.integrate_contacts(sys, s, t_end, ContactOptions::default(), &mut [], |_| {})
+            super::contact_scenes::integrate_contacts(
+                sys,
+                method,
+                s,
+                t_end,
+                ContactOptions::default(),
+                &mut [],
+                |_| {},
+            )
         },
     );
     let sys = SphereRelease { m: M, r: R, g: G };
@@ -126,16 +128,16 @@ fn radau5_integrate_takes_the_contact_solver_on_a_unilateral_declaration() {
     let mut stepped = start;
     sys.step::<Radau5>(&mut stepped, t_end).expect("step");
     let mut direct = start;
-    Radau5::default()
-        .integrate_contacts(
-            &sys,
-            &mut direct,
-            t_end,
-            ContactOptions::default(),
-            &mut [],
-            |_| {},
-        )
-        .expect("integrate_contacts");
+    super::contact_scenes::integrate_contacts(
+        &sys,
+        Radau5::default(),
+        &mut direct,
+        t_end,
+        ContactOptions::default(),
+        &mut [],
+        |_| {},
+    )
+    .expect("integrate_contacts");
     assert_eq!(stepped, direct);
     assert!(
         stepped.q.x.hypot(stepped.q.y) > R + 0.1,

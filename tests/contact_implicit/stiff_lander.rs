@@ -1,7 +1,7 @@
 //! A stiff case: a lander on a unilateral floor, its leg a stiff, damped spring.
 
 use super::contact_scenes::G;
-use lagrange::constraints::{ContactDopri5, ContactOptions, ContactRadau5, RowMode};
+use lagrange::constraints::RowMode;
 use lagrange::prelude::*;
 
 /// A lander: a foot of mass m₁ on the floor (unilateral), a top mass m₂ above it on a spring of
@@ -91,26 +91,22 @@ fn stiff_lander_settles_on_a_unilateral_floor_in_radau5() {
     );
     let t_end = 1.0;
     let run_radau = |tol: f64| {
-        let mut solver = ContactRadau5::new(
-            &sys,
-            Radau5::new(tol, tol),
-            &start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
+        let mut solver = Stepper::new(&sys, Radau5::new(tol, tol), &start).expect("solver");
         solver.integrate(t_end, &mut [], |_| {}).expect("Radau5");
-        (solver.state(), solver.events().to_vec(), solver.stats())
+        (
+            solver.state(),
+            solver.mode_changes().to_vec(),
+            solver.stats(),
+        )
     };
     let run_dopri = |tol: f64| {
-        let mut solver = ContactDopri5::new(
-            &sys,
-            Dopri5::new(tol, tol),
-            &start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
+        let mut solver = Stepper::new(&sys, Dopri5::new(tol, tol), &start).expect("solver");
         solver.integrate(t_end, &mut [], |_| {}).expect("Dopri5");
-        (solver.state(), solver.events().to_vec(), solver.stats())
+        (
+            solver.state(),
+            solver.mode_changes().to_vec(),
+            solver.stats(),
+        )
     };
     let (reference, ref_events, ref_stats) = run_dopri(1e-12);
     let t_land = (2.0 * height / G).sqrt();
@@ -194,33 +190,25 @@ fn stiff_lander_with_a_critically_damped_leg_hops_once_in_radau5() {
             top: 0.0,
         },
     );
-    let mut reference = ContactDopri5::new(
-        &sys,
-        Dopri5::new(1e-12, 1e-12),
-        &start,
-        ContactOptions::default(),
-    )
-    .expect("solver");
+    let mut reference = Stepper::new(&sys, Dopri5::new(1e-12, 1e-12), &start).expect("solver");
     reference
         .integrate(1.0, &mut [], |_| {})
         .expect("reference");
     let modes = [RowMode::Active, RowMode::Inactive, RowMode::Active];
-    let reference_modes: Vec<RowMode> = reference.events().iter().map(|e| e.to).collect();
-    assert_eq!(reference_modes, modes, "{:?}", reference.events());
+    let reference_modes: Vec<RowMode> = reference.mode_changes().iter().map(|e| e.to).collect();
+    assert_eq!(reference_modes, modes, "{:?}", reference.mode_changes());
     for tol in [1e-6, 1e-8, 1e-10] {
-        let mut solver = ContactRadau5::new(
-            &sys,
-            Radau5::new(tol, tol),
-            &start,
-            ContactOptions::default(),
-        )
-        .expect("solver");
+        let mut solver = Stepper::new(&sys, Radau5::new(tol, tol), &start).expect("solver");
         let outcome = solver.integrate(1.0, &mut [], |_| {}).expect("Radau5");
-        let events = solver.events();
+        let events = solver.mode_changes();
         eprintln!(
             "tol {tol:.0e}: events {:?} (reference {:?}); {:?}",
             events.iter().map(|e| e.t).collect::<Vec<_>>(),
-            reference.events().iter().map(|e| e.t).collect::<Vec<_>>(),
+            reference
+                .mode_changes()
+                .iter()
+                .map(|e| e.t)
+                .collect::<Vec<_>>(),
             outcome.stats
         );
         assert_eq!(events.iter().map(|e| e.to).collect::<Vec<_>>(), modes);
@@ -230,7 +218,7 @@ fn stiff_lander_with_a_critically_damped_leg_hops_once_in_radau5() {
         // landing, leg and foot moving together by then); the release's λ moves at the stiff
         // leg's rate, far faster. So ≤ 1.5/0.167·tol < 10·tol, plus the
         // reference's own error at 1e-12 (1e-10 with the same argument).
-        for (e, r) in events.iter().zip(reference.events()) {
+        for (e, r) in events.iter().zip(reference.mode_changes()) {
             assert!(
                 (e.t - r.t).abs() < 10.0 * tol + 1e-10,
                 "tol {tol:.0e}: {} against {}",

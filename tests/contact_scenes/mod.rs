@@ -12,6 +12,23 @@ use lagrange_gallery::scenes::rough_plane::{rough_plane, stop};
 use lagrange_gallery::scenes::rough_ramp::rough_ramp;
 use lagrange_gallery::scenes::sphere_release::{sphere_release, Release};
 
+/// `method` from `s` to `t_end` with the contact options, events and observer given: the outcome
+/// and the mode changes, `s` moved to where the integration ended (unchanged on error).
+pub fn integrate_contacts<M: Mechanism<N>, Me: lagrange::integrate::Method<N>, const N: usize>(
+    sys: &M,
+    method: Me,
+    s: &mut State<M::Coords>,
+    t_end: f64,
+    options: ContactOptions,
+    events: &mut [Event<'_, M::Coords>],
+    observer: impl FnMut(lagrange::integrate::Observation<'_, M::Coords, N>),
+) -> lagrange::Result<(Outcome<M::Coords>, Vec<ModeChange>)> {
+    let mut solver = Stepper::new(sys, method, s)?.with_contact_options(options)?;
+    let outcome = solver.integrate(t_end, events, observer)?;
+    *s = outcome.state;
+    Ok((outcome, solver.mode_changes().to_vec()))
+}
+
 /// The particle's mass on the sphere.
 pub const M: f64 = 0.7;
 /// The sphere's radius.

@@ -5,7 +5,7 @@
 
 use super::harness::{kind, Entry, Part, Setup, Value};
 use super::units::{dim, Dim, Units, TIME};
-use lagrange::constraints::{Constraints, ContactSolver};
+use lagrange::constraints::Constraints;
 use lagrange::model::Model;
 use lagrange::prelude::*;
 use lagrange::{consistent_state, constraint_forces, ContactOptions};
@@ -93,15 +93,15 @@ where
                 let sys = (setup.make)(u);
                 let refine = if fine { 2 } else { 1 };
                 let h = u.express(setup.h, TIME) / refine as f64;
-                let mut solver =
-                    ContactSolver::new(&sys, &setup.state(u), h, ContactOptions::default())
-                        .map_err(|e| kind(&e))?;
+                let mut solver = Stepper::new(&sys, Rk4::with_step(h), &setup.state(u))
+                    .and_then(|solver| solver.with_contact_options(ContactOptions::default()))
+                    .map_err(|e| kind(&e))?;
                 for _ in 0..setup.steps * refine {
                     solver.step(f64::MAX).map_err(|e| kind(&e))?;
                 }
                 let st = solver.stats();
                 // The mode changes and their times, compared as a part of their own.
-                let events = solver.contact().events.clone();
+                let events = solver.mode_changes().to_vec();
                 let mut parts = setup.state_parts(u, &solver.state());
                 if !fine {
                     parts.push(Part {

@@ -3,7 +3,7 @@
 
 use super::units::{Dim, Units, SI, TIME};
 use lagrange::analysis::{equilibrium, normal_modes, EquilibriumOptions};
-use lagrange::integrate::{FixedStepper, Integrator, Stepper};
+use lagrange::integrate::{Integrator, Stepper};
 use lagrange::prelude::*;
 use lagrange::{ContactOptions, Dop853, Dopri5};
 
@@ -345,7 +345,7 @@ fn fixed<'a, M: Mechanism<N>, I: Integrator + 'a, const N: usize>(
             let refine = if fine { 2 } else { 1 };
             let h = u.express(setup.h, TIME) / refine as f64;
             let mut solver =
-                FixedStepper::<_, I, N>::new(&sys, &setup.state(u), h).map_err(|e| kind(&e))?;
+                Stepper::new(&sys, I::with_step(h), &setup.state(u)).map_err(|e| kind(&e))?;
             for _ in 0..setup.steps * refine {
                 // Steps of exactly h, never shortened to land on an end time.
                 solver.step(f64::MAX).map_err(|e| kind(&e))?;
@@ -389,21 +389,36 @@ fn adaptive<'a, M: Mechanism<N>, const N: usize>(
             let t_end = u.express(setup.span, TIME);
             let mut s = setup.state(u);
             let outcome = match name {
-                "Dopri5" => Dopri5 {
-                    h_init: h0,
-                    ..Dopri5::new(rtol, atol)
-                }
-                .integrate(&sys, &mut s, t_end, &mut [], |_| {}),
-                "Dop853" => Dop853 {
-                    h_init: h0,
-                    ..Dop853::new(rtol, atol)
-                }
-                .integrate(&sys, &mut s, t_end, &mut [], |_| {}),
-                _ => Radau5 {
-                    h_init: h0,
-                    ..Radau5::new(rtol, atol)
-                }
-                .integrate(&sys, &mut s, t_end, &mut [], |_| {}),
+                "Dopri5" => sys.integrate(
+                    Dopri5 {
+                        h_init: h0,
+                        ..Dopri5::new(rtol, atol)
+                    },
+                    &mut s,
+                    t_end,
+                    &mut [],
+                    |_| {},
+                ),
+                "Dop853" => sys.integrate(
+                    Dop853 {
+                        h_init: h0,
+                        ..Dop853::new(rtol, atol)
+                    },
+                    &mut s,
+                    t_end,
+                    &mut [],
+                    |_| {},
+                ),
+                _ => sys.integrate(
+                    Radau5 {
+                        h_init: h0,
+                        ..Radau5::new(rtol, atol)
+                    },
+                    &mut s,
+                    t_end,
+                    &mut [],
+                    |_| {},
+                ),
             }
             .map_err(|e| kind(&e))?;
             let st = outcome.stats;

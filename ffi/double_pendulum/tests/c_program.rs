@@ -145,8 +145,8 @@ fn c_program_matches_rust() {
     }
     let rk4 = summary(&sys, &s0, &s);
     let mut s = s0;
-    let outcome = Dopri5::new(1e-10, 1e-12)
-        .integrate(&sys, &mut s, 20.0, &mut [], |_| {})
+    let outcome = sys
+        .integrate(Dopri5::new(1e-10, 1e-12), &mut s, 20.0, &mut [], |_| {})
         .unwrap();
     let dopri5 = summary(&sys, &s0, &s);
 

@@ -11,7 +11,8 @@ use crate::plot::{self, Series};
 use crate::Check;
 use lagrange::animation::Recorder;
 use lagrange::prelude::*;
-use lagrange::sensitivity::{Seed, Tangent};
+use lagrange::sensitivity::Seed;
+use lagrange::Fixed;
 use nalgebra::{Matrix2, Vector2};
 use std::path::Path;
 
@@ -58,11 +59,13 @@ const SAMPLES: usize = 60;
 
 /// θ(tᵢ) at every sample, and ∂θ(tᵢ)/∂(L, c), from one RK4 run carried on dual numbers.
 pub fn trajectory(sys: &DampedPendulum, s0: &State) -> lagrange::Result<(Vec<f64>, Vec<[f64; 2]>)> {
-    let mut run = Tangent::new(sys, s0, [Seed::Parameter("l"), Seed::Parameter("c")])?;
+    let seeds = [Seed::Parameter("l"), Seed::Parameter("c")];
+    let rk4 = Fixed::<Rk4>::new(H).without_dense();
+    let mut run = Stepper::new(sys, rk4, s0)?.with_sensitivities(seeds)?;
     let (mut theta, mut jacobian) = (Vec::new(), Vec::new());
     for _ in 0..SAMPLES {
         for _ in 0..STRIDE {
-            run.rk4_step(H)?;
+            run.step(f64::INFINITY)?;
         }
         let out = run.sensitivities();
         theta.push(out.state.q.theta);

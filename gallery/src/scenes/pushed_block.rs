@@ -17,8 +17,9 @@ use crate::page::outline;
 use crate::plot::{self, Series};
 use crate::Check;
 use lagrange::animation::Recorder;
-use lagrange::constraints::{ContactOptions, ContactRk4, RowMode};
+use lagrange::constraints::RowMode;
 use lagrange::prelude::*;
+use lagrange::Fixed;
 use std::path::Path;
 
 #[mechanism]
@@ -94,28 +95,41 @@ pub fn slides(sys: &PushedBlock) -> Option<(f64, (f64, f64))> {
 
 /// The block from rest for `steps` steps of `h`: its displacement in the plane (level, up-slope)
 /// over time, and the stepper.
-pub fn push(sys: &PushedBlock, h: f64, steps: usize) -> (Vec<(f64, f64, f64)>, ContactRk4<3>) {
+#[allow(clippy::type_complexity)]
+pub fn push(
+    sys: &PushedBlock,
+    h: f64,
+    steps: usize,
+) -> (
+    Vec<(f64, f64, f64)>,
+    Stepper<'_, PushedBlock, Fixed<Rk4>, 3>,
+) {
     push_observed(sys, h, steps, |_| {})
 }
 
 /// [`push`], with `observe` called on every state from the first.
+#[allow(clippy::type_complexity)]
 pub fn push_observed(
     sys: &PushedBlock,
     h: f64,
     steps: usize,
     mut observe: impl FnMut(&State),
-) -> (Vec<(f64, f64, f64)>, ContactRk4<3>) {
+) -> (
+    Vec<(f64, f64, f64)>,
+    Stepper<'_, PushedBlock, Fixed<Rk4>, 3>,
+) {
     let (sn, cs) = sys.alpha.sin_cos();
     let mut s = State::at_rest(Coords {
         x: 0.0,
         y: 0.0,
         z: 0.0,
     });
-    let mut stepper = ContactRk4::new(sys, &s, ContactOptions::default()).expect("stepper");
+    let mut stepper = Stepper::new(sys, Rk4::with_step(h), &s).expect("stepper");
     let mut trace = vec![(0.0, 0.0, 0.0)];
     observe(&s);
     for _ in 0..steps {
-        stepper.step(sys, &mut s, h).expect("step");
+        stepper.step(f64::INFINITY).expect("step");
+        s = stepper.state();
         observe(&s);
         trace.push((s.t, s.q.x, s.q.y * cs + s.q.z * sn));
     }
@@ -166,7 +180,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             let _ = film.write_html(plots.join("pushed_block.html"));
         }
         let &(t, level, up) = trace.last().unwrap();
-        let rows = stepper.mode().rows;
+        let rows = stepper.contacts().mode().rows;
         println!(
             "{SCENE} ({label}, P = {:.4} N, threshold {threshold:.4} N): after {t:.1} s at \
              (level {level:.9}, up-slope {up:.9}) m, mode {rows:?}",
@@ -186,7 +200,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
                     SCENE,
                     format!("{label}: stuck throughout (1 = yes)"),
                     f64::from(u8::from(
-                        stepper.events.is_empty() && rows[1] == RowMode::Stick,
+                        stepper.mode_changes().is_empty() && rows[1] == RowMode::Stick,
                     )),
                     1.0,
                     0.0,
@@ -213,7 +227,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
                     SCENE,
                     format!("{label}: slides from the start, no mode change (1 = yes)"),
                     f64::from(u8::from(
-                        stepper.events.is_empty() && rows[1] == RowMode::Sliding,
+                        stepper.mode_changes().is_empty() && rows[1] == RowMode::Sliding,
                     )),
                     1.0,
                     0.0,

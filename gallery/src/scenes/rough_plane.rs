@@ -21,8 +21,9 @@ use crate::page::outline;
 use crate::plot::{self, Series};
 use crate::Check;
 use lagrange::animation::Recorder;
-use lagrange::constraints::{ContactOptions, ContactRk4, RowMode};
+use lagrange::constraints::RowMode;
 use lagrange::prelude::*;
+use lagrange::Fixed;
 use std::path::Path;
 
 #[mechanism]
@@ -87,23 +88,33 @@ pub fn stop(sys: &RoughPlane, v0: f64) -> (f64, f64, f64) {
 }
 
 /// One run: the state after `steps` steps of `h`, the stepper (mode and events) and the path.
+#[allow(clippy::type_complexity)]
 pub fn slide(
     sys: &RoughPlane,
     v0: f64,
     h: f64,
     steps: usize,
-) -> (State, ContactRk4<3>, Vec<(f64, f64)>) {
+) -> (
+    State,
+    Stepper<'_, RoughPlane, Fixed<Rk4>, 3>,
+    Vec<(f64, f64)>,
+) {
     slide_observed(sys, v0, h, steps, |_| {})
 }
 
 /// [`slide`], with `observe` called on every state from the first.
+#[allow(clippy::type_complexity)]
 pub fn slide_observed(
     sys: &RoughPlane,
     v0: f64,
     h: f64,
     steps: usize,
     mut observe: impl FnMut(&State),
-) -> (State, ContactRk4<3>, Vec<(f64, f64)>) {
+) -> (
+    State,
+    Stepper<'_, RoughPlane, Fixed<Rk4>, 3>,
+    Vec<(f64, f64)>,
+) {
     let mut s = State::new(
         0.0,
         Coords {
@@ -117,11 +128,12 @@ pub fn slide_observed(
             z: 0.0,
         },
     );
-    let mut stepper = ContactRk4::new(sys, &s, ContactOptions::default()).expect("stepper");
+    let mut stepper = Stepper::new(sys, Rk4::with_step(h), &s).expect("stepper");
     let mut path = vec![(0.0, 0.0)];
     observe(&s);
     for _ in 0..steps {
-        stepper.step(sys, &mut s, h).expect("step");
+        stepper.step(f64::INFINITY).expect("step");
+        s = stepper.state();
         observe(&s);
         path.push((s.q.x, s.q.y));
     }
@@ -164,7 +176,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             outline(&mut film, "ground", &ground, true).expect("the ground");
             let _ = film.write_html(plots.join("rough_plane.html"));
         }
-        let events = &stepper.events;
+        let events = stepper.mode_changes();
         let sliding_at_start = events.first().map(|e| e.from) == Some(RowMode::Sliding);
         println!(
             "{SCENE} ({label}): stops at t = {:.12} s (closed form {t_s:.12}), at ({:.9}, {:.9}) m \
@@ -186,7 +198,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             SCENE,
             format!("{label}: slides, then sticks (1 = yes)"),
             f64::from(u8::from(
-                sliding_at_start && stepper.mode().rows[1] == RowMode::Stick,
+                sliding_at_start && stepper.contacts().mode().rows[1] == RowMode::Stick,
             )),
             1.0,
             0.0,

@@ -12,14 +12,14 @@
 //!   t_s = u / (g (sin α + μₖ cos α)) after d_s = u² / (2 g (sin α + μₖ cos α)), and then sticks if
 //!   tan α ≤ μₛ, or slides back with a = g (sin α − μₖ cos α).
 //!
-//! [`ContactRk4`] locates the stop (slip velocity reaching 0) and then decides stick or slide once:
+//! A [`Stepper`] locates the stop (slip velocity reaching 0) and then decides stick or slide once:
 //! exactly one mode change, no chattering at the stick/slip boundary.
 
 use crate::page::outline;
 use crate::plot::{self, Series};
 use crate::Check;
 use lagrange::animation::Recorder;
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
+use lagrange::constraints::{constraint_forces, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -81,10 +81,11 @@ pub fn run(plots: &Path) -> Vec<Check> {
         mu_s: 0.4,
     };
     let mut s = State::at_rest(Coords { x: 0.0, y: 0.0 });
-    let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default()).expect("stepper");
-    let starts_sliding = stepper.mode().rows == [RowMode::Active, RowMode::SlipNegative];
+    let mut stepper = Stepper::new(&sys, Rk4::with_step(h), &s).expect("stepper");
+    let starts_sliding = stepper.contacts().mode().rows == [RowMode::Active, RowMode::SlipNegative];
     for _ in 0..1000 {
-        stepper.step(&sys, &mut s, h).expect("step");
+        stepper.step(f64::INFINITY).expect("step");
+        s = stepper.state();
     }
     let a = g * (sn - sys.mu_k * cs);
     let (d, _) = along(&s);
@@ -119,7 +120,9 @@ pub fn run(plots: &Path) -> Vec<Check> {
     checks.push(Check::new(
         SCENE,
         "sliding from rest: starts sliding and never changes mode (1 = yes)",
-        f64::from(u8::from(starts_sliding && stepper.events.is_empty())),
+        f64::from(u8::from(
+            starts_sliding && stepper.mode_changes().is_empty(),
+        )),
         1.0,
         0.0,
     ));
@@ -131,10 +134,11 @@ pub fn run(plots: &Path) -> Vec<Check> {
         ..sys
     };
     let mut s = State::at_rest(Coords { x: 0.0, y: 0.0 });
-    let mut stepper = ContactRk4::new(&sticky, &s, ContactOptions::default()).expect("stepper");
-    let starts_stuck = stepper.mode().rows == [RowMode::Active, RowMode::Stick];
+    let mut stepper = Stepper::new(&sticky, Rk4::with_step(h), &s).expect("stepper");
+    let starts_stuck = stepper.contacts().mode().rows == [RowMode::Active, RowMode::Stick];
     for _ in 0..2000 {
-        stepper.step(&sticky, &mut s, h).expect("step");
+        stepper.step(f64::INFINITY).expect("step");
+        s = stepper.state();
     }
     // Sticking is enforced as a velocity constraint: the block does not move, to round-off.
     checks.push(Check::new(
@@ -147,7 +151,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     checks.push(Check::new(
         SCENE,
         "from rest, tan α ≤ μₛ: stuck, no mode change (1 = yes)",
-        f64::from(u8::from(starts_stuck && stepper.events.is_empty())),
+        f64::from(u8::from(starts_stuck && stepper.mode_changes().is_empty())),
         1.0,
         0.0,
     ));
@@ -166,8 +170,8 @@ pub fn run(plots: &Path) -> Vec<Check> {
                 y: u * sn,
             },
         );
-        let mut stepper = ContactRk4::new(&sys, &s, ContactOptions::default()).expect("stepper");
-        let starts_up = stepper.mode().rows == [RowMode::Active, RowMode::SlipPositive];
+        let mut stepper = Stepper::new(&sys, Rk4::with_step(h), &s).expect("stepper");
+        let starts_up = stepper.contacts().mode().rows == [RowMode::Active, RowMode::SlipPositive];
         let up = g * (sn + mu_k * cs);
         let down = g * (sn - mu_k * cs);
         let (t_stop, d_stop) = (u / up, u * u / (2.0 * up));
@@ -185,7 +189,8 @@ pub fn run(plots: &Path) -> Vec<Check> {
         let mut film = Recorder::new(&sys).title(format!("{SCENE}: sent up, {label}"));
         film.push(&sys, &s).expect("a finite state");
         for step in 1..=3000 {
-            stepper.step(&sys, &mut s, h).expect("step");
+            stepper.step(f64::INFINITY).expect("step");
+            s = stepper.state();
             film.push(&sys, &s).expect("a finite state");
             let (d, _) = along(&s);
             worst = worst.max((d - exact(s.t)).abs());
@@ -208,7 +213,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             .expect("the ramp");
             let _ = film.write_html(plots.join("rough_ramp.html"));
         }
-        let events = &stepper.events;
+        let events = stepper.mode_changes();
         println!(
             "{SCENE} (sent up, μₛ = {mu_s}, {label}): {} mode change(s) in 3000 steps, stop at t = {:.15} s \
              (exact {t_stop:.15}), |d − exact| ≤ {worst:.1e} m",

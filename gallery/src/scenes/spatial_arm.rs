@@ -150,17 +150,16 @@ fn free_swing(plots: &Path) -> Vec<Check> {
     film.push(&sys, &s).expect("a finite state");
     let mut events = [];
     let t_end = 10.0;
-    Dop853::new(1e-12, 1e-12)
-        .integrate(&sys, &mut s, t_end, &mut events, |o| {
-            if let Observation::Step { state, .. } = o {
-                film.push(&sys, state).expect("a finite state");
-                if let Ok(e) = sys.energy(state) {
-                    times.push(state.t);
-                    drift.push((e - e0) / e0.abs());
-                }
+    sys.integrate(Dop853::new(1e-12, 1e-12), &mut s, t_end, &mut events, |o| {
+        if let Observation::Step { state, .. } = o {
+            film.push(&sys, state).expect("a finite state");
+            if let Ok(e) = sys.energy(state) {
+                times.push(state.t);
+                drift.push((e - e0) / e0.abs());
             }
-        })
-        .expect("simulation");
+        }
+    })
+    .expect("simulation");
     let _ = film.write_html(plots.join("spatial_arm.html"));
     let _ = plot::lines(
         &plots.join("spatial_arm_energy.svg"),
@@ -215,8 +214,14 @@ fn physical_pendulum() -> Vec<Check> {
     // Half a period later the link stops at −θ₀: θ̇ rises through zero.
     let rate = |s: &State| s.v.theta;
     let mut events = [Event::new(&rate).direction(Direction::Rising).terminal()];
-    let outcome = Dop853::new(1e-12, 1e-12)
-        .integrate(&sys, &mut s, period, &mut events, |_| {})
+    let outcome = sys
+        .integrate(
+            Dop853::new(1e-12, 1e-12),
+            &mut s,
+            period,
+            &mut events,
+            |_| {},
+        )
         .expect("simulation");
     let located = matches!(outcome.reason, StopReason::Event(_));
     // The event is located on Dop853's dense output (order 7) to the tolerance, ~1e-12 of the

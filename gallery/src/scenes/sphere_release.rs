@@ -11,13 +11,14 @@
 //! t* = ∫₀^θ* R dθ / v(θ), computed here by composite Gauss–Legendre quadrature (smooth integrand,
 //! v ≥ v₀ > 0). After release the particle is a projectile: a parabola from the release state.
 //!
-//! The simulation knows none of this: it integrates the constrained equations with [`ContactRk4`],
-//! which keeps the contact while its multiplier λ = N is positive and locates the instant λ reaches 0.
+//! The simulation knows none of this: a [`Stepper`] with RK4 integrates the constrained equations
+//! with the contact mode held over each step, keeps the contact while its multiplier λ = N is
+//! positive and locates the instant λ reaches 0.
 
 use crate::plot::{self, Series};
 use crate::Check;
 use lagrange::animation::Recorder;
-use lagrange::constraints::{constraint_forces, ContactOptions, ContactRk4, RowMode};
+use lagrange::constraints::{constraint_forces, RowMode};
 use lagrange::prelude::*;
 use std::path::Path;
 
@@ -146,9 +147,9 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let normal_exact = |cos: f64| m * g * (3.0 * cos - 2.0) - m * v0 * v0 / r;
 
     let s0 = State::new(0.0, Coords { x: 0.0, y: r }, Coords { x: v0, y: 0.0 });
-    let mut stepper = ContactRk4::new(&sys, &s0, ContactOptions::default()).expect("stepper");
-    let in_contact = stepper.mode().rows == [RowMode::Active];
     let h = 1e-3;
+    let mut stepper = Stepper::new(&sys, Rk4::with_step(h), &s0).expect("stepper");
+    let in_contact = stepper.contacts().mode().rows == [RowMode::Active];
     let mut s = s0;
     let (mut worst_normal, mut normal_trace, mut closed_trace) = (0.0f64, Vec::new(), Vec::new());
     let mut path = vec![(s.q.x, s.q.y)];
@@ -157,11 +158,12 @@ pub fn run(plots: &Path) -> Vec<Check> {
         .and_then(|f| f.trail("particle"))
         .expect("the sphere's centre");
     film.push(&sys, &s).expect("a finite state");
-    while stepper.events.is_empty() {
-        stepper.step(&sys, &mut s, h).expect("contact step");
+    while stepper.mode_changes().is_empty() {
+        stepper.step(f64::INFINITY).expect("contact step");
+        s = stepper.state();
         film.push(&sys, &s).expect("a finite state");
         path.push((s.q.x, s.q.y));
-        if stepper.events.is_empty() {
+        if stepper.mode_changes().is_empty() {
             let lambda = constraint_forces(&sys, &s).expect("forces").multipliers[0];
             let cos = s.q.y / r;
             worst_normal = worst_normal.max((lambda - normal_exact(cos)).abs());
@@ -170,18 +172,17 @@ pub fn run(plots: &Path) -> Vec<Check> {
             closed_trace.push((theta, normal_exact(cos)));
         }
     }
-    let release = stepper.events[0];
+    let release = stepper.mode_changes()[0];
     let released = release.from == RowMode::Active && release.to == RowMode::Inactive;
 
     // The state at the located release instant: the same integration, its last step shortened to
     // end at the event.
-    let mut at_release = s0;
-    let mut probe = ContactRk4::new(&sys, &at_release, ContactOptions::default()).expect("stepper");
-    while at_release.t + h < release.t {
-        probe.step(&sys, &mut at_release, h).expect("step");
+    let mut probe = Stepper::new(&sys, Rk4::with_step(h), &s0).expect("stepper");
+    while probe.t() + h < release.t {
+        probe.step(f64::INFINITY).expect("step");
     }
-    let last = release.t - at_release.t;
-    probe.step(&sys, &mut at_release, last).expect("step");
+    probe.step(release.t).expect("step");
+    let at_release = probe.state();
     let cos_release = at_release.q.y / at_release.q.x.hypot(at_release.q.y);
 
     // After release: a parabola from the exact release state, staying outside the sphere.
@@ -193,7 +194,8 @@ pub fn run(plots: &Path) -> Vec<Check> {
     let (mut worst_parabola, mut closest) = (0.0f64, f64::INFINITY);
     let mut parabola = Vec::new();
     while s.t < t_star + 0.4 {
-        stepper.step(&sys, &mut s, h).expect("free step");
+        stepper.step(f64::INFINITY).expect("free step");
+        s = stepper.state();
         film.push(&sys, &s).expect("a finite state");
         path.push((s.q.x, s.q.y));
         let tau = s.t - t_star;
@@ -209,7 +211,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         "{SCENE}: released at t = {:.15} s (quadrature {t_star:.15}, rel. error {release_error:.1e}), \
          θ* = {theta_star:.6} rad; {} mode change(s); parabola within {worst_parabola:.1e} m",
         release.t,
-        stepper.events.len()
+        stepper.mode_changes().len()
     );
 
     let circle: Vec<(f64, f64)> = (0..=90)
@@ -244,7 +246,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             SCENE,
             "starts in contact, one mode change, contact → separated (1 = yes)",
             f64::from(u8::from(
-                in_contact && released && stepper.events.len() == 1,
+                in_contact && released && stepper.mode_changes().len() == 1,
             )),
             1.0,
             0.0,

@@ -14,6 +14,9 @@
 //! | `arm14` | 14 | two 7-joint arms in series |
 //! | `quadruped` | 12 | fixed torso, four legs of three joints: a tree |
 //! | `humanoid` | 30 | fixed pelvis, legs of six, a two-joint waist, arms of seven and a two-joint head: a tree |
+//!
+//! With the feature `example-robot-data`, the module of that name holds five real robots read from
+//! their URDF files by `#[lagrange::urdf]`.
 
 #[cfg(feature = "arm3")]
 include!("arm3.rs");
@@ -25,3 +28,5 @@ include!("arm14.rs");
 include!("quadruped.rs");
 #[cfg(feature = "humanoid")]
 include!("humanoid.rs");
+#[cfg(feature = "example-robot-data")]
+pub mod example_robot_data;

@@ -11,10 +11,13 @@
 //! check`). 1e-10 of the largest entry leaves a margin of 10⁴ and still catches any wrong term
 //! (a wrong inertia, offset or rotation changes the result at the 1e-3 level or more).
 
+use lagrange::evaluation::Dynamics;
 use lagrange::prelude::*;
 use lagrange::tree::rigid::RigidTree;
 use lagrange_robots::quadruped::Quadruped;
 use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
+
+mod common;
 
 const REFERENCE: &str = include_str!("pinocchio.tsv");
 const TOLERANCE: f64 = 1e-10;
@@ -33,21 +36,19 @@ fn reference(robot: &str, k: usize, quantity: &str) -> Vec<f64> {
         .collect()
 }
 
-/// max |x − ref| ≤ TOLERANCE · max |ref|.
+/// Within TOLERANCE of Pinocchio's value, relative to its size.
 fn assert_close(what: &str, x: &[f64], expected: &[f64]) {
-    assert_eq!(x.len(), expected.len(), "{what}: length");
-    let size = expected.iter().fold(0.0_f64, |m, e| m.max(e.abs()));
-    let err = x
-        .iter()
-        .zip(expected)
-        .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
-    assert!(
-        err <= TOLERANCE * size,
-        "{what}: differs from Pinocchio by {err:e} (size {size:e})"
+    common::assert_close(
+        &format!("{what} (against Pinocchio)"),
+        x,
+        expected,
+        TOLERANCE,
     );
 }
 
-fn agrees_with_pinocchio<M: Mechanism<N>, const N: usize>(sys: M, robot: &str) {
+/// Generic over the declaration (`Dynamics`, what `validated` takes), every call through its
+/// validated handle.
+fn agrees_with_pinocchio<M: Dynamics<N>, const N: usize>(sys: M, robot: &str) {
     let sys = sys.validated().expect("valid parameters");
     for k in 0..2 {
         let s = reference(robot, k, "state");

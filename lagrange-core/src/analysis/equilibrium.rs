@@ -1,5 +1,6 @@
 //! Equilibria: q* with 𝓕 − b = 0 at rest, by Newton's method with a backtracking line search.
 
+use super::line_search::{backtrack, descent_direction};
 use super::{check_configuration, describe, max_abs, rest_residual, rest_terms};
 use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
@@ -138,14 +139,6 @@ pub fn unbalanced_forces<M: Mechanism<N>, const N: usize>(
     }
 }
 
-/// Armijo's sufficient-decrease constant (Nocedal & Wright, *Numerical Optimization*, 2nd ed.,
-/// §3.1: "c₁ is chosen to be quite small, say c₁ = 10⁻⁴").
-const ARMIJO: f64 = 1e-4;
-/// Backtracking contraction factor ρ (Nocedal & Wright, Alg. 3.1).
-const BACKTRACK: f64 = 0.5;
-/// Smallest step length tried before the line search gives up (2⁻⁴⁰ ≈ 1e-12 of the Newton step).
-const MIN_STEP: f64 = 1e-12;
-
 /// Finds an equilibrium q* near `q_guess` at time `t`: all generalized forces balanced at rest,
 /// 𝓕(q*, 0, t) − b(q*, 0, t) = 0 (see [`unbalanced_forces`]).
 ///
@@ -222,18 +215,10 @@ pub fn equilibrium<M: Mechanism<N>, const N: usize>(
         let merit = 0.5 * r.norm_squared();
         let newton =
             crate::linalg::lu_solve(&jac, &(-r)).filter(|p| p.iter().all(|x| x.is_finite()));
-        let (direction, slope, is_newton) = match newton {
-            Some(p) if grad.dot(&p) < 0.0 => (p, grad.dot(&p), true),
-            _ => {
-                // Steepest descent on ½‖r‖², scaled so its length is comparable to a Newton step
-                // for a Jacobian of the same size (‖J‖ ‖p‖ ≈ ‖r‖).
-                let g2 = grad.norm_squared();
-                if g2 == 0.0 {
-                    return Err(not_found(iterations, r_norm, &q));
-                }
-                let p = -grad * (r.norm_squared() / g2);
-                (p, grad.dot(&p), false)
-            }
+        let Some((direction, slope, is_newton)) =
+            descent_direction(newton, &grad, r.norm_squared())
+        else {
+            return Err(not_found(iterations, r_norm, &q));
         };
 
         if is_newton
@@ -244,19 +229,10 @@ pub fn equilibrium<M: Mechanism<N>, const N: usize>(
             return Ok(done(&q, &terms, iterations));
         }
 
-        // Backtracking line search (Nocedal & Wright, Alg. 3.1).
-        let mut alpha = 1.0;
-        let accepted = loop {
+        let accepted = backtrack(merit, slope, |alpha| {
             let trial = q + direction * alpha;
-            let r_trial = rest_residual(mechanism, t, &trial.into());
-            if finite(&r_trial) && 0.5 * r_trial.norm_squared() <= merit + ARMIJO * alpha * slope {
-                break Some(trial);
-            }
-            alpha *= BACKTRACK;
-            if alpha < MIN_STEP {
-                break None;
-            }
-        };
+            (trial, rest_residual(mechanism, t, &trial.into()))
+        });
         let Some(next) = accepted else {
             return Err(not_found(iterations, r_norm, &q));
         };

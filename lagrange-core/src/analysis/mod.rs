@@ -56,6 +56,7 @@ mod continuation;
 #[doc(hidden)]
 pub mod doc_models;
 mod equilibrium;
+mod line_search;
 mod linearize;
 mod modes;
 mod stability;

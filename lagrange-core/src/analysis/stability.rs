@@ -3,7 +3,7 @@
 
 use super::{
     check_configuration, describe, mass_cholesky, mass_normalized, max_abs, rest_terms,
-    rest_velocity_matrix, to_dmatrix,
+    rest_velocity_matrix, to_dmatrix, RestTerms,
 };
 use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
@@ -158,29 +158,7 @@ pub fn stability<M: Mechanism<N>, const N: usize>(
     q: &M::Coords,
 ) -> Result<StabilityAnalysis<N>> {
     let q = check_configuration(mechanism, t, q)?;
-    let terms = rest_terms(mechanism, t, &q);
-    let (velocity_matrix, velocity_parts) = rest_velocity_matrix(mechanism, t, &q);
-    let finite = terms
-        .residual
-        .iter()
-        .chain(terms.stiffness.iter())
-        .chain(velocity_matrix.iter())
-        .chain(terms.mass_matrix.iter())
-        .all(|x| x.is_finite());
-    if !finite {
-        return Err(Error::NonFiniteDynamics {
-            t,
-            configuration: describe::<M, N>(&q),
-        });
-    }
-    let residual = max_abs(terms.residual.iter());
-    if residual > EQUILIBRIUM_TOLERANCE * terms.residual_scale {
-        return Err(Error::NotAnEquilibrium {
-            t,
-            configuration: describe::<M, N>(&q),
-            residual,
-        });
-    }
+    let (terms, velocity_matrix, velocity_parts) = balanced_rest_terms(mechanism, t, &q)?;
 
     let l = mass_cholesky::<M, N>(&terms.mass_matrix, t, &q)?;
     let k = mass_normalized(&l, &terms.stiffness);
@@ -213,6 +191,75 @@ pub fn stability<M: Mechanism<N>, const N: usize>(
     let has_velocity_terms = d.norm() > tol * s;
     let dissipative_or_gyroscopic = d_eigen.first().is_none_or(|&e| e >= -tol * s);
 
+    let (stability, method) = verdict(
+        s,
+        lambda_min,
+        circulatory,
+        has_velocity_terms,
+        dissipative_or_gyroscopic,
+        &mu,
+    );
+    let mut stiffness_eigenvalues = [0.0; N];
+    stiffness_eigenvalues.copy_from_slice(&lambda);
+    Ok(StabilityAnalysis {
+        stability,
+        method,
+        stiffness: terms.stiffness,
+        velocity_matrix,
+        mass_matrix: terms.mass_matrix,
+        stiffness_eigenvalues,
+        system_eigenvalues: mu,
+    })
+}
+
+/// The terms at rest at q (see [`RestTerms`]) and the velocity matrix D with its parts, once all
+/// are finite and the generalized forces balance at q (relative tolerance
+/// [`EQUILIBRIUM_TOLERANCE`]).
+#[allow(clippy::type_complexity)]
+fn balanced_rest_terms<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+) -> Result<(RestTerms<N>, SMatrix<f64, N, N>, [SMatrix<f64, N, N>; 2])> {
+    let terms = rest_terms(mechanism, t, q);
+    let (velocity_matrix, velocity_parts) = rest_velocity_matrix(mechanism, t, q);
+    let finite = terms
+        .residual
+        .iter()
+        .chain(terms.stiffness.iter())
+        .chain(velocity_matrix.iter())
+        .chain(terms.mass_matrix.iter())
+        .all(|x| x.is_finite());
+    if !finite {
+        return Err(Error::NonFiniteDynamics {
+            t,
+            configuration: describe::<M, N>(q),
+        });
+    }
+    let residual = max_abs(terms.residual.iter());
+    if residual > EQUILIBRIUM_TOLERANCE * terms.residual_scale {
+        return Err(Error::NotAnEquilibrium {
+            t,
+            configuration: describe::<M, N>(q),
+            residual,
+        });
+    }
+    Ok((terms, velocity_matrix, velocity_parts))
+}
+
+/// The verdict of [`stability`] and the criterion it came from, at the rate scale `s`: the
+/// stiffness eigenvalues (smallest `lambda_min`) where the potential criterion applies (no
+/// circulatory forces, velocity terms at most dissipative and gyroscopic), otherwise the largest
+/// real part of the system eigenvalues `mu` (largest first).
+fn verdict(
+    s: f64,
+    lambda_min: f64,
+    circulatory: bool,
+    has_velocity_terms: bool,
+    dissipative_or_gyroscopic: bool,
+    mu: &[Complex<f64>],
+) -> (Stability, StabilityMethod) {
+    let tol = MARGINAL_TOLERANCE;
     let potential = if s == 0.0 {
         // Nothing acts at all (a free particle): every direction is neutral.
         Some(Stability::Marginal)
@@ -229,7 +276,7 @@ pub fn stability<M: Mechanism<N>, const N: usize>(
     } else {
         None
     };
-    let (stability, method) = match potential {
+    match potential {
         Some(verdict) => (verdict, StabilityMethod::Potential),
         None => {
             let re_max = mu.first().map_or(0.0, |z| z.re);
@@ -242,18 +289,7 @@ pub fn stability<M: Mechanism<N>, const N: usize>(
             };
             (verdict, StabilityMethod::Linearized)
         }
-    };
-    let mut stiffness_eigenvalues = [0.0; N];
-    stiffness_eigenvalues.copy_from_slice(&lambda);
-    Ok(StabilityAnalysis {
-        stability,
-        method,
-        stiffness: terms.stiffness,
-        velocity_matrix,
-        mass_matrix: terms.mass_matrix,
-        stiffness_eigenvalues,
-        system_eigenvalues: mu,
-    })
+    }
 }
 
 /// Iteration cap handed to nalgebra's eigen-solvers (they loop forever with 0); far more than the
@@ -272,11 +308,17 @@ pub(crate) fn symmetric_eigenvalues<const N: usize>(m: &SMatrix<f64, N, N>) -> O
 pub(crate) fn symmetric_eigen<const N: usize>(
     m: &SMatrix<f64, N, N>,
 ) -> Option<(Vec<f64>, DMatrix<f64>)> {
-    let eig = nalgebra::SymmetricEigen::try_new(to_dmatrix(m), f64::EPSILON, EIGEN_ITERATIONS)?;
-    let mut order: Vec<usize> = (0..N).collect();
+    symmetric_eigen_dynamic(to_dmatrix(m))
+}
+
+/// [`symmetric_eigen`] of a matrix whose size is not a type.
+pub(crate) fn symmetric_eigen_dynamic(m: DMatrix<f64>) -> Option<(Vec<f64>, DMatrix<f64>)> {
+    let n = m.nrows();
+    let eig = nalgebra::SymmetricEigen::try_new(m, f64::EPSILON, EIGEN_ITERATIONS)?;
+    let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
     let values = order.iter().map(|&i| eig.eigenvalues[i]).collect();
-    let vectors = DMatrix::from_fn(N, N, |r, c| eig.eigenvectors[(r, order[c])]);
+    let vectors = DMatrix::from_fn(n, n, |r, c| eig.eigenvectors[(r, order[c])]);
     Some((values, vectors))
 }
 

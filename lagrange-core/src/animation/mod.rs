@@ -69,7 +69,7 @@ mod recorder;
 pub use page::escape_html;
 pub use recorder::{AnimationError, Recorder};
 
-use crate::mechanism::Dynamics;
+use crate::evaluation::{Dynamics, Evaluate};
 use crate::validated::Validated;
 
 /// What a body or point of a declaration is, as it is drawn.
@@ -167,7 +167,7 @@ pub struct ConstraintLayout {
 /// where its constraints act, and the rows of x that place them. `#[mechanism]` implements it
 /// for every parameter struct (and [`Validated`] forwards it), so a [`Recorder`] can draw any
 /// declared mechanism.
-pub trait Drawable<const N: usize>: Dynamics<N> {
+pub trait Drawable<const N: usize>: Evaluate<N> {
     /// Every body and point, in declaration order.
     const BODIES: &'static [BodyLayout];
     /// A link from each body (each member of a family) to each earlier body its position function
@@ -186,7 +186,7 @@ pub trait Drawable<const N: usize>: Dynamics<N> {
     fn cartesian_rows(&self, t: f64, q: &[f64; N], rows: &mut Vec<f64>);
 }
 
-impl<M: Drawable<N>, const N: usize> Drawable<N> for Validated<M> {
+impl<M: Drawable<N> + Dynamics<N>, const N: usize> Drawable<N> for Validated<M> {
     const BODIES: &'static [BodyLayout] = M::BODIES;
     const LINKS: &'static [Link] = M::LINKS;
     const CONSTRAINT_BODIES: &'static [ConstraintLayout] = M::CONSTRAINT_BODIES;

@@ -63,10 +63,11 @@
 //! Which rows are enforced is the [`Mode`]: unilateral rows are in contact or separated, friction
 //! rows stick or slide in one direction. [`infer_mode`] reads it from a state by complementarity
 //! (a contact with c ≈ 0 and ċ ≈ 0 is active if its λ ≥ 0; a slip velocity ≈ 0 sticks if static
-//! friction can hold it). [`ContactRk4`] integrates with the mode fixed during a step and locates the
-//! instant a mode changes — contact, release (λ = 0), slip velocity reaching 0, static friction
-//! exceeded — to 1e-12 relative by the Illinois method on the step length, so mode changes happen
-//! exactly once and never chatter. A sliding cone has no sign to fix during a step, so its slip
+//! friction can hold it). A time loop ([`crate::integrate::Stepper`]) holds the mode over a step
+//! ([`ContactModel`]: a declaration's `Dynamics::Contacts`) and locates the instant a mode
+//! changes — contact, release (λ = 0), slip velocity reaching 0, static friction exceeded — by the
+//! Illinois method (on the step length with a fixed step, to 1e-12 relative; on the dense output
+//! of an adaptive step), so mode changes happen exactly once and never chatter. A sliding cone has no sign to fix during a step, so its slip
 //! direction at the step's start, [`Mode::reference`], plays that part: the force opposes
 //! ŝ·sign(ŝ·ŝ_ref), which continues smoothly through the instant the slip stops, and that instant is
 //! the zero of s·ŝ_ref.
@@ -90,16 +91,14 @@
 //!
 //! # Integrators
 //!
-//! Every integrator must call `Dynamics::check_constraints`
-//! on the state before a step (refusing a state that violates the constraints) and
-//! `Dynamics::project` on the new (q, q̇) after it, before writing it
-//! back; both default to no-ops, so unconstrained mechanisms pay nothing. [`Rk4`](crate::Rk4) does.
-//! Unilateral contacts and friction should be integrated with [`ContactRk4`] (fixed step) or
-//! [`ContactDopri5`] (adaptive, [`Dopri5::integrate_contacts`](crate::integrate::Dopri5::integrate_contacts)),
-//! which keep the mode fixed over a step and locate mode changes; other integrators re-infer the
-//! mode at every evaluation of q̈ ([`accelerations`]), which is right between events but puts each
-//! event somewhere inside a step (an adaptive method then rejects and shrinks its steps around
-//! every switch, and a contact drifting by round-off chatters between modes).
+//! Every integrator calls `Dynamics::check_constraints` on the state before a run (refusing a state
+//! that violates the constraints) and `Dynamics::project` on the new (q, q̇) after every step,
+//! before writing it back; both default to no-ops, so unconstrained mechanisms pay nothing. On a
+//! declaration with unilateral contacts or friction every time loop holds the contact mode over a
+//! step ([`ContactModel`]) and locates its changes; evaluated on its own, [`accelerations`] re-infers
+//! the mode from the state at every call, which is right between events but would put each event
+//! somewhere inside a step (an adaptive method would reject and shrink its steps around every
+//! switch, and a contact drifting by round-off would chatter between modes).
 //!
 //! # Cost
 //!
@@ -129,14 +128,14 @@
 //! # Example: what a declaration with a `#[constraint]` expands to
 //!
 //! A planar pendulum in Cartesian coordinates: the bob (x, y) is kept at distance L from the pivot
-//! by a holonomic constraint written on the bob's position. The three impls are exactly the shape
-//! the `#[mechanism]` attribute generates; the three constraint overrides of `Dynamics` (the glue
-//! beneath `Mechanism`) are what makes every integrator enforce the constraints.
+//! by a holonomic constraint written on the bob's position. The impls are the shape the
+//! `#[mechanism]` attribute generates; the constraint overrides of `Dynamics` (the glue beneath
+//! `Mechanism`) are what makes every integrator enforce the constraints.
 //!
 //! ```
 //! use lagrange_core::constraints::{self, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 //! use lagrange_core::dynamics::{self, EquationsOfMotion};
-//! use lagrange_core::mechanism::{Dynamics, Prepare};
+//! use lagrange_core::evaluation::{Dynamics, Prepare};
 //! use lagrange_core::{vec2, Mechanism, Model, Rk4, Scalar, State};
 //!
 //! struct Pendulum { m: f64, l: f64, g: f64 }
@@ -168,23 +167,29 @@
 //!
 //! impl Dynamics<2> for Pendulum {
 //!     type Coords = [f64; 2];
+//!     // Its contact modes: none switch (a holonomic row is always enforced).
+//!     type Contacts = constraints::ContactState<2, 1>;
 //!     fn check_parameters(&self) -> lagrange_core::Result<()> { Model::validate(self) }
-//!     fn equations_of_motion_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
+//!     fn equations_of_motion_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> EquationsOfMotion<S, 2> {
 //!         dynamics::equations_of_motion(self, t, q, v)
 //!     }
-//!     fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> S {
+//!     fn kinetic_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> S {
 //!         dynamics::kinetic_energy(self, t, q, v)
 //!     }
-//!     fn potential_energy_at<S: Scalar>(&self, t: S, q: &[S; 2]) -> S { dynamics::potential_energy(self, t, q) }
-//!     fn momenta_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] { dynamics::momenta(self, t, q, v) }
-//!     fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
+//!     fn potential_energy_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2]) -> S {
+//!         dynamics::potential_energy(self, t, q)
+//!     }
+//!     fn momenta_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> [S; 2] {
+//!         dynamics::momenta(self, t, q, v)
+//!     }
+//!     fn lagrangian_time_derivative_at(&self, _: Option<&()>, t: f64, q: &[f64; 2], v: &[f64; 2]) -> f64 {
 //!         dynamics::lagrangian_time_derivative(self, t, q, v)
 //!     }
 //!     // The three overrides of a constrained mechanism:
-//!     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
+//!     fn accelerations_at<S: Scalar>(&self, _: Option<&()>, t: S, q: &[S; 2], v: &[S; 2]) -> lagrange_core::Result<[S; 2]> {
 //!         constraints::accelerations(self, t, q, v)
 //!     }
-//!     fn project(&self, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
+//!     fn project(&self, _: Option<&()>, t: f64, q: &mut [f64; 2], v: &mut [f64; 2]) -> lagrange_core::Result<()> {
 //!         let mode = constraints::infer_mode(self, t, q, v)?;
 //!         constraints::project(self, t, q, v, &mode)
 //!     }
@@ -214,162 +219,36 @@
 // `!(x > tol)` is deliberate: it also rejects NaN.
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
-mod adaptive;
 mod cone;
 mod consistency;
 mod contact;
+mod events;
 mod forces;
-mod held;
 mod kinds;
 mod mode;
 mod prepared;
 mod projection;
-mod routing;
 mod rows;
+mod sliding;
 mod solve;
+mod switch;
 
-pub use adaptive::{ContactAdaptive, ContactDop853, ContactDopri5, ContactRadau5};
 pub use consistency::{
     check_consistent, check_velocity_rows_affine, consistent_state, consistent_state_holding,
     CONSISTENCY_TOLERANCE,
 };
-pub use contact::{row_count, ContactOptions, ContactRk4, ContactSolver, ModeChange};
+pub use contact::{row_count, ContactModel, ContactOptions, ContactState, ModeChange, NoContacts};
 pub use forces::{constraint_forces, ConstraintForces};
-pub use mode::infer_mode;
-pub use prepared::{project_prepared, regular_accelerations_prepared};
+pub use kinds::{check_declaration, ConstraintCounts, ConstraintKind};
+pub use mode::{accelerations, infer_mode};
+pub use prepared::{accelerations_prepared, project_prepared, regular_accelerations_prepared};
 pub use projection::project;
-pub use routing::{integrate_declared_contacts, step_declared_contacts};
 pub(crate) use rows::rows_and_scales;
 pub use rows::{constraint_rows, holonomic_values, CartesianMotion, ConstraintRows};
-pub use solve::{
-    accelerations, accelerations_in_mode, accelerations_prepared, ConstrainedAccelerations,
-};
+pub use solve::{accelerations_in_mode, ConstrainedAccelerations};
 
 use crate::geometry::Scalar;
 use crate::model::Model;
-
-/// What one constraint row declares. See the [module docs](self) for the equations.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ConstraintKind {
-    /// g(q, t, x) = 0, from [`Constraints::position_constraints`].
-    Holonomic,
-    /// h(q, q̇, t, x, ẋ) = A(q, t) q̇ + a(q, t) = 0, from [`Constraints::velocity_constraints`].
-    Velocity,
-    /// c(q, t, x) ≥ 0, from [`Constraints::position_constraints`]; the force can only push (λ ≥ 0).
-    Unilateral,
-    /// Coulomb friction at the contact of row `normal` (a holonomic, velocity or unilateral row,
-    /// not a friction row): the slip velocity s(q, q̇, t, x, ẋ), linear in q̇, comes from
-    /// [`Constraints::velocity_constraints`]; coefficients from [`Constraints::friction_coefficients`].
-    Friction {
-        /// Index of the row whose multiplier is the normal force.
-        normal: usize,
-    },
-    /// One of the two rows of isotropic Coulomb friction in a tangent plane (the friction cone) at
-    /// the contact of row `normal`: its slip velocity is the component of the tangential relative
-    /// velocity along one of two orthonormal tangent directions, `partner` the row of the other.
-    /// The friction force (f₁, f₂) on the pair obeys |f| ≤ μ|λₙ| and opposes the slip direction
-    /// while sliding; see the [module docs](self).
-    FrictionCone {
-        /// Index of the row whose multiplier is the normal force.
-        normal: usize,
-        /// Index of the other tangent row of the same contact.
-        partner: usize,
-    },
-}
-
-impl ConstraintKind {
-    /// Whether the row is declared by a position-level function (holonomic or unilateral).
-    pub const fn is_position(self) -> bool {
-        matches!(self, ConstraintKind::Holonomic | ConstraintKind::Unilateral)
-    }
-    /// Whether the row is declared by a velocity-level function (velocity constraint or slip).
-    pub const fn is_velocity(self) -> bool {
-        matches!(
-            self,
-            ConstraintKind::Velocity
-                | ConstraintKind::Friction { .. }
-                | ConstraintKind::FrictionCone { .. }
-        )
-    }
-    /// The normal row of a friction row (planar or cone), `None` for other kinds.
-    ///
-    /// ```
-    /// use lagrange_core::constraints::ConstraintKind;
-    /// let cone = ConstraintKind::FrictionCone { normal: 0, partner: 2 };
-    /// assert_eq!(cone.friction_normal(), Some(0));
-    /// assert_eq!(ConstraintKind::Unilateral.friction_normal(), None);
-    /// ```
-    pub const fn friction_normal(self) -> Option<usize> {
-        match self {
-            ConstraintKind::Friction { normal } | ConstraintKind::FrictionCone { normal, .. } => {
-                Some(normal)
-            }
-            _ => None,
-        }
-    }
-}
-
-/// How many rows of each [`ConstraintKind`] a declaration has: what
-/// `Dynamics::CONSTRAINT_COUNTS` declares, so integrators
-/// decide from constants which constraints they can enforce.
-///
-/// ```
-/// use lagrange_core::constraints::{ConstraintCounts, ConstraintKind};
-/// let kinds = [ConstraintKind::Holonomic, ConstraintKind::Unilateral, ConstraintKind::Friction { normal: 1 }];
-/// const NONE: ConstraintCounts = ConstraintCounts::NONE;
-/// let counts = ConstraintCounts::of(&kinds);
-/// assert_eq!((counts.holonomic, counts.unilateral, counts.friction, counts.rows()), (1, 1, 1, 3));
-/// assert!(!counts.only_holonomic() && NONE.only_holonomic() && NONE.rows() == 0);
-/// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ConstraintCounts {
-    /// Holonomic rows g(q, t) = 0.
-    pub holonomic: usize,
-    /// Velocity rows A(q, t) q̇ + a(q, t) = 0.
-    pub velocity: usize,
-    /// Unilateral rows c(q, t) ≥ 0.
-    pub unilateral: usize,
-    /// Friction rows (a friction cone counts its two tangent rows).
-    pub friction: usize,
-}
-
-impl ConstraintCounts {
-    /// No constraint rows.
-    pub const NONE: ConstraintCounts = ConstraintCounts {
-        holonomic: 0,
-        velocity: 0,
-        unilateral: 0,
-        friction: 0,
-    };
-
-    /// The counts of a declaration's [`Constraints::KINDS`].
-    pub const fn of(kinds: &[ConstraintKind]) -> Self {
-        let mut counts = Self::NONE;
-        let mut i = 0;
-        while i < kinds.len() {
-            match kinds[i] {
-                ConstraintKind::Holonomic => counts.holonomic += 1,
-                ConstraintKind::Velocity => counts.velocity += 1,
-                ConstraintKind::Unilateral => counts.unilateral += 1,
-                ConstraintKind::Friction { .. } | ConstraintKind::FrictionCone { .. } => {
-                    counts.friction += 1
-                }
-            }
-            i += 1;
-        }
-        counts
-    }
-
-    /// Every row.
-    pub const fn rows(self) -> usize {
-        self.holonomic + self.velocity + self.unilateral + self.friction
-    }
-
-    /// Whether every row (if any) is holonomic: equality constraints on the configuration alone.
-    pub const fn only_holonomic(self) -> bool {
-        self.velocity == 0 && self.unilateral == 0 && self.friction == 0
-    }
-}
 
 /// Coulomb friction coefficients of a friction row.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -469,9 +348,9 @@ impl<const C: usize> Mode<C> {
 /// `Dynamics::accelerations_at` with [`accelerations`],
 /// `Dynamics::project` with [`project`] in the [`infer_mode`]d mode, and
 /// `Dynamics::check_constraints` with [`check_consistent`],
-/// so every integrator that calls the hooks enforces the constraints; the [module example](self)
-/// shows the exact code. Contacts and friction need [`ContactRk4`] for located mode changes (plain
-/// integrators re-infer the mode at every evaluation, so a mode change falls inside a step).
+/// so every integrator that calls the hooks enforces the constraints, and names its contact modes
+/// `Dynamics::Contacts` = [`ContactState`], which the time loops hold over a step to locate mode
+/// changes; the [module example](self) shows the exact code.
 pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, K> {
     /// Row names, in declaration order.
     const NAMES: [&'static str; C];
@@ -588,37 +467,4 @@ pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, 
         }
         Ok(())
     }
-}
-
-/// Checks [`Constraints::KINDS`]: each friction row points at a non-friction row.
-pub fn check_declaration<
-    M: Constraints<N, K, C> + ?Sized,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->() -> crate::Result<()> {
-    for (i, kind) in M::KINDS.iter().enumerate() {
-        if let Some(normal) = kind.friction_normal() {
-            if normal >= C || M::KINDS[normal].friction_normal().is_some() {
-                return Err(crate::Error::InvalidConstraintDeclaration {
-                    constraint: M::NAMES[i],
-                    reason: format!("friction must point at a contact row, got row {normal}"),
-                });
-            }
-        }
-        if let ConstraintKind::FrictionCone { normal, partner } = *kind {
-            let paired = partner < C
-                && partner != i
-                && M::KINDS[partner] == (ConstraintKind::FrictionCone { normal, partner: i });
-            if !paired {
-                return Err(crate::Error::InvalidConstraintDeclaration {
-                    constraint: M::NAMES[i],
-                    reason: format!(
-                        "a friction cone row needs a partner row on the same contact pointing back, got row {partner}"
-                    ),
-                });
-            }
-        }
-    }
-    Ok(())
 }

@@ -3,11 +3,11 @@
 
 use super::cone;
 use super::kinds::always_active;
-use super::rows::rows_and_scales;
-use super::{
-    accelerations_in_mode, ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE,
-};
+use super::rows::{real, rows_and_scales};
+use super::solve::accelerations_in_mode;
+use super::{ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE};
 use crate::error::Result;
+use crate::geometry::Scalar;
 
 /// The mode at a state, by complementarity: a unilateral row with c ≤ tol and ċ ≤ tol is a
 /// candidate contact, kept if its λ ≥ 0; a friction row with |s| ≤ tol (tol =
@@ -154,4 +154,27 @@ pub(crate) fn worst_violation<
         }
     }
     worst.map(|(i, m, _)| (i, m))
+}
+
+/// q̈ at (t, q, q̇) with the mode read from the state ([`infer_mode`]); with only holonomic and
+/// velocity rows, every row is enforced and no inference runs. What a constrained mechanism's
+/// `Dynamics::accelerations_at` forwards to.
+pub fn accelerations<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Result<[S; N]> {
+    let mode = if always_active::<M, N, K, C>() {
+        Mode::all_active::<M, N, K>()
+    } else {
+        infer_mode(model, t.re(), &real(q), &real(v))?
+    };
+    accelerations_in_mode(model, t, q, v, &mode).map(|a| a.accelerations)
 }

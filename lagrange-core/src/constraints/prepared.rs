@@ -20,12 +20,13 @@
 //! and G, g and ġ from one evaluation of the rows per iterate: the rows at the accepted iterate
 //! give the velocity projection its G and ġ.
 
-use super::kinds::written_holonomic;
+use super::kinds::{always_active, written_holonomic};
 use super::mode::infer_mode;
 use super::projection::{newton_onto_positions, project, projection_failed, relative_residual};
-use super::rows::{CartesianMotion, ConstraintRows};
-use super::solve::{finish, singular_constraints, ConstrainedAccelerations};
-use super::Constraints;
+use super::rows::{real, CartesianMotion, ConstraintRows};
+use super::solve::ConstrainedAccelerations;
+use super::solve::{accelerations_in_mode_prepared, finish, singular_constraints};
+use super::{Constraints, Mode};
 use crate::affine::{self, AffineConstants};
 use crate::error::{describe_state, Error, Result};
 use crate::geometry::Scalar;
@@ -401,4 +402,70 @@ pub fn project_prepared<M: Constraints<N, K, C>, const N: usize, const K: usize,
     *q = qn;
     *v = vn;
     Ok(())
+}
+
+/// [`accelerations`] of a mechanism whose positions are affine in the coordinates (x = A q + c,
+/// see [`crate::affine`]), with the constants prepared once from its parameters: what a
+/// constrained affine mechanism's validated handle evaluates. Agrees with [`accelerations`] to
+/// round-off.
+///
+/// ```
+/// use lagrange_core::affine::AffineConstants;
+/// use lagrange_core::constraints::{self, ConstraintKind, Constraints};
+/// use lagrange_core::{vec2, Model, Scalar};
+///
+/// /// A pendulum in Cartesian coordinates: x = q, affine; the rod |x| = 2 a constraint.
+/// struct Pendulum;
+/// impl Model<2, 2> for Pendulum {
+///     type Coords = [f64; 2];
+///     const RHEONOMIC: bool = false;
+///     const HAS_POTENTIAL: bool = false;
+///     const HAS_FORCES: bool = false;
+///     const HAS_GRAVITY: bool = true;
+///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+///     fn masses(&self) -> [f64; 2] { [1.5, 1.5] }
+///     fn weights(&self) -> [f64; 2] { [0.0, -1.5 * 9.81] }
+///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
+///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], _x: &[D; 2]) -> D { D::zero() }
+/// }
+/// impl Constraints<2, 2, 1> for Pendulum {
+///     const NAMES: [&'static str; 1] = ["rod"];
+///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
+///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
+///         [vec2(x[0], x[1]).norm() - 2.0]
+///     }
+/// }
+///
+/// let constants = AffineConstants::of(&Pendulum)?;
+/// let (q, v) = ([1.2, -1.6], [0.8, 0.6]);
+/// let prepared = constraints::accelerations_prepared(&Pendulum, &constants, 0.0, &q, &v)?;
+/// let direct = constraints::accelerations(&Pendulum, 0.0, &q, &v)?;
+/// assert!((prepared[0] - direct[0]).abs() < 1e-14 && (prepared[1] - direct[1]).abs() < 1e-14);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+#[inline]
+pub fn accelerations_prepared<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    constants: &AffineConstants<N, K>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> Result<[S; N]> {
+    // Holonomic rows written out: the Schur complement from the prepared constants alone.
+    if written_holonomic::<M, N, K, C>() {
+        return holonomic_accelerations_prepared(model, constants, t, q, v)
+            .map(|a| a.accelerations);
+    }
+    let mode = if always_active::<M, N, K, C>() {
+        Mode::all_active::<M, N, K>()
+    } else {
+        infer_mode(model, t.re(), &real(q), &real(v))?
+    };
+    accelerations_in_mode_prepared(model, constants, t, q, v, &mode).map(|a| a.accelerations)
 }

@@ -1,11 +1,9 @@
-//! The Schur-complement solve of the KKT system in a mode: [`ConstrainedAccelerations`],
-//! [`accelerations_in_mode`] (sliding friction included) and [`accelerations`].
+//! The Schur-complement solve of the KKT system in a mode: [`ConstrainedAccelerations`] and
+//! [`accelerations_in_mode`] (sliding friction included).
 
-use super::cone;
-use super::kinds::{always_active, written_holonomic};
-use super::prepared::holonomic_accelerations_prepared;
 use super::rows::{constraint_rows, real, rows_from_pass, ConstraintRows};
-use super::{infer_mode, ConstraintKind, Constraints, Mode, RowMode};
+use super::sliding::{slip_sign, SlidingSystem};
+use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
 use crate::dynamics;
 use crate::error::{describe_configuration, Error, Result};
@@ -13,14 +11,6 @@ use crate::geometry::Scalar;
 use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite, SINGULAR_PIVOT};
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
-
-// `contact.rs` imports `worst_violation` from here, where it was before the split.
-pub(crate) use super::mode::worst_violation;
-
-/// Solves with sliding friction tried before the signs of the bilateral normal forces are declared
-/// inconsistent ([`Error::FrictionIndeterminate`]): two decide one normal row, the rest allow for
-/// a flip of a second row.
-const SIGN_ATTEMPTS: usize = 4;
 
 /// The accelerations of a constrained mechanism and the multipliers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -110,63 +100,6 @@ pub(super) fn singular_constraints<
     }
 }
 
-/// Solves A x = b (general square, fixed size) by LU with scaled partial pivoting on the real parts
-/// (pivots chosen and tested on the equilibrated matrix, as [`crate::linalg::BlockLu`]'s: a test
-/// that rescaling a constraint row does not change); generic over the scalar so it differentiates
-/// through dual numbers. `None` for a vanishing pivot or an entry that is not finite.
-fn lu_solve_generic<S: Scalar, const C: usize>(
-    a: &SMatrix<S, C, C>,
-    b: &SVector<S, C>,
-) -> Option<SVector<S, C>> {
-    let mut a = *a;
-    let mut x = *b;
-    let magnitude = a.map(|v| v.re().abs());
-    if !magnitude.iter().all(|v| v.is_finite()) {
-        return None;
-    }
-    let columns: [f64; C] = std::array::from_fn(|c| 1.0 / magnitude.column(c).max());
-    let mut rows: [f64; C] = std::array::from_fn(|r| {
-        1.0 / (0..C).fold(0.0f64, |m, c| m.max(magnitude[(r, c)] * columns[c]))
-    });
-    if !columns.iter().chain(&rows).all(|s| s.is_finite()) {
-        return None;
-    }
-    for c in 0..C {
-        let mut p = c;
-        for r in (c + 1)..C {
-            if a[(r, c)].re().abs() * rows[r] > a[(p, c)].re().abs() * rows[p] {
-                p = r;
-            }
-        }
-        if !(a[(p, c)].re().abs() * rows[p] * columns[c] > crate::linalg::SINGULAR_PIVOT) {
-            return None;
-        }
-        if p != c {
-            a.swap_rows(p, c);
-            x.swap_rows(p, c);
-            rows.swap(p, c);
-        }
-        let inv = a[(c, c)].recip();
-        for r in (c + 1)..C {
-            let f = a[(r, c)] * inv;
-            for k in c..C {
-                let v = a[(c, k)];
-                a[(r, k)] -= f * v;
-            }
-            let xc = x[c];
-            x[r] -= f * xc;
-        }
-    }
-    for r in (0..C).rev() {
-        let mut s = x[r];
-        for k in (r + 1)..C {
-            s -= a[(r, k)] * x[k];
-        }
-        x[r] = s / a[(r, r)];
-    }
-    Some(x)
-}
-
 /// λ from (R M⁻¹ Rᵀ) λ = rhs by LDLᵀ, with its relative pivot test. One row (C is a constant of the
 /// declaration) is one division: the 1×1 factorisation's test, s > SINGULAR_PIVOT·|s|, then rhs/s.
 #[inline(always)]
@@ -185,14 +118,6 @@ fn schur_solve<S: Scalar, const C: usize>(
         return Ok(rhs / s);
     }
     Ok(Ldlt::new(schur)?.solve(rhs))
-}
-
-fn slip_sign(mode: RowMode) -> f64 {
-    match mode {
-        RowMode::SlipPositive => 1.0,
-        RowMode::SlipNegative => -1.0,
-        _ => 0.0,
-    }
 }
 
 /// q̈ and λ in a given [`Mode`], for any scalar: the Schur-complement solve of the KKT system (see the
@@ -285,14 +210,7 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
     rows: impl FnOnce() -> ConstraintRows<S, N, C>,
 ) -> Result<ConstrainedAccelerations<S, N, C>> {
     let enforced: [bool; C] = std::array::from_fn(|i| mode.enforced(i));
-    // A sliding row acts when its contact is enforced.
-    let sliding: [bool; C] = std::array::from_fn(|j| match M::KINDS[j] {
-        ConstraintKind::Friction { normal } => slip_sign(mode.rows[j]) != 0.0 && enforced[normal],
-        ConstraintKind::FrictionCone { normal, .. } => {
-            mode.rows[j] == RowMode::Sliding && enforced[normal]
-        }
-        _ => false,
-    });
+    let sliding = sliding_rows::<M, N, K, C>(mode, &enforced);
     let mut multipliers = [S::zero(); C];
     if !enforced.iter().any(|&e| e) {
         // No row enforced: every λ is zero.
@@ -307,29 +225,8 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
             y[i] = solve_mass(&cr.rows[i]);
         }
     }
-    let mut schur = SMatrix::<S, C, C>::zeros();
-    let mut rhs = SVector::<S, C>::zeros();
-    let mut diagonal = 0.0f64;
-    for i in 0..C {
-        if enforced[i] {
-            for k in 0..C {
-                if enforced[k] {
-                    schur[(i, k)] = cr.rows[i].dot(&y[k]);
-                }
-            }
-            rhs[i] = -cr.bias[i] - cr.rows[i].dot(&u);
-            diagonal = diagonal.max(schur[(i, i)].re().abs());
-        }
-    }
-    // Rows not enforced get λ = 0 from an identity row at the scale of the others (so the relative
-    // singularity test of the factorisation is not distorted).
-    let filler = if diagonal > 0.0 { diagonal } else { 1.0 };
-    for i in 0..C {
-        if !enforced[i] {
-            schur[(i, i)] = S::from(filler);
-        }
-    }
-    let mut lambda = schur_solve(&schur, &rhs)
+    let (schur, rhs, filler) = schur_complement(&cr, &y, &u, &enforced);
+    let lambda = schur_solve(&schur, &rhs)
         .map_err(|e| singular_constraints::<M, S, N, K, C>(e, &schur, &enforced, t, q))?;
     if !sliding.iter().any(|&s| s) {
         let mut qdd = u;
@@ -343,104 +240,65 @@ fn solve_kkt<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize,
         // NaN): q̈ finite implies λ finite, so q̈ alone is checked.
         return finish::<M, S, N, K, C>(qdd, multipliers, t, q, true);
     }
-    // Sliding friction: the generalized force of normal row n becomes λₙ(rₙ − Σⱼ μₖ σⱼ sₙ Sⱼ), with
-    // sₙ = sign(λₙ) (+1 for a unilateral contact, whose λ ≥ 0 while active). The sign of a bilateral
-    // normal force is taken from the frictionless solve and re-checked. σⱼ is the slip sign of a
-    // planar row, and the component ŝⱼ of the unit slip direction of a cone's row.
-    let direction: [S; C] = std::array::from_fn(|j| match M::KINDS[j] {
-        ConstraintKind::FrictionCone { .. } if sliding[j] && mode.stopping[j] => {
-            S::from(mode.reference[j])
-        }
-        ConstraintKind::FrictionCone { partner, .. } if sliding[j] => cone::sliding_direction(
-            cr.value[j],
-            cr.value[partner],
-            mode.reference[j],
-            mode.reference[partner],
-        ),
-        _ => S::from(slip_sign(mode.rows[j])),
-    });
-    let mut sign_n: [f64; C] = std::array::from_fn(|n| match M::KINDS[n] {
-        ConstraintKind::Unilateral => 1.0,
-        _ => {
-            if lambda[n].re() < 0.0 {
-                -1.0
-            } else {
-                1.0
-            }
-        }
-    });
-    let mut columns = [SVector::<S, N>::zeros(); C];
-    let indeterminate = || Error::FrictionIndeterminate {
-        t: t.re(),
-        configuration: describe_configuration(&<M::Coords as Coordinates<N>>::NAMES, &real(q)),
-        constraints: (0..C)
-            .filter(|&j| sliding[j])
-            .map(|j| format!("`{}`", M::NAMES[j]))
-            .collect::<Vec<_>>()
-            .join(", "),
+    let system = SlidingSystem {
+        rows: &cr,
+        y: &y,
+        rhs,
+        filler,
+        enforced,
+        sliding,
     };
-    // Each attempt solves with the current signs and flips those the solution contradicts. With
-    // one bilateral normal row two attempts decide: if both signs contradict themselves, no normal
-    // force is consistent with sliding friction (Painlevé's inconsistent case). Several normal rows
-    // get a few more attempts; signs still inconsistent after them are the same error, never a
-    // solution computed with a sign its own normal force contradicts.
-    let mut consistent = false;
-    for _attempt in 0..SIGN_ATTEMPTS {
-        for k in 0..C {
-            if enforced[k] {
-                columns[k] = y[k];
-            }
-        }
-        for j in 0..C {
-            if let (true, Some(normal)) = (sliding[j], M::KINDS[j].friction_normal()) {
-                let mu = model.friction_coefficients(j).kinetic;
-                columns[normal] -= y[j] * direction[j] * S::from(mu * sign_n[normal]);
-            }
-        }
-        let mut a = SMatrix::<S, C, C>::zeros();
-        for i in 0..C {
-            if enforced[i] {
-                for k in 0..C {
-                    if enforced[k] {
-                        a[(i, k)] = cr.rows[i].dot(&columns[k]);
-                    }
-                }
-            } else {
-                a[(i, i)] = S::from(filler);
-            }
-        }
-        lambda = lu_solve_generic(&a, &rhs).ok_or_else(indeterminate)?;
-        consistent = true;
-        for n in 0..C {
-            if enforced[n]
-                && !matches!(M::KINDS[n], ConstraintKind::Unilateral)
-                && lambda[n].re() * sign_n[n] < 0.0
-            {
-                sign_n[n] = -sign_n[n];
-                consistent = false;
-            }
-        }
-        if consistent {
-            break;
-        }
-    }
-    if !consistent {
-        return Err(indeterminate());
-    }
-    let mut qdd = u;
-    for k in 0..C {
-        if enforced[k] {
-            qdd += columns[k] * lambda[k];
-            multipliers[k] = lambda[k];
-        }
-    }
-    for j in 0..C {
-        if let (true, Some(normal)) = (sliding[j], M::KINDS[j].friction_normal()) {
-            let mu = model.friction_coefficients(j).kinetic;
-            multipliers[j] = lambda[normal] * direction[j] * S::from(-mu * sign_n[normal]);
-        }
-    }
+    let (qdd, multipliers) = system.solve(model, t, q, mode, u, lambda)?;
     finish::<M, S, N, K, C>(qdd, multipliers, t, q, false)
+}
+
+/// Which rows slide and act: a sliding friction row (planar or cone) whose contact is enforced.
+#[inline(always)]
+fn sliding_rows<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+    mode: &Mode<C>,
+    enforced: &[bool; C],
+) -> [bool; C] {
+    std::array::from_fn(|j| match M::KINDS[j] {
+        ConstraintKind::Friction { normal } => slip_sign(mode.rows[j]) != 0.0 && enforced[normal],
+        ConstraintKind::FrictionCone { normal, .. } => {
+            mode.rows[j] == RowMode::Sliding && enforced[normal]
+        }
+        _ => false,
+    })
+}
+
+/// The Schur complement S = R M⁻¹ Rᵀ of the enforced rows R (with `y`ₖ = M⁻¹rₖ) and its
+/// right-hand side −β − R u, S λ = −β − R u; the rows not enforced get λ = 0 from an identity row
+/// at the scale of the others (`filler`, the largest diagonal entry, so the relative singularity
+/// test of the factorisation is not distorted).
+#[inline(always)]
+fn schur_complement<S: Scalar, const N: usize, const C: usize>(
+    cr: &ConstraintRows<S, N, C>,
+    y: &[SVector<S, N>; C],
+    u: &SVector<S, N>,
+    enforced: &[bool; C],
+) -> (SMatrix<S, C, C>, SVector<S, C>, f64) {
+    let mut schur = SMatrix::<S, C, C>::zeros();
+    let mut rhs = SVector::<S, C>::zeros();
+    let mut diagonal = 0.0f64;
+    for i in 0..C {
+        if enforced[i] {
+            for k in 0..C {
+                if enforced[k] {
+                    schur[(i, k)] = cr.rows[i].dot(&y[k]);
+                }
+            }
+            rhs[i] = -cr.bias[i] - cr.rows[i].dot(u);
+            diagonal = diagonal.max(schur[(i, i)].re().abs());
+        }
+    }
+    let filler = if diagonal > 0.0 { diagonal } else { 1.0 };
+    for i in 0..C {
+        if !enforced[i] {
+            schur[(i, i)] = S::from(filler);
+        }
+    }
+    (schur, rhs, filler)
 }
 
 /// q̈ and λ when they are finite, otherwise [`Error::NonFiniteDynamics`]; `implied` when λ is finite
@@ -476,93 +334,4 @@ pub(super) fn finish<
     } else {
         Err(dynamics::non_finite_dynamics::<M::Coords, S, N>(t, q))
     }
-}
-
-/// q̈ at (t, q, q̇) with the mode read from the state ([`infer_mode`]); with only holonomic and
-/// velocity rows, every row is enforced and no inference runs. What a constrained mechanism's
-/// `Dynamics::accelerations_at` forwards to.
-pub fn accelerations<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    model: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> Result<[S; N]> {
-    let mode = if always_active::<M, N, K, C>() {
-        Mode::all_active::<M, N, K>()
-    } else {
-        infer_mode(model, t.re(), &real(q), &real(v))?
-    };
-    accelerations_in_mode(model, t, q, v, &mode).map(|a| a.accelerations)
-}
-
-/// [`accelerations`] of a mechanism whose positions are affine in the coordinates (x = A q + c,
-/// see [`crate::affine`]), with the constants prepared once from its parameters: what a
-/// constrained affine mechanism's validated handle evaluates. Agrees with [`accelerations`] to
-/// round-off.
-///
-/// ```
-/// use lagrange_core::affine::AffineConstants;
-/// use lagrange_core::constraints::{self, ConstraintKind, Constraints};
-/// use lagrange_core::{vec2, Model, Scalar};
-///
-/// /// A pendulum in Cartesian coordinates: x = q, affine; the rod |x| = 2 a constraint.
-/// struct Pendulum;
-/// impl Model<2, 2> for Pendulum {
-///     type Coords = [f64; 2];
-///     const RHEONOMIC: bool = false;
-///     const HAS_POTENTIAL: bool = false;
-///     const HAS_FORCES: bool = false;
-///     const HAS_GRAVITY: bool = true;
-///     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
-///     fn masses(&self) -> [f64; 2] { [1.5, 1.5] }
-///     fn weights(&self) -> [f64; 2] { [0.0, -1.5 * 9.81] }
-///     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 2]) -> [D; 2] { *q }
-///     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 2], _x: &[D; 2]) -> D { D::zero() }
-/// }
-/// impl Constraints<2, 2, 1> for Pendulum {
-///     const NAMES: [&'static str; 1] = ["rod"];
-///     const KINDS: [ConstraintKind; 1] = [ConstraintKind::Holonomic];
-///     fn position_constraints<D: Scalar>(&self, _t: D, _q: &[D; 2], x: &[D; 2]) -> [D; 1] {
-///         [vec2(x[0], x[1]).norm() - 2.0]
-///     }
-/// }
-///
-/// let constants = AffineConstants::of(&Pendulum)?;
-/// let (q, v) = ([1.2, -1.6], [0.8, 0.6]);
-/// let prepared = constraints::accelerations_prepared(&Pendulum, &constants, 0.0, &q, &v)?;
-/// let direct = constraints::accelerations(&Pendulum, 0.0, &q, &v)?;
-/// assert!((prepared[0] - direct[0]).abs() < 1e-14 && (prepared[1] - direct[1]).abs() < 1e-14);
-/// # Ok::<(), lagrange_core::Error>(())
-/// ```
-#[inline]
-pub fn accelerations_prepared<
-    M: Constraints<N, K, C>,
-    S: Scalar,
-    const N: usize,
-    const K: usize,
-    const C: usize,
->(
-    model: &M,
-    constants: &AffineConstants<N, K>,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> Result<[S; N]> {
-    // Holonomic rows written out: the Schur complement from the prepared constants alone.
-    if written_holonomic::<M, N, K, C>() {
-        return holonomic_accelerations_prepared(model, constants, t, q, v)
-            .map(|a| a.accelerations);
-    }
-    let mode = if always_active::<M, N, K, C>() {
-        Mode::all_active::<M, N, K>()
-    } else {
-        infer_mode(model, t.re(), &real(q), &real(v))?
-    };
-    accelerations_in_mode_prepared(model, constants, t, q, v, &mode).map(|a| a.accelerations)
 }

@@ -3,7 +3,7 @@
 //! the sweep's description as the file's key–value metadata. Uncompressed, one row group: a part is
 //! written once and read whole.
 
-use super::parts::PartError;
+use super::part_error::PartError;
 use parquet::basic::{Repetition, Type as PhysicalType};
 use parquet::column::reader::ColumnReader;
 use parquet::column::writer::ColumnWriter;

@@ -19,36 +19,19 @@
 use super::newton::jacobian_rows;
 use super::Stats;
 use crate::error::{describe_configuration, Error, Result};
+pub(crate) use crate::evaluation::momentum_rate;
+use crate::evaluation::Evaluate;
 use crate::geometry::Scalar;
-use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
-
-/// G = ∂T/∂q + 𝓕 = ∂L/∂q + F_nc at (t, q, v), for any scalar: the right-hand side of ṗ = G.
-pub fn momentum_rate<M: Mechanism<N>, S: Scalar, const N: usize>(
-    mechanism: &M,
-    t: S,
-    q: &[S; N],
-    v: &[S; N],
-) -> [S; N] {
-    let td = DualSVec::<S, N>::from_re(t);
-    let qd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]).derivative(j));
-    let vd: [DualSVec<S, N>; N] = std::array::from_fn(|j| DualSVec::from_re(v[j]));
-    let kinetic = mechanism.kinetic_energy_at(td, &qd, &vd);
-    let forces = mechanism.equations_of_motion_at(t, q, v).generalized_forces;
-    match kinetic.eps.0 {
-        Some(grad) => std::array::from_fn(|k| grad[k] + forces[k]),
-        None => forces.into(),
-    }
-}
 
 /// (p, ṗ) at (t, q, v), for any scalar: p = ∂L/∂q̇ and ṗ = [`momentum_rate`], plus, when
 /// `constrained`, the generalized constraint force Jᵀλ = M q̈ − (𝓕 − b), with q̈ the mechanism's
 /// (constrained) `accelerations` (`Dynamics::accelerations_at`): for a mechanism with constraints,
 /// ṗ = d/dt ∂L/∂q̇ along its motion is ∂L/∂q + F_nc + Jᵀλ.
 #[inline]
-pub fn canonical_field<M: Mechanism<N>, S: Scalar, const N: usize>(
+pub fn canonical_field<M: Evaluate<N>, S: Scalar, const N: usize>(
     mechanism: &M,
     t: S,
     q: &[S; N],
@@ -89,7 +72,7 @@ pub struct FieldJacobians<const N: usize> {
 }
 
 /// See [`FieldJacobians`].
-pub fn field_jacobians<M: Mechanism<N>, const N: usize>(
+pub fn field_jacobians<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     t: f64,
     q: &[f64; N],
@@ -121,7 +104,7 @@ pub fn field_jacobians<M: Mechanism<N>, const N: usize>(
 /// scleronomic mechanism): no iteration, whose stopping test on an already exact first step would
 /// only decide on round-off. `guess` is where M is evaluated for a mechanism whose M depends on
 /// q̇ (none does). Returns v and the solves taken (1).
-pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
+pub fn velocities_from_momenta<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     t: f64,
     q: &[f64; N],
@@ -136,7 +119,7 @@ pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
 /// scleronomic (`None` otherwise): the implicit methods' next step starts at this q, and its
 /// Newton matrix takes M there (see `implicit`).
 #[allow(clippy::type_complexity)]
-pub(crate) fn velocities_and_mass_from_momenta<M: Mechanism<N>, const N: usize>(
+pub(crate) fn velocities_and_mass_from_momenta<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     t: f64,
     q: &[f64; N],

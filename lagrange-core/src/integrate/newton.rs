@@ -5,8 +5,9 @@
 // `!(a < b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::error::Result;
-use crate::mechanism::Mechanism;
+use super::Stats;
+use crate::error::{Error, Result};
+use crate::evaluation::Evaluate;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
 
@@ -18,7 +19,7 @@ pub const MAX_NEWTON_ITERATIONS: usize = 20;
 /// q̈ and its exact Jacobians ∂q̈/∂q and ∂q̈/∂q̇ at (t, q, q̇): two passes of the accelerations with
 /// gradient dual numbers, seeded on q and then on q̇.
 #[allow(clippy::type_complexity)]
-pub fn acceleration_jacobians<M: Mechanism<N>, const N: usize>(
+pub fn acceleration_jacobians<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     t: f64,
     q: &[f64; N],
@@ -168,6 +169,48 @@ pub(crate) enum NewtonEnd {
 /// evaluation (see [`newton`]).
 const ROUNDING_INCREMENT: f64 = 64.0 * f64::EPSILON;
 
+impl NewtonEnd {
+    /// The iterations of a converged iteration; a slow one is [`Error::NewtonDiverged`] at t.
+    pub(crate) fn converged(self, t: f64) -> Result<usize> {
+        match self {
+            NewtonEnd::Converged { iterations, .. } => Ok(iterations),
+            NewtonEnd::Slow {
+                iterations,
+                residual,
+            } => Err(Error::NewtonDiverged {
+                t,
+                iterations,
+                residual,
+            }),
+        }
+    }
+}
+
+/// Counts the iterations of a Newton loop since `before` (`stats.newton_iterations` then) each of
+/// which evaluated its exact Jacobian and factorised it.
+pub(crate) fn count_exact_jacobians(stats: &mut Stats, before: usize) {
+    let n = stats.newton_iterations - before;
+    stats.jacobians += n;
+    stats.factorizations += n;
+}
+
+/// [`Error::NewtonBreakdown`] of `method`'s step of h from t at Newton iteration `iteration`.
+pub(crate) fn breakdown(
+    method: &'static str,
+    t: f64,
+    h: f64,
+    iteration: usize,
+    reason: &str,
+) -> Error {
+    Error::NewtonBreakdown {
+        method,
+        t,
+        h,
+        iteration,
+        reason: reason.to_string(),
+    }
+}
+
 /// The one Newton loop of the implicit methods. `iteration(x)` evaluates the residual at x and
 /// returns the increment δ (the solution of the Newton system, with an exact Jacobian or a reused
 /// one) and the residual's norm; the loop applies x ← x − δ and tests convergence on the
@@ -261,43 +304,31 @@ pub(crate) fn newton<U: Unknowns>(
 /// step (a pendulum released horizontally) still acts at the stages; for an implementation that
 /// does not declare its constraints the term is added too (it is zero, to round-off, without
 /// constraints).
-pub(crate) const fn carries_constraint_forces<M: Mechanism<N>, const N: usize>() -> bool {
+pub(crate) const fn carries_constraint_forces<M: Evaluate<N>, const N: usize>() -> bool {
     !matches!(M::CONSTRAINTS, Some(0))
 }
 
-/// Refuses a declaration with unilateral or friction rows for a method that would integrate their
-/// contact mode re-inferred at every evaluation: it switches inside a step, where a collocation
-/// polynomial has no switch to follow, so the Newton iteration would chase a discontinuous field.
-/// Decided by the declaration (`Dynamics::CONSTRAINT_COUNTS`, a constant), never by a state.
-/// `handled_by` names what integrates them instead (the fixed-step implicit methods: the adaptive
-/// methods, [`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853) and [`Radau5`](super::Radau5),
-/// hold the mode per step and locate its switches; so does [`ContactRk4`](crate::ContactRk4) with
-/// a fixed step, also with implicit midpoint or Gauss–Legendre as its one-step method, and with
-/// Störmer–Verlet or the variational integrator for unilateral contacts
-/// ([`ContactRk4::step_with`](crate::ContactRk4::step_with))).
-pub(crate) fn refuse_contacts<M: Mechanism<N>, const N: usize>(
-    method: &'static str,
-    handled_by: &str,
-) -> Result<()> {
+/// Refuses a declaration with unilateral or friction rows for a method stepped on raw arrays
+/// ([`Integrator::advance`](super::Integrator::advance)) without its contact mode held: the mode
+/// switches inside a step, where a collocation polynomial has no switch to follow, so the Newton
+/// iteration would chase a discontinuous field. Decided by the declaration
+/// (`Dynamics::CONSTRAINT_COUNTS`, a constant), never by a state. The time loops
+/// ([`Stepper`](super::Stepper), `sys.step`) hold the mode over each step and hand the method the
+/// mechanism in that mode, which has no such rows.
+pub(crate) fn refuse_contacts<M: Evaluate<N>, const N: usize>(method: &'static str) -> Result<()> {
     match M::CONSTRAINT_COUNTS {
         Some(c) if c.unilateral + c.friction > 0 => Err(crate::Error::UnsuitableMethod {
             method,
             reason: format!(
                 "the declaration has {} unilateral and {} friction rows, whose contact mode switches \
-                 inside a step; {handled_by}",
+                 inside a step; a Stepper or sys.step holds the mode over each step and locates its \
+                 switches",
                 c.unilateral, c.friction
             ),
         }),
         _ => Ok(()),
     }
 }
-
-/// What integrates contacts instead of a fixed-step implicit method, for [`refuse_contacts`].
-pub(crate) const CONTACT_METHODS: &str = "Dopri5, Dop853 and Radau5 (the mode held per step, \
-     switches located) or ContactRk4 integrate them, ContactRk4::step_with also with implicit \
-     midpoint or Gauss-Legendre 2 as its one-step method (what a single sys.step with either \
-     does), and with Stormer-Verlet or the variational integrator for unilateral contacts without \
-     friction";
 
 /// The simplified Newton iteration's factorised matrix, reused across its iterations and steps.
 pub use crate::linalg::BlockLu;

@@ -30,15 +30,15 @@
 //! **Which constraints.** Only holonomic rows: the choice is the declaration's,
 //! `Dynamics::CONSTRAINT_COUNTS`, never the state's ([`holonomic_rows`]). Velocity rows,
 //! unilateral contacts and friction are refused with [`Error::UnsuitableMethod`], and so is an
-//! implementation that does not declare its constraints. Unilateral contacts are integrated through
-//! the contact loop ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single
-//! `sys.step` takes): with the contact mode held over a step, a closed contact c(q, t) ≥ 0 is the
-//! holonomic row c(q, t) = 0 for that step, and the held mode hands RATTLE its holonomic rows and
-//! its closed contacts (`Dynamics::enforced_holonomic_rows` says how many); the loop releases a
+//! implementation that does not declare its constraints. Unilateral contacts are integrated with
+//! the contact mode held over each step (the fixed-step loop of a [`Stepper`](super::Stepper), and
+//! a single `sys.step`): with the mode held, a closed contact c(q, t) ≥ 0 is the holonomic row
+//! c(q, t) = 0 for that step, and the held mode hands RATTLE its holonomic rows and its closed
+//! contacts (`Evaluate::enforced_holonomic_rows` says how many); the loop releases a
 //! contact where its multiplier crosses 0 and closes one where its gap does. Friction is refused
 //! there too: a sticking friction row constrains q̇, not q, and cannot be a RATTLE row.
 //!
-//! **Rows as an N-vector.** The methods are generic over `Mechanism<N>`, which cannot name the
+//! **Rows as an N-vector.** The methods are generic over `Evaluate<N>`, which cannot name the
 //! number of rows C; the rows come from `Dynamics::holonomic_constraints_at` padded with zeros
 //! to N entries (independent holonomic rows number at most N), and the multipliers are an
 //! N-vector whose entries beyond the declared rows are held at zero by identity rows in the Newton
@@ -47,14 +47,12 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::newton::{
-    jacobian_rows, mass_weights, max_norm, newton, seeded, NewtonEnd, NewtonScale, Unknowns as _,
-    MAX_NEWTON_ITERATIONS,
-};
+use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
+use super::newton::{mass_weights, NewtonScale, Unknowns as _, MAX_NEWTON_ITERATIONS};
 use super::Stats;
 use crate::error::{Error, Result};
+use crate::evaluation::Evaluate;
 use crate::linalg::lu_solve;
-use crate::mechanism::Mechanism;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
 
@@ -85,7 +83,7 @@ use num_dual::DualSVec;
 /// assert_eq!(holonomic_rows::<Pendulum, 1>("RATTLE")?, 0);
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
-pub fn holonomic_rows<M: Mechanism<N>, const N: usize>(method: &'static str) -> Result<usize> {
+pub fn holonomic_rows<M: Evaluate<N>, const N: usize>(method: &'static str) -> Result<usize> {
     at_most_coordinates::<N>(method, declared_rows::<M, N>(method)?)
 }
 
@@ -94,17 +92,17 @@ fn unsuitable(method: &'static str, reason: &str) -> Error {
     Error::UnsuitableMethod {
         method,
         reason: format!(
-            "{reason}; use RK4, Dopri5, Dop853, implicit midpoint or Gauss-Legendre, which integrate the \
-             constrained accelerations and project (ContactRk4 for contacts and friction); unilateral \
-             contacts (without friction) are integrated by {method} through the contact loop, \
-             ContactRk4::step_with or a single sys.step, which holds the contact mode over a step"
+            "{reason}; use RK4, Dopri5, Dop853, Radau5, implicit midpoint or Gauss-Legendre, which \
+             integrate the constrained accelerations and project (and hold the contact mode over a \
+             step for contacts and friction); unilateral contacts (without friction) are integrated \
+             by {method} in a Stepper or a single sys.step, which hold the contact mode over a step"
         ),
     }
 }
 
 /// The holonomic rows the declaration has, refusing every other kind of row and an
 /// implementation that does not declare its constraints (see [`holonomic_rows`]).
-fn declared_rows<M: Mechanism<N>, const N: usize>(method: &'static str) -> Result<usize> {
+fn declared_rows<M: Evaluate<N>, const N: usize>(method: &'static str) -> Result<usize> {
     match (M::CONSTRAINT_COUNTS, M::CONSTRAINTS) {
         (_, Some(0)) => Ok(0),
         (Some(c), _) if c.only_holonomic() => Ok(c.holonomic),
@@ -143,7 +141,7 @@ fn at_most_coordinates<const N: usize>(method: &'static str, rows: usize) -> Res
 /// (`Dynamics::enforced_holonomic_rows`: the contact loop's held mode, whose leading rows are its
 /// holonomic rows and its closed unilateral contacts; it may declare more contacts than
 /// coordinates, a particle in a box, as long as those closed at once are at most N).
-pub(crate) fn rows_in_force<M: Mechanism<N>, const N: usize>(
+pub(crate) fn rows_in_force<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     method: &'static str,
 ) -> Result<usize> {
@@ -167,7 +165,7 @@ fn rows_not_provided(method: &'static str) -> Error {
 
 /// g and G = ∂g/∂q of the holonomic rows at (t, q), padded to N rows (see the [module docs](self)):
 /// one pass with q seeded as gradient dual numbers.
-pub(crate) fn rows_and_jacobian<M: Mechanism<N>, const N: usize>(
+pub(crate) fn rows_and_jacobian<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     method: &'static str,
     t: f64,
@@ -181,7 +179,7 @@ pub(crate) fn rows_and_jacobian<M: Mechanism<N>, const N: usize>(
 
 /// g at (t, q) of the holonomic rows as gradient dual numbers along the seeds q carries (the
 /// variational integrator's position stage seeds the midpoint velocity).
-pub(crate) fn rows_on<M: Mechanism<N>, const N: usize>(
+pub(crate) fn rows_on<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     method: &'static str,
     t: f64,
@@ -192,20 +190,21 @@ pub(crate) fn rows_on<M: Mechanism<N>, const N: usize>(
         .ok_or_else(|| rows_not_provided(method))
 }
 
-/// The Newton breakdown of a RATTLE position stage.
-pub(crate) fn breakdown(
-    method: &'static str,
-    t: f64,
-    h: f64,
-    iteration: usize,
-    reason: &str,
-) -> Error {
-    Error::NewtonBreakdown {
-        method,
-        t,
-        h,
-        iteration,
-        reason: reason.to_string(),
+/// What [`position_stage`]'s increments of Λ are measured against: the displacement h W δΛ each
+/// makes, weighted by √Mⱼⱼ (`mass` is M(q₀)), resolved to the size of the unconstrained position
+/// q̂ itself (see `NewtonScale`).
+fn stage_scale<const N: usize>(
+    mass: &SMatrix<f64, N, N>,
+    directions: &SMatrix<f64, N, N>,
+    unconstrained: &SVector<f64, N>,
+) -> NewtonScale<SVector<f64, N>> {
+    let position = mass_weights(mass);
+    NewtonScale {
+        weights: SVector::from_fn(|l, _| {
+            (0..N).fold(0.0f64, |m, j| m.max(position[j] * directions[(j, l)].abs()))
+        }),
+        size: 0.0,
+        resolution: unconstrained.weighted_norm(&position),
     }
 }
 
@@ -216,7 +215,7 @@ pub(crate) fn breakdown(
 /// h W δΛ it makes, weighted by √Mⱼⱼ (`mass` is M(q₀)), against that of Λ, resolved to the size
 /// of q̂ itself. Returns q₁ and Λ.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
-pub(crate) fn position_stage<M: Mechanism<N>, const N: usize>(
+pub(crate) fn position_stage<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     method: &'static str,
     rows: usize,
@@ -231,22 +230,12 @@ pub(crate) fn position_stage<M: Mechanism<N>, const N: usize>(
     let mut lambda = SVector::<f64, N>::zeros();
     let mut iteration = 0;
     let before = stats.newton_iterations;
-    let scale = || {
-        let position = mass_weights(mass);
-        NewtonScale {
-            weights: SVector::from_fn(|l, _| {
-                (0..N).fold(0.0f64, |m, j| m.max(position[j] * directions[(j, l)].abs()))
-            }),
-            size: 0.0,
-            resolution: unconstrained.weighted_norm(&position),
-        }
-    };
     let end = newton(
         &mut lambda,
         MAX_NEWTON_ITERATIONS,
         false,
         stats,
-        scale,
+        || stage_scale(mass, directions, unconstrained),
         |lambda| {
             iteration += 1;
             let q1 = unconstrained + directions * lambda;
@@ -280,18 +269,7 @@ pub(crate) fn position_stage<M: Mechanism<N>, const N: usize>(
             Ok((delta, norm))
         },
     )?;
-    let n = stats.newton_iterations - before;
-    stats.jacobians += n;
-    stats.factorizations += n;
-    match end {
-        NewtonEnd::Converged { .. } => Ok((unconstrained + directions * lambda, lambda)),
-        NewtonEnd::Slow {
-            iterations,
-            residual,
-        } => Err(Error::NewtonDiverged {
-            t,
-            iterations,
-            residual,
-        }),
-    }
+    count_exact_jacobians(stats, before);
+    end.converged(t)?;
+    Ok((unconstrained + directions * lambda, lambda))
 }

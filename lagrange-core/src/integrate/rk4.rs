@@ -3,8 +3,8 @@
 
 use super::{Integrator, Stats};
 use crate::error::Result;
+use crate::evaluation::{diagnose, Evaluate};
 use crate::geometry::Scalar;
-use crate::mechanism::{diagnose, Mechanism};
 
 /// Fixed-step classical Runge–Kutta of order 4: four evaluations of the accelerations per step,
 /// global error O(h⁴), no energy conservation (energy drifts slowly in long runs).
@@ -44,9 +44,9 @@ fn axpy<S: Scalar, const N: usize>(y: &[S; N], a: f64, x: &[S; N]) -> [S; N] {
 }
 
 /// One classical RK4 step of (q, v)' = (v, `acc`(t, q, v)) from (t, q, v): (q, v) at t + h. The
-/// one implementation of the method, shared by [`Rk4`], the contact stepper (whose `acc` is the
-/// accelerations in a fixed contact mode) and the trajectory sensitivities (on dual numbers `S`,
-/// the same operations in the same order, so the real parts are the f64 run bit for bit).
+/// one implementation of the method, on `f64` ([`Rk4`]'s step, also with a contact mode held) and
+/// on dual numbers `S` (trajectory sensitivities: the same operations in the same order, so the
+/// real parts are the f64 run bit for bit).
 #[inline(always)]
 pub(crate) fn rk4_step<S: Scalar, const N: usize>(
     t: f64,
@@ -74,7 +74,7 @@ impl Rk4 {
     /// matrix overflowed (a step that blew up) is [`Error::NonFiniteDynamics`](crate::Error::NonFiniteDynamics)
     /// at that stage, not a singular mass matrix (see [`diagnose`]).
     #[inline]
-    pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+    pub fn step_arrays<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -92,9 +92,23 @@ impl Rk4 {
 impl Integrator for Rk4 {
     const NAME: &'static str = "RK4";
     type Memory<const N: usize> = ();
+    const STEPS_ON_DUALS: bool = true;
+
+    /// [`rk4_step`] on any scalar: four evaluations of `acc`.
+    #[inline]
+    fn advance_on_duals<S: Scalar, const N: usize>(
+        t: f64,
+        (q, v): (&[S; N], &[S; N]),
+        h: f64,
+        acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
+        stats: &mut Stats,
+    ) -> Result<([S; N], [S; N])> {
+        stats.evaluations += 4;
+        rk4_step(t, q, v, h, acc)
+    }
 
     #[inline]
-    fn advance<M: Mechanism<N>, const N: usize>(
+    fn advance<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         _memory: &mut (),
         t: f64,

@@ -48,24 +48,21 @@
 //! `Dynamics::project` applied to the velocity recovered from p₁ without Λ₁. Velocity rows and
 //! friction are refused by the declaration (`Dynamics::CONSTRAINT_COUNTS`, see
 //! [`holonomic_rows`](super::holonomic_rows)), whatever the state. Unilateral contacts are
-//! integrated through the contact loop with the mode held over each step
-//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single `sys.step` takes): a
-//! closed contact is a RATTLE row for the step (see [`rattle`](super::rattle)); stepped on its own
-//! ([`FixedStepper`](super::FixedStepper)) the method refuses them.
+//! integrated with the contact mode held over each step (the fixed-step loop of a
+//! [`Stepper`](super::Stepper), and a single `sys.step`): a closed contact is a RATTLE row for the
+//! step (see [`rattle`](super::rattle)).
 
-use super::canonical;
-pub use super::canonical::momentum_rate;
-use super::newton::{
-    jacobian_rows, mass_weights, max_norm, newton, position_floor, seeded, NewtonEnd, NewtonScale,
-    Unknowns as _, MAX_NEWTON_ITERATIONS,
-};
-use super::rattle::{breakdown, rows_and_jacobian, rows_in_force, rows_on};
-use super::solver::validated_step;
+use super::canonical::{self, momentum_rate};
+use super::newton::MAX_NEWTON_ITERATIONS;
+use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
+use super::newton::{mass_weights, position_floor, NewtonScale, Unknowns as _};
+use super::rattle::{rows_and_jacobian, rows_in_force, rows_on};
+use super::validated_step;
 use super::{Integrator, Stats};
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::evaluation::Evaluate;
 use crate::geometry::Scalar;
 use crate::linalg::{lu_solve, lu_solve_blocks};
-use crate::mechanism::Mechanism;
 use crate::model::State;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
@@ -105,7 +102,7 @@ pub struct Variational;
 
 /// R(v_m) of the module docs, for any scalar.
 #[inline]
-fn residual<M: Mechanism<N>, S: Scalar, const N: usize>(
+fn residual<M: Evaluate<N>, S: Scalar, const N: usize>(
     mechanism: &M,
     tm: f64,
     q0: &[f64; N],
@@ -118,6 +115,41 @@ fn residual<M: Mechanism<N>, S: Scalar, const N: usize>(
     let p = mechanism.momenta_at(t, &qm, vm);
     let g = momentum_rate(mechanism, t, &qm, vm);
     std::array::from_fn(|k| p[k] - g[k] * (0.5 * h) - p0[k])
+}
+
+/// The discrete flow's update from the converged midpoint velocity v_m: q₁ = q₀ + h v_m, and
+/// ṗ at the midpoint (t_m, q₀ + (h/2) v_m, v_m) (one evaluation), for p₁ = p₀ + h ṗ (plus RATTLE's
+/// Dg(q₀)ᵀΛ on a constrained step).
+fn midpoint_update<M: Evaluate<N>, const N: usize>(
+    mechanism: &M,
+    tm: f64,
+    q0: &[f64; N],
+    vm: &[f64; N],
+    h: f64,
+    stats: &mut Stats,
+) -> ([f64; N], [f64; N]) {
+    let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
+    let rate = momentum_rate(mechanism, tm, &qm, vm);
+    stats.evaluations += 1;
+    (std::array::from_fn(|j| q0[j] + h * vm[j]), rate)
+}
+
+/// The weights of the constrained step's unknowns (v_m, Λ) (see `NewtonScale`): v_m by √|Aᵢᵢ| of
+/// the Newton matrix's velocity block A (M to leading order), Λ by the velocity-weighted impulse
+/// −Dg(q₀)ᵀΛ it gives each coordinate, maxₖ |Dgₗₖ|/√Aₖₖ per unit Λₗ (the padding rows beyond
+/// `rows`, held at zero, not at all).
+fn constrained_weights<const N: usize>(
+    velocity_block: &SMatrix<f64, N, N>,
+    g0: &SMatrix<f64, N, N>,
+    rows: usize,
+) -> [SVector<f64, N>; 2] {
+    let velocity = mass_weights(velocity_block);
+    let impulse = SVector::<f64, N>::from_fn(|l, _| {
+        (0..N)
+            .filter(|&k| l < rows && velocity[k] > 0.0)
+            .fold(0.0f64, |m, k| m.max(g0[(l, k)].abs() / velocity[k]))
+    });
+    [velocity, impulse]
 }
 
 /// What a variational step cost.
@@ -133,7 +165,7 @@ impl Variational {
     /// One step of the discrete flow on (q, p): returns (q₁, p₁) and the midpoint velocity v_m
     /// (a good starting guess for recovering v₁). No validation.
     #[allow(clippy::type_complexity)]
-    pub fn step_momenta<M: Mechanism<N>, const N: usize>(
+    pub fn step_momenta<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q0: &[f64; N],
@@ -160,7 +192,7 @@ impl Variational {
     /// One step of the discrete flow with `rows` holonomic rows: (q₁, p₁ before RATTLE's μ, v_m,
     /// iterations).
     #[allow(clippy::type_complexity, clippy::too_many_arguments)]
-    fn momenta_step<M: Mechanism<N>, const N: usize>(
+    fn momenta_step<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         rows: usize,
         t: f64,
@@ -192,15 +224,9 @@ impl Variational {
             let r = residual(mechanism, tm, q0, p0, &seeded(&(*vm).into()), h);
             let value = SVector::<f64, N>::from_fn(|i, _| r[i].re);
             let residual_norm = max_norm(&value);
-            let breakdown = |reason: &str| Error::NewtonBreakdown {
-                method: Self::NAME,
-                t,
-                h,
-                iteration,
-                reason: reason.to_string(),
-            };
+            let broke = |reason: &str| breakdown(Self::NAME, t, h, iteration, reason);
             if !residual_norm.is_finite() {
-                return Err(breakdown(
+                return Err(broke(
                     "the discrete Euler-Lagrange residual is not finite (the midpoint left the \
                      region where the equations of motion are finite; reduce h)",
                 ));
@@ -210,7 +236,7 @@ impl Variational {
                 weights.set(mass_weights(&jac));
             }
             let Some(delta) = lu_solve(&jac, &value) else {
-                return Err(breakdown(if jac.iter().all(|x| x.is_finite()) {
+                return Err(broke(if jac.iter().all(|x| x.is_finite()) {
                     "the Newton matrix is singular"
                 } else {
                     "the Newton matrix is not finite (h is too large for this mechanism)"
@@ -219,28 +245,12 @@ impl Variational {
             Ok((delta, residual_norm))
         })?;
         // Every iteration evaluated the residual with its exact Jacobian and factorised it.
-        let n = stats.newton_iterations - before;
-        stats.jacobians += n;
-        stats.factorizations += n;
-        match end {
-            NewtonEnd::Converged { iterations, .. } => {
-                let vm: [f64; N] = vm.into();
-                let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
-                let g = momentum_rate(mechanism, tm, &qm, &vm);
-                stats.evaluations += 1;
-                let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
-                let p1 = std::array::from_fn(|j| p0[j] + h * g[j]);
-                Ok((q1, p1, vm, iterations))
-            }
-            NewtonEnd::Slow {
-                iterations,
-                residual,
-            } => Err(Error::NewtonDiverged {
-                t,
-                iterations,
-                residual,
-            }),
-        }
+        count_exact_jacobians(stats, before);
+        let iterations = end.converged(t)?;
+        let vm: [f64; N] = vm.into();
+        let (q1, g) = midpoint_update(mechanism, tm, q0, &vm, h, stats);
+        let p1 = std::array::from_fn(|j| p0[j] + h * g[j]);
+        Ok((q1, p1, vm, iterations))
     }
 
     /// The position stage of RATTLE on the discrete Euler–Lagrange equations (see the
@@ -248,7 +258,7 @@ impl Variational {
     /// dual seeding of v_m through both R and g(q₀ + h v_m, t₁); the multipliers beyond `rows` are
     /// held at zero by identity rows. Returns (q₁, p₁ before μ, v_m, iterations).
     #[allow(clippy::type_complexity, clippy::too_many_arguments)]
-    fn constrained_momenta_step<M: Mechanism<N>, const N: usize>(
+    fn constrained_momenta_step<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         rows: usize,
         t: f64,
@@ -305,13 +315,7 @@ impl Variational {
                 [jacobian_rows(&g) / h, padding],
             ];
             if iteration == 1 {
-                let velocity = mass_weights(&jacobian[0][0]);
-                let impulse = SVector::<f64, N>::from_fn(|l, _| {
-                    (0..N)
-                        .filter(|&k| l < rows && velocity[k] > 0.0)
-                        .fold(0.0f64, |m, k| m.max(g0[(l, k)].abs() / velocity[k]))
-                });
-                weights.set([velocity, impulse]);
+                weights.set(constrained_weights(&jacobian[0][0], &g0, rows));
             }
             let Some(delta) = lu_solve_blocks(&jacobian, &[momentum, position]) else {
                 return Err(breakdown(
@@ -325,34 +329,18 @@ impl Variational {
             };
             Ok((delta, norm))
         })?;
-        let n = stats.newton_iterations - before;
-        stats.jacobians += n;
-        stats.factorizations += n;
-        match end {
-            NewtonEnd::Converged { iterations, .. } => {
-                let vm: [f64; N] = x[0].into();
-                let qm: [f64; N] = std::array::from_fn(|j| q0[j] + 0.5 * h * vm[j]);
-                let rate = momentum_rate(mechanism, tm, &qm, &vm);
-                stats.evaluations += 1;
-                let push = g0.transpose() * x[1];
-                let q1 = std::array::from_fn(|j| q0[j] + h * vm[j]);
-                let p1 = std::array::from_fn(|j| p0[j] + push[j] + h * rate[j]);
-                Ok((q1, p1, vm, iterations))
-            }
-            NewtonEnd::Slow {
-                iterations,
-                residual,
-            } => Err(Error::NewtonDiverged {
-                t,
-                iterations,
-                residual,
-            }),
-        }
+        count_exact_jacobians(stats, before);
+        let iterations = end.converged(t)?;
+        let vm: [f64; N] = x[0].into();
+        let (q1, rate) = midpoint_update(mechanism, tm, q0, &vm, h, stats);
+        let push = g0.transpose() * x[1];
+        let p1 = std::array::from_fn(|j| p0[j] + push[j] + h * rate[j]);
+        Ok((q1, p1, vm, iterations))
     }
 
-    /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method
-    /// with the exact Jacobian ∂p/∂v from dual numbers, from `guess`. Returns v and the iterations.
-    pub fn velocities_from_momenta<M: Mechanism<N>, const N: usize>(
+    /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), one solve with the
+    /// mass matrix (see [`canonical::velocities_from_momenta`]). Returns v and the solves (1).
+    pub fn velocities_from_momenta<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -364,7 +352,7 @@ impl Variational {
 
     /// One step on (q, v) arrays through the Legendre transform at both ends. No validation.
     #[allow(clippy::type_complexity)]
-    pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+    pub fn step_arrays<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -378,7 +366,7 @@ impl Variational {
     }
 
     #[allow(clippy::type_complexity)]
-    fn advance_counted<M: Mechanism<N>, const N: usize>(
+    fn advance_counted<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -413,7 +401,7 @@ impl Variational {
     }
 
     /// A validated step that also reports its Newton cost; the state is unchanged on error.
-    pub fn step_with_stats<M: Mechanism<N>, const N: usize>(
+    pub fn step_with_stats<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         state: &mut State<M::Coords>,
         h: f64,
@@ -430,11 +418,10 @@ impl Variational {
 impl Integrator for Variational {
     const NAME: &'static str = "variational midpoint";
     type Memory<const N: usize> = ();
-    // Unilateral contacts through the contact loop, a closed contact a RATTLE row for the step.
-    const HOLDS_CONTACT_MODE: bool = true;
+    // With the contact mode held, a closed contact is a RATTLE row for the step.
     const POSITION_ROWS_ONLY: bool = true;
 
-    fn advance<M: Mechanism<N>, const N: usize>(
+    fn advance<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         _memory: &mut (),
         t: f64,

@@ -39,10 +39,9 @@
 //! constraints and friction are refused, by the declaration (`Dynamics::CONSTRAINT_COUNTS`, see
 //! [`holonomic_rows`](super::holonomic_rows)), as is an implementation that does not declare its
 //! constraints: whatever the state, never by testing the multipliers. Unilateral contacts are
-//! integrated through the contact loop with the mode held over each step
-//! ([`ContactRk4::step_with`](crate::ContactRk4::step_with), which a single `sys.step` takes): a
-//! closed contact is a RATTLE row for the step (see [`rattle`](super::rattle)); stepped on its own
-//! ([`FixedStepper`](super::FixedStepper)) the method refuses them.
+//! integrated with the contact mode held over each step (the fixed-step loop of a
+//! [`Stepper`](super::Stepper), and a single `sys.step`): a closed contact is a RATTLE row for the
+//! step (see [`rattle`](super::rattle)).
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
@@ -51,8 +50,8 @@ use super::rattle::{position_stage, rows_and_jacobian, rows_in_force};
 use super::{Integrator, Stats};
 use crate::dynamics::{mass_matrix_failure, solve_accelerations};
 use crate::error::{Error, Result};
+use crate::evaluation::Evaluate;
 use crate::linalg::{cholesky, cholesky_substitute};
-use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 
@@ -100,7 +99,7 @@ impl StormerVerlet {
     /// One step on raw arrays: (q₁, v₁), or [`Error::UnsuitableMethod`] when the mass matrix
     /// changed over the step or the mechanism has constraints RATTLE does not enforce. No
     /// validation of the inputs.
-    pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+    pub fn step_arrays<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -110,7 +109,7 @@ impl StormerVerlet {
         Self::step_counted(mechanism, t, q, v, h, &mut Stats::default())
     }
 
-    fn step_counted<M: Mechanism<N>, const N: usize>(
+    fn step_counted<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
         q: &[f64; N],
@@ -159,38 +158,7 @@ impl StormerVerlet {
         };
         let eom1 = mechanism.equations_of_motion_at(t1, &q1, &vh);
         stats.evaluations += 1;
-        // A step that blew up (M overflowing at q₁) is non-finite dynamics there, not a mass matrix
-        // that "changed by NaN".
-        if !eom1.mass_matrix.iter().all(|x| x.is_finite()) {
-            return Err(Error::NonFiniteDynamics {
-                t: t1,
-                configuration: crate::error::describe_configuration(&M::Coords::NAMES, &q1),
-            });
-        }
-        let (m0, m1) = (&eom0.mass_matrix, &eom1.mass_matrix);
-        let mut change = 0.0f64;
-        let mut relative = 0.0f64;
-        for i in 0..N {
-            for j in 0..N {
-                let d = (m1[(i, j)] - m0[(i, j)]).abs();
-                let r = d / (m0[(i, i)] * m0[(j, j)]).abs().sqrt();
-                // NaN (a zero diagonal entry, M singular) counts as a change, and stays.
-                if r.is_nan() || r > relative {
-                    (change, relative) = (d, r);
-                }
-            }
-        }
-        // `!(a <= b)` also refuses NaN.
-        if !(relative <= MASS_MATRIX_VARIATION) {
-            return Err(Error::UnsuitableMethod {
-                method: Self::NAME,
-                reason: format!(
-                    "the mass matrix is not constant: an entry changed by {change:e} (relative {relative:e}) over \
-                     the step from t = {t} to t = {t1}; use a method for general mass matrices (implicit midpoint, \
-                     Gauss-Legendre, variational, RK4, Dopri5)"
-                ),
-            });
-        }
+        constant_mass::<M::Coords, N>((t, &eom0.mass_matrix), (t1, &eom1.mass_matrix), &q1)?;
         let a1 = solve_accelerations::<M::Coords, f64, N>(&eom1, t1, &q1)?;
         let mut v1 = std::array::from_fn(|i| vh[i] + 0.5 * h * a1[i]);
         if rows > 0 {
@@ -205,11 +173,10 @@ impl StormerVerlet {
 impl Integrator for StormerVerlet {
     const NAME: &'static str = "Stormer-Verlet";
     type Memory<const N: usize> = ();
-    // Unilateral contacts through the contact loop, a closed contact a RATTLE row for the step.
-    const HOLDS_CONTACT_MODE: bool = true;
+    // With the contact mode held, a closed contact is a RATTLE row for the step.
     const POSITION_ROWS_ONLY: bool = true;
 
-    fn advance<M: Mechanism<N>, const N: usize>(
+    fn advance<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         _memory: &mut (),
         t: f64,
@@ -221,4 +188,46 @@ impl Integrator for StormerVerlet {
         // Two solves with the mass matrix, and RATTLE's Newton iterations (counted there).
         Self::step_counted(mechanism, t, q, v, h, stats)
     }
+}
+
+/// Refuses a step over which the mass matrix changed (M(q₁) against M(q₀), relative to M(q₀)'s
+/// largest entry) by more than [`MASS_MATRIX_VARIATION`] ([`Error::UnsuitableMethod`]), and a
+/// mass matrix that overflowed at q₁ ([`Error::NonFiniteDynamics`]).
+fn constant_mass<C: Coordinates<N>, const N: usize>(
+    (t, m0): (f64, &SMatrix<f64, N, N>),
+    (t1, m1): (f64, &SMatrix<f64, N, N>),
+    q1: &[f64; N],
+) -> Result<()> {
+    // A step that blew up (M overflowing at q₁) is non-finite dynamics there, not a mass matrix
+    // that "changed by NaN".
+    if !m1.iter().all(|x| x.is_finite()) {
+        return Err(Error::NonFiniteDynamics {
+            t: t1,
+            configuration: crate::error::describe_configuration(&C::NAMES, q1),
+        });
+    }
+    let mut change = 0.0f64;
+    let mut relative = 0.0f64;
+    for i in 0..N {
+        for j in 0..N {
+            let d = (m1[(i, j)] - m0[(i, j)]).abs();
+            let r = d / (m0[(i, i)] * m0[(j, j)]).abs().sqrt();
+            // NaN (a zero diagonal entry, M singular) counts as a change, and stays.
+            if r.is_nan() || r > relative {
+                (change, relative) = (d, r);
+            }
+        }
+    }
+    // `!(a <= b)` also refuses NaN.
+    if !(relative <= MASS_MATRIX_VARIATION) {
+        return Err(Error::UnsuitableMethod {
+            method: StormerVerlet::NAME,
+            reason: format!(
+                "the mass matrix is not constant: an entry changed by {change:e} (relative {relative:e}) over \
+                 the step from t = {t} to t = {t1}; use a method for general mass matrices (implicit midpoint, \
+                 Gauss-Legendre, variational, RK4, Dopri5)"
+            ),
+        });
+    }
+    Ok(())
 }

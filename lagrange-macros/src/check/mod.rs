@@ -15,7 +15,7 @@ mod resolve;
 mod signatures;
 mod structs;
 
-pub use model::{family_index, Body, Dim, Model, Shape};
+pub use model::{family_index, Body, Dim, Force, Model, Shape};
 pub(crate) use resolve::GEOMETRY_FUNCTIONS;
 
 use crate::ast::{Decl, Mechanism};

@@ -17,15 +17,12 @@ use super::{lit, private, scalar};
 use crate::check::Model;
 use crate::symbolic::poly::{Atom, Monomial, Poly};
 use crate::symbolic::Equations;
-use proc_macro2::{Ident, TokenStream};
+use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote, ToTokens};
 use std::collections::{BTreeMap, BTreeSet};
 
-/// The inherent impl holding the three functions, and the number of coefficients.
+/// The inherent impl holding the four functions, and the number of coefficients.
 pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenStream, usize) {
-    let (p, d) = (private(), scalar());
-    let params_ident = model.params_ident;
-    let n = model.dof();
     let mut out = Writer {
         params: model
             .params
@@ -37,48 +34,128 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
         atoms: BTreeSet::new(),
         body: Body::default(),
     };
-    let lower: Vec<Vec<TokenStream>> = equations
-        .mass_matrix
-        .iter()
-        .map(|row| row.iter().map(|m| out.entry(m)).collect())
-        .collect();
-    let forces: Vec<TokenStream> = equations
-        .generalized_forces
-        .iter()
-        .map(|f| out.entry(f))
-        .collect();
-    let inertial: Vec<TokenStream> = equations
-        .inertial_terms
-        .iter()
-        .map(|b| out.entry(b))
-        .collect();
-    // Column j of the symmetric M: Mᵢⱼ from the lower triangle.
-    let columns = (0..n).map(|j| {
-        let column = (0..n).map(|i| {
-            let (r, c) = if i >= j { (i, j) } else { (j, i) };
-            &lower[r][c]
-        });
-        quote!([#(#column),*])
-    });
-    let motion = std::mem::take(&mut out.body);
-    let (momenta, rates) = canonical_field(equations);
-    let momenta: Vec<TokenStream> = momenta.iter().map(|p| out.entry(p)).collect();
-    let rates: Vec<TokenStream> = rates.iter().map(|r| out.entry(r)).collect();
-    let canonical = std::mem::take(&mut out.body);
+    // The entries first, in this order (it numbers the coefficients and products); the
+    // coefficients' inputs once every entry has named its atoms.
+    let motion = out.motion(equations);
+    let canonical = out.canonical(equations);
     let constants = out.constant_inputs(model, equations);
-    let variables = motion.variable_inputs(model);
-    // One `let` for the products: each `let` opens a scope, and thousands of nested scopes (a
-    // chain of 64 links) overflow the compiler's stack when it writes debug information.
-    let products = tuple_let(&motion.product_lets);
-    let canonical_variables = canonical.variable_inputs(model);
-    let canonical_products = tuple_let(&canonical.product_lets);
-    let coefficients = out.coefficient_values.iter();
-    let coefficient_count = out.coefficient_values.len();
-    let count = lit(coefficient_count);
-    let n = lit(n);
+    let count = out.coefficient_values.len();
+    let coefficients = coefficients_fn(&out.coefficient_values, &constants);
+    let motion = closed_form_fns(model, &motion, count);
+    let canonical = canonical_field_fn(model, &canonical, count);
+    let params_ident = model.params_ident;
+    let tokens = quote! {
+        impl #params_ident {
+            #coefficients
+            #motion
+            #canonical
+        }
+    };
+    (tokens, count)
+}
+
+/// The entries of the equations of motion M q̈ = 𝓕 − b, and the products and variables they use.
+struct Motion {
+    /// M's columns, `[Mᵢⱼ for i]` for each j.
+    columns: Vec<TokenStream>,
+    forces: Vec<TokenStream>,
+    inertial: Vec<TokenStream>,
+    body: Body,
+}
+
+/// The entries of the canonical field (p, ṗ), and the products and variables they use.
+struct Canonical {
+    momenta: Vec<TokenStream>,
+    rates: Vec<TokenStream>,
+    body: Body,
+}
+
+/// `__lagrange_coefficients()`: the `f64` coefficients from the parameters, constants and masses.
+fn coefficients_fn(coefficients: &[TokenStream], constants: &TokenStream) -> TokenStream {
+    let count = lit(coefficients.len());
     let prelude = super::prelude();
-    // `__k`: the prepared coefficients, or those computed here after the trigonometric calls.
-    let select_coefficients = quote! {
+    quote! {
+        /// The constant factors of the closed-form equations of motion.
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_coefficients(&self) -> [f64; #count] {
+            #prelude
+            #constants
+            [#(#coefficients),*]
+        }
+    }
+}
+
+/// `__lagrange_closed_form(q, q̇)` and `__lagrange_closed_form_with(k, q, q̇)`: M, 𝓕 and b.
+fn closed_form_fns(model: &Model, motion: &Motion, count: usize) -> TokenStream {
+    let (p, d) = (private(), scalar());
+    let n = lit(model.dof());
+    let count = lit(count);
+    let opening = motion.body.opening(model, &count);
+    let Motion {
+        columns,
+        forces,
+        inertial,
+        ..
+    } = motion;
+    quote! {
+        #[inline(always)]
+        fn __lagrange_closed_form<#d: #p::Scalar>(
+            &self,
+            __q: &[#d; #n],
+            __v: &[#d; #n],
+        ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
+            self.__lagrange_closed_form_with(#p::core::option::Option::None, __q, __v)
+        }
+        /// With the coefficients prepared (`Some`) or computed here (`None`), after the sines
+        /// and cosines: values computed before those calls would be kept on the stack across
+        /// them.
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_closed_form_with<#d: #p::Scalar>(
+            &self,
+            __prepared: #p::core::option::Option<&[f64; #count]>,
+            __q: &[#d; #n],
+            __v: &[#d; #n],
+        ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
+            #opening
+            #p::dynamics::EquationsOfMotion::from_columns(
+                [#(#columns),*],
+                [#(#forces),*],
+                [#(#inertial),*],
+            )
+        }
+    }
+}
+
+/// `__lagrange_canonical_field_with(k, q, q̇)`: (p, ṗ).
+fn canonical_field_fn(model: &Model, canonical: &Canonical, count: usize) -> TokenStream {
+    let (p, d) = (private(), scalar());
+    let n = lit(model.dof());
+    let count = lit(count);
+    let opening = canonical.body.opening(model, &count);
+    let Canonical { momenta, rates, .. } = canonical;
+    quote! {
+        /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
+        /// (`Some`) or computed here (`None`).
+        #[inline(always)]
+        #[allow(unused_variables, non_snake_case, clippy::all)]
+        fn __lagrange_canonical_field_with<#d: #p::Scalar>(
+            &self,
+            __prepared: #p::core::option::Option<&[f64; #count]>,
+            __q: &[#d; #n],
+            __v: &[#d; #n],
+        ) -> ([#d; #n], [#d; #n]) {
+            #opening
+            ([#(#momenta),*], [#(#rates),*])
+        }
+    }
+}
+
+/// `__k`: the prepared coefficients, or those computed here after the trigonometric calls.
+fn select_coefficients(count: &Literal) -> TokenStream {
+    let p = private();
+    quote! {
         let __computed: [f64; #count];
         let __k: &[f64; #count] = match __prepared {
             #p::core::option::Option::Some(__k) => __k,
@@ -87,65 +164,7 @@ pub(super) fn closed_form_impl(model: &Model, equations: &Equations) -> (TokenSt
                 &__computed
             }
         };
-    };
-    let tokens = quote! {
-        impl #params_ident {
-            /// The constant factors of the closed-form equations of motion.
-            #[inline(always)]
-            #[allow(unused_variables, non_snake_case, clippy::all)]
-            fn __lagrange_coefficients(&self) -> [f64; #count] {
-                #prelude
-                #constants
-                [#(#coefficients),*]
-            }
-            #[inline(always)]
-            fn __lagrange_closed_form<#d: #p::Scalar>(
-                &self,
-                __q: &[#d; #n],
-                __v: &[#d; #n],
-            ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
-                self.__lagrange_closed_form_with(#p::core::option::Option::None, __q, __v)
-            }
-            /// With the coefficients prepared (`Some`) or computed here (`None`), after the sines
-            /// and cosines: values computed before those calls would be kept on the stack across
-            /// them.
-            #[inline(always)]
-            #[allow(unused_variables, non_snake_case, clippy::all)]
-            fn __lagrange_closed_form_with<#d: #p::Scalar>(
-                &self,
-                __prepared: #p::core::option::Option<&[f64; #count]>,
-                __q: &[#d; #n],
-                __v: &[#d; #n],
-            ) -> #p::dynamics::EquationsOfMotion<#d, #n> {
-                #prelude
-                #variables
-                #select_coefficients
-                #products
-                #p::dynamics::EquationsOfMotion::from_columns(
-                    [#(#columns),*],
-                    [#(#forces),*],
-                    [#(#inertial),*],
-                )
-            }
-            /// The canonical field (p, ṗ) = (M q̇, ∂T/∂q + 𝓕), with the coefficients prepared
-            /// (`Some`) or computed here (`None`).
-            #[inline(always)]
-            #[allow(unused_variables, non_snake_case, clippy::all)]
-            fn __lagrange_canonical_field_with<#d: #p::Scalar>(
-                &self,
-                __prepared: #p::core::option::Option<&[f64; #count]>,
-                __q: &[#d; #n],
-                __v: &[#d; #n],
-            ) -> ([#d; #n], [#d; #n]) {
-                #prelude
-                #canonical_variables
-                #select_coefficients
-                #canonical_products
-                ([#(#momenta),*], [#(#rates),*])
-            }
-        }
-    };
-    (tokens, coefficient_count)
+    }
 }
 
 /// The canonical field's polynomials from M and 𝓕: pᵢ = Σⱼ Mᵢⱼ q̇ⱼ and
@@ -207,6 +226,52 @@ struct Body {
 }
 
 impl Writer {
+    /// M (its lower triangle written, column j read from it), 𝓕 and b, in that order.
+    fn motion(&mut self, equations: &Equations) -> Motion {
+        let lower: Vec<Vec<TokenStream>> = equations
+            .mass_matrix
+            .iter()
+            .map(|row| row.iter().map(|m| self.entry(m)).collect())
+            .collect();
+        let forces = equations
+            .generalized_forces
+            .iter()
+            .map(|f| self.entry(f))
+            .collect();
+        let inertial = equations
+            .inertial_terms
+            .iter()
+            .map(|b| self.entry(b))
+            .collect();
+        // Column j of the symmetric M: Mᵢⱼ from the lower triangle.
+        let n = lower.len();
+        let columns = (0..n)
+            .map(|j| {
+                let column = (0..n).map(|i| {
+                    let (r, c) = if i >= j { (i, j) } else { (j, i) };
+                    &lower[r][c]
+                });
+                quote!([#(#column),*])
+            })
+            .collect();
+        Motion {
+            columns,
+            forces,
+            inertial,
+            body: std::mem::take(&mut self.body),
+        }
+    }
+
+    /// p and ṗ ([`canonical_field`]), in that order.
+    fn canonical(&mut self, equations: &Equations) -> Canonical {
+        let (momenta, rates) = canonical_field(equations);
+        Canonical {
+            momenta: momenta.iter().map(|p| self.entry(p)).collect(),
+            rates: rates.iter().map(|r| self.entry(r)).collect(),
+            body: std::mem::take(&mut self.body),
+        }
+    }
+
     /// An entry on `__D`, factored as Σ (± products of sines, cosines and coordinates) ×
     /// coefficient × product of velocities: the terms that share a velocity product and a
     /// coefficient up to its sign are summed before they are scaled (the double pendulum's
@@ -410,6 +475,23 @@ impl Writer {
 }
 
 impl Body {
+    /// What the function opens with: the prelude, its sines and cosines, the coefficients
+    /// (after the trigonometric calls) and its products.
+    fn opening(&self, model: &Model, count: &Literal) -> TokenStream {
+        let prelude = super::prelude();
+        let variables = self.variable_inputs(model);
+        let select_coefficients = select_coefficients(count);
+        // One `let` for the products: each `let` opens a scope, and thousands of nested scopes (a
+        // chain of 64 links) overflow the compiler's stack when it writes debug information.
+        let products = tuple_let(&self.product_lets);
+        quote! {
+            #prelude
+            #variables
+            #select_coefficients
+            #products
+        }
+    }
+
     /// The sines and cosines used: one `sin_cos` per coordinate whose sine and cosine both
     /// appear.
     fn variable_inputs(&self, model: &Model) -> TokenStream {

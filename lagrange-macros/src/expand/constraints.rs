@@ -126,11 +126,10 @@ fn position_derivatives_fn(model: &Model) -> Option<TokenStream> {
 /// (h or the slip velocity per velocity row, zero elsewhere).
 fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
     let p = private();
-    let (n, k, c, d) = (
+    let (n, k, c) = (
         lit(model.dof()),
         lit(model.rows),
         lit(model.constraint_row_count()),
-        scalar(),
     );
     let prelude = prelude();
     let rows: Vec<_> = model
@@ -145,44 +144,13 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
         quote!(__q),
     );
     let bodies = bind_bodies(model);
-    // A friction cone's `Vec2` is evaluated once, before the array, and gives two rows.
-    let cones = model
-        .constraints
-        .iter()
-        .enumerate()
-        .filter(|(_, r)| r.cone && !position)
-        .map(|(item, r)| {
-            let block = lift::lift_block(&r.decl.block, &d);
-            let name = format_ident!("__cone_{}", item);
-            quote!(let #name: Vec2<__D> = #block;)
-        });
-    let values = model.constraints.iter().enumerate().flat_map(|(item, r)| {
-        if r.cone && !position {
-            let name = format_ident!("__cone_{}", item);
-            vec![quote!(#name.x), quote!(#name.y)]
-        } else if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position
-            && !r.cone
-        {
-            let block = lift::lift_block(&r.decl.block, &d);
-            vec![quote!({ let __row: __D = #block; __row })]
-        } else {
-            vec![quote!(<__D>::zero()); r.width()]
-        }
-    });
+    let (cones, values) = row_values(model, position);
     let signature = if position {
         quote!(fn position_constraints<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> [__D; #c])
     } else {
         quote!(fn velocity_constraints<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], __x: &[__D; #k], __x_dot: &[__D; #k]) -> [__D; #c])
     };
-    let velocities = (!position).then(|| {
-        let coords = bind_coordinates(model, &quote!(__v), "_dot");
-        let names = model.bodies.iter().map(|b| b.decl.ident());
-        let body_velocities = model.bodies.iter().map(|b| format_ident!("{}_dot", b.decl.ident()));
-        quote! {
-            #coords
-            let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);
-        }
-    });
+    let velocities = (!position).then(|| velocity_bindings(model));
     // Inlined like `cartesian`: which derivatives of x are structurally absent is then known where
     // the rows are used, and costs nothing.
     quote! {
@@ -196,6 +164,52 @@ fn constraint_rows_fn(model: &Model, position: bool) -> TokenStream {
             #(#cones)*
             [#(#values),*]
         }
+    }
+}
+
+/// The friction cones' `let`s and the rows' values: a position (or velocity) row its block, a
+/// friction cone's two rows the components of its `Vec2`, every other row zero.
+fn row_values(model: &Model, position: bool) -> (Vec<TokenStream>, Vec<TokenStream>) {
+    let d = scalar();
+    // A friction cone's `Vec2` is evaluated once, before the array, and gives two rows.
+    let cones = model
+        .constraints
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.cone && !position)
+        .map(|(item, r)| {
+            let block = lift::lift_block(&r.decl.block, &d);
+            let name = format_ident!("__cone_{}", item);
+            quote!(let #name: Vec2<__D> = #block;)
+        })
+        .collect();
+    let values = model.constraints.iter().enumerate().flat_map(|(item, r)| {
+        if r.cone && !position {
+            let name = format_ident!("__cone_{}", item);
+            vec![quote!(#name.x), quote!(#name.y)]
+        } else if matches!(r.decl.kind(), Kind::Constraint | Kind::Unilateral) == position
+            && !r.cone
+        {
+            let block = lift::lift_block(&r.decl.block, &d);
+            vec![quote!({ let __row: __D = #block; __row })]
+        } else {
+            vec![quote!(<__D>::zero()); r.width()]
+        }
+    });
+    (cones, values.collect())
+}
+
+/// The coordinates' velocities (`<coordinate>_dot`) and the bodies' (`<body>_dot`).
+fn velocity_bindings(model: &Model) -> TokenStream {
+    let coords = bind_coordinates(model, &quote!(__v), "_dot");
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let body_velocities = model
+        .bodies
+        .iter()
+        .map(|b| format_ident!("{}_dot", b.decl.ident()));
+    quote! {
+        #coords
+        let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);
     }
 }
 

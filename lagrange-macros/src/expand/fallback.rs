@@ -25,7 +25,6 @@ pub(crate) fn fallback(
     model: Option<&Model>,
     errors: Vec<syn::Error>,
 ) -> TokenStream {
-    let p = quote!(::lagrange::__private);
     let (attrs, vis, ident) = (&mechanism.attrs, &mechanism.vis, &mechanism.ident);
     let other_items = &mechanism.other_items;
     let coords = dedup(
@@ -38,53 +37,15 @@ pub(crate) fn fallback(
     let n = lit(crate::ast::slot_count(&coords));
     let coords_items = coords_stub(mechanism, &coords);
     let params = mechanism.params.as_ref().map(|(s, _)| {
-        let mut s = s.clone();
-        s.attrs.retain(|a| !is_cfg(a));
-        if let syn::Fields::Named(named) = &mut s.fields {
-            let mut seen = BTreeSet::new();
-            named.named = named.named.clone().into_iter().filter(|f| seen.insert(f.ident.clone())).collect();
-            named.named.iter_mut().for_each(|f| f.attrs.retain(|a| !is_cfg(a)));
-        }
-        let ident = &s.ident;
-        let unreachable = quote!(#p::core::unreachable!("this mechanism failed to compile"));
-        let bodies = model.filter(|m| bodies_are_unique(m)).map(|model| {
-            let structs = bodies_structs(model);
-            quote! {
-                #structs
-                impl #ident {
-                    pub fn bodies(&self, state: &State) -> Bodies { #unreachable }
-                    pub fn body_velocities(&self, state: &State) -> BodyVelocities { #unreachable }
-                }
-            }
-        });
+        let s = params_struct(s);
+        let bodies = model
+            .filter(|m| bodies_are_unique(m))
+            .map(|model| bodies_stub(model, &s.ident));
+        let impls = trait_stubs(&s.ident, &n);
         quote! {
             #s
             #bodies
-            impl #p::Prepare for #ident {
-                type Prepared = ();
-                fn prepare(&self) -> #p::Result<()> { #unreachable }
-            }
-            impl #p::Dynamics<#n> for #ident {
-                type Coords = Coords;
-                fn check_parameters(&self) -> #p::Result<()> { #unreachable }
-                fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> { #unreachable }
-                fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S { #unreachable }
-                fn potential_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> S { #unreachable }
-                fn momenta_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] { #unreachable }
-                fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 { #unreachable }
-            }
-            impl #p::lagrange_core::declaration::Declaration for #ident {
-                const DOF: usize = #n;
-                const PARAMETERS: &'static [&'static str] = &[];
-                fn from_parameters(values: &[f64]) -> #p::core::option::Option<Self> { #unreachable }
-                fn parameters(&self) -> #p::std::vec::Vec<f64> { #unreachable }
-            }
-            impl #p::lagrange_core::animation::Drawable<#n> for #ident {
-                const BODIES: &'static [#p::lagrange_core::animation::BodyLayout] = &[];
-                const LINKS: &'static [#p::lagrange_core::animation::Link] = &[];
-                const CONSTRAINT_BODIES: &'static [#p::lagrange_core::animation::ConstraintLayout] = &[];
-                fn cartesian_rows(&self, t: f64, q: &[f64; #n], rows: &mut #p::std::vec::Vec<f64>) { #unreachable }
-            }
+            #impls
         }
     });
     let errors = ctxt::to_compile_errors(errors);
@@ -98,6 +59,80 @@ pub(crate) fn fallback(
             #errors
         }
     }
+}
+
+/// The parameter struct as written, without its `cfg`s and with each field once.
+fn params_struct(s: &syn::ItemStruct) -> syn::ItemStruct {
+    let mut s = s.clone();
+    s.attrs.retain(|a| !is_cfg(a));
+    if let syn::Fields::Named(named) = &mut s.fields {
+        let mut seen = BTreeSet::new();
+        named.named = named
+            .named
+            .clone()
+            .into_iter()
+            .filter(|f| seen.insert(f.ident.clone()))
+            .collect();
+        named
+            .named
+            .iter_mut()
+            .for_each(|f| f.attrs.retain(|a| !is_cfg(a)));
+    }
+    s
+}
+
+/// `Bodies`, `BodyVelocities` and the parameter struct's `bodies` and `body_velocities`, never run.
+fn bodies_stub(model: &Model, ident: &syn::Ident) -> TokenStream {
+    let unreachable = unreachable();
+    let structs = bodies_structs(model);
+    quote! {
+        #structs
+        impl #ident {
+            pub fn bodies(&self, state: &State) -> Bodies { #unreachable }
+            pub fn body_velocities(&self, state: &State) -> BodyVelocities { #unreachable }
+        }
+    }
+}
+
+/// The `Prepare`, `Dynamics`, `Declaration` and `Drawable` impls, never run.
+fn trait_stubs(ident: &syn::Ident, n: &proc_macro2::Literal) -> TokenStream {
+    let p = quote!(::lagrange::__private);
+    let unreachable = unreachable();
+    quote! {
+        impl #p::Prepare for #ident {
+            type Prepared = ();
+            fn prepare(&self) -> #p::Result<()> { #unreachable }
+        }
+        impl #p::Dynamics<#n> for #ident {
+            type Coords = Coords;
+            type Contacts = #p::lagrange_core::constraints::NoContacts;
+            fn check_parameters(&self) -> #p::Result<()> { #unreachable }
+            fn equations_of_motion_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> { #unreachable }
+            fn kinetic_energy_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n], v: &[S; #n]) -> S { #unreachable }
+            fn potential_energy_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n]) -> S { #unreachable }
+            fn momenta_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&()>, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] { #unreachable }
+            fn lagrangian_time_derivative_at(&self, prepared: #p::core::option::Option<&()>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 { #unreachable }
+        }
+        impl #p::lagrange_core::declaration::Declaration for #ident {
+            const DOF: usize = #n;
+            const PARAMETERS: &'static [&'static str] = &[];
+            fn from_parameters(values: &[f64]) -> #p::core::option::Option<Self> { #unreachable }
+            fn parameters(&self) -> #p::std::vec::Vec<f64> { #unreachable }
+        }
+        impl #p::lagrange_core::animation::Drawable<#n> for #ident {
+            const BODIES: &'static [#p::lagrange_core::animation::BodyLayout] = &[];
+            const LINKS: &'static [#p::lagrange_core::animation::Link] = &[];
+            const CONSTRAINT_BODIES: &'static [#p::lagrange_core::animation::ConstraintLayout] = &[];
+            fn cartesian_rows(&self, t: f64, q: &[f64; #n], rows: &mut #p::std::vec::Vec<f64>) { #unreachable }
+        }
+    }
+}
+
+/// The body of a stub: a panic that says why.
+fn unreachable() -> TokenStream {
+    quote!(::lagrange::__private::core::unreachable!(
+        "this mechanism failed to compile"
+    ))
 }
 
 /// Whether `Bodies` can be written: at least one body, no name twice.

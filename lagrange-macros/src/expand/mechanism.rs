@@ -1,7 +1,8 @@
-//! The `Mechanism` impl, and the hooks it overrides when the mechanism is constrained.
+//! The `Dynamics` impl (with `Prepare`): how the equations are evaluated, with or without the
+//! constants a validated handle prepares, and the constraint hooks of a constrained mechanism.
 
 use super::{lit, private};
-use proc_macro2::{Ident, TokenStream};
+use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
 /// How `equations_of_motion_at` forms M, 𝓕 and b.
@@ -33,257 +34,18 @@ pub(super) enum Positions {
     General,
 }
 
-/// The `Mechanism` impl, forwarding to `lagrange_core::dynamics`.
-pub(super) fn mechanism_impl(
-    params: &Ident,
-    n: usize,
-    k: usize,
-    constrained: Option<usize>,
-    equations: Equations,
-    rheonomic: bool,
-    positions: Positions,
-) -> TokenStream {
-    let (p, n, k) = (private(), lit(n), lit(k));
-    let prepared = match (positions, &equations) {
-        (Positions::Affine { straight_line }, _) => Prepared::Affine { straight_line },
-        (_, Equations::ClosedForm(count)) => Prepared::Coefficients(*count),
-        (_, Equations::Rigid(b)) => Prepared::Rigid(*b),
-        _ => Prepared::Nothing,
-    };
-    let prepare = prepare_impl(params, &n, &k, prepared);
-    // A call on the plain mechanism with equations in closed form: the coefficients computed
-    // here, the parameters' test joining the call's one branch (a handle checked them once).
-    let plain_closed_form_call = quote! {
-        #[inline(always)]
-        fn regular_accelerations_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-            let eom = self.__lagrange_closed_form::<f64>(q, v);
-            let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
-            #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
-        }
-    };
-    // Through a validated handle, q̈ uses the constants prepared once: an affine mechanism's J and
-    // factors of M, the closed form's coefficients.
-    let prepared_accelerations = match prepared {
-        Prepared::Affine { straight_line } => {
-            // A constrained mechanism starts its Schur solve from the same constants.
-            let body = match constrained {
-                Some(c) => {
-                    let c = lit(c);
-                    quote!(#p::lagrange_core::constraints::accelerations_prepared::<Self, S, #n, #k, #c>(self, prepared, t, q, v))
-                }
-                None => {
-                    quote!(#p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v))
-                }
-            };
-            // Affine positions in closed form as well (a uniform field the only force): a call
-            // on the plain mechanism, which prepares nothing, takes the closed form's one branch.
-            let closed_form = matches!(equations, Equations::ClosedForm(_));
-            let closed_form_call = closed_form.then(|| plain_closed_form_call.clone());
-            // Through a validated handle, with its prepared constants: in one branch where q̈ is
-            // then straight-line code, otherwise (the hook's `None`) down the checked path.
-            let prepared_call = if straight_line {
-                match constrained {
-                    Some(c) => {
-                        let c = lit(c);
-                        quote!(#p::lagrange_core::constraints::regular_accelerations_prepared::<Self, #n, #k, #c>(self, prepared, t, q, v))
-                    }
-                    None => {
-                        quote!(#p::lagrange_core::affine::regular_accelerations::<Self, #n, #k>(self, prepared, t, q, v))
-                    }
-                }
-            } else {
-                quote!({
-                    let _ = (prepared, t, q, v);
-                    #p::core::option::Option::None
-                })
-            };
-            let regular = (straight_line || closed_form).then(|| {
-                quote! {
-                    #[inline(always)]
-                    fn regular_accelerations_prepared_at(&self, prepared: &Self::Prepared, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-                        #prepared_call
-                    }
-                }
-            });
-            // The projection after a step from the same constants.
-            let project = constrained.map(|c| {
-                let c = lit(c);
-                quote! {
-                    fn project_prepared(&self, prepared: &Self::Prepared, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
-                        #p::lagrange_core::constraints::project_prepared::<Self, #n, #k, #c>(self, prepared, t, q, v)
-                    }
-                }
-            });
-            Some(quote! {
-                #[inline]
-                fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-                    #body
-                }
-                #closed_form_call
-                #regular
-                #project
-            })
-        }
-        // Straight-line code: `accelerations` checks a call in one branch.
-        Prepared::Coefficients(_) => Some(quote! {
-            #[inline]
-            fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-                let eom = self.__lagrange_closed_form_with::<S>(#p::core::option::Option::Some(prepared), q, v);
-                #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
-            }
-            #plain_closed_form_call
-            #[inline(always)]
-            fn regular_accelerations_prepared_at(&self, prepared: &Self::Prepared, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
-                let eom = self.__lagrange_closed_form_with::<f64>(#p::core::option::Option::Some(prepared), q, v);
-                #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, true)
-            }
-        }),
-        Prepared::Rigid(_) => Some(rigid_prepared_calls(n.clone())),
-        Prepared::Nothing => None,
-    };
-    let scleronomic = !rheonomic;
-    // The canonical field (and the momenta) in closed form, with the prepared coefficients through
-    // a handle; otherwise a scleronomic mechanism's from one hyper-dual pass.
-    let canonical = match (&equations, prepared) {
-        (Equations::ClosedForm(_), _) => {
-            let field = quote!(self.__lagrange_canonical_field_with::<S>);
-            let none = quote!(#p::core::option::Option::None);
-            let prepared_field = matches!(prepared, Prepared::Coefficients(_)).then(|| quote! {
-                #[inline(always)]
-                fn canonical_field_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
-                    #field(#p::core::option::Option::Some(prepared), q, v)
-                }
-            });
-            Some(quote! {
-                #[inline(always)]
-                fn canonical_field_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
-                    #field(#none, q, v)
-                }
-                #prepared_field
-            })
-        }
-        _ => (!rheonomic).then(|| {
-            quote! {
-                #[inline]
-                fn canonical_field_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
-                    #p::dynamics::canonical_field::<Self, S, #n, #k>(self, t, q, v)
-                }
-            }
-        }),
-    };
-    let rigid = |call: TokenStream| match equations {
-        Equations::Rigid(b) => {
-            let b = lit(b);
-            Some(quote!({
-                let __k = self.__lagrange_rigid_constants();
-                #p::tree::rigid::#call::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, &__k, q, v)
-            }))
-        }
-        _ => None,
-    };
-    let kinetic = rigid(quote!(kinetic_energy))
-        .unwrap_or_else(|| quote!(#p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)));
-    let momenta = match equations {
-        Equations::ClosedForm(_) => quote! {
-            self.__lagrange_canonical_field_with::<S>(#p::core::option::Option::None, q, v).0
-        },
-        Equations::Rigid(_) => rigid(quote!(momenta)).expect("a rigid tree"),
-        _ => quote!(#p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)),
-    };
-    let closed_form = matches!(equations, Equations::ClosedForm(_));
-    let equations_of_motion = match equations {
-        Equations::ClosedForm(_) => quote!(self.__lagrange_closed_form::<S>(q, v)),
-        Equations::Tree(w, b) => {
-            let (w, b) = (lit(w), lit(b));
-            quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
-        }
-        Equations::Rigid(b) => {
-            let b = lit(b);
-            quote!(#p::tree::rigid::equations_of_motion::<Self, S, #n, #k, #b>(self, &self.__lagrange_rigid_constants(), t, q, v))
-        }
-        Equations::Dense => {
-            quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v))
-        }
-    };
-    let overrides = constrained.map(|c| constrained_overrides(n.clone(), k.clone(), lit(c)));
-    // A tree's q̈ by the articulated-body recursion where each coordinate moves one body.
-    let tree_accelerations = match (&equations, constrained) {
-        (Equations::Tree(w, b), None) => {
-            let (w, b) = (lit(*w), lit(*b));
-            Some(quote! {
-                #[inline]
-                fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-                    #p::tree::accelerations::<Self, S, #n, #k, #w, #b>(self, t, q, v)
-                }
-            })
-        }
-        // The constants computed for the call: a validated handle prepares them once.
-        (Equations::Rigid(_), None) => Some(quote! {
-            #[inline]
-            fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-                self.__lagrange_rigid_accelerations(&self.__lagrange_rigid_constants(), t, q, v)
-            }
-            #[inline]
-            fn inverse_dynamics_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n], qdd: &[S; #n]) -> [S; #n] {
-                self.__lagrange_rigid_inverse_dynamics(&self.__lagrange_rigid_constants(), t, q, v, qdd)
-            }
-        }),
-        _ => None,
-    };
-    let validate_constraints = constrained.map(|c| {
-        let c = lit(c);
-        quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
-    });
-    // Declared, so integrators decide from the declaration which constraint forces act.
-    let counts = match constrained {
-        Some(c) => {
-            let c = lit(c);
-            quote!(#p::lagrange_core::constraints::ConstraintCounts::of(
-                &<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::KINDS
-            ))
-        }
-        None => quote!(#p::lagrange_core::constraints::ConstraintCounts::NONE),
-    };
-    quote! {
-        #prepare
-        impl #p::Dynamics<#n> for #params {
-            type Coords = Coords;
-            const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
-                #p::core::option::Option::Some(#counts);
-            const SCLERONOMIC: bool = #scleronomic;
-            const CLOSED_FORM: bool = #closed_form;
-            #[inline]
-            fn check_parameters(&self) -> #p::Result<()> {
-                <Self as #p::Model<#n, #k>>::validate(self)?;
-                #validate_constraints
-                #p::core::result::Result::Ok(())
-            }
-            #overrides
-            #tree_accelerations
-            #[inline(always)]
-            fn equations_of_motion_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
-                #equations_of_motion
-            }
-            #[inline]
-            fn kinetic_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> S {
-                #kinetic
-            }
-            #[inline]
-            fn potential_energy_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> S {
-                #p::dynamics::potential_energy::<Self, S, #n, #k>(self, t, q)
-            }
-            #[inline]
-            fn momenta_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
-                #momenta
-            }
-            #[inline]
-            fn lagrangian_time_derivative_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
-                #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
-            }
-            #canonical
-            #prepared_accelerations
-        }
-    }
+/// What the `Dynamics` impl of a declaration is generated from.
+pub(super) struct Glue<'a> {
+    /// The parameter struct: the mechanism's type.
+    pub(super) params: &'a Ident,
+    /// Degrees of freedom N and Cartesian rows K.
+    pub(super) n: usize,
+    pub(super) k: usize,
+    /// The number of constraint rows C, when there are any.
+    pub(super) constrained: Option<usize>,
+    pub(super) equations: Equations,
+    pub(super) rheonomic: bool,
+    pub(super) positions: Positions,
 }
 
 /// What a validated handle prepares.
@@ -302,55 +64,445 @@ enum Prepared {
     Nothing,
 }
 
-/// The `Prepare` impl (see [`Prepared`]).
-fn prepare_impl(
-    params: &Ident,
-    n: &proc_macro2::Literal,
-    k: &proc_macro2::Literal,
-    prepared: Prepared,
-) -> TokenStream {
+impl Glue<'_> {
+    fn prepared(&self) -> Prepared {
+        match (self.positions, &self.equations) {
+            (Positions::Affine { straight_line }, _) => Prepared::Affine { straight_line },
+            (_, Equations::ClosedForm(count)) => Prepared::Coefficients(*count),
+            (_, Equations::Rigid(b)) => Prepared::Rigid(*b),
+            _ => Prepared::Nothing,
+        }
+    }
+
+    fn closed_form(&self) -> bool {
+        matches!(self.equations, Equations::ClosedForm(_))
+    }
+
+    fn sizes(&self) -> (Literal, Literal) {
+        (lit(self.n), lit(self.k))
+    }
+}
+
+/// The `Prepare` and `Dynamics` impls, forwarding to `lagrange_core`.
+pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let p = private();
-    if let Prepared::Coefficients(count) = prepared {
-        let count = lit(count);
-        return quote! {
-            impl #p::Prepare for #params {
-                type Prepared = [f64; #count];
-                #[inline]
-                fn prepare(&self) -> #p::Result<Self::Prepared> {
-                    #p::core::result::Result::Ok(self.__lagrange_coefficients())
-                }
+    let (params, (n, k)) = (glue.params, glue.sizes());
+    let prepare = prepare_impl(params, &n, &k, glue.prepared());
+    let scleronomic = !glue.rheonomic;
+    let closed_form = glue.closed_form();
+    let (counts, contacts) = declared_rows(glue);
+    let validate_constraints = glue.constrained.map(|c| {
+        let c = lit(c);
+        quote!(<Self as #p::lagrange_core::constraints::Constraints<#n, #k, #c>>::validate_constraints(self)?;)
+    });
+    let equations_of_motion = equations_of_motion(glue);
+    let accelerations = accelerations(glue);
+    let regular = regular_accelerations(glue);
+    let canonical = canonical_field(glue);
+    let (kinetic, inverse_dynamics) = (kinetic_energy(glue), inverse_dynamics(glue));
+    let mass_matrix = mass_matrix(glue);
+    let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
+    quote! {
+        #prepare
+        impl #p::Dynamics<#n> for #params {
+            type Coords = Coords;
+            type Contacts = #contacts;
+            const CONSTRAINT_COUNTS: #p::core::option::Option<#p::lagrange_core::constraints::ConstraintCounts> =
+                #p::core::option::Option::Some(#counts);
+            const SCLERONOMIC: bool = #scleronomic;
+            const CLOSED_FORM: bool = #closed_form;
+            #[inline]
+            fn check_parameters(&self) -> #p::Result<()> {
+                <Self as #p::Model<#n, #k>>::validate(self)?;
+                #validate_constraints
+                #p::core::result::Result::Ok(())
             }
-        };
-    }
-    if let Prepared::Rigid(b) = prepared {
-        let b = lit(b);
-        return quote! {
-            impl #p::Prepare for #params {
-                type Prepared = #p::tree::rigid::RigidConstants<#b>;
-                #[inline]
-                fn prepare(&self) -> #p::Result<Self::Prepared> {
-                    #p::core::result::Result::Ok(self.__lagrange_rigid_constants())
-                }
+            #equations_of_motion
+            #mass_matrix
+            #accelerations
+            #regular
+            #inverse_dynamics
+            #kinetic
+            #[inline]
+            fn potential_energy_at<S: #p::Scalar>(&self, _prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n]) -> S {
+                #p::dynamics::potential_energy::<Self, S, #n, #k>(self, t, q)
             }
-        };
+            #[inline]
+            fn lagrangian_time_derivative_at(&self, _prepared: #p::core::option::Option<&Self::Prepared>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> f64 {
+                #p::dynamics::lagrangian_time_derivative::<Self, #n, #k>(self, t, q, v)
+            }
+            #canonical
+            #constraint_hooks
+        }
     }
-    if let Prepared::Affine { straight_line } = prepared {
-        let one_branch = straight_line.then(|| {
-            quote!(
-                const PREPARED_IN_ONE_BRANCH: bool = true;
+}
+
+/// The declaration's constraint rows by kind, and its contact modes: `ContactState` over its rows
+/// when it has any (the loops hold a mode only where unilateral or friction rows switch it),
+/// `NoContacts` otherwise. Declared, so integrators decide from the declaration which constraint
+/// forces act.
+fn declared_rows(glue: &Glue) -> (TokenStream, TokenStream) {
+    let p = private();
+    let (n, k) = glue.sizes();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    match glue.constrained {
+        Some(c) => {
+            let c = lit(c);
+            let counts = quote!(#constraints::ConstraintCounts::of(
+                &<Self as #constraints::Constraints<#n, #k, #c>>::KINDS
+            ));
+            (counts, quote!(#constraints::ContactState<#k, #c>))
+        }
+        None => (
+            quote!(#constraints::ConstraintCounts::NONE),
+            quote!(#constraints::NoContacts),
+        ),
+    }
+}
+
+/// `equations_of_motion_at`: M, 𝓕 and b as the macro decided to form them (the prepared constants
+/// are not used: the closed form's plain call computes its coefficients where it needs them).
+fn equations_of_motion(glue: &Glue) -> TokenStream {
+    let p = private();
+    let (n, k) = glue.sizes();
+    let body = match glue.equations {
+        Equations::ClosedForm(_) => quote!(self.__lagrange_closed_form::<S>(q, v)),
+        Equations::Tree(w, b) => {
+            let (w, b) = (lit(w), lit(b));
+            quote!(#p::tree::equations_of_motion::<Self, S, #n, #k, #w, #b>(self, t, q, v))
+        }
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            with_rigid_constants(
+                quote!(#p::tree::rigid::equations_of_motion::<Self, S, #n, #k, #b>(self, __k, t, q, v)),
             )
-        });
+        }
+        Equations::Dense => {
+            quote!(#p::dynamics::equations_of_motion::<Self, S, #n, #k>(self, t, q, v))
+        }
+    };
+    let prepared = prepared_argument(glue);
+    quote! {
+        #[inline(always)]
+        fn equations_of_motion_at<S: #p::Scalar>(&self, #prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::dynamics::EquationsOfMotion<S, #n> {
+            #body
+        }
+    }
+}
+
+/// The name of the constants' argument of a method that evaluates the equations: used by a rigid
+/// tree (its joint frames and inertias), not by the other forms.
+fn prepared_argument(glue: &Glue) -> TokenStream {
+    match glue.equations {
+        Equations::Rigid(_) => quote!(prepared),
+        _ => quote!(_prepared),
+    }
+}
+
+/// `call`, with `__k` the rigid tree's constants: the handle's, or computed for the call on the
+/// plain mechanism.
+fn with_rigid_constants(call: TokenStream) -> TokenStream {
+    let p = private();
+    quote!({
+        let __owned;
+        let __k = match prepared {
+            #p::core::option::Option::Some(__k) => __k,
+            #p::core::option::Option::None => {
+                __owned = self.__lagrange_rigid_constants();
+                &__owned
+            }
+        };
+        #call
+    })
+}
+
+/// `kinetic_energy_at`: T by the rigid tree's recursion, or by the dual-number pass.
+fn kinetic_energy(glue: &Glue) -> TokenStream {
+    let p = private();
+    let (n, k) = glue.sizes();
+    let body = match glue.equations {
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            with_rigid_constants(
+                quote!(#p::tree::rigid::kinetic_energy::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, __k, q, v)),
+            )
+        }
+        _ => quote!(#p::dynamics::kinetic_energy::<Self, S, #n, #k>(self, t, q, v)),
+    };
+    let prepared = prepared_argument(glue);
+    quote! {
+        #[inline]
+        fn kinetic_energy_at<S: #p::Scalar>(&self, #prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> S {
+            #body
+        }
+    }
+}
+
+/// `mass_matrix_at` of a rigid tree: the composite-rigid-body algorithm alone (the default, from
+/// the equations of motion, otherwise).
+fn mass_matrix(glue: &Glue) -> Option<TokenStream> {
+    let p = private();
+    let n = lit(glue.n);
+    let Equations::Rigid(b) = glue.equations else {
+        return None;
+    };
+    let b = lit(b);
+    let body = with_rigid_constants(quote!(
+        #p::tree::rigid::mass_matrix::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, __k, q)
+    ));
+    Some(quote! {
+        #[inline]
+        fn mass_matrix_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, _t: S, q: &[S; #n]) -> #p::nalgebra::SMatrix<S, #n, #n> {
+            #body
+        }
+    })
+}
+
+/// `inverse_dynamics_at` of a rigid tree: the recursive Newton–Euler algorithm (the default, from
+/// the equations of motion, otherwise).
+fn inverse_dynamics(glue: &Glue) -> Option<TokenStream> {
+    let p = private();
+    let n = lit(glue.n);
+    let Equations::Rigid(_) = glue.equations else {
+        return None;
+    };
+    let body = with_rigid_constants(quote!(
+        self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+    ));
+    Some(quote! {
+        #[inline]
+        fn inverse_dynamics_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n], a: &[S; #n]) -> [S; #n] {
+            #body
+        }
+    })
+}
+
+/// `accelerations_at`: without the constants, the constrained solve, a tree's articulated-body
+/// recursion where each coordinate moves one body, or the default (M q̈ = 𝓕 − b solved); with
+/// them, an affine mechanism's prepared J and factors of M, or the closed form's prepared
+/// coefficients. Nothing is generated where both are the default.
+fn accelerations(glue: &Glue) -> Option<TokenStream> {
+    let p = private();
+    let (n, k) = glue.sizes();
+    let constraints = quote!(#p::lagrange_core::constraints);
+    let plain = match (&glue.equations, glue.constrained) {
+        (_, Some(c)) => {
+            let c = lit(c);
+            Some(quote!(#constraints::accelerations::<Self, S, #n, #k, #c>(self, t, q, v)))
+        }
+        (Equations::Tree(w, b), None) => {
+            let (w, b) = (lit(*w), lit(*b));
+            Some(quote!(#p::tree::accelerations::<Self, S, #n, #k, #w, #b>(self, t, q, v)))
+        }
+        // The constants computed for the call: a validated handle prepares them once.
+        (Equations::Rigid(_), None) => Some(quote!(self.__lagrange_rigid_accelerations(
+            &self.__lagrange_rigid_constants(),
+            t,
+            q,
+            v
+        ))),
+        _ => None,
+    };
+    let with_constants = match (glue.prepared(), glue.constrained) {
+        (Prepared::Affine { .. }, Some(c)) => {
+            let c = lit(c);
+            Some(
+                quote!(#constraints::accelerations_prepared::<Self, S, #n, #k, #c>(self, prepared, t, q, v)),
+            )
+        }
+        (Prepared::Affine { .. }, None) => Some(
+            quote!(#p::lagrange_core::affine::accelerations::<Self, S, #n, #k>(self, prepared, t, q, v)),
+        ),
+        (Prepared::Coefficients(_), _) => Some(quote!({
+            let eom = self.__lagrange_closed_form_with::<S>(#p::core::option::Option::Some(prepared), q, v);
+            #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
+        })),
+        (Prepared::Rigid(_), None) => Some(quote!(
+            self.__lagrange_rigid_accelerations(prepared, t, q, v)
+        )),
+        (Prepared::Rigid(_), Some(_)) | (Prepared::Nothing, _) => None,
+    };
+    if plain.is_none() && with_constants.is_none() {
+        return None;
+    }
+    // The default: M q̈ = 𝓕 − b from the equations of motion.
+    let plain = plain.unwrap_or_else(|| {
+        quote!({
+            let eom = <Self as #p::Dynamics<#n>>::equations_of_motion_at(self, #p::core::option::Option::None, t, q, v);
+            #p::dynamics::solve_accelerations::<Coords, S, #n>(&eom, t, q)
+        })
+    });
+    let with_constants = with_constants.unwrap_or_else(|| plain.clone());
+    Some(quote! {
+        #[inline]
+        fn accelerations_at<S: #p::Scalar>(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+            match prepared {
+                #p::core::option::Option::Some(prepared) => #with_constants,
+                #p::core::option::Option::None => #plain,
+            }
+        }
+    })
+}
+
+/// `regular_accelerations_at`, every check of a call in one branch where q̈ is straight-line code:
+/// the closed form (its parameters' test joining the branch on the plain mechanism; checked once
+/// through a handle), and through a handle an affine mechanism whose prepared q̈ runs no user code.
+fn regular_accelerations(glue: &Glue) -> Option<TokenStream> {
+    let p = private();
+    let (n, k) = glue.sizes();
+    let none = quote!(#p::core::option::Option::None);
+    let plain = glue.closed_form().then(|| {
+        quote!({
+            let eom = self.__lagrange_closed_form::<f64>(q, v);
+            let parameters_pass = <Self as #p::Model<#n, #k>>::parameters_pass(self);
+            #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, parameters_pass)
+        })
+    });
+    let with_constants = match (glue.prepared(), glue.constrained) {
+        (
+            Prepared::Affine {
+                straight_line: true,
+            },
+            Some(c),
+        ) => {
+            let c = lit(c);
+            Some(
+                quote!(#p::lagrange_core::constraints::regular_accelerations_prepared::<Self, #n, #k, #c>(self, prepared, t, q, v)),
+            )
+        }
+        (
+            Prepared::Affine {
+                straight_line: true,
+            },
+            None,
+        ) => Some(
+            quote!(#p::lagrange_core::affine::regular_accelerations::<Self, #n, #k>(self, prepared, t, q, v)),
+        ),
+        // Affine positions whose q̈ runs user code: the checked path, one check at a time.
+        (Prepared::Affine { .. }, _) => plain.as_ref().map(|_| quote!(#none)),
+        (Prepared::Coefficients(_), _) => Some(quote!({
+            let eom = self.__lagrange_closed_form_with::<f64>(#p::core::option::Option::Some(prepared), q, v);
+            #p::dynamics::regular_accelerations::<#n>(&eom, t, q, v, true)
+        })),
+        (Prepared::Rigid(_), _) | (Prepared::Nothing, _) => None,
+    };
+    if plain.is_none() && with_constants.is_none() {
+        return None;
+    }
+    let plain = plain.unwrap_or_else(|| none.clone());
+    let with_constants = with_constants.unwrap_or_else(|| plain.clone());
+    Some(quote! {
+        #[inline(always)]
+        fn regular_accelerations_at(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::core::option::Option<[f64; #n]> {
+            match prepared {
+                #p::core::option::Option::Some(prepared) => #with_constants,
+                #p::core::option::Option::None => #plain,
+            }
+        }
+    })
+}
+
+/// `momenta_at` and `canonical_field_at`: in closed form (with the prepared coefficients through a
+/// handle), otherwise a scleronomic mechanism's from one hyper-dual pass, else the defaults.
+fn canonical_field(glue: &Glue) -> TokenStream {
+    let p = private();
+    let (n, k) = glue.sizes();
+    let prepared_type = quote!(#p::core::option::Option<&Self::Prepared>);
+    let none = quote!(#p::core::option::Option::None);
+    let prepared_argument = prepared_argument(glue);
+    let momenta = match glue.equations {
+        Equations::ClosedForm(_) => {
+            quote!(self.__lagrange_canonical_field_with::<S>(#none, q, v).0)
+        }
+        Equations::Rigid(b) => {
+            let b = lit(b);
+            with_rigid_constants(
+                quote!(#p::tree::rigid::momenta::<S, #n, #b>(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, __k, q, v)),
+            )
+        }
+        _ => quote!(#p::dynamics::momenta::<Self, S, #n, #k>(self, t, q, v)),
+    };
+    let field = match (&glue.equations, glue.prepared()) {
+        (Equations::ClosedForm(_), Prepared::Coefficients(_)) => Some(quote!(
+            self.__lagrange_canonical_field_with::<S>(prepared, q, v)
+        )),
+        (Equations::ClosedForm(_), _) => Some(quote!({
+            let _ = prepared;
+            self.__lagrange_canonical_field_with::<S>(#none, q, v)
+        })),
+        _ => (!glue.rheonomic).then(|| {
+            quote!({
+                let _ = prepared;
+                #p::dynamics::canonical_field::<Self, S, #n, #k>(self, t, q, v)
+            })
+        }),
+    };
+    let inline = match glue.equations {
+        Equations::ClosedForm(_) => quote!(#[inline(always)]),
+        _ => quote!(#[inline]),
+    };
+    let field = field.map(|body| {
         quote! {
-            impl #p::Prepare for #params {
-                type Prepared = #p::lagrange_core::affine::AffineConstants<#n, #k>;
-                #one_branch
-                fn prepare(&self) -> #p::Result<Self::Prepared> {
-                    #p::lagrange_core::affine::AffineConstants::of::<Self>(self)
+            #inline
+            fn canonical_field_at<S: #p::Scalar>(&self, prepared: #prepared_type, t: S, q: &[S; #n], v: &[S; #n]) -> ([S; #n], [S; #n]) {
+                #body
+            }
+        }
+    });
+    quote! {
+        #[inline]
+        fn momenta_at<S: #p::Scalar>(&self, #prepared_argument: #prepared_type, t: S, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
+            #momenta
+        }
+        #field
+    }
+}
+
+/// The `Prepare` impl (see [`Prepared`]).
+fn prepare_impl(params: &Ident, n: &Literal, k: &Literal, prepared: Prepared) -> TokenStream {
+    let p = private();
+    match prepared {
+        Prepared::Coefficients(count) => {
+            let count = lit(count);
+            quote! {
+                impl #p::Prepare for #params {
+                    type Prepared = [f64; #count];
+                    #[inline]
+                    fn prepare(&self) -> #p::Result<Self::Prepared> {
+                        #p::core::result::Result::Ok(self.__lagrange_coefficients())
+                    }
                 }
             }
         }
-    } else {
-        quote! {
+        Prepared::Affine { straight_line } => {
+            let one_branch = straight_line.then(|| {
+                quote!(
+                    const PREPARED_IN_ONE_BRANCH: bool = true;
+                )
+            });
+            quote! {
+                impl #p::Prepare for #params {
+                    type Prepared = #p::lagrange_core::affine::AffineConstants<#n, #k>;
+                    #one_branch
+                    fn prepare(&self) -> #p::Result<Self::Prepared> {
+                        #p::lagrange_core::affine::AffineConstants::of::<Self>(self)
+                    }
+                }
+            }
+        }
+        Prepared::Rigid(b) => {
+            let b = lit(b);
+            quote! {
+                impl #p::Prepare for #params {
+                    type Prepared = #p::tree::rigid::RigidConstants<#b>;
+                    #[inline]
+                    fn prepare(&self) -> #p::Result<Self::Prepared> {
+                        #p::core::result::Result::Ok(self.__lagrange_rigid_constants())
+                    }
+                }
+            }
+        }
+        Prepared::Nothing => quote! {
             impl #p::Prepare for #params {
                 type Prepared = ();
                 #[inline(always)]
@@ -358,30 +510,42 @@ fn prepare_impl(
                     #p::core::result::Result::Ok(())
                 }
             }
-        }
+        },
     }
 }
 
-/// The `Mechanism` hooks that make every integrator enforce the constraints.
-fn constrained_overrides(
-    n: proc_macro2::Literal,
-    k: proc_macro2::Literal,
-    c: proc_macro2::Literal,
-) -> TokenStream {
+/// The hooks of a constrained mechanism that make every integrator enforce its constraints: the
+/// rows' values, the projection after a step (from an affine mechanism's prepared constants
+/// through a handle), the checks of the declaration and of a state.
+fn constraint_hooks(glue: &Glue, c: Literal) -> TokenStream {
     let p = private();
+    let (n, k) = glue.sizes();
     let constraints = quote!(#p::lagrange_core::constraints);
+    let plain_projection = quote!({
+        let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;
+        #constraints::project::<Self, #n, #k, #c>(self, t, q, v, &mode)
+    });
+    let projection = match glue.prepared() {
+        Prepared::Affine { .. } => quote! {
+            match prepared {
+                #p::core::option::Option::Some(prepared) => {
+                    #constraints::project_prepared::<Self, #n, #k, #c>(self, prepared, t, q, v)
+                }
+                #p::core::option::Option::None => #plain_projection,
+            }
+        },
+        _ => quote!({
+            let _ = prepared;
+            #plain_projection
+        }),
+    };
     quote! {
-        #[inline]
-        fn accelerations_at<S: #p::Scalar>(&self, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-            #constraints::accelerations::<Self, S, #n, #k, #c>(self, t, q, v)
-        }
         #[inline]
         fn holonomic_constraints_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> #p::core::option::Option<[S; #n]> {
             #p::core::option::Option::Some(#constraints::holonomic_values::<Self, S, #n, #k, #c>(self, t, q))
         }
-        fn project(&self, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
-            let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;
-            #constraints::project::<Self, #n, #k, #c>(self, t, q, v, &mode)
+        fn project(&self, prepared: #p::core::option::Option<&Self::Prepared>, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
+            #projection
         }
         // Inlined (the mechanism is often declared in another crate than the caller): without
         // velocity rows the check is a constant `Ok`.
@@ -391,43 +555,6 @@ fn constrained_overrides(
         }
         fn check_constraints(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
             #constraints::check_consistent::<Self, #n, #k, #c>(self, t, q, v, #constraints::CONSISTENCY_TOLERANCE)
-        }
-        fn step_contacts<__I: #p::lagrange_core::integrate::Integrator>(
-            &self,
-            state: &mut #p::State<Coords>,
-            h: f64,
-        ) -> #p::core::option::Option<#p::Result<()>> {
-            #constraints::step_declared_contacts::<__I, Self, #n, #k, #c>(self, state, h)
-        }
-        fn integrate_contacts<__P, __O>(
-            &self,
-            method: __P,
-            state: &mut #p::State<Coords>,
-            t_end: f64,
-            events: &mut [#p::lagrange_core::integrate::Event<'_, Coords>],
-            observer: __O,
-        ) -> #p::core::option::Option<#p::Result<#p::lagrange_core::integrate::Outcome<Coords>>>
-        where
-            __P: #p::lagrange_core::integrate::EmbeddedPair,
-            __O: #p::core::ops::FnMut(#p::lagrange_core::integrate::Observation<'_, Coords, #n>),
-        {
-            #constraints::integrate_declared_contacts::<__P, Self, #n, #k, #c>(method, self, state, t_end, events, observer)
-        }
-    }
-}
-
-/// Through a validated handle, a rigid tree's q̈ and inverse dynamics from the constants it
-/// prepared.
-fn rigid_prepared_calls(n: proc_macro2::Literal) -> TokenStream {
-    let p = private();
-    quote! {
-        #[inline]
-        fn accelerations_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
-            self.__lagrange_rigid_accelerations(prepared, t, q, v)
-        }
-        #[inline]
-        fn inverse_dynamics_prepared_at<S: #p::Scalar>(&self, prepared: &Self::Prepared, t: S, q: &[S; #n], v: &[S; #n], qdd: &[S; #n]) -> [S; #n] {
-            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
         }
     }
 }

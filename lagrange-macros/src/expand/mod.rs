@@ -36,7 +36,7 @@ use constraints::constraints_impl;
 use coords::coords_items;
 use declaration::declaration_impl;
 use drawable::drawable_impl;
-use mechanism::{mechanism_impl, Equations, Positions};
+use mechanism::{mechanism_impl, Equations, Glue, Positions};
 use model::{gradient_on_trees, model_impl};
 use parametrized::parametrized_items;
 
@@ -162,9 +162,44 @@ fn generate(model: &Model) -> TokenStream {
         },
         false => Positions::General,
     };
-    // The equations in closed form where the positions are read (for affine positions too: the
-    // plain mechanism's call, which prepares nothing), otherwise a tree of translations from each
-    // body's own seeds, or the dense pass.
+    let (equations, equations_items) = equations_items(model, affine);
+    let mechanism_impl = mechanism_impl(&Glue {
+        params: model.params_ident,
+        n: model.dof(),
+        k: model.rows,
+        constrained,
+        equations,
+        rheonomic: model.rheonomic,
+        positions,
+    });
+    let constraints_impl = constrained.map(|_| constraints_impl(model));
+    let declaration_impl = declaration_impl(model);
+    let drawable_impl = drawable_impl(model);
+    let parametrized = parametrized_items(model);
+    quote! {
+        #(#attrs)*
+        #vis mod #ident {
+            #(#other_items)*
+            #params_struct
+            #coords
+            #bodies
+            #inherent
+            #model_impl
+            #equations_items
+            #mechanism_impl
+            #constraints_impl
+            #declaration_impl
+            #drawable_impl
+            #parametrized
+        }
+    }
+}
+
+/// How the equations of motion are formed, and the items that way needs: in closed form where
+/// the positions are read (for affine positions too: the plain mechanism's call, which prepares
+/// nothing), otherwise the articulated recursion of a rigid tree, a tree of translations from
+/// each body's own seeds, or the dense pass.
+fn equations_items(model: &Model, affine: bool) -> (Equations, TokenStream) {
     let tree = crate::structure::tree(model);
     // Positions affine in the coordinates need no recursion: M is a constant.
     let rigid = match affine {
@@ -189,38 +224,10 @@ fn generate(model: &Model) -> TokenStream {
         (None, None, None) => Equations::Dense,
     };
     let closed_form_impl = closed_form_impl.map(|(tokens, _)| tokens);
-    let mechanism_impl = mechanism_impl(
-        model.params_ident,
-        model.dof(),
-        model.rows,
-        constrained,
+    (
         equations,
-        model.rheonomic,
-        positions,
-    );
-    let constraints_impl = constrained.map(|_| constraints_impl(model));
-    let declaration_impl = declaration_impl(model);
-    let drawable_impl = drawable_impl(model);
-    let parametrized = parametrized_items(model);
-    quote! {
-        #(#attrs)*
-        #vis mod #ident {
-            #(#other_items)*
-            #params_struct
-            #coords
-            #bodies
-            #inherent
-            #model_impl
-            #tree_items
-            #rigid_items
-            #closed_form_impl
-            #mechanism_impl
-            #constraints_impl
-            #declaration_impl
-            #drawable_impl
-            #parametrized
-        }
-    }
+        quote!(#tree_items #rigid_items #closed_form_impl),
+    )
 }
 
 /// `let [theta1, theta2] = *__q;` (names with `suffix`), or for array coordinates

@@ -83,110 +83,29 @@ impl Gradients {
         parts: &[&PartGradient],
         scaled: bool,
     ) -> (TokenStream, Option<TokenStream>) {
-        let (p, s) = (crate::expand::private(), quote!(__S));
         let (row_deps, _) = crate::components::dependencies(model);
-        let n = model.dof();
-        let row_deps = &row_deps;
-        let row_slots = |r: usize| (0..n).filter(move |&j| row_deps[r][j]);
-        let terms = || parts.iter().flat_map(|part| &part.0);
-        // How many derivatives add to each slot, and how many slots each derivative adds to.
-        let (mut per_slot, mut per_node) = (vec![0usize; n], HashMap::<Id, usize>::new());
-        for &(variable, d, _) in terms() {
-            let d = self.graph.negation_of(d).unwrap_or(d);
-            match variable {
-                Variable::Coordinate(j) => {
-                    per_slot[j] += 1;
-                    *per_node.entry(d).or_default() += 1;
-                }
-                Variable::Row(r) => {
-                    for j in row_slots(r) {
-                        per_slot[j] += 1;
-                        *per_node.entry(d).or_default() += 1;
-                    }
-                }
-                Variable::Time => {}
-            }
-        }
-        let alone = |j: usize, d: Id| {
-            per_slot[j] == 1 && per_node[&self.graph.negation_of(d).unwrap_or(d)] == 1
+        let terms: Vec<&Term> = parts.iter().flat_map(|part| &part.0).collect();
+        let folded = match scaled {
+            true => self.folded_slots(&row_deps, &terms, model.dof()),
+            false => vec![false; model.dof()],
         };
-        let folded: Vec<bool> = (0..n)
-            .map(|j| {
-                scaled
-                    && terms().any(|&(variable, d, _)| match variable {
-                        Variable::Coordinate(k) => k == j && alone(j, d),
-                        Variable::Row(r) => row_deps[r][j] && alone(j, d),
-                        Variable::Time => false,
-                    })
-            })
-            .collect();
-        let pick = |&(variable, d, scaled): &(Variable, Id, Id)| match variable {
+        let pick = |&(variable, d, scaled): &Term| match variable {
             Variable::Coordinate(j) if folded[j] => scaled,
             _ => d,
         };
-        let outputs: Vec<Id> = terms().map(pick).collect();
+        let outputs: Vec<Id> = terms.iter().map(|&term| pick(term)).collect();
         let mut prepared = match scaled {
             true => self.graph.coefficients(&outputs),
             false => Vec::new(),
         };
         prepared.truncate(COEFFICIENTS);
-        let lets = self.graph.emit_prepared(&outputs, &s, &prepared);
+        let lets = self.graph.emit_prepared(&outputs, &quote!(__S), &prepared);
         let params: Vec<_> = model.params.iter().map(|p| &p.ident).collect();
-        let coefficients = scaled.then(|| {
-            let f64 = quote!(f64);
-            let lets = self.graph.emit(&prepared, &f64);
-            let values = prepared.iter().enumerate().map(|(i, &c)| {
-                let i = Literal::usize_unsuffixed(i);
-                let value = match self.graph.negation_of(c) {
-                    Some(a) => {
-                        let a = self.graph.scalar(a, &f64);
-                        quote!(-#a)
-                    }
-                    None => self.graph.scalar(c, &f64),
-                };
-                quote!(__coefficients[#i] = #value;)
-            });
-            quote! {
-                #( let #params: f64 = self.#params; )*
-                #lets
-                #(#values)*
-            }
-        });
-        let adds = terms().map(|term| {
-            let (variable, d) = (term.0, pick(term));
-            // g −= a for a derivative −a.
-            let (op, d) = match self.graph.negation_of(d) {
-                Some(a) => (quote!(-=), a),
-                None => (quote!(+=), d),
-            };
-            let d = self.graph.scalar(d, &s);
-            match variable {
-                Variable::Coordinate(j) => {
-                    let j = Literal::usize_unsuffixed(j);
-                    quote!(__gradient[#j] #op #d;)
-                }
-                // Left out above: the gradient is by q.
-                Variable::Time => quote!(),
-                Variable::Row(r) => {
-                    let adds = row_slots(r).map(|j| {
-                        let slot = Literal::usize_unsuffixed(j);
-                        // sⱼ joins the row's constant entry, off the path from the state.
-                        match folded[j] {
-                            true => quote!(__gradient[#slot] #op __dv * (__row[#slot] * __scale[#slot]);),
-                            false => quote!(__gradient[#slot] #op __dv * __row[#slot];),
-                        }
-                    });
-                    let r = Literal::usize_unsuffixed(r);
-                    quote! {
-                        if let #p::core::option::Option::Some(__row) = &__rows[#r] {
-                            let __dv: __S = #d;
-                            #(#adds)*
-                        }
-                    }
-                }
-            }
-        });
-        let sums_scaled = (0..n).filter(|&j| scaled && !folded[j]).map(|j| {
+        let coefficients = scaled.then(|| self.coefficients(&params, &prepared));
+        let adds = terms
+            .iter()
+            .map(|&term| self.add(term.0, pick(term), &row_deps, &folded));
+        let sums_scaled = (0..model.dof()).filter(|&j| scaled && !folded[j]).map(|j| {
             let j = Literal::usize_unsuffixed(j);
             quote!(__gradient[#j] *= __scale[#j];)
         });
@@ -200,4 +119,112 @@ impl Gradients {
         };
         (gradient, coefficients)
     }
+
+    /// Which slots take their scale among one derivative's constant factors: those one
+    /// derivative alone adds to, that derivative adding to no other slot (a derivative and its
+    /// negation counted as one).
+    fn folded_slots(&self, row_deps: &[Vec<bool>], terms: &[&Term], n: usize) -> Vec<bool> {
+        let node = |d: Id| self.graph.negation_of(d).unwrap_or(d);
+        // How many derivatives add to each slot, and how many slots each derivative adds to.
+        let (mut per_slot, mut per_node) = (vec![0usize; n], HashMap::<Id, usize>::new());
+        for &&(variable, d, _) in terms {
+            for j in slots(variable, row_deps) {
+                per_slot[j] += 1;
+                *per_node.entry(node(d)).or_default() += 1;
+            }
+        }
+        let alone = |j: usize, d: Id| per_slot[j] == 1 && per_node[&node(d)] == 1;
+        (0..n)
+            .map(|j| {
+                terms.iter().any(|&&(variable, d, _)| match variable {
+                    Variable::Coordinate(k) => k == j && alone(j, d),
+                    Variable::Row(r) => row_deps[r][j] && alone(j, d),
+                    Variable::Time => false,
+                })
+            })
+            .collect()
+    }
+
+    /// `__coefficients[i] = cᵢ` in `f64` from the parameters (and `__scale`).
+    fn coefficients(&self, params: &[&syn::Ident], prepared: &[Id]) -> TokenStream {
+        let f64 = quote!(f64);
+        let lets = self.graph.emit(prepared, &f64);
+        let values = prepared.iter().enumerate().map(|(i, &c)| {
+            let i = Literal::usize_unsuffixed(i);
+            let value = match self.graph.negation_of(c) {
+                Some(a) => {
+                    let a = self.graph.scalar(a, &f64);
+                    quote!(-#a)
+                }
+                None => self.graph.scalar(c, &f64),
+            };
+            quote!(__coefficients[#i] = #value;)
+        });
+        quote! {
+            #( let #params: f64 = self.#params; )*
+            #lets
+            #(#values)*
+        }
+    }
+
+    /// One derivative `d` added to `__gradient`: to its coordinate's slot, or (for a row of x)
+    /// times the row of J on the slots the row can depend on, when the caller has the row.
+    fn add(
+        &self,
+        variable: Variable,
+        d: Id,
+        row_deps: &[Vec<bool>],
+        folded: &[bool],
+    ) -> TokenStream {
+        // g −= a for a derivative −a.
+        let (op, d) = match self.graph.negation_of(d) {
+            Some(a) => (quote!(-=), a),
+            None => (quote!(+=), d),
+        };
+        let d = self.graph.scalar(d, &quote!(__S));
+        match variable {
+            Variable::Coordinate(j) => {
+                let j = Literal::usize_unsuffixed(j);
+                quote!(__gradient[#j] #op #d;)
+            }
+            // Left out above: the gradient is by q.
+            Variable::Time => quote!(),
+            Variable::Row(r) => {
+                let adds = slots(variable, row_deps).map(|j| {
+                    let slot = Literal::usize_unsuffixed(j);
+                    // sⱼ joins the row's constant entry, off the path from the state.
+                    match folded[j] {
+                        true => {
+                            quote!(__gradient[#slot] #op __dv * (__row[#slot] * __scale[#slot]);)
+                        }
+                        false => quote!(__gradient[#slot] #op __dv * __row[#slot];),
+                    }
+                });
+                let (p, r) = (crate::expand::private(), Literal::usize_unsuffixed(r));
+                quote! {
+                    if let #p::core::option::Option::Some(__row) = &__rows[#r] {
+                        let __dv: __S = #d;
+                        #(#adds)*
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// One derivative of a part: (variable, ∂V/∂variable, its scaled form), see [`PartGradient`].
+type Term = (Variable, Id, Id);
+
+/// The slots a derivative by `variable` adds to: a coordinate's own, the ones a row can depend on,
+/// none for time.
+fn slots(variable: Variable, row_deps: &[Vec<bool>]) -> impl Iterator<Item = usize> + '_ {
+    let (row, own) = match variable {
+        Variable::Coordinate(j) => (None, Some(j)),
+        Variable::Row(r) => (Some(&row_deps[r]), None),
+        Variable::Time => (None, None),
+    };
+    let in_row = row
+        .into_iter()
+        .flat_map(|deps| (0..deps.len()).filter(move |&j| deps[j]));
+    own.into_iter().chain(in_row)
 }

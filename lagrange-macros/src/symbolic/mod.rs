@@ -38,7 +38,7 @@ pub mod poly;
 pub mod read;
 pub mod read_tree;
 
-use crate::check::{Dim, Model, Shape};
+use crate::check::{Body, Dim, Model, Shape};
 use poly::{Atom, Poly};
 use proc_macro2::TokenStream;
 use read::{Reader, Value};
@@ -59,17 +59,7 @@ pub struct Equations {
 /// The closed-form equations of `model`, or `None` when the declaration is not of the kind read
 /// (see the module docs).
 pub fn equations(model: &Model) -> Option<Equations> {
-    let applies = !model.rheonomic
-        && model.constraints.is_empty()
-        && model.potentials.is_empty()
-        && model.gravities.is_empty()
-        && model.forces.is_empty()
-        && !model.bodies.is_empty()
-        && model
-            .bodies
-            .iter()
-            .all(|b| b.count.is_none() && b.shape != Shape::Spatial);
-    if !applies {
+    if !read_in_closed_form(model) {
         return None;
     }
     let (coords, arrays) = coordinate_slots(model);
@@ -80,7 +70,39 @@ pub fn equations(model: &Model) -> Option<Equations> {
         .map(|(i, p)| (p.ident.to_string(), i))
         .collect();
     let mut reader = Reader::new(coords, arrays, params);
-    // The uniform fields, summed by dimension: constant vectors, their zero components known.
+    let fields = uniform_fields(model, &mut reader)?;
+    let mut rows: Vec<Row> = Vec::new();
+    for body in &model.bodies {
+        let value = reader.block(&body.decl.block)?;
+        let field = &fields[(body.shape.dim() == Dim::Three) as usize];
+        rows.extend(body_rows(&mut reader, body, &value, field)?);
+        reader.define_body(body.decl.ident().to_string(), value);
+    }
+    if !rows.iter().all(|row| free_of_cancellation(&row.x)) {
+        return None;
+    }
+    let equations = assemble(model, &rows, reader.constants)?;
+    (equations.terms() <= MAX_TERMS && equations.has_finite_factors()).then_some(equations)
+}
+
+/// Whether the declaration is of the kind read: scleronomic, no constraint, no potential or force
+/// but uniform fields, single bodies, none spatial.
+fn read_in_closed_form(model: &Model) -> bool {
+    !model.rheonomic
+        && model.constraints.is_empty()
+        && model.potentials.is_empty()
+        && model.gravities.is_empty()
+        && model.forces.is_empty()
+        && !model.bodies.is_empty()
+        && model
+            .bodies
+            .iter()
+            .all(|b| b.count.is_none() && b.shape != Shape::Spatial)
+}
+
+/// The uniform fields, summed by dimension (`[planar, spatial]`): constant vectors, their zero
+/// components known; `None` when one is not a constant vector.
+fn uniform_fields(model: &Model, reader: &mut Reader) -> Option<[Option<Vec<Poly>>; 2]> {
     let mut fields: [Option<Vec<Poly>>; 2] = [None, None];
     for (decl, dim) in &model.uniform_gravities {
         let Value::Vector(g) = reader.block(&decl.block)? else {
@@ -95,49 +117,50 @@ pub fn equations(model: &Model) -> Option<Equations> {
             None => g,
         });
     }
-    let mut rows: Vec<Row> = Vec::new();
-    for body in &model.bodies {
-        let value = reader.block(&body.decl.block)?;
-        // A planar body declared by its frame enters x by its centre of mass.
-        let mass_frame = match &body.decl.args.com {
-            Some(com) => reader.centre_of_mass(&value, com)?,
-            None => value.clone(),
-        };
-        let components = match (&mass_frame, body.shape) {
-            (Value::Vector(v), Shape::Particle(d) | Shape::Point(d))
-                if v.len() == Shape::Particle(d).rows() =>
-            {
-                v.clone()
-            }
-            (Value::Planar(position, angle), Shape::Planar) => {
-                let mut rows = position.clone();
-                rows.push(angle.clone());
-                rows
-            }
-            _ => return None,
-        };
-        let field = &fields[(body.shape.dim() == Dim::Three) as usize];
-        for (k, x) in components.into_iter().enumerate() {
-            let angle = body.shape == Shape::Planar && k == 2;
-            let mass = Atom::Mass(if angle { body.row + k } else { body.row });
-            // wᵣ = μᵣ gₖ on a position row of a massive body.
-            let weight = match field {
-                Some(g) if body.shape.has_mass() && !angle => Some(Poly::atom(mass).mul(&g[k])),
-                _ => None,
-            };
-            rows.push(Row {
-                x,
-                mass: body.shape.has_mass().then_some(mass),
-                weight,
-            });
+    Some(fields)
+}
+
+/// The rows of x of a body whose function reads as `value`, with their masses and, in the
+/// uniform field `field` of the body's dimension, their weights.
+fn body_rows(
+    reader: &mut Reader,
+    body: &Body,
+    value: &Value,
+    field: &Option<Vec<Poly>>,
+) -> Option<Vec<Row>> {
+    // A planar body declared by its frame enters x by its centre of mass.
+    let mass_frame = match &body.decl.args.com {
+        Some(com) => reader.centre_of_mass(value, com)?,
+        None => value.clone(),
+    };
+    let components = match (&mass_frame, body.shape) {
+        (Value::Vector(v), Shape::Particle(d) | Shape::Point(d))
+            if v.len() == Shape::Particle(d).rows() =>
+        {
+            v.clone()
         }
-        reader.define_body(body.decl.ident().to_string(), value);
-    }
-    if !rows.iter().all(|row| free_of_cancellation(&row.x)) {
-        return None;
-    }
-    let equations = assemble(model, &rows, reader.constants)?;
-    (equations.terms() <= MAX_TERMS && equations.has_finite_factors()).then_some(equations)
+        (Value::Planar(position, angle), Shape::Planar) => {
+            let mut rows = position.clone();
+            rows.push(angle.clone());
+            rows
+        }
+        _ => return None,
+    };
+    let rows = components.into_iter().enumerate().map(|(k, x)| {
+        let angle = body.shape == Shape::Planar && k == 2;
+        let mass = Atom::Mass(if angle { body.row + k } else { body.row });
+        // wᵣ = μᵣ gₖ on a position row of a massive body.
+        let weight = match field {
+            Some(g) if body.shape.has_mass() && !angle => Some(Poly::atom(mass).mul(&g[k])),
+            _ => None,
+        };
+        Row {
+            x,
+            mass: body.shape.has_mass().then_some(mass),
+            weight,
+        }
+    });
+    Some(rows.collect())
 }
 
 /// Each coordinate's first slot in q, by name: the scalar coordinates', and the arrays' with their

@@ -1015,6 +1015,7 @@ pub mod legs {
     }
     impl ::lagrange::__private::Dynamics<3> for Legs {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -1027,60 +1028,122 @@ pub mod legs {
             <Self as ::lagrange::__private::Model<3, 36>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
-        fn accelerations_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 3],
-            v: &[S; 3],
-        ) -> ::lagrange::__private::Result<[S; 3]> {
-            self.__lagrange_rigid_accelerations(
-                &self.__lagrange_rigid_constants(),
-                t,
-                q,
-                v,
-            )
-        }
-        #[inline]
-        fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 3],
-            v: &[S; 3],
-            qdd: &[S; 3],
-        ) -> [S; 3] {
-            self.__lagrange_rigid_inverse_dynamics(
-                &self.__lagrange_rigid_constants(),
-                t,
-                q,
-                v,
-                qdd,
-            )
-        }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 3> {
-            ::lagrange::__private::tree::rigid::equations_of_motion::<
-                Self,
-                S,
-                3,
-                36,
-                3,
-            >(self, &self.__lagrange_rigid_constants(), t, q, v)
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::equations_of_motion::<
+                    Self,
+                    S,
+                    3,
+                    36,
+                    3,
+                >(self, __k, t, q, v)
+            }
+        }
+        #[inline]
+        fn mass_matrix_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            _t: S,
+            q: &[S; 3],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 3, 3> {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::mass_matrix::<
+                    S,
+                    3,
+                    3,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        3,
+                        3,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                )
+            }
+        }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> ::lagrange::__private::Result<[S; 3]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    self.__lagrange_rigid_accelerations(prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    self.__lagrange_rigid_accelerations(
+                        &self.__lagrange_rigid_constants(),
+                        t,
+                        q,
+                        v,
+                    )
+                }
+            }
+        }
+        #[inline]
+        fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+            a: &[S; 3],
+        ) -> [S; 3] {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+            }
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> S {
             {
-                let __k = self.__lagrange_rigid_constants();
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
                 ::lagrange::__private::tree::rigid::kinetic_energy::<
                     S,
                     3,
@@ -1090,7 +1153,7 @@ pub mod legs {
                         3,
                         3,
                     >>::JOINTS,
-                    &__k,
+                    __k,
                     q,
                     v,
                 )
@@ -1099,6 +1162,7 @@ pub mod legs {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
         ) -> S {
@@ -1110,32 +1174,9 @@ pub mod legs {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 3],
-            v: &[S; 3],
-        ) -> [S; 3] {
-            {
-                let __k = self.__lagrange_rigid_constants();
-                ::lagrange::__private::tree::rigid::momenta::<
-                    S,
-                    3,
-                    3,
-                >(
-                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
-                        3,
-                        3,
-                    >>::JOINTS,
-                    &__k,
-                    q,
-                    v,
-                )
-            }
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 3],
             v: &[f64; 3],
@@ -1147,39 +1188,54 @@ pub mod legs {
             >(self, t, q, v)
         }
         #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> [S; 3] {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::momenta::<
+                    S,
+                    3,
+                    3,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        3,
+                        3,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                    v,
+                )
+            }
+        }
+        #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> ([S; 3], [S; 3]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                3,
-                36,
-            >(self, t, q, v)
-        }
-        #[inline]
-        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 3],
-            v: &[S; 3],
-        ) -> ::lagrange::__private::Result<[S; 3]> {
-            self.__lagrange_rigid_accelerations(prepared, t, q, v)
-        }
-        #[inline]
-        fn inverse_dynamics_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 3],
-            v: &[S; 3],
-            qdd: &[S; 3],
-        ) -> [S; 3] {
-            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    3,
+                    36,
+                >(self, t, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Legs {

@@ -398,6 +398,7 @@ pub mod chain {
     }
     impl ::lagrange::__private::Dynamics<3> for Chain {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -410,25 +411,10 @@ pub mod chain {
             <Self as ::lagrange::__private::Model<3, 6>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
-        fn accelerations_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 3],
-            v: &[S; 3],
-        ) -> ::lagrange::__private::Result<[S; 3]> {
-            ::lagrange::__private::tree::accelerations::<
-                Self,
-                S,
-                3,
-                6,
-                1,
-                3,
-            >(self, t, q, v)
-        }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
@@ -443,8 +429,40 @@ pub mod chain {
             >(self, t, q, v)
         }
         #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> ::lagrange::__private::Result<[S; 3]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    ::lagrange::__private::tree::accelerations::<
+                        Self,
+                        S,
+                        3,
+                        6,
+                        1,
+                        3,
+                    >(self, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    ::lagrange::__private::tree::accelerations::<
+                        Self,
+                        S,
+                        3,
+                        6,
+                        1,
+                        3,
+                    >(self, t, q, v)
+                }
+            }
+        }
+        #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
@@ -459,6 +477,7 @@ pub mod chain {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
         ) -> S {
@@ -470,17 +489,9 @@ pub mod chain {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 3],
-            v: &[S; 3],
-        ) -> [S; 3] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 3, 6>(self, t, q, v)
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 3],
             v: &[f64; 3],
@@ -492,18 +503,32 @@ pub mod chain {
             >(self, t, q, v)
         }
         #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 3],
+            v: &[S; 3],
+        ) -> [S; 3] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 3, 6>(self, t, q, v)
+        }
+        #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 3],
             v: &[S; 3],
         ) -> ([S; 3], [S; 3]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                3,
-                6,
-            >(self, t, q, v)
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    3,
+                    6,
+                >(self, t, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Chain {

@@ -411,6 +411,7 @@ pub mod double_pendulum {
     }
     impl ::lagrange::__private::Dynamics<2> for DoublePendulum {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -426,6 +427,7 @@ pub mod double_pendulum {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
@@ -433,8 +435,85 @@ pub mod double_pendulum {
             self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    let eom = self
+                        .__lagrange_closed_form_with::<
+                            S,
+                        >(
+                            ::lagrange::__private::core::option::Option::Some(prepared),
+                            q,
+                            v,
+                        );
+                    ::lagrange::__private::dynamics::solve_accelerations::<
+                        Coords,
+                        S,
+                        2,
+                    >(&eom, t, q)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    let eom = <Self as ::lagrange::__private::Dynamics<
+                        2,
+                    >>::equations_of_motion_at(
+                        self,
+                        ::lagrange::__private::core::option::Option::None,
+                        t,
+                        q,
+                        v,
+                    );
+                    ::lagrange::__private::dynamics::solve_accelerations::<
+                        Coords,
+                        S,
+                        2,
+                    >(&eom, t, q)
+                }
+            }
+        }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    let eom = self
+                        .__lagrange_closed_form_with::<
+                            f64,
+                        >(
+                            ::lagrange::__private::core::option::Option::Some(prepared),
+                            q,
+                            v,
+                        );
+                    ::lagrange::__private::dynamics::regular_accelerations::<
+                        2,
+                    >(&eom, t, q, v, true)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    let eom = self.__lagrange_closed_form::<f64>(q, v);
+                    let parameters_pass = <Self as ::lagrange::__private::Model<
+                        2,
+                        4,
+                    >>::parameters_pass(self);
+                    ::lagrange::__private::dynamics::regular_accelerations::<
+                        2,
+                    >(&eom, t, q, v, parameters_pass)
+                }
+            }
+        }
+        #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
@@ -449,6 +528,7 @@ pub mod double_pendulum {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
         ) -> S {
@@ -460,20 +540,9 @@ pub mod double_pendulum {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> [S; 2] {
-            self.__lagrange_canonical_field_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::None, q, v)
-                .0
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
@@ -484,78 +553,28 @@ pub mod double_pendulum {
                 4,
             >(self, t, q, v)
         }
-        #[inline(always)]
-        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
-        ) -> ([S; 2], [S; 2]) {
+        ) -> [S; 2] {
             self.__lagrange_canonical_field_with::<
                     S,
                 >(::lagrange::__private::core::option::Option::None, q, v)
+                .0
         }
         #[inline(always)]
-        fn canonical_field_prepared_at<S: ::lagrange::__private::Scalar>(
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: &Self::Prepared,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            self.__lagrange_canonical_field_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::Some(prepared), q, v)
-        }
-        #[inline]
-        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ::lagrange::__private::Result<[S; 2]> {
-            let eom = self
-                .__lagrange_closed_form_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
-            ::lagrange::__private::dynamics::solve_accelerations::<
-                Coords,
-                S,
-                2,
-            >(&eom, t, q)
-        }
-        #[inline(always)]
-        fn regular_accelerations_at(
-            &self,
-            t: f64,
-            q: &[f64; 2],
-            v: &[f64; 2],
-        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            let eom = self.__lagrange_closed_form::<f64>(q, v);
-            let parameters_pass = <Self as ::lagrange::__private::Model<
-                2,
-                4,
-            >>::parameters_pass(self);
-            ::lagrange::__private::dynamics::regular_accelerations::<
-                2,
-            >(&eom, t, q, v, parameters_pass)
-        }
-        #[inline(always)]
-        fn regular_accelerations_prepared_at(
-            &self,
-            prepared: &Self::Prepared,
-            t: f64,
-            q: &[f64; 2],
-            v: &[f64; 2],
-        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            let eom = self
-                .__lagrange_closed_form_with::<
-                    f64,
-                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
-            ::lagrange::__private::dynamics::regular_accelerations::<
-                2,
-            >(&eom, t, q, v, true)
+            self.__lagrange_canonical_field_with::<S>(prepared, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration

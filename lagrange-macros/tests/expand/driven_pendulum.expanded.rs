@@ -242,6 +242,7 @@ pub mod driven {
     }
     impl ::lagrange::__private::Dynamics<1> for Driven {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -257,6 +258,7 @@ pub mod driven {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -271,6 +273,7 @@ pub mod driven {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -285,6 +288,7 @@ pub mod driven {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
         ) -> S {
@@ -296,17 +300,9 @@ pub mod driven {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 1],
-            v: &[S; 1],
-        ) -> [S; 1] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 1],
             v: &[f64; 1],
@@ -316,6 +312,16 @@ pub mod driven {
                 1,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> [S; 1] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Driven {

@@ -582,6 +582,7 @@ pub mod everything {
     }
     impl ::lagrange::__private::Dynamics<2> for Everything {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -597,6 +598,7 @@ pub mod everything {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
@@ -611,6 +613,7 @@ pub mod everything {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
@@ -625,6 +628,7 @@ pub mod everything {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
         ) -> S {
@@ -636,17 +640,9 @@ pub mod everything {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> [S; 2] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 17>(self, t, q, v)
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
@@ -658,18 +654,32 @@ pub mod everything {
             >(self, t, q, v)
         }
         #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 17>(self, t, q, v)
+        }
+        #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                2,
-                17,
-            >(self, t, q, v)
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    2,
+                    17,
+                >(self, t, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Everything {

@@ -675,15 +675,352 @@ pub mod arm {
             __potential
         }
     }
-    impl ::lagrange::__private::Prepare for Arm {
-        type Prepared = ();
+    impl ::lagrange::__private::tree::rigid::RigidTree<2, 2> for Arm {
+        const JOINTS: [::lagrange::__private::tree::rigid::Joint; 2] = [
+            ::lagrange::__private::tree::rigid::Joint {
+                parent: ::lagrange::__private::core::option::Option::None,
+                kind: ::lagrange::__private::tree::rigid::JointKind::Revolute(
+                    ::lagrange::__private::tree::rigid::spatial::Axis::Z,
+                ),
+                coordinate: 0,
+                rotated: false,
+                offset: [false, false, false],
+            },
+            ::lagrange::__private::tree::rigid::Joint {
+                parent: ::lagrange::__private::core::option::Option::Some(0),
+                kind: ::lagrange::__private::tree::rigid::JointKind::Revolute(
+                    ::lagrange::__private::tree::rigid::spatial::Axis::Z,
+                ),
+                coordinate: 1,
+                rotated: true,
+                offset: [false, false, true],
+            },
+        ];
+    }
+    impl Arm {
+        #[allow(unused_variables, unused_parens, clippy::all)]
+        fn __lagrange_rigid_constants(
+            &self,
+        ) -> ::lagrange::__private::tree::rigid::RigidConstants<2> {
+            #[allow(unused_imports)]
+            use ::lagrange::__private::geometry::{
+                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+                Planar, Rot3, Spatial, Vec2, Vec3,
+            };
+            #[allow(unused_imports)]
+            use ::lagrange::__private::DualNum as _;
+            let m: f64 = self.m;
+            let l: f64 = self.l;
+            let c: f64 = self.c;
+            let ixx: f64 = self.ixx;
+            let ixy: f64 = self.ixy;
+            let izz: f64 = self.izz;
+            let k: f64 = self.k;
+            let __after_0: Rot3<f64> = (Rot3::<f64>::identity());
+            let __own_0: Vec3<f64> = (Vec3::<f64>::zero());
+            let __body_0 = {
+                let __rotation: Rot3<f64> = Rot3::<f64>::identity()
+                    * (Rot3::<f64>::identity());
+                let __offset: Vec3<f64> = Rot3::<f64>::identity()
+                    * (Vec3::<f64>::zero()
+                        + (Rot3::<f64>::identity()) * vec3((0.0), (0.0), (0.0)));
+                let __mass: f64 = m;
+                let __tensor: [[f64; 3]; 3] = ::lagrange::__private::tree::rigid::turned_tensor(
+                    &__after_0,
+                    [[ixx, ixy, 0.0], [ixy, ixx, 0.0], [0.0, 0.0, izz]],
+                );
+                let __centre: Vec3<f64> = __own_0
+                    + __after_0
+                        * {
+                            let __c: Vec3<f64> = vec3(0.0, 0.0, c);
+                            __c
+                        };
+                ::lagrange::__private::tree::rigid::body_constants(
+                    __rotation,
+                    __offset,
+                    __mass,
+                    __centre,
+                    __tensor,
+                )
+            };
+            let __after_1: Rot3<f64> = (Rot3::<f64>::identity()
+                * ::lagrange::__private::tree::rigid::axis_frame(
+                        vec3((0.0), (1.0), (0.0)),
+                    )
+                    .transpose());
+            let __own_1: Vec3<f64> = (Vec3::<f64>::zero());
+            let __body_1 = {
+                let __rotation: Rot3<f64> = __after_0
+                    * (Rot3::<f64>::identity()
+                        * rot3([
+                            [(1.0), (0.0), (0.0)],
+                            [(0.0), (0.0), (-(1.0))],
+                            [(0.0), (1.0), (0.0)],
+                        ])
+                        * ::lagrange::__private::tree::rigid::axis_frame(
+                            vec3((0.0), (1.0), (0.0)),
+                        ));
+                let __offset: Vec3<f64> = __own_0
+                    + __after_0
+                        * (Vec3::<f64>::zero()
+                            + (Rot3::<f64>::identity()) * vec3((0.0), (0.0), (l)));
+                let __mass: f64 = m;
+                let __tensor: [[f64; 3]; 3] = ::lagrange::__private::tree::rigid::turned_tensor(
+                    &__after_1,
+                    ::lagrange::__private::tree::rigid::diagonal([ixx, ixx, izz]),
+                );
+                let __centre: Vec3<f64> = __own_1
+                    + __after_1
+                        * {
+                            let __c: Vec3<f64> = vec3(0.0, 0.0, c);
+                            __c
+                        };
+                ::lagrange::__private::tree::rigid::body_constants(
+                    __rotation,
+                    __offset,
+                    __mass,
+                    __centre,
+                    __tensor,
+                )
+            };
+            ::lagrange::__private::tree::rigid::RigidConstants {
+                bodies: [__body_0, __body_1],
+                gravity: ((Vec3::<f64>::zero())).to_array(),
+            }
+        }
         #[inline(always)]
-        fn prepare(&self) -> ::lagrange::__private::Result<()> {
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_sweeps<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::Articulated<S, 2>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 2],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            (__q, __v, __tau): (&[S; 2], &[S; 2], &[S; 2]),
+            __qdd: &mut [S; 2],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.velocity::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __q, __v, 0);
+            __ws.velocity::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __q, __v, 1);
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 1)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = __ws
+                .articulate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 0)
+            {
+                return ::lagrange::__private::core::result::Result::Err(__pivot);
+            }
+            __ws.accelerate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __qdd, 0);
+            __ws.accelerate::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __qdd, 1);
             ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn __lagrange_rigid_accelerations<S: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            let __joints = &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                2,
+                2,
+            >>::JOINTS;
+            let __tau: [S; 2] = ::lagrange::__private::tree::rigid::other_generalized_forces::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, __t, __q, __v)
+                .into();
+            let mut __ws = ::lagrange::__private::tree::rigid::Articulated::<
+                S,
+                2,
+            >::new();
+            let mut __qdd = [<S as ::lagrange::__private::core::convert::From<
+                f64,
+            >>::from(0.0); 2];
+            if let ::lagrange::__private::core::result::Result::Err(__pivot) = self
+                .__lagrange_rigid_sweeps(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, &__tau),
+                    &mut __qdd,
+                )
+            {
+                return ::lagrange::__private::core::result::Result::Err(
+                    ::lagrange::__private::tree::rigid::singular::<
+                        Coords,
+                        S,
+                        2,
+                        2,
+                    >(__joints, __pivot, __t, __q),
+                );
+            }
+            ::lagrange::__private::tree::rigid::finished::<Coords, S, 2>(__qdd, __t, __q)
+        }
+        /// The two sweeps; neither fails (the chunks' `Result` is for the sweeps that can).
+        #[inline(always)]
+        #[allow(clippy::all)]
+        fn __lagrange_rigid_newton_euler<S: ::lagrange::__private::Scalar>(
+            &self,
+            __ws: &mut ::lagrange::__private::tree::rigid::NewtonEuler<S, 2>,
+            __joints: &[::lagrange::__private::tree::rigid::Joint; 2],
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __state: (&[S; 2], &[S; 2], &[S; 2]),
+            __tau: &mut [S; 2],
+        ) -> ::lagrange::__private::core::result::Result<
+            (),
+            ::lagrange::__private::tree::rigid::Pivot,
+        > {
+            __ws.forward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __state, 0);
+            __ws.forward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __state, 1);
+            __ws.backward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[1]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 1);
+            __ws.backward::<
+                    {
+                        <Arm as ::lagrange::__private::tree::rigid::RigidTree<
+                            2,
+                            2,
+                        >>::JOINTS[0]
+                            .code()
+                    },
+                    2,
+                >(__joints, __k, __tau, 0);
+            ::lagrange::__private::core::result::Result::Ok(())
+        }
+        #[inline(always)]
+        fn __lagrange_rigid_inverse_dynamics<S: ::lagrange::__private::Scalar>(
+            &self,
+            __k: &::lagrange::__private::tree::rigid::RigidConstants<2>,
+            __t: S,
+            __q: &[S; 2],
+            __v: &[S; 2],
+            __qdd: &[S; 2],
+        ) -> [S; 2] {
+            let __joints = &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                2,
+                2,
+            >>::JOINTS;
+            let mut __ws = ::lagrange::__private::tree::rigid::NewtonEuler::<
+                S,
+                2,
+            >::new();
+            let mut __tau = [<S as ::lagrange::__private::core::convert::From<
+                f64,
+            >>::from(0.0); 2];
+            let _ = self
+                .__lagrange_rigid_newton_euler(
+                    &mut __ws,
+                    __joints,
+                    __k,
+                    (__q, __v, __qdd),
+                    &mut __tau,
+                );
+            ::lagrange::__private::tree::rigid::less_other_forces::<
+                Self,
+                S,
+                2,
+                24,
+            >(self, __tau, __t, __q, __v)
+        }
+    }
+    impl ::lagrange::__private::Prepare for Arm {
+        type Prepared = ::lagrange::__private::tree::rigid::RigidConstants<2>;
+        #[inline]
+        fn prepare(&self) -> ::lagrange::__private::Result<Self::Prepared> {
+            ::lagrange::__private::core::result::Result::Ok(
+                self.__lagrange_rigid_constants(),
+            )
         }
     }
     impl ::lagrange::__private::Dynamics<2> for Arm {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -699,34 +1036,138 @@ pub mod arm {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
-                Self,
-                S,
-                2,
-                24,
-            >(self, t, q, v)
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::equations_of_motion::<
+                    Self,
+                    S,
+                    2,
+                    24,
+                    2,
+                >(self, __k, t, q, v)
+            }
+        }
+        #[inline]
+        fn mass_matrix_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            _t: S,
+            q: &[S; 2],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::mass_matrix::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                )
+            }
+        }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    self.__lagrange_rigid_accelerations(prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    self.__lagrange_rigid_accelerations(
+                        &self.__lagrange_rigid_constants(),
+                        t,
+                        q,
+                        v,
+                    )
+                }
+            }
+        }
+        #[inline]
+        fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+            a: &[S; 2],
+        ) -> [S; 2] {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+            }
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> S {
-            ::lagrange::__private::dynamics::kinetic_energy::<
-                Self,
-                S,
-                2,
-                24,
-            >(self, t, q, v)
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::kinetic_energy::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                    v,
+                )
+            }
         }
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
         ) -> S {
@@ -738,17 +1179,9 @@ pub mod arm {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> [S; 2] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 24>(self, t, q, v)
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
@@ -760,18 +1193,54 @@ pub mod arm {
             >(self, t, q, v)
         }
         #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::momenta::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                    v,
+                )
+            }
+        }
+        #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                2,
-                24,
-            >(self, t, q, v)
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    2,
+                    24,
+                >(self, t, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Arm {

@@ -279,6 +279,7 @@ pub mod free {
     }
     impl ::lagrange::__private::Dynamics<2> for Free {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -294,6 +295,7 @@ pub mod free {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
@@ -301,8 +303,72 @@ pub mod free {
             self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    ::lagrange::__private::lagrange_core::affine::accelerations::<
+                        Self,
+                        S,
+                        2,
+                        2,
+                    >(self, prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    let eom = <Self as ::lagrange::__private::Dynamics<
+                        2,
+                    >>::equations_of_motion_at(
+                        self,
+                        ::lagrange::__private::core::option::Option::None,
+                        t,
+                        q,
+                        v,
+                    );
+                    ::lagrange::__private::dynamics::solve_accelerations::<
+                        Coords,
+                        S,
+                        2,
+                    >(&eom, t, q)
+                }
+            }
+        }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
+                        Self,
+                        2,
+                        2,
+                    >(self, prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    let eom = self.__lagrange_closed_form::<f64>(q, v);
+                    let parameters_pass = <Self as ::lagrange::__private::Model<
+                        2,
+                        2,
+                    >>::parameters_pass(self);
+                    ::lagrange::__private::dynamics::regular_accelerations::<
+                        2,
+                    >(&eom, t, q, v, parameters_pass)
+                }
+            }
+        }
+        #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
@@ -317,6 +383,7 @@ pub mod free {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
         ) -> S {
@@ -328,20 +395,9 @@ pub mod free {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> [S; 2] {
-            self.__lagrange_canonical_field_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::None, q, v)
-                .0
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
@@ -352,61 +408,33 @@ pub mod free {
                 2,
             >(self, t, q, v)
         }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            self.__lagrange_canonical_field_with::<
+                    S,
+                >(::lagrange::__private::core::option::Option::None, q, v)
+                .0
+        }
         #[inline(always)]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            self.__lagrange_canonical_field_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::None, q, v)
-        }
-        #[inline]
-        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ::lagrange::__private::Result<[S; 2]> {
-            ::lagrange::__private::lagrange_core::affine::accelerations::<
-                Self,
-                S,
-                2,
-                2,
-            >(self, prepared, t, q, v)
-        }
-        #[inline(always)]
-        fn regular_accelerations_at(
-            &self,
-            t: f64,
-            q: &[f64; 2],
-            v: &[f64; 2],
-        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            let eom = self.__lagrange_closed_form::<f64>(q, v);
-            let parameters_pass = <Self as ::lagrange::__private::Model<
-                2,
-                2,
-            >>::parameters_pass(self);
-            ::lagrange::__private::dynamics::regular_accelerations::<
-                2,
-            >(&eom, t, q, v, parameters_pass)
-        }
-        #[inline(always)]
-        fn regular_accelerations_prepared_at(
-            &self,
-            prepared: &Self::Prepared,
-            t: f64,
-            q: &[f64; 2],
-            v: &[f64; 2],
-        ) -> ::lagrange::__private::core::option::Option<[f64; 2]> {
-            ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
-                Self,
-                2,
-                2,
-            >(self, prepared, t, q, v)
+            {
+                let _ = prepared;
+                self.__lagrange_canonical_field_with::<
+                        S,
+                    >(::lagrange::__private::core::option::Option::None, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Free {

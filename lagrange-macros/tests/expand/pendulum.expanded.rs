@@ -309,6 +309,7 @@ pub mod pendulum {
     }
     impl ::lagrange::__private::Dynamics<1> for Pendulum {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -324,6 +325,7 @@ pub mod pendulum {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -331,8 +333,85 @@ pub mod pendulum {
             self.__lagrange_closed_form::<S>(q, v)
         }
         #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ::lagrange::__private::Result<[S; 1]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    let eom = self
+                        .__lagrange_closed_form_with::<
+                            S,
+                        >(
+                            ::lagrange::__private::core::option::Option::Some(prepared),
+                            q,
+                            v,
+                        );
+                    ::lagrange::__private::dynamics::solve_accelerations::<
+                        Coords,
+                        S,
+                        1,
+                    >(&eom, t, q)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    let eom = <Self as ::lagrange::__private::Dynamics<
+                        1,
+                    >>::equations_of_motion_at(
+                        self,
+                        ::lagrange::__private::core::option::Option::None,
+                        t,
+                        q,
+                        v,
+                    );
+                    ::lagrange::__private::dynamics::solve_accelerations::<
+                        Coords,
+                        S,
+                        1,
+                    >(&eom, t, q)
+                }
+            }
+        }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: f64,
+            q: &[f64; 1],
+            v: &[f64; 1],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    let eom = self
+                        .__lagrange_closed_form_with::<
+                            f64,
+                        >(
+                            ::lagrange::__private::core::option::Option::Some(prepared),
+                            q,
+                            v,
+                        );
+                    ::lagrange::__private::dynamics::regular_accelerations::<
+                        1,
+                    >(&eom, t, q, v, true)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    let eom = self.__lagrange_closed_form::<f64>(q, v);
+                    let parameters_pass = <Self as ::lagrange::__private::Model<
+                        1,
+                        2,
+                    >>::parameters_pass(self);
+                    ::lagrange::__private::dynamics::regular_accelerations::<
+                        1,
+                    >(&eom, t, q, v, parameters_pass)
+                }
+            }
+        }
+        #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -347,6 +426,7 @@ pub mod pendulum {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
         ) -> S {
@@ -358,20 +438,9 @@ pub mod pendulum {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 1],
-            v: &[S; 1],
-        ) -> [S; 1] {
-            self.__lagrange_canonical_field_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::None, q, v)
-                .0
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 1],
             v: &[f64; 1],
@@ -382,78 +451,28 @@ pub mod pendulum {
                 2,
             >(self, t, q, v)
         }
-        #[inline(always)]
-        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
-        ) -> ([S; 1], [S; 1]) {
+        ) -> [S; 1] {
             self.__lagrange_canonical_field_with::<
                     S,
                 >(::lagrange::__private::core::option::Option::None, q, v)
+                .0
         }
         #[inline(always)]
-        fn canonical_field_prepared_at<S: ::lagrange::__private::Scalar>(
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
-            prepared: &Self::Prepared,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> ([S; 1], [S; 1]) {
-            self.__lagrange_canonical_field_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::Some(prepared), q, v)
-        }
-        #[inline]
-        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 1],
-            v: &[S; 1],
-        ) -> ::lagrange::__private::Result<[S; 1]> {
-            let eom = self
-                .__lagrange_closed_form_with::<
-                    S,
-                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
-            ::lagrange::__private::dynamics::solve_accelerations::<
-                Coords,
-                S,
-                1,
-            >(&eom, t, q)
-        }
-        #[inline(always)]
-        fn regular_accelerations_at(
-            &self,
-            t: f64,
-            q: &[f64; 1],
-            v: &[f64; 1],
-        ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
-            let eom = self.__lagrange_closed_form::<f64>(q, v);
-            let parameters_pass = <Self as ::lagrange::__private::Model<
-                1,
-                2,
-            >>::parameters_pass(self);
-            ::lagrange::__private::dynamics::regular_accelerations::<
-                1,
-            >(&eom, t, q, v, parameters_pass)
-        }
-        #[inline(always)]
-        fn regular_accelerations_prepared_at(
-            &self,
-            prepared: &Self::Prepared,
-            t: f64,
-            q: &[f64; 1],
-            v: &[f64; 1],
-        ) -> ::lagrange::__private::core::option::Option<[f64; 1]> {
-            let eom = self
-                .__lagrange_closed_form_with::<
-                    f64,
-                >(::lagrange::__private::core::option::Option::Some(prepared), q, v);
-            ::lagrange::__private::dynamics::regular_accelerations::<
-                1,
-            >(&eom, t, q, v, true)
+            self.__lagrange_canonical_field_with::<S>(prepared, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {

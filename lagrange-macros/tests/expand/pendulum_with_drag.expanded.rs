@@ -268,6 +268,7 @@ pub mod pendulum {
     }
     impl ::lagrange::__private::Dynamics<1> for Pendulum {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -283,6 +284,7 @@ pub mod pendulum {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -297,6 +299,7 @@ pub mod pendulum {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -311,6 +314,7 @@ pub mod pendulum {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
         ) -> S {
@@ -322,17 +326,9 @@ pub mod pendulum {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 1],
-            v: &[S; 1],
-        ) -> [S; 1] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 1],
             v: &[f64; 1],
@@ -344,18 +340,32 @@ pub mod pendulum {
             >(self, t, q, v)
         }
         #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> [S; 1] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
+        }
+        #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
         ) -> ([S; 1], [S; 1]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                1,
-                2,
-            >(self, t, q, v)
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    1,
+                    2,
+                >(self, t, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Pendulum {

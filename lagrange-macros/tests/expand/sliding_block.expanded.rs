@@ -229,6 +229,10 @@ pub mod sliding_block {
     }
     impl ::lagrange::__private::Dynamics<2> for SlidingBlock {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::ContactState<
+            2,
+            2,
+        >;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -252,20 +256,120 @@ pub mod sliding_block {
             >>::validate_constraints(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
-        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+        #[inline(always)]
+        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
-        ) -> ::lagrange::__private::Result<[S; 2]> {
-            ::lagrange::__private::lagrange_core::constraints::accelerations::<
+        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
+            ::lagrange::__private::dynamics::equations_of_motion::<
                 Self,
                 S,
                 2,
                 2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    ::lagrange::__private::lagrange_core::constraints::accelerations_prepared::<
+                        Self,
+                        S,
+                        2,
+                        2,
+                        2,
+                    >(self, prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    ::lagrange::__private::lagrange_core::constraints::accelerations::<
+                        Self,
+                        S,
+                        2,
+                        2,
+                        2,
+                    >(self, t, q, v)
+                }
+            }
+        }
+        #[inline]
+        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::kinetic_energy::<
+                Self,
+                S,
+                2,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+        ) -> S {
+            ::lagrange::__private::dynamics::potential_energy::<
+                Self,
+                S,
+                2,
+                2,
+            >(self, t, q)
+        }
+        #[inline]
+        fn lagrangian_time_derivative_at(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: f64,
+            q: &[f64; 2],
+            v: &[f64; 2],
+        ) -> f64 {
+            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
+                Self,
+                2,
+                2,
+            >(self, t, q, v)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 2>(self, t, q, v)
+        }
+        #[inline]
+        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ([S; 2], [S; 2]) {
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    2,
+                    2,
+                >(self, t, q, v)
+            }
         }
         #[inline]
         fn holonomic_constraints_at<S: ::lagrange::__private::Scalar>(
@@ -285,22 +389,35 @@ pub mod sliding_block {
         }
         fn project(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &mut [f64; 2],
             v: &mut [f64; 2],
         ) -> ::lagrange::__private::Result<()> {
-            let mode = ::lagrange::__private::lagrange_core::constraints::infer_mode::<
-                Self,
-                2,
-                2,
-                2,
-            >(self, t, q, v)?;
-            ::lagrange::__private::lagrange_core::constraints::project::<
-                Self,
-                2,
-                2,
-                2,
-            >(self, t, q, v, &mode)
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    ::lagrange::__private::lagrange_core::constraints::project_prepared::<
+                        Self,
+                        2,
+                        2,
+                        2,
+                    >(self, prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    let mode = ::lagrange::__private::lagrange_core::constraints::infer_mode::<
+                        Self,
+                        2,
+                        2,
+                        2,
+                    >(self, t, q, v)?;
+                    ::lagrange::__private::lagrange_core::constraints::project::<
+                        Self,
+                        2,
+                        2,
+                        2,
+                    >(self, t, q, v, &mode)
+                }
+            }
         }
         #[inline]
         fn check_declaration_at(
@@ -334,163 +451,6 @@ pub mod sliding_block {
                 v,
                 ::lagrange::__private::lagrange_core::constraints::CONSISTENCY_TOLERANCE,
             )
-        }
-        fn step_contacts<
-            __I: ::lagrange::__private::lagrange_core::integrate::Integrator,
-        >(
-            &self,
-            state: &mut ::lagrange::__private::State<Coords>,
-            h: f64,
-        ) -> ::lagrange::__private::core::option::Option<
-            ::lagrange::__private::Result<()>,
-        > {
-            ::lagrange::__private::lagrange_core::constraints::step_declared_contacts::<
-                __I,
-                Self,
-                2,
-                2,
-                2,
-            >(self, state, h)
-        }
-        fn integrate_contacts<__P, __O>(
-            &self,
-            method: __P,
-            state: &mut ::lagrange::__private::State<Coords>,
-            t_end: f64,
-            events: &mut [::lagrange::__private::lagrange_core::integrate::Event<
-                '_,
-                Coords,
-            >],
-            observer: __O,
-        ) -> ::lagrange::__private::core::option::Option<
-            ::lagrange::__private::Result<
-                ::lagrange::__private::lagrange_core::integrate::Outcome<Coords>,
-            >,
-        >
-        where
-            __P: ::lagrange::__private::lagrange_core::integrate::EmbeddedPair,
-            __O: ::lagrange::__private::core::ops::FnMut(
-                ::lagrange::__private::lagrange_core::integrate::Observation<
-                    '_,
-                    Coords,
-                    2,
-                >,
-            ),
-        {
-            ::lagrange::__private::lagrange_core::constraints::integrate_declared_contacts::<
-                __P,
-                Self,
-                2,
-                2,
-                2,
-            >(method, self, state, t_end, events, observer)
-        }
-        #[inline(always)]
-        fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
-            ::lagrange::__private::dynamics::equations_of_motion::<
-                Self,
-                S,
-                2,
-                2,
-            >(self, t, q, v)
-        }
-        #[inline]
-        fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> S {
-            ::lagrange::__private::dynamics::kinetic_energy::<
-                Self,
-                S,
-                2,
-                2,
-            >(self, t, q, v)
-        }
-        #[inline]
-        fn potential_energy_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-        ) -> S {
-            ::lagrange::__private::dynamics::potential_energy::<
-                Self,
-                S,
-                2,
-                2,
-            >(self, t, q)
-        }
-        #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> [S; 2] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 2, 2>(self, t, q, v)
-        }
-        #[inline]
-        fn lagrangian_time_derivative_at(
-            &self,
-            t: f64,
-            q: &[f64; 2],
-            v: &[f64; 2],
-        ) -> f64 {
-            ::lagrange::__private::dynamics::lagrangian_time_derivative::<
-                Self,
-                2,
-                2,
-            >(self, t, q, v)
-        }
-        #[inline]
-        fn canonical_field_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ([S; 2], [S; 2]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                2,
-                2,
-            >(self, t, q, v)
-        }
-        #[inline]
-        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ::lagrange::__private::Result<[S; 2]> {
-            ::lagrange::__private::lagrange_core::constraints::accelerations_prepared::<
-                Self,
-                S,
-                2,
-                2,
-                2,
-            >(self, prepared, t, q, v)
-        }
-        fn project_prepared(
-            &self,
-            prepared: &Self::Prepared,
-            t: f64,
-            q: &mut [f64; 2],
-            v: &mut [f64; 2],
-        ) -> ::lagrange::__private::Result<()> {
-            ::lagrange::__private::lagrange_core::constraints::project_prepared::<
-                Self,
-                2,
-                2,
-                2,
-            >(self, prepared, t, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::constraints::Constraints<2, 2, 2>

@@ -799,6 +799,7 @@ pub mod arm {
     }
     impl ::lagrange::__private::Dynamics<2> for Arm {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -811,60 +812,122 @@ pub mod arm {
             <Self as ::lagrange::__private::Model<2, 24>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
-        fn accelerations_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ::lagrange::__private::Result<[S; 2]> {
-            self.__lagrange_rigid_accelerations(
-                &self.__lagrange_rigid_constants(),
-                t,
-                q,
-                v,
-            )
-        }
-        #[inline]
-        fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-            qdd: &[S; 2],
-        ) -> [S; 2] {
-            self.__lagrange_rigid_inverse_dynamics(
-                &self.__lagrange_rigid_constants(),
-                t,
-                q,
-                v,
-                qdd,
-            )
-        }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<S, 2> {
-            ::lagrange::__private::tree::rigid::equations_of_motion::<
-                Self,
-                S,
-                2,
-                24,
-                2,
-            >(self, &self.__lagrange_rigid_constants(), t, q, v)
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::equations_of_motion::<
+                    Self,
+                    S,
+                    2,
+                    24,
+                    2,
+                >(self, __k, t, q, v)
+            }
+        }
+        #[inline]
+        fn mass_matrix_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            _t: S,
+            q: &[S; 2],
+        ) -> ::lagrange::__private::nalgebra::SMatrix<S, 2, 2> {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::mass_matrix::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                )
+            }
+        }
+        #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> ::lagrange::__private::Result<[S; 2]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    self.__lagrange_rigid_accelerations(prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    self.__lagrange_rigid_accelerations(
+                        &self.__lagrange_rigid_constants(),
+                        t,
+                        q,
+                        v,
+                    )
+                }
+            }
+        }
+        #[inline]
+        fn inverse_dynamics_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+            a: &[S; 2],
+        ) -> [S; 2] {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                self.__lagrange_rigid_inverse_dynamics(__k, t, q, v, a)
+            }
         }
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> S {
             {
-                let __k = self.__lagrange_rigid_constants();
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
                 ::lagrange::__private::tree::rigid::kinetic_energy::<
                     S,
                     2,
@@ -874,7 +937,7 @@ pub mod arm {
                         2,
                         2,
                     >>::JOINTS,
-                    &__k,
+                    __k,
                     q,
                     v,
                 )
@@ -883,6 +946,7 @@ pub mod arm {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
         ) -> S {
@@ -894,32 +958,9 @@ pub mod arm {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> [S; 2] {
-            {
-                let __k = self.__lagrange_rigid_constants();
-                ::lagrange::__private::tree::rigid::momenta::<
-                    S,
-                    2,
-                    2,
-                >(
-                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
-                        2,
-                        2,
-                    >>::JOINTS,
-                    &__k,
-                    q,
-                    v,
-                )
-            }
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 2],
             v: &[f64; 2],
@@ -931,39 +972,54 @@ pub mod arm {
             >(self, t, q, v)
         }
         #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 2],
+            v: &[S; 2],
+        ) -> [S; 2] {
+            {
+                let __owned;
+                let __k = match prepared {
+                    ::lagrange::__private::core::option::Option::Some(__k) => __k,
+                    ::lagrange::__private::core::option::Option::None => {
+                        __owned = self.__lagrange_rigid_constants();
+                        &__owned
+                    }
+                };
+                ::lagrange::__private::tree::rigid::momenta::<
+                    S,
+                    2,
+                    2,
+                >(
+                    &<Self as ::lagrange::__private::tree::rigid::RigidTree<
+                        2,
+                        2,
+                    >>::JOINTS,
+                    __k,
+                    q,
+                    v,
+                )
+            }
+        }
+        #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 2],
             v: &[S; 2],
         ) -> ([S; 2], [S; 2]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                2,
-                24,
-            >(self, t, q, v)
-        }
-        #[inline]
-        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-        ) -> ::lagrange::__private::Result<[S; 2]> {
-            self.__lagrange_rigid_accelerations(prepared, t, q, v)
-        }
-        #[inline]
-        fn inverse_dynamics_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 2],
-            v: &[S; 2],
-            qdd: &[S; 2],
-        ) -> [S; 2] {
-            self.__lagrange_rigid_inverse_dynamics(prepared, t, q, v, qdd)
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    2,
+                    24,
+                >(self, t, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Arm {

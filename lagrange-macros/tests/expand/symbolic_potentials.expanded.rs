@@ -583,6 +583,7 @@ pub mod springs {
     }
     impl ::lagrange::__private::Dynamics<4> for Springs {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -595,25 +596,10 @@ pub mod springs {
             <Self as ::lagrange::__private::Model<4, 6>>::validate(self)?;
             ::lagrange::__private::core::result::Result::Ok(())
         }
-        #[inline]
-        fn accelerations_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 4],
-            v: &[S; 4],
-        ) -> ::lagrange::__private::Result<[S; 4]> {
-            ::lagrange::__private::tree::accelerations::<
-                Self,
-                S,
-                4,
-                6,
-                2,
-                3,
-            >(self, t, q, v)
-        }
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 4],
             v: &[S; 4],
@@ -628,8 +614,59 @@ pub mod springs {
             >(self, t, q, v)
         }
         #[inline]
+        fn accelerations_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 4],
+            v: &[S; 4],
+        ) -> ::lagrange::__private::Result<[S; 4]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    ::lagrange::__private::lagrange_core::affine::accelerations::<
+                        Self,
+                        S,
+                        4,
+                        6,
+                    >(self, prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    ::lagrange::__private::tree::accelerations::<
+                        Self,
+                        S,
+                        4,
+                        6,
+                        2,
+                        3,
+                    >(self, t, q, v)
+                }
+            }
+        }
+        #[inline(always)]
+        fn regular_accelerations_at(
+            &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: f64,
+            q: &[f64; 4],
+            v: &[f64; 4],
+        ) -> ::lagrange::__private::core::option::Option<[f64; 4]> {
+            match prepared {
+                ::lagrange::__private::core::option::Option::Some(prepared) => {
+                    ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
+                        Self,
+                        4,
+                        6,
+                    >(self, prepared, t, q, v)
+                }
+                ::lagrange::__private::core::option::Option::None => {
+                    ::lagrange::__private::core::option::Option::None
+                }
+            }
+        }
+        #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 4],
             v: &[S; 4],
@@ -644,6 +681,7 @@ pub mod springs {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 4],
         ) -> S {
@@ -655,17 +693,9 @@ pub mod springs {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 4],
-            v: &[S; 4],
-        ) -> [S; 4] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 4, 6>(self, t, q, v)
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 4],
             v: &[f64; 4],
@@ -677,47 +707,32 @@ pub mod springs {
             >(self, t, q, v)
         }
         #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 4],
+            v: &[S; 4],
+        ) -> [S; 4] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 4, 6>(self, t, q, v)
+        }
+        #[inline]
         fn canonical_field_at<S: ::lagrange::__private::Scalar>(
             &self,
+            prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 4],
             v: &[S; 4],
         ) -> ([S; 4], [S; 4]) {
-            ::lagrange::__private::dynamics::canonical_field::<
-                Self,
-                S,
-                4,
-                6,
-            >(self, t, q, v)
-        }
-        #[inline]
-        fn accelerations_prepared_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            prepared: &Self::Prepared,
-            t: S,
-            q: &[S; 4],
-            v: &[S; 4],
-        ) -> ::lagrange::__private::Result<[S; 4]> {
-            ::lagrange::__private::lagrange_core::affine::accelerations::<
-                Self,
-                S,
-                4,
-                6,
-            >(self, prepared, t, q, v)
-        }
-        #[inline(always)]
-        fn regular_accelerations_prepared_at(
-            &self,
-            prepared: &Self::Prepared,
-            t: f64,
-            q: &[f64; 4],
-            v: &[f64; 4],
-        ) -> ::lagrange::__private::core::option::Option<[f64; 4]> {
-            ::lagrange::__private::lagrange_core::affine::regular_accelerations::<
-                Self,
-                4,
-                6,
-            >(self, prepared, t, q, v)
+            {
+                let _ = prepared;
+                ::lagrange::__private::dynamics::canonical_field::<
+                    Self,
+                    S,
+                    4,
+                    6,
+                >(self, t, q, v)
+            }
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Springs {

@@ -235,6 +235,7 @@ pub mod varying {
     }
     impl ::lagrange::__private::Dynamics<1> for Varying {
         type Coords = Coords;
+        type Contacts = ::lagrange::__private::lagrange_core::constraints::NoContacts;
         const CONSTRAINT_COUNTS: ::lagrange::__private::core::option::Option<
             ::lagrange::__private::lagrange_core::constraints::ConstraintCounts,
         > = ::lagrange::__private::core::option::Option::Some(
@@ -250,6 +251,7 @@ pub mod varying {
         #[inline(always)]
         fn equations_of_motion_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -264,6 +266,7 @@ pub mod varying {
         #[inline]
         fn kinetic_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
             v: &[S; 1],
@@ -278,6 +281,7 @@ pub mod varying {
         #[inline]
         fn potential_energy_at<S: ::lagrange::__private::Scalar>(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: S,
             q: &[S; 1],
         ) -> S {
@@ -289,17 +293,9 @@ pub mod varying {
             >(self, t, q)
         }
         #[inline]
-        fn momenta_at<S: ::lagrange::__private::Scalar>(
-            &self,
-            t: S,
-            q: &[S; 1],
-            v: &[S; 1],
-        ) -> [S; 1] {
-            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
-        }
-        #[inline]
         fn lagrangian_time_derivative_at(
             &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
             t: f64,
             q: &[f64; 1],
             v: &[f64; 1],
@@ -309,6 +305,16 @@ pub mod varying {
                 1,
                 2,
             >(self, t, q, v)
+        }
+        #[inline]
+        fn momenta_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            _prepared: ::lagrange::__private::core::option::Option<&Self::Prepared>,
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> [S; 1] {
+            ::lagrange::__private::dynamics::momenta::<Self, S, 1, 2>(self, t, q, v)
         }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Varying {

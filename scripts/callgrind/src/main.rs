@@ -400,10 +400,14 @@ enum Via {
 
 /// Σ q̈₀ over `n` calls: of `accelerations`, on the parameters or through a validated handle,
 /// whose parameters were checked once; or (`Via::Hot`) of the hook the integrators call on every
-/// stage, `Dynamics::accelerations_at` on the validated handle (which goes to
-/// `accelerations_prepared_at` with the constants it prepared): no parameter or state check, as
-/// within a step.
-fn calls<M: Mechanism<N>, const N: usize>(sys: M, s: &State<M::Coords>, n: usize, via: Via) -> f64 {
+/// stage, `Evaluate::accelerations_at` on the validated handle (with the constants it prepared): no
+/// parameter or state check, as within a step.
+fn calls<M: lagrange::evaluation::Dynamics<N>, const N: usize>(
+    sys: M,
+    s: &State<M::Coords>,
+    n: usize,
+    via: Via,
+) -> f64 {
     fn run<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
         let mut acc = 0.0;
         for _ in 0..n {
@@ -492,20 +496,21 @@ fn main() {
         }
         // One RK4 step (h = 10⁻³) per call on dual numbers seeded on 1, 2 or 4 initial values, or
         // on the lengths (`l1`, `l1_l2`, and both with two initial values: `l1_l2_4`)
-        // (`lagrange::sensitivity::Tangent`), against `rk4_validated_double_pendulum`.
+        // (a `Stepper` with sensitivities), against `rk4_validated_double_pendulum`.
         mode if mode.starts_with("sensitivity_double_pendulum_") => {
-            use lagrange::sensitivity::{Seed, Tangent};
-            let sys = DOUBLE_PENDULUM
-            .validated()
-            .unwrap();
+            use lagrange::sensitivity::Seed;
+            let sys = DOUBLE_PENDULUM.validated().unwrap();
             let s = double_pendulum_start();
             let (q1, q2) = (Seed::Coordinate("theta1"), Seed::Coordinate("theta2"));
             let (v1, v2) = (Seed::Velocity("theta1"), Seed::Velocity("theta2"));
             macro_rules! run {
                 ($seeds:expr) => {{
-                    let mut run = Tangent::new(&sys, &s, $seeds).unwrap();
+                    let mut run = Stepper::new(&sys, Rk4::with_step(1e-3), &s)
+                        .unwrap()
+                        .with_sensitivities($seeds)
+                        .unwrap();
                     for _ in 0..n {
-                        black_box(&mut run).rk4_step(1e-3).unwrap();
+                        black_box(&mut run).step(f64::INFINITY).unwrap();
                     }
                     acc += run.sensitivities().dq[0].theta1;
                 }};
@@ -538,8 +543,13 @@ fn main() {
                     if which.starts_with("gl2") {
                         let mut memory = NewtonMemory::<2, 2>::default();
                         for _ in 0..n {
-                            GaussLegendre2::step_with_memory(black_box($sys), &mut memory, &mut s, 1e-3)
-                                .unwrap();
+                            GaussLegendre2::step_with_memory(
+                                black_box($sys),
+                                &mut memory,
+                                &mut s,
+                                1e-3,
+                            )
+                            .unwrap();
                         }
                     } else {
                         let mut memory = NewtonMemory::<2, 1>::default();
@@ -571,9 +581,13 @@ fn main() {
             let mut s = double_pendulum_start();
             for _ in 0..n {
                 if which.starts_with("gl2") {
-                    black_box(&params).step::<GaussLegendre2>(&mut s, 1e-3).unwrap();
+                    black_box(&params)
+                        .step::<GaussLegendre2>(&mut s, 1e-3)
+                        .unwrap();
                 } else {
-                    black_box(&params).step::<ImplicitMidpoint>(&mut s, 1e-3).unwrap();
+                    black_box(&params)
+                        .step::<ImplicitMidpoint>(&mut s, 1e-3)
+                        .unwrap();
                 }
             }
             acc += s.q.theta1;
@@ -581,7 +595,7 @@ fn main() {
         // One step (h = 10⁻⁵ s) per call of Andrews' squeezer from the state 20 steps after Hairer &
         // Wanner's start: RK4 (`sys.step`, the constrained accelerations and the projection after
         // the step), Gauss–Legendre 2 as a solver takes it (`step_with_memory`: the Newton
-        // matrix and the stage predictor kept from step to step), through a `FixedStepper` (the
+        // matrix and the stage predictor kept from step to step), through a `Stepper` (the
         // same, with its end-of-step q̈), and through `sys.step` (a fresh Newton matrix every step).
         "rk4_squeezer" | "gl2_squeezer" | "gl2_fresh_squeezer" | "gl2_stepper_squeezer" => {
             use lagrange::integrate::NewtonMemory;
@@ -598,10 +612,11 @@ fn main() {
                     black_box(&sys).step::<Rk4>(&mut s, h).unwrap();
                 }
             } else if which == "gl2_stepper_squeezer" {
-                // The documented way to take repeated implicit steps: a FixedStepper (the Newton
+                // The documented way to take repeated implicit steps: a Stepper (the Newton
                 // memory kept, the projection and q̈ at the end of each step for dense output).
-                use lagrange::integrate::{FixedStepper, Stepper};
-                let mut solver = FixedStepper::<_, GaussLegendre2, 7>::new(&sys, &s, h).unwrap();
+                use lagrange::integrate::Stepper;
+                use lagrange::Integrator;
+                let mut solver = Stepper::new(&sys, GaussLegendre2::with_step(h), &s).unwrap();
                 for _ in 0..n {
                     black_box(&mut solver).step(f64::MAX).unwrap();
                 }

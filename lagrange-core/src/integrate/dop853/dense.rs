@@ -1,12 +1,12 @@
 //! Completion of an accepted Dormand–Prince 8(5,3) step: the FSAL evaluation and the continuous
 //! extension of order 7 (or the cubic Hermite interpolant).
 
-use super::stepper::{evaluate_stage, Stages};
+use super::attempt::{evaluate_stage, Stages};
 use super::tableau::D;
 use super::Dop853;
 use crate::error::Result;
-use crate::integrate::dopri5::{hermite_rows, DenseOutput};
-use crate::integrate::solver::Stats;
+use crate::integrate::dense::{hermite_rows, DenseOutput};
+use crate::integrate::Stats;
 
 /// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈) to (q₁, q̇₁),
 /// whose stages are in `k`: the FSAL evaluation q̈₁ at the new point (stage 13), and the dense

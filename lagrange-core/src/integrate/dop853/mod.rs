@@ -19,12 +19,14 @@
 //!   equation). `beta` stays a setting: β = 0.04 (DOPRI5's default) damps the step-size
 //!   oscillations where stability limits the step, at the price of more accepted steps where
 //!   accuracy does (BENCHMARKS.md §13 has the counts on the work-precision problems).
-//! - Largest step: by default (`h_max` infinite) [`Dop853::integrate`] bounds it by the
-//!   integration interval t_end − t₀, as `dop853.f` does (it also bounds the first step's probe).
+//! - Largest step: by default (`h_max` infinite) an integration
+//!   ([`Stepper::integrate`](super::Stepper::integrate) from a fresh solver) bounds it by its
+//!   interval t_end − t₀, as `dop853.f` does (it also bounds the first step's probe).
 //! - Dense output: the continuous extension of order 7 of `dop853.f` (CONTD8), three more
 //!   evaluations per accepted step (`dense: false` skips them and interpolates by cubic Hermite
 //!   instead, order 3).
-//! - Events, the observer and the statistics are those of every solver ([`Stepper::integrate`]).
+//! - Events, the observer, the statistics and the contact mode are those of every solver
+//!   ([`Stepper`](super::Stepper)).
 //! - Constraints: as [`Dopri5`], the start state must satisfy them and every
 //!   accepted step is projected onto them.
 //!
@@ -39,26 +41,29 @@
     clippy::unreadable_literal
 )]
 
-use super::dopri5::Dopri5;
-use super::solver::{Event, Observation, Outcome, Stats, Stepper, StopReason};
-use super::Integrator;
-use crate::error::{Error, Result};
-use crate::mechanism::Mechanism;
-use crate::model::{Coordinates, State};
+use super::dense::DenseOutput;
+use super::dopri5::settings::Dopri5;
+use super::pair::{explicit_embedded_pair, sealed, AccelerationField, ExplicitPair, StepStart};
+use super::Stats;
+use crate::error::Result;
+use crate::model::Coordinates;
 
+mod attempt;
 mod dense;
-mod stepper;
 mod tableau;
 
+pub(crate) use attempt::attempt;
+pub use attempt::Stages;
 pub(crate) use dense::accept;
-pub(crate) use stepper::attempt;
-pub use stepper::Dop853Stepper;
-pub(crate) use stepper::Stages;
 
 /// Settings of the adaptive Dormand–Prince 8(5,3) method (see the [module docs](self)).
 ///
+/// One step: `sys.step::<Dop853>(&mut state, h)` integrates over [t, t + h] with the
+/// [default](Dop853::default) tolerances, without the dense output (the step does not need it),
+/// landing exactly on t + h (as [`Dopri5`] does).
+///
 /// ```
-/// use lagrange_core::integrate::Dop853;
+/// use lagrange_core::integrate::{Dop853, Stepper};
 /// use lagrange_core::{Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
 /// # struct Pendulum;
@@ -75,11 +80,11 @@ pub(crate) use stepper::Stages;
 /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
 /// # }
 /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let s = State::new(0.0, [0.5], [0.0]);
 /// let e0 = Pendulum.energy(&s)?;
-/// let out = Dop853::new(1e-12, 1e-14).integrate(&Pendulum, &mut s, 10.0, &mut [], |_| {})?;
+/// let out = Stepper::new(&Pendulum, Dop853::new(1e-12, 1e-14), &s)?.integrate(10.0, &mut [], |_| {})?;
 /// // Tolerance 1e-12 per step over ≈ 100 steps: the energy (4.3 J) is kept to ≈ 1e-10 relative.
-/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-9);
+/// assert!((Pendulum.energy(&out.state)? - e0).abs() < 1e-9);
 /// assert!(out.stats.accepted < 300);
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
@@ -91,9 +96,9 @@ pub struct Dop853 {
     pub atol: f64,
     /// First step; `None` chooses it (HNW I §II.4).
     pub h_init: Option<f64>,
-    /// Largest step; infinite (the default): the integration interval in [`Dop853::integrate`].
+    /// Largest step; infinite (the default): the interval of an integration from a fresh solver.
     pub h_max: f64,
-    /// Most step attempts (accepted + rejected) of one [`Dop853::integrate`] call.
+    /// Most step attempts (accepted + rejected) of one integration.
     pub max_steps: usize,
     /// Safety factor of the step-size controller.
     pub safety: f64,
@@ -157,74 +162,72 @@ impl Dop853 {
         self.shared().validate_as("Dop853")
     }
 
-    /// Integrates from `state` to `t_end` (≥ state.t) with events and an observer, as
-    /// [`Dopri5::integrate`]. On success `state` is the final state (at t_end, at the terminal event,
-    /// or the last accepted one); on error `state` is unchanged. No allocation.
-    pub fn integrate<M: Mechanism<N>, const N: usize>(
-        &self,
-        mechanism: &M,
-        state: &mut State<M::Coords>,
-        t_end: f64,
-        events: &mut [Event<'_, M::Coords>],
-        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
-    ) -> Result<Outcome<M::Coords>> {
-        if !(t_end.is_finite() && t_end >= state.t) {
-            return Err(Error::InvalidEndTime { t: state.t, t_end });
-        }
-        // Unilateral and friction rows: the mode held per step, its switches located.
-        if let Some(outcome) =
-            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
-        {
-            return outcome;
-        }
-        // dop853.f: HMAX = XEND − X unless given.
-        let settings = if self.h_max == f64::INFINITY && t_end > state.t {
+    /// The settings for an integration over [t₀, t_end]: an infinite `h_max` becomes the interval
+    /// t_end − t₀, as `dop853.f` bounds it (HMAX = XEND − X unless given).
+    pub(crate) fn bounded_to(&self, interval: f64) -> Self {
+        if self.h_max == f64::INFINITY && interval > 0.0 {
             Dop853 {
-                h_max: t_end - state.t,
+                h_max: interval,
                 ..*self
             }
         } else {
             *self
-        };
-        let mut stepper = Dop853Stepper::new(mechanism, settings, state)?;
-        let outcome = stepper.integrate(t_end, events, observer)?;
-        *state = match outcome.reason {
-            StopReason::Event(hit) => hit.state,
-            _ => Stepper::state(&stepper),
-        };
-        Ok(outcome)
+        }
     }
 }
 
-/// `sys.step::<Dop853>(&mut state, h)`: integrates over [t, t + h] with the
-/// [default](Dop853::default) tolerances, landing exactly on t + h (as `Dopri5` does).
-impl Integrator for Dop853 {
-    const NAME: &'static str = "Dop853";
-    type Memory<const N: usize> = ();
+impl sealed::Sealed for Dop853 {}
 
-    fn advance<M: Mechanism<N>, const N: usize>(
-        mechanism: &M,
-        _memory: &mut (),
-        t: f64,
-        q: &[f64; N],
-        v: &[f64; N],
-        h: f64,
-        stats: &mut Stats,
-    ) -> Result<([f64; N], [f64; N])> {
-        let start = State::new(t, M::Coords::from_array(*q), M::Coords::from_array(*v));
-        let settings = Dop853 {
+impl ExplicitPair for Dop853 {
+    const NAME: &'static str = "Dop853";
+    const ORDER: i32 = 8;
+    const EXPONENTS: (f64, f64) = (1.0 / 8.0, 0.2);
+    type Stages<const N: usize> = Stages<N>;
+
+    fn controls(&self) -> Dopri5 {
+        self.shared()
+    }
+
+    fn one_step_settings() -> Self {
+        Dop853 {
             dense: false,
             ..Dop853::default()
-        };
-        let mut stepper = Dop853Stepper::new(mechanism, settings, &start)?;
-        let t_end = t + h;
-        let result = (|| {
-            while stepper.t < t_end {
-                stepper.step(t_end)?;
-            }
-            Ok((stepper.q, stepper.v))
-        })();
-        *stats += stepper.stats;
-        result
+        }
+    }
+
+    fn bounded_to(&self, interval: f64) -> Self {
+        Dop853::bounded_to(self, interval)
+    }
+
+    fn stages<const N: usize>() -> Self::Stages<N> {
+        Stages::new()
+    }
+
+    fn attempt<C: Coordinates<N>, const N: usize>(
+        &self,
+        start: StepStart<'_, N>,
+        h: f64,
+        stages: &mut Self::Stages<N>,
+        stats: &mut Stats,
+        field: &impl AccelerationField<N>,
+    ) -> Result<([f64; N], [f64; N], f64)> {
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        attempt::<C, N>(self, start, h, stages, stats, &acc)
+    }
+
+    fn accept<const N: usize>(
+        &self,
+        start: StepStart<'_, N>,
+        h: f64,
+        end: (&[f64; N], &[f64; N]),
+        stages: &mut Self::Stages<N>,
+        stats: &mut Stats,
+        field: &impl AccelerationField<N>,
+        dense: &mut DenseOutput<N>,
+    ) -> Result<[f64; N]> {
+        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+        accept(self, start, h, end, stages, stats, &acc, dense)
     }
 }
+
+explicit_embedded_pair!(Dop853, Stages<N>);

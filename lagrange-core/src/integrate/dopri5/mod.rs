@@ -14,15 +14,8 @@
 //! - Dense output: the continuous extension of order 4 of DOPRI5 (HNW I §II.6, (6.12) and the
 //!   coefficients d₁…d₇ of Hairer's DOPRI5/CONTD5), no extra evaluation:
 //!   y(t₀ + θh) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))).
-//! - Events: after each accepted step every event function g(state) is evaluated at the new point;
-//!   a sign change in the event's direction is located on the dense output by the Illinois variant of
-//!   regula falsi (Dowell & Jarratt, BIT 11 (1971)), which keeps a bracket, until the bracket is
-//!   shorter than max(1e-13, 4ε|t|) (so within 1e-12 of the root of g on the dense output; the
-//!   distance to the exact root is then that of the dense solution, O(tolerance)). Events in one step
-//!   are reported in time order; a terminal event ends the integration at its time, with the state
-//!   taken from the dense output. An event function with two roots inside one step shows no sign
-//!   change and is missed: bound `h_max` if that matters.
-//!
+//! - Events, the observer, the statistics and the contact mode are those of every solver
+//!   ([`Stepper`](super::Stepper)); events are located on the dense output.
 //! - Constraints: the start state must satisfy the mechanism's constraints
 //!   (`Dynamics::check_constraints`); every accepted step is projected onto them
 //!   (`Dynamics::project`, a no-op without constraints). The dense output interpolates the step
@@ -34,237 +27,84 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
-use super::solver::{check_step, Stepper};
-pub use super::solver::{Direction, Event, EventHit, Observation, Outcome, Stats, StopReason};
-use super::Integrator;
-use crate::error::{Error, Result};
-use crate::mechanism::Mechanism;
-use crate::model::State;
+use super::dense::DenseOutput;
+use super::pair::{explicit_embedded_pair, sealed, AccelerationField, ExplicitPair, StepStart};
+use super::Stats;
+use crate::error::Result;
+use crate::geometry::Scalar;
+use crate::model::Coordinates;
 
-mod control;
-mod dense;
-mod stepper;
+pub(crate) mod settings;
+mod stages;
 mod tableau;
 
-pub use control::Controller;
-pub(crate) use control::{adaptive_step, initial_step, initial_step_on, project_accepted, ratio};
-pub(crate) use dense::{dense_output, hermite_rows};
-pub use dense::{DenseOutput, EVENT_TIME_TOLERANCE};
-pub use stepper::Dopri5Stepper;
-pub(crate) use stepper::{stages, trial};
+pub use settings::Dopri5;
+pub(crate) use stages::{dense_output, stages, trial, Stages};
 
-/// Settings of the adaptive Dormand–Prince 5(4) method (see the [module docs](self)).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Dopri5 {
-    /// Relative tolerance (per component, against max(|y₀|, |y₁|)).
-    pub rtol: f64,
-    /// Absolute tolerance (per component).
-    pub atol: f64,
-    /// First step; `None` chooses it (HNW I §II.4).
-    pub h_init: Option<f64>,
-    /// Largest step.
-    pub h_max: f64,
-    /// Most step attempts (accepted + rejected) of one [`Dopri5::integrate`] call.
-    pub max_steps: usize,
-    /// Safety factor of the step-size controller.
-    pub safety: f64,
-    /// Smallest factor by which a step may shrink.
-    pub fac_min: f64,
-    /// Largest factor by which a step may grow.
-    pub fac_max: f64,
-    /// PI stabilisation exponent β (0: classical controller).
-    pub beta: f64,
-}
+impl sealed::Sealed for Dopri5 {}
 
-impl Default for Dopri5 {
-    /// rtol = 1e-6, atol = 1e-9, DOPRI5's controller constants (safety 0.9, factors 0.2…10, β = 0.04).
-    fn default() -> Self {
-        Dopri5 {
-            rtol: 1e-6,
-            atol: 1e-9,
-            h_init: None,
-            h_max: f64::INFINITY,
-            max_steps: 1_000_000,
-            safety: 0.9,
-            fac_min: 0.2,
-            fac_max: 10.0,
-            beta: 0.04,
-        }
-    }
-}
-
-/// What a Dormand–Prince integration cost (the statistics every solver keeps).
-pub type Dopri5Stats = Stats;
-
-/// The result of [`Dopri5::integrate`].
-pub type Dopri5Outcome<C> = Outcome<C>;
-
-impl Dopri5 {
-    /// The default settings with these tolerances.
-    pub fn new(rtol: f64, atol: f64) -> Self {
-        Dopri5 {
-            rtol,
-            atol,
-            ..Dopri5::default()
-        }
-    }
-
-    /// Checks the settings: tolerances finite, non-negative and not both zero, step-control
-    /// factors in their ranges, `max_steps` at least 1 ([`Error::InvalidSetting`] naming the
-    /// setting), the initial step positive and finite ([`Error::InvalidStep`]).
-    pub fn validate(&self) -> Result<()> {
-        self.validate_as("Dopri5")
-    }
-
-    /// [`validate`](Self::validate), naming `method` in the errors (the settings are shared with
-    /// [`Dop853`](super::Dop853)).
-    pub(crate) fn validate_as(&self, method: &'static str) -> Result<()> {
-        let invalid = |setting, value, requirement| {
-            Err(Error::InvalidSetting {
-                method,
-                setting,
-                value,
-                requirement,
-            })
-        };
-        for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
-            if !(value.is_finite() && value >= 0.0) {
-                return invalid(name, value, "finite and non-negative");
-            }
-        }
-        if self.rtol == 0.0 && self.atol == 0.0 {
-            return invalid("rtol", 0.0, "positive when atol is zero");
-        }
-        for (name, value, ok, requirement) in [
-            (
-                "safety",
-                self.safety,
-                self.safety > 0.0 && self.safety <= 1.0,
-                "in (0, 1]",
-            ),
-            (
-                "fac_min",
-                self.fac_min,
-                self.fac_min > 0.0 && self.fac_min <= 1.0,
-                "in (0, 1]",
-            ),
-            (
-                "fac_max",
-                self.fac_max,
-                self.fac_max >= 1.0 && self.fac_max.is_finite(),
-                "finite and at least 1",
-            ),
-            (
-                "beta",
-                self.beta,
-                (0.0..0.2).contains(&self.beta),
-                "in [0, 0.2)",
-            ),
-        ] {
-            if !ok {
-                return invalid(name, value, requirement);
-            }
-        }
-        if !(self.h_max > 0.0) {
-            return invalid("h_max", self.h_max, "positive");
-        }
-        if self.max_steps == 0 {
-            return invalid("max_steps", 0.0, "at least 1");
-        }
-        if let Some(h) = self.h_init {
-            check_step(h)?;
-        }
-        Ok(())
-    }
-
-    /// Integrates from `state` to `t_end` (≥ state.t), calling `observer` after every accepted
-    /// step and for every located event, and stopping early at a terminal event or after
-    /// `max_steps` attempts. On success `state` is the final state (at t_end, at the terminal event,
-    /// or the last accepted one); on error `state` is unchanged. No allocation.
-    ///
-    /// A mechanism with unilateral contacts or friction is integrated here with its mode re-inferred
-    /// at every evaluation, so each mode switch falls inside a step and costs many rejected steps:
-    /// use [`integrate_contacts`](Self::integrate_contacts) for it, which fixes the mode over a
-    /// step and locates the switches.
-    pub fn integrate<M: Mechanism<N>, const N: usize>(
-        &self,
-        mechanism: &M,
-        state: &mut State<M::Coords>,
-        t_end: f64,
-        events: &mut [Event<'_, M::Coords>],
-        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
-    ) -> Result<Dopri5Outcome<M::Coords>> {
-        if !(t_end.is_finite() && t_end >= state.t) {
-            return Err(Error::InvalidEndTime { t: state.t, t_end });
-        }
-        // Unilateral and friction rows: the mode held per step, its switches located.
-        if let Some(outcome) =
-            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
-        {
-            return outcome;
-        }
-        let mut stepper = Dopri5Stepper::new(mechanism, *self, state)?;
-        let outcome = stepper.integrate(t_end, events, observer)?;
-        *state = match outcome.reason {
-            StopReason::Event(hit) => hit.state,
-            _ => stepper.state(),
-        };
-        Ok(outcome)
-    }
-}
-
-/// `sys.step::<Dopri5>(&mut state, h)`: integrates over [t, t + h] with the
-/// [default](Dopri5::default) tolerances (rtol 1e-6, atol 1e-9), as many adaptive steps as that
-/// takes, landing exactly on t + h — the state advances by h, as with every fixed-step method.
-/// For other tolerances, dense output or events use [`Dopri5::integrate`] or a [`Dopri5Stepper`].
-///
-/// ```
-/// use lagrange_core::{Dopri5, Mechanism, State};
-/// # use lagrange_core::{vec2, Model, Scalar};
-/// # struct Pendulum;
-/// # impl Model<1, 2> for Pendulum {
-/// #     type Coords = [f64; 1];
-/// #     const RHEONOMIC: bool = false;
-/// #     const HAS_POTENTIAL: bool = true;
-/// #     const HAS_FORCES: bool = false;
-/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
-/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
-/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
-/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
-/// #     }
-/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
-/// # }
-/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
-/// Pendulum.step::<Dopri5>(&mut s, 0.5)?;
-/// assert_eq!(s.t, 0.5);
-/// // rtol 1e-6 per step: the energy moves by about that much of its size (4.3 J).
-/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-5);
-/// # Ok::<(), lagrange_core::Error>(())
-/// ```
-impl Integrator for Dopri5 {
+impl ExplicitPair for Dopri5 {
     const NAME: &'static str = "Dopri5";
-    type Memory<const N: usize> = ();
+    const ORDER: i32 = 5;
+    const EXPONENTS: (f64, f64) = (0.2, 0.75);
+    const REPLAYS_ON_DUALS: bool = true;
+    type Stages<const N: usize> = Stages<N>;
 
-    fn advance<M: Mechanism<N>, const N: usize>(
-        mechanism: &M,
-        _memory: &mut (),
+    fn controls(&self) -> Dopri5 {
+        *self
+    }
+
+    fn one_step_settings() -> Self {
+        Dopri5::default()
+    }
+
+    /// The method's stages ([`stages`]) on any scalar, from q̈ evaluated at the start.
+    fn replay<S: Scalar, const N: usize>(
         t: f64,
-        q: &[f64; N],
-        v: &[f64; N],
+        (q, v): (&[S; N], &[S; N]),
         h: f64,
+        mut acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
+    ) -> Option<Result<([S; N], [S; N])>> {
+        let step = || {
+            let a = acc(t, q, v)?;
+            let (q1, v1, _, _) = stages(t, q, v, a, h, acc)?;
+            Ok((q1, v1))
+        };
+        Some(step())
+    }
+
+    fn stages<const N: usize>() -> Self::Stages<N> {
+        ([0.0; N], [[0.0; N]; 6])
+    }
+
+    #[inline(always)]
+    fn attempt<C: Coordinates<N>, const N: usize>(
+        &self,
+        start: StepStart<'_, N>,
+        h: f64,
+        stages: &mut Self::Stages<N>,
         stats: &mut Stats,
-    ) -> Result<([f64; N], [f64; N])> {
-        let mut stepper = Dopri5Stepper::start(mechanism, Dopri5::default(), t, *q, *v)?;
-        let t_end = t + h;
-        let result = (|| {
-            while stepper.t < t_end {
-                stepper.step(t_end)?;
-            }
-            Ok((stepper.q, stepper.v))
-        })();
-        *stats += stepper.stats;
-        result
+        field: &impl AccelerationField<N>,
+    ) -> Result<([f64; N], [f64; N], f64)> {
+        trial::<C, N>(self, start, h, stages, stats, |t, q, v| {
+            field.accelerations(t, q, v)
+        })
+    }
+
+    #[inline(always)]
+    fn accept<const N: usize>(
+        &self,
+        (t, q, v, _): StepStart<'_, N>,
+        h: f64,
+        end: (&[f64; N], &[f64; N]),
+        (a1, k): &mut Self::Stages<N>,
+        _stats: &mut Stats,
+        _field: &impl AccelerationField<N>,
+        dense: &mut DenseOutput<N>,
+    ) -> Result<[f64; N]> {
+        *dense = dense_output(t, h, (q, v), end, k);
+        Ok(*a1)
     }
 }
+
+explicit_embedded_pair!(Dopri5, Stages<N>);

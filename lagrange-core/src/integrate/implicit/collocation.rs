@@ -5,15 +5,15 @@ use super::predictor::PreviousStep;
 use super::tableau::Tableau;
 use super::{ImplicitStepStats, NewtonMemory, JACOBIAN_REUSE_THETA};
 use crate::error::{Error, Result};
+use crate::evaluation::Evaluate;
 use crate::integrate::canonical::{
     canonical_field, field_jacobians, velocities_and_mass_from_momenta, FieldJacobians,
 };
 use crate::integrate::newton::{
-    self, carries_constraint_forces, mass_weights, max_norm, newton, position_floor, BlockLu,
-    NewtonEnd, NewtonScale, Unknowns as _, MAX_NEWTON_ITERATIONS,
+    self, breakdown, carries_constraint_forces, mass_weights, max_norm, newton, position_floor,
+    BlockLu, NewtonEnd, NewtonScale, Unknowns as _, MAX_NEWTON_ITERATIONS,
 };
 use crate::integrate::Stats;
-use crate::mechanism::Mechanism;
 use nalgebra::{SMatrix, SVector};
 
 /// What [`finish`] gives: q₁, v₁, p₁, M(q₁) if the velocity recovery solved with it, and the
@@ -25,16 +25,6 @@ type StepEnd<const N: usize> = (
     Option<SMatrix<f64, N, N>>,
     ImplicitStepStats,
 );
-
-fn breakdown(tableau_name: &'static str, t: f64, h: f64, iteration: usize, reason: &str) -> Error {
-    Error::NewtonBreakdown {
-        method: tableau_name,
-        t,
-        h,
-        iteration,
-        reason: reason.to_string(),
-    }
-}
 
 const NOT_FINITE: &str =
     "the collocation residual is not finite (the stages left the region where \
@@ -78,7 +68,7 @@ fn step_scale<const N: usize, const S: usize>(
 /// One collocation step: the simplified Newton iteration with the memory's matrix (or a fresh one),
 /// falling back to the exact Newton iteration when even a fresh simplified one does not contract.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
-pub(super) fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
+pub(super) fn collocation_step<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
     memory: &mut NewtonMemory<N, S>,
@@ -88,7 +78,7 @@ pub(super) fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
     h: f64,
     stats: &mut Stats,
 ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
-    newton::refuse_contacts::<M, N>(tableau.name, newton::CONTACT_METHODS)?;
+    newton::refuse_contacts::<M, N>(tableau.name)?;
     let v0 = SVector::<f64, N>::from(*v);
     let q0 = SVector::<f64, N>::from(*q);
     // The previous step of this solver, if it ended where this one starts.
@@ -270,7 +260,7 @@ pub(super) fn collocation_step<M: Mechanism<N>, const N: usize, const S: usize>(
 /// starting from the collocation polynomial's end velocity v₀ + Σ dᵢ (Vᵢ − v₀), dᵀ = bᵀA⁻¹,
 /// which is exact when p = M v with M constant.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
-fn finish<M: Mechanism<N>, const N: usize, const S: usize>(
+fn finish<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
     t: f64,
@@ -308,7 +298,7 @@ fn finish<M: Mechanism<N>, const N: usize, const S: usize>(
 /// anew): quadratic convergence, the fallback when a simplified iteration with a fresh matrix
 /// does not contract (steps far too large for the mechanism's time scales).
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
-fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
+fn exact_collocation<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
     tableau: &Tableau<S>,
     t: f64,
@@ -412,29 +402,18 @@ fn exact_collocation<M: Mechanism<N>, const N: usize, const S: usize>(
     counts.iterations += n;
     counts.jacobian_evaluations += S * iteration;
     counts.factorizations += n;
-    match end? {
-        NewtonEnd::Converged { .. } => {
-            // ṗⱼ carried to the final iterate by its own Jacobians (first order in the last
-            // increment, which is at the round-off floor: no extra evaluation).
-            for j in 0..S {
-                let mut dq = SVector::<f64, N>::zeros();
-                for k in 0..S {
-                    dq += last[k] * (h * tableau.a[j][k]);
-                }
-                rates[j] -= field[j].rate_q * dq + field[j].rate_v * last[j];
-            }
-            finish(
-                mechanism, tableau, t, q0, v0, p0, &stages, &rates, h, stats, counts,
-            )
-            .map(|(q1, v1, _, _, counts)| (q1, v1, counts))
+    end?.converged(t)?;
+    // ṗⱼ carried to the final iterate by its own Jacobians (first order in the last increment,
+    // which is at the round-off floor: no extra evaluation).
+    for j in 0..S {
+        let mut dq = SVector::<f64, N>::zeros();
+        for k in 0..S {
+            dq += last[k] * (h * tableau.a[j][k]);
         }
-        NewtonEnd::Slow {
-            iterations,
-            residual,
-        } => Err(Error::NewtonDiverged {
-            t,
-            iterations,
-            residual,
-        }),
+        rates[j] -= field[j].rate_q * dq + field[j].rate_v * last[j];
     }
+    finish(
+        mechanism, tableau, t, q0, v0, p0, &stages, &rates, h, stats, counts,
+    )
+    .map(|(q1, v1, _, _, counts)| (q1, v1, counts))
 }

@@ -25,7 +25,7 @@
 //! from gradient dual numbers (nested inside G, whose ∂T/∂q is itself a gradient) at one point
 //! (t₀ + h/2, q₀, v₀) and used for every stage; the (s·N)-square matrix built from them is
 //! LU-factorised once, and each iteration costs s plain evaluations of (p, ṗ) and one solve. In a
-//! solver ([`FixedStepper`](super::FixedStepper), or [`GaussLegendre2::step_with_memory`]) the
+//! solver ([`Stepper`](super::Stepper), or [`GaussLegendre2::step_with_memory`]) the
 //! Jacobian and its factorisation are kept for the next steps while the iteration contracts by at
 //! least [`JACOBIAN_REUSE_THETA`] (θ = ‖δₖ‖/‖δₖ₋₁‖), and refreshed when it contracts slower or
 //! not at all. Its block ∂p/∂v = M, the one not scaled by h, is taken anew, and the matrix
@@ -45,9 +45,9 @@
 //! evaluates the Jacobians on dual numbers and factorises the Newton matrix at every step, and the
 //! Jacobians dominate its cost (for a constrained mechanism they are taken through the constrained
 //! solve; BENCHMARKS.md has the profile). Repeated steps are taken by a solver,
-//! [`FixedStepper`](super::FixedStepper) (or [`GaussLegendre2::step_with_memory`] with a
-//! [`NewtonMemory`]), which keeps the Jacobians and the factorisation while they contract, as the
-//! examples below do.
+//! [`Stepper`](super::Stepper) with `GaussLegendre2::with_step(h)` (or
+//! [`GaussLegendre2::step_with_memory`] with a [`NewtonMemory`]), which keeps the Jacobians and
+//! the factorisation while they contract, as the examples below do.
 //!
 //! **State.** [`ImplicitMidpoint`] and [`GaussLegendre2`] implement [`Integrator`] on the (q, v)
 //! [`State`] as the [`Variational`](super::Variational) integrator does: p₀ = ∂L/∂q̇(t₀, q₀, v₀)
@@ -92,10 +92,10 @@ mod matrix;
 mod predictor;
 mod tableau;
 
-use super::solver::validated_step;
+use super::validated_step;
 use super::{Integrator, Stats};
 use crate::error::Result;
-use crate::mechanism::Mechanism;
+use crate::evaluation::Evaluate;
 use crate::model::State;
 use collocation::collocation_step;
 use matrix::NewtonMatrix;
@@ -127,7 +127,7 @@ pub struct ImplicitStepStats {
 pub const JACOBIAN_REUSE_THETA: f64 = 0.1;
 
 /// Working memory of [`ImplicitMidpoint`] (S = 1) and [`GaussLegendre2`] (S = 2) in a solver
-/// ([`FixedStepper`](super::FixedStepper)): the Jacobian and the factorised Newton matrix of the
+/// ([`Stepper`](super::Stepper)): the Jacobian and the factorised Newton matrix of the
 /// simplified Newton iteration, kept from step to step while the iteration contracts by at least
 /// [`JACOBIAN_REUSE_THETA`] per iteration (refactorised with a new h, or with the mass matrix at
 /// the step's start), and the last step's end, stages and momenta.
@@ -152,21 +152,15 @@ impl<const N: usize, const S: usize> Default for NewtonMemory<N, S> {
 /// evaluation of (p, ṗ) per iteration.
 ///
 /// On a declaration with `#[unilateral]` or `#[friction]` rows, whose contact mode switches
-/// inside a step, a single `sys.step::<ImplicitMidpoint>` holds the mode of the step's start and
-/// locates its switches (one step of `ContactRk4::step_with`, below); its solver
-/// ([`FixedStepper`](super::FixedStepper), which keeps the Newton matrix between steps) refuses
-/// such a declaration up front ([`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod), the
-/// state unchanged). Such a declaration is integrated with the mode held per step and its
-/// switches located by
-/// [`ContactRk4::step_with::<ImplicitMidpoint, …>`](crate::ContactRk4::step_with) (this method in
-/// the contact stepper's event loop: a step cut at an event and the rest taken as a shorter step),
-/// by [`ContactRk4`](crate::ContactRk4) with RK4, and by the adaptive [`Dopri5`](super::Dopri5),
-/// [`Dop853`](super::Dop853) and [`Radau5`](super::Radau5) (their `integrate` takes
-/// [`ContactAdaptive`](crate::constraints::ContactAdaptive)).
+/// inside a step, a single `sys.step::<ImplicitMidpoint>` and a [`Stepper`](super::Stepper) hold
+/// the mode of the step's start over the step (the method steps the mechanism in that mode, with
+/// fresh working memory) and locate its switches: a step cut at an event and the rest taken as a
+/// shorter step in the new mode. Its [`advance`](super::Integrator::advance) on raw arrays refuses
+/// such a declaration ([`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod)).
 ///
 /// ```
-/// use lagrange_core::integrate::{FixedStepper, Stepper};
-/// use lagrange_core::{ImplicitMidpoint, Mechanism, State};
+/// use lagrange_core::integrate::Stepper;
+/// use lagrange_core::{ImplicitMidpoint, Integrator, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
 /// # struct Pendulum;
 /// # impl Model<1, 2> for Pendulum {
@@ -185,7 +179,7 @@ impl<const N: usize, const S: usize> Default for NewtonMemory<N, S> {
 /// let start = State::new(0.0, [0.5], [0.0]);
 /// let e0 = Pendulum.energy(&start)?;
 /// // A solver keeps the Newton matrix from step to step (see the module docs).
-/// let mut solver = FixedStepper::<_, ImplicitMidpoint, 1>::new(&Pendulum, &start, 1e-2)?;
+/// let mut solver = Stepper::new(&Pendulum, ImplicitMidpoint::with_step(1e-2), &start)?;
 /// let mut worst = 0.0f64;
 /// for _ in 0..10_000 {
 ///     solver.step(f64::MAX)?;
@@ -202,14 +196,12 @@ pub struct ImplicitMidpoint;
 /// any Lagrangian, conserves quadratic invariants (see the [module docs](self)). Per step: 2N
 /// unknowns, a simplified Newton iteration with two plain evaluations of (p, ṗ) per iteration.
 ///
-/// On a declaration with `#[unilateral]` or `#[friction]` rows a single `sys.step` holds the
-/// contact mode over the step and its solver refuses the declaration, as for [`ImplicitMidpoint`];
-/// [`ContactRk4::step_with::<GaussLegendre2, …>`](crate::ContactRk4::step_with) integrates them
-/// (see [`ImplicitMidpoint`] for the other methods that do).
+/// On a declaration with `#[unilateral]` or `#[friction]` rows a single `sys.step` and a
+/// [`Stepper`](super::Stepper) hold the contact mode over each step, as for [`ImplicitMidpoint`].
 ///
 /// ```
-/// use lagrange_core::integrate::{FixedStepper, Stepper};
-/// use lagrange_core::{GaussLegendre2, Mechanism, State};
+/// use lagrange_core::integrate::Stepper;
+/// use lagrange_core::{GaussLegendre2, Integrator, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
 /// # struct Pendulum;
 /// # impl Model<1, 2> for Pendulum {
@@ -228,7 +220,7 @@ pub struct ImplicitMidpoint;
 /// let start = State::new(0.0, [0.5], [0.0]);
 /// let e0 = Pendulum.energy(&start)?;
 /// // A solver keeps the Newton matrix from step to step (see the module docs).
-/// let mut solver = FixedStepper::<_, GaussLegendre2, 1>::new(&Pendulum, &start, 1e-2)?;
+/// let mut solver = Stepper::new(&Pendulum, GaussLegendre2::with_step(1e-2), &start)?;
 /// let mut worst = 0.0f64;
 /// for _ in 0..10_000 {
 ///     solver.step(f64::MAX)?;
@@ -247,7 +239,7 @@ macro_rules! collocation_method {
             /// One step on raw (q, v) arrays through the Legendre transform at both ends, with
             /// fresh working memory, no validation: (q₁, v₁) and the Newton cost.
             #[allow(clippy::type_complexity)]
-            pub fn step_arrays<M: Mechanism<N>, const N: usize>(
+            pub fn step_arrays<M: Evaluate<N>, const N: usize>(
                 mechanism: &M,
                 t: f64,
                 q: &[f64; N],
@@ -269,7 +261,7 @@ macro_rules! collocation_method {
 
             /// A validated step with fresh working memory that also reports its Newton cost; the
             /// state is unchanged on error.
-            pub fn step_with_stats<M: Mechanism<N>, const N: usize>(
+            pub fn step_with_stats<M: Evaluate<N>, const N: usize>(
                 mechanism: &M,
                 state: &mut State<M::Coords>,
                 h: f64,
@@ -280,7 +272,7 @@ macro_rules! collocation_method {
             /// A validated step with the working memory of the previous ones (the Newton matrix
             /// is reused while it contracts well), reporting its Newton cost; the state is
             /// unchanged on error.
-            pub fn step_with_memory<M: Mechanism<N>, const N: usize>(
+            pub fn step_with_memory<M: Evaluate<N>, const N: usize>(
                 mechanism: &M,
                 memory: &mut NewtonMemory<N, $stages>,
                 state: &mut State<M::Coords>,
@@ -301,9 +293,8 @@ macro_rules! collocation_method {
         impl Integrator for $ty {
             const NAME: &'static str = $tableau.name;
             type Memory<const N: usize> = NewtonMemory<N, $stages>;
-            const HOLDS_CONTACT_MODE: bool = true;
 
-            fn advance<M: Mechanism<N>, const N: usize>(
+            fn advance<M: Evaluate<N>, const N: usize>(
                 mechanism: &M,
                 memory: &mut NewtonMemory<N, $stages>,
                 t: f64,

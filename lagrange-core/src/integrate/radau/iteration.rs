@@ -6,7 +6,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::algebra::*;
-use super::step::Radau5Memory;
+use super::memory::Radau5Memory;
 use super::Radau5;
 use crate::error::{Error, Result};
 use crate::integrate::pair::{AccelerationField, StepStart};
@@ -40,6 +40,65 @@ fn stage_field<const N: usize>(
     })
 }
 
+/// W = T⁻¹Z: the stages in the coordinates that block-diagonalise A⁻¹ (HW II (8.7)).
+fn to_w<const N: usize>(z: &[Pair<N>; 3]) -> [Pair<N>; 3] {
+    [
+        Pair::combine([TI11, TI12, TI13], [&z[0], &z[1], &z[2]]),
+        Pair::combine([TI21, TI22, TI23], [&z[0], &z[1], &z[2]]),
+        Pair::combine([TI31, TI32, TI33], [&z[0], &z[1], &z[2]]),
+    ]
+}
+
+/// Z = TW, back from the block-diagonal coordinates (T's last row is (T31, 1, 0)).
+fn from_w<const N: usize>(w: &[Pair<N>; 3]) -> [Pair<N>; 3] {
+    [
+        Pair::combine([T11, T12, T13], [&w[0], &w[1], &w[2]]),
+        Pair::combine([T21, T22, T23], [&w[0], &w[1], &w[2]]),
+        Pair::combine([T31, 1.0], [&w[0], &w[1]]),
+    ]
+}
+
+/// The Newton iteration's starting values at a step of h from t: the last step's collocation
+/// polynomial extrapolated to the nodes, Zᵢ = u(t + cᵢh) − u(t) (HW II (8.16)), or 0 without one.
+fn starting_values<const N: usize>(memory: &Radau5Memory<N>, t: f64, h: f64) -> [Pair<N>; 3] {
+    let mut z = [Pair::zero(); 3];
+    if let Some(dense) = memory.last {
+        let (q1, v1) = dense.eval(t);
+        for (i, c) in [C1, C2, 1.0].into_iter().enumerate() {
+            let (q, v) = dense.eval(t + c * h);
+            z[i] = Pair {
+                q: SVector::from(q) - SVector::from(q1),
+                v: SVector::from(v) - SVector::from(v1),
+            };
+        }
+    }
+    z
+}
+
+/// One simplified Newton increment ΔW from the stage derivatives F(Z) = `fz` at W = `w`: the
+/// residual T⁻¹F(Z) − Λ W, Λ = diag(γ̂, [[α̂, −β̂], [β̂, α̂]])/h, solved blockwise with the real and
+/// the complex factorisation; and its scaled norm ‖ΔW‖ = √(1/(6N) Σ (ΔWᵢ/scᵢ)²).
+fn newton_increment<const N: usize>(
+    (jac, f): (&Jacobians<N>, &Factors<N>),
+    fz: &[Pair<N>; 3],
+    w: &[Pair<N>; 3],
+    h: f64,
+    scale: &Pair<N>,
+) -> ([Pair<N>; 3], f64) {
+    let fac1 = U1 / h;
+    let (alphn, betan) = (ALPH / h, BETA / h);
+    let g = to_w(fz);
+    let r1 = Pair::combine([1.0, -fac1], [&g[0], &w[0]]);
+    let r2 = Pair::combine([1.0, -alphn, betan], [&g[1], &w[1], &w[2]]);
+    let r3 = Pair::combine([1.0, -alphn, -betan], [&g[2], &w[2], &w[1]]);
+    let d1 = jac.solve_real(f, &r1);
+    let (d2, d3) = jac.solve_complex(f, &r2, &r3);
+    let dyno = ((d1.scaled_sum(scale) + d2.scaled_sum(scale) + d3.scaled_sum(scale))
+        / (6 * N) as f64)
+        .sqrt();
+    ([d1, d2, d3], dyno)
+}
+
 impl Radau5 {
     /// The simplified Newton iteration of one step attempt with step h from (t, y₀) (HW II §IV.8;
     /// `radau5.f`, the loop at label 40).
@@ -56,31 +115,11 @@ impl Radau5 {
     ) -> Attempt<N> {
         let nit = self.max_newton_iterations;
         let scale = memory.scale(y0);
-        // Starting values: the last step's collocation polynomial extrapolated (HW II (8.16)), or 0.
-        let mut z = [Pair::zero(); 3];
-        if let Some(dense) = memory.last {
-            let (q1, v1) = dense.eval(t);
-            for (i, c) in [C1, C2, 1.0].into_iter().enumerate() {
-                let (q, v) = dense.eval(t + c * h);
-                z[i] = Pair {
-                    q: SVector::from(q) - SVector::from(q1),
-                    v: SVector::from(v) - SVector::from(v1),
-                };
-            }
-        }
-        let to_w = |z: &[Pair<N>; 3]| {
-            [
-                Pair::combine([TI11, TI12, TI13], [&z[0], &z[1], &z[2]]),
-                Pair::combine([TI21, TI22, TI23], [&z[0], &z[1], &z[2]]),
-                Pair::combine([TI31, TI32, TI33], [&z[0], &z[1], &z[2]]),
-            ]
-        };
+        let mut z = starting_values(memory, t, h);
         let mut w = to_w(&z);
         memory.faccon = memory.faccon.max(f64::EPSILON).powf(0.8);
         memory.theta = self.jacobian_theta;
-        let (mut dyno_old, mut thq_old) = (1.0, 1.0);
-        let fac1 = U1 / h;
-        let (alphn, betan) = (ALPH / h, BETA / h);
+        let mut rates = (1.0, 1.0);
         for newt in 1..=nit {
             let mut fz = [Pair::zero(); 3];
             for (i, c) in [C1, C2, 1.0].into_iter().enumerate() {
@@ -90,58 +129,58 @@ impl Radau5 {
                 }
             }
             stats.newton_iterations += 1;
-            // The residual in W: T⁻¹F(Z) − Λ W, Λ = diag(γ̂, [[α̂, −β̂], [β̂, α̂]])/h; solved blockwise.
-            let g = to_w(&fz);
-            let r1 = Pair::combine([1.0, -fac1], [&g[0], &w[0]]);
-            let r2 = Pair::combine([1.0, -alphn, betan], [&g[1], &w[1], &w[2]]);
-            let r3 = Pair::combine([1.0, -alphn, -betan], [&g[2], &w[2], &w[1]]);
-            let d1 = jac.solve_real(f, &r1);
-            let (d2, d3) = jac.solve_complex(f, &r2, &r3);
-            let dyno = ((d1.scaled_sum(&scale) + d2.scaled_sum(&scale) + d3.scaled_sum(&scale))
-                / (6 * N) as f64)
-                .sqrt();
+            let (d, dyno) = newton_increment((jac, f), &fz, &w, h, &scale);
             if !dyno.is_finite() {
                 return Attempt::Failed(0.5, None);
             }
             if newt > 1 && newt < nit {
-                let thq = dyno / dyno_old;
-                memory.theta = if newt == 2 {
-                    thq
-                } else {
-                    (thq * thq_old).sqrt()
-                };
-                thq_old = thq;
-                if memory.theta < 0.99 {
-                    memory.faccon = memory.theta / (1.0 - memory.theta);
-                    let remaining = (nit - 1 - newt) as i32;
-                    let predicted =
-                        memory.faccon * dyno * memory.theta.powi(remaining) / memory.newton_tol;
-                    if predicted >= 1.0 {
-                        let q = predicted.clamp(1e-4, 20.0);
-                        return Attempt::Failed(
-                            0.8 * q.powf(-1.0 / (4.0 + remaining as f64)),
-                            None,
-                        );
-                    }
-                } else {
-                    return Attempt::Failed(0.5, None);
+                if let Some(shrink) = self.contraction(memory, newt, dyno, &mut rates) {
+                    return Attempt::Failed(shrink, None);
                 }
             }
-            dyno_old = dyno.max(f64::EPSILON);
-            for (wi, di) in w.iter_mut().zip([&d1, &d2, &d3]) {
+            rates.0 = dyno.max(f64::EPSILON);
+            for (wi, di) in w.iter_mut().zip(&d) {
                 wi.q += di.q;
                 wi.v += di.v;
             }
-            z = [
-                Pair::combine([T11, T12, T13], [&w[0], &w[1], &w[2]]),
-                Pair::combine([T21, T22, T23], [&w[0], &w[1], &w[2]]),
-                Pair::combine([T31, 1.0], [&w[0], &w[1]]),
-            ];
+            z = from_w(&w);
             if memory.faccon * dyno <= memory.newton_tol {
                 return Attempt::Converged(z, newt);
             }
         }
         Attempt::Failed(0.5, None)
+    }
+
+    /// The contraction rate θ of iteration `newt` (from its increment's norm `dyno` and the
+    /// previous one's, `rates` = (‖ΔW‖ before, θ before)), and η = θ/(1 − θ) of HW II (8.10) into
+    /// the memory; the factor to shrink h by when the iteration is abandoned: θ ≥ 0.99, or the
+    /// error predicted after the remaining iterations, η‖ΔW‖θ^(k_max−1−k), above the tolerance
+    /// (`radau5.f`).
+    fn contraction<const N: usize>(
+        &self,
+        memory: &mut Radau5Memory<N>,
+        newt: usize,
+        dyno: f64,
+        (dyno_old, thq_old): &mut (f64, f64),
+    ) -> Option<f64> {
+        let thq = dyno / *dyno_old;
+        memory.theta = if newt == 2 {
+            thq
+        } else {
+            (thq * *thq_old).sqrt()
+        };
+        *thq_old = thq;
+        if !(memory.theta < 0.99) {
+            return Some(0.5);
+        }
+        memory.faccon = memory.theta / (1.0 - memory.theta);
+        let remaining = (self.max_newton_iterations - 1 - newt) as i32;
+        let predicted = memory.faccon * dyno * memory.theta.powi(remaining) / memory.newton_tol;
+        if predicted >= 1.0 {
+            let q = predicted.clamp(1e-4, 20.0);
+            return Some(0.8 * q.powf(-1.0 / (4.0 + remaining as f64)));
+        }
+        None
     }
 
     /// The error estimate of HW II (8.19)–(8.21), `radau5.f`'s ESTRAD, for a step of h from

@@ -39,9 +39,9 @@
 //!   [0.2, 8]; after a rejection the step does not grow.
 //! - Dense output: the collocation polynomial (cubic; order 3 uniformly, the stage order), as
 //!   `radau5.f`'s CONTR5.
-//! - Events, the observer and the statistics are those of every solver ([`Stepper::integrate`]).
-//!   [`Stats::factorizations`] counts one per refactorisation (the real and the complex matrix
-//!   together, as `radau5.f`'s NDEC).
+//! - Events, the observer, the statistics and the contact mode are those of every solver
+//!   ([`Stepper`](super::Stepper)). [`Stats::factorizations`](super::Stats::factorizations) counts one per refactorisation (the
+//!   real and the complex matrix together, as `radau5.f`'s NDEC).
 //! - Constraints: as [`Dopri5`](super::Dopri5), the start state must satisfy them and every
 //!   accepted step is projected onto them; the dense output interpolates the step before
 //!   projection.
@@ -49,7 +49,7 @@
 //! Integration is forward in time only.
 //!
 //! ```
-//! use lagrange_core::integrate::{Radau5, Radau5Stepper, Stepper};
+//! use lagrange_core::integrate::{Radau5, Stepper};
 //! use lagrange_core::{Model, Scalar, State};
 //!
 //! /// A stiff spring (ω = 1000) carrying a slow one (ω = 1), written by hand: two unit masses on
@@ -73,7 +73,7 @@
 //! // masses on the soft spring): the stiff mode is not excited (to O(10⁻¹²)), and
 //! // x₁ = cos(√λ t) with λ = 1/2 up to 10⁻⁶.
 //! let start = State::new(0.0, [1.0, 1.0 + 0.5e-6], [0.0, 0.0]);
-//! let mut solver = Radau5Stepper::new(&StiffPair, Radau5::new(1e-8, 1e-8), &start)?;
+//! let mut solver = Stepper::new(&StiffPair, Radau5::new(1e-8, 1e-8), &start)?;
 //! let outcome = solver.integrate(10.0, &mut [], |_| {})?;
 //! let exact = (0.5f64.sqrt() * 10.0).cos();
 //! assert!((solver.state().q[0] - exact).abs() < 1e-5);
@@ -88,210 +88,9 @@
 
 mod algebra;
 mod iteration;
+mod memory;
 mod settings;
 mod step;
 
-use super::dopri5::DenseOutput;
-use super::pair::{EmbeddedPair, OfMechanism};
-use super::solver::Stepper;
-pub use super::solver::{Event, Observation, Outcome, Stats, StopReason};
-use super::Integrator;
-use crate::error::Result;
-use crate::mechanism::{diagnose, Mechanism};
-use crate::model::{check_state, Coordinates, State};
+pub use memory::Radau5Memory;
 pub use settings::Radau5;
-pub use step::Radau5Memory;
-
-/// Step-by-step use of [`Radau5`]: holds the current state, the method's memory (the Jacobian and
-/// factorisation being reused, the proposed next step) and the dense output of the last accepted
-/// step; implements [`Stepper`]. A declaration with unilateral contacts or friction is refused
-/// ([`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod)): [`ContactRadau5`](crate::constraints::ContactRadau5) holds its
-/// contact mode per step and locates the switches, and [`Radau5::integrate`] takes it by itself.
-pub struct Radau5Stepper<'m, M: Mechanism<N>, const N: usize> {
-    mechanism: &'m M,
-    settings: Radau5,
-    memory: Radau5Memory<N>,
-    t: f64,
-    q: [f64; N],
-    v: [f64; N],
-    /// q̈ at (t, q, v).
-    a: [f64; N],
-    dense: DenseOutput<N>,
-    stats: Stats,
-}
-
-impl<'m, M: Mechanism<N>, const N: usize> Radau5Stepper<'m, M, N> {
-    /// Starts at `state`: validates settings, mechanism, state and constraints, evaluates q̈ and
-    /// chooses the first step.
-    pub fn new(mechanism: &'m M, settings: Radau5, state: &State<M::Coords>) -> Result<Self> {
-        settings.validate()?;
-        let (q, v) = mechanism.check(state)?;
-        mechanism.check_constraints(state.t, &q, &v)?;
-        Self::start(mechanism, settings, state.t, q, v)
-    }
-
-    fn start(mechanism: &'m M, settings: Radau5, t: f64, q: [f64; N], v: [f64; N]) -> Result<Self> {
-        crate::integrate::newton::refuse_contacts::<M, N>(
-            "Radau5",
-            "ContactRadau5 and Radau5::integrate hold the mode per step and locate its switches",
-        )?;
-        let a = mechanism
-            .accelerations_at(t, &q, &v)
-            .map_err(|e| diagnose(mechanism, t, &q, &v, e))?;
-        let mut stats = Stats {
-            evaluations: 1,
-            ..Stats::default()
-        };
-        let memory = settings.start(&OfMechanism(mechanism), (t, &q, &v, &a), &mut stats);
-        Ok(Radau5Stepper {
-            mechanism,
-            settings,
-            memory,
-            t,
-            q,
-            v,
-            a,
-            dense: DenseOutput::constant(t, &q, &v),
-            stats,
-        })
-    }
-
-    /// The step the controller proposes next.
-    pub fn proposed_step(&self) -> f64 {
-        Radau5::proposed_step(&self.memory)
-    }
-
-    /// Takes one accepted step, not past `t_limit` (> the current time), rejecting and shrinking
-    /// as needed (`radau5.f`'s RADCOR), then projects it onto the constraints (the dense output
-    /// interpolates the step before projection) and evaluates q̈ there. When the step can no
-    /// longer shrink (0.1·h below round-off of t) the last failure is returned
-    /// ([`Error::StepSizeUnderflow`](crate::Error::StepSizeUnderflow) if steps were rejected only for accuracy or slow Newton
-    /// convergence). On error the accepted state is unchanged.
-    pub fn step(&mut self, t_limit: f64) -> Result<()> {
-        let mut stats = self.stats;
-        let m = self.mechanism;
-        let start = (self.t, &self.q, &self.v, &self.a);
-        let step = self.settings.step::<M::Coords, N>(
-            &mut self.memory,
-            &OfMechanism(m),
-            start,
-            t_limit,
-            &mut stats,
-        );
-        let step = match step {
-            Ok(step) => step,
-            Err(e) => {
-                // The rejected attempts are counted.
-                self.stats = stats;
-                return Err(e);
-            }
-        };
-        let t_new = step.t;
-        let (mut qp, mut vp) = (step.q, step.v);
-        m.project(t_new, &mut qp, &mut vp)?;
-        if qp != step.q || vp != step.v {
-            check_state(&M::Coords::NAMES, t_new, &qp, &vp)?;
-        }
-        stats.evaluations += 1;
-        let a1 = m
-            .accelerations_at(t_new, &qp, &vp)
-            .map_err(|e| diagnose(m, t_new, &qp, &vp, e))?;
-        (self.t, self.q, self.v, self.a) = (t_new, qp, vp, a1);
-        (self.dense, self.stats) = (step.dense, stats);
-        Ok(())
-    }
-}
-
-impl<M: Mechanism<N>, const N: usize> Stepper<M::Coords, N> for Radau5Stepper<'_, M, N> {
-    fn name(&self) -> &'static str {
-        "Radau5"
-    }
-    fn t(&self) -> f64 {
-        self.t
-    }
-    fn state(&self) -> State<M::Coords> {
-        State::new(
-            self.t,
-            M::Coords::from_array(self.q),
-            M::Coords::from_array(self.v),
-        )
-    }
-    fn step(&mut self, t_limit: f64) -> Result<()> {
-        Radau5Stepper::step(self, t_limit)
-    }
-    fn dense(&self) -> &DenseOutput<N> {
-        &self.dense
-    }
-    fn stats(&self) -> Stats {
-        self.stats
-    }
-    fn count_event_evaluations(&mut self, n: usize) {
-        self.stats.event_evaluations += n;
-    }
-    fn max_steps(&self) -> usize {
-        self.settings.max_steps
-    }
-}
-
-/// `sys.step::<Radau5>(&mut state, h)`: integrates over [t, t + h] with the
-/// [default](Radau5::default) tolerances, as many adaptive steps as that takes, landing exactly on
-/// t + h (as [`Dopri5`](super::Dopri5) does).
-///
-/// ```
-/// use lagrange_core::{Mechanism, Radau5, State};
-/// # use lagrange_core::{vec2, Model, Scalar};
-/// # struct Pendulum;
-/// # impl Model<1, 2> for Pendulum {
-/// #     type Coords = [f64; 1];
-/// #     const RHEONOMIC: bool = false;
-/// #     const HAS_POTENTIAL: bool = true;
-/// #     const HAS_FORCES: bool = false;
-/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
-/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
-/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
-/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
-/// #     }
-/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
-/// # }
-/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
-/// Pendulum.step::<Radau5>(&mut s, 0.5)?;
-/// assert_eq!(s.t, 0.5);
-/// // rtol 1e-6: the energy (4.3 J) moves by about that much of its size.
-/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-4);
-/// # Ok::<(), lagrange_core::Error>(())
-/// ```
-impl Integrator for Radau5 {
-    const NAME: &'static str = "Radau5";
-    type Memory<const N: usize> = ();
-
-    fn advance<M: Mechanism<N>, const N: usize>(
-        mechanism: &M,
-        _memory: &mut (),
-        t: f64,
-        q: &[f64; N],
-        v: &[f64; N],
-        h: f64,
-        stats: &mut Stats,
-    ) -> Result<([f64; N], [f64; N])> {
-        let t_end = t + h;
-        // Unilateral and friction rows: the mode held per step, its switches located.
-        let mut state = State::new(t, M::Coords::from_array(*q), M::Coords::from_array(*v));
-        if let Some(outcome) =
-            mechanism.integrate_contacts(Radau5::default(), &mut state, t_end, &mut [], |_| {})
-        {
-            *stats += outcome?.stats;
-            return Ok((state.q.to_array(), state.v.to_array()));
-        }
-        let mut stepper = Radau5Stepper::start(mechanism, Radau5::default(), t, *q, *v)?;
-        let result = (|| {
-            while stepper.t < t_end {
-                stepper.step(t_end)?;
-            }
-            Ok((stepper.q, stepper.v))
-        })();
-        *stats += stepper.stats;
-        result
-    }
-}

@@ -1,15 +1,42 @@
-//! The settings of [`Radau5`](super::Radau5) and its one-call integration.
+//! The settings of [`Radau5`](super::Radau5).
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::super::solver::{check_step, Stepper};
-use super::{Event, Observation, Outcome, Radau5Stepper, StopReason};
-use crate::error::{Error, Result};
-use crate::mechanism::Mechanism;
-use crate::model::State;
+use crate::error::Result;
+use crate::integrate::{check_step, check_step_bounds, check_tolerances, invalid_setting};
 
 /// Settings of the adaptive Radau IIA method of order 5 (see the [module docs](super)).
+///
+/// One step: `sys.step::<Radau5>(&mut state, h)` integrates over [t, t + h] with the
+/// [default](Radau5::default) tolerances, as many adaptive steps as that takes, landing exactly on
+/// t + h (as [`Dopri5`](crate::integrate::Dopri5) does).
+///
+/// ```
+/// use lagrange_core::{Mechanism, Radau5, State};
+/// # use lagrange_core::{vec2, Model, Scalar};
+/// # struct Pendulum;
+/// # impl Model<1, 2> for Pendulum {
+/// #     type Coords = [f64; 1];
+/// #     const RHEONOMIC: bool = false;
+/// #     const HAS_POTENTIAL: bool = true;
+/// #     const HAS_FORCES: bool = false;
+/// #     fn validate(&self) -> lagrange_core::Result<()> { Ok(()) }
+/// #     fn masses(&self) -> [f64; 2] { [1.0, 1.0] }
+/// #     fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
+/// #         vec2(q[0].sin(), -q[0].cos()).to_array()
+/// #     }
+/// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
+/// # }
+/// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
+/// let mut s = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&s)?;
+/// Pendulum.step::<Radau5>(&mut s, 0.5)?;
+/// assert_eq!(s.t, 0.5);
+/// // rtol 1e-6: the energy (4.3 J) moves by about that much of its size.
+/// assert!((Pendulum.energy(&s)? - e0).abs() < 1e-4);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Radau5 {
     /// Relative tolerance (per component; converted as in `radau5.f`, see the module docs).
@@ -20,7 +47,8 @@ pub struct Radau5 {
     pub h_init: Option<f64>,
     /// Largest step.
     pub h_max: f64,
-    /// Most step attempts (accepted + rejected) of one [`Stepper::integrate`] call.
+    /// Most step attempts (accepted + rejected) of one integration
+    /// ([`Stepper::integrate`](crate::integrate::Stepper::integrate)).
     pub max_steps: usize,
     /// Most Newton iterations per step attempt (`radau5.f`: 7).
     pub max_newton_iterations: usize,
@@ -63,22 +91,13 @@ impl Radau5 {
         }
     }
 
-    /// Checks the settings ([`Error::InvalidSetting`] naming the setting; [`Error::InvalidStep`]
-    /// for a bad `h_init`).
+    /// Checks the settings ([`Error::InvalidSetting`](crate::Error::InvalidSetting) naming the
+    /// setting; [`Error::InvalidStep`](crate::Error::InvalidStep) for a bad `h_init`).
     pub fn validate(&self) -> Result<()> {
         let invalid = |setting, value, requirement| {
-            Err(Error::InvalidSetting {
-                method: "Radau5",
-                setting,
-                value,
-                requirement,
-            })
+            Err(invalid_setting("Radau5", setting, value, requirement))
         };
-        for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
-            if !(value.is_finite() && value >= 0.0) {
-                return invalid(name, value, "finite and non-negative");
-            }
-        }
+        check_tolerances("Radau5", self.rtol, self.atol)?;
         // Both positive: the error and Newton norms divide by atol′ + rtol′·|yᵢ|, which a
         // component at zero would make 0 with atol = 0.
         if !(self.rtol > 0.0) {
@@ -87,12 +106,7 @@ impl Radau5 {
         if !(self.atol > 0.0) {
             return invalid("atol", self.atol, "positive");
         }
-        if !(self.h_max > 0.0) {
-            return invalid("h_max", self.h_max, "positive");
-        }
-        if self.max_steps == 0 {
-            return invalid("max_steps", 0.0, "at least 1");
-        }
+        check_step_bounds("Radau5", self.h_max, self.max_steps)?;
         if !(2..=50).contains(&self.max_newton_iterations) {
             let n = self.max_newton_iterations as f64;
             return invalid("max_newton_iterations", n, "between 2 and 50");
@@ -116,36 +130,5 @@ impl Radau5 {
             check_step(h)?;
         }
         Ok(())
-    }
-
-    /// Integrates from `state` to `t_end` as [`Dopri5::integrate`](crate::integrate::Dopri5::integrate) does:
-    /// on success `state` is the final state, on error it is unchanged. A declaration with
-    /// unilateral contacts or friction is integrated with its contact mode held per step and the
-    /// switches located ([`ContactRadau5`](crate::constraints::ContactRadau5), default
-    /// [`ContactOptions`](crate::constraints::ContactOptions)), as Dopri5 does.
-    pub fn integrate<M: Mechanism<N>, const N: usize>(
-        &self,
-        mechanism: &M,
-        state: &mut State<M::Coords>,
-        t_end: f64,
-        events: &mut [Event<'_, M::Coords>],
-        mut observer: impl FnMut(Observation<'_, M::Coords, N>),
-    ) -> Result<Outcome<M::Coords>> {
-        if !(t_end.is_finite() && t_end >= state.t) {
-            return Err(Error::InvalidEndTime { t: state.t, t_end });
-        }
-        // Unilateral and friction rows: the mode held per step, its switches located.
-        if let Some(outcome) =
-            mechanism.integrate_contacts(*self, state, t_end, events, &mut observer)
-        {
-            return outcome;
-        }
-        let mut stepper = Radau5Stepper::new(mechanism, *self, state)?;
-        let outcome = stepper.integrate(t_end, events, observer)?;
-        *state = match outcome.reason {
-            StopReason::Event(hit) => hit.state,
-            _ => stepper.state(),
-        };
-        Ok(outcome)
     }
 }

@@ -1,65 +1,25 @@
 //! One accepted step of [`Radau5`] on any [`AccelerationField`] ([`EmbeddedPair`]): the step-size
 //! control of the [parent module](super) around the Newton iteration of
-//! [`iteration`](super::iteration), shared by the plain [`Radau5Stepper`](super::Radau5Stepper) and the contact solver
-//! [`ContactRadau5`](crate::constraints::ContactRadau5).
+//! [`iteration`](super::iteration), on a mechanism's accelerations or those of a held contact mode.
 
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::algebra::*;
 use super::iteration::Attempt;
+use super::memory::Radau5Memory;
 use super::Radau5;
 use crate::error::{Error, Result};
-use crate::integrate::dopri5::{initial_step_on, DenseOutput, Dopri5};
-use crate::integrate::pair::{AccelerationField, Accepted, EmbeddedPair, StepStart};
+use crate::integrate::control::{check_limit, initial_step_on, next_attempt};
+use crate::integrate::dense::DenseOutput;
+use crate::integrate::dopri5::settings::Dopri5;
+use crate::integrate::newton::breakdown;
+use crate::integrate::pair::{sealed, AccelerationField, Accepted, EmbeddedPair, StepStart};
 use crate::integrate::Stats;
 use crate::model::{check_state, Coordinates};
 use nalgebra::SVector;
 
-/// What [`Radau5`] keeps from one step to the next ([`EmbeddedPair::Memory`]): the converted
-/// tolerances, the proposed step and the controller's history, the Jacobian and factorisation
-/// being reused, the Newton iteration's contraction estimates, and the last step's collocation
-/// polynomial (the next iteration's starting values).
-#[derive(Clone, Copy, Debug)]
-pub struct Radau5Memory<const N: usize> {
-    /// The converted tolerances (rtol′, atol′) and the Newton tolerance κ·tol.
-    pub(super) rtol: f64,
-    pub(super) atol: f64,
-    pub(super) newton_tol: f64,
-    pub(super) h: f64,
-    pub(super) jacobians: Option<Jacobians<N>>,
-    /// Whether the Jacobian was evaluated at the current point (no accepted step since).
-    pub(super) jacobian_current: bool,
-    pub(super) factors: Option<Factors<N>>,
-    /// Contraction rate of the last Newton iteration, and η of HW II (8.10).
-    pub(super) theta: f64,
-    pub(super) faccon: f64,
-    /// No step accepted yet.
-    pub(super) first: bool,
-    /// Gustafsson's controller: the last accepted step and its error.
-    pub(super) h_acc: f64,
-    pub(super) err_acc: f64,
-    /// The last accepted step's collocation polynomial; `None` at the start and after the field
-    /// changed (then the Newton iteration starts from Z = 0).
-    pub(super) last: Option<DenseOutput<N>>,
-}
-
-impl<const N: usize> Radau5Memory<N> {
-    /// After a failed attempt: a Jacobian not evaluated at the current point is evaluated anew.
-    pub(super) fn renew_jacobian_if_old(&mut self) {
-        if !self.jacobian_current {
-            self.jacobians = None;
-        }
-    }
-
-    /// scᵢ = atol′ + rtol′·|y₀ᵢ|.
-    pub(super) fn scale(&self, y: &Pair<N>) -> Pair<N> {
-        Pair {
-            q: y.q.map(|x| self.atol + self.rtol * x.abs()),
-            v: y.v.map(|x| self.atol + self.rtol * x.abs()),
-        }
-    }
-}
+impl sealed::Sealed for Radau5 {}
 
 /// The start of a step as first-order vectors: y₀ = (q₀, v₀) and f(y₀) = (v₀, q̈₀).
 fn first_order<const N: usize>((_, q, v, a): StepStart<'_, N>) -> (Pair<N>, Pair<N>) {
@@ -83,6 +43,7 @@ impl Radau5 {
         t_new: f64,
         h: f64,
         z: &[Pair<N>; 3],
+        dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
         let y1 = Pair::combine([1.0, 1.0], [y0, &z[2]]);
         let (q1, v1): ([f64; N], [f64; N]) = (y1.q.into(), y1.v.into());
@@ -100,7 +61,7 @@ impl Radau5 {
             }
             r
         };
-        let dense = DenseOutput::from_coefficients(
+        *dense = DenseOutput::from_coefficients(
             t,
             h,
             make(&y0.q, [&z[0].q, &z[1].q, &z[2].q]),
@@ -111,14 +72,123 @@ impl Radau5 {
             q: q1,
             v: v1,
             a: None,
-            dense,
         })
     }
 }
 
+impl Radau5 {
+    /// The Jacobians and the factorisation for h ([`newton_matrices`](Self::newton_matrices),
+    /// the factorisation kept in the memory) and the Newton iteration on them: the stages Zᵢ, the
+    /// iterations taken and the matrices, or the factor to shrink h by and the error that ended
+    /// the attempt (a singular or non-finite Newton matrix is [`Error::NewtonBreakdown`]).
+    #[allow(clippy::type_complexity)]
+    fn solve_stages<const N: usize>(
+        &self,
+        memory: &mut Radau5Memory<N>,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        y0: &Pair<N>,
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<StageSolve<N>> {
+        let t = start.0;
+        let (jac, factors) = Self::newton_matrices(memory, field, start, h, stats)?;
+        memory.factors = factors;
+        let Some(f) = factors else {
+            let singular = "the Newton matrix is singular or not finite";
+            return Ok(Err((0.5, Some(breakdown("Radau5", t, h, 0, singular)))));
+        };
+        Ok(
+            match self.newton(memory, field, (t, y0), h, &jac, &f, stats) {
+                Attempt::Converged(z, newt) => Ok((z, newt, jac, f)),
+                Attempt::Failed(factor, error) => Err((factor, error)),
+            },
+        )
+    }
+
+    /// h/h_new of `radau5.f`'s controller for a step with scaled error `err` whose Newton
+    /// iteration took `newt` iterations: h_new = h·fac·err^(−1/4), fac falling with the iterations
+    /// taken, the quotient clamped to [1/8, 5].
+    fn step_quotient(&self, err: f64, newt: usize) -> f64 {
+        let nit = self.max_newton_iterations as f64;
+        let fac = SAFETY.min(SAFETY * (1.0 + 2.0 * nit) / (newt as f64 + 2.0 * nit));
+        (err.powf(0.25) / fac).clamp(0.125, 5.0)
+    }
+
+    /// The quotient of an accepted step after Gustafsson's predictive controller (HW II (8.25)),
+    /// from the second accepted step on, and the step and its error remembered for the next.
+    fn predictive_quotient<const N: usize>(
+        memory: &mut Radau5Memory<N>,
+        h: f64,
+        err: f64,
+        mut quot: f64,
+    ) -> f64 {
+        if !memory.first {
+            let gus = ((memory.h_acc / h) * (err * err / memory.err_acc).powf(0.25) / SAFETY)
+                .clamp(0.125, 5.0);
+            quot = quot.max(gus);
+        }
+        memory.h_acc = h;
+        memory.err_acc = err.max(1e-2);
+        quot
+    }
+
+    /// After an accepted step of h: the step proposed next, h/quot (bounded by `h_max`, not
+    /// growing after a rejection). h itself and its factorisation are kept when the proposal is
+    /// within `keep_step` and the Newton iteration converged fast; the Jacobian is kept when it
+    /// converged fast (`radau5.f`'s QUOT1, QUOT2, THET).
+    fn propose_next<const N: usize>(
+        &self,
+        memory: &mut Radau5Memory<N>,
+        h: f64,
+        quot: f64,
+        (last, rejected): (bool, bool),
+    ) {
+        memory.first = false;
+        memory.jacobian_current = false;
+        let mut h_new = (h / quot).min(self.h_max);
+        if rejected {
+            h_new = h_new.min(h);
+        }
+        let fast = memory.theta <= self.jacobian_theta;
+        let (lo, hi) = self.keep_step;
+        let ratio = h_new / h;
+        memory.h = if fast && ratio >= lo && ratio <= hi && !last {
+            h
+        } else {
+            h_new
+        };
+        if !fast {
+            memory.jacobians = None;
+        }
+    }
+}
+
+/// A rejected attempt: the next one with `h_retry`, a Jacobian not evaluated at the step's start
+/// evaluated anew.
+fn reject_step<const N: usize>(
+    memory: &mut Radau5Memory<N>,
+    h_retry: f64,
+    rejected: &mut bool,
+    stats: &mut Stats,
+) {
+    memory.h = h_retry;
+    memory.renew_jacobian_if_old();
+    *rejected = true;
+    stats.rejected += 1;
+}
+
+/// What the Newton iteration of an attempt gives: the stages Zᵢ, the iterations taken, the
+/// Jacobians and factorisation used; or the factor to shrink h by and the failure, if any.
+#[allow(clippy::type_complexity)]
+type StageSolve<const N: usize> =
+    std::result::Result<([Pair<N>; 3], usize, Jacobians<N>, Factors<N>), (f64, Option<Error>)>;
+
 impl EmbeddedPair for Radau5 {
     const NAME: &'static str = "Radau5";
     type Memory<const N: usize> = Radau5Memory<N>;
+    /// Nothing: the stages are the Newton iteration's own.
+    type Scratch<const N: usize> = ();
 
     fn validate(&self) -> Result<()> {
         Radau5::validate(self)
@@ -127,6 +197,12 @@ impl EmbeddedPair for Radau5 {
     fn max_steps(&self) -> usize {
         self.max_steps
     }
+
+    fn one_step_settings() -> Self {
+        Radau5::default()
+    }
+
+    fn scratch<const N: usize>() {}
 
     fn start<const N: usize>(
         &self,
@@ -181,60 +257,30 @@ impl EmbeddedPair for Radau5 {
     fn step<C: Coordinates<N>, const N: usize>(
         &self,
         memory: &mut Radau5Memory<N>,
+        _scratch: &mut (),
         field: &impl AccelerationField<N>,
         start: StepStart<'_, N>,
         t_limit: f64,
         stats: &mut Stats,
+        dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
         let t = start.0;
-        if !(t_limit > t) || !t_limit.is_finite() {
-            return Err(Error::InvalidEndTime { t, t_end: t_limit });
-        }
+        check_limit(t, t_limit)?;
         let (y0, f0) = first_order(start);
         let mut reject = false;
         let mut last_error: Option<Error> = None;
-        let nit = self.max_newton_iterations as f64;
         loop {
-            let mut h = memory.h.min(self.h_max);
-            let last = t + 1.01 * h >= t_limit;
-            if last {
-                h = t_limit - t;
-            }
-            if !(t + 0.1 * h > t) {
-                return Err(last_error.unwrap_or(Error::StepSizeUnderflow {
-                    method: "Radau5",
-                    t,
-                    h,
-                }));
-            }
-            let (jac, factors) = Self::newton_matrices(memory, field, start, h, stats)?;
-            memory.factors = factors;
-            let attempt = match factors {
-                Some(f) => self.newton(memory, field, (t, &y0), h, &jac, &f, stats),
-                None => Attempt::Failed(
-                    0.5,
-                    Some(Error::NewtonBreakdown {
-                        method: "Radau5",
-                        t,
-                        h,
-                        iteration: 0,
-                        reason: "the Newton matrix is singular or not finite".to_string(),
-                    }),
-                ),
-            };
-            let (z, newt) = match attempt {
-                Attempt::Converged(z, newt) => (z, newt),
-                Attempt::Failed(factor, error) => {
+            let limits = (t, t_limit);
+            let (h, last) = next_attempt("Radau5", limits, memory.h, self.h_max, &mut last_error)?;
+            let (z, newt, jac, f) = match self.solve_stages(memory, field, start, &y0, h, stats)? {
+                Ok(converged) => converged,
+                Err((factor, error)) => {
                     // `radau5.f` label 78 / the slow-convergence exit: shrink, refresh an old Jacobian.
                     last_error = error.or(last_error);
-                    memory.h = h * factor;
-                    memory.renew_jacobian_if_old();
-                    reject = true;
-                    stats.rejected += 1;
+                    reject_step(memory, h * factor, &mut reject, stats);
                     continue;
                 }
             };
-            let f = factors.expect("converged with a factorisation");
             let refine = memory.first || reject;
             let err = Self::error(
                 memory,
@@ -246,47 +292,18 @@ impl EmbeddedPair for Radau5 {
                 refine,
                 stats,
             );
-            // h_new = h·fac·err^(−1/4) (`radau5.f`): fac falls with the Newton iterations taken.
-            let fac = SAFETY.min(SAFETY * (1.0 + 2.0 * nit) / (newt as f64 + 2.0 * nit));
-            let mut quot = (err.powf(0.25) / fac).clamp(0.125, 5.0);
+            let quot = self.step_quotient(err, newt);
             if !(err < 1.0) {
-                memory.h = if memory.first { 0.1 * h } else { h / quot };
-                memory.renew_jacobian_if_old();
-                reject = true;
-                stats.rejected += 1;
+                let h_retry = if memory.first { 0.1 * h } else { h / quot };
+                reject_step(memory, h_retry, &mut reject, stats);
                 continue;
             }
-            // Accepted. Gustafsson's predictive controller (HW II (8.25)).
-            if !memory.first {
-                let gus = ((memory.h_acc / h) * (err * err / memory.err_acc).powf(0.25) / SAFETY)
-                    .clamp(0.125, 5.0);
-                quot = quot.max(gus);
-            }
-            memory.h_acc = h;
-            memory.err_acc = err.max(1e-2);
+            let quot = Self::predictive_quotient(memory, h, err, quot);
             let t_new = if last { t_limit } else { t + h };
-            let accepted = Self::accepted::<C, N>((t, &y0), t_new, h, &z)?;
+            let accepted = Self::accepted::<C, N>((t, &y0), t_new, h, &z, dense)?;
             stats.accepted += 1;
-            memory.last = Some(accepted.dense);
-            memory.first = false;
-            memory.jacobian_current = false;
-            // The next step: keep h and the factorisation when the proposal is within keep_step and
-            // the Newton iteration converged fast; keep the Jacobian when it converged fast.
-            let mut h_new = (h / quot).min(self.h_max);
-            if reject {
-                h_new = h_new.min(h);
-            }
-            let fast = memory.theta <= self.jacobian_theta;
-            let (lo, hi) = self.keep_step;
-            let ratio = h_new / h;
-            memory.h = if fast && ratio >= lo && ratio <= hi && !last {
-                h
-            } else {
-                h_new
-            };
-            if !fast {
-                memory.jacobians = None;
-            }
+            memory.last = Some(*dense);
+            self.propose_next(memory, h, quot, (last, reject));
             return Ok(accepted);
         }
     }
@@ -299,10 +316,12 @@ impl EmbeddedPair for Radau5 {
     fn shorten<C: Coordinates<N>, const N: usize>(
         &self,
         memory: &mut Radau5Memory<N>,
+        _scratch: &mut (),
         field: &impl AccelerationField<N>,
         start: StepStart<'_, N>,
         h: f64,
         stats: &mut Stats,
+        dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
         let t = start.0;
         let (y0, _) = first_order(start);
@@ -316,19 +335,15 @@ impl EmbeddedPair for Radau5 {
             };
             match attempt {
                 Attempt::Converged(z, _) => {
-                    let accepted = Self::accepted::<C, N>((t, &y0), t + h, h, &z)?;
-                    memory.last = Some(accepted.dense);
+                    let accepted = Self::accepted::<C, N>((t, &y0), t + h, h, &z, dense)?;
+                    memory.last = Some(*dense);
                     memory.jacobian_current = false;
                     return Ok(accepted);
                 }
                 Attempt::Failed(_, error) if fresh => {
-                    return Err(error.unwrap_or(Error::NewtonBreakdown {
-                        method: "Radau5",
-                        t,
-                        h,
-                        iteration: self.max_newton_iterations,
-                        reason: "the step cut at an event did not converge".to_string(),
-                    }))
+                    let reason = "the step cut at an event did not converge";
+                    let iteration = self.max_newton_iterations;
+                    return Err(error.unwrap_or(breakdown("Radau5", t, h, iteration, reason)));
                 }
                 Attempt::Failed(..) => {
                     memory.jacobians = None;

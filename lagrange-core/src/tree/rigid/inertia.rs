@@ -3,7 +3,7 @@
 //! symmetric blocks are stored by their six distinct entries and every routine forms only those:
 //! the frame changes of the backward sweeps are most of the recursions' work.
 
-use super::spatial::{Axis, Force, Motion, M3, V3};
+use super::spatial::{Axis, Force, Motion, RigidInertia, M3, V3};
 use crate::geometry::Scalar;
 
 /// [f(0), f(1), f(2)], written out (in the per-body steps, where `std::array::from_fn` is left
@@ -264,4 +264,23 @@ fn cross_masked<S: Scalar>(r: &V3<S>, mask: [bool; 3], x: V3<S>) -> V3<S> {
         diff(term(2, x[0]), term(0, x[2])),
         diff(term(0, x[1]), term(1, x[0])),
     ]
+}
+
+impl RigidInertia {
+    /// The body's spatial inertia in block form (where the articulated-body and composite-body
+    /// recursions start from).
+    #[inline(always)]
+    pub fn as_inertia<S: Scalar>(&self) -> Inertia<S> {
+        let lift = |m: &M3<f64>| m.map(|row| row.map(S::from));
+        let h = &self.first_moment;
+        let z = 0.0;
+        // h× by rows.
+        let hx = [[z, -h[2], h[1]], [h[2], z, -h[0]], [-h[1], h[0], z]];
+        let m = S::from(self.mass);
+        Inertia {
+            a: Sym3::from_upper(&lift(&self.rotational)),
+            b: lift(&hx),
+            c: Sym3([m, m, m, S::zero(), S::zero(), S::zero()]),
+        }
+    }
 }

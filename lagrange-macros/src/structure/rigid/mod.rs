@@ -85,9 +85,11 @@ pub struct RigidTree {
 /// The kinematic tree of rigid bodies the declaration states, if it states one: every body with
 /// mass a node, every coordinate the joint of exactly one node. Declarations of point masses only
 /// are left to the tree of translations (`crate::structure::tree`), their own specialisation.
+/// Constraints do not change the tree: a closed loop is a tree whose M and b the recursions give,
+/// with the constraint rows solved on top of them.
 pub fn rigid_tree(model: &Model) -> Option<RigidTree> {
     let rigid = |s: Shape| matches!(s, Shape::Planar | Shape::Spatial);
-    if !model.constraints.is_empty() || !model.bodies.iter().any(|b| rigid(b.shape)) {
+    if !model.bodies.iter().any(|b| rigid(b.shape)) {
         return None;
     }
     let mut nodes: Vec<Node> = Vec::new();

@@ -132,6 +132,7 @@ impl<'a> Reader<'a> {
             Expr::Path(_) => self.path(e),
             Expr::Index(i) => self.index(i),
             Expr::Call(c) => self.call(c),
+            Expr::Array(a) => self.array(a),
             Expr::MethodCall(m) => self.method(m),
             Expr::Field(f) => self.field(f),
             Expr::Binary(b) => self.binary(b),
@@ -145,6 +146,20 @@ impl<'a> Reader<'a> {
             },
             _ => None,
         }
+    }
+
+    /// `[..]` of constants, nested or not (`rot3`'s matrix written out): a constant, rebuilt from
+    /// its elements' values (so a family's index in it is the member's).
+    fn array(&mut self, a: &syn::ExprArray) -> Option<Value> {
+        let elements = a
+            .elems
+            .iter()
+            .map(|e| match self.expr(e)? {
+                Value::Scalar(s) => Some(s),
+                _ => None,
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Some(Value::Scalar(quote!([#(#elements),*])))
     }
 
     /// `if i == 0 { .. } else { .. }`: the member decides.

@@ -76,64 +76,15 @@ impl Graph {
                 let (da, db) = (self.along(a, direction), self.along(b, direction));
                 self.sub(da, db)
             }
-            // (a a)' = 2 a a': the dual numbers' a' a + a a', whose two terms are equal. Where a'
-            // varies, as 2 (a a'): the rates of a sum of squares then add up to 2 Σ a a' (see
-            // `Graph::add`), whose 2 the rule for √ cancels; a constant a' joins the 2 instead.
-            Node::Mul(a, b) if a == b => {
-                let da = self.along(a, direction);
-                let two = self.literal(2.0);
-                if self.varies[da] {
-                    let product = self.mul(a, da);
-                    self.mul(two, product)
-                } else {
-                    let twice = self.mul(two, a);
-                    self.mul(twice, da)
-                }
-            }
-            // (a b)' = a' b + a b'.
-            Node::Mul(a, b) => {
-                let (da, db) = (self.along(a, direction), self.along(b, direction));
-                let (l, r) = (self.mul(da, b), self.mul(a, db));
-                self.add(l, r)
-            }
-            // (a / b)' = (a' − (a / b) b') / b; for a constant a, −((a / b) / b) b', the factor
-            // (a / b) / b shared by every variable.
-            Node::Div(a, b) if !self.varies[a] => {
-                let db = self.along(b, direction);
-                let factor = self.div(id, b);
-                let product = self.mul(factor, db);
-                self.neg(product)
-            }
-            Node::Div(a, b) => {
-                let (da, db) = (self.along(a, direction), self.along(b, direction));
-                let v_db = self.mul(id, db);
-                let numerator = self.sub(da, v_db);
-                self.div(numerator, b)
-            }
+            Node::Mul(a, b) if a == b => self.along_square(a, direction),
+            Node::Mul(a, b) => self.along_product(a, b, direction),
+            Node::Div(a, b) => self.along_quotient(id, a, b, direction),
             Node::Neg(a) => {
                 let da = self.along(a, direction);
                 self.neg(da)
             }
-            // (aⁿ)' = n aⁿ⁻¹ a'.
-            Node::Powi(a, n) => {
-                let da = self.along(a, direction);
-                let (n, lower) = (self.literal(n as f64), self.powi(a, n - 1));
-                let slope = self.mul(n, lower);
-                self.mul(slope, da)
-            }
-            // (√a)' = a' / (2 √a); for a' = 2 y (a sum of squares), y / √a, the same quotient
-            // (the factors 2 cancel exactly).
-            Node::Sqrt(a) => {
-                let da = self.along(a, direction);
-                let two = self.literal(2.0);
-                match self.scaled(da) {
-                    Some((power, y)) if power == two => self.div(y, id),
-                    _ => {
-                        let twice = self.mul(two, id);
-                        self.div(da, twice)
-                    }
-                }
-            }
+            Node::Powi(a, n) => self.along_power(a, n, direction),
+            Node::Sqrt(a) => self.along_sqrt(id, a, direction),
             Node::Sin(a) => {
                 let da = self.along(a, direction);
                 let cos = self.node(Node::Cos(a));
@@ -145,10 +96,12 @@ impl Graph {
                 let product = self.mul(sin, da);
                 self.neg(product)
             }
+            // (eᵃ)' = eᵃ a'.
             Node::Exp(a) => {
                 let da = self.along(a, direction);
                 self.mul(id, da)
             }
+            // (ln a)' = a' / a.
             Node::Ln(a) => {
                 let da = self.along(a, direction);
                 self.div(da, a)
@@ -156,6 +109,65 @@ impl Graph {
         };
         self.derivatives.insert((id, direction), d);
         d
+    }
+
+    /// (a a)' = 2 a a': the dual numbers' a' a + a a', whose two terms are equal. Where a' varies,
+    /// as 2 (a a'): the rates of a sum of squares then add up to 2 Σ a a' (see `Graph::add`),
+    /// whose 2 the rule for √ cancels; a constant a' joins the 2 instead.
+    fn along_square(&mut self, a: Id, direction: Direction) -> Id {
+        let da = self.along(a, direction);
+        let two = self.literal(2.0);
+        if self.varies[da] {
+            let product = self.mul(a, da);
+            self.mul(two, product)
+        } else {
+            let twice = self.mul(two, a);
+            self.mul(twice, da)
+        }
+    }
+
+    /// (a b)' = a' b + a b'.
+    fn along_product(&mut self, a: Id, b: Id, direction: Direction) -> Id {
+        let (da, db) = (self.along(a, direction), self.along(b, direction));
+        let (l, r) = (self.mul(da, b), self.mul(a, db));
+        self.add(l, r)
+    }
+
+    /// (a / b)' = (a' − (a / b) b') / b for the quotient `id` = a / b; for a constant a,
+    /// −((a / b) / b) b', the factor (a / b) / b shared by every variable.
+    fn along_quotient(&mut self, id: Id, a: Id, b: Id, direction: Direction) -> Id {
+        if !self.varies[a] {
+            let db = self.along(b, direction);
+            let factor = self.div(id, b);
+            let product = self.mul(factor, db);
+            return self.neg(product);
+        }
+        let (da, db) = (self.along(a, direction), self.along(b, direction));
+        let v_db = self.mul(id, db);
+        let numerator = self.sub(da, v_db);
+        self.div(numerator, b)
+    }
+
+    /// (aⁿ)' = n aⁿ⁻¹ a'.
+    fn along_power(&mut self, a: Id, n: i32, direction: Direction) -> Id {
+        let da = self.along(a, direction);
+        let (n, lower) = (self.literal(n as f64), self.powi(a, n - 1));
+        let slope = self.mul(n, lower);
+        self.mul(slope, da)
+    }
+
+    /// (√a)' = a' / (2 √a) for the root `id` = √a; for a' = 2 y (a sum of squares), y / √a, the
+    /// same quotient (the factors 2 cancel exactly).
+    fn along_sqrt(&mut self, id: Id, a: Id, direction: Direction) -> Id {
+        let da = self.along(a, direction);
+        let two = self.literal(2.0);
+        match self.scaled(da) {
+            Some((power, y)) if power == two => self.div(y, id),
+            _ => {
+                let twice = self.mul(two, id);
+                self.div(da, twice)
+            }
+        }
     }
 
     /// The leaves the node depends on (coordinates, rows, time, velocities), in the order built.

@@ -86,110 +86,24 @@ impl Graph {
     /// of computed.
     pub fn emit_prepared(&self, outputs: &[Id], s: &TokenStream, prepared: &[Id]) -> TokenStream {
         let needed = self.needed(outputs, prepared);
-        // Quotients by one denominator share its reciprocal: a node divided three times or more
-        // is inverted once and the quotients are products, each within an ulp of the division's.
-        // Two divisions by it are left: they run side by side (a division issues every 4–5 cycles
-        // and takes 13–14, a product 3–4: see `product::cycles`), both done before a reciprocal
-        // and a product would be; from three on, the reciprocal is done first. Literal
-        // denominators stay divisions.
-        let mut quotients = vec![0usize; self.nodes.len()];
-        for (id, node) in self.nodes.iter().enumerate() {
-            if let (true, Node::Div(_, b)) = (needed[id], node) {
-                quotients[*b] += 1;
-            }
-        }
-        let shared = |b: Id| quotients[b] >= 3 && !matches!(self.nodes[b], Node::Literal(_));
+        let shared = self.shared_denominators(&needed);
         let mut out = TokenStream::new();
         for (id, node) in self.nodes.iter().enumerate() {
             if !needed[id] || matches!(node, Node::Literal(_)) {
                 continue;
             }
             let in_f64 = !self.varies[id];
-            let op = |a: Id| self.operand(a, in_f64, s);
-            // A binary operation with a constant on the right takes the `f64` as it is
-            // (`DualNum` is closed under operations with its primitive); a commutative one with
-            // the constant on the left is written the other way round (exact).
-            let binary = |a: Id, b: Id, symbol: TokenStream, commutes: bool| {
-                if !in_f64 && !self.varies[b] {
-                    let (a, b) = (op(a), self.operand(b, true, s));
-                    quote!(#a #symbol #b)
-                } else if !in_f64 && !self.varies[a] && commutes {
-                    let (a, b) = (self.operand(a, true, s), op(b));
-                    quote!(#b #symbol #a)
-                } else {
-                    let (a, b) = (op(a), op(b));
-                    quote!(#a #symbol #b)
-                }
-            };
-            let value = match node {
-                _ if prepared.contains(&id) => {
-                    let i =
-                        Literal::usize_unsuffixed(prepared.iter().position(|&p| p == id).unwrap());
+            let value = match prepared.iter().position(|&p| p == id) {
+                Some(i) => {
+                    let i = Literal::usize_unsuffixed(i);
                     quote!(__prepared[#i])
                 }
-                Node::Literal(_) => unreachable!("literals are written in place"),
-                Node::Constant(tokens) => tokens.0.clone(),
-                Node::Time => quote!(__t),
-                Node::Coordinate(j) => {
-                    let j = Literal::usize_unsuffixed(*j);
-                    quote!(__q[#j])
-                }
-                Node::Row(r) => {
-                    let r = Literal::usize_unsuffixed(*r);
-                    quote!(__x[#r])
-                }
-                Node::Velocity(j) => {
-                    let j = Literal::usize_unsuffixed(*j);
-                    quote!(__v[#j])
-                }
-                Node::RowVelocity(r) => {
-                    let r = Literal::usize_unsuffixed(*r);
-                    quote!(__x_dot[#r])
-                }
-                Node::RowAcceleration(r) => {
-                    let r = Literal::usize_unsuffixed(*r);
-                    quote!(__x_accel[#r])
-                }
-                Node::Jacobian(r, j) => {
-                    let (r, j) = (Literal::usize_unsuffixed(*r), Literal::usize_unsuffixed(*j));
-                    quote!(__jacobian[#r][#j])
-                }
-                Node::Add(a, b) => binary(*a, *b, quote!(+), true),
-                Node::Sub(a, b) => binary(*a, *b, quote!(-), false),
-                Node::Mul(a, b) => binary(*a, *b, quote!(*), true),
-                Node::Div(a, b) if shared(*b) => {
-                    let inverse = reciprocal_name(*b);
-                    match (in_f64, self.varies[*a]) {
-                        // A constant over a variable: the reciprocal on `S` times the `f64`.
-                        (false, false) => {
-                            let a = self.operand(*a, true, s);
-                            quote!(#inverse * #a)
-                        }
-                        _ => {
-                            let a = op(*a);
-                            quote!(#a * #inverse)
-                        }
-                    }
-                }
-                Node::Div(a, b) => binary(*a, *b, quote!(/), false),
-                Node::Neg(a) => {
-                    let a = op(*a);
-                    quote!(-#a)
-                }
-                Node::Powi(a, n) => {
-                    let a = op(*a);
-                    quote!(#a.powi(#n))
-                }
-                Node::Sqrt(a) => method(op(*a), "sqrt"),
-                Node::Sin(a) => method(op(*a), "sin"),
-                Node::Cos(a) => method(op(*a), "cos"),
-                Node::Exp(a) => method(op(*a), "exp"),
-                Node::Ln(a) => method(op(*a), "ln"),
+                None => self.node_value(node, in_f64, s, &shared),
             };
             let ty = if in_f64 { quote!(f64) } else { s.clone() };
             let n = name(id);
             out.extend(quote!(let #n: #ty = #value;));
-            if shared(id) {
+            if shared[id] {
                 let inverse = reciprocal_name(id);
                 out.extend(quote!(let #inverse: #ty = #n.recip();));
             }
@@ -197,10 +111,130 @@ impl Graph {
         out
     }
 
+    /// Which denominators the quotients share as a reciprocal.
+    ///
+    /// Quotients by one denominator share its reciprocal: a node divided three times or more is
+    /// inverted once and the quotients are products, each within an ulp of the division's. Two
+    /// divisions by it are left: they run side by side (a division issues every 4–5 cycles and
+    /// takes 13–14, a product 3–4: see `product::cycles`), both done before a reciprocal and a
+    /// product would be; from three on, the reciprocal is done first. Literal denominators stay
+    /// divisions.
+    fn shared_denominators(&self, needed: &[bool]) -> Vec<bool> {
+        let mut quotients = vec![0usize; self.nodes.len()];
+        for (id, node) in self.nodes.iter().enumerate() {
+            if let (true, Node::Div(_, b)) = (needed[id], node) {
+                quotients[*b] += 1;
+            }
+        }
+        (0..self.nodes.len())
+            .map(|b| quotients[b] >= 3 && !matches!(self.nodes[b], Node::Literal(_)))
+            .collect()
+    }
+
+    /// A node's value from its operands' names (in `f64` where `in_f64`, on `s` otherwise).
+    fn node_value(
+        &self,
+        node: &Node,
+        in_f64: bool,
+        s: &TokenStream,
+        shared: &[bool],
+    ) -> TokenStream {
+        let op = |a: Id| self.operand(a, in_f64, s);
+        let binary = |a: &Id, b: &Id, symbol: TokenStream, commutes: bool| {
+            self.binary(*a, *b, symbol, commutes, in_f64, s)
+        };
+        match node {
+            Node::Literal(_) => unreachable!("literals are written in place"),
+            Node::Constant(tokens) => tokens.0.clone(),
+            Node::Add(a, b) => binary(a, b, quote!(+), true),
+            Node::Sub(a, b) => binary(a, b, quote!(-), false),
+            Node::Mul(a, b) => binary(a, b, quote!(*), true),
+            Node::Div(a, b) if shared[*b] => {
+                let inverse = reciprocal_name(*b);
+                match (in_f64, self.varies[*a]) {
+                    // A constant over a variable: the reciprocal on `S` times the `f64`.
+                    (false, false) => {
+                        let a = self.operand(*a, true, s);
+                        quote!(#inverse * #a)
+                    }
+                    _ => {
+                        let a = op(*a);
+                        quote!(#a * #inverse)
+                    }
+                }
+            }
+            Node::Div(a, b) => binary(a, b, quote!(/), false),
+            Node::Neg(a) => {
+                let a = op(*a);
+                quote!(-#a)
+            }
+            Node::Powi(a, n) => {
+                let a = op(*a);
+                quote!(#a.powi(#n))
+            }
+            Node::Sqrt(a) => method(op(*a), "sqrt"),
+            Node::Sin(a) => method(op(*a), "sin"),
+            Node::Cos(a) => method(op(*a), "cos"),
+            Node::Exp(a) => method(op(*a), "exp"),
+            Node::Ln(a) => method(op(*a), "ln"),
+            Node::Time
+            | Node::Coordinate(_)
+            | Node::Row(_)
+            | Node::Velocity(_)
+            | Node::RowVelocity(_)
+            | Node::RowAcceleration(_)
+            | Node::Jacobian(..) => state_input(node),
+        }
+    }
+
+    /// `a symbol b`. A binary operation with a constant on the right takes the `f64` as it is
+    /// (`DualNum` is closed under operations with its primitive); a commutative one with the
+    /// constant on the left is written the other way round (exact).
+    fn binary(
+        &self,
+        a: Id,
+        b: Id,
+        symbol: TokenStream,
+        commutes: bool,
+        in_f64: bool,
+        s: &TokenStream,
+    ) -> TokenStream {
+        if !in_f64 && !self.varies[b] {
+            let (a, b) = (self.operand(a, in_f64, s), self.operand(b, true, s));
+            quote!(#a #symbol #b)
+        } else if !in_f64 && !self.varies[a] && commutes {
+            let (a, b) = (self.operand(a, true, s), self.operand(b, in_f64, s));
+            quote!(#b #symbol #a)
+        } else {
+            let (a, b) = (self.operand(a, in_f64, s), self.operand(b, in_f64, s));
+            quote!(#a #symbol #b)
+        }
+    }
+
     /// The node as a value on `s`: its name, a literal lifted, a constant lifted.
     pub fn scalar(&self, id: Id, s: &TokenStream) -> TokenStream {
         self.operand(id, false, s)
     }
+}
+
+/// What the generated function reads for a node of the state: `__t`, `__q[j]`, `__x[r]`, `__v[j]`,
+/// `__x_dot[r]`, `__x_accel[r]`, `__jacobian[r][j]`.
+fn state_input(node: &Node) -> TokenStream {
+    let (array, i) = match *node {
+        Node::Time => return quote!(__t),
+        Node::Jacobian(r, j) => {
+            let (r, j) = (Literal::usize_unsuffixed(r), Literal::usize_unsuffixed(j));
+            return quote!(__jacobian[#r][#j]);
+        }
+        Node::Coordinate(j) => (quote!(__q), j),
+        Node::Row(r) => (quote!(__x), r),
+        Node::Velocity(j) => (quote!(__v), j),
+        Node::RowVelocity(r) => (quote!(__x_dot), r),
+        Node::RowAcceleration(r) => (quote!(__x_accel), r),
+        _ => unreachable!("an operation is no input of the state"),
+    };
+    let i = Literal::usize_unsuffixed(i);
+    quote!(#array[#i])
 }
 
 fn method(receiver: TokenStream, name: &str) -> TokenStream {

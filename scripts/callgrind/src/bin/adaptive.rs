@@ -33,12 +33,12 @@ mod kepler;
 #[allow(dead_code)]
 mod pendulums;
 // The report's stiff and constrained problems.
-#[path = "../../../../lagrange-bench/src/stiff.rs"]
-#[allow(dead_code, unused_imports)]
-mod stiff;
 #[path = "../../../../lagrange-bench/src/problems.rs"]
 #[allow(dead_code, unused_imports)]
 mod problems;
+#[path = "../../../../lagrange-bench/src/stiff.rs"]
+#[allow(dead_code, unused_imports)]
+mod stiff;
 
 /// A problem: its start (q, q̇), end time and hand-written accelerations.
 struct Problem<const N: usize> {
@@ -163,9 +163,19 @@ fn on_field<P: EmbeddedPair, C: Coordinates<N>, const N: usize>(
     let mut a = field.accelerations(t, &q, &v).unwrap();
     stats.evaluations += 1;
     let mut memory = method.start(field, (t, &q, &v, &a), &mut stats);
+    let mut scratch = P::scratch::<N>();
+    let mut dense = lagrange::integrate::DenseOutput::constant(t, &q, &v);
     while t < p.t_end {
         let step = method
-            .step::<C, N>(&mut memory, field, (t, &q, &v, &a), p.t_end, &mut stats)
+            .step::<C, N>(
+                &mut memory,
+                &mut scratch,
+                field,
+                (t, &q, &v, &a),
+                p.t_end,
+                &mut stats,
+                &mut dense,
+            )
             .unwrap();
         (t, q, v, a) = (step.t, step.q, step.v, step.a.unwrap());
     }
@@ -181,13 +191,13 @@ fn generated<M: Mechanism<N>, const N: usize>(
 ) -> (f64, usize, usize) {
     let mut s = State::new(0.0, M::Coords::from_array(p.q), M::Coords::from_array(p.v));
     let out = if dop853 {
-        Dop853 {
+        let method = Dop853 {
             dense: false,
             ..Dop853::new(tol, tol)
-        }
-        .integrate(sys, &mut s, p.t_end, &mut [], |_| {})
+        };
+        sys.integrate(method, &mut s, p.t_end, &mut [], |_| {})
     } else {
-        Dopri5::new(tol, tol).integrate(sys, &mut s, p.t_end, &mut [], |_| {})
+        sys.integrate(Dopri5::new(tol, tol), &mut s, p.t_end, &mut [], |_| {})
     }
     .unwrap();
     (s.q.to_array()[0], out.stats.accepted, out.stats.evaluations)

@@ -1,10 +1,10 @@
-//! The integrators' hook (`Dynamics::accelerations_at` on a validated handle) of the report's
+//! The integrators' hook (`Evaluate::accelerations_at` on a validated handle) of the report's
 //! Kepler and FPU chain, and the peers' hand-written right-hand sides, each monomorphised in a
 //! function of its own (`#[inline(never)]`), for reading the machine code: `objdump -d` of
 //! `hooks::kepler` etc., or `mca.sh` (llvm-mca's cycles for one pass). Running it evaluates each
 //! once at a fixed state and prints the results.
 
-use lagrange::__private::Dynamics;
+use lagrange::evaluation::Evaluate;
 use lagrange::prelude::*;
 use std::hint::black_box;
 

@@ -1,31 +1,12 @@
-//! Step-size control shared by the explicit embedded pairs: the starting step, the PI controller
-//! and its step loop, the projection of an accepted step, and the scaled error component.
+//! Step-size control of the embedded pairs: the starting step, the PI controller and its step
+//! loop (the explicit pairs), and the scaled error component.
 
-use super::Dopri5;
+use super::dopri5::settings::Dopri5;
+use super::Stats;
 use crate::error::{Error, Result};
-use crate::integrate::solver::Stats;
-use crate::mechanism::Mechanism;
-use crate::model::{check_state, Coordinates};
 
-/// The starting step of an embedded pair of order `order` (HNW I §II.4, "Starting step size";
-/// Hairer's HINIT): one extra evaluation of q̈.
-pub(crate) fn initial_step<M: Mechanism<N>, const N: usize>(
-    mechanism: &M,
-    st: &Dopri5,
-    start: (f64, &[f64; N], &[f64; N], &[f64; N]),
-    order: i32,
-    stats: &mut Stats,
-) -> f64 {
-    initial_step_on(
-        |t, q, v| mechanism.accelerations_at(t, q, v),
-        st,
-        start,
-        order,
-        stats,
-    )
-}
-
-/// [`initial_step`] on the accelerations `acc` (those of a frozen constraint mode, say).
+/// The starting step of an embedded pair of order `order` on the accelerations `acc` (HNW I
+/// §II.4, "Starting step size"; Hairer's HINIT): one extra evaluation of q̈.
 pub(crate) fn initial_step_on<const N: usize>(
     acc: impl FnOnce(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
     st: &Dopri5,
@@ -93,7 +74,8 @@ pub struct Controller {
 /// dynamics) counts as a rejection with the step cut by `fac_min`; when the step can no longer
 /// shrink (0.1·h below round-off of t) the last failure is returned
 /// ([`Error::StepSizeUnderflow`] if steps were rejected only for accuracy).
-#[allow(clippy::too_many_arguments)]
+// `!(a > b)` is deliberate: it also refuses NaN.
+#[allow(clippy::too_many_arguments, clippy::neg_cmp_op_on_partial_ord)]
 #[inline(always)]
 pub(crate) fn adaptive_step<T>(
     method: &'static str,
@@ -105,21 +87,12 @@ pub(crate) fn adaptive_step<T>(
     stats: &mut Stats,
     mut attempt: impl FnMut(f64, &mut Stats) -> Result<(T, f64)>,
 ) -> Result<(T, f64, f64)> {
-    if !(t_limit > t) || !t_limit.is_finite() {
-        return Err(Error::InvalidEndTime { t, t_end: t_limit });
-    }
+    check_limit(t, t_limit)?;
     let expo1 = exponent - st.beta * weight;
     let mut last_rejected = false;
     let mut last_error: Option<Error> = None;
     loop {
-        let mut h = control.h.min(st.h_max);
-        let last = t + 1.01 * h >= t_limit;
-        if last {
-            h = t_limit - t;
-        }
-        if !(t + 0.1 * h > t) {
-            return Err(last_error.unwrap_or(Error::StepSizeUnderflow { method, t, h }));
-        }
+        let (h, last) = next_attempt(method, (t, t_limit), control.h, st.h_max, &mut last_error)?;
         match attempt(h, stats) {
             Ok((trial, err)) => {
                 // err^(1/8) (Dop853's classical controller) as three square roots, a few
@@ -160,29 +133,43 @@ pub(crate) fn adaptive_step<T>(
     }
 }
 
-/// Projects an accepted step's end (q₁, q̇₁) onto the constraints (a no-op without any) and checks
-/// the projected state. q̈ is not evaluated again there: the step's last evaluation, at the end
-/// before the projection, stays the first stage of the next step. The projection moves the state
-/// by one step's drift off the constraints, which is of the order of the step's local error,
-/// O(hᵖ⁺¹) (the exact flow keeps g = 0, so g(q₁) is G times the local error); q̈ differs between
-/// the two points by as much, and the next step takes it times h, so the perturbation is
-/// O(hᵖ⁺²), below the local error the step controls, and the order is kept.
-pub(crate) fn project_accepted<M: Mechanism<N>, const N: usize>(
-    mechanism: &M,
-    t: f64,
-    (q1, v1): ([f64; N], [f64; N]),
-) -> Result<([f64; N], [f64; N])> {
-    // A declaration without constraint rows has nothing to project onto (the hook is a no-op):
-    // nothing to copy or check.
-    if matches!(M::CONSTRAINTS, Some(0)) {
-        return Ok((q1, v1));
+/// Refuses a step limit not after t ([`Error::InvalidEndTime`]; written so that a NaN limit is
+/// refused too).
+// `!(a > b)` is deliberate: it also refuses NaN.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+#[inline(always)]
+pub(crate) fn check_limit(t: f64, t_limit: f64) -> Result<()> {
+    if !(t_limit > t) {
+        return Err(Error::InvalidEndTime { t, t_end: t_limit });
     }
-    let (mut qp, mut vp) = (q1, v1);
-    mechanism.project(t, &mut qp, &mut vp)?;
-    if qp != q1 || vp != v1 {
-        check_state(&M::Coords::NAMES, t, &qp, &vp)?;
+    Ok(())
+}
+
+/// The size of the next attempt of an adaptive step from t towards `t_limit`: the `proposed` step
+/// bounded by `h_max`, and shortened to land on `t_limit` when it would end within 1 % of it or
+/// past it (then `true`: the last step before the limit). When the step can no longer shrink
+/// (0.1·h below round-off of t) the last failure is returned, [`Error::StepSizeUnderflow`] if
+/// there was none.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+#[inline(always)]
+pub(crate) fn next_attempt(
+    method: &'static str,
+    (t, t_limit): (f64, f64),
+    proposed: f64,
+    h_max: f64,
+    last_error: &mut Option<Error>,
+) -> Result<(f64, bool)> {
+    let mut h = proposed.min(h_max);
+    let last = t + 1.01 * h >= t_limit;
+    if last {
+        h = t_limit - t;
     }
-    Ok((qp, vp))
+    if !(t + 0.1 * h > t) {
+        return Err(last_error
+            .take()
+            .unwrap_or(Error::StepSizeUnderflow { method, t, h }));
+    }
+    Ok((h, last))
 }
 
 /// e/sc of the error norm, with 0/0 = 0 (an exact component with a zero scale, possible when

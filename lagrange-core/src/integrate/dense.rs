@@ -1,5 +1,6 @@
-//! The dense output of one step ([`DenseOutput`]), the location of an event's root on it, and the
-//! order-4 continuous extension of a Dormand–Prince step.
+//! The dense output of one step ([`DenseOutput`]): a polynomial in time for (q, q̇) over the step,
+//! what events are located on, and the cubic Hermite interpolant every method without a
+//! continuous extension of its own uses.
 
 /// Width under which an event's bracket counts as located (absolute, in time units; widened to
 /// 4 ulp of t for large t).
@@ -7,12 +8,12 @@ pub const EVENT_TIME_TOLERANCE: f64 = 1e-13;
 
 /// The dense output of one step: a polynomial in time for q and v over [t₀, t₀ + h], in the form
 /// of Hairer's CONTD5, y(t₀ + θh) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))): of order 4 for
-/// Dopri5, and the cubic Hermite interpolant (r₅ = 0) of the end values and derivatives for the
-/// other methods.
+/// Dopri5, of order 7 for Dop853 (eight coefficients), the collocation polynomial for Radau5, and
+/// the cubic Hermite interpolant (r₅ = 0) of the end values and derivatives for the other methods.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DenseOutput<const N: usize> {
     t0: f64,
-    pub(super) h: f64,
+    pub(crate) h: f64,
     q: [[f64; N]; 8],
     v: [[f64; N]; 8],
     /// Coefficients in use: 5 (Dopri5, Hermite) or 8 (Dop853).
@@ -20,7 +21,8 @@ pub struct DenseOutput<const N: usize> {
 }
 
 impl<const N: usize> DenseOutput<N> {
-    pub(crate) fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
+    /// The constant (q, q̇) at t: the dense output before a first step.
+    pub fn constant(t: f64, q: &[f64; N], v: &[f64; N]) -> Self {
         let mut d = DenseOutput {
             t0: t,
             h: 0.0,
@@ -50,6 +52,41 @@ impl<const N: usize> DenseOutput<N> {
         self.q[4] = [0.0; N];
         self.v[4] = [0.0; N];
         (self.t0, self.h, self.terms) = (t0, h, 5);
+    }
+
+    /// Without q̈ at the ends: the cubic Hermite interpolant of q (from q and q̇ at both ends) and
+    /// the straight line between the two q̇ — what a fixed-step solver without dense output keeps,
+    /// written over `self` in place.
+    #[inline]
+    pub(crate) fn set_hermite_positions(
+        &mut self,
+        t0: f64,
+        h: f64,
+        (q0, v0): (&[f64; N], &[f64; N]),
+        (q1, v1): (&[f64; N], &[f64; N]),
+    ) {
+        hermite_rows(&mut self.q, h, q0, q1, v0, v1);
+        for i in 0..N {
+            self.v[0][i] = v0[i];
+            self.v[1][i] = v1[i] - v0[i];
+            self.v[2][i] = 0.0;
+            self.v[3][i] = 0.0;
+        }
+        self.q[4] = [0.0; N];
+        self.v[4] = [0.0; N];
+        (self.t0, self.h, self.terms) = (t0, h, 5);
+    }
+
+    /// A continuous extension from its coefficients r₁…r₅ (Dopri5's CONTD5, the collocation
+    /// polynomial of Radau5) for q and for v.
+    pub(crate) fn from_five(t0: f64, h: f64, q: [[f64; N]; 8], v: [[f64; N]; 8]) -> Self {
+        DenseOutput {
+            t0,
+            h,
+            q,
+            v,
+            terms: 5,
+        }
     }
 
     /// Dop853's continuous extension of order 7 (Hairer's CONTD8): r₁…r₈ for q and for v.
@@ -189,40 +226,5 @@ pub(crate) fn hermite_rows<const N: usize>(
         r[1][i] = diff;
         r[2][i] = bspl;
         r[3][i] = diff - h * d1[i] - bspl;
-    }
-}
-
-/// The dense output of an accepted [`trial`](super::trial) of size h from (t₀, q₀, v₀) to
-/// (q₁, v₁): Hairer's CONTD5 (HNW I §II.6), order 4, no extra evaluation. Inlined, so that the
-/// output is built where it is stored.
-#[inline]
-pub(crate) fn dense_output<const N: usize>(
-    t0: f64,
-    h: f64,
-    (q0, v0): (&[f64; N], &[f64; N]),
-    (q1, v1): (&[f64; N], &[f64; N]),
-    k: &[[f64; N]; 8],
-) -> DenseOutput<N> {
-    // Stage 1 is (v₀, q̈₀) and stage 7 (FSAL) is (v₁, q̈₁): the derivatives of (q, v) at the ends.
-    let [kq1, ka1, kq7, ka7, dq, dv, _, _] = k;
-    let make = |y0: &[f64; N],
-                y1: &[f64; N],
-                k1: &[f64; N],
-                k7: &[f64; N],
-                d: &[f64; N]|
-     -> [[f64; N]; 8] {
-        let mut r = [[0.0; N]; 8];
-        hermite_rows(&mut r, h, y0, y1, k1, k7);
-        for i in 0..N {
-            r[4][i] = h * d[i];
-        }
-        r
-    };
-    DenseOutput {
-        t0,
-        h,
-        q: make(q0, q1, kq1, kq7, dq),
-        v: make(v0, v1, ka1, ka7, dv),
-        terms: 5,
     }
 }

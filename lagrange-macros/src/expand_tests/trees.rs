@@ -1,0 +1,159 @@
+//! Bodies placed from other bodies: the tree of translations and the rigid tree pass.
+
+use super::{pretty, snapshot};
+use crate::expand::expand;
+use proc_macro2::TokenStream;
+use quote::quote;
+
+#[test]
+fn a_body_translated_from_another_is_seeded_on_its_own_angle() {
+    // Drag on the second bob: a force, so the equations are not derived in closed form and the
+    // tree of translations serves.
+    let out = pretty(expand(
+        TokenStream::new(),
+        quote! {
+            pub mod double_pendulum {
+                pub struct Coords { pub theta1: f64, pub theta2: f64 }
+                pub struct DoublePendulum { pub m1: f64, pub m2: f64, pub l1: f64, pub l2: f64, pub g: f64, pub c: f64 }
+                #[particle(mass = m1)]
+                fn bob1() -> Vec2 { vec2(theta1.sin(), -theta1.cos()) * l1 }
+                #[particle(mass = m2)]
+                fn bob2() -> Vec2 { bob1 + vec2(theta2.sin(), -theta2.cos()) * l2 }
+                #[gravity]
+                fn down() -> Vec2 { vec2(0.0, -g) }
+                #[force(on = bob2)]
+                fn drag() -> Vec2 { -bob2_dot * c }
+            }
+        },
+    ));
+    // Compared without whitespace: the pretty-printer breaks lines where it likes.
+    let out: String = out.split_whitespace().collect();
+    assert!(!out.contains("__lagrange_closed_form"));
+    // Two coordinates, four rows, seeds one wide, two bodies: bob2 is bob1 plus its own arm.
+    assert!(out.contains("Tree<2,4,1,2>forDoublePendulum"));
+    assert!(out.contains("tree::equations_of_motion::<Self,S,2,4,1,2,>"));
+    assert!(out.contains("parent:::lagrange::__private::core::option::Option::Some(0)"));
+    // The arm alone, seeded on theta2 only: bob1 is not evaluated again on the seeds.
+    assert!(out.contains("fn__lagrange_displacement_bob2<__D:::lagrange::__private::Scalar>(&self,__t:__D,theta2:__D,)"));
+    assert!(out.contains("tree::seed(__q[1],__v[1],0)"));
+}
+
+/// A spatial arm as the README writes it: the tree pass, its three sweeps written body by body, the
+/// joint with no constant rotation before it known as such.
+#[test]
+fn a_spatial_arm_takes_the_rigid_tree_pass() {
+    let out = snapshot(
+        "spatial_arm",
+        quote! {
+            pub mod arm {
+                pub struct Coords { pub q1: f64, pub q2: f64 }
+                pub struct Arm { pub m1: f64, pub m2: f64, pub d: f64, pub e: f64, pub g: f64 }
+                #[rigid_body(mass = m1, inertia = [0.03, 0.025, 0.01])]
+                fn link1() -> Spatial {
+                    let r = rot_z(q1);
+                    spatial(r * vec3(0.0, 0.0, 0.5 * d), r)
+                }
+                #[rigid_body(mass = m2, inertia = [0.03, 0.025, 0.01])]
+                fn link2() -> Spatial {
+                    let r = link1.rotation * rot_y(q2);
+                    let joint = link1.point(vec3(-e, 0.0, 0.5 * d));
+                    spatial(joint + r * vec3(e, 0.0, 0.5 * d), r)
+                }
+                #[gravity]
+                fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+            }
+        },
+    );
+    let squeezed: String = out.split_whitespace().collect();
+    assert!(out.contains("tree::rigid::RigidTree<2, 2> for Arm"));
+    assert!(squeezed
+        .contains("JointKind::Revolute(::lagrange::__private::tree::rigid::spatial::Axis::Y,)"));
+    // The second joint's offset from the first's: (−e, 0, d/2) + (0, 0, d/2), y structurally zero.
+    assert!(out.contains("offset: [true, false, true]"));
+    // The second joint follows its parent's frame with no constant rotation between.
+    assert!(out.contains("rotated: false"));
+    // Each body's step is compiled for its own joint (its code a constant of the tree).
+    for b in 0..2 {
+        let code = format!("{{<Armas::lagrange::__private::tree::rigid::RigidTree<2,2,>>::JOINTS[{b}].code()}},2,>");
+        assert!(squeezed.contains(&format!("__ws.velocity::<{code}(__joints,__k,__q,__v,{b})")));
+        assert!(squeezed.contains(&format!(".articulate::<{code}(__joints,__k,__tau,{b})")));
+        assert!(squeezed.contains(&format!("__ws.accelerate::<{code}(__joints,__k,__qdd,{b})")));
+    }
+    assert!(out.contains("type Prepared = ::lagrange::__private::tree::rigid::RigidConstants<2>"));
+    assert!(out.contains("fn inverse_dynamics_at"));
+    // No dense pass for q̈.
+    assert!(!out.contains("dynamics::equations_of_motion::<Self"));
+}
+
+/// A branched tree (a torso and two legs) is one tree with two branches: both legs' parent is the
+/// torso.
+#[test]
+fn a_branched_tree_takes_the_rigid_tree_pass() {
+    let out = snapshot(
+        "branched_tree",
+        quote! {
+            pub mod legs {
+                pub struct Coords { pub yaw: f64, pub left: f64, pub right: f64 }
+                pub struct Legs { pub m: f64, pub w: f64, pub g: f64 }
+                #[rigid_body(mass = m, inertia = [0.2, 0.15, 0.1])]
+                fn torso() -> Spatial { spatial(vec3(0.0, 0.0, 1.0), rot_z(yaw)) }
+                #[rigid_body(mass = m, inertia = [0.05, 0.05, 0.01])]
+                fn left_leg() -> Spatial {
+                    let r = torso.rotation * rot_x(left);
+                    spatial(torso.point(vec3(w, 0.0, -0.3)) + r * vec3(0.0, 0.0, -0.2), r)
+                }
+                #[rigid_body(mass = m, inertia = [0.05, 0.05, 0.01])]
+                fn right_leg() -> Spatial {
+                    let r = torso.rotation * rot_x(right);
+                    spatial(torso.point(vec3(-w, 0.0, -0.3)) + r * vec3(0.0, 0.0, -0.2), r)
+                }
+                #[gravity]
+                fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+            }
+        },
+    );
+    assert!(out.contains("tree::rigid::RigidTree<3, 3> for Legs"));
+    assert_eq!(
+        out.matches("parent: ::lagrange::__private::core::option::Option::Some(0)")
+            .count(),
+        2
+    );
+}
+
+/// A body declared by its joint frame, with its centre of mass and a full tensor in that frame:
+/// x holds the centre of mass and the principal axes (`principal` of the frame), the bodies seen
+/// by potentials and forces are the frames mapped back (`frame`), the tensor's principal moments
+/// are computed once per `masses`, and `validate` checks the tensor, the centre of mass and the
+/// constant rotations (`rot3`, `rot_axis`).
+#[test]
+fn a_body_declared_by_its_frame() {
+    let out = snapshot(
+        "framed_body",
+        quote! {
+            pub mod arm {
+                pub struct Coords { pub q1: f64, pub q2: f64 }
+                pub struct Arm { pub m: f64, pub l: f64, pub c: f64, pub ixx: f64, pub ixy: f64, pub izz: f64, pub k: f64 }
+                #[rigid_body(mass = m, com = vec3(0.0, 0.0, c), inertia = [[ixx, ixy, 0.0], [ixy, ixx, 0.0], [0.0, 0.0, izz]])]
+                fn upper() -> Spatial { spatial(vec3(0.0, 0.0, 0.0), rot_z(q1)) }
+                #[rigid_body(mass = m, com = vec3(0.0, 0.0, c), inertia = [ixx, ixx, izz])]
+                fn lower() -> Spatial {
+                    upper.joint(vec3(0.0, 0.0, l), rot3([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]) * rot_axis(vec3(0.0, 1.0, 0.0), q2))
+                }
+                #[potential]
+                fn spring() -> f64 { 0.5 * k * lower.position.norm_squared() }
+            }
+        },
+    );
+    // Without the pretty-printer's line breaks.
+    let out: String = out.split_whitespace().collect();
+    assert!(out.contains("fn__lagrange_mass_frame_upper(&self,)"));
+    assert!(out.contains("principal_axes(&__inertia_upper,).0"));
+    assert!(out.contains(".__lagrange_mass_frame_upper().principal(__bodies.upper)"));
+    assert!(out.contains("__frame_lower.frame("));
+    assert!(out.contains("check_inertia_tensor(\"upper\""));
+    assert!(out.contains("check_centre_of_mass(\"lower\""));
+    assert!(out.contains("check_rotation(\"lower\""));
+    assert!(out.contains("check_axis(\"lower\""));
+    // Principal moments need no decomposition: the lower link's frame has no axes to turn.
+    assert!(!out.contains("principal_axes(&__inertia_lower"));
+}

@@ -1,0 +1,222 @@
+//! The declaration a user would write for the bodies of a file, as tokens for `#[mechanism]`:
+//! `Coords` (one field per moving joint), the parameter struct (`g`, and a damping and a friction
+//! coefficient per joint whose `<dynamics>` gives one) with a `Default` holding the file's values,
+//! one `#[rigid_body]` per body placed by its joint frame, gravity, and the joint forces.
+
+use super::frames::{turn_z_to, Vec3};
+use super::parse::Robot;
+use super::tree::{Body, Motion};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::{format_ident, quote};
+
+/// Gravity's default magnitude, Pinocchio's `Model::gravity981` (9.81 m/s², along −z).
+const STANDARD_GRAVITY: f64 = 9.81;
+
+pub struct Declaration<'a> {
+    pub robot: &'a Robot,
+    pub bodies: &'a [Body],
+    /// Per body: its coordinate's identifier and its own.
+    pub coords: Vec<Ident>,
+    pub body_idents: Vec<Ident>,
+    /// The parameter struct's name.
+    pub ty: Ident,
+}
+
+impl Declaration<'_> {
+    /// The module's generated items.
+    pub fn items(&self) -> TokenStream {
+        let coords = &self.coords;
+        let ty = &self.ty;
+        let mut fields = vec![quote!(pub g: f64)];
+        let mut defaults = vec![{
+            let g = number(STANDARD_GRAVITY);
+            quote!(g: #g)
+        }];
+        let mut forces = Vec::new();
+        for (b, q) in self.bodies.iter().zip(coords) {
+            let joint = &self.robot.joints[b.joint];
+            let dot = format_ident!("{}_dot", q);
+            if joint.damping != 0.0 {
+                let c = format_ident!("{}_damping", q);
+                let f = format_ident!("{}_damping_force", q);
+                let v = number(joint.damping);
+                fields.push(quote!(pub #c: f64));
+                defaults.push(quote!(#c: #v));
+                forces.push(quote! {
+                    /// Viscous joint damping, −c q̇ (`<dynamics damping>`).
+                    #[generalized_force(on = #q)]
+                    fn #f() -> f64 { -#c * #dot }
+                });
+            }
+            if joint.friction != 0.0 {
+                let c = format_ident!("{}_friction", q);
+                let f = format_ident!("{}_friction_force", q);
+                let v = number(joint.friction);
+                fields.push(quote!(pub #c: f64));
+                defaults.push(quote!(#c: #v));
+                forces.push(quote! {
+                    /// Coulomb friction of constant magnitude opposing the joint's motion,
+                    /// −f sgn(q̇), zero at rest (`<dynamics friction>`; no sticking):
+                    /// sgn(q̇) = q̇ / max(|q̇|, the least normal f64), exactly ±1 for every normal
+                    /// q̇, 0 at 0, with zero derivative.
+                    #[generalized_force(on = #q)]
+                    fn #f() -> f64 {
+                        -#c * (#dot / #dot.abs().max(2.2250738585072014e-308))
+                    }
+                });
+            }
+        }
+        let bodies = self.bodies.iter().enumerate().map(|(k, b)| self.body(k, b));
+        let doc = format!(
+            "Parameters of the model: `g`, gravity's magnitude along −z, and each joint's \
+             `<dynamics>` coefficients. `{ty}::default()` holds the file's values (g = {STANDARD_GRAVITY})."
+        );
+        quote! {
+            pub struct Coords { #(pub #coords: f64,)* }
+            #[doc = #doc]
+            pub struct #ty { #(#fields,)* }
+            impl ::core::default::Default for #ty {
+                fn default() -> Self { Self { #(#defaults,)* } }
+            }
+            #(#bodies)*
+            /// Gravity along −z.
+            #[gravity]
+            fn gravity() -> Vec3 { vec3(0.0, 0.0, -g) }
+            #(#forces)*
+        }
+    }
+
+    fn body(&self, k: usize, b: &Body) -> TokenStream {
+        let name = &self.body_idents[k];
+        let q = &self.coords[k];
+        let mass = number(b.inertia.mass);
+        let com = vector(b.inertia.centre);
+        let i = b.inertia.inertia.map(|row| row.map(number));
+        let rows = i.iter().map(|r| quote!([#(#r),*]));
+        let inertia = quote!([#(#rows),*]);
+        let joint = &self.robot.joints[b.joint];
+        let doc = format!("Link `{}`, moved by joint `{}`.", b.link, joint.name);
+        let (offset, fixed) = self.placement(b);
+        let parent = b.parent.map(|p| &self.body_idents[p]);
+        let place = |offset: TokenStream, rotation: TokenStream| match parent {
+            Some(p) => quote!(#p.joint(#offset, #rotation)),
+            None => quote!(spatial(#offset, #rotation)),
+        };
+        let pose = match b.motion {
+            Motion::Revolute(axis) => {
+                let turn = revolute(axis, q);
+                let rotation = match fixed {
+                    Some(f) => quote!(#f * #turn),
+                    None => turn,
+                };
+                place(offset, rotation)
+            }
+            Motion::Prismatic(axis) => {
+                // The joint frame turned so that its z axis is the slide's, the slide along it, and
+                // the frame turned back: the link's frame is the joint frame moved along the axis.
+                let (slide, turn, back) = match coordinate_axis(axis) {
+                    Some((k, sign)) => {
+                        let mut c = [quote!(0.0), quote!(0.0), quote!(0.0)];
+                        c[k] = if sign > 0.0 { quote!(#q) } else { quote!(-#q) };
+                        (quote!(vec3(#(#c),*)), None, None)
+                    }
+                    None => {
+                        // A turn about z × a by the angle between z and a maps z to a.
+                        let (u, angle) = turn_z_to(axis);
+                        let (u, there, back) = (vector(u), number(angle), number(-angle));
+                        (
+                            quote!(vec3(0.0, 0.0, #q)),
+                            Some(quote!(rot_axis(#u, #there))),
+                            Some(quote!(rot_axis(#u, #back))),
+                        )
+                    }
+                };
+                let rotation = match (fixed, turn) {
+                    (Some(f), Some(t)) => quote!(#f * #t),
+                    (Some(f), None) => f,
+                    (None, Some(t)) => t,
+                    (None, None) => quote!(rot_z(0.0)),
+                };
+                let frame = place(offset, rotation);
+                let back = back.map(|m| quote!(* #m));
+                quote! {
+                    let frame = #frame;
+                    spatial(frame.point(#slide), frame.rotation #back)
+                }
+            }
+        };
+        quote! {
+            #[doc = #doc]
+            #[rigid_body(mass = #mass, com = #com, inertia = #inertia)]
+            fn #name() -> Spatial { #pose }
+        }
+    }
+
+    /// The joint frame's offset and its constant rotation (`None`: none) in the parent's frame:
+    /// the offset composed through the fixed joints between (the file's `xyz` when there are
+    /// none), the rotation as the file writes it, a product of `rpy`.
+    fn placement(&self, b: &Body) -> (TokenStream, Option<TokenStream>) {
+        let rotation = b.rpys.iter().fold(None, |product, r| {
+            let [r, p, y] = r.map(number);
+            Some(match product {
+                None => quote!(rpy(#r, #p, #y)),
+                Some(before) => quote!(#before * rpy(#r, #p, #y)),
+            })
+        });
+        (vector(b.placement.position), rotation)
+    }
+}
+
+/// A rotation by `q` about the unit `axis`: about a coordinate axis when it is one (±), else
+/// `rot_axis`.
+fn revolute(axis: Vec3, q: &Ident) -> TokenStream {
+    match coordinate_axis(axis) {
+        Some((k, sign)) => {
+            let f = [
+                format_ident!("rot_x"),
+                format_ident!("rot_y"),
+                format_ident!("rot_z"),
+            ][k]
+                .clone();
+            if sign > 0.0 {
+                quote!(#f(#q))
+            } else {
+                quote!(#f(-#q))
+            }
+        }
+        None => {
+            let a = vector(axis);
+            quote!(rot_axis(#a, #q))
+        }
+    }
+}
+
+/// `Some((k, ±1))` when `axis` is ±e_k exactly.
+fn coordinate_axis(axis: Vec3) -> Option<(usize, f64)> {
+    let k = (0..3).find(|&k| axis[k] != 0.0)?;
+    (0..3)
+        .all(|j| j == k || axis[j] == 0.0)
+        .then(|| (k, axis[k].signum()))
+        .filter(|_| axis[k].abs() == 1.0)
+}
+
+fn vector(v: Vec3) -> TokenStream {
+    let [x, y, z] = v.map(number);
+    quote!(vec3(#x, #y, #z))
+}
+
+/// A finite number as a literal, negative ones with a leading `-` (−0 written as 0).
+pub fn number(x: f64) -> TokenStream {
+    if x < 0.0 {
+        let l = Literal::f64_unsuffixed(-x);
+        quote!(-#l)
+    } else {
+        let l = Literal::f64_unsuffixed(x.abs());
+        quote!(#l)
+    }
+}
+
+/// An identifier at the macro call.
+pub fn ident(s: &str) -> Ident {
+    Ident::new(s, Span::call_site())
+}

@@ -1,0 +1,5 @@
+// The path is relative to the crate's manifest directory, here trybuild's project under target/.
+#[lagrange::urdf("../../../../tests/urdf/bad/two_parents.urdf")]
+pub mod robot {}
+
+fn main() {}
