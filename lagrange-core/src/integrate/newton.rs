@@ -81,32 +81,45 @@ pub fn max_norm<const N: usize>(x: &SVector<f64, N>) -> f64 {
 
 /// The unknowns of a Newton iteration: a vector, or the S stage vectors of a collocation method.
 pub(crate) trait Unknowns: Copy {
-    /// x ← x − δ.
-    fn subtract(&mut self, delta: &Self);
+    /// x ← x − δ, and the weighted norms (‖δ‖, ‖x‖) of the increment and of the new iterate (see
+    /// [`weighted_norm`](Unknowns::weighted_norm)), in one pass.
+    fn subtract_measured(&mut self, delta: &Self, weights: &Self) -> (f64, f64);
     /// maxᵢ |xᵢ|·wᵢ: the unknowns measured with weights w that make their components comparable
     /// (see [`NewtonScale`]).
     fn weighted_norm(&self, weights: &Self) -> f64;
 }
 
 impl<const N: usize> Unknowns for SVector<f64, N> {
-    fn subtract(&mut self, delta: &Self) {
-        *self -= delta;
-    }
-    fn weighted_norm(&self, weights: &Self) -> f64 {
-        let mut m = 0.0f64;
-        for i in 0..N {
-            m = m.max(self[i].abs() * weights[i]);
+    #[inline(always)]
+    fn subtract_measured(&mut self, delta: &Self, weights: &Self) -> (f64, f64) {
+        let (mut d, mut s) = (0.0f64, 0.0f64);
+        for ((x, dx), w) in self.iter_mut().zip(delta.iter()).zip(weights.iter()) {
+            *x -= dx;
+            d = d.max(dx.abs() * w);
+            s = s.max(x.abs() * w);
         }
-        m
+        (d, s)
+    }
+    #[inline(always)]
+    fn weighted_norm(&self, weights: &Self) -> f64 {
+        self.iter()
+            .zip(weights.iter())
+            .fold(0.0f64, |m, (x, w)| m.max(x.abs() * w))
     }
 }
 
 impl<const N: usize, const S: usize> Unknowns for [SVector<f64, N>; S] {
-    fn subtract(&mut self, delta: &Self) {
-        for (x, d) in self.iter_mut().zip(delta) {
-            *x -= d;
+    #[inline(always)]
+    fn subtract_measured(&mut self, delta: &Self, weights: &Self) -> (f64, f64) {
+        let (mut d, mut s) = (0.0f64, 0.0f64);
+        for ((x, dx), w) in self.iter_mut().zip(delta).zip(weights) {
+            let (dj, sj) = x.subtract_measured(dx, w);
+            d = d.max(dj);
+            s = s.max(sj);
         }
+        (d, s)
     }
+    #[inline(always)]
     fn weighted_norm(&self, weights: &Self) -> f64 {
         self.iter()
             .zip(weights)
@@ -252,16 +265,15 @@ pub(crate) fn newton<U: Unknowns>(
         stats.newton_iterations += 1;
         let (delta, r) = iteration(x)?;
         residual = r;
-        x.subtract(&delta);
         let NewtonScale {
             weights,
             size,
             resolution,
-        } = *measure.get_or_insert_with(|| (scale.take().expect("asked for once"))());
-        let d = delta.weighted_norm(&weights);
-        let s = x.weighted_norm(&weights).max(size);
+        } = measure.get_or_insert_with(|| (scale.take().expect("asked for once"))());
+        let (d, norm) = x.subtract_measured(&delta, weights);
+        let s = norm.max(*size);
         let theta = d / previous;
-        let floor = d <= 1e-10 * s.max(resolution);
+        let floor = d <= 1e-10 * s.max(*resolution);
         // An increment above 1e-10 of the unknowns' own size is far from their rounding: its θ
         // measures the contraction (what the caller's Jacobian reuse is decided on) even where the
         // equations' resolution already lets the iteration stop at the floor.

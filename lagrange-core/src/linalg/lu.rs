@@ -51,6 +51,7 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
 
     /// Factorises `a`; `None` when an entry is not finite, a row or column is zero, or a pivot of
     /// the equilibrated matrix is below [`SINGULAR_PIVOT`] (its rows' largest entries are 1).
+    #[inline]
     pub fn factor(a: &[[SMatrix<f64, N, N>; S]; S]) -> Option<Self> {
         let mut f = BlockLu {
             lu: *a,
@@ -111,8 +112,10 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
     fn equilibration(&self) -> Option<([[f64; N]; S], [[f64; N]; S])> {
         let dim = N * S;
         let mut columns = [[0.0f64; N]; S];
-        // x·0 is 0 exactly when x is finite: one test for every entry.
+        // x·0 is 0 exactly when x is finite: one test for every entry; a zero column makes its
+        // scale infinite (and then every row's), a zero row its own.
         let mut zero = 0.0f64;
+        let mut finite = true;
         for c in 0..dim {
             let mut largest = 0.0f64;
             for r in 0..dim {
@@ -120,7 +123,9 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
                 zero += x * 0.0;
                 largest = largest.max(x.abs());
             }
-            columns[c / N][c % N] = 1.0 / largest;
+            let scale = 1.0 / largest;
+            finite &= scale.is_finite();
+            columns[c / N][c % N] = scale;
         }
         let mut rows = [[0.0f64; N]; S];
         for r in 0..dim {
@@ -128,11 +133,11 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
             for c in 0..dim {
                 largest = largest.max(self.get(r, c).abs() * columns[c / N][c % N]);
             }
-            rows[r / N][r % N] = 1.0 / largest;
+            let scale = 1.0 / largest;
+            finite &= scale.is_finite();
+            rows[r / N][r % N] = scale;
         }
-        // A zero column makes its scale infinite, and then every row's; a zero row its own.
-        let finite = |x: &[[f64; N]; S]| x.iter().flatten().all(|s| s.is_finite());
-        (zero == 0.0 && finite(&columns) && finite(&rows)).then_some((rows, columns))
+        (zero == 0.0 && finite).then_some((rows, columns))
     }
 
     /// Solves A x = b with the factorisation.
