@@ -256,24 +256,55 @@ pub(crate) fn newton<U: Unknowns>(
     scale: impl FnOnce() -> NewtonScale<U>,
     mut iteration: impl FnMut(&U) -> Result<(U, f64)>,
 ) -> Result<NewtonEnd> {
-    let mut previous = f64::INFINITY;
-    let mut theta_max = 0.0f64;
-    let mut residual = f64::NAN;
-    let mut scale = Some(scale);
-    let mut measure: Option<NewtonScale<U>> = None;
-    for k in 1..=max_iterations {
+    // The first iteration before the scale is asked for: a driver may take its weights from it.
+    stats.newton_iterations += 1;
+    let (delta, residual) = iteration(x)?;
+    let scale = scale();
+    let mut test = ConvergenceTest {
+        previous: f64::INFINITY,
+        theta_max: 0.0,
+        residual,
+        stop_when_slow,
+    };
+    if let Some(end) = test.end(1, x.subtract_measured(&delta, &scale.weights), &scale) {
+        return Ok(end);
+    }
+    for k in 2..=max_iterations {
         stats.newton_iterations += 1;
-        let (delta, r) = iteration(x)?;
-        residual = r;
-        let NewtonScale {
-            weights,
-            size,
-            resolution,
-        } = measure.get_or_insert_with(|| (scale.take().expect("asked for once"))());
-        let (d, norm) = x.subtract_measured(&delta, weights);
-        let s = norm.max(*size);
-        let theta = d / previous;
-        let floor = d <= 1e-10 * s.max(*resolution);
+        let (delta, residual) = iteration(x)?;
+        test.residual = residual;
+        if let Some(end) = test.end(k, x.subtract_measured(&delta, &scale.weights), &scale) {
+            return Ok(end);
+        }
+    }
+    Ok(NewtonEnd::Slow {
+        iterations: max_iterations,
+        residual: test.residual,
+    })
+}
+
+/// The state of [`newton`]'s tests between iterations: the last increment's norm, the largest
+/// contraction measured, the last residual's norm.
+struct ConvergenceTest {
+    previous: f64,
+    theta_max: f64,
+    residual: f64,
+    stop_when_slow: bool,
+}
+
+impl ConvergenceTest {
+    /// The end of the iteration after iteration k, whose increment and new iterate have the
+    /// weighted norms `(d, norm)`, if it ends there (see [`newton`]).
+    #[inline(always)]
+    fn end<U>(
+        &mut self,
+        k: usize,
+        (d, norm): (f64, f64),
+        scale: &NewtonScale<U>,
+    ) -> Option<NewtonEnd> {
+        let s = norm.max(scale.size);
+        let theta = d / self.previous;
+        let floor = d <= 1e-10 * s.max(scale.resolution);
         // An increment above 1e-10 of the unknowns' own size is far from their rounding: its θ
         // measures the contraction (what the caller's Jacobian reuse is decided on) even where the
         // equations' resolution already lets the iteration stop at the floor.
@@ -285,28 +316,25 @@ pub(crate) fn newton<U: Unknowns>(
             // θ of an increment at the rounding level is that rounding over the last increment:
             // no measure of the contraction.
             if (!floor || theta <= 0.5) && d > ROUNDING_INCREMENT * s {
-                theta_max = theta_max.max(if k == 1 { 0.0 } else { theta });
+                self.theta_max = self.theta_max.max(if k == 1 { 0.0 } else { theta });
             }
-            return Ok(NewtonEnd::Converged {
+            return Some(NewtonEnd::Converged {
                 iterations: k,
-                theta: theta_max,
+                theta: self.theta_max,
             });
         }
-        if k > 1 && !floor && stop_when_slow && !(theta < 1.0) {
-            return Ok(NewtonEnd::Slow {
+        if k > 1 && !floor && self.stop_when_slow && !(theta < 1.0) {
+            return Some(NewtonEnd::Slow {
                 iterations: k,
-                residual,
+                residual: self.residual,
             });
         }
         if k > 1 && measured {
-            theta_max = theta_max.max(theta);
+            self.theta_max = self.theta_max.max(theta);
         }
-        previous = d;
+        self.previous = d;
+        None
     }
-    Ok(NewtonEnd::Slow {
-        iterations: max_iterations,
-        residual,
-    })
 }
 
 /// Whether the methods on the canonical equations (implicit midpoint, Gauss–Legendre) add the
