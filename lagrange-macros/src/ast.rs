@@ -45,20 +45,51 @@ const LAGRANGE_PRELUDE: &[&str] = &[
 ];
 
 /// One `f64` field of the coordinates or parameters struct, or an array `[f64; LEN]` of
-/// coordinates.
+/// coordinates or parameters.
 #[derive(Clone)]
 pub struct Field {
     pub attrs: Vec<Attribute>,
     pub ident: Ident,
-    /// For an array coordinate: its length as written (a literal or a module `const`) and its
+    /// For an array coordinate or parameter: its length as written (a literal or a module `const`) and its
     /// value, once resolved.
     pub array: Option<(syn::Expr, usize)>,
 }
 
 impl Field {
-    /// Generalized coordinates this field holds.
+    /// Generalized coordinates (or parameter values) this field holds.
     pub fn slots(&self) -> usize {
         self.array.as_ref().map_or(1, |(_, n)| *n)
+    }
+
+    /// The field's type in `f64` code: `f64`, or `[f64; LEN]` for an array.
+    pub fn f64_type(&self) -> proc_macro2::TokenStream {
+        match &self.array {
+            Some((_, n)) => {
+                let n = proc_macro2::Literal::usize_unsuffixed(*n);
+                quote::quote!([f64; #n])
+            }
+            None => quote::quote!(f64),
+        }
+    }
+
+    /// `let l: f64 = self.l;` (`let m: [f64; 3] = self.m;` for an array): a parameter bound in
+    /// `f64` code.
+    pub fn bind_f64(&self) -> proc_macro2::TokenStream {
+        let (ident, ty) = (&self.ident, self.f64_type());
+        quote::quote!(let #ident: #ty = self.#ident;)
+    }
+
+    /// `let l = <D>::from(self.l);` (`let m: [D; 3] = self.m.map(<D>::from);` for an array): a
+    /// parameter lifted to the scalar `d`.
+    pub fn bind_lifted(&self, d: &proc_macro2::TokenStream) -> proc_macro2::TokenStream {
+        let ident = &self.ident;
+        match &self.array {
+            Some((_, n)) => {
+                let n = proc_macro2::Literal::usize_unsuffixed(*n);
+                quote::quote!(let #ident: [#d; #n] = self.#ident.map(<#d>::from);)
+            }
+            None => quote::quote!(let #ident = <#d>::from(self.#ident);),
+        }
     }
 }
 
@@ -183,24 +214,35 @@ impl Mechanism {
     }
 
     fn resolve_array_lengths(&mut self, cx: &Ctxt) {
-        let Some((coords_struct, mut fields)) = self.coords.take() else {
-            return;
-        };
-        for field in &mut fields {
+        if let Some((coords_struct, mut fields)) = self.coords.take() {
+            self.resolve_lengths(cx, &mut fields, "coordinates");
+            self.coords = Some((coords_struct, fields));
+        }
+        if let Some((params_struct, mut fields)) = self.params.take() {
+            self.resolve_lengths(cx, &mut fields, "parameters");
+            self.params = Some((params_struct, fields));
+        }
+    }
+
+    /// Each array field's length, from its written expression; `what` names the struct's fields.
+    fn resolve_lengths(&self, cx: &Ctxt, fields: &mut [Field], what: &str) {
+        for field in fields {
             if let Some((expr, len)) = &mut field.array {
                 match self.constant_length(expr) {
-                    // `theta: [f64; 0]`: nothing moves.
-                    Some(0) => cx.error_spanned_by(&*expr, "an array of coordinates needs at least one element"),
+                    // `theta: [f64; 0]`: nothing moves (no parameter either).
+                    Some(0) => cx.error_spanned_by(
+                        &*expr,
+                        format!("an array of {what} needs at least one element"),
+                    ),
                     Some(n) => *len = n,
                     // `theta: [f64; links()]`: the macro needs the length.
                     None => cx.error_spanned_by(
                         &*expr,
-                        "the length of an array of coordinates is an integer literal or a `const NAME: usize = <integer>;` of this module",
+                        format!("the length of an array of {what} is an integer literal or a `const NAME: usize = <integer>;` of this module"),
                     ),
                 }
             }
         }
-        self.coords = Some((coords_struct, fields));
     }
 
     fn add_item(&mut self, cx: &Ctxt, item: Item) {
@@ -367,14 +409,15 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, coords: bool) -> Vec<Field> {
                     },
                 );
                 let array = match ungroup_type(&f.ty) {
-                    // `pub theta: [f64; LINKS]`: an array of coordinates.
-                    Type::Array(a) if coords && is_f64(&a.elem) => Some((a.len.clone(), 0)),
+                    // `pub theta: [f64; LINKS]`: an array of coordinates, or of parameters
+                    // (`pub m: [f64; LINKS]`, a family's masses read as `m[i]`).
+                    Type::Array(a) if is_f64(&a.elem) => Some((a.len.clone(), 0)),
                     // `pub l: f32`: everything is f64 (and lifted to dual numbers).
                     ty if !is_f64(ty) => {
                         let message = if coords {
                             "coordinates are `f64` or arrays `[f64; LEN]`"
                         } else {
-                            "fields of a mechanism's structs are `f64`"
+                            "parameters are `f64` or arrays `[f64; LEN]`"
                         };
                         cx.error_spanned_by(ty, message);
                         None

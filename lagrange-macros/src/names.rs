@@ -8,22 +8,31 @@ use syn::{Expr, Ident, Pat};
 
 /// Every free single-segment name in `block`, in order of appearance (with repeats).
 pub fn free_names(block: &syn::Block) -> Vec<Ident> {
-    let mut visitor = FreeNames {
-        scopes: vec![HashSet::new()],
-        free: Vec::new(),
-    };
+    let mut visitor = FreeNames::default();
     visitor.visit_block(block);
     visitor.free
 }
 
 /// Every free name of an expression (a mass or an inertia).
 pub fn free_names_of_expr(expr: &Expr) -> Vec<Ident> {
-    let mut visitor = FreeNames {
-        scopes: vec![HashSet::new()],
-        free: Vec::new(),
-    };
+    let mut visitor = FreeNames::default();
     visitor.visit_expr(expr);
     visitor.free
+}
+
+/// The free names of `block` that stand alone as an operand of an arithmetic operator
+/// (`vec2(..) * l`, `-l`, `l + 1.0`): what must be a scalar there.
+pub fn free_operands(block: &syn::Block) -> Vec<Ident> {
+    let mut visitor = FreeNames::default();
+    visitor.visit_block(block);
+    visitor.operands
+}
+
+/// [`free_operands`] of an expression.
+pub fn free_operands_of_expr(expr: &Expr) -> Vec<Ident> {
+    let mut visitor = FreeNames::default();
+    visitor.visit_expr(expr);
+    visitor.operands
 }
 
 /// The free names the *value* of `block` depends on: like [`free_names`], but a top-level `let`
@@ -87,9 +96,34 @@ pub fn value_names(block: &syn::Block) -> Vec<Ident> {
 struct FreeNames {
     scopes: Vec<HashSet<String>>,
     free: Vec<Ident>,
+    /// The free names that are an operand of a binary or unary operator.
+    operands: Vec<Ident>,
+}
+
+impl Default for FreeNames {
+    fn default() -> Self {
+        FreeNames {
+            scopes: vec![HashSet::new()],
+            free: Vec::new(),
+            operands: Vec::new(),
+        }
+    }
 }
 
 impl FreeNames {
+    /// Records `operand` when it is a free name alone (in parentheses or not).
+    fn note_operand(&mut self, operand: &Expr) {
+        let operand = match crate::ast::ungroup(operand) {
+            Expr::Paren(p) => crate::ast::ungroup(&p.expr),
+            other => other,
+        };
+        if let Expr::Path(p) = operand {
+            if let Some(ident) = p.path.get_ident().filter(|i| !self.is_bound(i)) {
+                self.operands.push(ident.clone());
+            }
+        }
+    }
+
     fn is_bound(&self, ident: &Ident) -> bool {
         let name = ident.to_string();
         self.scopes.iter().any(|s| s.contains(&name))
@@ -207,6 +241,19 @@ impl<'ast> Visit<'ast> for FreeNames {
             }
         }
         // Longer paths (`std::f64::consts::PI`, `f64::EPSILON`) are rustc's to resolve.
+    }
+
+    fn visit_expr_binary(&mut self, e: &'ast syn::ExprBinary) {
+        self.note_operand(&e.left);
+        self.note_operand(&e.right);
+        visit::visit_expr_binary(self, e);
+    }
+
+    fn visit_expr_unary(&mut self, e: &'ast syn::ExprUnary) {
+        if !matches!(e.op, syn::UnOp::Deref(_)) {
+            self.note_operand(&e.expr);
+        }
+        visit::visit_expr_unary(self, e);
     }
 
     // Macro bodies are opaque token streams.

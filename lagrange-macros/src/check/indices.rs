@@ -5,7 +5,7 @@ use crate::ctxt::Ctxt;
 use std::collections::HashMap;
 use syn::Ident;
 
-/// Indexing an array coordinate or a family: a literal index must be in range, and a family's own
+/// Indexing an array coordinate, an array of parameters or a family: a literal index must be in range, and a family's own
 /// index must not run past an array shorter than the family. Either would index out of bounds at
 /// run time; here it is reported at the index.
 pub(super) fn check_indices(cx: &Ctxt, model: &Model) {
@@ -26,6 +26,40 @@ pub(super) fn check_indices(cx: &Ctxt, model: &Model) {
             family_name: decl.ident(),
         };
         syn::visit::Visit::visit_block(&mut visitor, &decl.block);
+        // A family's mass, inertia and centre of mass may index by its index (`mass = m[i]`).
+        let args = &decl.args;
+        let attributes = args.mass.iter().chain(&args.com).cloned();
+        for expr in attributes.chain(args.inertia.as_ref().map(|i| i.expr())) {
+            syn::visit::Visit::visit_expr(&mut visitor, &expr);
+        }
+    }
+}
+
+/// An array of parameters is read by element: standing alone in arithmetic (`vec2(..) * l` with
+/// `l: [f64; 2]`) it is a mistake that rustc would report twice, in terms of the generated scalar;
+/// here it is one message at the name. (Passed whole to a helper or a method, it is rustc's.)
+pub(super) fn check_arrays_read_by_element(cx: &Ctxt, model: &Model) {
+    let arrays: Vec<String> = model
+        .params
+        .iter()
+        .filter(|p| p.array.is_some())
+        .map(|p| p.ident.to_string())
+        .collect();
+    if arrays.is_empty() {
+        return;
+    }
+    for decl in &model.mechanism.decls {
+        let args = &decl.args;
+        let attributes = args.mass.iter().chain(&args.com).cloned();
+        let attributes = attributes.chain(args.inertia.as_ref().map(|i| i.expr()));
+        let mut operands = crate::names::free_operands(&decl.block);
+        operands.extend(attributes.flat_map(|e| crate::names::free_operands_of_expr(&e)));
+        for name in operands.iter().filter(|n| arrays.contains(&n.to_string())) {
+            cx.error_spanned_by(
+                name,
+                format!("`{name}` is an array of parameters: name one element, `{name}[0]` (or `{name}[i]` in a family)"),
+            );
+        }
     }
 }
 
@@ -39,6 +73,11 @@ fn indexable_lengths(model: &Model) -> HashMap<String, usize> {
             let n = *n;
             lengths.insert(c.ident.to_string(), n);
             lengths.insert(format!("{}_dot", c.ident), n);
+        }
+    }
+    for p in model.params {
+        if let Some((_, n)) = p.array.as_ref().filter(|(_, n)| *n > 0) {
+            lengths.insert(p.ident.to_string(), *n);
         }
     }
     for b in &model.bodies {

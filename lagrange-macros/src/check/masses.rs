@@ -35,7 +35,7 @@ fn check_mass(cx: &Ctxt, model: &Model, body: &Body) {
                 args.kind.name()
             ),
         ),
-        Some(mass) => check_constant(cx, model, mass),
+        Some(mass) => check_attribute(cx, model, body, mass),
     }
 }
 
@@ -48,13 +48,13 @@ fn check_inertia(cx: &Ctxt, model: &Model, body: &Body) {
             &args.attr,
             format!("rigid body `{}` has no inertia: add `inertia = ...` (one moment, or `[I1, I2, I3]`)", body.decl.ident()),
         ),
-        Some(Inertia::Moment(e)) => check_constant(cx, model, e),
+        Some(Inertia::Moment(e)) => check_attribute(cx, model, body, e),
         Some(Inertia::Principal(array)) => {
             // `inertia = [a, b]`: three principal moments.
             if array.elems.len() != 3 {
                 cx.error_spanned_by(array, "principal moments are three: `[I1, I2, I3]`");
             }
-            array.elems.iter().for_each(|e| check_constant(cx, model, e));
+            array.elems.iter().for_each(|e| check_attribute(cx, model, body, e));
         }
         Some(Inertia::Tensor(rows)) => {
             // `inertia = [[a, 0.0], [0.0, b]]`: a tensor in space is 3×3.
@@ -68,7 +68,7 @@ fn check_inertia(cx: &Ctxt, model: &Model, body: &Body) {
                     "an inertia tensor is three rows of three: `[[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]`",
                 );
             }
-            check_constant(cx, model, &syn::Expr::Array(rows.clone()));
+            check_attribute(cx, model, body, &syn::Expr::Array(rows.clone()));
         }
     }
 }
@@ -84,7 +84,7 @@ fn check_centre_of_mass(cx: &Ctxt, model: &Model, body: &Body) {
         cx,
         model,
         Context::CentreOfMass,
-        &names::free_names_of_expr(com),
+        &attribute_names(body, com),
     );
     let (expected, other) = match body.shape {
         Shape::Planar => ("vec2", "vec3"),
@@ -104,6 +104,18 @@ fn check_centre_of_mass(cx: &Ctxt, model: &Model, body: &Body) {
             );
         }
     }
+}
+
+/// A body's mass or inertia is a constant; a family's may name its index (`mass = m[i]`).
+fn check_attribute(cx: &Ctxt, model: &Model, body: &Body, expr: &syn::Expr) {
+    resolve_free_names(cx, model, Context::Mass, &attribute_names(body, expr));
+}
+
+/// The free names of a body's attribute, less a family's own index.
+fn attribute_names(body: &Body, expr: &syn::Expr) -> Vec<syn::Ident> {
+    let index = super::model::family_index(body.decl);
+    let names = names::free_names_of_expr(expr).into_iter();
+    names.filter(|name| Some(name) != index).collect()
 }
 
 /// A mass, inertia or friction coefficient is a constant: it names only parameters and module

@@ -15,7 +15,7 @@ mod resolve;
 mod signatures;
 mod structs;
 
-pub use model::{family_index, Body, Dim, Force, Model, Shape};
+pub use model::{attribute_sets, family_index, Body, Dim, Force, Model, Shape};
 pub(crate) use resolve::GEOMETRY_FUNCTIONS;
 
 use crate::ast::{Decl, Mechanism};
@@ -36,6 +36,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     potentials::check_gravity_covers_every_body(cx, &model);
     masses::check_masses(cx, &model);
     indices::check_indices(cx, &model);
+    indices::check_arrays_read_by_element(cx, &model);
     constraints::check_constraint_count(cx, &model);
     masses::check_coordinates_are_used(cx, &model);
     helpers::check_helper_calls(cx, &model);

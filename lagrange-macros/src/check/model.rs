@@ -79,10 +79,47 @@ impl Body<'_> {
     pub fn members(&self) -> usize {
         self.count.unwrap_or(1)
     }
+
+    /// Whether a family's mass, inertia or `com` names its index (`mass = m[i]`): each member
+    /// then has its own, evaluated with the index bound.
+    pub fn attributes_by_member(&self) -> bool {
+        let (Some(_), Some(index)) = (self.count, family_index(self.decl)) else {
+            return false;
+        };
+        let args = &self.decl.args;
+        let exprs = args.mass.iter().cloned();
+        let exprs = exprs.chain(args.inertia.as_ref().map(|i| i.expr()));
+        let exprs = exprs.chain(args.com.iter().cloned());
+        exprs
+            .flat_map(|e| crate::names::free_names_of_expr(&e))
+            .any(|name| name == *index)
+    }
+
+    /// The member whose attributes member `member` has: itself when they are
+    /// [by member](Body::attributes_by_member), else `None` (one for the whole body).
+    pub fn attribute_member(&self, member: usize) -> Option<usize> {
+        self.attributes_by_member().then_some(member)
+    }
+
+    /// The attribute sets of the body: `[None]`, or one per member.
+    pub fn attribute_members(&self) -> Vec<Option<usize>> {
+        match self.attributes_by_member() {
+            true => (0..self.members()).map(Some).collect(),
+            false => vec![None],
+        }
+    }
     /// Rows of x the body (all its members) occupies.
     pub fn rows(&self) -> usize {
         self.shape.rows() * self.members()
     }
+}
+
+/// Each of `bodies` with each of its attribute sets ([`Body::attribute_members`]): `(body, None)`,
+/// or `(body, Some(k))` for every member k of a family whose attributes are by member.
+pub fn attribute_sets<'b, 'a: 'b>(
+    bodies: impl Iterator<Item = &'b Body<'a>>,
+) -> impl Iterator<Item = (&'b Body<'a>, Option<usize>)> {
+    bodies.flat_map(|b| b.attribute_members().into_iter().map(move |m| (b, m)))
 }
 
 /// A force, torque or generalized force and what it acts on.

@@ -6,7 +6,7 @@ use super::{
     bind_inputs_from, lit, optimized_blocks_from, position_type, prelude, private, Params,
 };
 use crate::attr::Inertia;
-use crate::check::{self, Body, Dim, Model, Shape};
+use crate::check::{self, attribute_sets, Body, Dim, Model, Shape};
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 
@@ -116,9 +116,13 @@ pub(super) fn inherent_impl(model: &Model) -> TokenStream {
     }
 }
 
-/// The name of the method that gives a framed body's mass frame ([`mass_frame_fns`]).
-pub(crate) fn mass_frame_method(body: &Body) -> Ident {
-    format_ident!("__lagrange_mass_frame_{}", body.decl.ident())
+/// The name of the method that gives a framed body's mass frame ([`mass_frame_fns`]): member k's
+/// for a family whose attributes are by member (`member` `Some(k)`).
+pub(crate) fn mass_frame_method(body: &Body, member: Option<usize>) -> Ident {
+    match member {
+        None => format_ident!("__lagrange_mass_frame_{}", body.decl.ident()),
+        Some(k) => format_ident!("__lagrange_mass_frame{}_{}", k, body.decl.ident()),
+    }
 }
 
 /// For each body declared by its frame ([`Body::is_framed`]), `__lagrange_mass_frame_<body>`:
@@ -128,14 +132,17 @@ pub(crate) fn mass_frame_method(body: &Body) -> Ident {
 fn mass_frame_fns(model: &Model) -> TokenStream {
     let p = private();
     let prelude = prelude();
-    let methods = model.bodies.iter().filter(|b| b.is_framed()).map(|body| {
+    let framed = attribute_sets(model.bodies.iter().filter(|b| b.is_framed()));
+    let methods = framed.map(|(body, member)| {
         let args = &body.decl.args;
-        let method = mass_frame_method(body);
+        let method = mass_frame_method(body, member);
+        let index = super::model::bind_family_index(body, member);
         let mut used = std::collections::BTreeSet::new();
         for expr in args.com.iter().cloned().chain(args.inertia.as_ref().map(|i| i.expr())) {
             used.extend(crate::names::free_names_of_expr(&expr).iter().map(|i| i.to_string()));
         }
-        let params = model.params.iter().map(|f| &f.ident).filter(|f| used.contains(&f.to_string()));
+        let params = model.params.iter().filter(|f| used.contains(&f.ident.to_string()));
+        let params = params.map(|f| f.bind_f64());
         let (ty, value) = match body.shape {
             Shape::Planar => {
                 let com = args.com.as_ref().expect("a framed planar body has a `com`");
@@ -159,7 +166,8 @@ fn mass_frame_fns(model: &Model) -> TokenStream {
             #[allow(unused_variables, clippy::all)]
             fn #method(&self) -> #ty {
                 #prelude
-                #( let #params: f64 = self.#params; )*
+                #(#params)*
+                #index
                 #value
             }
         }
@@ -209,7 +217,7 @@ pub(super) fn bodies_fn(model: &Model, params: Params) -> TokenStream {
             quote!(fn __lagrange_bodies<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n]) -> Bodies<__D>)
         }
         Params::Array => {
-            let np = lit(model.params.len());
+            let np = lit(crate::ast::slot_count(model.params));
             quote!(fn __lagrange_bodies_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n]) -> Bodies<__D>)
         }
     };
@@ -326,29 +334,36 @@ fn flatten_one(body: &Body, b: &TokenStream) -> Vec<TokenStream> {
     }
 }
 
-/// `let __frame_<body> = self.__lagrange_mass_frame_<body>();` for each framed body.
+/// `let __frame_<body> = self.__lagrange_mass_frame_<body>();` for each framed body (each member
+/// of a family whose frames are by member).
 fn bind_mass_frames(model: &Model) -> TokenStream {
-    let frames = model.bodies.iter().filter(|b| b.is_framed()).map(|b| {
-        let (frame, method) = (mass_frame_binding(b), mass_frame_method(b));
+    let framed = attribute_sets(model.bodies.iter().filter(|b| b.is_framed()));
+    let frames = framed.map(|(b, member)| {
+        let (frame, method) = (mass_frame_binding(b, member), mass_frame_method(b, member));
         quote!(let #frame = self.#method();)
     });
     quote!(#(#frames)*)
 }
 
-/// The local a body's mass frame is bound to ([`bind_mass_frames`]).
-fn mass_frame_binding(body: &Body) -> Ident {
-    format_ident!("__frame_{}", body.decl.ident())
+/// The local a body's mass frame (member k's, `member` `Some(k)`) is bound to
+/// ([`bind_mass_frames`]).
+fn mass_frame_binding(body: &Body, member: Option<usize>) -> Ident {
+    match member {
+        None => format_ident!("__frame_{}", body.decl.ident()),
+        Some(k) => format_ident!("__frame{}_{}", k, body.decl.ident()),
+    }
 }
 
 /// A body (every member of a family) from its rows of x: its pose as its function returns it
 /// (for a framed body, the frame of its centre of mass and principal axes mapped back).
 fn body_from_rows(body: &Body) -> TokenStream {
     let x = quote!(__x);
-    let member = |first: usize| {
+    let member = |k: usize| {
+        let first = body.row + k * body.shape.rows();
         let principal = unflatten_at(body, first, &x, false);
         match body.is_framed() {
             true => {
-                let frame = mass_frame_binding(body);
+                let frame = mass_frame_binding(body, body.attribute_member(k));
                 quote!(#frame.frame(#principal))
             }
             false => principal,
@@ -356,10 +371,10 @@ fn body_from_rows(body: &Body) -> TokenStream {
     };
     match body.count {
         Some(n) => {
-            let members = (0..n).map(|k| member(body.row + k * body.shape.rows()));
+            let members = (0..n).map(member);
             quote!([#(#members),*])
         }
-        None => member(body.row),
+        None => member(0),
     }
 }
 
@@ -367,11 +382,12 @@ fn body_from_rows(body: &Body) -> TokenStream {
 /// pose its function returns (for a framed body, of the frame's origin).
 fn velocity_from_rows(body: &Body) -> TokenStream {
     let (x, x_dot) = (quote!(__x), quote!(__x_dot));
-    let member = |first: usize| {
+    let member = |k: usize| {
+        let first = body.row + k * body.shape.rows();
         let velocity = unflatten_at(body, first, &x_dot, true);
         match body.is_framed() {
             true => {
-                let frame = mass_frame_binding(body);
+                let frame = mass_frame_binding(body, body.attribute_member(k));
                 let principal = unflatten_at(body, first, &x, false);
                 quote!(#frame.frame_velocity(&#principal, #velocity))
             }
@@ -380,10 +396,10 @@ fn velocity_from_rows(body: &Body) -> TokenStream {
     };
     match body.count {
         Some(n) => {
-            let members = (0..n).map(|k| member(body.row + k * body.shape.rows()));
+            let members = (0..n).map(member);
             quote!([#(#members),*])
         }
-        None => member(body.row),
+        None => member(0),
     }
 }
 

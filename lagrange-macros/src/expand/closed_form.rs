@@ -459,8 +459,7 @@ impl Writer {
     fn constant_inputs(&self, model: &Model, equations: &Equations) -> TokenStream {
         let (p, n, k) = (private(), lit(model.dof()), lit(model.rows));
         let mut out = TokenStream::new();
-        let named = model.params.iter().map(|f| &f.ident);
-        out.extend(quote!(#(let #named: f64 = self.#named;)*));
+        out.extend(model.params.iter().map(|f| f.bind_f64()));
         for (i, constant) in equations.constants.iter().enumerate() {
             if self.atoms.contains(&Atom::Constant(i)) {
                 let ident = format_ident!("__constant_{}", i);

@@ -217,7 +217,7 @@ fn velocity_bindings(model: &Model) -> TokenStream {
 fn friction_fn(model: &Model) -> TokenStream {
     let p = private();
     let constraints = quote!(#p::lagrange_core::constraints);
-    let params = model.params.iter().map(|p| &p.ident);
+    let params: proc_macro2::TokenStream = model.params.iter().map(|f| f.bind_f64()).collect();
     let arms = model
         .constraints
         .iter()
@@ -233,7 +233,7 @@ fn friction_fn(model: &Model) -> TokenStream {
     quote! {
         #[allow(unused_variables, clippy::all)]
         fn friction_coefficients(&self, row: usize) -> #constraints::Coulomb {
-            #( let #params: f64 = self.#params; )*
+            #params
             match row {
                 #(#arms)*
                 _ => #constraints::Coulomb::default(),

@@ -13,9 +13,31 @@ pub(super) fn declaration_impl(model: &Model) -> TokenStream {
     let p = private();
     let declaration = quote!(#p::lagrange_core::declaration);
     let (params, n) = (model.params_ident, lit(model.dof()));
-    let fields: Vec<_> = model.params.iter().map(|f| &f.ident).collect();
-    let names = fields.iter().map(|f| f.unraw().to_string());
-    let slots = (0..fields.len()).map(lit);
+    // Flat, one entry per value: an array of parameters by element (`m[0]`, `m[1]`, ...).
+    let (mut names, mut values, mut inits) = (Vec::new(), Vec::new(), Vec::new());
+    let mut slot = 0;
+    for f in model.params {
+        let ident = &f.ident;
+        let name = ident.unraw().to_string();
+        match &f.array {
+            Some((_, len)) => {
+                let elements = (slot..slot + len).map(lit);
+                inits.push(quote!(#ident: [#(values[#elements]),*]));
+                for k in 0..*len {
+                    names.push(format!("{name}[{k}]"));
+                    let k = lit(k);
+                    values.push(quote!(self.#ident[#k]));
+                }
+            }
+            None => {
+                let at = lit(slot);
+                inits.push(quote!(#ident: values[#at]));
+                names.push(name);
+                values.push(quote!(self.#ident));
+            }
+        }
+        slot += f.slots();
+    }
     let constraints = (!model.constraints.is_empty()).then(|| {
         let (k, c) = (lit(model.rows), lit(model.constraint_row_count()));
         let rows = model.constraints.iter().map(|r| r.decl.ident().unraw().to_string());
@@ -34,10 +56,10 @@ pub(super) fn declaration_impl(model: &Model) -> TokenStream {
                 if values.len() != Self::PARAMETERS.len() {
                     return #p::core::option::Option::None;
                 }
-                #p::core::option::Option::Some(#params { #(#fields: values[#slots]),* })
+                #p::core::option::Option::Some(#params { #(#inits),* })
             }
             fn parameters(&self) -> #p::std::vec::Vec<f64> {
-                #p::std::vec![#(self.#fields),*]
+                #p::std::vec![#(#values),*]
             }
             #constraints
         }

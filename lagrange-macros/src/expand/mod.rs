@@ -279,27 +279,47 @@ fn bind_inputs_from(
     q: TokenStream,
     params: Params,
 ) -> TokenStream {
-    let (d, p) = (scalar(), private());
+    let d = scalar();
     let coords = bind_coordinates(model, &q, "");
-    let bindings = model
-        .params
-        .iter()
-        .enumerate()
-        .filter(|(_, f)| used.contains(&f.ident.to_string()))
-        .map(|(i, f)| {
-            let (ident, i) = (&f.ident, lit(i));
-            match params {
-                Params::Fields => quote!(let #ident = <#d>::from(self.#ident);),
-                Params::Array => {
-                    quote!(let #ident: #d = #p::parameters::lift::<__S, #d>(&__p[#i]);)
-                }
-            }
+    let mut slot = 0;
+    let mut bindings = Vec::new();
+    for f in model.params {
+        let first = slot;
+        slot += f.slots();
+        if !used.contains(&f.ident.to_string()) {
+            continue;
+        }
+        bindings.push(match params {
+            Params::Fields => f.bind_lifted(&d),
+            Params::Array => parameter_from_array(f, first),
         });
+    }
     let time = used.contains("t").then(|| quote!(let t = __t;));
     quote! {
         #coords
         #( #bindings )*
         #time
+    }
+}
+
+/// `let l1: __D = lift::<__S, __D>(&__p[i]);` for the parameter whose first slot of the array
+/// `__p` is `i` (`let m: [__D; 3] = [lift(&__p[i]), lift(&__p[i + 1]), lift(&__p[i + 2])];` for
+/// an array).
+fn parameter_from_array(f: &crate::ast::Field, first: usize) -> TokenStream {
+    let (d, p, ident) = (scalar(), private(), &f.ident);
+    let lifted = |i: usize| {
+        let i = lit(i);
+        quote!(#p::parameters::lift::<__S, #d>(&__p[#i]))
+    };
+    match &f.array {
+        Some((_, n)) => {
+            let (elements, n) = ((first..first + n).map(lifted), lit(*n));
+            quote!(let #ident: [#d; #n] = [#(#elements),*];)
+        }
+        None => {
+            let value = lifted(first);
+            quote!(let #ident: #d = #value;)
+        }
     }
 }
 
@@ -315,7 +335,13 @@ pub(crate) fn optimized_blocks_from<'d>(
     let d = scalar();
     let mut blocks: Vec<syn::Block> = blocks.into_iter().cloned().collect();
     let params: BTreeSet<String> = match params {
-        Params::Fields => model.params.iter().map(|p| p.ident.to_string()).collect(),
+        // An array of parameters is read by element, in the scalar's code.
+        Params::Fields => model
+            .params
+            .iter()
+            .filter(|p| p.array.is_none())
+            .map(|p| p.ident.to_string())
+            .collect(),
         Params::Array => BTreeSet::new(),
     };
     let trig: BTreeSet<String> = model

@@ -20,21 +20,53 @@ pub(super) use forces::applied_forces_fn;
 pub(super) use gradient::gradient_on_trees;
 use validate::validate_fn;
 
-/// Parameters bound as `f64`, then each body's mass and inertia: shared by `validate` and `masses`.
+/// The local holding a body's `what` (`mass`, `inertia`, `moments`, `com`): `__mass_<body>`, or
+/// `__mass<k>_<body>` for member k of a family whose attributes are by member.
+pub(crate) fn attribute_ident(what: &str, body: &Body, member: Option<usize>) -> syn::Ident {
+    match member {
+        None => format_ident!("__{}_{}", what, body.decl.ident()),
+        Some(k) => format_ident!("__{}{}_{}", what, k, body.decl.ident()),
+    }
+}
+
+/// `let i: usize = k;` for member k of a family whose attributes are by member: the index its
+/// attributes name.
+pub(crate) fn bind_family_index(body: &Body, member: Option<usize>) -> TokenStream {
+    let index = crate::check::family_index(body.decl);
+    match (member, index) {
+        (Some(k), Some(index)) => {
+            let k = lit(k);
+            quote!(let #index: usize = #k;)
+        }
+        _ => quote!(),
+    }
+}
+
+/// Parameters bound as `f64`, then each body's mass and inertia (a family's by member when they
+/// name its index): shared by `validate` and `masses`.
 fn mass_bindings(model: &Model) -> TokenStream {
-    let params = model.params.iter().map(|p| &p.ident);
-    let mut out = quote!(#( let #params: f64 = self.#params; )*);
+    let mut out: TokenStream = model.params.iter().map(|f| f.bind_f64()).collect();
     for body in model.bodies.iter().filter(|b| b.shape.has_mass()) {
         let args = &body.decl.args;
         let mass = args.mass.as_ref().unwrap();
-        let mass_ident = format_ident!("__mass_{}", body.decl.ident());
-        let inertia_ident = format_ident!("__inertia_{}", body.decl.ident());
-        out.extend(quote!(let #mass_ident: f64 = #mass;));
-        match &args.inertia {
-            Some(Inertia::Moment(i)) => out.extend(quote!(let #inertia_ident: f64 = #i;)),
-            Some(Inertia::Principal(i)) => out.extend(quote!(let #inertia_ident: [f64; 3] = #i;)),
-            Some(Inertia::Tensor(i)) => out.extend(quote!(let #inertia_ident: [[f64; 3]; 3] = #i;)),
-            None => {}
+        for member in body.attribute_members() {
+            let index = bind_family_index(body, member);
+            let mass_ident = attribute_ident("mass", body, member);
+            let inertia_ident = attribute_ident("inertia", body, member);
+            let value = |ty: TokenStream, e: &dyn ToTokens| match member {
+                Some(_) => quote!(let #inertia_ident: #ty = { #index #e };),
+                None => quote!(let #inertia_ident: #ty = #e;),
+            };
+            out.extend(match member {
+                Some(_) => quote!(let #mass_ident: f64 = { #index #mass };),
+                None => quote!(let #mass_ident: f64 = #mass;),
+            });
+            match &args.inertia {
+                Some(Inertia::Moment(i)) => out.extend(value(quote!(f64), i)),
+                Some(Inertia::Principal(i)) => out.extend(value(quote!([f64; 3]), i)),
+                Some(Inertia::Tensor(i)) => out.extend(value(quote!([[f64; 3]; 3]), i)),
+                None => {}
+            }
         }
     }
     out
@@ -102,11 +134,12 @@ fn weights_fn(model: &Model) -> TokenStream {
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
     let used = model.names_used_by(model.uniform_gravities.iter().map(|(g, _)| *g));
-    let params = model
+    let params: TokenStream = model
         .params
         .iter()
-        .map(|p| &p.ident)
-        .filter(|p| used.contains(&p.to_string()));
+        .filter(|p| used.contains(&p.ident.to_string()))
+        .map(|p| p.bind_f64())
+        .collect();
     let fields = model.uniform_gravities.iter().map(|(decl, dim)| {
         let ident = format_ident!("__gravity_{}", decl.ident());
         let g = quote!(::lagrange::__private::geometry);
@@ -144,7 +177,7 @@ fn weights_fn(model: &Model) -> TokenStream {
         fn weights(&self) -> [f64; #k] {
             #[allow(unused_imports)]
             use #p::geometry::{vec2, vec3};
-            #( let #params: f64 = self.#params; )*
+            #params
             let __masses = <Self as #p::Model<#n, #k>>::masses(self);
             let mut __weights = [0.0; #k];
             #(#fields)*
@@ -157,17 +190,25 @@ fn masses_fn(model: &Model) -> TokenStream {
     let p = private();
     let k = lit(model.rows);
     let bindings = mass_bindings(model);
-    let principal = model.bodies.iter().filter(|b| b.has_tensor()).map(|body| {
-        let inertia = format_ident!("__inertia_{}", body.decl.ident());
-        let moments = format_ident!("__moments_{}", body.decl.ident());
-        quote!(let #moments: [f64; 3] = #p::inertia::principal_axes(&#inertia).0;)
-    });
+    let principal = model
+        .bodies
+        .iter()
+        .filter(|b| b.has_tensor())
+        .flat_map(|body| {
+            let p = p.clone();
+            body.attribute_members().into_iter().map(move |member| {
+                let inertia = attribute_ident("inertia", body, member);
+                let moments = attribute_ident("moments", body, member);
+                quote!(let #moments: [f64; 3] = #p::inertia::principal_axes(&#inertia).0;)
+            })
+        });
     let mut rows = vec![quote!(0.0); model.rows];
     for body in &model.bodies {
-        let mass = format_ident!("__mass_{}", body.decl.ident());
-        let inertia = format_ident!("__inertia_{}", body.decl.ident());
         for member in 0..body.members() {
             let r = body.row + member * body.shape.rows();
+            let member_attributes = body.attribute_member(member);
+            let mass = attribute_ident("mass", body, member_attributes);
+            let inertia = attribute_ident("inertia", body, member_attributes);
             match body.shape {
                 Shape::Point(_) => {}
                 Shape::Particle(dim) => {
@@ -184,7 +225,7 @@ fn masses_fn(model: &Model) -> TokenStream {
                     // A full tensor's principal moments, in the order of the principal axes its
                     // mass frame turns the body's columns into (lagrange_core::inertia).
                     let moments = match body.has_tensor() {
-                        true => format_ident!("__moments_{}", body.decl.ident()),
+                        true => attribute_ident("moments", body, member_attributes),
                         false => inertia.clone(),
                     };
                     // Column k carries J_k = (I₁ + I₂ + I₃)/2 − I_k (see lagrange_core::model).
@@ -215,9 +256,17 @@ pub(super) fn cartesian_fn(model: &Model, params: Params) -> TokenStream {
     by_row.sort_by_key(|b| b.row);
     // A body declared by its frame enters x by its centre of mass and principal axes.
     let principal = model.bodies.iter().filter(|b| b.is_framed()).map(|b| {
-        let (name, method) = (b.decl.ident(), mass_frame_method(b));
+        let (name, method) = (b.decl.ident(), mass_frame_method(b, None));
         let principal = format_ident!("__principal_{}", name);
         match b.count {
+            // A family whose frames are by member: member k by its own frame.
+            Some(n) if b.attributes_by_member() => {
+                let members = (0..n).map(|k| {
+                    let (method, k) = (mass_frame_method(b, Some(k)), lit(k));
+                    quote!(self.#method().principal(__bodies.#name[#k]))
+                });
+                quote!(let #principal = [#(#members),*];)
+            }
             Some(_) => quote!(let #principal = { let __frame = self.#method(); __bodies.#name.map(|__b| __frame.principal(__b)) };),
             None => quote!(let #principal = self.#method().principal(__bodies.#name);),
         }
@@ -235,7 +284,7 @@ pub(super) fn cartesian_fn(model: &Model, params: Params) -> TokenStream {
             quote!(self.__lagrange_bodies(__t, __q)),
         ),
         Params::Array => {
-            let np = lit(model.params.len());
+            let np = lit(crate::ast::slot_count(model.params));
             (
                 quote!(fn cartesian_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n]) -> [__D; #k]),
                 quote!(self.__lagrange_bodies_with(__p, __t, __q)),
@@ -283,7 +332,7 @@ pub(super) fn potential_fn(model: &Model, params: Params) -> TokenStream {
             quote!(fn potential<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D)
         }
         Params::Array => {
-            let np = lit(model.params.len());
+            let np = lit(crate::ast::slot_count(model.params));
             quote!(fn potential_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n], __x: &[__D; #k]) -> __D)
         }
     };

@@ -21,15 +21,29 @@ pub(super) fn parametrized_items(model: &Model) -> TokenStream {
         model.params_ident,
         lit(model.dof()),
         lit(model.rows),
-        lit(model.params.len()),
+        lit(crate::ast::slot_count(model.params)),
     );
-    let names = model.params.iter().map(|f| f.ident.to_string());
-    let fields = model.params.iter().map(|f| &f.ident);
+    // One entry per value: an array of parameters by element (`m[0]`, `m[1]`, ...).
     let plain = plain_parameters(model);
-    let seedable = model
-        .params
-        .iter()
-        .map(|f| !plain.contains(&f.ident.to_string()));
+    let (mut names, mut values, mut seedable) = (Vec::new(), Vec::new(), Vec::new());
+    for f in model.params {
+        let (ident, seeds) = (&f.ident, !plain.contains(&f.ident.to_string()));
+        match &f.array {
+            Some((_, len)) => {
+                for k in 0..*len {
+                    names.push(format!("{ident}[{k}]"));
+                    let k = lit(k);
+                    values.push(quote!(self.#ident[#k]));
+                    seedable.push(seeds);
+                }
+            }
+            None => {
+                names.push(ident.to_string());
+                values.push(quote!(self.#ident));
+                seedable.push(seeds);
+            }
+        }
+    }
     let bodies = bodies_fn(model, Params::Array);
     let cartesian = cartesian_fn(model, Params::Array);
     let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
@@ -45,7 +59,7 @@ pub(super) fn parametrized_items(model: &Model) -> TokenStream {
             const SEEDABLE: [bool; #np] = [#(#seedable),*];
             #[inline(always)]
             fn parameters(&self) -> [f64; #np] {
-                [#(self.#fields),*]
+                [#(#values),*]
             }
             #cartesian
             #potential

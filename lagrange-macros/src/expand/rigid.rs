@@ -144,7 +144,7 @@ fn constants_fn(model: &Model, tree: &RigidTree) -> TokenStream {
     let p = private();
     let b = lit(tree.nodes.len());
     let prelude = prelude();
-    let params = model.params.iter().map(|f| &f.ident);
+    let params: proc_macro2::TokenStream = model.params.iter().map(|f| f.bind_f64()).collect();
     let bodies = tree
         .nodes
         .iter()
@@ -156,7 +156,7 @@ fn constants_fn(model: &Model, tree: &RigidTree) -> TokenStream {
         #[allow(unused_variables, unused_parens, clippy::all)]
         fn __lagrange_rigid_constants(&self) -> #p::tree::rigid::RigidConstants<#b> {
             #prelude
-            #( let #params: f64 = self.#params; )*
+            #params
             #(#bodies)*
             #p::tree::rigid::RigidConstants {
                 bodies: [#(#names),*],

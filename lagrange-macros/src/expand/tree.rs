@@ -191,14 +191,20 @@ fn displacement_fn(model: &Model, f: usize, displacement: &Displacement) -> Toke
     let params = model
         .params
         .iter()
-        .map(|p| &p.ident)
-        .filter(|p| used.contains(&p.to_string()));
+        .filter(|p| used.contains(&p.ident.to_string()));
+    let params = params.map(|p| p.bind_lifted(&d));
     let time = used.contains("t").then(|| quote!(let t = __t;));
     let index = family_index(body.decl).map(|i| quote!(#i: usize,));
     let arguments = &displacement.arguments;
     // Parameter-only subexpressions in f64, sin and cos of an argument shared (see `optimize`).
     let mut blocks = [displacement.block.clone()];
-    let param_names: BTreeSet<String> = model.params.iter().map(|p| p.ident.to_string()).collect();
+    // An array of parameters is read by element, in the scalar's code.
+    let param_names: BTreeSet<String> = model
+        .params
+        .iter()
+        .filter(|p| p.array.is_none())
+        .map(|p| p.ident.to_string())
+        .collect();
     let trig: BTreeSet<String> = arguments
         .iter()
         .map(Ident::to_string)
@@ -220,7 +226,7 @@ fn displacement_fn(model: &Model, f: usize, displacement: &Displacement) -> Toke
         #[allow(unused_variables, non_snake_case, clippy::all)]
         fn #name<#d: #p::Scalar>(&self, #index __t: #d, #(#arguments: #d),*) -> #ty {
             #prelude
-            #( let #params = <#d>::from(self.#params); )*
+            #(#params)*
             #time
             #shared
             #block

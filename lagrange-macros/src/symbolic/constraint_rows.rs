@@ -87,7 +87,7 @@ impl ConstraintDerivatives {
             })
             .collect();
         let lets = self.graph.emit(&outputs, &s);
-        let params = model.params.iter().map(|p| &p.ident);
+        let params: proc_macro2::TokenStream = model.params.iter().map(|f| f.bind_f64()).collect();
         let p = crate::expand::private();
         let writes = self.rows.iter().map(|row| {
             let i = Literal::usize_unsuffixed(row.index);
@@ -109,7 +109,7 @@ impl ConstraintDerivatives {
             }
         });
         quote! {
-            #( let #params: f64 = self.#params; )*
+            #params
             let (__x, __x_dot, __x_accel, __jacobian) =
                 (&__motion.x, &__motion.x_dot, &__motion.x_accel, &__motion.jacobian);
             #lets

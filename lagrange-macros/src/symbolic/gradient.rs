@@ -100,7 +100,7 @@ impl Gradients {
         };
         prepared.truncate(COEFFICIENTS);
         let lets = self.graph.emit_prepared(&outputs, &quote!(__S), &prepared);
-        let params: Vec<_> = model.params.iter().map(|p| &p.ident).collect();
+        let params: proc_macro2::TokenStream = model.params.iter().map(|f| f.bind_f64()).collect();
         let coefficients = scaled.then(|| self.coefficients(&params, &prepared));
         let adds = terms
             .iter()
@@ -111,7 +111,7 @@ impl Gradients {
         });
         let gradient = quote! {
             {
-                #( let #params: f64 = self.#params; )*
+                #params
                 #lets
                 #(#adds)*
                 #(#sums_scaled)*
@@ -146,7 +146,7 @@ impl Gradients {
     }
 
     /// `__coefficients[i] = cᵢ` in `f64` from the parameters (and `__scale`).
-    fn coefficients(&self, params: &[&syn::Ident], prepared: &[Id]) -> TokenStream {
+    fn coefficients(&self, params: &TokenStream, prepared: &[Id]) -> TokenStream {
         let f64 = quote!(f64);
         let lets = self.graph.emit(prepared, &f64);
         let values = prepared.iter().enumerate().map(|(i, &c)| {
@@ -161,7 +161,7 @@ impl Gradients {
             quote!(__coefficients[#i] = #value;)
         });
         quote! {
-            #( let #params: f64 = self.#params; )*
+            #params
             #lets
             #(#values)*
         }

@@ -63,10 +63,12 @@ pub fn equations(model: &Model) -> Option<Equations> {
         return None;
     }
     let (coords, arrays) = coordinate_slots(model);
+    // An array of parameters is read by element (`m[2]`), as an opaque constant.
     let params = model
         .params
         .iter()
         .enumerate()
+        .filter(|(_, p)| p.array.is_none())
         .map(|(i, p)| (p.ident.to_string(), i))
         .collect();
     let mut reader = Reader::new(coords, arrays, params);

@@ -25,6 +25,20 @@ pub(super) struct NewtonMatrix<const N: usize, const S: usize> {
     pub(super) theta: f64,
 }
 
+impl<const N: usize, const S: usize> NewtonMatrix<N, S> {
+    /// A matrix just factorised for step size h, reusable until an iteration says otherwise.
+    #[inline(always)]
+    pub(super) fn fresh(jacobians: FieldJacobians<N>, lu: BlockLu<N, S>, h: f64) -> Self {
+        NewtonMatrix {
+            jacobians,
+            lu,
+            h,
+            reusable: true,
+            theta: 0.0,
+        }
+    }
+}
+
 /// The simplified Newton matrix of the collocation equations with every stage's Jacobians replaced
 /// by one reference point's `j`: blocks δᵢₖ ∂p/∂v + h aᵢₖ ∂p/∂q − h² (A²)ᵢₖ ∂ṗ/∂q − h aᵢₖ ∂ṗ/∂v
 /// (Hairer & Wanner, *Solving ODEs II*, §IV.8, (8.4), for these unknowns).

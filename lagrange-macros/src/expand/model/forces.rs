@@ -40,7 +40,7 @@ pub(in crate::expand) fn applied_forces_fn(model: &Model, params: Params) -> Tok
     let (name, generics, array) = match params {
         Params::Fields => (quote!(applied_forces), quote!(<__D: #p::Scalar>), quote!()),
         Params::Array => {
-            let np = lit(model.params.len());
+            let np = lit(crate::ast::slot_count(model.params));
             (
                 quote!(applied_forces_with),
                 quote!(<__S: #p::Scalar, __D: #p::Scalar>),

@@ -3,11 +3,11 @@
 //! rotation.
 
 use super::super::{lit, prelude, private};
-use super::mass_bindings;
+use super::{attribute_ident, bind_family_index, mass_bindings};
 use crate::attr::Inertia;
-use crate::check::{Body, Model, Shape};
+use crate::check::{attribute_sets, Body, Model, Shape};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use std::collections::BTreeSet;
 use syn::visit::{self, Visit};
 
@@ -15,16 +15,11 @@ use syn::visit::{self, Visit};
 pub(super) fn validate_fn(model: &Model) -> TokenStream {
     let p = private();
     let (n, k) = (lit(model.dof()), lit(model.rows));
-    let params = model.params.iter().map(|f| &f.ident);
-    let strings = model.params.iter().map(|f| f.ident.to_string());
+    let finite = model.params.iter().map(finite_parameter);
     let bindings = mass_bindings(model);
     let coms = com_bindings(model);
-    let err = quote!(return #p::core::result::Result::Err);
-    let bodies = model
-        .bodies
-        .iter()
-        .filter(|b| b.shape.has_mass())
-        .map(body_checks);
+    let bodies = attribute_sets(model.bodies.iter().filter(|b| b.shape.has_mass()));
+    let bodies = bodies.map(|(body, member)| body_checks(body, member));
     let rotations = rotation_checks(model);
     // Centres of mass and rotations are written with the geometry's constructors.
     let prelude = (model.bodies.iter().any(|b| b.has_com()) || !rotations.is_empty()).then(prelude);
@@ -44,11 +39,7 @@ pub(super) fn validate_fn(model: &Model) -> TokenStream {
         #[allow(unused_variables, clippy::all)]
         fn validate(&self) -> #p::Result<()> {
             #fast_path
-            #(
-                if !self.#params.is_finite() {
-                    #err(#p::Error::NonFiniteParameter { name: #strings, value: self.#params });
-                }
-            )*
+            #(#finite)*
             #prelude
             #bindings
             #coms
@@ -56,6 +47,25 @@ pub(super) fn validate_fn(model: &Model) -> TokenStream {
             #(#rotations)*
             #p::core::result::Result::Ok(())
         }
+    }
+}
+
+/// A parameter is finite: `NonFiniteParameter` naming it (`m[2]` for an element of an array).
+fn finite_parameter(field: &crate::ast::Field) -> TokenStream {
+    let p = private();
+    let ident = &field.ident;
+    let check = |value: TokenStream, name: String| {
+        quote! {
+            if !#value.is_finite() {
+                return #p::core::result::Result::Err(#p::Error::NonFiniteParameter { name: #name, value: #value });
+            }
+        }
+    };
+    match &field.array {
+        Some((_, n)) => (0..*n)
+            .map(|k| check(quote!(self.#ident[#k]), format!("{ident}[{k}]")))
+            .collect(),
+        None => check(quote!(self.#ident), ident.to_string()),
     }
 }
 
@@ -67,16 +77,24 @@ fn parameters_pass_fn(model: &Model) -> Option<TokenStream> {
     if model.bodies.iter().any(|b| b.shape == Shape::Spatial) {
         return None;
     }
-    let fields = model.params.iter().map(|f| &f.ident);
+    let fields = model.params.iter().map(|f| match &f.array {
+        // Every element of an array of parameters.
+        Some((_, n)) => {
+            let ident = &f.ident;
+            let k = 0..*n;
+            quote!(#( + self.#ident[#k] )*)
+        }
+        None => {
+            let ident = &f.ident;
+            quote!(+ self.#ident)
+        }
+    });
     // Every mass and moment: one sum for their finiteness (with the parameters'), one comparison
     // each for their sign.
-    let derived: Vec<_> = model
-        .bodies
-        .iter()
-        .filter(|b| b.shape.has_mass())
-        .flat_map(|body| {
-            let mass = format_ident!("__mass_{}", body.decl.ident());
-            let inertia = format_ident!("__inertia_{}", body.decl.ident());
+    let derived: Vec<_> = attribute_sets(model.bodies.iter().filter(|b| b.shape.has_mass()))
+        .flat_map(|(body, member)| {
+            let mass = attribute_ident("mass", body, member);
+            let inertia = attribute_ident("inertia", body, member);
             match body.shape {
                 Shape::Planar => vec![mass, inertia],
                 _ => vec![mass],
@@ -84,8 +102,9 @@ fn parameters_pass_fn(model: &Model) -> Option<TokenStream> {
         })
         .collect();
     // A planar body's centre of mass: finite, of either sign.
-    let coms = model.bodies.iter().filter(|b| b.has_com()).map(|body| {
-        let com = format_ident!("__com_{}", body.decl.ident());
+    let coms = attribute_sets(model.bodies.iter().filter(|b| b.has_com()));
+    let coms = coms.map(|(body, member)| {
+        let com = attribute_ident("com", body, member);
         quote!(+ #com.x + #com.y)
     });
     let prelude = model.bodies.iter().any(|b| b.has_com()).then(prelude);
@@ -100,7 +119,7 @@ fn parameters_pass_fn(model: &Model) -> Option<TokenStream> {
             #prelude
             #bindings
             #com_bindings
-            ((0.0 #( + self.#fields )* #( + #derived )* #(#coms)*) * 0.0 == 0.0) #( & (#derived > 0.0) )*
+            ((0.0 #( #fields )* #( + #derived )* #(#coms)*) * 0.0 == 0.0) #( & (#derived > 0.0) )*
         }
     })
 }
@@ -109,26 +128,33 @@ fn parameters_pass_fn(model: &Model) -> Option<TokenStream> {
 /// parameters are bound as `f64`.
 fn com_bindings(model: &Model) -> TokenStream {
     let g = quote!(::lagrange::__private::geometry);
-    let coms = model.bodies.iter().filter_map(|body| {
+    let coms = attribute_sets(model.bodies.iter()).filter_map(|(body, member)| {
         let com = body.decl.args.com.as_ref()?;
-        let ident = format_ident!("__com_{}", body.decl.ident());
+        let ident = attribute_ident("com", body, member);
         let ty = match body.shape {
             Shape::Planar => quote!(#g::Vec2<f64>),
             _ => quote!(#g::Vec3<f64>),
         };
-        Some(quote!(let #ident: #ty = #com;))
+        let index = bind_family_index(body, member);
+        Some(match member {
+            Some(_) => quote!(let #ident: #ty = { #index #com };),
+            None => quote!(let #ident: #ty = #com;),
+        })
     });
     quote!(#(#coms)*)
 }
 
 /// The checks of one body with mass: its mass, its inertia (one moment, principal moments, or a
 /// full tensor) and its centre of mass.
-fn body_checks(body: &Body) -> TokenStream {
+fn body_checks(body: &Body, member: Option<usize>) -> TokenStream {
     let p = private();
     let err = quote!(return #p::core::result::Result::Err);
-    let name = body.decl.ident().to_string();
-    let mass = format_ident!("__mass_{}", body.decl.ident());
-    let inertia = format_ident!("__inertia_{}", body.decl.ident());
+    let name = match member {
+        Some(k) => format!("{}[{k}]", body.decl.ident()),
+        None => body.decl.ident().to_string(),
+    };
+    let mass = attribute_ident("mass", body, member);
+    let inertia = attribute_ident("inertia", body, member);
     let check_mass = quote! {
         if !(#mass.is_finite() && #mass > 0.0) {
             #err(#p::Error::InvalidInertia { body: #name, reason: #p::std::format!("mass must be positive and finite, got {}", #mass) });
@@ -160,7 +186,7 @@ fn body_checks(body: &Body) -> TokenStream {
         _ => quote!(),
     };
     let check_com = body.has_com().then(|| {
-        let com = format_ident!("__com_{}", body.decl.ident());
+        let com = attribute_ident("com", body, member);
         quote! {
             if let #p::core::result::Result::Err(__error) = #p::inertia::check_centre_of_mass(#name, &#com.to_array()) {
                 #err(__error);
