@@ -180,6 +180,13 @@ pub struct Model<'a> {
 }
 
 impl<'a> Model<'a> {
+    /// The names of the scalar parameters: those the optimiser may read as `f64` constants (an
+    /// array of parameters is read by element, in the scalar's code).
+    pub fn scalar_parameter_names(&self) -> std::collections::BTreeSet<String> {
+        let scalars = self.params.iter().filter(|p| p.array.is_none());
+        scalars.map(|p| p.ident.to_string()).collect()
+    }
+
     /// The model before its functions are checked: bodies laid out in x and the constraint rows;
     /// potentials, gravities, forces, friction contacts and free names are added function by
     /// function.

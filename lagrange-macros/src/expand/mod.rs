@@ -335,13 +335,7 @@ pub(crate) fn optimized_blocks_from<'d>(
     let d = scalar();
     let mut blocks: Vec<syn::Block> = blocks.into_iter().cloned().collect();
     let params: BTreeSet<String> = match params {
-        // An array of parameters is read by element, in the scalar's code.
-        Params::Fields => model
-            .params
-            .iter()
-            .filter(|p| p.array.is_none())
-            .map(|p| p.ident.to_string())
-            .collect(),
+        Params::Fields => model.scalar_parameter_names(),
         Params::Array => BTreeSet::new(),
     };
     let trig: BTreeSet<String> = model

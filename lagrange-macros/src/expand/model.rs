@@ -42,6 +42,22 @@ pub(crate) fn bind_family_index(body: &Body, member: Option<usize>) -> TokenStre
     }
 }
 
+/// A body's attribute `expr` as member k evaluates it (`{ let i: usize = k; expr }`), or as written
+/// when the body's attributes are one for all its members.
+pub(crate) fn attribute_value(
+    body: &Body,
+    member: Option<usize>,
+    expr: &dyn ToTokens,
+) -> TokenStream {
+    match member {
+        Some(_) => {
+            let index = bind_family_index(body, member);
+            quote!({ #index #expr })
+        }
+        None => expr.to_token_stream(),
+    }
+}
+
 /// Parameters bound as `f64`, then each body's mass and inertia (a family's by member when they
 /// name its index): shared by `validate` and `masses`.
 fn mass_bindings(model: &Model) -> TokenStream {
@@ -50,17 +66,14 @@ fn mass_bindings(model: &Model) -> TokenStream {
         let args = &body.decl.args;
         let mass = args.mass.as_ref().unwrap();
         for member in body.attribute_members() {
-            let index = bind_family_index(body, member);
             let mass_ident = attribute_ident("mass", body, member);
             let inertia_ident = attribute_ident("inertia", body, member);
-            let value = |ty: TokenStream, e: &dyn ToTokens| match member {
-                Some(_) => quote!(let #inertia_ident: #ty = { #index #e };),
-                None => quote!(let #inertia_ident: #ty = #e;),
+            let value = |ty: TokenStream, e: &dyn ToTokens| {
+                let e = attribute_value(body, member, e);
+                quote!(let #inertia_ident: #ty = #e;)
             };
-            out.extend(match member {
-                Some(_) => quote!(let #mass_ident: f64 = { #index #mass };),
-                None => quote!(let #mass_ident: f64 = #mass;),
-            });
+            let mass = attribute_value(body, member, mass);
+            out.extend(quote!(let #mass_ident: f64 = #mass;));
             match &args.inertia {
                 Some(Inertia::Moment(i)) => out.extend(value(quote!(f64), i)),
                 Some(Inertia::Principal(i)) => out.extend(value(quote!([f64; 3]), i)),

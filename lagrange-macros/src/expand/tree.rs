@@ -198,13 +198,7 @@ fn displacement_fn(model: &Model, f: usize, displacement: &Displacement) -> Toke
     let arguments = &displacement.arguments;
     // Parameter-only subexpressions in f64, sin and cos of an argument shared (see `optimize`).
     let mut blocks = [displacement.block.clone()];
-    // An array of parameters is read by element, in the scalar's code.
-    let param_names: BTreeSet<String> = model
-        .params
-        .iter()
-        .filter(|p| p.array.is_none())
-        .map(|p| p.ident.to_string())
-        .collect();
+    let param_names = model.scalar_parameter_names();
     let trig: BTreeSet<String> = arguments
         .iter()
         .map(Ident::to_string)

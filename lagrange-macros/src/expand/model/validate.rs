@@ -3,7 +3,7 @@
 //! rotation.
 
 use super::super::{lit, prelude, private};
-use super::{attribute_ident, bind_family_index, mass_bindings};
+use super::{attribute_ident, attribute_value, mass_bindings};
 use crate::attr::Inertia;
 use crate::check::{attribute_sets, Body, Model, Shape};
 use proc_macro2::TokenStream;
@@ -135,11 +135,8 @@ fn com_bindings(model: &Model) -> TokenStream {
             Shape::Planar => quote!(#g::Vec2<f64>),
             _ => quote!(#g::Vec3<f64>),
         };
-        let index = bind_family_index(body, member);
-        Some(match member {
-            Some(_) => quote!(let #ident: #ty = { #index #com };),
-            None => quote!(let #ident: #ty = #com;),
-        })
+        let com = attribute_value(body, member, com);
+        Some(quote!(let #ident: #ty = #com;))
     });
     quote!(#(#coms)*)
 }
