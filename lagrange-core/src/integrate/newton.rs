@@ -95,8 +95,8 @@ impl<const N: usize> Unknowns for SVector<f64, N> {
         let (mut d, mut s) = (0.0f64, 0.0f64);
         for ((x, dx), w) in self.iter_mut().zip(delta.iter()).zip(weights.iter()) {
             *x -= dx;
-            d = d.max(dx.abs() * w);
-            s = s.max(x.abs() * w);
+            d = larger(d, dx.abs() * w);
+            s = larger(s, x.abs() * w);
         }
         (d, s)
     }
@@ -104,7 +104,7 @@ impl<const N: usize> Unknowns for SVector<f64, N> {
     fn weighted_norm(&self, weights: &Self) -> f64 {
         self.iter()
             .zip(weights.iter())
-            .fold(0.0f64, |m, (x, w)| m.max(x.abs() * w))
+            .fold(0.0f64, |m, (x, w)| larger(m, x.abs() * w))
     }
 }
 
@@ -114,8 +114,8 @@ impl<const N: usize, const S: usize> Unknowns for [SVector<f64, N>; S] {
         let (mut d, mut s) = (0.0f64, 0.0f64);
         for ((x, dx), w) in self.iter_mut().zip(delta).zip(weights) {
             let (dj, sj) = x.subtract_measured(dx, w);
-            d = d.max(dj);
-            s = s.max(sj);
+            d = larger(d, dj);
+            s = larger(s, sj);
         }
         (d, s)
     }
@@ -123,7 +123,18 @@ impl<const N: usize, const S: usize> Unknowns for [SVector<f64, N>; S] {
     fn weighted_norm(&self, weights: &Self) -> f64 {
         self.iter()
             .zip(weights)
-            .fold(0.0f64, |m, (x, w)| m.max(x.weighted_norm(w)))
+            .fold(0.0f64, |m, (x, w)| larger(m, x.weighted_norm(w)))
+    }
+}
+
+/// max(m, x) for a running maximum m that is not NaN: a NaN x is passed over, as `f64::max`
+/// passes it over, without that function's test of m.
+#[inline(always)]
+fn larger(m: f64, x: f64) -> f64 {
+    if x > m {
+        x
+    } else {
+        m
     }
 }
 
@@ -253,27 +264,25 @@ pub(crate) fn newton<U: Unknowns>(
     max_iterations: usize,
     stop_when_slow: bool,
     stats: &mut super::Stats,
-    scale: impl FnOnce() -> NewtonScale<U>,
+    mut scale: impl FnMut() -> NewtonScale<U>,
     mut iteration: impl FnMut(&U) -> Result<(U, f64)>,
 ) -> Result<NewtonEnd> {
-    // The first iteration before the scale is asked for: a driver may take its weights from it.
-    stats.newton_iterations += 1;
-    let (delta, residual) = iteration(x)?;
-    let scale = scale();
     let mut test = ConvergenceTest {
         previous: f64::INFINITY,
         theta_max: 0.0,
-        residual,
+        residual: f64::NAN,
         stop_when_slow,
     };
-    if let Some(end) = test.end(1, x.subtract_measured(&delta, &scale.weights), &scale) {
-        return Ok(end);
-    }
-    for k in 2..=max_iterations {
+    let mut measure = None;
+    for k in 1..=max_iterations {
         stats.newton_iterations += 1;
+        // One call of `iteration` in the loop, which the compiler then inlines.
         let (delta, residual) = iteration(x)?;
         test.residual = residual;
-        if let Some(end) = test.end(k, x.subtract_measured(&delta, &scale.weights), &scale) {
+        // The scale, asked for once, after the first iteration: a driver may take its weights
+        // from it.
+        let scale = &*measure.get_or_insert_with(&mut scale);
+        if let Some(end) = test.end(k, x.subtract_measured(&delta, &scale.weights), scale) {
             return Ok(end);
         }
     }

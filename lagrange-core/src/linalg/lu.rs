@@ -58,6 +58,9 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
             pivots: [[0; N]; S],
         };
         let dim = N * S;
+        if dim == 2 {
+            return f.factor_2x2();
+        }
         let (rows, columns) = f.equilibration()?;
         let mut row_scale = rows;
         let at = |x: &[[f64; N]; S], r: usize| x[r / N][r % N];
@@ -103,6 +106,45 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
             }
         }
         Some(f)
+    }
+
+    /// [`factor`](Self::factor) for a 2×2 matrix [a b; c d], without equilibrating it: the pivot
+    /// row is row 0 unless |b·c| > |a·d|, and the matrix is singular when its determinant cancels
+    /// to [`SINGULAR_PIVOT`] of its terms, |a·d − b·c| ≤ tol·(|a·d| + |b·c|). Scaling row i by rᵢ
+    /// and column j by cⱼ multiplies a·d, b·c and the determinant alike by r₀r₁c₀c₁, so neither
+    /// the choice nor the test depends on the units of the unknowns or of the equations. The
+    /// choice bounds the elimination's growth by 1: with row 0 the second pivot is d − b·c/a with
+    /// |b·c/a| ≤ |d|, and the test is that pivot against the entries it is computed from
+    /// ((|a·d| + |b·c|)/|a| ≤ 2|d|). A chosen pivot that is 0 makes the determinant 0 (a·d = 0
+    /// then forces b·c = 0), and an entry that is not finite an infinite or NaN term: both are
+    /// refused by the one test. So is a matrix whose terms over- or underflow (entries beyond
+    /// 10^±150), which the Newton matrices of mechanisms in any practical units are not.
+    #[inline(always)]
+    fn factor_2x2(mut self) -> Option<Self> {
+        let (a, b, c, d) = (
+            self.get(0, 0),
+            self.get(0, 1),
+            self.get(1, 0),
+            self.get(1, 1),
+        );
+        let (ad, bc) = (a * d, b * c);
+        if !((ad - bc).abs() > SINGULAR_PIVOT * (ad.abs() + bc.abs())) {
+            return None;
+        }
+        // The elimination of `factor` with the pivot chosen: multiplier, then the second pivot.
+        let (p, (a, b, c, d)) = if bc.abs() > ad.abs() {
+            (1, (c, d, a, b))
+        } else {
+            (0, (a, b, c, d))
+        };
+        let m = c * (1.0 / a);
+        self.set(0, 0, a);
+        self.set(0, 1, b);
+        self.set(1, 0, m);
+        self.set(1, 1, d - m * b);
+        self.pivots[0][0] = p;
+        self.pivots[(1 / N).min(S - 1)][1 % N] = 1;
+        Some(self)
     }
 
     /// The row and column scales of the equilibrated matrix (see the [module docs](self)), or
@@ -172,7 +214,53 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
 #[cfg(test)]
 mod tests {
     use super::BlockLu;
-    use nalgebra::{SMatrix, SVector};
+    use nalgebra::{matrix, vector, SMatrix, SVector};
+
+    #[test]
+    fn two_by_two_pivots_do_not_depend_on_the_units() {
+        // [a b; c d] with rows and columns scaled by 10⁻⁹…10⁹: the pivot row is the one the
+        // unscaled matrix takes (row 1 here, |b·c| > |a·d| although |a| > |c|), the solution is
+        // the unscaled one rescaled, and a singular matrix is refused however scaled, as is one
+        // with an entry that is not finite.
+        let a = matrix![3.0, 2.0; 1.0, 0.5];
+        let b = vector![1.0, -2.0];
+        let [x] = BlockLu::factor(&[[a]]).unwrap().solve(&[b]);
+        // det = −0.5 against terms 1.5 and 2: κ ≈ 30, the solve good to ~1e-14.
+        assert!((a * x - b).norm() < 1e-14, "{x}");
+        let singular = matrix![3.0, 2.0; 1.5, 1.0];
+        for k in -9..=9 {
+            let (r, c) = (10f64.powi(k), 10f64.powi(-2 * k / 3));
+            let scaled = matrix![a[(0, 0)] * c, a[(0, 1)] / r; a[(1, 0)] * r * c, a[(1, 1)]];
+            // (R A C) y = R b with R = diag(1, r), C = diag(c, 1/r): x = C y.
+            let lu = BlockLu::factor(&[[scaled]]).expect("scaled matrix refused");
+            assert_eq!(lu.pivots[0], [1, 1], "k = {k}");
+            let [y] = lu.solve(&[vector![b[0], b[1] * r]]);
+            let back = vector![y[0] * c, y[1] / r];
+            assert!(
+                (back - x).norm() < 1e-14 * x.norm(),
+                "k = {k}: {back} vs {x}"
+            );
+            let refused = matrix![
+                singular[(0, 0)] * c, singular[(0, 1)] / r;
+                singular[(1, 0)] * r * c, singular[(1, 1)]
+            ];
+            assert!(BlockLu::factor(&[[refused]]).is_none(), "k = {k}");
+        }
+        for bad in [f64::NAN, f64::INFINITY] {
+            for i in 0..4 {
+                let mut m = a;
+                m[(i / 2, i % 2)] = bad;
+                assert!(BlockLu::factor(&[[m]]).is_none(), "{m}");
+            }
+        }
+        assert!(BlockLu::factor(&[[SMatrix::<f64, 2, 2>::zeros()]]).is_none());
+        // Two blocks of one unknown each take the same path.
+        let blocks = [[matrix![3.0], matrix![2.0]], [matrix![1.0], matrix![0.5]]];
+        let [y0, y1] = BlockLu::factor(&blocks)
+            .unwrap()
+            .solve(&[vector![1.0], vector![-2.0]]);
+        assert_eq!([y0[0], y1[0]], [x[0], x[1]]);
+    }
 
     #[test]
     fn block_lu_solves_with_interchanges_in_several_columns() {
