@@ -115,7 +115,9 @@ impl<const N: usize, const S: usize> BlockLu<N, S> {
     /// the choice nor the test depends on the units of the unknowns or of the equations. The
     /// choice bounds the elimination's growth by 1: with row 0 the second pivot is d − b·c/a with
     /// |b·c/a| ≤ |d|, and the test is that pivot against the entries it is computed from
-    /// ((|a·d| + |b·c|)/|a| ≤ 2|d|). A chosen pivot that is 0 makes the determinant 0 (a·d = 0
+    /// ((|a·d| + |b·c|)/|a| ≤ 2|d|). It is the row the equilibrated choice takes, ties apart: in the
+    /// equilibrated matrix E each row's largest entry is 1, so e₀₀ > e₁₀ forces e₁₁ = 1 and
+    /// |e₀₁·e₁₀| ≤ e₁₀ < e₀₀ = |e₀₀·e₁₁|, and symmetrically. A chosen pivot that is 0 makes the determinant 0 (a·d = 0
     /// then forces b·c = 0), and an entry that is not finite an infinite or NaN term: both are
     /// refused by the one test. So is a matrix whose terms over- or underflow (entries beyond
     /// 10^±150), which the Newton matrices of mechanisms in any practical units are not.

@@ -596,8 +596,14 @@ fn main() {
         // Wanner's start: RK4 (`sys.step`, the constrained accelerations and the projection after
         // the step), Gauss–Legendre 2 as a solver takes it (`step_with_memory`: the Newton
         // matrix and the stage predictor kept from step to step), through a `Stepper` (the
-        // same, with its end-of-step q̈), and through `sys.step` (a fresh Newton matrix every step).
-        "rk4_squeezer" | "gl2_squeezer" | "gl2_fresh_squeezer" | "gl2_stepper_squeezer" => {
+        // same, with its end-of-step q̈), through `sys.simulate` (the memory kept, n steps in one
+        // call) and through `sys.step` (a fresh Newton matrix every step).
+        "rk4_squeezer"
+        | "rk4_simulate_squeezer"
+        | "gl2_squeezer"
+        | "gl2_fresh_squeezer"
+        | "gl2_stepper_squeezer"
+        | "gl2_simulate_squeezer" => {
             use lagrange::integrate::NewtonMemory;
             use lagrange::GaussLegendre2;
             let sys = squeezer_model::ANDREWS;
@@ -611,6 +617,12 @@ fn main() {
                 for _ in 0..n {
                     black_box(&sys).step::<Rk4>(&mut s, h).unwrap();
                 }
+            } else if which == "rk4_simulate_squeezer" {
+                black_box(&sys).simulate::<Rk4>(&mut s, h, n, |_| {}).unwrap();
+            } else if which == "gl2_simulate_squeezer" {
+                black_box(&sys)
+                    .simulate::<GaussLegendre2>(&mut s, h, n, |_| {})
+                    .unwrap();
             } else if which == "gl2_stepper_squeezer" {
                 // The documented way to take repeated implicit steps: a Stepper (the Newton
                 // memory kept, the projection and q̈ at the end of each step for dense output).
