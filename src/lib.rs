@@ -174,7 +174,7 @@ pub mod __private {
     pub use lagrange_core::inertia;
     pub use lagrange_core::model::{check_state, Coordinates, Model, State};
     pub use lagrange_core::parameters;
-    pub use lagrange_core::scalar_ext::ScalarExt;
+    pub use lagrange_core::scalar_ext::{call_helper, ScalarExt};
     pub use lagrange_core::tree;
     pub use lagrange_core::{Error, Mechanism, Result, Scalar};
     pub use nalgebra;

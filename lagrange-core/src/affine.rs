@@ -101,6 +101,16 @@ impl<const N: usize, const K: usize> AffineConstants<N, K> {
         &self.jacobian
     }
 
+    /// Mⱼⱼ = Σᵢ μᵢ Aᵢⱼ², the mass matrix's diagonal, from the rows' masses `masses` (zero for rows
+    /// that carry none).
+    pub(crate) fn mass_diagonal(&self, masses: &[f64; K]) -> [f64; N] {
+        std::array::from_fn(|j| {
+            (0..K).fold(0.0, |m, k| {
+                m + masses[k] * self.jacobian[k][j] * self.jacobian[k][j]
+            })
+        })
+    }
+
     /// M⁻¹ b by the prepared factors, for any scalar, skipping the couplings `M` rules out by
     /// its declaration ([`Model::DEPENDS`]).
     #[inline(always)]

@@ -4,8 +4,13 @@
 //! The mass matrix is symmetric positive definite wherever the coordinates are independent, so the
 //! solve is a Cholesky factorisation M = L Lᵀ (Golub & Van Loan, *Matrix Computations*, 4th ed.,
 //! Alg. 4.2.1), written out for fixed N so the compiler unrolls it for the tiny systems mechanisms
-//! usually are. A pivot that is not clearly positive relative to the largest diagonal entry means
-//! the coordinates are locally dependent: that is reported, never turned into NaN.
+//! usually are. A pivot that is not clearly positive relative to its own diagonal entry means the
+//! coordinates are locally dependent: that is reported, never turned into NaN.
+//!
+//! Every singularity test here is invariant under rescaling each unknown (a coordinate written in
+//! millimetres instead of metres, a mass in tonnes): an SPD pivot is compared with its own diagonal
+//! entry, which a change of the unknown's unit multiplies by the same factor, and the general
+//! (LU) factorisations choose and test their pivots on the row- and column-equilibrated matrix.
 
 // `!(pivot > tol)` rather than `pivot <= tol` throughout: the negated form also rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -15,14 +20,23 @@ use nalgebra::{SMatrix, SVector};
 
 mod blocks;
 mod ldlt;
+mod lu;
 mod pattern;
 pub use ldlt::{Dense, FactorPattern, Ldlt};
+pub use lu::BlockLu;
 pub use pattern::{factor_pattern, mass_pattern};
 
-/// Relative size (against the largest diagonal entry) under which a squared Cholesky pivot counts
-/// as zero. The squared pivots bound the smallest eigenvalue from above, so a pivot this small means
-/// κ(M) ≳ 1/(1e3·ε) ≈ 4.5e12: the solve would have lost all but three or four digits, and a
-/// configuration this close to singular is reported rather than trusted.
+/// Relative size under which a pivot counts as zero: an LDLᵀ pivot dⱼ (a squared Cholesky pivot)
+/// against its own diagonal entry Mⱼⱼ, an LU pivot against the largest entry of the equilibrated
+/// matrix (1). For symmetric positive definite M, dⱼ/Mⱼⱼ = 1/(Mⱼⱼ (M₀..ⱼ⁻¹)ⱼⱼ) is the squared sine of
+/// the angle, in the metric M, between coordinate j's direction and those of the coordinates before
+/// it; it is a ratio of two quantities of the same unit, unchanged when any coordinate is rescaled.
+/// Below 1e3·ε the rounding error of the elimination (about ε·Mⱼⱼ) is within three orders of the
+/// pivot itself: the coordinates are dependent to working precision, and a configuration this close
+/// to singular is reported rather than trusted. The diagonally scaled matrix D⁻¹MD⁻¹ (D² = diag M),
+/// whose condition number bounds every solve's error up to a factor N (van der Sluis, Numer. Math.
+/// 14 (1969); Higham, *Accuracy and Stability of Numerical Algorithms*, 2nd ed., §7.3), then has
+/// κ ≳ 1/(1e3·ε) ≈ 4.5e12.
 pub const SINGULAR_PIVOT: f64 = 1e3 * f64::EPSILON;
 
 /// Why a Cholesky factorisation failed: the index of the first pivot that is not positive, and its
@@ -58,19 +72,14 @@ pub fn cholesky_solve<S: Scalar, const N: usize>(
 pub fn cholesky<S: Scalar, const N: usize>(
     m: &SMatrix<S, N, N>,
 ) -> Result<SMatrix<S, N, N>, NotPositiveDefinite> {
-    let mut scale = 0.0f64;
-    for i in 0..N {
-        scale = scale.max(m[(i, i)].re().abs());
-    }
-    let tol = SINGULAR_PIVOT * scale;
     let mut l = SMatrix::<S, N, N>::zeros();
     for j in 0..N {
         let mut d = m[(j, j)];
         for k in 0..j {
             d -= l[(j, k)] * l[(j, k)];
         }
-        // `!(d > tol)` also catches NaN.
-        if !(d.re() > tol) {
+        // Against its own diagonal entry (see `SINGULAR_PIVOT`); `!(d > tol)` also catches NaN.
+        if !(d.re() > SINGULAR_PIVOT * m[(j, j)].re().abs()) {
             return Err(NotPositiveDefinite {
                 index: j,
                 pivot: d.re(),
@@ -126,7 +135,7 @@ pub fn cholesky_substitute<S: Scalar, const N: usize>(
 /// N = 2:  d₀ = M₀₀,  det = M₀₀M₁₁ − M₁₀²,  d₁ = det / d₀,   x = [M₁₁b₀ − M₁₀b₁, M₀₀b₁ − M₁₀b₀] / det
 /// ```
 ///
-/// (d₁ > tol ⇔ det > tol·d₀ since d₀ > 0, so the second test needs no division either), and three
+/// (d₁ > tol·M₁₁ ⇔ det > tol·M₁₁·d₀ since d₀ > 0, so the second test needs no division either), and three
 /// or four eliminate the leading 2×2 block the same way and solve its Schur complement in closed
 /// form: two divisions in series instead of three or four.
 ///
@@ -196,17 +205,13 @@ fn first_pivot_passes(d0: f64, scale: f64) -> bool {
     d0 > SINGULAR_PIVOT * scale
 }
 
-/// The two pivot tests of a 2×2 M (see [`solve_spd`]): d₀ = M₀₀ > tol, and d₁ = det/d₀ > tol
-/// written as det > tol·d₀.
+/// The two pivot tests of a 2×2 M (see [`solve_spd`]), each against its own diagonal entry as in
+/// [`Ldlt`]: d₀ = M₀₀ > tol·|M₀₀|, and d₁ = det/d₀ > tol·|M₁₁| written as det > tol·|M₁₁|·d₀.
 #[inline(always)]
 fn pivots_2x2_pass(m00: f64, m11: f64, det: f64) -> (bool, bool) {
-    // max(|M₀₀|, |M₁₁|) as `Ldlt` takes it (a NaN M₁₁ is passed over, and then fails the second
-    // test), without `f64::max`'s branches for NaN.
-    let (a, b) = (m00.abs(), m11.abs());
-    let scale = if b > a { b } else { a };
     (
-        first_pivot_passes(m00, scale),
-        det > SINGULAR_PIVOT * scale * m00,
+        first_pivot_passes(m00, m00.abs()),
+        det > SINGULAR_PIVOT * m11.abs() * m00,
     )
 }
 
@@ -222,128 +227,38 @@ fn factorised_solve<S: Scalar, const N: usize>(
     Ldlt::new(m).map(|factors| factors.solve(b))
 }
 
-/// Solves A x = b for a general square A by LU with partial pivoting; `None` when a pivot vanishes
-/// (|pivot| ≤ `SINGULAR_PIVOT`·max|Aᵢⱼ|). Used by Newton iterations of implicit methods, whose
-/// Jacobians are not symmetric.
+/// Solves A x = b for a general square A by LU with scaled partial pivoting ([`BlockLu`] with one
+/// block); `None` when an entry of A is not finite or a pivot of the equilibrated matrix vanishes
+/// (≤ [`SINGULAR_PIVOT`], see [`BlockLu::factor`]): a test no rescaling of the unknowns or of the
+/// equations changes. Used by Newton iterations of implicit methods, whose Jacobians are not
+/// symmetric.
 pub fn lu_solve<const N: usize>(
     a: &SMatrix<f64, N, N>,
     b: &SVector<f64, N>,
 ) -> Option<SVector<f64, N>> {
-    let mut a = *a;
-    let mut x = *b;
-    let scale = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    if !scale.is_finite() {
-        return None;
-    }
-    let tol = SINGULAR_PIVOT * scale;
-    for c in 0..N {
-        let mut p = c;
-        for r in (c + 1)..N {
-            if a[(r, c)].abs() > a[(p, c)].abs() {
-                p = r;
-            }
-        }
-        if !(a[(p, c)].abs() > tol) {
-            return None;
-        }
-        if p != c {
-            a.swap_rows(p, c);
-            x.swap_rows(p, c);
-        }
-        let inv = 1.0 / a[(c, c)];
-        for r in (c + 1)..N {
-            let f = a[(r, c)] * inv;
-            if f != 0.0 {
-                for k in c..N {
-                    a[(r, k)] -= f * a[(c, k)];
-                }
-                x[r] -= f * x[c];
-            }
-        }
-    }
-    for r in (0..N).rev() {
-        let mut s = x[r];
-        for k in (r + 1)..N {
-            s -= a[(r, k)] * x[k];
-        }
-        x[r] = s / a[(r, r)];
-    }
-    Some(x)
+    BlockLu::factor(&[[*a]]).map(|lu| lu.solve(&[*b])[0])
 }
 
 /// Solves a block system Σₖ Aᵢₖ xₖ = bᵢ (i, k = 0..B) with N×N blocks, that is the (B·N)×(B·N)
-/// system of the stage equations of a B-stage implicit Runge–Kutta method, by LU with partial
-/// pivoting over the whole system (Golub & Van Loan, *Matrix Computations*, 4th ed., Alg. 3.4.1).
-/// The blocks are addressed as one matrix with row r = i·N + a, so a pivot may come from any block.
-/// `None` when a pivot vanishes (|pivot| ≤ `SINGULAR_PIVOT`·max|Aᵢⱼ|) or an entry is not finite.
-/// No allocation: the work copy lives on the stack.
+/// system of the stage equations of a B-stage implicit Runge–Kutta method, by LU with scaled
+/// partial pivoting over the whole system ([`BlockLu`]; Golub & Van Loan, *Matrix Computations*,
+/// 4th ed., Alg. 3.4.1 and §3.5.2). A pivot may come from any block. `None` when a pivot of the
+/// equilibrated matrix vanishes or an entry is not finite. No allocation: the work copy lives on
+/// the stack.
 pub fn lu_solve_blocks<const N: usize, const B: usize>(
     a: &[[SMatrix<f64, N, N>; B]; B],
     b: &[SVector<f64, N>; B],
 ) -> Option<[SVector<f64, N>; B]> {
-    let mut a = *a;
-    let mut x = *b;
-    let dim = N * B;
-    let get =
-        |a: &[[SMatrix<f64, N, N>; B]; B], r: usize, c: usize| a[r / N][c / N][(r % N, c % N)];
-    let mut scale = 0.0f64;
-    for r in 0..dim {
-        for c in 0..dim {
-            scale = scale.max(get(&a, r, c).abs());
-        }
-    }
-    if !scale.is_finite() || x.iter().any(|v| !v.iter().all(|e| e.is_finite())) {
+    if b.iter().any(|v| !v.iter().all(|e| e.is_finite())) {
         return None;
     }
-    let tol = SINGULAR_PIVOT * scale;
-    for c in 0..dim {
-        let mut p = c;
-        for r in (c + 1)..dim {
-            if get(&a, r, c).abs() > get(&a, p, c).abs() {
-                p = r;
-            }
-        }
-        let pivot = get(&a, p, c);
-        if !(pivot.abs() > tol) {
-            return None;
-        }
-        if p != c {
-            for k in 0..dim {
-                let (u, w) = (get(&a, p, k), get(&a, c, k));
-                a[p / N][k / N][(p % N, k % N)] = w;
-                a[c / N][k / N][(c % N, k % N)] = u;
-            }
-            let (u, w) = (x[p / N][p % N], x[c / N][c % N]);
-            x[p / N][p % N] = w;
-            x[c / N][c % N] = u;
-        }
-        let inv = 1.0 / pivot;
-        for r in (c + 1)..dim {
-            let f = get(&a, r, c) * inv;
-            if f != 0.0 {
-                for k in c..dim {
-                    let v = get(&a, c, k);
-                    a[r / N][k / N][(r % N, k % N)] -= f * v;
-                }
-                let xc = x[c / N][c % N];
-                x[r / N][r % N] -= f * xc;
-            }
-        }
-    }
-    for r in (0..dim).rev() {
-        let mut s = x[r / N][r % N];
-        for k in (r + 1)..dim {
-            s -= get(&a, r, k) * x[k / N][k % N];
-        }
-        x[r / N][r % N] = s / get(&a, r, r);
-    }
-    Some(x)
+    BlockLu::factor(a).map(|lu| lu.solve(b))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::{matrix, vector};
+    use nalgebra::{matrix, vector, Matrix4, Vector4};
     use num_dual::Dual64;
 
     #[test]
@@ -413,7 +328,8 @@ mod tests {
             matrix![f64::NAN, 0.0; 0.0, 1.0],
             matrix![1.0, 0.0; 0.0, f64::NAN],
             matrix![-1.0, 0.0; 0.0, 1.0],
-            matrix![1.0, 0.0; 0.0, 1e-14],
+            // Nearly parallel coordinates: d₁/M₁₁ = 1 − (1 − 1e-14)² ≈ 2e-14 < 1e3·ε.
+            matrix![1.0, 1.0 - 1e-14; 1.0 - 1e-14, 1.0],
         ] {
             let ours = solve_spd(&bad, &b2).unwrap_err();
             let reference = Ldlt::new(&bad).unwrap_err();
@@ -508,5 +424,143 @@ mod tests {
         }
         let singular = [[matrix![1.0], matrix![2.0]], [matrix![2.0], matrix![4.0]]];
         assert!(lu_solve_blocks(&singular, &[vector![1.0], vector![1.0]]).is_none());
+    }
+
+    /// Well-conditioned SPD matrices of sizes 1 to 6 (AᵀA + I for a fixed A), and BᵀB for a B
+    /// whose last column is a combination of the others (zero for N = 1): a coordinate that depends
+    /// on the others.
+    fn spd<const N: usize>() -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        let a = SMatrix::<f64, N, N>::from_fn(|i, j| ((3 * i + 7 * j + 1) % 5) as f64 * 0.3 - 0.5);
+        let m = a.transpose() * a + SMatrix::<f64, N, N>::identity();
+        let mut b = a + SMatrix::<f64, N, N>::identity() * 2.0;
+        let last = N - 1;
+        for i in 0..N {
+            b[(i, last)] = match last {
+                0 => 0.0,
+                1 => 0.6 * b[(i, 0)],
+                _ => 0.6 * b[(i, 0)] - 0.8 * b[(i, 1)],
+            };
+        }
+        (m, b.transpose() * b)
+    }
+
+    /// D M D for coordinate scales dᵢ from 1e-9 to 1e9.
+    fn rescaled<const N: usize>(m: &SMatrix<f64, N, N>, k: usize) -> SMatrix<f64, N, N> {
+        let d = SVector::<f64, N>::from_fn(|i, _| 10f64.powi(((i * 7 + k * 5) % 19) as i32 - 9));
+        SMatrix::from_fn(|i, j| d[i] * m[(i, j)] * d[j])
+    }
+
+    fn spd_solves_accept<const N: usize>(m: &SMatrix<f64, N, N>) -> [bool; 4] {
+        let b = SVector::<f64, N>::from_fn(|i, _| 1.0 + i as f64);
+        [
+            solve_spd(m, &b).is_ok(),
+            solve_spd_flagged(m, &b).1,
+            Ldlt::new(m).is_ok(),
+            cholesky(m).is_ok(),
+        ]
+    }
+
+    fn spd_tests_are_scale_invariant<const N: usize>() {
+        let (m, dependent) = spd::<N>();
+        for k in 0..6 {
+            assert_eq!(
+                spd_solves_accept(&rescaled(&m, k)),
+                [true; 4],
+                "N = {N}, k = {k}"
+            );
+            let refused = spd_solves_accept(&rescaled(&dependent, k));
+            assert_eq!(refused, [false; 4], "N = {N}, k = {k}");
+        }
+    }
+
+    #[test]
+    fn spd_pivot_tests_do_not_depend_on_the_coordinates_units() {
+        // Every SPD factorisation (the closed forms for N ≤ 2, the 2×2 blocks for N = 3 and 4, the
+        // LDLᵀ and Cholesky factorisations for any N) accepts a well-conditioned M however its
+        // coordinates are scaled (D M D, dᵢ from 1e-9 to 1e9: the largest diagonal entry 1e36
+        // times the smallest), and refuses one with a dependent coordinate however scaled.
+        spd_tests_are_scale_invariant::<1>();
+        spd_tests_are_scale_invariant::<2>();
+        spd_tests_are_scale_invariant::<3>();
+        spd_tests_are_scale_invariant::<4>();
+        spd_tests_are_scale_invariant::<5>();
+        spd_tests_are_scale_invariant::<6>();
+        // Kepler in polar coordinates in SI units: M = diag(m, m r²) with m = 1000 kg, r = 7e6 m.
+        let kepler = matrix![1e3, 0.0; 0.0, 1e3 * 7e6 * 7e6];
+        assert_eq!(spd_solves_accept(&kepler), [true; 4]);
+        // The pattern-aware factorisation and a block of the tree recursion judged against the
+        // whole's diagonal entries.
+        let (m, _) = spd::<3>();
+        let scaled = rescaled(&m, 1);
+        let pattern = [[true; 3]; 3];
+        assert!(Ldlt::with_pattern(&scaled, pattern).is_ok());
+        let diagonal: [f64; 3] = std::array::from_fn(|i| scaled[(i, i)]);
+        assert!(Ldlt::with_scales(&scaled, Dense, &diagonal).is_ok());
+    }
+
+    #[test]
+    fn lu_pivot_tests_do_not_depend_on_the_units() {
+        // A general (unsymmetric, well-conditioned) 4×4 matrix under the rescalings the Newton
+        // matrices see — D A D (momenta against velocities), S A S⁻¹ (Radau's σ²I − σJᵥ − J_q),
+        // D₁ A D₂ (equations and unknowns in unrelated units) — is factorised and solved to
+        // round-off; a singular one is refused however scaled.
+        let a = matrix![
+            4.0, 1.0, -0.5, 0.3;
+            0.7, 3.0, 0.2, -1.0;
+            -0.4, 0.6, 5.0, 0.8;
+            1.1, -0.3, 0.9, 2.5
+        ];
+        let mut singular = a;
+        for j in 0..4 {
+            singular[(3, j)] = 0.5 * a[(0, j)] - 2.0 * a[(2, j)];
+        }
+        let b = vector![1.0, -2.0, 0.5, 3.0];
+        let x = lu_solve(&a, &b).unwrap();
+        for k in 0..8 {
+            let d1 = Matrix4::from_diagonal(&Vector4::from_fn(|i, _| {
+                10f64.powi(((i * 7 + k * 5) % 19) as i32 - 9)
+            }));
+            let d2 = Matrix4::from_diagonal(&Vector4::from_fn(|i, _| {
+                10f64.powi(((i * 3 + k * 11) % 19) as i32 - 9)
+            }));
+            let d1_inv = d1.try_inverse().unwrap();
+            let d2_inv = d2.try_inverse().unwrap();
+            for (scaled, left, right_inv) in [
+                (d1 * a * d1, d1, d1_inv),
+                (d1 * a * d1_inv, d1, d1),
+                (d1 * a * d2, d1, d2_inv),
+            ] {
+                // (L A R) y = L b  ⇔  y = R⁻¹ x.
+                let y = lu_solve(&scaled, &(left * b)).expect("scaled matrix refused");
+                let back = right_inv.try_inverse().unwrap() * y;
+                // κ(A) ≈ 5: the unscaled solution to ~1e-15; the scaled one, whose pivots are
+                // chosen on the equilibrated matrix, to the same relative accuracy.
+                assert!(
+                    (back - x).norm() < 1e-13 * x.norm(),
+                    "k = {k}: {back} vs {x}"
+                );
+                let blocks = [
+                    [
+                        scaled.fixed_view::<2, 2>(0, 0).into_owned(),
+                        scaled.fixed_view::<2, 2>(0, 2).into_owned(),
+                    ],
+                    [
+                        scaled.fixed_view::<2, 2>(2, 0).into_owned(),
+                        scaled.fixed_view::<2, 2>(2, 2).into_owned(),
+                    ],
+                ];
+                assert!(BlockLu::factor(&blocks).is_some());
+            }
+            for scaled in [
+                d1 * singular * d1,
+                d1 * singular * d1_inv,
+                d1 * singular * d2,
+            ] {
+                assert!(
+                    lu_solve(&scaled, &b).is_none(),
+                    "k = {k}: singular accepted"
+                );
+            }
+        }
     }
 }

@@ -357,7 +357,10 @@ pub trait Mechanism<const N: usize>: Evaluate<N> {
     }
 
     /// Advances `state` by `steps` steps of size `h`, calling `observe` after each. Stops at the first
-    /// error, leaving the state after the last successful step.
+    /// error, leaving the state after the last successful step. Each step is
+    /// [`step`](Self::step)'s, with the method's working memory kept from one to the next, as a
+    /// [`Stepper`] keeps it: the implicit methods reuse their Jacobians and factorised Newton
+    /// matrix while they contract, where a single `step` must form them.
     ///
     /// ```
     /// use lagrange_core::{Mechanism, Rk4, State};
@@ -394,8 +397,9 @@ pub trait Mechanism<const N: usize>: Evaluate<N> {
         steps: usize,
         mut observe: impl FnMut(&State<Self::Coords>),
     ) -> Result<()> {
+        let mut memory = I::Memory::<N>::default();
         for _ in 0..steps {
-            I::step(self, state, h)?;
+            crate::integrate::step_keeping_memory::<I, Self, N>(self, &mut memory, state, h)?;
             observe(state);
         }
         Ok(())

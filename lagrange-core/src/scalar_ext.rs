@@ -86,6 +86,67 @@ pub trait ScalarExt: Scalar {
 
 impl<D: Scalar> ScalarExt for D {}
 
+/// A function from outside a declaration's module called from one of its function bodies
+/// (`super::arm(theta)`), whose signature the macro cannot see: the call is made through
+/// [`call_helper`], with the function as a function pointer, which implements this trait for the
+/// arguments' types when it takes them. A function that takes `f64` where the body passes the
+/// scalar — a dual number: the bodies are evaluated on them to differentiate them — does not, and
+/// rustc says so once, at the call, in these words rather than as type mismatches on the
+/// generated scalar type.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` does not take the scalar a mechanism's functions run on",
+    label = "called from a mechanism's function, whose values are dual numbers (that is how they are differentiated)",
+    note = "make the helper generic, `fn f<D: lagrange::Scalar>(x: D) -> D`, or write its expression inline"
+)]
+pub trait ScalarHelper<Args> {
+    /// What the function returns.
+    type Output;
+    /// Calls the function with the arguments of the tuple.
+    fn call_with(self, args: Args) -> Self::Output;
+}
+
+/// `f(args…)` through [`ScalarHelper`]: the arguments first, so that their types, not the
+/// function's signature, decide which implementation is asked for.
+///
+/// ```
+/// use lagrange_core::scalar_ext::call_helper;
+/// use lagrange_core::Scalar;
+/// use num_dual::Dual64;
+/// fn arm<D: Scalar>(angle: D) -> D {
+///     angle.sin()
+/// }
+/// let x = Dual64::from(0.5).derivative();
+/// let helper: fn(_) -> _ = arm;
+/// assert_eq!(call_helper((x,), helper).eps, 0.5f64.cos());
+/// ```
+#[inline(always)]
+pub fn call_helper<Args, F: ScalarHelper<Args>>(args: Args, f: F) -> F::Output {
+    f.call_with(args)
+}
+
+macro_rules! scalar_helper {
+    ($($arg:ident),*) => {
+        impl<R, $($arg),*> ScalarHelper<($($arg,)*)> for fn($($arg),*) -> R {
+            type Output = R;
+            #[inline(always)]
+            #[allow(non_snake_case)]
+            fn call_with(self, ($($arg,)*): ($($arg,)*)) -> R {
+                self($($arg),*)
+            }
+        }
+    };
+}
+
+scalar_helper!();
+scalar_helper!(A);
+scalar_helper!(A, B);
+scalar_helper!(A, B, C);
+scalar_helper!(A, B, C, E);
+scalar_helper!(A, B, C, E, G);
+scalar_helper!(A, B, C, E, G, H);
+scalar_helper!(A, B, C, E, G, H, I);
+scalar_helper!(A, B, C, E, G, H, I, J);
+
 #[cfg(test)]
 mod tests {
     use super::ScalarExt;

@@ -39,8 +39,20 @@ const EXT_METHODS: &[&str] = &[
 
 /// `block` with its literals, `f64` types and casts lifted to `scalar`.
 pub fn lift_block(block: &syn::Block, scalar: &TokenStream) -> syn::Block {
+    lift_block_with_integers(block, scalar, None)
+}
+
+/// [`lift_block`] with `integer` known to be an integer whatever the block does with it: a
+/// family's index in a block rewritten so that it no longer indexes (a tree's displacement, whose
+/// `theta[i]` became a local), where `i % 2 == 0` would otherwise compare an integer with a scalar.
+pub fn lift_block_with_integers(
+    block: &syn::Block,
+    scalar: &TokenStream,
+    integer: Option<&syn::Ident>,
+) -> syn::Block {
     let mut block = block.clone();
-    let integers = integer_names(&block);
+    let mut integers = integer_names(&block);
+    integers.extend(integer.map(|i| i.to_string()));
     let mut lifter = Lifter {
         scalar,
         integers: &integers,
@@ -104,6 +116,34 @@ fn is_integer(expr: &Expr, integers: &BTreeSet<String>) -> bool {
     }
 }
 
+/// Whether `func` is a path that leaves the module (`super::f`, `crate::m::f`, `self::f`): a
+/// function whose signature the macro does not see.
+fn is_outside_path(func: &Expr) -> bool {
+    match crate::ast::ungroup(func) {
+        Expr::Path(p) if p.qself.is_none() && p.path.segments.len() > 1 => {
+            let first = p.path.segments[0].ident.to_string();
+            p.path.leading_colon.is_none() && ["super", "crate", "self"].contains(&first.as_str())
+        }
+        _ => false,
+    }
+}
+
+/// `f(a, b)` as `{ let h: fn(_, _) -> _ = f; call_helper((a, b), h) }`, spanned at the call: the
+/// function becomes a function pointer of its own signature (a coercion, decided on the spot), and
+/// one that does not take the scalar the body runs on lacks the `ScalarHelper` implementation for
+/// the arguments — one message at the call that says what to write
+/// (`lagrange_core::scalar_ext::ScalarHelper`), instead of type mismatches naming the generated
+/// scalar type. A generic helper's pointer takes its types from the arguments.
+fn outside_call(call: &syn::ExprCall) -> Expr {
+    let (func, args) = (&call.func, call.args.iter());
+    let holes = call.args.iter().map(|_| quote::quote!(_));
+    let lifted: TokenStream = quote_spanned!(call.span()=> {
+        let __lagrange_helper: fn(#(#holes),*) -> _ = #func;
+        ::lagrange::__private::call_helper((#(#args,)*), __lagrange_helper)
+    });
+    syn::parse2(lifted).expect("a helper call is an expression")
+}
+
 fn is_f64_type(ty: &syn::Type) -> bool {
     matches!(crate::ast::ungroup_type(ty), syn::Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
 }
@@ -148,6 +188,14 @@ impl VisitMut for Lifter<'_> {
             Expr::Cast(c) if is_f64_type(&c.ty) => {
                 self.integer_scope(|v| v.visit_expr_mut(&mut c.expr));
                 *expr = self.lift(expr);
+            }
+            // `super::helper(x)`: a function outside the module, through `ScalarHelper`, so a
+            // helper that takes `f64` is one message at the call (see `outside_call`).
+            Expr::Call(call) if is_outside_path(&call.func) => {
+                for arg in call.args.iter_mut() {
+                    self.visit_expr_mut(arg);
+                }
+                *expr = outside_call(call);
             }
             Expr::MethodCall(call) => {
                 self.visit_expr_mut(&mut call.receiver);

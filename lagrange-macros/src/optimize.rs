@@ -74,9 +74,12 @@ pub fn optimize(blocks: &mut [syn::Block], scope: &Scope, scalar: &TokenStream) 
         .filter(|(_, (sin, cos))| *sin && *cos)
         .map(|(name, _)| name)
         .collect();
+    // Only the arrays whose elements' `sin` and `cos` are both called get a table: an array with
+    // `theta[i].cos()` alone keeps its calls.
+    let shared_arrays: BTreeSet<String> = arrays.intersection(&shared).cloned().collect();
     let mut sharer = TrigShare {
         names: &shared,
-        arrays: &arrays,
+        arrays: &shared_arrays,
     };
     for block in blocks.iter_mut() {
         sharer.visit_block_mut(block);
@@ -341,5 +344,33 @@ mod tests {
         );
         assert!(lets.is_empty());
         assert_eq!(blocks[0].to_token_stream().to_string(), before);
+    }
+
+    #[test]
+    fn an_array_shares_only_when_both_sin_and_cos_are_called() {
+        // `phi[i].cos()` alone keeps its call (a table bound for it alone was a name without a
+        // binding: the rewrite took every array, the table only the shared ones); `theta`'s sin
+        // and cos share one table.
+        let arrays = names(&["theta", "phi"]);
+        let mut blocks: Vec<syn::Block> = vec![syn::parse_quote!({
+            vec2(theta[i].sin() * phi[i].cos(), -theta[i].cos())
+        })];
+        let lets = optimize(
+            &mut blocks,
+            &Scope {
+                params: &BTreeSet::new(),
+                trig: &BTreeSet::new(),
+                arrays: &arrays,
+            },
+            &quote!(__D),
+        );
+        assert_eq!(
+            blocks[0].to_token_stream().to_string(),
+            "{ vec2 (__sin_cos_theta [i] . 0 * phi [i] . cos () , - __sin_cos_theta [i] . 1) }"
+        );
+        assert_eq!(
+            lets.to_string(),
+            "let __sin_cos_theta = theta . map (| __x | __x . sin_cos ()) ;"
+        );
     }
 }

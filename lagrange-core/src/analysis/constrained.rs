@@ -10,7 +10,7 @@ mod tangent;
 
 use super::MARGINAL_TOLERANCE;
 use super::{check_configuration, describe, max_abs, EquilibriumOptions, Stability};
-use crate::constraints::{ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
+use crate::constraints::{rows_and_scales, ConstraintKind, Constraints, CONSISTENCY_TOLERANCE};
 use crate::error::{Error, Result};
 use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
@@ -201,9 +201,11 @@ where
     mechanism.validate_constraints()?;
     refuse_velocity_rows::<M, N, K, C>()?;
     let (c0, _, _) = position_terms(mechanism, t, &q0);
+    // Contact closed within CONSISTENCY_TOLERANCE of each row's size at the configuration.
+    let sizes0 = rows_and_scales(mechanism, t, &q0, &[0.0; N]).1.position;
     let mut active: [bool; C] = std::array::from_fn(|i| match M::KINDS[i] {
         ConstraintKind::Holonomic => true,
-        ConstraintKind::Unilateral => c0[i] <= CONSISTENCY_TOLERANCE,
+        ConstraintKind::Unilateral => c0[i] <= CONSISTENCY_TOLERANCE * sizes0[i],
         _ => false,
     });
     let unilateral: Vec<usize> = (0..C)
@@ -290,10 +292,12 @@ where
         return Some((i, false));
     }
     let (c, _, _) = position_terms(mechanism, t, q);
+    // Penetrated beyond CONSISTENCY_TOLERANCE of each row's size at q.
+    let size = rows_and_scales(mechanism, t, q, &[0.0; N]).1.position;
     let penetrated = unilateral
         .iter()
         .copied()
-        .filter(|&i| !active[i] && c[i] < -CONSISTENCY_TOLERANCE)
+        .filter(|&i| !active[i] && c[i] < -CONSISTENCY_TOLERANCE * size[i])
         .min_by(|&x, &y| c[x].total_cmp(&c[y]));
     penetrated.map(|i| (i, true))
 }

@@ -1,7 +1,7 @@
 //! The two rows of a friction cone (Coulomb friction in a tangent plane): the sliding direction, the
 //! stick test and the mode switches of the pair. See the [module docs](super) for the law.
 
-use super::{ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE};
+use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::geometry::Scalar;
 
 /// The unit vector along (a, b), `None` for a zero or non-finite vector.
@@ -23,10 +23,16 @@ pub(super) fn sliding_direction<S: Scalar>(s_j: S, s_k: S, r_j: f64, r_k: f64) -
     s_j / norm * S::from(sign)
 }
 
-/// Sets the pair (j, k) from its slip velocity: stuck when |s| ≤ [`CONSISTENCY_TOLERANCE`], else
-/// sliding along ŝ (the reference).
-pub(super) fn follow_slip<const C: usize>(mode: &mut Mode<C>, j: usize, k: usize, s: &[f64; C]) {
-    match unit(s[j], s[k]).filter(|_| s[j].hypot(s[k]) > CONSISTENCY_TOLERANCE) {
+/// Sets the pair (j, k) from its slip velocity: stuck when |s| ≤ `stick` ([`CONSISTENCY_TOLERANCE`](super::CONSISTENCY_TOLERANCE)
+/// of the rows' size), else sliding along ŝ (the reference).
+pub(super) fn follow_slip<const C: usize>(
+    mode: &mut Mode<C>,
+    j: usize,
+    k: usize,
+    s: &[f64; C],
+    stick: f64,
+) {
+    match unit(s[j], s[k]).filter(|_| s[j].hypot(s[k]) > stick) {
         Some((a, b)) => slide(mode, j, k, (a, b)),
         None => {
             mode.rows[j] = RowMode::Stick;
@@ -87,7 +93,7 @@ pub(super) fn first_of_pair(kind: ConstraintKind, j: usize) -> Option<(usize, us
 }
 
 /// Before a (sub)step of length `span` from (t, q, q̇): refreshes the reference of every sliding cone
-/// pair to its current slip direction (kept where the slip is within [`CONSISTENCY_TOLERANCE`] of
+/// pair to its current slip direction (kept where the slip is within [`CONSISTENCY_TOLERANCE`](super::CONSISTENCY_TOLERANCE) of
 /// zero, just after sliding starts), and marks the pairs whose slip, extrapolated linearly with
 /// ṡ = S q̈ + β, stops within 2·span as [`Mode::stopping`].
 pub(super) fn refresh_references<
@@ -107,11 +113,11 @@ pub(super) fn refresh_references<
     if !(0..C).any(|j| mode.rows[j] == RowMode::Sliding) {
         return Ok(());
     }
-    let cr = super::constraint_rows(model, t, q, v);
-    let s = cr.value;
+    let (cr, scales) = super::rows::rows_and_scales(model, t, q, v);
+    let (s, stick) = (cr.value, scales.stick());
     for j in 0..C {
         if let Some((k, _)) = first_of_pair(M::KINDS[j], j) {
-            if mode.rows[j] == RowMode::Sliding && s[j].hypot(s[k]) > CONSISTENCY_TOLERANCE {
+            if mode.rows[j] == RowMode::Sliding && s[j].hypot(s[k]) > stick[j].max(stick[k]) {
                 if let Some(d) = unit(s[j], s[k]) {
                     slide(mode, j, k, d);
                 }

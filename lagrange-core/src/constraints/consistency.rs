@@ -2,10 +2,10 @@
 //! [`CONSISTENCY_TOLERANCE`], and consistent states from a guess ([`consistent_state`],
 //! [`consistent_state_holding`]).
 
-use super::kinds::{has_position, has_velocity};
+use super::kinds::has_velocity;
 use super::mode::friction_rows_follow;
 use super::projection::project_holding;
-use super::rows::constraint_rows;
+use super::rows::rows_and_scales;
 #[cfg(doc)]
 use super::{infer_mode, project};
 use super::{ConstraintKind, Constraints, Mode, RowMode};
@@ -14,19 +14,98 @@ use crate::error::{describe_configuration, Error, Result};
 use crate::model::{Coordinates, State};
 use num_dual::{Dual, Dual2};
 
-/// Absolute tolerance (in the units of each row: length for g and c, velocity for h and s) under
-/// which [`check_consistent`] accepts a state and [`infer_mode`] counts a contact as closed or a
-/// slip velocity as zero. States produced by [`project`] are at round-off, far below it.
+/// Relative tolerance under which [`check_consistent`] accepts a state, [`infer_mode`] counts a
+/// contact as closed or a slip velocity as zero, and [`project`] is done: each row's residual is
+/// measured against its own size at the state ([`RowScales`]: the change of the row over a motion
+/// of the configuration's own size, or at its velocity), so the test is the same in every system
+/// of units and for a row written in any unit. States produced by [`project`] are at round-off,
+/// far below it.
 pub const CONSISTENCY_TOLERANCE: f64 = 1e-8;
 
+/// √|Mⱼⱼ|: the weights that give the coordinates (and their rates) one unit.
+pub(crate) fn mass_weights<const N: usize>(diagonal: &[f64; N]) -> [f64; N] {
+    std::array::from_fn(|j| diagonal[j].abs().sqrt())
+}
+
+/// The rounding of a row's value at a state that gives it no size of its own (at rest, or at
+/// the origin of every coordinate): 64ε·maxⱼ |rᵢⱼ|, each coordinate (or rate) moved by a rounding
+/// of one of its units. Such a state has no length or time of its own to measure a residual
+/// against (the step's would be one), so this floor is in the declaration's units; it only
+/// decides residuals at round-off.
+const ROUNDING_FLOOR: f64 = 64.0 * f64::EPSILON;
+
+/// ‖rᵢ‖·‖x‖ for each row rᵢ (see [`RowScales`]): maxⱼ |rᵢⱼ|/wⱼ · maxⱼ wⱼ|xⱼ|, the change of the row
+/// along the largest component of x in the kinetic metric; at least [`ROUNDING_FLOOR`] over
+/// [`CONSISTENCY_TOLERANCE`] of the row's coefficients, so that a residual at round-off passes
+/// where x = 0.
+pub(crate) fn row_sizes<const N: usize, const C: usize>(
+    rows: &[nalgebra::SVector<f64, N>; C],
+    w: &[f64; N],
+    x: &[f64; N],
+) -> [f64; C] {
+    let size = (0..N).fold(0.0f64, |m, j| m.max(w[j] * x[j].abs()));
+    std::array::from_fn(|i| {
+        let gradient = (0..N)
+            .filter(|&j| w[j] > 0.0)
+            .fold(0.0f64, |m, j| m.max(rows[i][j].abs() / w[j]));
+        let floor = ROUNDING_FLOOR / CONSISTENCY_TOLERANCE * rows[i].amax();
+        (gradient * size).max(floor)
+    })
+}
+
+/// What each constraint row's residuals are measured against: its position-level value (g, c)
+/// against ‖rᵢ‖·‖q‖, its velocity-level value (ġ, h, the slip s) against ‖rᵢ‖·‖q̇‖ + |rᵢ·q̇ − ṙateᵢ|,
+/// with the norms weighted by the mass matrix's diagonal, ‖rᵢ‖ = maxⱼ |rᵢⱼ|/√Mⱼⱼ and
+/// ‖q‖ = maxⱼ √Mⱼⱼ |qⱼ|: the change of the row along the largest motion of the configuration (of the
+/// velocities) by the kinetic metric, plus the row's explicit time rate. Each is a size in the
+/// row's own unit, whatever the units of the coordinates and the row, so a tolerance relative to
+/// it is the same in every system of units (`tests/scale_matrix`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct RowScales<const C: usize> {
+    /// Per row, the size of its position-level value.
+    pub position: [f64; C],
+    /// Per row, the size of its velocity-level value.
+    pub velocity: [f64; C],
+}
+
+impl<const C: usize> RowScales<C> {
+    /// The scales of `rows` at (q, q̇), with Mⱼⱼ the mass matrix's diagonal.
+    pub(crate) fn new<const N: usize>(
+        rows: &super::rows::ConstraintRows<f64, N, C>,
+        diagonal: &[f64; N],
+        q: &[f64; N],
+        v: &[f64; N],
+    ) -> Self {
+        let w = mass_weights(diagonal);
+        let mut scales = RowScales {
+            position: row_sizes(&rows.rows, &w, q),
+            velocity: row_sizes(&rows.rows, &w, v),
+        };
+        for i in 0..C {
+            // The part of the rate that is not r·q̇: ∂g/∂t, or a velocity row's a(q, t).
+            let explicit = (rows.rate[i] - rows.rows[i].dot(&nalgebra::SVector::from(*v))).abs();
+            scales.velocity[i] += explicit;
+        }
+        scales
+    }
+
+    /// Per row, the slip speed under which a friction row counts as sticking:
+    /// [`CONSISTENCY_TOLERANCE`] of its velocity-level size.
+    pub(crate) fn stick(&self) -> [f64; C] {
+        self.velocity.map(|s| CONSISTENCY_TOLERANCE * s)
+    }
+}
+
 /// Checks a state against the constraints: holonomic |g| and |ġ|, velocity |h|, unilateral c ≥ −tol
-/// (and ċ ≥ −tol where c ≤ tol), each within `tol` (use [`CONSISTENCY_TOLERANCE`]); and that every
-/// velocity and friction row is affine in q̇: its second derivative along w = q̇ + (1, …, 1),
+/// (and ċ ≥ −tol where c ≤ tol), each within `tol` (use [`CONSISTENCY_TOLERANCE`]) relative to
+/// the row's own size at the state (see [`CONSISTENCY_TOLERANCE`]); and that every velocity and
+/// friction row is affine in q̇: its second derivative along w = q̇ + (1, …, 1),
 /// d²/ds² h(q, q̇ + s w), must vanish (exactly zero for affine code; allowed 1e-9 relative).
 ///
-/// Cost: one first-order dual pass over x along (q̇, 1) for the residuals, and for velocity rows one
-/// more dual pass for J w and one second-order evaluation of h; cheap enough to run before every
-/// step (`Dynamics::check_constraints`).
+/// Cost: one pass over x with gradient and second-order duals (the rows, their rates and the mass
+/// matrix's diagonal that sizes them), and for velocity rows one more dual pass for J w and one
+/// second-order evaluation of h; cheap enough to run before every step
+/// (`Dynamics::check_constraints`).
 ///
 /// Errors, in this order: invalid friction coefficients, [`Error::NonlinearVelocityConstraint`]
 /// (a property of the declaration, reported whether or not the state satisfies the rows),
@@ -39,50 +118,36 @@ pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize,
     tol: f64,
 ) -> Result<()> {
     model.validate_constraints()?;
-    // x, ẋ and ġ from one dual pass along (q̇, 1).
-    let td = if M::RHEONOMIC {
-        Dual::new(t, 1.0)
-    } else {
-        Dual::from_re(t)
-    };
-    let qd: [Dual<f64>; N] = std::array::from_fn(|j| Dual::new(q[j], v[j]));
-    let xd = model.cartesian(td, &qd);
-    let x: [f64; K] = std::array::from_fn(|i| xd[i].re);
-    let x_dot: [f64; K] = std::array::from_fn(|i| xd[i].eps);
-    let (mut value, mut rate) = ([0.0; C], [0.0; C]);
-    if has_position::<M, N, K, C>() {
-        let g = model.position_constraints(td, &qd, &xd);
-        for i in 0..C {
-            value[i] = g[i].re;
-            rate[i] = g[i].eps;
-        }
-    }
-    if has_velocity::<M, N, K, C>() {
-        let h = model.velocity_constraints(t, q, v, &x, &x_dot);
-        for i in 0..C {
-            if M::KINDS[i].is_velocity() {
-                value[i] = h[i];
-            }
-        }
-    }
     // The declaration first: a velocity row that is not affine in q̇ is refused whatever the state.
-    velocity_rows_affine_at(model, t, q, v, &x, &x_dot)?;
+    check_velocity_rows_affine(model, t, q, v)?;
+    let (cr, scales) = rows_and_scales(model, t, q, v);
+    let (value, rate) = (cr.value, cr.rate);
     let mut violated = Vec::new();
     for i in 0..C {
-        let r = match M::KINDS[i] {
-            ConstraintKind::Holonomic => value[i].abs().max(rate[i].abs()),
-            ConstraintKind::Velocity => value[i].abs(),
+        let (at_position, at_velocity) = (tol * scales.position[i], tol * scales.velocity[i]);
+        // The residuals and whether each is within its row's tolerance.
+        let (r, within) = match M::KINDS[i] {
+            ConstraintKind::Holonomic => (
+                value[i].abs().max(rate[i].abs()),
+                value[i].abs() <= at_position && rate[i].abs() <= at_velocity,
+            ),
+            ConstraintKind::Velocity => (value[i].abs(), value[i].abs() <= at_velocity),
             ConstraintKind::Unilateral => {
                 let pen = (-value[i]).max(0.0);
-                if value[i] <= tol {
-                    pen.max((-rate[i]).max(0.0))
+                if value[i] <= at_position {
+                    let approach = (-rate[i]).max(0.0);
+                    (
+                        pen.max(approach),
+                        pen <= at_position && approach <= at_velocity,
+                    )
                 } else {
-                    pen
+                    (pen, true)
                 }
             }
-            ConstraintKind::Friction { .. } | ConstraintKind::FrictionCone { .. } => 0.0,
+            ConstraintKind::Friction { .. } | ConstraintKind::FrictionCone { .. } => (0.0, true),
         };
-        if !(r <= tol) {
+        // `!within` with `r` NaN: a NaN residual fails both comparisons.
+        if !within || r.is_nan() {
             violated.push((i, r));
         }
     }
@@ -238,16 +303,16 @@ pub fn consistent_state_holding<
         Ok(()) | Err(Error::ConstraintViolation { .. }) => {}
         Err(e) => return Err(e),
     }
-    let cr = constraint_rows(model, guess.t, &q, &v);
+    let (cr, scales) = rows_and_scales(model, guess.t, &q, &v);
     let mut mode = Mode::all_active::<M, N, K>();
     for i in 0..C {
         if let ConstraintKind::Unilateral = M::KINDS[i] {
-            if cr.value[i] > CONSISTENCY_TOLERANCE {
+            if cr.value[i] > CONSISTENCY_TOLERANCE * scales.position[i] {
                 mode.rows[i] = RowMode::Inactive;
             }
         }
     }
-    friction_rows_follow(&M::KINDS, &mut mode, &cr.value, None);
+    friction_rows_follow(&M::KINDS, &mut mode, &cr.value, None, &scales.stick());
     let position_rows = (0..C)
         .filter(|&i| mode.enforced(i) && M::KINDS[i].is_position())
         .count();

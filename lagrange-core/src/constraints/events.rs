@@ -88,8 +88,10 @@ pub(crate) fn triggered_rows<
         )
     };
     let separating: [bool; C] = if (0..C).any(|i| !armed[i] && phi_end[i] < 0.0 && separated(i)) {
-        let rate = super::constraint_rows(model, t, q, v).rate;
-        std::array::from_fn(|i| separated(i) && rate[i] > CONSISTENCY_TOLERANCE)
+        let (cr, scales) = super::rows::rows_and_scales(model, t, q, v);
+        std::array::from_fn(|i| {
+            separated(i) && cr.rate[i] > CONSISTENCY_TOLERANCE * scales.velocity[i]
+        })
     } else {
         [false; C]
     };

@@ -243,6 +243,7 @@ pub use kinds::{check_declaration, ConstraintCounts, ConstraintKind};
 pub use mode::{accelerations, infer_mode};
 pub use prepared::{accelerations_prepared, project_prepared, regular_accelerations_prepared};
 pub use projection::project;
+pub(crate) use rows::rows_and_scales;
 pub use rows::{constraint_rows, holonomic_values, CartesianMotion, ConstraintRows};
 pub use solve::{accelerations_in_mode, ConstrainedAccelerations};
 

@@ -3,7 +3,7 @@
 
 use super::cone;
 use super::kinds::always_active;
-use super::rows::{constraint_rows, real};
+use super::rows::{real, rows_and_scales};
 use super::solve::accelerations_in_mode;
 use super::{ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE};
 use crate::error::Result;
@@ -24,16 +24,17 @@ pub fn infer_mode<M: Constraints<N, K, C>, const N: usize, const K: usize, const
     if always_active::<M, N, K, C>() {
         return Ok(mode);
     }
-    let cr = constraint_rows(model, t, q, v);
+    let (cr, scales) = rows_and_scales(model, t, q, v);
     let tol = CONSISTENCY_TOLERANCE;
     for i in 0..C {
         if let ConstraintKind::Unilateral = M::KINDS[i] {
-            if !(cr.value[i] <= tol && cr.rate[i] <= tol) {
+            if !(cr.value[i] <= tol * scales.position[i] && cr.rate[i] <= tol * scales.velocity[i])
+            {
                 mode.rows[i] = RowMode::Inactive;
             }
         }
     }
-    friction_rows_follow(&M::KINDS, &mut mode, &cr.value, None);
+    friction_rows_follow(&M::KINDS, &mut mode, &cr.value, None, &scales.stick());
     for _ in 0..=2 * C {
         if always_active::<M, N, K, C>() {
             break;
@@ -73,13 +74,15 @@ pub(crate) fn apply_fix<M: Constraints<N, K, C>, const N: usize, const K: usize,
 }
 
 /// Friction rows follow their contact (helper with the model type in scope): rows of a separated
-/// contact are inactive; the others stick where the slip is within [`CONSISTENCY_TOLERANCE`] of zero
+/// contact are inactive; the others stick where the slip is within `stick` of zero (per row,
+/// [`CONSISTENCY_TOLERANCE`] of its size: [`RowScales::stick`](super::consistency::RowScales::stick))
 /// and slide with it elsewhere. `only_normal` restricts the update to the friction of one contact.
 pub(super) fn friction_rows_follow<const C: usize>(
     kinds: &[ConstraintKind; C],
     mode: &mut Mode<C>,
     slip: &[f64; C],
     only_normal: Option<usize>,
+    stick: &[f64; C],
 ) {
     for j in 0..C {
         let Some(normal) = kinds[j].friction_normal() else {
@@ -97,11 +100,11 @@ pub(super) fn friction_rows_follow<const C: usize>(
         match kinds[j] {
             ConstraintKind::FrictionCone { partner, .. } => {
                 if j < partner {
-                    cone::follow_slip(mode, j, partner, slip);
+                    cone::follow_slip(mode, j, partner, slip, stick[j].max(stick[partner]));
                 }
             }
             _ => {
-                mode.rows[j] = if slip[j].abs() <= CONSISTENCY_TOLERANCE {
+                mode.rows[j] = if slip[j].abs() <= stick[j] {
                     RowMode::Stick
                 } else if slip[j] > 0.0 {
                     RowMode::SlipPositive

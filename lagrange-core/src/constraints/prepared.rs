@@ -22,7 +22,7 @@
 
 use super::kinds::{always_active, written_holonomic};
 use super::mode::infer_mode;
-use super::projection::{newton_onto_positions, project, projection_failed};
+use super::projection::{newton_onto_positions, project, projection_failed, relative_residual};
 use super::rows::{real, CartesianMotion, ConstraintRows};
 use super::solve::ConstrainedAccelerations;
 use super::solve::{accelerations_in_mode_prepared, finish, singular_constraints};
@@ -375,13 +375,17 @@ pub fn project_prepared<M: Constraints<N, K, C>, const N: usize, const K: usize,
         let mode = infer_mode(model, t, q, v)?;
         return project(model, t, q, v, &mode);
     }
+    // Each row's residual against its size at the start (see CONSISTENCY_TOLERANCE).
+    let start: ConstraintRows<f64, N, C> = affine_rows(model, constants, t, q, v);
+    let weights = super::consistency::mass_weights(&constants.mass_diagonal(&model.masses()));
+    let sizes = super::consistency::row_sizes(&start.rows, &weights, q);
     let rows_at = |q: &[f64; N]| {
         let rows: ConstraintRows<f64, N, C> = affine_rows(model, constants, t, q, v);
-        let residual = rows.value.iter().fold(0.0f64, |m, g| m.max(g.abs()));
-        (residual, rows)
+        (relative_residual(&rows.value, &sizes, |_| true), rows)
     };
+    let at_start = (relative_residual(&start.value, &sizes, |_| true), start);
     let (qn, rows, residual, iterations) =
-        newton_onto_positions(*q, rows_at(q), rows_at, |q, rows| {
+        newton_onto_positions(*q, at_start, &weights, rows_at, |q, rows| {
             least_norm_correction::<M, N, K, C>(constants, &rows.rows, &rows.value, t, q)
         })?;
     if let Some(e) = projection_failed::<M::Coords, N>(t, q, v, iterations, residual) {

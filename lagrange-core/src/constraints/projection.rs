@@ -27,18 +27,30 @@ fn mass_from_jacobian<M: Constraints<N, K, C>, const N: usize, const K: usize, c
     m
 }
 
-/// Position rows enforced in `mode` and their values at (t, q) (plain f64, no derivatives).
+/// The largest |gᵢ|/sizeᵢ of the position rows enforced in `mode` at (t, q) (plain f64, no
+/// derivatives): each row against its own size (see [`CONSISTENCY_TOLERANCE`]).
 fn position_residual<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
     model: &M,
     t: f64,
     q: &[f64; N],
     mode: &Mode<C>,
+    sizes: &[f64; C],
 ) -> f64 {
     let x = model.cartesian(t, q);
     let g = model.position_constraints(t, q, &x);
+    relative_residual(&g, sizes, |i| M::KINDS[i].is_position() && mode.enforced(i))
+}
+
+/// maxᵢ |gᵢ|/sizeᵢ over the rows `use_row` selects (a row of size zero counts only if g is not
+/// zero: then infinitely far).
+pub(super) fn relative_residual<const C: usize>(
+    g: &[f64; C],
+    sizes: &[f64; C],
+    use_row: impl Fn(usize) -> bool,
+) -> f64 {
     (0..C)
-        .filter(|&i| M::KINDS[i].is_position() && mode.enforced(i))
-        .fold(0.0f64, |m, i| m.max(g[i].abs()))
+        .filter(|&i| use_row(i) && g[i] != 0.0)
+        .fold(0.0f64, |m, i| m.max(g[i].abs() / sizes[i]))
 }
 
 /// One mass-weighted least-norm correction δ = −M⁻¹Rᵀ(RM⁻¹Rᵀ)⁻¹r over the rows selected by `use_row`,
@@ -121,15 +133,17 @@ fn least_norm_correction<
 
 /// The Newton iteration of the position projection, shared by [`project`] and
 /// [`project_prepared`](super::project_prepared): from q and `at_q` = `evaluate(q)` (the residual
-/// max |gᵢ| and what `correction` needs there), steps q ← q + δ with δ = `correction(q, ·)` while
-/// the residual decreases, until it reaches zero, Newton's quadratic convergence makes the next
-/// correction fall below round-off, or it stalls at round-off, at most
-/// [`MAX_PROJECTION_ITERATIONS`] times. Returns the best iterate, its evaluation, its residual and
-/// the number of corrections computed.
+/// maxᵢ |gᵢ|/sizeᵢ, relative to each row's size, and what `correction` needs there), steps
+/// q ← q + δ with δ = `correction(q, ·)` while the residual decreases, until it reaches zero,
+/// Newton's quadratic convergence makes the next correction fall below round-off (1e-8 of q, both
+/// weighted by `weights` = √Mⱼⱼ so that coordinates of any unit compare), or it stalls at
+/// round-off, at most [`MAX_PROJECTION_ITERATIONS`] times. Returns the best iterate, its
+/// evaluation, its residual and the number of corrections computed.
 #[inline(always)]
 pub(super) fn newton_onto_positions<X, const N: usize>(
     q: [f64; N],
     at_q: (f64, X),
+    weights: &[f64; N],
     mut evaluate: impl FnMut(&[f64; N]) -> (f64, X),
     mut correction: impl FnMut(&[f64; N], &X) -> Result<SVector<f64, N>>,
 ) -> Result<([f64; N], X, f64, usize)> {
@@ -147,10 +161,11 @@ pub(super) fn newton_onto_positions<X, const N: usize>(
             break; // round-off floor reached: keep the best iterate
         }
         let stalled = new_residual > 0.25 * residual;
-        let scale = qn.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        let weighted =
+            |x: &dyn Fn(usize) -> f64| (0..N).fold(0.0f64, |m, j| m.max(weights[j] * x(j).abs()));
         // Newton converges quadratically: after a correction this small the next one would be
         // ≲ |δ|²·(curvature) — below round-off — so it is not computed.
-        let converged = delta.amax() <= 1e-8 * scale;
+        let converged = weighted(&|j| delta[j]) <= 1e-8 * weighted(&|j| qn[j]);
         (qn, residual, at_qn) = (trial, new_residual, at_trial);
         if converged || (stalled && residual < CONSISTENCY_TOLERANCE * 1e-4) {
             break;
@@ -160,7 +175,7 @@ pub(super) fn newton_onto_positions<X, const N: usize>(
 }
 
 /// [`Error::ProjectionFailed`] at the state (t, q, q̇) the projection started from when the
-/// residual it reached is above [`CONSISTENCY_TOLERANCE`] (or NaN).
+/// residual it reached (relative to each row's size) is above [`CONSISTENCY_TOLERANCE`] (or NaN).
 pub(super) fn projection_failed<Names: Coordinates<N>, const N: usize>(
     t: f64,
     q: &[f64; N],
@@ -214,12 +229,26 @@ pub(super) fn project_holding<
         std::array::from_fn(|i| enforced[i] && M::KINDS[i].is_position());
     let mut qn = *q;
     if position_rows.iter().any(|&b| b) {
-        let residual_at = |q: &[f64; N]| (position_residual(model, t, q, mode), ());
-        let (projected, (), residual, iterations) =
-            newton_onto_positions(qn, residual_at(&qn), residual_at, |qn, _| {
-                let (rows, value, jac) = position_rows_and_jacobian(model, t, qn);
+        // The rows at the start size the residuals (and serve the first correction).
+        let start = position_rows_and_jacobian(model, t, &qn);
+        let weights =
+            super::consistency::mass_weights(&super::rows::mass_diagonal(model, &start.2));
+        let sizes = super::consistency::row_sizes(&start.0, &weights, &qn);
+        let at_start = relative_residual(&start.1, &sizes, |i| position_rows[i]);
+        let residual_at = |q: &[f64; N]| (position_residual(model, t, q, mode, &sizes), None);
+        let (projected, _, residual, iterations) = newton_onto_positions(
+            qn,
+            (at_start, Some(start)),
+            &weights,
+            residual_at,
+            |qn, at| {
+                let (rows, value, jac) = match at {
+                    Some(start) => *start,
+                    None => position_rows_and_jacobian(model, t, qn),
+                };
                 least_norm_correction(model, t, qn, &jac, &rows, &value, &position_rows, free_q)
-            })?;
+            },
+        )?;
         if let Some(e) = projection_failed::<M::Coords, N>(t, q, v, iterations, residual) {
             return Err(e);
         }

@@ -367,6 +367,42 @@ pub fn constraint_rows<
     rows_and_jacobian(model, t, q, v).0
 }
 
+/// [`constraint_rows`] at a real state with the sizes its residuals are measured against (see
+/// [`RowScales`](super::consistency::RowScales)), from the same pass: the mass matrix's diagonal
+/// from the Cartesian Jacobian that pass computes.
+pub(crate) fn rows_and_scales<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> (ConstraintRows<f64, N, C>, super::consistency::RowScales<C>) {
+    let (cr, jac) = rows_and_jacobian(model, t, q, v);
+    let scales = super::consistency::RowScales::new(&cr, &mass_diagonal(model, &jac), q, v);
+    (cr, scales)
+}
+
+/// Mⱼⱼ = Σₖ μₖ (∂xₖ/∂qⱼ)², the mass matrix's diagonal from the Cartesian Jacobian (the inertial
+/// components only).
+pub(super) fn mass_diagonal<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    jac: &[SVector<f64, N>; K],
+) -> [f64; N] {
+    let masses = model.masses();
+    std::array::from_fn(|j| {
+        (0..M::INERTIAL).fold(0.0, |m, k| m + masses[k] * jac[k][j] * jac[k][j])
+    })
+}
+
 pub(super) fn real<S: Scalar, const N: usize>(q: &[S; N]) -> [f64; N] {
     std::array::from_fn(|j| q[j].re())
 }

@@ -169,29 +169,41 @@ impl<S: Scalar, const N: usize, const C: usize> SlidingSystem<'_, S, N, C> {
     }
 }
 
-/// Solves A x = b (general square, fixed size) by LU with partial pivoting on the real parts;
-/// generic over the scalar so it differentiates through dual numbers. `None` for a vanishing pivot.
+/// Solves A x = b (general square, fixed size) by LU with scaled partial pivoting on the real parts
+/// (pivots chosen and tested on the equilibrated matrix, as [`crate::linalg::BlockLu`]'s: a test
+/// that rescaling a constraint row does not change); generic over the scalar so it differentiates
+/// through dual numbers. `None` for a vanishing pivot or an entry that is not finite.
 fn lu_solve_generic<S: Scalar, const C: usize>(
     a: &SMatrix<S, C, C>,
     b: &SVector<S, C>,
 ) -> Option<SVector<S, C>> {
     let mut a = *a;
     let mut x = *b;
-    let scale = a.iter().fold(0.0f64, |m, v| m.max(v.re().abs()));
-    let tol = crate::linalg::SINGULAR_PIVOT * scale;
+    let magnitude = a.map(|v| v.re().abs());
+    if !magnitude.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    let columns: [f64; C] = std::array::from_fn(|c| 1.0 / magnitude.column(c).max());
+    let mut rows: [f64; C] = std::array::from_fn(|r| {
+        1.0 / (0..C).fold(0.0f64, |m, c| m.max(magnitude[(r, c)] * columns[c]))
+    });
+    if !columns.iter().chain(&rows).all(|s| s.is_finite()) {
+        return None;
+    }
     for c in 0..C {
         let mut p = c;
         for r in (c + 1)..C {
-            if a[(r, c)].re().abs() > a[(p, c)].re().abs() {
+            if a[(r, c)].re().abs() * rows[r] > a[(p, c)].re().abs() * rows[p] {
                 p = r;
             }
         }
-        if !(a[(p, c)].re().abs() > tol) {
+        if !(a[(p, c)].re().abs() * rows[p] * columns[c] > crate::linalg::SINGULAR_PIVOT) {
             return None;
         }
         if p != c {
             a.swap_rows(p, c);
             x.swap_rows(p, c);
+            rows.swap(p, c);
         }
         let inv = a[(c, c)].recip();
         for r in (c + 1)..C {

@@ -79,9 +79,12 @@ pub(super) fn singular_constraints<
             c[r] = acc / a[(r, r)];
         }
     }
-    let largest = c.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    // cₖ carries the units of row p over those of row k: weighted by √Sₖₖ, the coefficients compare
+    // rows whatever each is written in.
+    let weight = |k: usize| c[k].abs() * s[(k, k)].abs().sqrt();
+    let largest = (0..p).fold(0.0f64, |m, k| m.max(weight(k)));
     let mut names: Vec<&str> = (0..p)
-        .filter(|&k| enforced[k] && ok && c[k].abs() > 1e-6 * largest.max(f64::MIN_POSITIVE))
+        .filter(|&k| enforced[k] && ok && weight(k) > 1e-6 * largest.max(f64::MIN_POSITIVE))
         .map(|k| M::NAMES[k])
         .collect();
     names.push(M::NAMES[p]);

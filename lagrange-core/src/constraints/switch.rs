@@ -4,6 +4,7 @@
 
 use super::cone;
 use super::mode::{apply_fix, friction_rows_follow, worst_violation};
+use super::rows::rows_and_scales;
 use super::solve::accelerations_in_mode;
 use super::CONSISTENCY_TOLERANCE;
 use super::{constraint_rows, project, ConstraintKind, Constraints, Mode, RowMode};
@@ -26,18 +27,18 @@ pub(crate) fn transition<
     mode: &mut Mode<C>,
     row: usize,
 ) -> Result<()> {
-    let follow = |mode: &mut Mode<C>, slip: &[f64; C]| {
-        friction_rows_follow(&M::KINDS, mode, slip, Some(row));
+    let follow = |mode: &mut Mode<C>, slip: &[f64; C], stick: &[f64; C]| {
+        friction_rows_follow(&M::KINDS, mode, slip, Some(row), stick);
     };
     match (M::KINDS[row], mode.rows[row]) {
         (ConstraintKind::Unilateral, RowMode::Inactive) => {
             impact(model, restitution, t, q, v, mode, row)?;
-            let slip = constraint_rows(model, t, q, v).value;
-            follow(mode, &slip);
+            let (after, scales) = rows_and_scales(model, t, q, v);
+            follow(mode, &after.value, &scales.stick());
         }
         (ConstraintKind::Unilateral, RowMode::Active) => {
             mode.rows[row] = RowMode::Inactive;
-            follow(mode, &[0.0; C]);
+            follow(mode, &[0.0; C], &[0.0; C]);
         }
         (ConstraintKind::Friction { .. }, RowMode::SlipPositive | RowMode::SlipNegative) => {
             // The slip velocity reached zero: make it exactly zero, then test static friction.
@@ -72,7 +73,8 @@ pub(crate) fn transition<
 
 /// A separated contact `row` closes at (t, q, v): a frictionless impulse along it (and the rows
 /// already enforced, which stay satisfied) takes its rate from ċ⁻ to −e ċ⁻ (Newton's law); the
-/// contact stays closed unless it bounces off (e ċ⁻ beyond [`CONSISTENCY_TOLERANCE`]).
+/// contact stays closed unless it bounces off (e ċ⁻ beyond [`CONSISTENCY_TOLERANCE`] of the row's
+/// velocity size).
 fn impact<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
     model: &M,
     restitution: f64,
@@ -82,7 +84,7 @@ fn impact<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usiz
     mode: &mut Mode<C>,
     row: usize,
 ) -> Result<()> {
-    let cr = constraint_rows(model, t, q, v);
+    let (cr, scales) = rows_and_scales(model, t, q, v);
     let approach = cr.rate[row];
     mode.rows[row] = RowMode::Active;
     if approach < 0.0 {
@@ -101,7 +103,7 @@ fn impact<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usiz
             }
         }
         impulse(model, t, q, v, &velocity_only, &decrease)?;
-        if restitution * -approach > CONSISTENCY_TOLERANCE {
+        if restitution * -approach > CONSISTENCY_TOLERANCE * scales.velocity[row] {
             mode.rows[row] = RowMode::Inactive; // bounces off
         }
     }

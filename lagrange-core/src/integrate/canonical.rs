@@ -16,13 +16,12 @@
 //! dual pass over q at fixed q̇, plus 𝓕 — the potential and the non-conservative part need not be
 //! separated ([`momentum_rate`]).
 
-use super::newton::{jacobian_rows, max_norm, newton, MAX_NEWTON_ITERATIONS};
+use super::newton::jacobian_rows;
 use super::Stats;
 use crate::error::{describe_configuration, Error, Result};
 pub(crate) use crate::evaluation::momentum_rate;
 use crate::evaluation::Evaluate;
 use crate::geometry::Scalar;
-use crate::linalg::lu_solve;
 use crate::model::Coordinates;
 use nalgebra::{SMatrix, SVector};
 use num_dual::DualSVec;
@@ -99,10 +98,12 @@ pub fn field_jacobians<M: Evaluate<N>, const N: usize>(
     })
 }
 
-/// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method with
-/// the exact Jacobian ∂p/∂v = M from dual numbers, from `guess`. Returns v and the iterations. For a
-/// Lagrangian quadratic in v (every [`Model`](crate::Model)), p = p(t, q, 0) + M v is affine in v and
-/// the first iteration gives v = M⁻¹(p − p(t, q, 0)) to round-off; the second confirms it.
+/// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform). T is quadratic in q̇
+/// for every mechanism (T = ½ Σ μᵢ ẋᵢ² with ẋ = J q̇ + ∂x/∂t affine in q̇), so p = M(t, q) v +
+/// p(t, q, 0) and v = M⁻¹(p − p(t, q, 0)) is one solve with the mass matrix (p(t, q, 0) = 0 for a
+/// scleronomic mechanism): no iteration, whose stopping test on an already exact first step would
+/// only decide on round-off. `guess` is where M is evaluated for a mechanism whose M depends on
+/// q̇ (none does). Returns v and the solves taken (1).
 pub fn velocities_from_momenta<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     t: f64,
@@ -126,62 +127,23 @@ pub(crate) fn velocities_and_mass_from_momenta<M: Evaluate<N>, const N: usize>(
     guess: &[f64; N],
     stats: &mut Stats,
 ) -> Result<([f64; N], usize, Option<SMatrix<f64, N, N>>)> {
-    if M::SCLERONOMIC {
-        // p = M(q) q̇ exactly: one solve with the mass matrix, no iteration.
-        stats.evaluations += 1;
-        let mass = mechanism.equations_of_motion_at(t, q, guess).mass_matrix;
-        return match crate::linalg::solve_spd(&mass, &SVector::from(*p)) {
-            Ok(v) if v.iter().all(|x| x.is_finite()) => Ok((v.into(), 1, Some(mass))),
-            Ok(_) => Err(crate::dynamics::non_finite_dynamics::<M::Coords, f64, N>(
-                t, q,
-            )),
-            Err(e) => Err(crate::dynamics::mass_matrix_failure::<M::Coords, f64, N>(
-                &mass, e, t, q,
-            )),
-        };
+    stats.evaluations += 1;
+    let mass = mechanism.equations_of_motion_at(t, q, guess).mass_matrix;
+    let mut rhs = SVector::<f64, N>::from(*p);
+    if !M::SCLERONOMIC {
+        // The momenta at rest: the moving frame's part of p (p(t, q, 0) = Jᵀ diag(μ) ∂x/∂t).
+        rhs -= SVector::from(mechanism.momenta_at(t, q, &[0.0; N]));
     }
-    let td = DualSVec::<f64, N>::from_re(t);
-    let qd: [DualSVec<f64, N>; N] = std::array::from_fn(|j| DualSVec::from_re(q[j]));
-    let mut v = SVector::<f64, N>::from(*guess);
-    let before = stats.newton_iterations;
-    let end = newton(&mut v, MAX_NEWTON_ITERATIONS, false, stats, |v| {
-        let vd: [DualSVec<f64, N>; N] =
-            std::array::from_fn(|j| DualSVec::from_re(v[j]).derivative(j));
-        let pv = mechanism.momenta_at(td, &qd, &vd);
-        let r = SVector::<f64, N>::from_fn(|i, _| pv[i].re - p[i]);
-        let residual_norm = max_norm(&r);
-        if !residual_norm.is_finite() {
-            // The momenta are not finite at (t, q, v): name the state.
-            return Err(Error::NonFiniteDynamics {
-                t,
-                configuration: format!(
-                    "{}, velocities ({})",
-                    describe_configuration(&M::Coords::NAMES, q),
-                    describe_configuration(&M::Coords::NAMES, &(*v).into())
-                ),
-            });
+    match crate::linalg::solve_spd(&mass, &rhs) {
+        Ok(v) if v.iter().all(|x| x.is_finite()) => {
+            Ok((v.into(), 1, M::SCLERONOMIC.then_some(mass)))
         }
-        let jac = jacobian_rows(&pv);
-        let Some(delta) = lu_solve(&jac, &r) else {
-            // ∂p/∂v is the mass matrix: name its singular pivot (or its overflow).
-            return Err(match crate::linalg::cholesky(&jac) {
-                Err(e) if jac.iter().all(|x| x.is_finite()) => Error::SingularMassMatrix {
-                    t,
-                    configuration: describe_configuration(&M::Coords::NAMES, q),
-                    coordinate: M::Coords::NAMES[e.index],
-                    pivot: e.pivot,
-                },
-                _ => Error::NonFiniteDynamics {
-                    t,
-                    configuration: describe_configuration(&M::Coords::NAMES, q),
-                },
-            });
-        };
-        Ok((delta, residual_norm))
-    })?;
-    // Every iteration evaluated the momenta with their Jacobian ∂p/∂v = M (counted as an
-    // evaluation: it is the mass matrix, not a Jacobian of the step's equations).
-    stats.evaluations += stats.newton_iterations - before;
-    let iterations = end.converged(t)?;
-    Ok((v.into(), iterations, None))
+        Ok(_) => Err(Error::NonFiniteDynamics {
+            t,
+            configuration: describe_configuration(&M::Coords::NAMES, q),
+        }),
+        Err(e) => Err(crate::dynamics::mass_matrix_failure::<M::Coords, f64, N>(
+            &mass, e, t, q,
+        )),
+    }
 }

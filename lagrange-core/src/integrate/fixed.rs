@@ -381,10 +381,16 @@ fn locate<I: Integrator, M: Dynamics<N>, const N: usize>(
         if b - a <= tol {
             break;
         }
-        let mut c = b - fb * (b - a) / (fb - fa);
-        if !(c > a && c < b) {
-            c = 0.5 * (a + b);
-        }
+        // A secant point within tol/2 of an end (or past it) is moved to tol/2 from it (Brent's
+        // least step, *Algorithms for Minimization without Derivatives*, 1973, §4.2): when that
+        // end is the zero to rounding, the bracket closes at the next test, whichever side of the
+        // zero the rounding put it, instead of shrinking from the far end one halving at a time.
+        let secant = b - fb * (b - a) / (fb - fa);
+        let c = if secant.is_nan() {
+            0.5 * (a + b)
+        } else {
+            secant.max(a + 0.5 * tol).min(b - 0.5 * tol)
+        };
         let (fc, sc) = at(c, stats)?;
         if fc <= 0.0 {
             (b, fb, sb) = (c, fc, sc);

@@ -304,18 +304,34 @@ pub trait Integrator: Sized {
     /// step with fresh working memory, projects onto the constraints and checks the result; on a
     /// declaration with unilateral or friction rows holds the contact mode read from the state
     /// over the step, its changes located and applied. On error the state is unchanged.
+    ///
+    /// Fresh working memory means that an implicit method forms its Jacobians and factorises its
+    /// Newton matrix in every such step: repeated steps are taken by
+    /// [`Mechanism::simulate`](crate::Mechanism::simulate) or a [`Stepper`], which keep them.
     fn step<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         state: &mut State<M::Coords>,
         h: f64,
     ) -> Result<()> {
-        if ContactsOf::<M, N>::SWITCHES && !Self::ADAPTIVE {
-            return fixed::step_holding_contacts::<Self, M, N>(mechanism, state, h);
-        }
-        let mut memory = Self::Memory::<N>::default();
-        let mut stats = Stats::default();
-        validated_step(mechanism, state, h, |t, q, v| {
-            Self::advance(mechanism, &mut memory, t, q, v, h, &mut stats)
-        })
+        step_keeping_memory::<Self, M, N>(mechanism, &mut Default::default(), state, h)
     }
+}
+
+/// [`Integrator::step`] with the method's working memory `memory`, which a caller taking several
+/// steps keeps from one to the next ([`Mechanism::simulate`](crate::Mechanism::simulate)). A
+/// declaration with unilateral or friction rows takes fresh memory in every (sub)step of its held
+/// contact mode, whose rows may change within the step.
+pub(crate) fn step_keeping_memory<I: Integrator, M: Evaluate<N>, const N: usize>(
+    mechanism: &M,
+    memory: &mut I::Memory<N>,
+    state: &mut State<M::Coords>,
+    h: f64,
+) -> Result<()> {
+    if ContactsOf::<M, N>::SWITCHES && !I::ADAPTIVE {
+        return fixed::step_holding_contacts::<I, M, N>(mechanism, state, h);
+    }
+    let mut stats = Stats::default();
+    validated_step(mechanism, state, h, |t, q, v| {
+        I::advance(mechanism, memory, t, q, v, h, &mut stats)
+    })
 }

@@ -81,30 +81,100 @@ pub fn max_norm<const N: usize>(x: &SVector<f64, N>) -> f64 {
 
 /// The unknowns of a Newton iteration: a vector, or the S stage vectors of a collocation method.
 pub(crate) trait Unknowns: Copy {
-    /// x ← x − δ.
-    fn subtract(&mut self, delta: &Self);
-    /// ‖x‖∞.
-    fn max_norm(&self) -> f64;
+    /// x ← x − δ, and the weighted norms (‖δ‖, ‖x‖) of the increment and of the new iterate (see
+    /// [`weighted_norm`](Unknowns::weighted_norm)), in one pass.
+    fn subtract_measured(&mut self, delta: &Self, weights: &Self) -> (f64, f64);
+    /// maxᵢ |xᵢ|·wᵢ: the unknowns measured with weights w that make their components comparable
+    /// (see [`NewtonScale`]).
+    fn weighted_norm(&self, weights: &Self) -> f64;
 }
 
 impl<const N: usize> Unknowns for SVector<f64, N> {
-    fn subtract(&mut self, delta: &Self) {
-        *self -= delta;
+    #[inline(always)]
+    fn subtract_measured(&mut self, delta: &Self, weights: &Self) -> (f64, f64) {
+        let (mut d, mut s) = (0.0f64, 0.0f64);
+        for ((x, dx), w) in self.iter_mut().zip(delta.iter()).zip(weights.iter()) {
+            *x -= dx;
+            d = larger(d, dx.abs() * w);
+            s = larger(s, x.abs() * w);
+        }
+        (d, s)
     }
-    fn max_norm(&self) -> f64 {
-        max_norm(self)
+    #[inline(always)]
+    fn weighted_norm(&self, weights: &Self) -> f64 {
+        self.iter()
+            .zip(weights.iter())
+            .fold(0.0f64, |m, (x, w)| larger(m, x.abs() * w))
     }
 }
 
 impl<const N: usize, const S: usize> Unknowns for [SVector<f64, N>; S] {
-    fn subtract(&mut self, delta: &Self) {
-        for (x, d) in self.iter_mut().zip(delta) {
-            *x -= d;
+    #[inline(always)]
+    fn subtract_measured(&mut self, delta: &Self, weights: &Self) -> (f64, f64) {
+        let (mut d, mut s) = (0.0f64, 0.0f64);
+        for ((x, dx), w) in self.iter_mut().zip(delta).zip(weights) {
+            let (dj, sj) = x.subtract_measured(dx, w);
+            d = larger(d, dj);
+            s = larger(s, sj);
         }
+        (d, s)
     }
-    fn max_norm(&self) -> f64 {
-        self.iter().fold(0.0f64, |m, x| m.max(max_norm(x)))
+    #[inline(always)]
+    fn weighted_norm(&self, weights: &Self) -> f64 {
+        self.iter()
+            .zip(weights)
+            .fold(0.0f64, |m, (x, w)| larger(m, x.weighted_norm(w)))
     }
+}
+
+/// max(m, x) for a running maximum m that is not NaN: a NaN x is passed over, as `f64::max`
+/// passes it over, without that function's test of m.
+#[inline(always)]
+fn larger(m: f64, x: f64) -> f64 {
+    if x > m {
+        x
+    } else {
+        m
+    }
+}
+
+/// What a Newton iteration's increments are measured against: weights wᵢ that give every
+/// component of the unknowns the same unit (so the largest component is a meaningful size, and a
+/// rescaled coordinate is measured alike), the least size the unknowns are measured against, and
+/// the resolution of the equations: the size below which an increment is the rounding of the
+/// residual's evaluation rather than an error of the iterate.
+///
+/// For velocity-like unknowns (stage velocities, the midpoint velocity) the weights are
+/// wᵢ = √|Aᵢᵢ| with A the mass matrix or the Newton matrix whose leading part it is — wᵢ vᵢ then has
+/// the unit √(kg)·m/s whatever coordinate i measures —, the size is that of the step's velocities
+/// (at its start and the predictor's), and the resolution is [`position_floor`]: a step's
+/// positions q₀ + h·v are computed to a rounding of the configuration's own size, and where the
+/// equations contain positions (constraint rows g(q₁)/h) the velocities are resolved no better
+/// than that over h.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct NewtonScale<U> {
+    /// wᵢ.
+    pub weights: U,
+    /// The least size s the increments are measured against.
+    pub size: f64,
+    /// Increments below 1e-10 of this that stop shrinking are the residual's rounding.
+    pub resolution: f64,
+}
+
+/// √|Mᵢᵢ| for each i: weights that make velocities of coordinates of any units comparable (see
+/// [`NewtonScale`]).
+pub(crate) fn mass_weights<const N: usize>(m: &SMatrix<f64, N, N>) -> SVector<f64, N> {
+    SVector::from_fn(|i, _| m[(i, i)].abs().sqrt())
+}
+
+/// maxᵢ wᵢ|qᵢ| / |h|: with [`mass_weights`], the velocity (in those units) whose step h·v is the
+/// size of the configuration q itself.
+pub(crate) fn position_floor<const N: usize>(
+    weights: &SVector<f64, N>,
+    q: &SVector<f64, N>,
+    h: f64,
+) -> f64 {
+    q.weighted_norm(weights) / h.abs()
 }
 
 /// How a Newton iteration ended.
@@ -118,6 +188,10 @@ pub(crate) enum NewtonEnd {
     /// [`Error::NewtonDiverged`](crate::Error::NewtonDiverged).
     Slow { iterations: usize, residual: f64 },
 }
+
+/// An increment below this multiple of the unknowns' size is the rounding of the residual's
+/// evaluation (see [`newton`]).
+const ROUNDING_INCREMENT: f64 = 64.0 * f64::EPSILON;
 
 impl NewtonEnd {
     /// The iterations of a converged iteration; a slow one is [`Error::NewtonDiverged`] at t.
@@ -164,62 +238,112 @@ pub(crate) fn breakdown(
 /// The one Newton loop of the implicit methods. `iteration(x)` evaluates the residual at x and
 /// returns the increment δ (the solution of the Newton system, with an exact Jacobian or a reused
 /// one) and the residual's norm; the loop applies x ← x − δ and tests convergence on the
-/// increments (Hairer & Wanner, *Solving ODEs II*, §IV.8, (8.10)–(8.13)), with θₖ = ‖δₖ‖/‖δₖ₋₁‖:
+/// increments (Hairer & Wanner, *Solving ODEs II*, §IV.8, (8.10)–(8.13)), with θₖ = ‖δₖ‖/‖δₖ₋₁‖,
+/// every norm the weighted one of `scale` (asked for once, after the first iteration, so that a
+/// driver can take its weights from the first Newton matrix):
 ///
-/// - converged when ‖δₖ‖ ≤ 4ε·s (s = max(1, ‖x‖)), when the estimated remaining error
-///   θₖ/(1 − θₖ)·‖δₖ‖ is below 4ε·s, or when ‖δₖ‖ ≤ 1e-10·s and θₖ > ½ (the increments have reached
-///   the round-off floor of the residual evaluation and only add noise): the methods are iterated
-///   to round-off, as their symmetry and symplecticity require;
+/// - converged when ‖δₖ‖ ≤ 64ε·s (s = max(‖x‖, size), see [`NewtonScale`]: an increment within
+///   the rounding of the residual's evaluation, which sums tens of terms — so an increment that
+///   is that rounding, as when the predictor is exact, ends the iteration whatever its digits),
+///   when the estimated remaining error θₖ/(1 − θₖ)·‖δₖ‖ is below 4ε·s, or when
+///   ‖δₖ‖ ≤ 1e-10·max(s, resolution) and θₖ > ½ (the increments have reached the round-off floor
+///   and only add noise): the methods are iterated to round-off, as their symmetry and
+///   symplecticity require;
+/// - the contraction θ it reports (the largest over the iterations) counts every θₖ whose
+///   increment is above 1e-10·s, inside the floor too: a `resolution` far above the unknowns'
+///   rounding (positions over a small h) must not hide a kept matrix that contracts slowly;
 /// - slow when θₖ ≥ 1 above that floor (diverging, or a Jacobian too stale to contract) if
 ///   `stop_when_slow` (a simplified Newton iteration, whose caller then refreshes the Jacobian; an
 ///   exact Newton iteration may grow once before it converges quadratically), or after
 ///   `max_iterations`.
+///
+/// Every test compares quantities of one unit, so the iterations do not depend on the units the
+/// mechanism is written in: rescaling a coordinate, the masses or time leaves them unchanged.
 pub(crate) fn newton<U: Unknowns>(
     x: &mut U,
     max_iterations: usize,
     stop_when_slow: bool,
     stats: &mut super::Stats,
+    mut scale: impl FnMut() -> NewtonScale<U>,
     mut iteration: impl FnMut(&U) -> Result<(U, f64)>,
 ) -> Result<NewtonEnd> {
-    let mut previous = f64::INFINITY;
-    let mut theta_max = 0.0f64;
-    let mut residual = f64::NAN;
+    let mut test = ConvergenceTest {
+        previous: f64::INFINITY,
+        theta_max: 0.0,
+        residual: f64::NAN,
+        stop_when_slow,
+    };
+    let mut measure = None;
     for k in 1..=max_iterations {
         stats.newton_iterations += 1;
-        let (delta, r) = iteration(x)?;
-        residual = r;
-        x.subtract(&delta);
-        let d = delta.max_norm();
-        let s = x.max_norm().max(1.0);
-        let theta = d / previous;
-        let floor = d <= 1e-10 * s;
-        if d <= 4.0 * f64::EPSILON * s
-            || (k > 1 && theta < 1.0 && theta / (1.0 - theta) * d <= 4.0 * f64::EPSILON * s)
-            || (floor && theta > 0.5)
-        {
-            if !floor || theta <= 0.5 {
-                theta_max = theta_max.max(if k == 1 { 0.0 } else { theta });
-            }
-            return Ok(NewtonEnd::Converged {
-                iterations: k,
-                theta: theta_max,
-            });
+        // One call of `iteration` in the loop, which the compiler then inlines.
+        let (delta, residual) = iteration(x)?;
+        test.residual = residual;
+        // The scale, asked for once, after the first iteration: a driver may take its weights
+        // from it.
+        let scale = &*measure.get_or_insert_with(&mut scale);
+        if let Some(end) = test.end(k, x.subtract_measured(&delta, &scale.weights), scale) {
+            return Ok(end);
         }
-        if k > 1 && !floor {
-            if stop_when_slow && !(theta < 1.0) {
-                return Ok(NewtonEnd::Slow {
-                    iterations: k,
-                    residual,
-                });
-            }
-            theta_max = theta_max.max(theta);
-        }
-        previous = d;
     }
     Ok(NewtonEnd::Slow {
         iterations: max_iterations,
-        residual,
+        residual: test.residual,
     })
+}
+
+/// The state of [`newton`]'s tests between iterations: the last increment's norm, the largest
+/// contraction measured, the last residual's norm.
+struct ConvergenceTest {
+    previous: f64,
+    theta_max: f64,
+    residual: f64,
+    stop_when_slow: bool,
+}
+
+impl ConvergenceTest {
+    /// The end of the iteration after iteration k, whose increment and new iterate have the
+    /// weighted norms `(d, norm)`, if it ends there (see [`newton`]).
+    #[inline(always)]
+    fn end<U>(
+        &mut self,
+        k: usize,
+        (d, norm): (f64, f64),
+        scale: &NewtonScale<U>,
+    ) -> Option<NewtonEnd> {
+        let s = norm.max(scale.size);
+        let theta = d / self.previous;
+        let floor = d <= 1e-10 * s.max(scale.resolution);
+        // An increment above 1e-10 of the unknowns' own size is far from their rounding: its θ
+        // measures the contraction (what the caller's Jacobian reuse is decided on) even where the
+        // equations' resolution already lets the iteration stop at the floor.
+        let measured = d > 1e-10 * s;
+        if d <= ROUNDING_INCREMENT * s
+            || (k > 1 && theta < 1.0 && theta / (1.0 - theta) * d <= 4.0 * f64::EPSILON * s)
+            || (floor && theta > 0.5)
+        {
+            // θ of an increment at the rounding level is that rounding over the last increment:
+            // no measure of the contraction.
+            if (!floor || theta <= 0.5) && d > ROUNDING_INCREMENT * s {
+                self.theta_max = self.theta_max.max(if k == 1 { 0.0 } else { theta });
+            }
+            return Some(NewtonEnd::Converged {
+                iterations: k,
+                theta: self.theta_max,
+            });
+        }
+        if k > 1 && !floor && self.stop_when_slow && !(theta < 1.0) {
+            return Some(NewtonEnd::Slow {
+                iterations: k,
+                residual: self.residual,
+            });
+        }
+        if k > 1 && measured {
+            self.theta_max = self.theta_max.max(theta);
+        }
+        self.previous = d;
+        None
+    }
 }
 
 /// Whether the methods on the canonical equations (implicit midpoint, Gauss–Legendre) add the
@@ -255,151 +379,5 @@ pub(crate) fn refuse_contacts<M: Evaluate<N>, const N: usize>(method: &'static s
     }
 }
 
-/// An LU factorisation with partial pivoting of a matrix of S×S blocks of size N×N (an
-/// (S·N)-square matrix; stable Rust cannot name S·N as an array length, so the blocks are
-/// indexed through r ↦ (r / N, r % N)): factorised once, solved many times — the simplified Newton
-/// iteration's matrix.
-#[derive(Clone, Copy, Debug)]
-pub struct BlockLu<const N: usize, const S: usize> {
-    lu: [[SMatrix<f64, N, N>; S]; S],
-    pivots: [[usize; N]; S],
-}
-
-impl<const N: usize, const S: usize> BlockLu<N, S> {
-    #[inline(always)]
-    fn get(&self, r: usize, c: usize) -> f64 {
-        self.lu[r / N][c / N][(r % N, c % N)]
-    }
-
-    #[inline(always)]
-    fn set(&mut self, r: usize, c: usize, x: f64) {
-        self.lu[r / N][c / N][(r % N, c % N)] = x;
-    }
-
-    /// Factorises `a`; `None` when it is not finite or a pivot is below
-    /// [`SINGULAR_PIVOT`](crate::linalg::SINGULAR_PIVOT) times its largest entry.
-    pub fn factor(a: &[[SMatrix<f64, N, N>; S]; S]) -> Option<Self> {
-        let mut f = BlockLu {
-            lu: *a,
-            pivots: [[0; N]; S],
-        };
-        let dim = N * S;
-        let mut scale = 0.0f64;
-        for r in 0..dim {
-            for c in 0..dim {
-                scale = scale.max(f.get(r, c).abs());
-            }
-        }
-        if !scale.is_finite() {
-            return None;
-        }
-        let tol = crate::linalg::SINGULAR_PIVOT * scale;
-        for c in 0..dim {
-            let mut p = c;
-            for r in (c + 1)..dim {
-                if f.get(r, c).abs() > f.get(p, c).abs() {
-                    p = r;
-                }
-            }
-            let pivot = f.get(p, c);
-            if !(pivot.abs() > tol) {
-                return None;
-            }
-            f.pivots[c / N][c % N] = p;
-            // Rows are swapped from column c on only (LINPACK's convention): the multipliers of
-            // the earlier columns stay where they were made, in the order in which `solve`
-            // applies the interchanges, interleaved with the elimination.
-            if p != c {
-                for k in c..dim {
-                    let (u, w) = (f.get(p, k), f.get(c, k));
-                    f.set(p, k, w);
-                    f.set(c, k, u);
-                }
-            }
-            let inv = 1.0 / pivot;
-            for r in (c + 1)..dim {
-                let m = f.get(r, c) * inv;
-                f.set(r, c, m);
-                if m != 0.0 {
-                    for k in (c + 1)..dim {
-                        let x = f.get(r, k) - m * f.get(c, k);
-                        f.set(r, k, x);
-                    }
-                }
-            }
-        }
-        Some(f)
-    }
-
-    /// Solves A x = b with the factorisation.
-    pub fn solve(&self, b: &[SVector<f64, N>; S]) -> [SVector<f64, N>; S] {
-        let dim = N * S;
-        let mut x = *b;
-        for c in 0..dim {
-            let p = self.pivots[c / N][c % N];
-            if p != c {
-                let (u, w) = (x[p / N][p % N], x[c / N][c % N]);
-                x[p / N][p % N] = w;
-                x[c / N][c % N] = u;
-            }
-            let xc = x[c / N][c % N];
-            if xc != 0.0 {
-                for r in (c + 1)..dim {
-                    x[r / N][r % N] -= self.get(r, c) * xc;
-                }
-            }
-        }
-        for r in (0..dim).rev() {
-            let mut s = x[r / N][r % N];
-            for k in (r + 1)..dim {
-                s -= self.get(r, k) * x[k / N][k % N];
-            }
-            x[r / N][r % N] = s / self.get(r, r);
-        }
-        x
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::BlockLu;
-    use nalgebra::{SMatrix, SVector};
-
-    #[test]
-    fn block_lu_solves_with_interchanges_in_several_columns() {
-        // A 4×4 matrix (2×2 blocks of 2×2) whose partial pivoting swaps rows at columns 0 and 1
-        // (pivots 1, 3, 2, 3): the solve must apply the interchanges in the order the
-        // factorisation made them. Checked against nalgebra's dense LU.
-        let a = [
-            [
-                SMatrix::<f64, 2, 2>::new(992660.25, -1000031.54, -999952.69, 992611.94),
-                SMatrix::<f64, 2, 2>::new(-56580.37, 35.89, -53.83, -56526.54),
-            ],
-            [
-                SMatrix::<f64, 2, 2>::new(56580.37, -35.89, 53.83, 56526.54),
-                SMatrix::<f64, 2, 2>::new(992660.25, -1000031.54, -999952.69, 992611.94),
-            ],
-        ];
-        let mut dense = SMatrix::<f64, 4, 4>::zeros();
-        for r in 0..4 {
-            for c in 0..4 {
-                dense[(r, c)] = a[r / 2][c / 2][(r % 2, c % 2)];
-            }
-        }
-        let b = [SVector::from([1.0, 2.0]), SVector::from([3.0, 4.0])];
-        let x = BlockLu::factor(&a).unwrap().solve(&b);
-        let expected = dense
-            .lu()
-            .solve(&SVector::<f64, 4>::from([1.0, 2.0, 3.0, 4.0]))
-            .unwrap();
-        for r in 0..4 {
-            // The matrix's condition number is about 40: both solves agree to ~1e-14 relative.
-            let got = x[r / 2][r % 2];
-            assert!(
-                (got - expected[r]).abs() < 1e-12 * expected.amax(),
-                "{got} vs {}",
-                expected[r]
-            );
-        }
-    }
-}
+/// The simplified Newton iteration's factorised matrix, reused across its iterations and steps.
+pub use crate::linalg::BlockLu;

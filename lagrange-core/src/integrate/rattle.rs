@@ -47,8 +47,8 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::newton::MAX_NEWTON_ITERATIONS;
 use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
+use super::newton::{mass_weights, NewtonScale, Unknowns as _, MAX_NEWTON_ITERATIONS};
 use super::Stats;
 use crate::error::{Error, Result};
 use crate::evaluation::Evaluate;
@@ -190,10 +190,30 @@ pub(crate) fn rows_on<M: Evaluate<N>, const N: usize>(
         .ok_or_else(|| rows_not_provided(method))
 }
 
+/// What [`position_stage`]'s increments of Λ are measured against: the displacement h W δΛ each
+/// makes, weighted by √Mⱼⱼ (`mass` is M(q₀)), resolved to the size of the unconstrained position
+/// q̂ itself (see `NewtonScale`).
+fn stage_scale<const N: usize>(
+    mass: &SMatrix<f64, N, N>,
+    directions: &SMatrix<f64, N, N>,
+    unconstrained: &SVector<f64, N>,
+) -> NewtonScale<SVector<f64, N>> {
+    let position = mass_weights(mass);
+    NewtonScale {
+        weights: SVector::from_fn(|l, _| {
+            (0..N).fold(0.0f64, |m, j| m.max(position[j] * directions[(j, l)].abs()))
+        }),
+        size: 0.0,
+        resolution: unconstrained.weighted_norm(&position),
+    }
+}
+
 /// Störmer–Verlet's position stage: Λ (= (h/2)λ, entries beyond `rows` zero) with
 /// g(q̂ + h W Λ, t₁) = 0, W = M⁻¹G(q₀)ᵀ given as `directions` = h W, q̂ the unconstrained position.
 /// Newton on r(Λ) = g(q₁(Λ), t₁)/h with the exact Jacobian G(q₁) W (from dual numbers at each
-/// iterate), identity rows for the padding. Returns q₁ and Λ.
+/// iterate), identity rows for the padding. An increment of Λ is measured by the displacement
+/// h W δΛ it makes, weighted by √Mⱼⱼ (`mass` is M(q₀)), against that of Λ, resolved to the size
+/// of q̂ itself. Returns q₁ and Λ.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub(crate) fn position_stage<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
@@ -203,44 +223,52 @@ pub(crate) fn position_stage<M: Evaluate<N>, const N: usize>(
     h: f64,
     unconstrained: &SVector<f64, N>,
     directions: &SMatrix<f64, N, N>,
+    mass: &SMatrix<f64, N, N>,
     stats: &mut Stats,
 ) -> Result<(SVector<f64, N>, SVector<f64, N>)> {
     let t1 = t + h;
     let mut lambda = SVector::<f64, N>::zeros();
     let mut iteration = 0;
     let before = stats.newton_iterations;
-    let end = newton(&mut lambda, MAX_NEWTON_ITERATIONS, false, stats, |lambda| {
-        iteration += 1;
-        let q1 = unconstrained + directions * lambda;
-        let (g, jac) = rows_and_jacobian(mechanism, method, t1, &q1.into())?;
-        let mut residual = g / h;
-        let mut matrix = jac * directions / h;
-        for i in rows..N {
-            residual[i] = lambda[i];
-            matrix.row_mut(i).fill(0.0);
-            matrix[(i, i)] = 1.0;
-        }
-        let norm = max_norm(&residual);
-        if !norm.is_finite() {
-            return Err(breakdown(
-                method,
-                t,
-                h,
-                iteration,
-                "the constraint residual is not finite (reduce h)",
-            ));
-        }
-        let Some(delta) = lu_solve(&matrix, &residual) else {
-            return Err(breakdown(
+    let end = newton(
+        &mut lambda,
+        MAX_NEWTON_ITERATIONS,
+        false,
+        stats,
+        || stage_scale(mass, directions, unconstrained),
+        |lambda| {
+            iteration += 1;
+            let q1 = unconstrained + directions * lambda;
+            let (g, jac) = rows_and_jacobian(mechanism, method, t1, &q1.into())?;
+            let mut residual = g / h;
+            let mut matrix = jac * directions / h;
+            for i in rows..N {
+                residual[i] = lambda[i];
+                matrix.row_mut(i).fill(0.0);
+                matrix[(i, i)] = 1.0;
+            }
+            let norm = max_norm(&residual);
+            if !norm.is_finite() {
+                return Err(breakdown(
+                    method,
+                    t,
+                    h,
+                    iteration,
+                    "the constraint residual is not finite (reduce h)",
+                ));
+            }
+            let Some(delta) = lu_solve(&matrix, &residual) else {
+                return Err(breakdown(
                 method,
                 t,
                 h,
                 iteration,
                 "the constraint Jacobian G M⁻¹ Gᵀ is singular (redundant constraints, or h too large)",
             ));
-        };
-        Ok((delta, norm))
-    })?;
+            };
+            Ok((delta, norm))
+        },
+    )?;
     count_exact_jacobians(stats, before);
     end.converged(t)?;
     Ok((unconstrained + directions * lambda, lambda))

@@ -24,10 +24,9 @@
 //!
 //! **State and momenta.** The method lives on (q, p). [`Variational`] implements
 //! [`Integrator`] on the (q, v) [`State`] by a Legendre transform at both ends of a step:
-//! p₀ = ∂L/∂v(t₀, q₀, v₀) before, and after it v₁ solves ∂L/∂v(t₁, q₁, v₁) = p₁, by Newton's method
-//! with the exact Jacobian ∂p/∂v = M(q₁, t₁) (from dual numbers). For every mechanism built from a
-//! [`Model`](crate::Model), T is quadratic in v, so this Newton converges in one iteration (a second
-//! confirms it); for a general Lagrangian it is an ordinary Newton iteration. Because the Legendre
+//! p₀ = ∂L/∂v(t₀, q₀, v₀) before, and after it v₁ solves ∂L/∂v(t₁, q₁, v₁) = p₁: T is quadratic
+//! in v for every mechanism, so v₁ = M⁻¹(p₁ − p(t₁, q₁, 0)), one solve with the mass matrix
+//! M(q₁, t₁) (see [`canonical::velocities_from_momenta`]). Because the Legendre
 //! transform at t₁ is inverted exactly (to round-off), the next step's p₀ is this step's p₁ and
 //! the sequence of (q, p) is that of the discrete flow: the step map is symplectic in (q, p) for any
 //! Lagrangian, second order, symmetric. [`Variational::step_momenta`] works on (q, p) directly.
@@ -56,6 +55,7 @@
 use super::canonical::{self, momentum_rate};
 use super::newton::MAX_NEWTON_ITERATIONS;
 use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
+use super::newton::{mass_weights, position_floor, NewtonScale, Unknowns as _};
 use super::rattle::{rows_and_jacobian, rows_in_force, rows_on};
 use super::validated_step;
 use super::{Integrator, Stats};
@@ -134,12 +134,30 @@ fn midpoint_update<M: Evaluate<N>, const N: usize>(
     (std::array::from_fn(|j| q0[j] + h * vm[j]), rate)
 }
 
+/// The weights of the constrained step's unknowns (v_m, Λ) (see `NewtonScale`): v_m by √|Aᵢᵢ| of
+/// the Newton matrix's velocity block A (M to leading order), Λ by the velocity-weighted impulse
+/// −Dg(q₀)ᵀΛ it gives each coordinate, maxₖ |Dgₗₖ|/√Aₖₖ per unit Λₗ (the padding rows beyond
+/// `rows`, held at zero, not at all).
+fn constrained_weights<const N: usize>(
+    velocity_block: &SMatrix<f64, N, N>,
+    g0: &SMatrix<f64, N, N>,
+    rows: usize,
+) -> [SVector<f64, N>; 2] {
+    let velocity = mass_weights(velocity_block);
+    let impulse = SVector::<f64, N>::from_fn(|l, _| {
+        (0..N)
+            .filter(|&k| l < rows && velocity[k] > 0.0)
+            .fold(0.0f64, |m, k| m.max(g0[(l, k)].abs() / velocity[k]))
+    });
+    [velocity, impulse]
+}
+
 /// What a variational step cost.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct VariationalStepStats {
     /// Newton iterations of the discrete Euler–Lagrange equation.
     pub iterations: usize,
-    /// Newton iterations of the velocity recovery ∂L/∂v = p₁.
+    /// Solves of the velocity recovery ∂L/∂v = p₁ (one: T is quadratic in q̇).
     pub velocity_iterations: usize,
 }
 
@@ -191,7 +209,17 @@ impl Variational {
         let mut vm = SVector::<f64, N>::from(*v_guess);
         let mut iteration = 0;
         let before = stats.newton_iterations;
-        let end = newton(&mut vm, MAX_NEWTON_ITERATIONS, false, stats, |vm| {
+        // v_m weighted by √|Aᵢᵢ| of the first Newton matrix A = ∂R/∂v_m (M to leading order),
+        // sized by the predictor, resolved to the positions' size over h (see `NewtonScale`).
+        let q0_vector = SVector::<f64, N>::from(*q0);
+        let weights = std::cell::Cell::new(SVector::<f64, N>::zeros());
+        let guess = vm;
+        let scale = || NewtonScale {
+            weights: weights.get(),
+            size: guess.weighted_norm(&weights.get()),
+            resolution: position_floor(&weights.get(), &q0_vector, h),
+        };
+        let end = newton(&mut vm, MAX_NEWTON_ITERATIONS, false, stats, scale, |vm| {
             iteration += 1;
             let r = residual(mechanism, tm, q0, p0, &seeded(&(*vm).into()), h);
             let value = SVector::<f64, N>::from_fn(|i, _| r[i].re);
@@ -204,6 +232,9 @@ impl Variational {
                 ));
             }
             let jac = jacobian_rows(&r);
+            if iteration == 1 {
+                weights.set(mass_weights(&jac));
+            }
             let Some(delta) = lu_solve(&jac, &value) else {
                 return Err(broke(if jac.iter().all(|x| x.is_finite()) {
                     "the Newton matrix is singular"
@@ -249,7 +280,17 @@ impl Variational {
         ];
         let mut iteration = 0;
         let before = stats.newton_iterations;
-        let end = newton(&mut x, MAX_NEWTON_ITERATIONS, false, stats, |x| {
+        // v_m as in the unconstrained step; Λ by the velocity-weighted impulse −Dg(q₀)ᵀΛ it gives
+        // each coordinate, maxₖ |Dgₗₖ|/√Mₖₖ per unit Λₗ (the padding, held at zero, not at all).
+        let q0_vector = SVector::<f64, N>::from(*q0);
+        let weights = std::cell::Cell::new([SVector::<f64, N>::zeros(); 2]);
+        let guess = x[0];
+        let scale = || NewtonScale {
+            weights: weights.get(),
+            size: guess.weighted_norm(&weights.get()[0]),
+            resolution: position_floor(&weights.get()[0], &q0_vector, h),
+        };
+        let end = newton(&mut x, MAX_NEWTON_ITERATIONS, false, stats, scale, |x| {
             iteration += 1;
             let vm = seeded(&x[0].into());
             let r = residual(mechanism, tm, q0, p0, &vm, h);
@@ -273,6 +314,9 @@ impl Variational {
                 [jacobian_rows(&r), minus_g0t],
                 [jacobian_rows(&g) / h, padding],
             ];
+            if iteration == 1 {
+                weights.set(constrained_weights(&jacobian[0][0], &g0, rows));
+            }
             let Some(delta) = lu_solve_blocks(&jacobian, &[momentum, position]) else {
                 return Err(breakdown(
                     Self::NAME,
@@ -294,8 +338,8 @@ impl Variational {
         Ok((q1, p1, vm, iterations))
     }
 
-    /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), by Newton's method
-    /// with the exact Jacobian ∂p/∂v from dual numbers, from `guess`. Returns v and the iterations.
+    /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), one solve with the
+    /// mass matrix (see [`canonical::velocities_from_momenta`]). Returns v and the solves (1).
     pub fn velocities_from_momenta<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,
@@ -341,7 +385,7 @@ impl Variational {
         let guess: [f64; N] = std::array::from_fn(|j| v[j] + 0.5 * h * a0[j]);
         let (mut q1, p1, vm, iterations) =
             Self::momenta_step(mechanism, rows, t, q, &p0, &guess, h, stats)?;
-        // v₁ ≈ 2 v_m − v₀ to first order: the Newton start for the inverse Legendre transform.
+        // v₁ ≈ 2 v_m − v₀ to first order: where the inverse Legendre transform evaluates M.
         let guess: [f64; N] = std::array::from_fn(|j| 2.0 * vm[j] - v[j]);
         let (mut v1, velocity_iterations) =
             canonical::velocities_from_momenta(mechanism, t + h, &q1, &p1, &guess, stats)?;

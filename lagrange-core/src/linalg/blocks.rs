@@ -12,9 +12,9 @@
 //!
 //! the pivots are those of the LDLᵀ factorisation in exact arithmetic: d₀ = a₀₀, d₁ = det A / a₀₀,
 //! d₂ = S₀₀ and, for four coordinates, d₃ = det S / S₀₀. Two divisions stand in series where the
-//! factorisation has one per pivot, and the tests d > tol are taken without dividing
-//! (d₁ > tol ⇔ det A > tol·d₀ once d₀ > 0), off the chain of dependent operations and folded into one
-//! flag with `&`.
+//! factorisation has one per pivot, and the tests dⱼ > tol·|Mⱼⱼ| (each pivot against its own
+//! diagonal entry, as in `Ldlt`) are taken without dividing (d₁ > tol·|a₁₁| ⇔ det A > tol·|a₁₁|·d₀
+//! once d₀ > 0), off the chain of dependent operations and folded into one flag with `&`.
 
 // `!(pivot > tol)` rather than `pivot <= tol`: the negated form also rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -42,15 +42,16 @@ pub(super) fn solve<S: Scalar, const N: usize>(
     let along = |w: (S, S), y0: S, y1: S| (w.0 * y0 + w.1 * y1) * inv_det_a;
     let s00 = m[(2, 2)] - along(w2, m[(2, 0)], m[(2, 1)]);
     let rhs2 = b[2] - along(w2, b[0], b[1]);
-    let tol = SINGULAR_PIVOT * largest_diagonal(m);
-    let leading = (a00.re() > tol) & (det_a.re() > tol * a00.re());
+    // Each pivot against its own diagonal entry (see `SINGULAR_PIVOT`).
+    let tol = |j: usize| SINGULAR_PIVOT * m[(j, j)].re().abs();
+    let leading = (a00.re() > tol(0)) & (det_a.re() > tol(1) * a00.re());
     let mut x = *b;
     if N == 3 {
         x[2] = rhs2 / s00;
         x[0] = (top.0 - w2.0 * x[2]) * inv_det_a;
         x[1] = (top.1 - w2.1 * x[2]) * inv_det_a;
         // `&`, not `&&`: the tests are cheap, and one branch is what the caller wants.
-        return (x, leading & (s00.re() > tol));
+        return (x, leading & (s00.re() > tol(2)));
     }
     let w3 = adj(m[(3, 0)], m[(3, 1)]);
     let s10 = m[(3, 2)] - along(w3, m[(2, 0)], m[(2, 1)]);
@@ -62,20 +63,8 @@ pub(super) fn solve<S: Scalar, const N: usize>(
     x[3] = (s00 * rhs3 - s10 * rhs2) * inv_det_s;
     x[0] = (top.0 - w2.0 * x[2] - w3.0 * x[3]) * inv_det_a;
     x[1] = (top.1 - w2.1 * x[2] - w3.1 * x[3]) * inv_det_a;
-    let trailing = (s00.re() > tol) & (det_s.re() > tol * s00.re());
+    let trailing = (s00.re() > tol(2)) & (det_s.re() > tol(3) * s00.re());
     (x, leading & trailing)
-}
-
-/// max |Mᵢᵢ| as `Ldlt` takes it, a NaN entry passed over (it then fails its own pivot's test),
-/// without `f64::max`'s branches for NaN.
-#[inline(always)]
-fn largest_diagonal<S: Scalar, const N: usize>(m: &SMatrix<S, N, N>) -> f64 {
-    let mut scale = 0.0f64;
-    for i in 0..N {
-        let a = m[(i, i)].re().abs();
-        scale = if a > scale { a } else { scale };
-    }
-    scale
 }
 
 #[cfg(test)]

@@ -57,7 +57,7 @@ impl<const N: usize> FactorPattern<N> for [[bool; N]; N] {
 
 impl<S: Scalar, const N: usize> Ldlt<S, N> {
     /// Factorises M (only its lower triangle is read). Fails with the first pivot that is not
-    /// clearly positive (see [`SINGULAR_PIVOT`]); NaN never passes.
+    /// clearly positive against its own diagonal entry (see [`SINGULAR_PIVOT`]); NaN never passes.
     #[inline]
     pub fn new(m: &SMatrix<S, N, N>) -> Result<Self, NotPositiveDefinite> {
         Self::with_pattern(m, Dense)
@@ -84,32 +84,37 @@ impl<S: Scalar, const N: usize, P: FactorPattern<N>> Ldlt<S, N, P> {
     /// ```
     #[inline(always)]
     pub fn with_pattern(m: &SMatrix<S, N, N>, pattern: P) -> Result<Self, NotPositiveDefinite> {
-        let mut scale = 0.0f64;
-        for i in 0..N {
-            scale = scale.max(m[(i, i)].re().abs());
-        }
-        Self::with_scale(m, pattern, scale)
+        Self::factor(m, pattern, |j| m[(j, j)].re().abs())
     }
 
-    /// [`with_pattern`](Self::with_pattern) with the pivots tested against `scale` instead of
-    /// M's own largest diagonal entry: for a block of a larger matrix, whose singularity is
-    /// judged against the whole (the articulated-body recursion, `crate::tree`).
+    /// [`with_pattern`](Self::with_pattern) with pivot j tested against `scales[j]` instead of
+    /// M's own diagonal entry Mⱼⱼ: for a block of a larger matrix, whose pivots are judged against
+    /// the diagonal entries of the whole (the articulated-body recursion, `crate::tree`).
     ///
     /// ```
     /// use lagrange_core::linalg::{Dense, Ldlt};
     /// use nalgebra::matrix;
-    /// // A pivot of 1e-14 is singular against a whole of scale 1, not on its own.
+    /// // A pivot of 1e-14 is singular against a whole whose diagonal entry is 1, not on its own.
     /// let block = matrix![1e-14];
-    /// assert!(Ldlt::with_scale(&block, Dense, 1e-14).is_ok());
-    /// assert!(Ldlt::with_scale(&block, Dense, 1.0).is_err());
+    /// assert!(Ldlt::with_scales(&block, Dense, &[1e-14]).is_ok());
+    /// assert!(Ldlt::with_scales(&block, Dense, &[1.0]).is_err());
     /// ```
     #[inline(always)]
-    pub fn with_scale(
+    pub fn with_scales(
         m: &SMatrix<S, N, N>,
         pattern: P,
-        scale: f64,
+        scales: &[f64; N],
     ) -> Result<Self, NotPositiveDefinite> {
-        let tol = SINGULAR_PIVOT * scale;
+        Self::factor(m, pattern, |j| scales[j])
+    }
+
+    /// The factorisation, pivot j failing when dⱼ ≤ [`SINGULAR_PIVOT`]·`scale(j)` (or NaN).
+    #[inline(always)]
+    fn factor(
+        m: &SMatrix<S, N, N>,
+        pattern: P,
+        scale: impl Fn(usize) -> f64,
+    ) -> Result<Self, NotPositiveDefinite> {
         let mut lower = SMatrix::<S, N, N>::zeros();
         let mut pivots = SVector::<S, N>::zeros();
         let mut inverse_pivots = SVector::<S, N>::zeros();
@@ -121,7 +126,7 @@ impl<S: Scalar, const N: usize, P: FactorPattern<N>> Ldlt<S, N, P> {
                     d -= lower[(j, k)] * lower[(j, k)] * pivots[k];
                 }
             }
-            if !(d.re() > tol) {
+            if !(d.re() > SINGULAR_PIVOT * scale(j)) {
                 return Err(NotPositiveDefinite {
                     index: j,
                     pivot: d.re(),

@@ -21,8 +21,9 @@
 //! its coordinates — the same terms [`super::equations_of_motion`] assembles into M, 𝓕 and b.
 //!
 //! The H_c are the pivots of a factorisation of M taken leaves first, so M is singular exactly
-//! where one of them is; each is tested against M's largest diagonal entry, C_c |D_c eⱼ|² (C_c
-//! the mass of c's subtree), as [`crate::linalg::Ldlt`] tests M's own pivots.
+//! where one of them is; each pivot is tested against M's diagonal entry for its coordinate,
+//! C_c |D_c eⱼ|² (C_c the mass of c's subtree), as [`crate::linalg::Ldlt`] tests M's own pivots
+//! against their own diagonal entries: a test that rescaling a coordinate does not change.
 
 use super::{Seed, Seeded, Tree};
 use crate::dynamics::{finite_accelerations, non_finite_dynamics, singular_mass_matrix};
@@ -82,9 +83,9 @@ pub(super) fn accelerations<
     let masses = model.masses();
     let rows = super::rows::<M, S, N, K, W, B>(model, t, q, v, &d);
     let (jacobian, own) = Recursion::<M, S, N, K, W, B, DIM>::own_terms(&d, &rows.own_acceleration);
-    let scale = Recursion::<M, S, N, K, W, B, DIM>::diagonal_scale(&jacobian, &masses);
+    let diagonal = Recursion::<M, S, N, K, W, B, DIM>::diagonal_entries(&jacobian, &masses);
     let (free, coupling) = Recursion::<M, S, N, K, W, B, DIM>::leaf_to_root(
-        t, q, &rows, &masses, &jacobian, &own, scale,
+        t, q, &rows, &masses, &jacobian, &own, &diagonal,
     )?;
     let qdd = Recursion::<M, S, N, K, W, B, DIM>::root_to_leaf(&jacobian, &own, &free, &coupling);
     finite_accelerations::<M::Coords, S, N>(qdd, t, q)
@@ -136,26 +137,30 @@ impl<
         (jacobian, own)
     }
 
-    /// The scale of M's diagonal: the largest C_b |D_b eⱼ|², C_b the mass of b's subtree.
+    /// M's diagonal entry per body and slot, C_b |D_b eⱼ|² (C_b the mass of b's subtree), what
+    /// each pivot is tested against; 1 for a slot that is not a coordinate (its pivot is 1).
     #[inline(always)]
-    fn diagonal_scale(jacobian: &[SMatrix<S, DIM, W>; B], masses: &[f64; K]) -> f64 {
+    fn diagonal_entries(jacobian: &[SMatrix<S, DIM, W>; B], masses: &[f64; K]) -> [[f64; W]; B] {
         let mut composite = [0.0; B];
-        let mut scale = 0.0f64;
+        let mut diagonal = [[1.0f64; W]; B];
         for b in (0..B).rev() {
             composite[b] += masses[M::BODIES[b].row];
-            for j in 0..W {
+            for (j, entry) in diagonal[b].iter_mut().enumerate() {
+                if !matches!(M::BODIES[b].seeds[j], Seed::Coordinate(_)) {
+                    continue;
+                }
                 let column = jacobian[b].column(j);
                 let mut norm = 0.0;
                 for k in 0..DIM {
                     norm += column[k].re() * column[k].re();
                 }
-                scale = scale.max(composite[b] * norm);
+                *entry = composite[b] * norm;
             }
             if let Some(p) = M::BODIES[b].parent {
                 composite[p] += composite[b];
             }
         }
-        scale
+        diagonal
     }
 
     /// Leaf to root: I_b and p_b, and per body H⁻¹u and H⁻¹Uᵀ for the way back.
@@ -168,7 +173,7 @@ impl<
         masses: &[f64; K],
         jacobian: &[SMatrix<S, DIM, W>; B],
         own: &[SVector<S, DIM>; B],
-        scale: f64,
+        diagonal: &[[f64; W]; B],
     ) -> Result<([SVector<S, W>; B], [SMatrix<S, W, DIM>; B])> {
         let mut inertia = [SMatrix::<S, DIM, DIM>::zeros(); B];
         let mut bias = [SVector::<S, DIM>::zeros(); B];
@@ -188,10 +193,18 @@ impl<
                     at_rest[r] += i_b[(r, k)] * own[b][k];
                 }
             }
-            let (u_mat, h, u) = Self::joint_terms(&i_b, dj, &at_rest, &body.seeds, rows, scale);
-            let factors = match Ldlt::with_scale(&h, Dense, scale) {
+            let (u_mat, h, u) = Self::joint_terms(&i_b, dj, &at_rest, &body.seeds, rows);
+            let factors = match Ldlt::with_scales(&h, Dense, &diagonal[b]) {
                 Ok(factors) => factors,
-                Err(e) => return Err(failure::<M, S, N, K, W, B>(body.seeds, e, scale, t, q)),
+                Err(e) => {
+                    return Err(failure::<M, S, N, K, W, B>(
+                        body.seeds,
+                        e,
+                        &diagonal[b],
+                        t,
+                        q,
+                    ))
+                }
             };
             free[b] = factors.solve(&u);
             for r in 0..DIM {
@@ -222,7 +235,8 @@ impl<
     }
 
     /// U = I D, H = Dᵀ U and u = Q − Dᵀ (I α + p) of a body with articulated inertia `i_b`, own
-    /// Jacobian `dj` and I α + p = `at_rest`; slots that are not coordinates get H = `scale`.
+    /// Jacobian `dj` and I α + p = `at_rest`; slots that are not coordinates get H = 1, a pivot
+    /// tested against 1.
     #[inline(always)]
     #[allow(clippy::type_complexity)]
     fn joint_terms(
@@ -231,7 +245,6 @@ impl<
         at_rest: &SVector<S, DIM>,
         seeds: &[Seed; W],
         rows: &super::Rows<S, N, K>,
-        scale: f64,
     ) -> (SMatrix<S, DIM, W>, SMatrix<S, W, W>, SVector<S, W>) {
         let mut u_mat = SMatrix::<S, DIM, W>::zeros();
         for r in 0..DIM {
@@ -245,7 +258,7 @@ impl<
         let mut u = SVector::<S, W>::zeros();
         for (i, seed) in seeds.iter().enumerate() {
             let Seed::Coordinate(c) = *seed else {
-                h[(i, i)] = S::from(scale);
+                h[(i, i)] = S::one();
                 continue;
             };
             for j in 0..W {
@@ -300,9 +313,9 @@ impl<
     }
 }
 
-/// The error for a pivot that failed: non-finite dynamics when the pivot or the scale overflowed,
-/// otherwise a singular mass matrix named by the pivot's coordinate (the body's first coordinate
-/// when the failing slot is not one, which only a scale of zero — no mass — can make fail).
+/// The error for a pivot that failed: non-finite dynamics when the pivot or a diagonal entry
+/// overflowed, otherwise a singular mass matrix named by the pivot's coordinate (the body's first
+/// coordinate when the failing slot is not one).
 #[cold]
 #[inline(never)]
 fn failure<
@@ -315,11 +328,11 @@ fn failure<
 >(
     seeds: [Seed; W],
     e: NotPositiveDefinite,
-    scale: f64,
+    scales: &[f64; W],
     t: S,
     q: &[S; N],
 ) -> crate::error::Error {
-    if !e.pivot.is_finite() || !scale.is_finite() {
+    if !e.pivot.is_finite() || scales.iter().any(|s| !s.is_finite()) {
         return non_finite_dynamics::<M::Coords, S, N>(t, q);
     }
     let coordinate = |seed: Seed| match seed {

@@ -213,7 +213,7 @@ fn displacement_fn(model: &Model, f: usize, displacement: &Displacement) -> Toke
         },
         &d,
     );
-    let block = crate::lift::lift_block(&blocks[0], &d);
+    let block = crate::lift::lift_block_with_integers(&blocks[0], &d, family_index(body.decl));
     let ty = position_type(body.shape);
     quote! {
         #[inline(always)]

@@ -268,14 +268,17 @@ fn split_expr(
                 (false, None) => return None,
             };
             let (parent, block) = split_block(model, tree, index, body, family, branch)?;
-            Some((
-                parent,
-                Expr::Block(syn::ExprBlock {
+            // A branch that is one expression is that expression: braces around it, kept with the
+            // spans of the user's `if`, would be `unused_braces` in the user's crate.
+            let expr = match &block.stmts[..] {
+                [Stmt::Expr(tail, None)] => tail.clone(),
+                _ => Expr::Block(syn::ExprBlock {
                     attrs: Vec::new(),
                     label: None,
                     block,
                 }),
-            ))
+            };
+            Some((parent, expr))
         }
         Expr::Binary(sum) if matches!(sum.op, BinOp::Add(_)) => {
             let (left, right) = (&*sum.left, &*sum.right);

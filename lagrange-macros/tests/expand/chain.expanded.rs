@@ -270,7 +270,7 @@ pub mod chain {
             let (__sin___theta_at_i, __cos___theta_at_i) = __theta_at_i.sin_cos();
             {
                 let link = vec2(__sin___theta_at_i, -__cos___theta_at_i) * l;
-                { link }
+                link
             }
         }
     }

@@ -23,6 +23,10 @@ mod chains;
 #[path = "../../../lagrange-bench/src/fpu.rs"]
 mod fpu_report;
 use fpu_report::{fpu_chain, fpu_forces};
+// Andrews' squeezer (seven bodies, six closure rows), the tests' reference problem.
+#[path = "../../../tests/common/squeezer.rs"]
+#[allow(dead_code)]
+mod squeezer_model;
 // Kepler's problem of the work-precision report, and its accelerations written by hand.
 #[path = "../../../lagrange-bench/src/kepler.rs"]
 mod kepler_report;
@@ -587,6 +591,59 @@ fn main() {
                 }
             }
             acc += s.q.theta1;
+        }
+        // One step (h = 10⁻⁵ s) per call of Andrews' squeezer from the state 20 steps after Hairer &
+        // Wanner's start: RK4 (`sys.step`, the constrained accelerations and the projection after
+        // the step), Gauss–Legendre 2 as a solver takes it (`step_with_memory`: the Newton
+        // matrix and the stage predictor kept from step to step), through a `Stepper` (the
+        // same, with its end-of-step q̈), through `sys.simulate` (the memory kept, n steps in one
+        // call) and through `sys.step` (a fresh Newton matrix every step).
+        "rk4_squeezer"
+        | "rk4_simulate_squeezer"
+        | "gl2_squeezer"
+        | "gl2_fresh_squeezer"
+        | "gl2_stepper_squeezer"
+        | "gl2_simulate_squeezer" => {
+            use lagrange::integrate::NewtonMemory;
+            use lagrange::GaussLegendre2;
+            let sys = squeezer_model::ANDREWS;
+            let h = 1e-5;
+            let mut s = squeezer_model::start();
+            let mut memory = NewtonMemory::<7, 2>::default();
+            for _ in 0..20 {
+                GaussLegendre2::step_with_memory(&sys, &mut memory, &mut s, h).unwrap();
+            }
+            if which == "rk4_squeezer" {
+                for _ in 0..n {
+                    black_box(&sys).step::<Rk4>(&mut s, h).unwrap();
+                }
+            } else if which == "rk4_simulate_squeezer" {
+                black_box(&sys).simulate::<Rk4>(&mut s, h, n, |_| {}).unwrap();
+            } else if which == "gl2_simulate_squeezer" {
+                black_box(&sys)
+                    .simulate::<GaussLegendre2>(&mut s, h, n, |_| {})
+                    .unwrap();
+            } else if which == "gl2_stepper_squeezer" {
+                // The documented way to take repeated implicit steps: a Stepper (the Newton
+                // memory kept, the projection and q̈ at the end of each step for dense output).
+                use lagrange::integrate::Stepper;
+                use lagrange::Integrator;
+                let mut solver = Stepper::new(&sys, GaussLegendre2::with_step(h), &s).unwrap();
+                for _ in 0..n {
+                    black_box(&mut solver).step(f64::MAX).unwrap();
+                }
+                s = solver.state();
+            } else if which == "gl2_fresh_squeezer" {
+                for _ in 0..n {
+                    black_box(&sys).step::<GaussLegendre2>(&mut s, h).unwrap();
+                }
+            } else {
+                for _ in 0..n {
+                    GaussLegendre2::step_with_memory(black_box(&sys), &mut memory, &mut s, h)
+                        .unwrap();
+                }
+            }
+            acc += s.q.beta;
         }
         "hw_rk4_double_pendulum" => {
             let sys = DOUBLE_PENDULUM;

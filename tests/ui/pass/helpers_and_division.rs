@@ -1,6 +1,11 @@
-//! A generic helper function called from a body, a helper taking `f64` in an attribute, and a
-//! vector divided by a scalar.
+//! A generic helper function called from a body (one in the module, one outside it by a path), a
+//! helper taking `f64` in an attribute, and a vector divided by a scalar.
 use lagrange::prelude::*;
+
+/// Outside the module, generic over the scalar: called as `super::half(..)`.
+pub fn half<D: lagrange::Scalar>(x: D) -> D {
+    x * 0.5
+}
 
 #[mechanism]
 pub mod helpers {
@@ -23,7 +28,7 @@ pub mod helpers {
 
     #[particle(mass = doubled(m) / 2.0)]
     fn bob() -> Vec2 {
-        vec2(arm(theta), -theta.cos()) * l * 2.0 / 2.0
+        vec2(arm(theta), -theta.cos()) * super::half(l) * 4.0 / 2.0
     }
 }
 

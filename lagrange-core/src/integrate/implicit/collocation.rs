@@ -10,8 +10,8 @@ use crate::integrate::canonical::{
     canonical_field, field_jacobians, velocities_and_mass_from_momenta, FieldJacobians,
 };
 use crate::integrate::newton::{
-    self, breakdown, carries_constraint_forces, max_norm, newton, BlockLu, NewtonEnd,
-    MAX_NEWTON_ITERATIONS,
+    self, breakdown, carries_constraint_forces, mass_weights, max_norm, newton, position_floor,
+    BlockLu, NewtonEnd, NewtonScale, Unknowns as _, MAX_NEWTON_ITERATIONS,
 };
 use crate::integrate::Stats;
 use nalgebra::{SMatrix, SVector};
@@ -43,6 +43,27 @@ fn stage_position<const N: usize, const S: usize>(
         qj += stages[k] * (h * tableau.a[j][k]);
     }
     qj
+}
+
+/// What the stage velocities' increments are measured against (see `NewtonScale`): weighted by
+/// √Mᵢᵢ (`mass` is M = ∂p/∂v), sized by the step's velocities (v₀ and the predicted stages),
+/// resolved to the positions' size over h.
+#[inline(always)]
+fn step_scale<M, const N: usize, const S: usize>(
+    step: &Collocation<'_, M, N, S>,
+    mass: &SMatrix<f64, N, N>,
+    predictor: &[SVector<f64, N>; S],
+) -> NewtonScale<[SVector<f64, N>; S]> {
+    let weights = mass_weights(mass);
+    let stages = [weights; S];
+    NewtonScale {
+        weights: stages,
+        size: step
+            .v0
+            .weighted_norm(&weights)
+            .max(predictor.weighted_norm(&stages)),
+        resolution: position_floor(&weights, &step.q0, step.h),
+    }
 }
 
 /// What every part of one step reads: the mechanism and the method, the step [t, t + h] from
@@ -141,7 +162,7 @@ pub(super) fn collocation_step<M: Evaluate<N>, const N: usize, const S: usize>(
         let mut rates = [SVector::<f64, N>::zeros(); S];
         let mut last = [SVector::<f64, N>::zeros(); S];
         let iterate = [&mut stages, &mut rates, &mut last];
-        let end = simplified_newton(&step, &matrix.lu, iterate, stats, &mut counts);
+        let end = simplified_newton(&step, &matrix, iterate, stats, &mut counts);
         let theta = match end {
             Ok(NewtonEnd::Converged { theta, .. }) => theta,
             // A stale matrix may not contract, or carry the stages where the field is not finite:
@@ -218,25 +239,35 @@ fn fresh_jacobians<M: Evaluate<N>, const N: usize, const S: usize>(
     field_jacobians(step.mechanism, t, &q, &v, step.constrained)
 }
 
-/// The simplified Newton iteration from the stages in `stages` with the factorised matrix `lu`:
-/// Vᵢ ← Vᵢ − δᵢ, δ = LU⁻¹ r(V), counted; ends with the stages, their ṗⱼ as last evaluated, and
-/// the last increment δ.
+/// The simplified Newton iteration from the predicted stages in `stages` with the factorised
+/// matrix: Vᵢ ← Vᵢ − δᵢ, δ = LU⁻¹ r(V), counted, the increments weighted by the matrix's
+/// ∂p/∂v = M ([`step_scale`]); ends with the stages, their ṗⱼ as last evaluated, and the last
+/// increment δ.
 #[inline(always)]
 fn simplified_newton<M: Evaluate<N>, const N: usize, const S: usize>(
     step: &Collocation<'_, M, N, S>,
-    lu: &BlockLu<N, S>,
+    matrix: &NewtonMatrix<N, S>,
     [stages, rates, last]: [&mut [SVector<f64, N>; S]; 3],
     stats: &mut Stats,
     counts: &mut ImplicitStepStats,
 ) -> Result<NewtonEnd> {
     let mut evaluations = 0;
     let before = stats.newton_iterations;
-    let end = newton(stages, MAX_NEWTON_ITERATIONS, true, stats, |stages| {
-        let mut residual = [SVector::<f64, N>::zeros(); S];
-        let norm = simplified_residual(step, stages, rates, &mut residual, &mut evaluations)?;
-        *last = lu.solve(&residual);
-        Ok((*last, norm))
-    });
+    let predictor = *stages;
+    let scale = || step_scale(step, &matrix.jacobians.p_v, &predictor);
+    let end = newton(
+        stages,
+        MAX_NEWTON_ITERATIONS,
+        true,
+        stats,
+        scale,
+        |stages| {
+            let mut residual = [SVector::<f64, N>::zeros(); S];
+            let norm = simplified_residual(step, stages, rates, &mut residual, &mut evaluations)?;
+            *last = matrix.lu.solve(&residual);
+            Ok((*last, norm))
+        },
+    );
     stats.evaluations += evaluations;
     counts.field_evaluations += evaluations;
     counts.iterations += stats.newton_iterations - before;
@@ -410,27 +441,41 @@ fn exact_collocation<M: Evaluate<N>, const N: usize, const S: usize>(
     let (tableau, t, h) = (step.tableau, step.t, step.h);
     let mut iteration = 0;
     let before = stats.newton_iterations;
-    let end = newton(&mut stages, MAX_NEWTON_ITERATIONS, false, stats, |stages| {
-        iteration += 1;
-        for j in 0..S {
-            let qj = stage_position(tableau, &step.q0, stages, h, j);
-            let tj = t + tableau.c[j] * h;
-            let vj = stages[j].into();
-            field[j] = field_jacobians(step.mechanism, tj, &qj.into(), &vj, step.constrained)?;
-            rates[j] = field[j].rate;
-        }
-        let mut residual = [SVector::<f64, N>::zeros(); S];
-        let norm = collocation_residual(step, &field.map(|f| f.p), &rates, &mut residual);
-        if !norm.is_finite() {
-            return Err(breakdown(tableau.name, t, h, iteration, NOT_FINITE));
-        }
-        let jacobian = exact_newton_matrix(tableau, h, &field);
-        let Some(lu) = BlockLu::factor(&jacobian) else {
-            return Err(not_factorised(step, iteration, &jacobian));
-        };
-        last = lu.solve(&residual);
-        Ok((last, norm))
-    });
+    // Weighted by the first iterate's M = ∂p/∂v at the first stage (see `NewtonScale`).
+    let predictor = stages;
+    let mass = std::cell::Cell::new(zero);
+    let scale = || step_scale(step, &mass.get(), &predictor);
+    let end = newton(
+        &mut stages,
+        MAX_NEWTON_ITERATIONS,
+        false,
+        stats,
+        scale,
+        |stages| {
+            iteration += 1;
+            for j in 0..S {
+                let qj = stage_position(tableau, &step.q0, stages, h, j);
+                let tj = t + tableau.c[j] * h;
+                let vj = stages[j].into();
+                field[j] = field_jacobians(step.mechanism, tj, &qj.into(), &vj, step.constrained)?;
+                rates[j] = field[j].rate;
+            }
+            if iteration == 1 {
+                mass.set(field[0].p_v);
+            }
+            let mut residual = [SVector::<f64, N>::zeros(); S];
+            let norm = collocation_residual(step, &field.map(|f| f.p), &rates, &mut residual);
+            if !norm.is_finite() {
+                return Err(breakdown(tableau.name, t, h, iteration, NOT_FINITE));
+            }
+            let jacobian = exact_newton_matrix(tableau, h, &field);
+            let Some(lu) = BlockLu::factor(&jacobian) else {
+                return Err(not_factorised(step, iteration, &jacobian));
+            };
+            last = lu.solve(&residual);
+            Ok((last, norm))
+        },
+    );
     let n = stats.newton_iterations - before;
     stats.jacobians += S * iteration;
     stats.factorizations += n;

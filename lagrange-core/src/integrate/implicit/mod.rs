@@ -41,12 +41,20 @@
 //! p₁ = p₀ + h Σ bⱼ G(tⱼ, Qⱼ, Vⱼ). This is exactly the Gauss method applied to the system in (q, p)
 //! (given its stage values, Vᵢ := v(tᵢ, Qᵢ, Pᵢ) solves R = 0, and conversely).
 //!
+//! **Taking repeated steps.** A single `sys.step::<GaussLegendre2>(&mut s, h)` has no memory: it
+//! evaluates the Jacobians on dual numbers and factorises the Newton matrix at every step, and the
+//! Jacobians dominate its cost (for a constrained mechanism they are taken through the constrained
+//! solve; BENCHMARKS.md has the profile). Repeated steps are taken by a solver,
+//! [`Stepper`](super::Stepper) with `GaussLegendre2::with_step(h)` (or
+//! [`GaussLegendre2::step_with_memory`] with a [`NewtonMemory`]), which keeps the Jacobians and
+//! the factorisation while they contract, as the examples below do.
+//!
 //! **State.** [`ImplicitMidpoint`] and [`GaussLegendre2`] implement [`Integrator`] on the (q, v)
 //! [`State`] as the [`Variational`](super::Variational) integrator does: p₀ = ∂L/∂q̇(t₀, q₀, v₀)
 //! before the step (in a solver, the previous step's p₁ when the state is exactly where that step
-//! left it), and after it v₁ solves ∂L/∂q̇(t₁, q₁, v₁) = p₁ by Newton's method with the exact
-//! Jacobian M (one iteration for a Lagrangian quadratic in q̇, v₁ = M⁻¹(p₁ − p(t₁, q₁, 0)); a second
-//! confirms it). The Legendre transform is inverted to round-off, so the next step starts from this
+//! left it), and after it v₁ solves ∂L/∂q̇(t₁, q₁, v₁) = p₁: T is quadratic in q̇, so
+//! v₁ = M⁻¹(p₁ − p(t₁, q₁, 0)), one solve with the mass matrix. The Legendre transform is inverted
+//! to round-off, so the next step starts from this
 //! step's p₁: the sequence of (q, p) is that of the Gauss method.
 //!
 //! **Geometric properties.** Gauss collocation methods are symplectic for Hamiltonian systems
@@ -108,8 +116,7 @@ pub struct ImplicitStepStats {
     pub field_evaluations: usize,
     /// LU factorisations of the (S·N)-square Newton matrix.
     pub factorizations: usize,
-    /// Newton iterations of the velocity recovery ∂L/∂v(t₁, q₁, v₁) = p₁ (each one dual pass of the
-    /// momenta).
+    /// Solves of the velocity recovery ∂L/∂v(t₁, q₁, v₁) = p₁ (one: T is quadratic in q̇).
     pub velocity_iterations: usize,
 }
 
@@ -152,7 +159,8 @@ impl<const N: usize, const S: usize> Default for NewtonMemory<N, S> {
 /// such a declaration ([`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod)).
 ///
 /// ```
-/// use lagrange_core::{ImplicitMidpoint, Mechanism, State};
+/// use lagrange_core::integrate::Stepper;
+/// use lagrange_core::{ImplicitMidpoint, Integrator, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
 /// # struct Pendulum;
 /// # impl Model<1, 2> for Pendulum {
@@ -168,12 +176,14 @@ impl<const N: usize, const S: usize> Default for NewtonMemory<N, S> {
 /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
 /// # }
 /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
+/// let start = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&start)?;
+/// // A solver keeps the Newton matrix from step to step (see the module docs).
+/// let mut solver = Stepper::new(&Pendulum, ImplicitMidpoint::with_step(1e-2), &start)?;
 /// let mut worst = 0.0f64;
 /// for _ in 0..10_000 {
-///     Pendulum.step::<ImplicitMidpoint>(&mut s, 1e-2)?;
-///     worst = worst.max((Pendulum.energy(&s)? - e0).abs());
+///     solver.step(f64::MAX)?;
+///     worst = worst.max((Pendulum.energy(&solver.state())? - e0).abs());
 /// }
 /// // Symplectic, order 2: the energy error oscillates, O(h²ω²E) ≈ 1e-3·E = 4e-3, without drift.
 /// assert!(worst < 1e-2);
@@ -190,7 +200,8 @@ pub struct ImplicitMidpoint;
 /// [`Stepper`](super::Stepper) hold the contact mode over each step, as for [`ImplicitMidpoint`].
 ///
 /// ```
-/// use lagrange_core::{GaussLegendre2, Mechanism, State};
+/// use lagrange_core::integrate::Stepper;
+/// use lagrange_core::{GaussLegendre2, Integrator, Mechanism, State};
 /// # use lagrange_core::{vec2, Model, Scalar};
 /// # struct Pendulum;
 /// # impl Model<1, 2> for Pendulum {
@@ -206,12 +217,14 @@ pub struct ImplicitMidpoint;
 /// #     fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D { x[1] * 9.81 }
 /// # }
 /// # lagrange_core::impl_mechanism!(Pendulum, 1, 2);
-/// let mut s = State::new(0.0, [0.5], [0.0]);
-/// let e0 = Pendulum.energy(&s)?;
+/// let start = State::new(0.0, [0.5], [0.0]);
+/// let e0 = Pendulum.energy(&start)?;
+/// // A solver keeps the Newton matrix from step to step (see the module docs).
+/// let mut solver = Stepper::new(&Pendulum, GaussLegendre2::with_step(1e-2), &start)?;
 /// let mut worst = 0.0f64;
 /// for _ in 0..10_000 {
-///     Pendulum.step::<GaussLegendre2>(&mut s, 1e-2)?;
-///     worst = worst.max((Pendulum.energy(&s)? - e0).abs());
+///     solver.step(f64::MAX)?;
+///     worst = worst.max((Pendulum.energy(&solver.state())? - e0).abs());
 /// }
 /// // Symplectic, order 4: the energy error oscillates, O((hω)⁴E) ≈ 1e-6·E, without drift.
 /// assert!(worst < 1e-5);
