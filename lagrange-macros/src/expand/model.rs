@@ -104,17 +104,11 @@ fn depends_const(model: &Model) -> Option<TokenStream> {
 /// Whether every force is a `#[generalized_force]` that names no body and no body velocity (a
 /// motor, joint damping): its value needs neither x nor ẋ (`Model::GENERALIZED_FORCES_ONLY`).
 pub(super) fn generalized_forces_only(model: &Model) -> bool {
-    let bodies: std::collections::BTreeSet<String> = model
-        .bodies
-        .iter()
-        .flat_map(|b| {
-            let name = b.decl.ident().to_string();
-            [format!("{name}_dot"), name]
-        })
-        .collect();
     model.forces.iter().all(|f| {
+        let used = model.names_used_by([f.decl]);
         f.kind == crate::attr::Kind::GeneralizedForce
-            && model.names_used_by([f.decl]).is_disjoint(&bodies)
+            && !forces::names_a_body(model, &used, false)
+            && !forces::names_a_body(model, &used, true)
     })
 }
 

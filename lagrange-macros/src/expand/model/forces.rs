@@ -77,19 +77,14 @@ fn forces_fn(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream 
     // The bodies and their velocities, where a force names them: a spatial body's frame from its
     // rows costs a decomposition of its inertia (its principal axes), which forces on coordinates
     // alone (motors, joint damping) do not pay.
-    let names_body = |suffix: &str| {
-        model
-            .bodies
-            .iter()
-            .any(|b| used.contains(&format!("{}{suffix}", b.decl.ident())))
-    };
-    let bodies = (names_body("") && !on_coordinates).then(|| bind_bodies(model));
+    let names_body = |velocity: bool| names_a_body(model, &used, velocity);
+    let bodies = (names_body(false) && !on_coordinates).then(|| bind_bodies(model));
     let names = model.bodies.iter().map(|b| b.decl.ident());
     let body_velocities = model
         .bodies
         .iter()
         .map(|b| format_ident!("{}_dot", b.decl.ident()));
-    let velocities_of_bodies = (names_body("_dot") && !on_coordinates).then(|| {
+    let velocities_of_bodies = (names_body(true) && !on_coordinates).then(|| {
         quote!(let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);)
     });
     let (shared, blocks) =
@@ -143,6 +138,23 @@ fn forces_fn(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream 
             #(#forces)*
         }
     }
+}
+
+/// Whether `used` names a body (`velocity`: a body's velocity, `bob_dot`; the velocity of
+/// `r#box` is `box_dot`).
+pub(in crate::expand) fn names_a_body(
+    model: &Model,
+    used: &std::collections::BTreeSet<String>,
+    velocity: bool,
+) -> bool {
+    use syn::ext::IdentExt;
+    model.bodies.iter().any(|b| {
+        let ident = b.decl.ident();
+        match velocity {
+            false => used.contains(&ident.to_string()),
+            true => used.contains(&format!("{}_dot", ident.unraw())),
+        }
+    })
 }
 
 /// `let tau: __D = input::<__U, __D>(&__u[0]);` for each input the forces name (an array input
