@@ -18,7 +18,7 @@ extern "C" {
 typedef enum lagrange_status {
     LAGRANGE_OK = 0, /* success */
     LAGRANGE_NULL_POINTER = 1, /* a required pointer argument is NULL */
-    LAGRANGE_INVALID_ARGUMENT = 2, /* an array length that does not match the mechanism, or an unknown method */
+    LAGRANGE_INVALID_ARGUMENT = 2, /* an array length that does not match the mechanism, an unknown method, or a non-finite input */
     LAGRANGE_INVALID_PARAMETER = 3, /* a parameter is not finite, a mass or inertia not positive */
     LAGRANGE_INVALID_STATE = 4, /* the state is not finite or violates the constraints */
     LAGRANGE_INVALID_STEP = 5, /* a step size, end time or tolerance is out of range */
@@ -43,6 +43,7 @@ typedef enum lagrange_status {
 
 #define DP_DOF 2
 #define DP_PARAMETER_COUNT 5
+#define DP_INPUT_COUNT 2
 #define DP_CONSTRAINT_COUNT 0
 
 /* Parameters: indices into the `params` array of the create function. */
@@ -51,6 +52,10 @@ typedef enum lagrange_status {
 #define DP_PARAM_L1 2
 #define DP_PARAM_L2 3
 #define DP_PARAM_G 4
+
+/* Inputs: indices into the `u` array of the set_inputs function. */
+#define DP_INPUT_TAU1 0
+#define DP_INPUT_TAU2 1
 
 /* Coordinates: indices into q and v. */
 #define DP_THETA1 0
@@ -78,8 +83,17 @@ lagrange_status dp_set_state(dp_simulation *sim, double t, const double *q, cons
  */
 lagrange_status dp_get_state(const dp_simulation *sim, double *t, double *q, double *v, size_t dof);
 
-/* Advances the state by one step of size `h` with `method` (LAGRANGE_RK4, ...);
- * on failure the state is unchanged.
+/* Sets the inputs (`len` == DP_INPUT_COUNT finite values, indexed by
+ * DP_INPUT_*), held constant from the next call on until the next
+ * dp_set_inputs (zero after dp_create); on failure they are unchanged.
+ */
+lagrange_status dp_set_inputs(dp_simulation *sim, const double *u, size_t len);
+
+/* Writes the inputs held (`len` == DP_INPUT_COUNT values). */
+lagrange_status dp_get_inputs(const dp_simulation *sim, double *u, size_t len);
+
+/* Advances the state by one step of size `h` with `method` (LAGRANGE_RK4, ...),
+ * the inputs held over it; on failure the state is unchanged.
  */
 lagrange_status dp_step(dp_simulation *sim, uint32_t method, double h);
 
@@ -89,20 +103,23 @@ lagrange_status dp_step(dp_simulation *sim, uint32_t method, double h);
 lagrange_status dp_steps(dp_simulation *sim, uint32_t method, double h, size_t count);
 
 /* Integrates to `t_end` by adaptive Dormand-Prince 5(4) with tolerances `rtol`,
- * `atol`; writes the number of accepted steps to `accepted` (skipped when NULL).
- * On failure the state is unchanged.
+ * `atol`, the inputs held; writes the number of accepted steps to `accepted`
+ * (skipped when NULL). On failure the state is unchanged.
  */
 lagrange_status dp_integrate_dopri5(dp_simulation *sim, double t_end, double rtol, double atol, size_t *accepted);
 
 /* Writes the kinetic and potential energy at the state; a NULL output is skipped. */
 lagrange_status dp_energies(const dp_simulation *sim, double *kinetic, double *potential);
 
-/* Writes the generalized accelerations at the state (`dof` == DP_DOF values). */
+/* Writes the generalized accelerations at the state with the inputs held (`dof` ==
+ * DP_DOF values).
+ */
 lagrange_status dp_accelerations(const dp_simulation *sim, double *qdd, size_t dof);
 
 /* Writes the constraint multipliers (`rows` == DP_CONSTRAINT_COUNT values)
  * and the generalized constraint forces, row by row (`len` ==
- * DP_CONSTRAINT_COUNT * DP_DOF values); a NULL output is skipped.
+ * DP_CONSTRAINT_COUNT * DP_DOF values) with the inputs held; a NULL
+ * output is skipped.
  */
 lagrange_status dp_constraint_forces(const dp_simulation *sim, double *multipliers, size_t rows, double *generalized, size_t len);
 

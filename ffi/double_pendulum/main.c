@@ -1,7 +1,9 @@
 /* The double pendulum simulated from C through the library `export_c!` writes.
  *
- *   ./main          RK4 and Dopri5 runs: final states (17 digits) and energy checks, then the
- *                   library's answers to bad input; exits non-zero if a check fails.
+ *   ./main          RK4 and Dopri5 runs: final states (17 digits) and energy checks; the pendulum
+ *                   held upside down by a PD controller on its joint motors, computed here in C
+ *                   and applied through dp_set_inputs every step; then the library's answers to
+ *                   bad input; exits non-zero if a check fails.
  *   ./main bench N  the cost of N RK4 steps called one by one from C against the same N steps
  *                   in one call (a loop in Rust), in ns per step.
  *   ./main calls N  N RK4 steps, one call each, untimed (for instruction counts: callgrind);
@@ -104,6 +106,59 @@ static int simulate(void) {
     return 0;
 }
 
+/* The controlled run: both rods upright, theta1 = theta2 = pi. PI is the double nearest pi, as
+ * in Rust's std::f64::consts::PI. */
+static const double PI = 3.14159265358979323846;
+static const double KP = 100.0; /* N m / rad */
+static const double KD = 20.0;  /* N m s / rad */
+
+/* PD control of each joint towards upright: the shoulder's angle from the upward vertical is
+ * theta1 - pi, the elbow's bend theta2 - theta1. With m = l = 1 the closed loop linearized about
+ * upright is stable for KP > 2 g / (2 - sqrt 2) = 33.5 (the stiffness KP K - g diag(2, 1), K the
+ * joint-to-angle map [[2, -1], [-1, 1]], must be positive definite); with KP = 100, KD = 20 its
+ * slowest modes decay as exp(-1.716 t). */
+static void pd_torques(const double q[DP_DOF], const double v[DP_DOF], double u[DP_INPUT_COUNT]) {
+    double shoulder = q[DP_THETA1] - PI, shoulder_rate = v[DP_THETA1];
+    double elbow = q[DP_THETA2] - q[DP_THETA1], elbow_rate = v[DP_THETA2] - v[DP_THETA1];
+    u[DP_INPUT_TAU1] = -KP * shoulder - KD * shoulder_rate;
+    u[DP_INPUT_TAU2] = -KP * elbow - KD * elbow_rate;
+}
+
+/* Released at rest 0.5 rad and 0.3 rad off upright, the controller reads the state and sets the
+ * motors' torques before each RK4 step of 1 ms (held over the step), for 10 s. Prints
+ * `control t shoulder_error elbow_error tau1 tau2` at a few times, then the final state in full
+ * (`control_final t theta1 theta2 omega1 omega2`). */
+static void control(void) {
+    dp_simulation *sim = create(PARAMS);
+    const double q0[DP_DOF] = {[DP_THETA1] = PI - 0.5, [DP_THETA2] = PI + 0.3};
+    must(dp_set_state(sim, 0.0, q0, V0, DP_DOF), "dp_set_state");
+    double t, q[DP_DOF], v[DP_DOF], u[DP_INPUT_COUNT], last_set[DP_INPUT_COUNT];
+    for (int i = 0; i <= 10000; i++) {
+        must(dp_get_state(sim, &t, q, v, DP_DOF), "dp_get_state");
+        pd_torques(q, v, u);
+        if (i == 0 || i == 500 || i == 1000 || i == 2000 || i == 5000 || i == 10000) {
+            printf("control %.1f %+.3e %+.3e %+.3e %+.3e\n", t, q[DP_THETA1] - PI,
+                   q[DP_THETA2] - q[DP_THETA1], u[DP_INPUT_TAU1], u[DP_INPUT_TAU2]);
+        }
+        if (i == 10000) {
+            break;
+        }
+        must(dp_set_inputs(sim, u, DP_INPUT_COUNT), "dp_set_inputs");
+        memcpy(last_set, u, sizeof last_set);
+        must(dp_step(sim, LAGRANGE_RK4, 1e-3), "dp_step");
+    }
+    printf("control_final %.17g %.17g %.17g %.17g %.17g\n", t, q[DP_THETA1], q[DP_THETA2],
+           v[DP_THETA1], v[DP_THETA2]);
+    /* The slowest modes' envelope from the initial error 0.5 rad after 10 s is
+     * 0.5 exp(-17.16) = 1.8e-8 rad (tests/c_program.rs checks the printed error against 1e-6). */
+    check(fabs(q[DP_THETA1] - PI) < 1e-6 && fabs(q[DP_THETA2] - PI) < 1e-6,
+          "the PD controller holds both rods upright to 1e-6 rad after 10 s");
+    double held[DP_INPUT_COUNT];
+    must(dp_get_inputs(sim, held, DP_INPUT_COUNT), "dp_get_inputs");
+    check(memcmp(held, last_set, sizeof held) == 0, "dp_get_inputs reads the inputs last set");
+    dp_free(sim);
+}
+
 /* Bad input is a status and a message, never a crash; the state is left as it was. */
 static void bad_input(void) {
     double params[DP_PARAMETER_COUNT];
@@ -146,6 +201,21 @@ static void bad_input(void) {
     check(dp_step(sim, LAGRANGE_STORMER_VERLET, 1e-3) == LAGRANGE_UNSUPPORTED,
           "Stormer-Verlet on a varying mass matrix: LAGRANGE_UNSUPPORTED");
     check(dp_step(NULL, LAGRANGE_RK4, 1e-3) == LAGRANGE_NULL_POINTER, "NULL simulation: LAGRANGE_NULL_POINTER");
+    const double torques[DP_INPUT_COUNT] = {[DP_INPUT_TAU1] = 1.0, [DP_INPUT_TAU2] = -1.0};
+    must(dp_set_inputs(sim, torques, DP_INPUT_COUNT), "dp_set_inputs");
+    const double nan_torques[DP_INPUT_COUNT] = {[DP_INPUT_TAU1] = 2.0, [DP_INPUT_TAU2] = NAN};
+    check(dp_set_inputs(sim, nan_torques, DP_INPUT_COUNT) == LAGRANGE_INVALID_ARGUMENT,
+          "NaN torque: LAGRANGE_INVALID_ARGUMENT");
+    check(strstr(dp_last_error(), "input `tau2` is not finite") != NULL,
+          "NaN torque: the message names tau2");
+    check(dp_set_inputs(sim, torques, DP_INPUT_COUNT + 1) == LAGRANGE_INVALID_ARGUMENT,
+          "too many torques: LAGRANGE_INVALID_ARGUMENT");
+    check(dp_set_inputs(sim, NULL, DP_INPUT_COUNT) == LAGRANGE_NULL_POINTER,
+          "NULL torques: LAGRANGE_NULL_POINTER");
+    double held[DP_INPUT_COUNT];
+    must(dp_get_inputs(sim, held, DP_INPUT_COUNT), "dp_get_inputs");
+    check(held[DP_INPUT_TAU1] == 1.0 && held[DP_INPUT_TAU2] == -1.0,
+          "the inputs are unchanged by every refused dp_set_inputs");
     double t, q[DP_DOF], v[DP_DOF];
     must(dp_get_state(sim, &t, q, v, DP_DOF), "dp_get_state");
     check(t == 0.0 && q[0] == Q0[0] && q[1] == Q0[1] && v[0] == 0.0 && v[1] == 0.0,
@@ -208,6 +278,7 @@ int main(int argc, char **argv) {
         return run_steps(strcmp(argv[1], "calls") == 0, atol(argv[2]));
     }
     simulate();
+    control();
     bad_input();
     return failures == 0 ? 0 : 1;
 }

@@ -1,5 +1,5 @@
 //! [`Declaration`]: what a `#[mechanism]` declaration names — its parameters, its degrees of
-//! freedom, its constraint rows — for code that is generic over declarations and talks to the
+//! freedom, its inputs, its constraint rows — for code that is generic over declarations and talks to the
 //! world in flat arrays of numbers (the C export of `lagrange::export_c!`).
 
 use crate::constraints::{constraint_forces, Constraints};
@@ -42,7 +42,9 @@ use crate::model::{Coordinates, State};
 /// assert_eq!(p.parameters(), [2.0, 9.81]);
 /// assert!(Pendulum::from_parameters(&[2.0]).is_none());
 /// // No constraints: no rows, no forces.
-/// assert!(p.constraint_forces(0.0, &[0.1], &[0.0])?.multipliers.is_empty());
+/// assert!(p.constraint_forces(&[], 0.0, &[0.1], &[0.0])?.multipliers.is_empty());
+/// // No `#[inputs]`: no input names.
+/// assert!(Pendulum::INPUTS.is_empty());
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
 pub trait Declaration: Sized {
@@ -51,6 +53,9 @@ pub trait Declaration: Sized {
     const DOF: usize;
     /// The parameters' names (the parameter struct's fields).
     const PARAMETERS: &'static [&'static str];
+    /// The inputs' names, flat (`tau[0]`, `tau[1]` for an array field; the `#[inputs]` struct's
+    /// [`Inputs::NAMES`](crate::inputs::Inputs::NAMES)), empty without `#[inputs]`.
+    const INPUTS: &'static [&'static str] = &[];
     /// The constraint rows' names (empty without constraints).
     const CONSTRAINT_ROWS: &'static [&'static str] = &[];
 
@@ -62,13 +67,20 @@ pub trait Declaration: Sized {
     fn parameters(&self) -> Vec<f64>;
 
     /// The multipliers λ of the constraint rows and their generalized forces λᵢ·rᵢ (row-major,
-    /// one row of `DOF` values per constraint) at (t, q, q̇), as
+    /// one row of `DOF` values per constraint) at (t, q, q̇) with `inputs` held (flat, in the
+    /// order of [`INPUTS`](Declaration::INPUTS); zeros where it has none), as
     /// [`constraint_forces`] computes them; empty without constraints.
     ///
     /// Errors: `q` or `v` not of length `DOF` ([`Error::InvalidSetting`]), and those of
     /// [`constraint_forces`].
-    fn constraint_forces(&self, t: f64, q: &[f64], v: &[f64]) -> Result<FlatConstraintForces> {
-        let _ = t;
+    fn constraint_forces(
+        &self,
+        inputs: &[f64],
+        t: f64,
+        q: &[f64],
+        v: &[f64],
+    ) -> Result<FlatConstraintForces> {
+        let _ = (inputs, t);
         check_len("q", q, Self::DOF)?;
         check_len("v", v, Self::DOF)?;
         Ok(FlatConstraintForces::default())
@@ -85,7 +97,9 @@ pub struct FlatConstraintForces {
 }
 
 /// [`Declaration::constraint_forces`] of a mechanism with constraints: what `#[mechanism]` writes
-/// into the impl of a constrained declaration.
+/// into the impl of a constrained declaration, `model` being the declaration (or, for one with
+/// `#[inputs]`, the declaration with its inputs held,
+/// [`WithInputs::held`](crate::inputs::WithInputs::held)).
 pub fn flat_constraint_forces<
     M: Constraints<N, K, C>,
     const N: usize,

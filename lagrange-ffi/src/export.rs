@@ -2,9 +2,12 @@
 
 /// Exports a `#[mechanism]` to C: writes, for the parameter struct named, the `extern "C"`
 /// functions `PREFIX_create`, `PREFIX_free`, `PREFIX_set_state`, `PREFIX_get_state`,
-/// `PREFIX_step`, `PREFIX_steps`, `PREFIX_integrate_dopri5`, `PREFIX_energies`,
-/// `PREFIX_accelerations`, `PREFIX_constraint_forces` and `PREFIX_last_error`, and a type named
-/// by the prefix (`dp`) whose [`Export`](crate::Export) impl gives their C header, `dp::header()`.
+/// `PREFIX_set_inputs`, `PREFIX_get_inputs`, `PREFIX_step`, `PREFIX_steps`,
+/// `PREFIX_integrate_dopri5`, `PREFIX_energies`, `PREFIX_accelerations`,
+/// `PREFIX_constraint_forces` and `PREFIX_last_error`, and a type named by the prefix (`dp`)
+/// whose [`Export`](crate::Export) impl gives their C header, `dp::header()`. The handle holds the
+/// inputs of a declaration with `#[inputs]` (`PREFIX_set_inputs`) and every call evaluates with
+/// them.
 ///
 /// Put it in a crate built as `cdylib` or `staticlib` (see the README, "Calling a mechanism from
 /// C"). Every function returns a `lagrange_status`; none unwinds into C.
@@ -84,8 +87,18 @@ macro_rules! export_c {
                 fn get_state(sim: *const Sim, t: *mut f64, q: *mut f64, v: *mut f64, dof: usize) -> Status {
                     unsafe { $crate::simulation::get_state::<Mech, N>(sim, t, q, v, dof) }
                 }
-                /// Advances the state by one step of size `h` with `method` (LAGRANGE_RK4, ...);
-                /// on failure the state is unchanged.
+                /// Sets the inputs (`len` == PREFIX_INPUT_COUNT finite values, indexed by
+                /// PREFIX_INPUT_*), held constant from the next call on until the next
+                /// PREFIX_set_inputs (zero after PREFIX_create); on failure they are unchanged.
+                fn set_inputs(sim: *mut Sim, u: *const f64, len: usize) -> Status {
+                    unsafe { $crate::simulation::set_inputs::<Mech, N>(sim, u, len) }
+                }
+                /// Writes the inputs held (`len` == PREFIX_INPUT_COUNT values).
+                fn get_inputs(sim: *const Sim, u: *mut f64, len: usize) -> Status {
+                    unsafe { $crate::simulation::get_inputs::<Mech, N>(sim, u, len) }
+                }
+                /// Advances the state by one step of size `h` with `method` (LAGRANGE_RK4, ...),
+                /// the inputs held over it; on failure the state is unchanged.
                 fn step(sim: *mut Sim, method: u32, h: f64) -> Status {
                     unsafe { $crate::simulation::step::<Mech, N>(sim, method, h) }
                 }
@@ -95,8 +108,8 @@ macro_rules! export_c {
                     unsafe { $crate::simulation::steps::<Mech, N>(sim, method, h, count) }
                 }
                 /// Integrates to `t_end` by adaptive Dormand-Prince 5(4) with tolerances `rtol`,
-                /// `atol`; writes the number of accepted steps to `accepted` (skipped when NULL).
-                /// On failure the state is unchanged.
+                /// `atol`, the inputs held; writes the number of accepted steps to `accepted`
+                /// (skipped when NULL). On failure the state is unchanged.
                 fn integrate_dopri5(sim: *mut Sim, t_end: f64, rtol: f64, atol: f64, accepted: *mut usize) -> Status {
                     unsafe { $crate::simulation::integrate_dopri5::<Mech, N>(sim, t_end, rtol, atol, accepted) }
                 }
@@ -104,13 +117,15 @@ macro_rules! export_c {
                 fn energies(sim: *const Sim, kinetic: *mut f64, potential: *mut f64) -> Status {
                     unsafe { $crate::simulation::energies::<Mech, N>(sim, kinetic, potential) }
                 }
-                /// Writes the generalized accelerations at the state (`dof` == PREFIX_DOF values).
+                /// Writes the generalized accelerations at the state with the inputs held (`dof` ==
+                /// PREFIX_DOF values).
                 fn accelerations(sim: *const Sim, qdd: *mut f64, dof: usize) -> Status {
                     unsafe { $crate::simulation::accelerations::<Mech, N>(sim, qdd, dof) }
                 }
                 /// Writes the constraint multipliers (`rows` == PREFIX_CONSTRAINT_COUNT values)
                 /// and the generalized constraint forces, row by row (`len` ==
-                /// PREFIX_CONSTRAINT_COUNT * PREFIX_DOF values); a NULL output is skipped.
+                /// PREFIX_CONSTRAINT_COUNT * PREFIX_DOF values) with the inputs held; a NULL
+                /// output is skipped.
                 fn constraint_forces(sim: *const Sim, multipliers: *mut f64, rows: usize, generalized: *mut f64, len: usize) -> Status {
                     unsafe { $crate::simulation::constraint_forces::<Mech, N>(sim, multipliers, rows, generalized, len) }
                 }

@@ -178,8 +178,9 @@ fn indices(out: &mut String, prefix: &str, what: &str, names: &[&str]) {
 }
 
 /// The C header of export `E` of mechanism `M`: the shared status and method codes, the
-/// sizes (`PREFIX_DOF`, `PREFIX_PARAMETER_COUNT`, `PREFIX_CONSTRAINT_COUNT`), the index of every
-/// parameter, coordinate and constraint row by name, the opaque handle type, and every function
+/// sizes (`PREFIX_DOF`, `PREFIX_PARAMETER_COUNT`, `PREFIX_INPUT_COUNT`,
+/// `PREFIX_CONSTRAINT_COUNT`), the index of every parameter, input, coordinate and constraint row
+/// by name, the opaque handle type, and every function
 /// with its documentation.
 pub fn header<E: Export, M: Dynamics<N> + Declaration, const N: usize>() -> String {
     let prefix = E::PREFIX;
@@ -199,6 +200,7 @@ pub fn header<E: Export, M: Dynamics<N> + Declaration, const N: usize>() -> Stri
         "#define {upper}_PARAMETER_COUNT {}",
         M::PARAMETERS.len()
     );
+    let _ = writeln!(out, "#define {upper}_INPUT_COUNT {}", M::INPUTS.len());
     let _ = writeln!(
         out,
         "#define {upper}_CONSTRAINT_COUNT {}\n",
@@ -206,6 +208,10 @@ pub fn header<E: Export, M: Dynamics<N> + Declaration, const N: usize>() -> Stri
     );
     out.push_str("/* Parameters: indices into the `params` array of the create function. */\n");
     indices(&mut out, &upper, "PARAM_", M::PARAMETERS);
+    if !M::INPUTS.is_empty() {
+        out.push_str("\n/* Inputs: indices into the `u` array of the set_inputs function. */\n");
+        indices(&mut out, &upper, "INPUT_", M::INPUTS);
+    }
     out.push_str("\n/* Coordinates: indices into q and v. */\n");
     indices(&mut out, &upper, "", &M::Coords::NAMES);
     if !M::CONSTRAINT_ROWS.is_empty() {

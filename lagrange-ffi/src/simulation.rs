@@ -1,4 +1,5 @@
-//! [`Simulation`]: the handle a C program holds (validated parameters and a state), and the generic
+//! [`Simulation`]: the handle a C program holds (validated parameters, a state and the inputs held),
+//! and the generic
 //! functions behind every exported C function. `export_c!` writes one `extern "C"` wrapper per
 //! function here, for a concrete mechanism; all checking and marshalling is done once, here.
 //!
@@ -10,6 +11,7 @@
 //! Lengths are checked against the mechanism before any pointer is read, so a wrong length is a
 //! clean [`Status::InvalidArgument`].
 
+use crate::held::HeldInputs;
 use crate::status::{guard, Failure, Status};
 use lagrange_core::declaration::Declaration;
 use lagrange_core::evaluation::Dynamics;
@@ -20,12 +22,15 @@ use lagrange_core::integrate::{
 use lagrange_core::model::{check_state, Coordinates, State};
 use lagrange_core::{Mechanism, Validated};
 
-/// A mechanism with validated parameters and its current state: what `PREFIX_create` returns to C
-/// as an opaque `PREFIX_simulation *`.
+/// A mechanism with validated parameters, its current state and the inputs held (one value per
+/// [`Declaration::INPUTS`], zero at creation, changed only by [`set_inputs`]): what
+/// `PREFIX_create` returns to C as an opaque `PREFIX_simulation *`. Every evaluation and step
+/// through the handle sees the inputs, held until the next `set_inputs` (a zero-order hold).
 #[derive(Debug)]
 pub struct Simulation<M: Dynamics<N>, const N: usize> {
     sys: Validated<M>,
     state: State<M::Coords>,
+    inputs: Vec<f64>,
 }
 
 impl<M: Dynamics<N>, const N: usize> Simulation<M, N> {
@@ -37,6 +42,16 @@ impl<M: Dynamics<N>, const N: usize> Simulation<M, N> {
     /// The current state.
     pub fn state(&self) -> &State<M::Coords> {
         &self.state
+    }
+
+    /// The inputs held, flat, in the order of [`Declaration::INPUTS`].
+    pub fn inputs(&self) -> &[f64] {
+        &self.inputs
+    }
+
+    /// The mechanism with the inputs held: what every call evaluates and steps.
+    fn driven(&self) -> HeldInputs<'_, Validated<M>> {
+        HeldInputs::new(&self.sys, &self.inputs)
     }
 }
 
@@ -119,11 +134,7 @@ unsafe fn input<'a>(
     len: usize,
     expected: usize,
 ) -> Result<&'a [f64], Failure> {
-    if len != expected {
-        return Err(Failure::Argument(format!(
-            "`{name}` has length {len}, this mechanism needs {expected}"
-        )));
-    }
+    check_len(name, len, expected)?;
     if expected == 0 {
         return Ok(&[]);
     }
@@ -152,7 +163,15 @@ fn output_len(
     len: usize,
     expected: usize,
 ) -> Result<(), Failure> {
-    if ptr.is_null() || len == expected {
+    match ptr.is_null() {
+        true => Ok(()),
+        false => check_len(name, len, expected),
+    }
+}
+
+/// Checks that an array's length `len` is the mechanism's.
+fn check_len(name: &'static str, len: usize, expected: usize) -> Result<(), Failure> {
+    if len == expected {
         Ok(())
     } else {
         Err(Failure::Argument(format!(
@@ -184,7 +203,7 @@ unsafe fn handle_mut<'a, M: Dynamics<N>, const N: usize>(
 }
 
 /// `PREFIX_create`: checks `len == PARAMETER_COUNT` and the parameters, and writes a new handle at
-/// rest at q = 0, t = 0 to `*out` (NULL on failure). The handle is freed with [`free`].
+/// rest at q = 0, t = 0, its inputs zero, to `*out` (NULL on failure). The handle is freed with [`free`].
 ///
 /// # Safety
 /// `params` is NULL or valid for `len` reads; `out` is NULL or valid for one write.
@@ -206,7 +225,8 @@ pub unsafe fn create<M: Dynamics<N> + Declaration, const N: usize>(
         })?;
         let sys = mechanism.validated()?;
         let state = State::at_rest(M::Coords::default());
-        let handle = Box::into_raw(Box::new(Simulation { sys, state }));
+        let inputs = vec![0.0; M::INPUTS.len()];
+        let handle = Box::into_raw(Box::new(Simulation { sys, state, inputs }));
         // SAFETY: as above.
         unsafe { out.write(handle) };
         Ok(())
@@ -278,13 +298,61 @@ pub unsafe fn get_state<M: Dynamics<N>, const N: usize>(
     })
 }
 
+/// `PREFIX_set_inputs`: sets the inputs held from the next evaluation on, after checking the
+/// length (`len == INPUT_COUNT`) and that every value is finite; on error the inputs are
+/// unchanged.
+///
+/// # Safety
+/// `sim` is NULL or a live handle; `u` is NULL or valid for `len` reads.
+pub unsafe fn set_inputs<M: Dynamics<N> + Declaration, const N: usize>(
+    sim: *mut Simulation<M, N>,
+    u: *const f64,
+    len: usize,
+) -> Status {
+    guard(|| {
+        // SAFETY: by the caller's contract.
+        let sim = unsafe { handle_mut(sim) }?;
+        let u = unsafe { input("u", u, len, M::INPUTS.len()) }?;
+        if let Some((name, value)) = M::INPUTS.iter().zip(u).find(|(_, u)| !u.is_finite()) {
+            return Err(Failure::Argument(format!(
+                "input `{name}` is not finite ({value})"
+            )));
+        }
+        sim.inputs.copy_from_slice(u);
+        Ok(())
+    })
+}
+
+/// `PREFIX_get_inputs`: writes the inputs held (`len == INPUT_COUNT` values).
+///
+/// # Safety
+/// `sim` is NULL or a live handle; `u` NULL or valid for `len` writes.
+pub unsafe fn get_inputs<M: Dynamics<N> + Declaration, const N: usize>(
+    sim: *const Simulation<M, N>,
+    u: *mut f64,
+    len: usize,
+) -> Status {
+    guard(|| {
+        // SAFETY: by the caller's contract.
+        let sim = unsafe { handle(sim) }?;
+        check_len("u", len, M::INPUTS.len())?;
+        if u.is_null() && len > 0 {
+            return Err(Failure::Null("u"));
+        }
+        // SAFETY: length checked, pointer by the caller's contract.
+        unsafe { output(u, &sim.inputs) };
+        Ok(())
+    })
+}
+
 /// One step of `method` (a `LAGRANGE_*` code) with the handle's mechanism.
 fn step_with<M: Dynamics<N>, const N: usize>(
     sim: &mut Simulation<M, N>,
     method: u32,
     h: f64,
 ) -> Result<(), Failure> {
-    let (sys, state) = (&sim.sys, &mut sim.state);
+    let sys = HeldInputs::new(&sim.sys, &sim.inputs);
+    let state = &mut sim.state;
     let method = Method::from_code(method).ok_or_else(|| {
         Failure::Argument(format!(
             "unknown method {method}: the methods are 0 to {}",
@@ -355,7 +423,8 @@ pub unsafe fn integrate_dopri5<M: Dynamics<N>, const N: usize>(
         // SAFETY: by the caller's contract.
         let sim = unsafe { handle_mut(sim) }?;
         let settings = Dopri5::new(rtol, atol);
-        let mut solver = Stepper::new(&sim.sys, settings, &sim.state)?;
+        let sys = HeldInputs::new(&sim.sys, &sim.inputs);
+        let mut solver = Stepper::new(&sys, settings, &sim.state)?;
         let outcome = solver.integrate(t_end, &mut [], |_| {})?;
         if let StopReason::MaxSteps = outcome.reason {
             return Err(Failure::Solver(format!(
@@ -384,9 +453,10 @@ pub unsafe fn energies<M: Dynamics<N>, const N: usize>(
     guard(|| {
         // SAFETY: by the caller's contract.
         let sim = unsafe { handle(sim) }?;
+        let sys = sim.driven();
         let (t, v) = (
-            sim.sys.kinetic_energy(&sim.state)?,
-            sim.sys.potential_energy(&sim.state)?,
+            sys.kinetic_energy(&sim.state)?,
+            sys.potential_energy(&sim.state)?,
         );
         // SAFETY: by the caller's contract.
         unsafe {
@@ -413,7 +483,7 @@ pub unsafe fn accelerations<M: Dynamics<N>, const N: usize>(
             return Err(Failure::Null("qdd"));
         }
         output_len("qdd", qdd, dof, N)?;
-        let a = sim.sys.accelerations(&sim.state)?.to_array();
+        let a = sim.driven().accelerations(&sim.state)?.to_array();
         // SAFETY: length checked, pointer by the caller's contract.
         unsafe { output(qdd, &a) };
         Ok(())
@@ -422,7 +492,7 @@ pub unsafe fn accelerations<M: Dynamics<N>, const N: usize>(
 
 /// `PREFIX_constraint_forces`: writes the multipliers λ (`rows == CONSTRAINT_COUNT` values) and the
 /// generalized constraint forces λᵢ·rᵢ (`len == CONSTRAINT_COUNT * DOF` values, row-major) at the
-/// state; NULL outputs are skipped.
+/// state with the inputs held; NULL outputs are skipped.
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; the outputs NULL or valid for `rows` and `len` writes.
@@ -440,10 +510,10 @@ pub unsafe fn constraint_forces<M: Dynamics<N> + Declaration, const N: usize>(
         output_len("multipliers", multipliers, rows, c)?;
         output_len("generalized", generalized, len, c * N)?;
         let s = &sim.state;
-        let forces = sim
-            .sys
-            .get()
-            .constraint_forces(s.t, &s.q.to_array(), &s.v.to_array())?;
+        let forces =
+            sim.sys
+                .get()
+                .constraint_forces(&sim.inputs, s.t, &s.q.to_array(), &s.v.to_array())?;
         // SAFETY: lengths checked, pointers by the caller's contract.
         unsafe {
             output(multipliers, &forces.multipliers);

@@ -65,7 +65,7 @@ impl Status {
             ),
             Status::InvalidArgument => (
                 "LAGRANGE_INVALID_ARGUMENT",
-                "an array length that does not match the mechanism, or an unknown method",
+                "an array length that does not match the mechanism, an unknown method, or a non-finite input",
             ),
             Status::InvalidParameter => (
                 "LAGRANGE_INVALID_PARAMETER",

@@ -11,7 +11,7 @@
 
 use lagrange::prelude::*;
 
-/// Two point masses on massless rods, in the plane, under gravity.
+/// Two point masses on massless rods, in the plane, under gravity, a motor at each joint.
 #[mechanism]
 pub mod double_pendulum {
     /// The angles of the rods from the downward vertical.
@@ -29,6 +29,14 @@ pub mod double_pendulum {
         pub g: f64,
     }
 
+    /// The motors' torques: the shoulder's turns rod 1 against the ground, the elbow's rod 2
+    /// against rod 1.
+    #[inputs]
+    pub struct Torques {
+        pub tau1: f64,
+        pub tau2: f64,
+    }
+
     #[particle(mass = m1)]
     fn bob1() -> Vec2 {
         vec2(theta1.sin(), -theta1.cos()) * l1
@@ -42,6 +50,18 @@ pub mod double_pendulum {
     #[gravity]
     fn down() -> Vec2 {
         vec2(0.0, -g)
+    }
+
+    /// The angles are absolute, so the elbow's torque, which turns θ₂ − θ₁, acts on θ₂ and
+    /// reacts on θ₁: its virtual work is τ₂ δ(θ₂ − θ₁).
+    #[generalized_force(on = theta1)]
+    fn shoulder() -> f64 {
+        tau1 - tau2
+    }
+
+    #[generalized_force(on = theta2)]
+    fn elbow() -> f64 {
+        tau2
     }
 }
 

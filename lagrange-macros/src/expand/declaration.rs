@@ -1,5 +1,5 @@
-//! The `Declaration` impl: the parameters' names and flat values, the degrees of freedom and the
-//! constraint rows, for code generic over declarations (the C export).
+//! The `Declaration` impl: the parameters' names and flat values, the degrees of freedom, the
+//! inputs' names and the constraint rows, for code generic over declarations (the C export).
 
 use super::{lit, private};
 use crate::check::Model;
@@ -7,8 +7,9 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::ext::IdentExt;
 
-/// `impl Declaration for Params`: names in declaration order; constraint forces through
-/// `flat_constraint_forces` when constraints are declared.
+/// `impl Declaration for Params`: names in declaration order (the inputs' are their `Inputs`
+/// impl's); constraint forces through `flat_constraint_forces` when constraints are declared,
+/// with the inputs held when inputs are declared too.
 pub(super) fn declaration_impl(model: &Model) -> TokenStream {
     let p = private();
     let declaration = quote!(#p::lagrange_core::declaration);
@@ -38,13 +39,32 @@ pub(super) fn declaration_impl(model: &Model) -> TokenStream {
         }
         slot += f.slots();
     }
+    let inputs = model
+        .inputs_ident
+        .zip(model.input_count())
+        .map(|(ident, count)| (ident, lit(count)));
+    let input_names = inputs.as_ref().map(|(ident, nu)| {
+        quote! {
+            const INPUTS: &'static [&'static str] = &<#ident as #p::lagrange_core::inputs::Inputs<#nu>>::NAMES;
+        }
+    });
     let constraints = (!model.constraints.is_empty()).then(|| {
         let (k, c) = (lit(model.rows), lit(model.constraint_row_count()));
         let rows = model.constraints.iter().map(|r| r.decl.ident().unraw().to_string());
+        let forces = match &inputs {
+            Some((_, nu)) => quote! {
+                let __held = #p::lagrange_core::inputs::WithInputs::<'_, Self, f64, #nu>::held(self, inputs);
+                #declaration::flat_constraint_forces::<_, #n, #k, #c>(&__held, t, q, v)
+            },
+            None => quote! {
+                let _ = inputs;
+                #declaration::flat_constraint_forces::<Self, #n, #k, #c>(self, t, q, v)
+            },
+        };
         quote! {
             const CONSTRAINT_ROWS: &'static [&'static str] = &[#(#rows),*];
-            fn constraint_forces(&self, t: f64, q: &[f64], v: &[f64]) -> #p::Result<#declaration::FlatConstraintForces> {
-                #declaration::flat_constraint_forces::<Self, #n, #k, #c>(self, t, q, v)
+            fn constraint_forces(&self, inputs: &[f64], t: f64, q: &[f64], v: &[f64]) -> #p::Result<#declaration::FlatConstraintForces> {
+                #forces
             }
         }
     });
@@ -52,6 +72,7 @@ pub(super) fn declaration_impl(model: &Model) -> TokenStream {
         impl #declaration::Declaration for #params {
             const DOF: usize = #n;
             const PARAMETERS: &'static [&'static str] = &[#(#names),*];
+            #input_names
             fn from_parameters(values: &[f64]) -> #p::core::option::Option<Self> {
                 if values.len() != Self::PARAMETERS.len() {
                     return #p::core::option::Option::None;

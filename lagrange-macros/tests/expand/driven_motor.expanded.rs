@@ -572,6 +572,9 @@ pub mod motor {
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Motor {
         const DOF: usize = 1;
         const PARAMETERS: &'static [&'static str] = &["j", "c"];
+        const INPUTS: &'static [&'static str] = &<Torque as ::lagrange::__private::lagrange_core::inputs::Inputs<
+            1,
+        >>::NAMES;
         fn from_parameters(
             values: &[f64],
         ) -> ::lagrange::__private::core::option::Option<Self> {

@@ -630,12 +630,14 @@ pub mod sliding_block {
         const CONSTRAINT_ROWS: &'static [&'static str] = &["floor", "slide"];
         fn constraint_forces(
             &self,
+            inputs: &[f64],
             t: f64,
             q: &[f64],
             v: &[f64],
         ) -> ::lagrange::__private::Result<
             ::lagrange::__private::lagrange_core::declaration::FlatConstraintForces,
         > {
+            let _ = inputs;
             ::lagrange::__private::lagrange_core::declaration::flat_constraint_forces::<
                 Self,
                 2,
