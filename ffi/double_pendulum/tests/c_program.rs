@@ -30,12 +30,14 @@ fn header_is_current() {
     );
 }
 
-/// The static library cargo built for this test, next to the test binary's `deps/` directory.
+/// The static library cargo built for this test: in the test binary's `deps/` directory (where
+/// `cargo test` writes it), else next to it (where `cargo build` copies it, possibly from an
+/// older build).
 fn static_library() -> PathBuf {
     let exe = std::env::current_exe().unwrap();
     let deps = exe.parent().unwrap();
     let name = "libdouble_pendulum_ffi.a";
-    [deps.parent().unwrap().join(name), deps.join(name)]
+    [deps.join(name), deps.parent().unwrap().join(name)]
         .into_iter()
         .find(|p| p.exists())
         .unwrap_or_else(|| panic!("{name} not found next to {}", deps.display()))
@@ -58,7 +60,13 @@ fn compile_c_program(out: &Path, shared: bool) {
     .arg(crate_dir());
     let library = static_library();
     if shared {
-        let dir = library.parent().unwrap().display().to_string();
+        // The shared library beside the static one, copied next to the program: the run finds
+        // this build's, not one an older `cargo build` left on the loader's path.
+        let name = "libdouble_pendulum_ffi.so";
+        let own = out.parent().unwrap();
+        std::fs::copy(library.parent().unwrap().join(name), own.join(name))
+            .expect("the shared library is built beside the static one");
+        let dir = own.display().to_string();
         cc.arg(format!("-L{dir}"))
             .arg(format!("-Wl,-rpath,{dir}"))
             .args(["-ldouble_pendulum_ffi", "-lm"]);
@@ -75,9 +83,14 @@ fn compile_c_program(out: &Path, shared: bool) {
     assert!(status.success(), "cc failed on main.c");
 }
 
-/// Runs the compiled program with `args`; its standard output as lines of words.
+/// Runs the compiled program with `args`; its standard output as lines of words. The loader's
+/// path cargo sets for tests is removed: it would take precedence over the program's rpath.
 fn run(program: &Path, args: &[&str]) -> Vec<Vec<String>> {
-    let output = Command::new(program).args(args).output().unwrap();
+    let output = Command::new(program)
+        .args(args)
+        .env_remove("LD_LIBRARY_PATH")
+        .output()
+        .unwrap();
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(
         output.status.success(),
