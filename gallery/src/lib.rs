@@ -40,6 +40,7 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     pushed_block::run,
     identify_pendulum::run,
     spatial_arm::run,
+    computed_torque::run,
 ];
 
 /// One simulated quantity against its exact value.

@@ -5,6 +5,7 @@
 pub mod atwood;
 pub mod breathing_ellipse;
 pub mod cartesian_pendulum;
+pub mod computed_torque;
 pub mod double_pendulum;
 pub mod four_bar;
 pub mod gyroscope;
