@@ -35,6 +35,7 @@ pub mod ensemble;
 pub mod error;
 pub mod evaluation;
 pub mod geometry;
+mod impl_mechanism;
 pub mod inertia;
 pub mod inputs;
 pub mod integrate;

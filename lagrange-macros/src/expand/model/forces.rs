@@ -39,13 +39,14 @@ pub(in crate::expand) fn coordinate_forces_fn(model: &Model, which: Forces) -> T
 /// The applied forces as `which` function, with the Cartesian rows (`applied_forces…`) or, where
 /// every force acts on a coordinate and names no body, without (`coordinate_forces…`).
 fn forces_fn(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream {
-    let p = private();
-    let (n, k) = (lit(model.dof()), lit(model.rows));
     let (rows, row_args) = match on_coordinates {
-        false => (
-            quote!(__x: &[__D; #k], __x_dot: &[__D; #k], __cartesian_force: &mut [__D; #k],),
-            quote!(__x, __x_dot, __cartesian_force,),
-        ),
+        false => {
+            let k = lit(model.rows);
+            (
+                quote!(__x: &[__D; #k], __x_dot: &[__D; #k], __cartesian_force: &mut [__D; #k],),
+                quote!(__x, __x_dot, __cartesian_force,),
+            )
+        }
         true => (quote!(), quote!()),
     };
     let prefix = match on_coordinates {
@@ -53,48 +54,58 @@ fn forces_fn(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream 
         true => "coordinate_forces",
     };
     if let (Forces::Plain, Some(nu)) = (which, model.input_count()) {
-        let nu = lit(nu);
-        let (name, with_inputs) = (
-            format_ident!("{prefix}"),
-            format_ident!("{prefix}_with_inputs"),
-        );
-        return quote! {
-            #[inline(always)]
-            fn #name<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], #rows __generalized_force: &mut [__D; #n]) {
-                <Self as #p::lagrange_core::inputs::ActuatedModel<#n, #k, #nu>>::#with_inputs::<__D, f64>(self, &[0.0; #nu], __t, __q, __v, #row_args __generalized_force)
-            }
-        };
+        return at_zero_inputs(model, prefix, nu, (&rows, &row_args));
     }
-    let params = match which {
-        Forces::Parametrized => Params::Array,
-        Forces::Plain | Forces::WithInputs => Params::Fields,
-    };
-    let prelude = prelude();
-    let used = model.names_used_by(model.forces.iter().map(|f| f.decl));
-    let inputs = bind_inputs_from(model, &used, quote!(__q), params);
-    let input_values = bind_input_values(model, &used, which);
-    let velocities = bind_coordinates(model, &quote!(__v), "_dot");
-    // The bodies and their velocities, where a force names them: a spatial body's frame from its
-    // rows costs a decomposition of its inertia (its principal axes), which forces on coordinates
-    // alone (motors, joint damping) do not pay.
-    let names_body = |velocity: bool| names_a_body(model, &used, velocity);
-    let bodies = (names_body(false) && !on_coordinates).then(|| bind_bodies(model));
-    let names = model.bodies.iter().map(|b| b.decl.ident());
-    let body_velocities = model
-        .bodies
-        .iter()
-        .map(|b| format_ident!("{}_dot", b.decl.ident()));
-    let velocities_of_bodies = (names_body(true) && !on_coordinates).then(|| {
-        quote!(let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);)
-    });
-    let (shared, blocks) =
-        optimized_blocks_from(model, model.forces.iter().map(|f| &f.decl.block), params);
-    let forces = model
-        .forces
-        .iter()
-        .zip(blocks)
-        .map(|(force, block)| applied_force(model, force, &block));
-    let (name, generics, array) = match which {
+    let (name, generics, array) = signature(model, which, prefix);
+    let body = forces_body(model, which, on_coordinates);
+    let n = lit(model.dof());
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        fn #name #generics(
+            &self,
+            #array
+            __t: __D,
+            __q: &[__D; #n],
+            __v: &[__D; #n],
+            #rows
+            __generalized_force: &mut [__D; #n],
+        ) {
+            #body
+        }
+    }
+}
+
+/// A declaration with inputs: `prefix` (the `Model` function) is `prefix_with_inputs` at zero
+/// inputs.
+fn at_zero_inputs(
+    model: &Model,
+    prefix: &str,
+    nu: usize,
+    (rows, row_args): (&TokenStream, &TokenStream),
+) -> TokenStream {
+    let p = private();
+    let (n, k, nu) = (lit(model.dof()), lit(model.rows), lit(nu));
+    let (name, with_inputs) = (
+        format_ident!("{prefix}"),
+        format_ident!("{prefix}_with_inputs"),
+    );
+    quote! {
+        #[inline(always)]
+        fn #name<__D: #p::Scalar>(&self, __t: __D, __q: &[__D; #n], __v: &[__D; #n], #rows __generalized_force: &mut [__D; #n]) {
+            <Self as #p::lagrange_core::inputs::ActuatedModel<#n, #k, #nu>>::#with_inputs::<__D, f64>(self, &[0.0; #nu], __t, __q, __v, #row_args __generalized_force)
+        }
+    }
+}
+
+/// The function's name, generic parameters and leading argument (the parameters' or the inputs'
+/// array) for `which`.
+fn signature(
+    model: &Model,
+    which: Forces,
+    prefix: &str,
+) -> (TokenStream, TokenStream, TokenStream) {
+    let p = private();
+    match which {
         Forces::Plain => {
             let name = format_ident!("{prefix}");
             (quote!(#name), quote!(<__D: #p::Scalar>), quote!())
@@ -116,27 +127,49 @@ fn forces_fn(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream 
                 quote!(__u: &[__U; #nu],),
             )
         }
+    }
+}
+
+/// The forces' body: the names they read bound, then each force added where it acts.
+fn forces_body(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream {
+    let params = match which {
+        Forces::Parametrized => Params::Array,
+        Forces::Plain | Forces::WithInputs => Params::Fields,
     };
+    let prelude = prelude();
+    let used = model.names_used_by(model.forces.iter().map(|f| f.decl));
+    let inputs = bind_inputs_from(model, &used, quote!(__q), params);
+    let input_values = bind_input_values(model, &used, which);
+    let velocities = bind_coordinates(model, &quote!(__v), "_dot");
+    // The bodies and their velocities, where a force names them: a spatial body's frame from its
+    // rows costs a decomposition of its inertia (its principal axes), which forces on coordinates
+    // alone (motors, joint damping) do not pay.
+    let names_body = |velocity: bool| names_a_body(model, &used, velocity) && !on_coordinates;
+    let bodies = names_body(false).then(|| bind_bodies(model));
+    let names = model.bodies.iter().map(|b| b.decl.ident());
+    let body_velocities = model
+        .bodies
+        .iter()
+        .map(|b| format_ident!("{}_dot", b.decl.ident()));
+    let velocities_of_bodies = names_body(true).then(|| {
+        quote!(let BodyVelocities { #(#names: #body_velocities),* } = self.__lagrange_velocities_from_cartesian(__x, __x_dot);)
+    });
+    let (shared, blocks) =
+        optimized_blocks_from(model, model.forces.iter().map(|f| &f.decl.block), params);
+    let forces = model
+        .forces
+        .iter()
+        .zip(blocks)
+        .map(|(force, block)| applied_force(model, force, &block));
     quote! {
-        #[allow(unused_variables, clippy::all)]
-        fn #name #generics(
-            &self,
-            #array
-            __t: __D,
-            __q: &[__D; #n],
-            __v: &[__D; #n],
-            #rows
-            __generalized_force: &mut [__D; #n],
-        ) {
-            #prelude
-            #inputs
-            #input_values
-            #shared
-            #velocities
-            #bodies
-            #velocities_of_bodies
-            #(#forces)*
-        }
+        #prelude
+        #inputs
+        #input_values
+        #shared
+        #velocities
+        #bodies
+        #velocities_of_bodies
+        #(#forces)*
     }
 }
 
