@@ -280,26 +280,29 @@ where
     }
 }
 
-/// A mechanism with its inputs held: what [`Mechanism::driven`](crate::Mechanism::driven) returns.
-/// It is a mechanism again — every evaluation, step, solver ([`Stepper`](crate::Stepper)) and
-/// analysis takes it — and every one of them sees the inputs, constant over each step (a
-/// zero-order hold): a controller sets new inputs between steps by making a new `Driven`.
-///
-/// The README's "Inputs" section shows one in use.
-pub struct Driven<'m, E, const NU: usize> {
+/// A mechanism with its inputs held: what [`Mechanism::driven`](crate::Mechanism::driven) returns
+/// (the inputs an array of the declaration's `NU`), or, for code that knows the number of inputs
+/// only as a length (the C export), a slice (`Driven::new(&sys, &inputs[..])`). It is a
+/// mechanism again — every evaluation, step, solver ([`Stepper`](crate::Stepper)) and analysis
+/// takes it — and every one of them sees the inputs, constant over each step (a zero-order hold):
+/// a controller sets new inputs between steps by making a new `Driven`. The inputs travel in
+/// [`Constants::inputs`], which the generated forces read (zeros where they are fewer than the
+/// declaration's); everything else is the mechanism's. The README's "Inputs" section shows one
+/// in use.
+pub struct Driven<'m, E, I> {
     mechanism: &'m E,
-    inputs: [f64; NU],
+    inputs: I,
 }
 
-impl<'m, E, const NU: usize> Driven<'m, E, NU> {
+impl<'m, E, I: AsRef<[f64]>> Driven<'m, E, I> {
     /// `mechanism` with `inputs` (flat, in declaration order) held.
-    pub fn new(mechanism: &'m E, inputs: [f64; NU]) -> Self {
+    pub fn new(mechanism: &'m E, inputs: I) -> Self {
         Driven { mechanism, inputs }
     }
 
     /// The inputs held, flat.
-    pub fn inputs(&self) -> &[f64; NU] {
-        &self.inputs
+    pub fn inputs(&self) -> &[f64] {
+        self.inputs.as_ref()
     }
 
     /// The mechanism driven.
@@ -308,18 +311,15 @@ impl<'m, E, const NU: usize> Driven<'m, E, NU> {
     }
 }
 
-impl<E, const NU: usize> Clone for Driven<'_, E, NU> {
+impl<E, I: Copy> Clone for Driven<'_, E, I> {
     fn clone(&self) -> Self {
         *self
     }
 }
 
-impl<E, const NU: usize> Copy for Driven<'_, E, NU> {}
+impl<E, I: Copy> Copy for Driven<'_, E, I> {}
 
-impl<E: Evaluate<N>, const N: usize, const NU: usize> Evaluate<N> for Driven<'_, E, NU>
-where
-    E::Model: Actuated<NU>,
-{
+impl<E: Evaluate<N>, I: AsRef<[f64]>, const N: usize> Evaluate<N> for Driven<'_, E, I> {
     type Model = E::Model;
     type Coords = E::Coords;
     const CONSTRAINT_COUNTS: Option<crate::constraints::ConstraintCounts> = E::CONSTRAINT_COUNTS;
@@ -333,7 +333,7 @@ where
     }
     #[inline(always)]
     fn prepared(&self) -> Constants<'_, E::Model> {
-        self.mechanism.prepared().with_inputs(&self.inputs)
+        self.mechanism.prepared().with_inputs(self.inputs.as_ref())
     }
     #[inline(always)]
     fn check_parameters(&self) -> crate::Result<()> {

@@ -39,7 +39,7 @@ pub trait Mechanism<const N: usize>: Evaluate<N> {
     fn driven<const NU: usize>(
         &self,
         inputs: &<Self::Model as Actuated<NU>>::Inputs,
-    ) -> Driven<'_, Self, NU>
+    ) -> Driven<'_, Self, [f64; NU]>
     where
         Self::Model: Actuated<NU>,
     {

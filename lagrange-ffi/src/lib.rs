@@ -7,7 +7,6 @@
 //! - [`status`]: the [`Status`] codes every function returns, the last error's message per thread,
 //!   and the guard that turns errors and (as a last resort) panics into both;
 //! - [`simulation`]: the handle C holds ([`Simulation`]) and the checked marshalling of arrays;
-//! - [`held`]: the handle's mechanism evaluated with the inputs it holds ([`HeldInputs`]);
 //! - [`header`](mod@header): the header, written from the same tokens as the functions.
 //!
 //! Bad input — a NULL pointer, a wrong array length, an unknown method code, a NaN parameter,
@@ -15,12 +14,10 @@
 
 pub mod export;
 pub mod header;
-pub mod held;
 pub mod simulation;
 pub mod status;
 
 pub use header::{header, CFunction, CType, Export};
-pub use held::HeldInputs;
 pub use simulation::{Method, Simulation};
 pub use status::{last_error, status_of, Failure, Status};
 

@@ -11,10 +11,10 @@
 //! Lengths are checked against the mechanism before any pointer is read, so a wrong length is a
 //! clean [`Status::InvalidArgument`].
 
-use crate::held::HeldInputs;
 use crate::status::{guard, Failure, Status};
 use lagrange_core::declaration::Declaration;
 use lagrange_core::evaluation::Dynamics;
+use lagrange_core::inputs::Driven;
 use lagrange_core::integrate::{
     Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Rk4, Stepper, StopReason, StormerVerlet,
     Variational,
@@ -50,8 +50,8 @@ impl<M: Dynamics<N>, const N: usize> Simulation<M, N> {
     }
 
     /// The mechanism with the inputs held: what every call evaluates and steps.
-    fn driven(&self) -> HeldInputs<'_, Validated<M>> {
-        HeldInputs::new(&self.sys, &self.inputs)
+    fn driven(&self) -> Driven<'_, Validated<M>, &[f64]> {
+        Driven::new(&self.sys, &self.inputs[..])
     }
 }
 
@@ -351,7 +351,7 @@ fn step_with<M: Dynamics<N>, const N: usize>(
     method: u32,
     h: f64,
 ) -> Result<(), Failure> {
-    let sys = HeldInputs::new(&sim.sys, &sim.inputs);
+    let sys = Driven::new(&sim.sys, &sim.inputs[..]);
     let state = &mut sim.state;
     let method = Method::from_code(method).ok_or_else(|| {
         Failure::Argument(format!(
@@ -423,7 +423,7 @@ pub unsafe fn integrate_dopri5<M: Dynamics<N>, const N: usize>(
         // SAFETY: by the caller's contract.
         let sim = unsafe { handle_mut(sim) }?;
         let settings = Dopri5::new(rtol, atol);
-        let sys = HeldInputs::new(&sim.sys, &sim.inputs);
+        let sys = Driven::new(&sim.sys, &sim.inputs[..]);
         let mut solver = Stepper::new(&sys, settings, &sim.state)?;
         let outcome = solver.integrate(t_end, &mut [], |_| {})?;
         if let StopReason::MaxSteps = outcome.reason {
