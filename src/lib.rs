@@ -54,7 +54,7 @@
 /// `#[mechanism]` knows them by this list.
 pub mod prelude {
     pub use lagrange_core::geometry::{
-        planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+        planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
     };
     pub use lagrange_core::geometry::{Planar, Rot3, Spatial, SpatialVelocity, Vec2, Vec3};
     pub use lagrange_core::integrate::{

@@ -306,6 +306,18 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
         Ok(())
     }
 
+    /// Mechanisms whose rotations are written in a chart of three coordinates (`rot_vector`,
+    /// `rot_mrp`): keeps every chart regular by [`crate::geometry::switch_chart`] — past a
+    /// rotation angle of π its coordinates and rates move to the equivalent point of the chart —
+    /// and says whether one moved. Integrators call it after every accepted step, after the
+    /// projection and after the step's dense output is written (which stays in the chart the
+    /// step was taken in); the default does nothing.
+    #[inline]
+    fn switch_charts<S: Scalar>(&self, q: &mut [S; N], v: &mut [S; N]) -> bool {
+        let _ = (q, v);
+        false
+    }
+
     /// Mechanisms with constraints: checks that (t, q, q̇) satisfies them within tolerance (see
     /// [`crate::constraints::check_consistent`]), so a state violating them is refused rather
     /// than silently projected. Integrators call it before a run; the default accepts.
@@ -455,6 +467,11 @@ pub trait Evaluate<const N: usize>: Sized {
     #[inline(always)]
     fn project(&self, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {
         Dynamics::project(self.model(), self.prepared(), t, q, v)
+    }
+    /// [`Dynamics::switch_charts`].
+    #[inline(always)]
+    fn switch_charts<S: Scalar>(&self, q: &mut [S; N], v: &mut [S; N]) -> bool {
+        Dynamics::switch_charts(self.model(), q, v)
     }
     /// [`Dynamics::check_constraints`].
     #[inline(always)]

@@ -57,8 +57,8 @@ pub use analysis::{
 pub use constraints::Constraints;
 pub use error::{Error, Result};
 pub use geometry::{
-    planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Scalar,
-    Spatial, Vec2, Vec3,
+    planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
+    Planar, Rot3, Scalar, Spatial, Vec2, Vec3,
 };
 pub use integrate::{
     Dop853, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Radau5, Rk4, Stepper,

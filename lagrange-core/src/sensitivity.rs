@@ -162,6 +162,10 @@ where
         (self.q, self.v) = method.replay(t, (&q, &v), h, acc)?;
         Ok(())
     }
+
+    fn switch_charts(&mut self, mechanism: &M) {
+        mechanism.switch_charts(&mut self.q, &mut self.v);
+    }
 }
 
 impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {

@@ -12,6 +12,8 @@ const LAGRANGE_PRELUDE: &[&str] = &[
     "planar",
     "rot3",
     "rot_axis",
+    "rot_mrp",
+    "rot_vector",
     "rot_x",
     "rot_y",
     "rot_z",

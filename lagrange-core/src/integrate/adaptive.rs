@@ -158,11 +158,14 @@ where
         &mut s.dense,
     )?;
     // The dense output is the new step's from here on: an error leaves the constant at the state.
-    let mut finish = || -> Result<(Phase<N>, T)> {
-        let (qp, vp) = project_accepted(m, step.t, (step.q, step.v))?;
+    let mut finish = || -> Result<(Phase<N>, T, bool)> {
+        let (mut qp, mut vp) = project_accepted(m, step.t, (step.q, step.v))?;
+        // A chart switch moves the state to other coordinates: the method's q̈ at the end was
+        // in the old ones (the dense output stays there), so q̈ is evaluated again.
+        let switched = m.switch_charts(&mut qp, &mut vp);
         let a = match step.a {
-            Some(a) => a,
-            None => {
+            Some(a) if !switched => a,
+            _ => {
                 stats.evaluations += 1;
                 m.accelerations_at(step.t, &qp, &vp)
                     .map_err(|e| diagnose(m, step.t, &qp, &vp, e))?
@@ -171,11 +174,17 @@ where
         let mut tangent = s.tangent.clone();
         if T::ACTIVE {
             tangent.replay(m, &s.method, t, s.dense.h)?;
+            if switched {
+                tangent.switch_charts(m);
+            }
         }
-        Ok(((qp, vp, a), tangent))
+        Ok(((qp, vp, a), tangent, switched))
     };
     match finish() {
-        Ok(((qp, vp, a), tangent)) => {
+        Ok(((qp, vp, a), tangent, switched)) => {
+            if switched {
+                P::field_changed(&mut memory);
+            }
             (s.t, s.q, s.v, s.a) = (step.t, qp, vp, a);
             (s.memory, s.stats, s.tangent) = (Some(memory), stats, tangent);
             Ok(())
@@ -297,7 +306,14 @@ where
     }
     let (a_end, event) =
         switch_or_rearm::<P, M, N>(s, &mut contacts, &field, &mut end, &phi_end, &mut stats)?;
-    if event.is_some() {
+    let mut a_end = a_end;
+    if s.mechanism.switch_charts(&mut end.q, &mut end.v) {
+        // In the regular chart the end's q̈ is another vector (the dense output stays in the
+        // chart the step was taken in).
+        stats.evaluations += 1;
+        a_end = contacts.accelerations(model, end.t, &end.q, &end.v)?;
+        P::field_changed(&mut memory);
+    } else if event.is_some() {
         P::field_changed(&mut memory);
     }
     let instant_events = if event.is_some() && end.t == t {

@@ -144,6 +144,18 @@ where
         s.dense.set_hermite_positions(s.t, h, start, (&q1, &v1));
         s.a
     };
+    // The dense output stays in the chart the step was taken in; the next step starts in the
+    // regular one, its q̈ evaluated there.
+    let a1 = if m.switch_charts(&mut q1, &mut v1) {
+        tangent.switch_charts(m);
+        // What the method kept of the old coordinates (an implicit method's Jacobian) is stale.
+        memory = I::Memory::<N>::default();
+        stats.evaluations += 1;
+        m.accelerations_at(t1, &q1, &v1)
+            .map_err(|e| diagnose(m, t1, &q1, &v1, e))?
+    } else {
+        a1
+    };
     stats.accepted += 1;
     (s.t, s.q, s.v, s.a, s.memory) = (t1, q1, v1, a1, memory);
     s.tangent = tangent;
@@ -176,6 +188,15 @@ where
     stats.evaluations += 1;
     s.dense
         .set_hermite(s.t, h, (&s.q, &s.v, &s.a), (&q1, &v1, &a1));
+    let (mut q1, mut v1) = (q1, v1);
+    let a1 = if m.switch_charts(&mut q1, &mut v1) {
+        stats.evaluations += 1;
+        contacts
+            .accelerations(model, t1, &q1, &v1)
+            .unwrap_or([f64::NAN; N])
+    } else {
+        a1
+    };
     stats.accepted += 1;
     (s.t, s.q, s.v, s.a) = (t1, q1, v1, a1);
     s.contacts = contacts;
@@ -199,8 +220,9 @@ pub(super) fn step_holding_contacts<I: Integrator, M: Evaluate<N>, const N: usiz
     let options = ContactOptions::default();
     let start = (state.t, &q, &v);
     let mut stats = Stats::default();
-    let ((q1, v1), _) =
+    let ((mut q1, mut v1), _) =
         hold_over_step::<I, M, N>(mechanism, &mut contacts, &options, start, h, &mut stats)?;
+    mechanism.switch_charts(&mut q1, &mut v1);
     commit(state, state.t + h, &q1, &v1)
 }
 

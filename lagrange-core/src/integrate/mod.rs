@@ -203,7 +203,8 @@ pub fn check_step_at(t: f64, h: f64) -> Result<()> {
 
 /// The validated step every method shares: checks h, the parameters, the state and its
 /// constraints, runs `advance` on (t, q, v), projects the result onto the constraints at t + h,
-/// checks it and only then writes it to `state` (unchanged on every error).
+/// keeps its rotation charts regular, checks it and only then writes it to `state` (unchanged on
+/// every error).
 pub(crate) fn validated_step<M: Evaluate<N>, const N: usize>(
     mechanism: &M,
     state: &mut State<M::Coords>,
@@ -215,6 +216,7 @@ pub(crate) fn validated_step<M: Evaluate<N>, const N: usize>(
     mechanism.check_constraints(state.t, &q, &v)?;
     let (mut q1, mut v1) = advance(state.t, &q, &v)?;
     mechanism.project(state.t + h, &mut q1, &mut v1)?;
+    mechanism.switch_charts(&mut q1, &mut v1);
     commit(state, state.t + h, &q1, &v1)
 }
 

@@ -84,6 +84,9 @@ pub trait Tangent<M: Evaluate<N>, const N: usize>: Clone {
     ) -> Result<([f64; N], [f64; N])>;
     /// The adaptive method's accepted step of length h from time t taken again on the tangent.
     fn replay<P: EmbeddedPair>(&mut self, mechanism: &M, method: &P, t: f64, h: f64) -> Result<()>;
+    /// The mechanism's chart switch ([`Evaluate::switch_charts`]) on the tangent, after the
+    /// state's: the tangent moves with the switch's Jacobian.
+    fn switch_charts(&mut self, mechanism: &M);
 }
 
 /// No tangent: a plain solver.
@@ -107,6 +110,7 @@ impl<M: Evaluate<N>, const N: usize> Tangent<M, N> for NoTangent {
     fn replay<P: EmbeddedPair>(&mut self, _: &M, _: &P, _: f64, _: f64) -> Result<()> {
         Ok(())
     }
+    fn switch_charts(&mut self, _: &M) {}
 }
 
 /// A solver: a mechanism stepped by one method from a state (see the [module docs](self)).

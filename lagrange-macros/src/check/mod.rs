@@ -4,6 +4,7 @@
 //! [`check`] builds the model ([`model`]) and runs the rules in order; each module holds the rules
 //! of one concern, each rule a function that says what it forbids and why.
 
+mod charts;
 mod constraints;
 mod forces;
 mod helpers;
@@ -15,6 +16,7 @@ mod resolve;
 mod signatures;
 mod structs;
 
+pub use charts::{Chart, ChartKind};
 pub use model::{attribute_sets, family_index, Body, Dim, Force, Model, Shape};
 pub(crate) use resolve::GEOMETRY_FUNCTIONS;
 
@@ -41,6 +43,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     constraints::check_inputs_without_contacts(cx, &model);
     masses::check_coordinates_are_used(cx, &model);
     helpers::check_helper_calls(cx, &model);
+    model.charts = charts::rotation_charts(cx, &model);
     Some(model)
 }
 

@@ -180,6 +180,8 @@ pub struct Model<'a> {
     pub rows: usize,
     /// Rows that carry mass (massless points come after).
     pub inertial_rows: usize,
+    /// The rotations written in a chart of three coordinates (`rot_vector`, `rot_mrp`).
+    pub charts: Vec<super::Chart>,
 }
 
 impl<'a> Model<'a> {
@@ -230,6 +232,7 @@ impl<'a> Model<'a> {
                 .map(|b| b.rows())
                 .sum(),
             bodies,
+            charts: Vec::new(),
         }
     }
 

@@ -10,7 +10,18 @@ use syn::Ident;
 
 /// Functions of the geometry module, in scope in every function body.
 pub(crate) const GEOMETRY_FUNCTIONS: &[&str] = &[
-    "vec2", "vec3", "planar", "spatial", "rot_x", "rot_y", "rot_z", "rpy", "rot_axis", "rot3",
+    "vec2",
+    "vec3",
+    "planar",
+    "spatial",
+    "rot_x",
+    "rot_y",
+    "rot_z",
+    "rpy",
+    "rot_axis",
+    "rot3",
+    "rot_vector",
+    "rot_mrp",
 ];
 /// Single-segment values of Rust's prelude.
 const PRELUDE_VALUES: &[&str] = &["Some", "None", "Ok", "Err", "drop"];

@@ -2,6 +2,7 @@
 //! constants a validated handle prepares, and the constraint hooks of a constrained mechanism.
 
 use super::{lit, private};
+use crate::check::{Chart, ChartKind};
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
@@ -48,6 +49,8 @@ pub(super) struct Glue<'a> {
     pub(super) positions: Positions,
     /// The number of inputs, flat, when the declaration has `#[inputs]`.
     pub(super) inputs: Option<usize>,
+    /// The rotations written in a chart of three coordinates.
+    pub(super) charts: &'a [Chart],
 }
 
 /// What a validated handle prepares.
@@ -120,6 +123,7 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let (kinetic, inverse_dynamics) = (kinetic_energy(glue), inverse_dynamics(glue));
     let mass_matrix = mass_matrix(glue);
     let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
+    let switch_charts = switch_charts(glue);
     quote! {
         #prepare
         impl #p::Dynamics<#n> for #params {
@@ -153,8 +157,34 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
             }
             #canonical
             #constraint_hooks
+            #switch_charts
         }
     }
+}
+
+/// A declaration with rotation charts keeps each regular after every step
+/// (`lagrange_core::geometry::switch_chart`); without, the trait's default (no switch).
+fn switch_charts(glue: &Glue) -> Option<TokenStream> {
+    if glue.charts.is_empty() {
+        return None;
+    }
+    let p = private();
+    let n = lit(glue.n);
+    let geometry = quote!(#p::lagrange_core::geometry);
+    let switches = glue.charts.iter().map(|chart| {
+        let kind = match chart.kind {
+            ChartKind::Vector => quote!(Vector),
+            ChartKind::Mrp => quote!(Mrp),
+        };
+        let slots = chart.slots.map(lit);
+        quote!(#geometry::switch_chart(#geometry::RotationChart::#kind, [#(#slots),*], q, v))
+    });
+    Some(quote! {
+        #[inline]
+        fn switch_charts<S: #p::Scalar>(&self, q: &mut [S; #n], v: &mut [S; #n]) -> bool {
+            false #(| #switches)*
+        }
+    })
 }
 
 /// The declaration's constraint rows by kind, and its contact modes: `ContactState` over its rows

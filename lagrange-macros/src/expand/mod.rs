@@ -107,7 +107,7 @@ pub(crate) fn prelude() -> TokenStream {
     let p = private();
     quote! {
         #[allow(unused_imports)]
-        use #p::geometry::{planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
+        use #p::geometry::{planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3};
         #[allow(unused_imports)]
         use #p::DualNum as _;
     }
@@ -173,6 +173,7 @@ fn generate(model: &Model) -> TokenStream {
         rheonomic: model.rheonomic,
         positions,
         inputs: model.input_count(),
+        charts: &model.charts,
     });
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);

@@ -4,7 +4,7 @@
 //! the inputs (`Efforts`, one per moving joint), one `#[rigid_body]` per body placed by its joint
 //! frame, gravity, and the joint forces (each joint's actuator, damping and friction).
 
-use super::frames::{turn_z_to, Vec3};
+use super::frames::{turn_z_to, MassPart, Vec3};
 use super::parse::Robot;
 use super::tree::{Body, Motion};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
@@ -12,6 +12,18 @@ use quote::{format_ident, quote};
 
 /// Gravity's default magnitude, Pinocchio's `Model::gravity981` (9.81 m/s², along −z).
 const STANDARD_GRAVITY: f64 = 9.81;
+
+/// A floating base's coordinates: the root link's frame origin in the world, and its orientation
+/// as a rotation vector (`rot_vector`, a chart the integrators keep regular).
+pub const BASE_POSITION: &str = "base_position";
+pub const BASE_ROTATION: &str = "base_rotation";
+
+/// A free-flying root link: its mass (with what is welded to it) and its body's identifier.
+pub struct Base {
+    pub mass: MassPart,
+    pub ident: Ident,
+    pub link: String,
+}
 
 pub struct Declaration<'a> {
     pub robot: &'a Robot,
@@ -21,6 +33,8 @@ pub struct Declaration<'a> {
     pub body_idents: Vec<Ident>,
     /// The parameter struct's name.
     pub ty: Ident,
+    /// The floating base, when the root link flies free.
+    pub base: Option<Base>,
 }
 
 impl Declaration<'_> {
@@ -83,8 +97,24 @@ impl Declaration<'_> {
             "Parameters of the model: `g`, gravity's magnitude along −z, and each joint's \
              `<dynamics>` coefficients. `{ty}::default()` holds the file's values (g = {STANDARD_GRAVITY})."
         );
+        let (base_coords, base_body) = match &self.base {
+            Some(base) => {
+                let (p, r) = (ident(BASE_POSITION), ident(BASE_ROTATION));
+                (
+                    quote! {
+                        /// The floating base's frame origin in the world frame.
+                        pub #p: [f64; 3],
+                        /// The floating base's orientation: the rotation vector (the rotation by
+                        /// its length about its direction), kept below a turn of π.
+                        pub #r: [f64; 3],
+                    },
+                    Some(self.base_body(base)),
+                )
+            }
+            None => (quote!(), None),
+        };
         quote! {
-            pub struct Coords { #(pub #coords: f64,)* }
+            pub struct Coords { #base_coords #(pub #coords: f64,)* }
             #[doc = #doc]
             pub struct #ty { #(#fields,)* }
             impl ::core::default::Default for #ty {
@@ -94,6 +124,7 @@ impl Declaration<'_> {
             /// revolute or continuous joint's axis, a force along a prismatic joint's).
             #[inputs]
             pub struct Efforts { #(pub #efforts: f64,)* }
+            #base_body
             #(#bodies)*
             /// Gravity along −z.
             #[gravity]
@@ -102,18 +133,26 @@ impl Declaration<'_> {
         }
     }
 
+    /// The floating base: the root link's frame at `base_position`, turned by `base_rotation`.
+    fn base_body(&self, base: &Base) -> TokenStream {
+        let (p, r) = (ident(BASE_POSITION), ident(BASE_ROTATION));
+        let doc = format!("Link `{}`, the floating base.", base.link);
+        let pose = quote! {
+            spatial(vec3(#p[0], #p[1], #p[2]), rot_vector(vec3(#r[0], #r[1], #r[2])))
+        };
+        rigid_body(&base.ident, &doc, &base.mass, pose)
+    }
+
     fn body(&self, k: usize, b: &Body) -> TokenStream {
         let name = &self.body_idents[k];
         let q = &self.coords[k];
-        let mass = number(b.inertia.mass);
-        let com = vector(b.inertia.centre);
-        let i = b.inertia.inertia.map(|row| row.map(number));
-        let rows = i.iter().map(|r| quote!([#(#r),*]));
-        let inertia = quote!([#(#rows),*]);
         let joint = &self.robot.joints[b.joint];
         let doc = format!("Link `{}`, moved by joint `{}`.", b.link, joint.name);
         let (offset, fixed) = self.placement(b);
-        let parent = b.parent.map(|p| &self.body_idents[p]);
+        let parent = match b.parent {
+            Some(p) => Some(&self.body_idents[p]),
+            None => self.base.as_ref().map(|base| &base.ident),
+        };
         let place = |offset: TokenStream, rotation: TokenStream| match parent {
             Some(p) => quote!(#p.joint(#offset, #rotation)),
             None => quote!(spatial(#offset, #rotation)),
@@ -161,11 +200,7 @@ impl Declaration<'_> {
                 }
             }
         };
-        quote! {
-            #[doc = #doc]
-            #[rigid_body(mass = #mass, com = #com, inertia = #inertia)]
-            fn #name() -> Spatial { #pose }
-        }
+        rigid_body(name, &doc, &b.inertia, pose)
     }
 
     /// The joint frame's offset and its constant rotation (`None`: none) in the parent's frame:
@@ -180,6 +215,19 @@ impl Declaration<'_> {
             })
         });
         (vector(b.placement.position), rotation)
+    }
+}
+
+/// `#[rigid_body]` `name` of mass `mass` (its centre and tensor in the body's frame) at `pose`.
+fn rigid_body(name: &Ident, doc: &str, mass: &MassPart, pose: TokenStream) -> TokenStream {
+    let m = number(mass.mass);
+    let com = vector(mass.centre);
+    let i = mass.inertia.map(|row| row.map(number));
+    let rows = i.iter().map(|r| quote!([#(#r),*]));
+    quote! {
+        #[doc = #doc]
+        #[rigid_body(mass = #m, com = #com, inertia = [#(#rows),*])]
+        fn #name() -> Spatial { #pose }
     }
 }
 

@@ -1,6 +1,8 @@
 //! `#[urdf("path")]`: a robot's URDF file read at compile time into the declaration a user would
 //! write, expanded by `#[mechanism]`.
 //!
+//! `#[urdf("path", floating)]`: the same with a free-flying root link (a floating base).
+//!
 //! read the file (path relative to the calling crate's `CARGO_MANIFEST_DIR`) → parse (`parse`,
 //! roxmltree) → check the tree and merge fixed joints (`tree`), name the coordinates and bodies
 //! (`names`) → write the declaration (`emit`) → `#[mechanism]` (`crate::expand`). A refusal is
@@ -20,14 +22,9 @@ use quote::quote;
 use std::path::PathBuf;
 
 pub(crate) fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
-    let path: syn::LitStr = match syn::parse2(attr) {
-        Ok(p) => p,
-        Err(_) => {
-            return error(
-                Span::call_site(),
-                "`#[urdf]` takes the file's path: `#[urdf(\"robots/arm.urdf\")]`",
-            )
-        }
+    let Arguments { path, floating } = match syn::parse2(attr) {
+        Ok(a) => a,
+        Err(e) => return e.to_compile_error(),
     };
     let module: syn::ItemMod = match syn::parse2(item) {
         Ok(m) => m,
@@ -36,14 +33,53 @@ pub(crate) fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
             "#[urdf] goes on a module: `pub mod arm {}`, to which the file's declaration is added",
         ),
     };
-    match declaration(&path, &module) {
+    match declaration(&path, floating, &module) {
         Ok(tokens) => crate::expand::expand(TokenStream::new(), tokens),
         Err(message) => error(path.span(), &message),
     }
 }
 
+/// `#[urdf("robots/arm.urdf")]`, or `#[urdf("robots/dog.urdf", floating)]` for a robot whose
+/// root link flies free.
+struct Arguments {
+    path: syn::LitStr,
+    floating: bool,
+}
+
+impl syn::parse::Parse for Arguments {
+    fn parse(input: syn::parse::ParseStream) -> syn::Result<Self> {
+        const USAGE: &str = "`#[urdf]` takes the file's path and, for a free-flying root link, \
+                             `floating`: `#[urdf(\"robots/arm.urdf\")]`, \
+                             `#[urdf(\"robots/dog.urdf\", floating)]`";
+        let path: syn::LitStr = input
+            .parse()
+            .map_err(|e| syn::Error::new(e.span(), USAGE))?;
+        if input.is_empty() {
+            return Ok(Arguments {
+                path,
+                floating: false,
+            });
+        }
+        input.parse::<syn::Token![,]>()?;
+        let word: syn::Ident = input
+            .parse()
+            .map_err(|e| syn::Error::new(e.span(), USAGE))?;
+        if word != "floating" || !input.is_empty() {
+            return Err(syn::Error::new(word.span(), USAGE));
+        }
+        Ok(Arguments {
+            path,
+            floating: true,
+        })
+    }
+}
+
 /// The module with the file's declaration before the user's items, or why not.
-fn declaration(path: &syn::LitStr, module: &syn::ItemMod) -> Result<TokenStream, String> {
+fn declaration(
+    path: &syn::LitStr,
+    floating: bool,
+    module: &syn::ItemMod,
+) -> Result<TokenStream, String> {
     let written = path.value();
     let dir = std::env::var_os("CARGO_MANIFEST_DIR")
         .map(PathBuf::from)
@@ -55,9 +91,11 @@ fn declaration(path: &syn::LitStr, module: &syn::ItemMod) -> Result<TokenStream,
         Some((line, column)) => format!("{written}:{line}:{column}: {}", e.message),
         None => format!("{written}: {}", e.message),
     })?;
-    let bodies = tree::bodies(&robot)?;
+    let (bodies, base) = tree::bodies(&robot, floating)?;
     let ty = upper_camel(&module.ident.to_string());
-    let all = identifiers(&robot, &bodies, &ty)?;
+    let root_link = &robot.links[tree::root_link(&robot)?].name;
+    let root = base.as_ref().map(|_| root_link.as_str());
+    let all = identifiers(&robot, &bodies, root, &ty)?;
     let n = bodies.len();
     let decl = emit::Declaration {
         robot: &robot,
@@ -68,6 +106,11 @@ fn declaration(path: &syn::LitStr, module: &syn::ItemMod) -> Result<TokenStream,
             .map(|c| emit::ident(&c.ident))
             .collect(),
         ty: emit::ident(&ty),
+        base: base.map(|mass| emit::Base {
+            mass,
+            ident: emit::ident(&all[all.len() - 1].ident),
+            link: root.unwrap_or_default().to_string(),
+        }),
     };
     let items = decl.items();
     let source = resolved.display().to_string();
@@ -96,6 +139,7 @@ fn declaration(path: &syn::LitStr, module: &syn::ItemMod) -> Result<TokenStream,
 fn identifiers(
     robot: &parse::Robot,
     bodies: &[tree::Body],
+    root: Option<&str>,
     ty: &str,
 ) -> Result<Vec<Named>, String> {
     let coords: Vec<Named> = bodies
@@ -136,6 +180,24 @@ fn identifiers(
         ("Coords", "the coordinates' struct"),
         (ty, "the parameter struct"),
     ];
+    // A floating base: its coordinates, then its body (last).
+    for (ident, element) in [
+        (emit::BASE_POSITION, "the floating base's position"),
+        (emit::BASE_ROTATION, "the floating base's rotation"),
+    ] {
+        if root.is_some() {
+            generated.push(Named {
+                ident: ident.to_string(),
+                element: element.to_string(),
+            });
+        }
+    }
+    if let Some(link) = root {
+        generated.push(Named {
+            ident: sanitise(link, "link"),
+            element: format!("link `{link}`"),
+        });
+    }
     let all: Vec<Named> = coords.into_iter().chain(links).chain(generated).collect();
     distinct(&all, &taken)?;
     Ok(all)

@@ -7,7 +7,7 @@ fn written(file: &str) -> String {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/urdf/");
     let path: syn::LitStr = syn::parse_str(&format!("\"{dir}{file}\"")).unwrap();
     let module: syn::ItemMod = syn::parse_str("pub mod m {}").unwrap();
-    match declaration(&path, &module) {
+    match declaration(&path, false, &module) {
         Ok(t) => match syn::parse2(t.clone()) {
             Ok(file) => prettyplease::unparse(&file),
             Err(e) => format!("{e}: {t}"),
@@ -125,7 +125,7 @@ fn refusals_of_the_tree_name_the_link_or_the_joint() {
             elements.concat()
         );
         let robot = parse::parse(&text).unwrap_or_else(|e| panic!("{text}: {}", e.message));
-        let message = tree::bodies(&robot).expect_err("a refusal");
+        let message = tree::bodies(&robot, false).expect_err("a refusal");
         assert!(message.contains(expected), "{text}: {message}");
     }
 }

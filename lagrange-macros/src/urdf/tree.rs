@@ -47,13 +47,20 @@ struct Attached {
     rpys: Vec<[f64; 3]>,
 }
 
-/// The bodies, parents first, each moved by one joint of the file.
-pub fn bodies(robot: &Robot) -> Result<Vec<Body>, Refusal> {
+/// The bodies, parents first, each moved by one joint of the file; with `floating`, also the root
+/// link's mass with what is welded to it (a free-flying base, which the bodies without a parent
+/// body are placed from), else the root is the ground.
+pub fn bodies(robot: &Robot, floating: bool) -> Result<(Vec<Body>, Option<MassPart>), Refusal> {
     let order = topology(robot)?;
     let mut bodies: Vec<Body> = Vec::new();
     let mut parts: Vec<Vec<MassPart>> = Vec::new();
     let mut attached = vec![None; robot.links.len()];
     let root = order.root;
+    // With a floating base, the root link's inertial and those welded to it.
+    let mut base: Vec<MassPart> = Vec::new();
+    if let (true, Some(i)) = (floating, &robot.links[root].inertial) {
+        base.extend(link_mass(i, &Transform::IDENTITY));
+    }
     attached[root] = Some(Attached {
         body: None,
         transform: Transform::IDENTITY,
@@ -102,8 +109,10 @@ pub fn bodies(robot: &Robot) -> Result<Vec<Body>, Refusal> {
                 }
             }
         };
-        if let (Some(b), Some(i)) = (here.body, &robot.links[c].inertial) {
-            parts[b].extend(link_mass(i, &here.transform));
+        match (here.body, &robot.links[c].inertial) {
+            (Some(b), Some(i)) => parts[b].extend(link_mass(i, &here.transform)),
+            (None, Some(i)) if floating => base.extend(link_mass(i, &here.transform)),
+            _ => {}
         }
         attached[c] = Some(here);
     }
@@ -117,12 +126,22 @@ pub fn bodies(robot: &Robot) -> Result<Vec<Body>, Refusal> {
             )
         })?;
     }
-    if bodies.is_empty() {
-        return Err(
-            "the file has no revolute, continuous or prismatic joint: nothing moves".into(),
-        );
+    if !floating {
+        if bodies.is_empty() {
+            return Err(
+                "the file has no revolute, continuous or prismatic joint: nothing moves".into(),
+            );
+        }
+        return Ok((bodies, None));
     }
-    Ok(bodies)
+    let base_mass = combine(&base).ok_or_else(|| {
+        format!(
+            "the root link `{}` is a floating base with no mass (no `<inertial>` of positive \
+             mass on it or on a link fixed to it): its acceleration is undefined",
+            robot.links[root].name
+        )
+    })?;
+    Ok((bodies, Some(base_mass)))
 }
 
 /// A link's inertial seen from the frame of the body it moves with (the link's frame at `link`
@@ -146,6 +165,11 @@ fn unit(joint: &super::parse::Joint) -> Result<[f64; 3], Refusal> {
     // An axis written with one non-zero component is kept exact (±1), so that the joint is written
     // as a rotation about a coordinate axis.
     Ok(joint.axis.map(|c| c / n))
+}
+
+/// The root link's index (the file's one link no joint moves).
+pub fn root_link(robot: &Robot) -> Result<usize, Refusal> {
+    topology(robot).map(|order| order.root)
 }
 
 struct Order {
@@ -223,7 +247,8 @@ fn supported(joint: &super::parse::Joint) -> Result<(), Refusal> {
         };
         return Err(format!(
             "joint `{}` is {kind}, which is not supported: only revolute, continuous, \
-             prismatic and fixed joints",
+             prismatic and fixed joints (for a free-flying root link, \
+             `#[urdf(\"robot.urdf\", floating)]`)",
             joint.name
         ));
     }
