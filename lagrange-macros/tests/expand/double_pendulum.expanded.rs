@@ -103,8 +103,8 @@ pub mod double_pendulum {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -264,8 +264,8 @@ pub mod double_pendulum {
         fn __lagrange_coefficients(&self) -> [f64; 5] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -308,8 +308,8 @@ pub mod double_pendulum {
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -362,8 +362,8 @@ pub mod double_pendulum {
         ) -> ([__D; 2], [__D; 2]) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -683,8 +683,8 @@ pub mod double_pendulum {
         >(&self, __p: &[__S; 5], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

@@ -52,8 +52,8 @@ pub mod motor {
         ) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -81,8 +81,8 @@ pub mod motor {
         ) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -188,8 +188,8 @@ pub mod motor {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -627,8 +627,8 @@ pub mod motor {
         >(&self, __p: &[__S; 2], __t: __D, __q: &[__D; 1]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -671,8 +671,8 @@ pub mod motor {
         ) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

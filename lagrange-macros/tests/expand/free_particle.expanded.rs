@@ -97,8 +97,8 @@ pub mod free {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -178,8 +178,8 @@ pub mod free {
         fn __lagrange_coefficients(&self) -> [f64; 1] {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -212,8 +212,8 @@ pub mod free {
         ) -> ::lagrange::__private::dynamics::EquationsOfMotion<__D, 2> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -246,8 +246,8 @@ pub mod free {
         ) -> ([__D; 2], [__D; 2]) {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -516,8 +516,8 @@ pub mod free {
         >(&self, __p: &[__S; 1], __t: __D, __q: &[__D; 2]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

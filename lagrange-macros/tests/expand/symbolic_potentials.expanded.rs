@@ -113,8 +113,8 @@ pub mod springs {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -278,8 +278,8 @@ pub mod springs {
         ) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -444,8 +444,8 @@ pub mod springs {
         ) -> ::lagrange::__private::geometry::Vec2<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -461,8 +461,8 @@ pub mod springs {
         ) -> ::lagrange::__private::geometry::Vec2<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -832,8 +832,8 @@ pub mod springs {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 4]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -885,8 +885,8 @@ pub mod springs {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 4], __x: &[__D; 6]) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;

@@ -95,8 +95,8 @@ pub mod varying {
         ) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -207,8 +207,8 @@ pub mod varying {
         ) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -387,8 +387,8 @@ pub mod varying {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 1]) -> Bodies<__D> {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
@@ -421,8 +421,8 @@ pub mod varying {
         >(&self, __p: &[__S; 3], __t: __D, __q: &[__D; 1], __x: &[__D; 2]) -> __D {
             #[allow(unused_imports)]
             use ::lagrange::__private::geometry::{
-                planar, rot3, rot_axis, rot_x, rot_y, rot_z, rpy, spatial, vec2, vec3,
-                Planar, Rot3, Spatial, Vec2, Vec3,
+                planar, rot3, rot_axis, rot_mrp, rot_vector, rot_x, rot_y, rot_z, rpy,
+                spatial, vec2, vec3, Planar, Rot3, Spatial, Vec2, Vec3,
             };
             #[allow(unused_imports)]
             use ::lagrange::__private::DualNum as _;
