@@ -1,32 +1,14 @@
 //! Free-flying bodies: orientations written in a chart of three coordinates that switches before
-//! it turns singular (`rot_vector`, `rot_mrp`). A torque-free asymmetric body against the closed
-//! form of Euler's equations (Jacobi elliptic functions) through many chart switches; a thrown
-//! body whose centre of mass falls freely; the chart switch preserving the rotation and the
-//! angular velocity.
+//! it turns singular (`rot_vector`, `rot_mrp`). The gallery's torque-free asymmetric body
+//! (`lagrange_gallery::scenes::tumbling_body`, which runs it for 10⁴ s) against the closed form of
+//! Euler's equations through many chart switches, shortened here to keep the debug run short; a
+//! thrown body whose centre of mass falls freely; a quadruped from URDF with a floating base.
 
 use lagrange::prelude::*;
 use lagrange::Seed;
-
-/// A rigid body turning freely about its fixed centre of mass, its orientation the rotation
-/// vector φ.
-#[mechanism]
-pub mod tumbling {
-    pub struct Coords {
-        pub phi: [f64; 3],
-    }
-    pub struct Tumbling {
-        pub i1: f64,
-        pub i2: f64,
-        pub i3: f64,
-    }
-    #[rigid_body(mass = 1.0, inertia = [i1, i2, i3])]
-    fn body() -> Spatial {
-        spatial(
-            vec3(0.0, 0.0, 0.0),
-            rot_vector(vec3(phi[0], phi[1], phi[2])),
-        )
-    }
-}
+use lagrange_gallery::scenes::tumbling_body::{
+    angular_velocity, closed_form, start, tumble, tumbling, Tumble, BODY, OMEGA0,
+};
 
 /// The same body, its orientation in modified Rodrigues parameters σ.
 #[mechanism]
@@ -70,145 +52,36 @@ pub mod thrown {
     }
 }
 
-const I: [f64; 3] = [1.0, 2.0, 3.0];
-/// The body-frame angular velocity at t = 0: about the first and third axes, with
-/// |L|² > 2 E I₂ (a rotation that precesses about the third axis).
-const OMEGA0: [f64; 3] = [1.0, 0.0, 2.0];
+const I: [f64; 3] = [BODY.i1, BODY.i2, BODY.i3];
 
-/// Jacobi's elliptic functions sn, cn, dn of argument u and parameter m = k², by the arithmetic-
-/// geometric mean and descending Landen transformation (NIST DLMF §22.20(ii), eqs. 22.20.1–22.20.5).
-fn jacobi(u: f64, m: f64) -> (f64, f64, f64) {
-    let (mut a, mut b, mut c) = (vec![1.0], vec![(1.0 - m).sqrt()], vec![m.sqrt()]);
-    // The AGM converges quadratically: c falls below the rounding of a in a few iterations.
-    while c.last().unwrap().abs() > f64::EPSILON * a.last().unwrap() && a.len() < 40 {
-        let (an, bn) = (*a.last().unwrap(), *b.last().unwrap());
-        a.push((an + bn) / 2.0);
-        b.push((an * bn).sqrt());
-        c.push((an - bn) / 2.0);
-    }
-    let n = a.len() - 1;
-    let mut phi = vec![0.0; n + 1];
-    phi[n] = 2f64.powi(n as i32) * a[n] * u;
-    for j in (1..=n).rev() {
-        phi[j - 1] = (phi[j] + (c[j] / a[j] * phi[j].sin()).asin()) / 2.0;
-    }
-    // dn = √(1 − m sn²) > 0 for real u and 0 ≤ m < 1 (DLMF 22.10.1's identity; the quotient of
-    // 22.20.5 is 0/0 at the quarter period).
-    let dn = (1.0 - m * phi[0].sin().powi(2)).sqrt();
-    (phi[0].sin(), phi[0].cos(), dn)
-}
-
-/// The torque-free body's angular velocity in its principal frame at time t, for moments
-/// I₁ < I₂ < I₃ and ω(0) = (ω₁, 0, ω₃), |L|² > 2EI₂ (Landau & Lifshitz, *Mechanics*, 3rd ed.,
-/// §37, eqs. 37.10): ω₁ = A cn τ, ω₂ = B sn τ, ω₃ = C dn τ, τ = t √((I₃−I₂)(L²−2EI₁)/(I₁I₂I₃)),
-/// k² = (I₂−I₁)(2EI₃−L²)/((I₃−I₂)(L²−2EI₁)). The signs follow Euler's equations at t = 0
-/// (I₂ω̇₂ = (I₃−I₁)ω₃ω₁ > 0).
-fn euler_closed_form(t: f64) -> [f64; 3] {
-    let [i1, i2, i3] = I;
-    let [w1, _, w3] = OMEGA0;
-    let two_e = i1 * w1 * w1 + i3 * w3 * w3;
-    let l2 = (i1 * w1).powi(2) + (i3 * w3).powi(2);
-    let a = ((two_e * i3 - l2) / (i1 * (i3 - i1))).sqrt();
-    let b = ((two_e * i3 - l2) / (i2 * (i3 - i2))).sqrt();
-    let c = ((l2 - two_e * i1) / (i3 * (i3 - i1))).sqrt();
-    let rate = ((i3 - i2) * (l2 - two_e * i1) / (i1 * i2 * i3)).sqrt();
-    let m = (i2 - i1) * (two_e * i3 - l2) / ((i3 - i2) * (l2 - two_e * i1));
-    let (sn, cn, dn) = jacobi(rate * t, m);
-    [a * cn, b * sn, c * dn]
-}
-
-/// The body-frame angular velocity Rᵀ ω of the body `body` from its pose and velocity.
+/// The body-frame angular velocity Rᵀ ω from a pose and its velocity.
 fn body_frame(rotation: Rot3<f64>, omega: Vec3<f64>) -> [f64; 3] {
     let w = rotation.transpose() * omega;
     [w.x, w.y, w.z]
 }
 
 fn tumbling_start() -> (tumbling::Tumbling, tumbling::State) {
-    let sys = tumbling::Tumbling {
-        i1: I[0],
-        i2: I[1],
-        i3: I[2],
-    };
-    // At φ = 0 the rates φ̇ are the body-frame angular velocity.
-    let state = tumbling::State::new(
-        0.0,
-        tumbling::Coords { phi: [0.0; 3] },
-        tumbling::Coords { phi: OMEGA0 },
-    );
-    (sys, state)
-}
-
-fn omega_of(sys: &tumbling::Tumbling, s: &tumbling::State) -> [f64; 3] {
-    body_frame(
-        sys.bodies(s).body.rotation,
-        sys.body_velocities(s).body.angular,
-    )
+    (BODY, start())
 }
 
 fn max_error(a: [f64; 3], b: [f64; 3]) -> f64 {
     (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max)
 }
 
-/// The Jacobi functions against what defines them: sn(K) = 1 at the quarter period K(m), computed
-/// independently as π / (2 AGM(1, √(1 − m))) (DLMF 19.8.5), and the derivatives sn′ = cn dn,
-/// cn′ = −sn dn (DLMF 22.13.1–2) by central differences (step 1e-5: truncation ~1e-11).
-#[test]
-fn jacobi_functions_hold_their_identities() {
-    let m = 0.5;
-    let (mut a, mut b) = (1.0f64, (1.0f64 - m).sqrt());
-    for _ in 0..10 {
-        (a, b) = ((a + b) / 2.0, (a * b).sqrt());
-    }
-    let quarter = std::f64::consts::PI / (2.0 * a);
-    let (sn, cn, _) = jacobi(quarter, m);
-    assert!(
-        (sn - 1.0).abs() < 1e-14 && cn.abs() < 1e-7,
-        "sn {sn}, cn {cn}"
-    );
-    let d = 1e-5;
-    for u in [0.3, 1.7, -2.2, 11.0] {
-        let (sn, cn, dn) = jacobi(u, m);
-        let (sp, cp, _) = jacobi(u + d, m);
-        let (sm, cm, _) = jacobi(u - d, m);
-        assert!(((sp - sm) / (2.0 * d) - cn * dn).abs() < 1e-9);
-        assert!(((cp - cm) / (2.0 * d) + sn * dn).abs() < 1e-9);
-    }
-}
-
-/// Through 100 s (about 20 switches of the chart, each after a rotation by π) RK4 follows Euler's
+/// Through 100 s (about 30 switches of the chart, each after a rotation by π) RK4 follows Euler's
 /// closed form with the error of a fourth-order method: halving the step divides it by 16 (12 to
-/// 20 allowed: the error's h⁴ term dominates at these steps, its h⁵ term is a few per cent).
+/// 20 allowed: the h⁵ term still shifts the ratio at h = 0.01), sampled every second.
 #[test]
 fn torque_free_body_follows_eulers_closed_form() {
-    let (sys, start) = tumbling_start();
-    let t_end = 100.0;
-    let error_with = |h: f64| {
-        let mut s = start;
-        let mut switches = 0;
-        let mut worst = 0.0f64;
-        while s.t < t_end - 1e-9 {
-            let before = s.q.phi;
-            sys.step::<Rk4>(&mut s, h).unwrap();
-            // A switch turns φ about: the new vector points against the old.
-            let dot = (0..3).map(|i| s.q.phi[i] * before[i]).sum::<f64>();
-            if dot < 0.0 {
-                switches += 1;
-            }
-            worst = worst.max(max_error(omega_of(&sys, &s), euler_closed_form(s.t)));
-        }
-        (worst, switches)
-    };
-    let (coarse, switches) = error_with(0.01);
-    let (fine, _) = error_with(0.005);
-    assert!(switches >= 10, "{switches} chart switches");
-    let ratio = coarse / fine;
-    assert!(
-        (12.0..20.0).contains(&ratio),
-        "error {coarse:e} → {fine:e}, ratio {ratio}"
-    );
-    // The h⁴ error's constant: |ω| ≈ 2, and over 100 s RK4 at h = 0.01 with a rotation period of
-    // a few seconds keeps ω to about 1e-6.
-    assert!(coarse < 1e-5, "{coarse:e}");
+    let coarse = tumble::<Rk4>(0.01, 100.0).unwrap();
+    let fine = tumble::<Rk4>(0.005, 100.0).unwrap();
+    assert!(coarse.switches >= 10, "{} chart switches", coarse.switches);
+    let ratio = coarse.omega_error / fine.omega_error;
+    assert!((12.0..20.0).contains(&ratio), "ratio {ratio}");
+    // |ω| ≈ 2 and the motion's period a few seconds: RK4's h⁴ error over 100 s stays near 1e-6.
+    assert!(coarse.omega_error < 1e-5, "{:e}", coarse.omega_error);
+    // Built from φ, the rotation is orthonormal to rounding whatever the steps did.
+    assert!(coarse.orthonormality < 1e-14);
 }
 
 /// Modified Rodrigues parameters give the same motion as the rotation vector (both to RK4's
@@ -249,8 +122,8 @@ fn both_charts_give_the_same_motion() {
         }
     }
     let w = body_frame(b, mrp.body_velocities(&r).body.angular);
-    assert!(max_error(w, omega_of(&sys, &s)) < 1e-5);
-    assert!(max_error(w, euler_closed_form(r.t)) < 1e-5);
+    assert!(max_error(w, angular_velocity(&s)) < 1e-5);
+    assert!(max_error(w, closed_form(r.t)) < 1e-5);
 }
 
 /// A quadruped from a URDF file the repository writes, its root link flying free: 6 coordinates of
@@ -360,7 +233,7 @@ fn adaptive_steps_cross_the_switches() {
     while run.state().t < 30.0 {
         run.step(30.0).unwrap();
         let s = run.state();
-        worst = worst.max(max_error(omega_of(&sys, &s), euler_closed_form(s.t)));
+        worst = worst.max(max_error(angular_velocity(&s), closed_form(s.t)));
     }
     assert!(worst < 2e-8, "{worst:e}");
 }
@@ -394,33 +267,16 @@ fn sensitivities_cross_the_switches() {
 }
 
 /// Gauss–Legendre (symplectic, order 4) through 50 s of switches: the energy and the world-frame
-/// angular momentum L = R I ω stay at their initial values to the method's error, which has no
-/// drift — halving the step divides the largest deviation by about 2⁴ (10 to 24 allowed).
+/// angular momentum L = R I ω stay at their initial values to the method's error — halving the
+/// step divides the largest deviation by about 2⁴ (10 to 24 allowed). (Across the switches the
+/// coordinates it is symplectic in change, so over 10⁴ s the deviations grow slowly with the run;
+/// the gallery's scene measures them.)
 #[test]
 fn energy_and_angular_momentum_are_kept() {
-    let (sys, start) = tumbling_start();
-    let momentum = |s: &tumbling::State| {
-        let r = sys.bodies(s).body.rotation;
-        let w = omega_of(&sys, s);
-        let l = r * vec3(I[0] * w[0], I[1] * w[1], I[2] * w[2]);
-        [l.x, l.y, l.z]
-    };
-    let deviation = |h: f64| {
-        let (e0, l0) = (sys.energy(&start).unwrap(), momentum(&start));
-        let mut s = start;
-        let mut worst = 0.0f64;
-        while s.t < 50.0 - 1e-9 {
-            sys.step::<GaussLegendre2>(&mut s, h).unwrap();
-            let de = (sys.energy(&s).unwrap() - e0).abs() / e0;
-            worst = worst.max(de).max(max_error(momentum(&s), l0));
-        }
-        worst
-    };
-    let (coarse, fine) = (deviation(0.05), deviation(0.025));
-    let ratio = coarse / fine;
-    assert!(coarse < 1e-5, "{coarse:e}");
-    assert!(
-        (10.0..24.0).contains(&ratio),
-        "{coarse:e} → {fine:e}: {ratio}"
-    );
+    let coarse = tumble::<GaussLegendre2>(0.05, 50.0).unwrap();
+    let fine = tumble::<GaussLegendre2>(0.025, 50.0).unwrap();
+    let deviation = |t: &Tumble| t.energy_error.max(t.momentum_error);
+    let ratio = deviation(&coarse) / deviation(&fine);
+    assert!(deviation(&coarse) < 1e-5, "{:e}", deviation(&coarse));
+    assert!((10.0..24.0).contains(&ratio), "ratio {ratio}");
 }

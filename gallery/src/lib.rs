@@ -43,6 +43,11 @@ pub const SCENES: &[fn(&Path) -> Vec<Check>] = &[
     computed_torque::run,
 ];
 
+/// Runs too long for a debug build — the torque-free body's 10⁴ s — which the gallery runs after
+/// the scenes (in release, as the README's command builds it) and prints in the same table; the
+/// tests run them shortened (`tests/floating.rs`).
+pub const LONG_RUNS: &[fn(&Path) -> Vec<Check>] = &[tumbling_body::run];
+
 /// One simulated quantity against its exact value.
 #[derive(Clone, Debug)]
 pub struct Check {
@@ -164,6 +169,38 @@ pub fn elliptic_k(k: f64) -> f64 {
     std::f64::consts::PI / (a + b)
 }
 
+/// Jacobi's elliptic functions (sn, cn, dn) of argument u and parameter m = k² (0 ≤ m < 1), by the
+/// arithmetic–geometric mean and the descending Landen transformation (NIST DLMF §22.20(ii),
+/// eqs. 22.20.1–22.20.4); dn = √(1 − m sn²) (DLMF 22.10.1's identity, positive for real u).
+///
+/// ```
+/// use lagrange_gallery::{elliptic_k, jacobi_elliptic};
+/// // At the quarter period K: sn = 1, cn = 0, dn = √(1 − m) (DLMF 22.5.1).
+/// let m = 0.5f64;
+/// let (sn, cn, dn) = jacobi_elliptic(elliptic_k(m.sqrt()), m);
+/// assert!((sn - 1.0).abs() < 1e-14 && cn.abs() < 1e-7 && (dn - (1.0 - m).sqrt()).abs() < 1e-14);
+/// // m = 0: the circular functions.
+/// let (sn, cn, _) = jacobi_elliptic(0.7, 0.0);
+/// assert!((sn - 0.7f64.sin()).abs() < 1e-15 && (cn - 0.7f64.cos()).abs() < 1e-15);
+/// ```
+pub fn jacobi_elliptic(u: f64, m: f64) -> (f64, f64, f64) {
+    let (mut a, mut b, mut c) = (vec![1.0f64], vec![(1.0 - m).sqrt()], vec![m.sqrt()]);
+    // Quadratic convergence: c falls below the rounding of a in a few iterations.
+    while c[c.len() - 1].abs() > f64::EPSILON * a[a.len() - 1] && a.len() < 40 {
+        let (an, bn) = (a[a.len() - 1], b[b.len() - 1]);
+        a.push((an + bn) / 2.0);
+        b.push((an * bn).sqrt());
+        c.push((an - bn) / 2.0);
+    }
+    let n = a.len() - 1;
+    let mut phi = 2f64.powi(n as i32) * a[n] * u;
+    for j in (1..=n).rev() {
+        phi = (phi + (c[j] / a[j] * phi.sin()).asin()) / 2.0;
+    }
+    let (sn, cn) = phi.sin_cos();
+    (sn, cn, (1.0 - m * sn * sn).sqrt())
+}
+
 /// The first time after `times[0]` where `values` crosses zero upward, by linear interpolation
 /// between samples refined by cubic Hermite interpolation with the given derivatives.
 /// Returns `None` if there is no upward crossing.
@@ -222,6 +259,20 @@ mod tests {
         let ds: Vec<f64> = ts.iter().map(|t| 3.0 * t * t).collect();
         let root = upward_crossing(&ts, &ys, &ds).unwrap();
         assert!((root - 0.3f64.cbrt()).abs() < 1e-14);
+    }
+
+    /// sn′ = cn dn and cn′ = −sn dn (DLMF 22.13.1–2) by central differences (step 1e-5:
+    /// truncation ~1e-11, rounding ~1e-11).
+    #[test]
+    fn jacobi_functions_solve_their_differential_equations() {
+        let (m, d) = (0.5, 1e-5);
+        for u in [0.3, 1.7, -2.2, 11.0] {
+            let (sn, cn, dn) = jacobi_elliptic(u, m);
+            let (sp, cp, _) = jacobi_elliptic(u + d, m);
+            let (sm, cm, _) = jacobi_elliptic(u - d, m);
+            assert!(((sp - sm) / (2.0 * d) - cn * dn).abs() < 1e-9);
+            assert!(((cp - cm) / (2.0 * d) + sn * dn).abs() < 1e-9);
+        }
     }
 
     #[test]

@@ -12,11 +12,13 @@
 //! ```
 
 use lagrange_gallery::page::{run_scene, write_index, SceneOutput};
-use lagrange_gallery::{plots_dir, table, Check, SCENES};
+use lagrange_gallery::{plots_dir, table, Check, LONG_RUNS, SCENES};
 
 fn main() {
     let plots = plots_dir();
-    let scenes: Vec<SceneOutput> = SCENES.iter().map(|run| run_scene(&plots, *run)).collect();
+    let mut scenes: Vec<SceneOutput> = SCENES.iter().map(|run| run_scene(&plots, *run)).collect();
+    // The long runs last, so that the scenes' results come first.
+    scenes.extend(LONG_RUNS.iter().map(|run| run_scene(&plots, *run)));
     let checks: Vec<Check> = scenes.iter().flat_map(|s| s.checks.clone()).collect();
     println!();
     print!("{}", table(&checks));

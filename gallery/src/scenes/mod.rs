@@ -23,4 +23,5 @@ pub mod small_oscillations;
 pub mod spatial_arm;
 pub mod sphere_release;
 pub mod spinning_hoop;
+pub mod tumbling_body;
 pub mod wedge_block;
