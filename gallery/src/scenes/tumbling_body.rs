@@ -174,7 +174,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
     );
     vec![
         // RK4's energy error drifts linearly in t, and the frequency with it, so its error in ω
-        // grows like h⁴ t²: from 7.8e-8 at h = 5 ms over 100 s (tests/floating.rs) to
+        // grows like h⁴ t²: from 7.8e-8 at h = 5 ms over 100 s (this run, shortened) to
         // (1/2)⁴ × 100² × 7.8e-8 ≈ 5e-5 at h = 2.5 ms over 10⁴ s.
         Check::new(
             SCENE,

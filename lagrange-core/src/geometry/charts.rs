@@ -57,11 +57,11 @@ fn rotation_from<D: Scalar>(a: Vec3<D>, skew: D, identity: D, outer: D) -> Rot3<
     }
 }
 
-/// The rotation with rotation vector `phi`: R = exp(\[φ\]×) = I + (sin θ/θ) \[φ\]×
-/// + ((1 − cos θ)/θ²) \[φ\]×², θ = |φ| (Rodrigues' formula; Murray, Li & Sastry, *A Mathematical
-/// Introduction to Robotic Manipulation*, 1994, eq. (2.14)), with \[φ\]×² = φφᵀ − θ² I. Below
-/// θ² = 10⁻² the two coefficients are their Taylor series in θ² to θ⁸ (the next terms are below
-/// 3·10⁻¹⁸), so the function and its derivatives of every order are smooth through φ = 0.
+/// The rotation with rotation vector `phi`: R = exp(\[φ\]×) = I + a \[φ\]× + b \[φ\]×², with
+/// a = sin θ/θ, b = (1 − cos θ)/θ², θ = |φ| (Rodrigues' formula; Murray, Li & Sastry, *A
+/// Mathematical Introduction to Robotic Manipulation*, 1994, eq. (2.14)), and \[φ\]×² = φφᵀ − θ² I.
+/// Below θ² = 10⁻² the two coefficients are their Taylor series in θ² to θ⁸ (the next terms are
+/// below 3·10⁻¹⁸), so the function and its derivatives of every order are smooth through φ = 0.
 ///
 /// ```
 /// use lagrange_core::geometry::{rot_axis, rot_vector, vec3};
