@@ -100,6 +100,38 @@ pub fn slot_count(fields: &[Field]) -> usize {
     fields.iter().map(Field::slots).sum()
 }
 
+/// The flat slot among `fields` that `expr` names: a scalar field `u`, or an element `tau[k]` of an
+/// array field with a literal index in range (parentheses and invisible groups around either).
+pub fn flat_slot(fields: &[Field], expr: &syn::Expr) -> Option<usize> {
+    use crate::structure::strip;
+    use syn::{Expr, ExprLit, Lit};
+    let (name, element) = match strip(expr) {
+        Expr::Path(p) => (p.path.get_ident()?, None),
+        Expr::Index(i) => match (strip(&i.expr), strip(&i.index)) {
+            (
+                Expr::Path(p),
+                Expr::Lit(ExprLit {
+                    lit: Lit::Int(k), ..
+                }),
+            ) => (p.path.get_ident()?, Some(k.base10_parse::<usize>().ok()?)),
+            _ => return None,
+        },
+        _ => return None,
+    };
+    let mut first = 0;
+    for field in fields {
+        if field.ident == *name {
+            return match (&field.array, element) {
+                (None, None) => Some(first),
+                (Some((_, len)), Some(k)) if k < *len => Some(first + k),
+                _ => None,
+            };
+        }
+        first += field.slots();
+    }
+    None
+}
+
 /// A marked function: a body, point, potential, gravity or force.
 #[derive(Clone)]
 pub struct Decl {

@@ -79,44 +79,10 @@ impl Charts<'_, '_> {
         }
         let mut slots = [0; 3];
         for (slot, a) in slots.iter_mut().zip(&vec3.args) {
-            *slot = self.coordinate_slot(a)?;
+            *slot = crate::ast::flat_slot(self.model.coords, a)?;
         }
         let distinct = slots[0] != slots[1] && slots[1] != slots[2] && slots[0] != slots[2];
         distinct.then_some(slots)
-    }
-
-    /// `a` (a scalar coordinate) or `r[1]` (an element of an array coordinate, a literal index in
-    /// range): its flat index.
-    fn coordinate_slot(&self, e: &Expr) -> Option<usize> {
-        let (name, index) = match strip(e) {
-            Expr::Path(p) => (p.path.get_ident()?, None),
-            Expr::Index(i) => {
-                let Expr::Path(p) = strip(&i.expr) else {
-                    return None;
-                };
-                let Expr::Lit(syn::ExprLit {
-                    lit: syn::Lit::Int(k),
-                    ..
-                }) = strip(&i.index)
-                else {
-                    return None;
-                };
-                (p.path.get_ident()?, Some(k.base10_parse::<usize>().ok()?))
-            }
-            _ => return None,
-        };
-        let mut start = 0;
-        for field in self.model.coords {
-            if field.ident == *name {
-                return match (&field.array, index) {
-                    (None, None) => Some(start),
-                    (Some((_, len)), Some(k)) if k < *len => Some(start + k),
-                    _ => None,
-                };
-            }
-            start += field.slots();
-        }
-        None
     }
 
     fn record(&mut self, at: &Expr, chart: Chart) {

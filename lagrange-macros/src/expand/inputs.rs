@@ -70,34 +70,7 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
 /// force, each on a coordinate of its own; `None` otherwise.
 fn input_coordinates(model: &Model) -> Option<Vec<usize>> {
     // Slot of the input an expression is, if it is one: `u`, or `tau[k]` with a literal k.
-    let slot_of = |expr: &syn::Expr| -> Option<usize> {
-        let (name, element) = match expr {
-            syn::Expr::Path(p) => (p.path.get_ident()?, None),
-            syn::Expr::Index(i) => match (&*i.expr, &*i.index) {
-                (
-                    syn::Expr::Path(p),
-                    syn::Expr::Lit(syn::ExprLit {
-                        lit: syn::Lit::Int(k),
-                        ..
-                    }),
-                ) => (p.path.get_ident()?, Some(k.base10_parse::<usize>().ok()?)),
-                _ => return None,
-            },
-            _ => return None,
-        };
-        let mut first = 0;
-        for u in model.inputs {
-            if u.ident == *name {
-                return match (&u.array, element) {
-                    (None, None) => Some(first),
-                    (Some((_, len)), Some(k)) if k < *len => Some(first + k),
-                    _ => None,
-                };
-            }
-            first += u.slots();
-        }
-        None
-    };
+    let slot_of = |expr: &syn::Expr| crate::ast::flat_slot(model.inputs, expr);
     let count = model.input_count()?;
     let mut coordinates: Vec<Option<usize>> = vec![None; count];
     let inputs: std::collections::BTreeSet<String> =

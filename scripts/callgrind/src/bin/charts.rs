@@ -1,7 +1,8 @@
 //! The cost of a free body's orientation, per `accelerations` call and per RK4 step: the same
 //! torque-free body (moments 1, 2, 3) with its orientation written as the rotation vector
 //! (`rot_vector`), as modified Rodrigues parameters (`rot_mrp`) and as z-x-z Euler angles (the
-//! chart with a singularity, for reference). `charts MODE CALLS`; count.sh takes the difference of
+//! chart with a singularity, for reference); and a quadruped's q̈ with a floating base and with its
+//! root fixed. `charts MODE CALLS`; count.sh takes the difference of
 //! two call counts under callgrind (`BIN=charts MODES="vector mrp euler vector_step mrp_step
 //! euler_step" scripts/callgrind/count.sh`).
 
@@ -62,6 +63,25 @@ pub mod by_euler {
     }
 }
 
+/// The tests' quadruped with its root link flying free (18 coordinates: the general pass), and the
+/// same file with its root fixed to the ground (12: the rigid tree pass).
+#[lagrange::urdf("../../tests/urdf/quadruped.urdf", floating)]
+pub mod floating_quadruped {}
+#[lagrange::urdf("../../tests/urdf/quadruped.urdf")]
+pub mod fixed_quadruped {}
+
+/// q̈ of a quadruped at a bent, moving state.
+fn quadruped<M: Mechanism<N>, const N: usize>(sys: &M, calls: usize) -> f64 {
+    let q = std::array::from_fn(|k| 0.3 * ((k as f64) * 0.7).sin());
+    let v = std::array::from_fn(|k| 0.5 * ((k as f64) * 1.3).cos());
+    let s = State::new(0.0, Coordinates::from_array(q), Coordinates::from_array(v));
+    let mut sum = 0.0;
+    for _ in 0..calls {
+        sum += sys.accelerations(black_box(&s)).unwrap().to_array()[N - 1];
+    }
+    sum
+}
+
 macro_rules! run {
     ($m:ident, $calls:expr, $step:expr) => {{
         let sys = $m::Body { i1: 1.0, i2: 2.0, i3: 3.0 }.validated().unwrap();
@@ -94,6 +114,14 @@ fn main() {
         "vector_step" => run!(by_vector, calls, true),
         "mrp_step" => run!(by_mrp, calls, true),
         "euler_step" => run!(by_euler, calls, true),
+        "quadruped_floating" => quadruped(
+            &floating_quadruped::FloatingQuadruped::default().validated().unwrap(),
+            calls,
+        ),
+        "quadruped_fixed" => quadruped(
+            &fixed_quadruped::FixedQuadruped::default().validated().unwrap(),
+            calls,
+        ),
         mode => panic!("unknown mode {mode}"),
     };
     println!("{sum}");
