@@ -280,6 +280,33 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
         (plain.momenta_at(t, q, v), momentum_rate(&plain, t, q, v))
     }
 
+    /// The declaration's inputs' names, flat (its `#[inputs]` struct's
+    /// [`Inputs::NAMES`](crate::inputs::Inputs::NAMES)), empty without `#[inputs]`: what a
+    /// sensitivity seed on an input is named by.
+    const INPUT_NAMES: &'static [&'static str] = &[];
+
+    /// q̈ at (t, q, q̇) with the inputs `inputs` (flat, in the order of
+    /// [`INPUT_NAMES`](Dynamics::INPUT_NAMES), zeros where it has fewer) of the same scalar as the
+    /// state, so dual numbers seeded on inputs carry ∂q̈/∂u: the declaration's forces read them
+    /// through [`WithInputs`](crate::inputs::WithInputs) on that scalar, and q̈ is the generic
+    /// solve of [`crate::dynamics`] (of [`crate::constraints`] with constraint rows, in the mode
+    /// inferred from the state). `#[mechanism]` writes it for a declaration with `#[inputs]`; the
+    /// default refuses ([`Error::UnsuitableMethod`]: no inputs to read).
+    #[inline]
+    fn accelerations_with_inputs_at<S: Scalar>(
+        &self,
+        inputs: &[S],
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> Result<[S; N]> {
+        let _ = (inputs, t, q, v);
+        Err(Error::UnsuitableMethod {
+            method: "accelerations_with_inputs_at",
+            reason: "the mechanism declares no inputs".to_string(),
+        })
+    }
+
     /// Mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any scalar, in
     /// declaration order and padded with zeros to N entries (see
     /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation

@@ -120,6 +120,8 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let (kinetic, inverse_dynamics) = (kinetic_energy(glue), inverse_dynamics(glue));
     let mass_matrix = mass_matrix(glue);
     let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
+    let inputs =
+        (glue.inputs).map(|nu| super::inputs::dynamics_items(glue.n, glue.k, nu, glue.constrained));
     quote! {
         #prepare
         impl #p::Dynamics<#n> for #params {
@@ -153,6 +155,7 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
             }
             #canonical
             #constraint_hooks
+            #inputs
         }
     }
 }

@@ -568,6 +568,34 @@ pub mod motor {
                 )
             }
         }
+        const INPUT_NAMES: &'static [&'static str] = &<<Self as ::lagrange::__private::lagrange_core::inputs::Actuated<
+            1,
+        >>::Inputs as ::lagrange::__private::lagrange_core::inputs::Inputs<1>>::NAMES;
+        #[inline]
+        fn accelerations_with_inputs_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            inputs: &[S],
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ::lagrange::__private::Result<[S; 1]> {
+            ::lagrange::__private::dynamics::accelerations_generic::<
+                _,
+                S,
+                1,
+                3,
+            >(
+                &::lagrange::__private::lagrange_core::inputs::WithInputs::<
+                    '_,
+                    Self,
+                    S,
+                    1,
+                >::held(self, inputs),
+                t,
+                q,
+                v,
+            )
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Motor {
         const DOF: usize = 1;
