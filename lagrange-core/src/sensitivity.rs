@@ -8,7 +8,8 @@
 //! Seeded on initial values only, every evaluation is the mechanism's own scalar-generic
 //! accelerations. Seeded on a parameter, the parameters are dual numbers too
 //! ([`crate::parameters::Lifted`]) and the accelerations come from the generic dynamics of
-//! [`crate::dynamics`] on the lifted model. Seeded on an input of a driven mechanism
+//! [`crate::dynamics`] on the lifted model (whose forces read the inputs a driven mechanism
+//! holds). Seeded on an input of a driven mechanism
 //! ([`crate::inputs::Driven`]), the inputs are dual numbers held over the whole run and the
 //! forces read them through [`crate::inputs::WithInputs`] on the seeds' dual type
 //! ([`Dynamics::accelerations_with_inputs_at`]). Every step is the method's own code on the dual type:
@@ -203,10 +204,9 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
     /// Errors: a seed naming no coordinate ([`Error::UnknownCoordinate`]), no parameter
     /// ([`Error::UnknownParameter`]) or no input ([`Error::UnknownInput`], also on a mechanism
     /// that declares none), a parameter that carries no derivative
-    /// ([`Error::UnseedableParameter`]), a parameter seeded on a mechanism whose inputs are held
-    /// or seeded ([`Error::ParameterSeedWithInputs`]), a mechanism that declares constraints or
-    /// does not say
-    /// (the projection onto the constraints is not differentiated), a method whose steps are not
+    /// ([`Error::UnseedableParameter`]), a parameter seeded beside an input
+    /// ([`Error::ParameterSeedWithInputs`]), a mechanism that declares constraints or does not
+    /// say (the projection onto the constraints is not differentiated), a method whose steps are not
     /// taken on dual numbers (with a fixed step RK4, adaptively Dopri5) ([`Error::UnsuitableMethod`]).
     ///
     /// ```
@@ -263,7 +263,7 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
         });
         let held = self.mechanism.prepared().inputs;
         let input_seeded = seeds.iter().any(|seed| matches!(seed, Seed::Input(_)));
-        if let (Some(name), true) = (parameter, !held.is_empty() || input_seeded) {
+        if let (Some(name), true) = (parameter, input_seeded) {
             return Err(Error::ParameterSeedWithInputs { name });
         }
         let tangent = seeded::<M::Coords, _, N, K, NP, P>(
@@ -281,7 +281,7 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
 fn seeded<'m, C, L, const N: usize, const K: usize, const NP: usize, const P: usize>(
     model: &'m L,
     (q0, v0): (&[f64; N], &[f64; N]),
-    held: &[f64],
+    held: &'m [f64],
     seeds: [Seed; P],
 ) -> Result<SeededTangent<'m, L, N, K, NP, P>>
 where
@@ -321,7 +321,7 @@ where
         inputs.clear();
     }
     Ok(SeededTangent {
-        lifted: Lifted::new(model, p),
+        lifted: Lifted::new(model, p).with_inputs(held),
         by,
         inputs,
         seeds,
