@@ -133,14 +133,7 @@ impl_mechanism!(CartesianPendulum, 2, 2, constraints);
 /// [`Pendulum`] driven by a torque τ at its pivot (the one input, [`Torque`]):
 /// m l² θ̈ = τ − m g l sin θ.
 #[derive(Clone, Copy, Debug)]
-pub struct DrivenPendulum {
-    /// Bob mass.
-    pub m: f64,
-    /// Rod length.
-    pub l: f64,
-    /// Gravitational acceleration.
-    pub g: f64,
-}
+pub struct DrivenPendulum(pub Pendulum);
 
 /// The input of [`DrivenPendulum`].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -169,16 +162,16 @@ impl Model<1, 2> for DrivenPendulum {
     const HAS_POTENTIAL: bool = true;
     const HAS_FORCES: bool = true;
     fn validate(&self) -> Result<()> {
-        finite(&[("m", self.m), ("l", self.l), ("g", self.g)])
+        self.0.validate()
     }
     fn masses(&self) -> [f64; 2] {
-        [self.m; 2]
+        self.0.masses()
     }
-    fn cartesian<D: Scalar>(&self, _t: D, q: &[D; 1]) -> [D; 2] {
-        [q[0].sin() * self.l, -q[0].cos() * self.l]
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 1]) -> [D; 2] {
+        self.0.cartesian(t, q)
     }
-    fn potential<D: Scalar>(&self, _t: D, _q: &[D; 1], x: &[D; 2]) -> D {
-        x[1] * (self.m * self.g)
+    fn potential<D: Scalar>(&self, t: D, q: &[D; 1], x: &[D; 2]) -> D {
+        self.0.potential(t, q, x)
     }
     #[allow(clippy::too_many_arguments)]
     fn applied_forces<S: Scalar>(

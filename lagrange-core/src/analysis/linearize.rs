@@ -243,10 +243,10 @@ impl<const N: usize, const NU: usize> DrivenLinearization<N, NU> {
 ///
 /// ```
 /// use lagrange_core::analysis::linearize_driven;
-/// # use lagrange_core::analysis::doc_models::{DrivenPendulum, Torque};
+/// # use lagrange_core::analysis::doc_models::{DrivenPendulum, Pendulum, Torque};
 /// use lagrange_core::State;
 /// // A pendulum (m = 2, l = 3, g = 9.81) driven by a torque τ at its pivot: m l² θ̈ = τ − m g l sin θ.
-/// let sys = DrivenPendulum { m: 2.0, l: 3.0, g: 9.81 };
+/// let sys = DrivenPendulum(Pendulum { m: 2.0, l: 3.0, g: 9.81 });
 /// let lin = linearize_driven(&sys, &State::at_rest([0.0]), &Torque { tau: 1.0 })?;
 /// assert!((lin.linearization.accelerations[0] - 1.0 / 18.0).abs() < 1e-15);
 /// assert!((lin.dqdd_dinputs[(0, 0)] - 1.0 / 18.0).abs() < 1e-15);
