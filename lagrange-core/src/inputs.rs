@@ -354,7 +354,8 @@ impl<E: Evaluate<N>, I: AsRef<[f64]>, const N: usize> Evaluate<N> for Driven<'_,
 /// non-linearly too.
 ///
 /// Errors: those of [`Mechanism::accelerations`](crate::Mechanism::accelerations) of the driven
-/// mechanism at the state; non-finite derivatives ([`Error::NonFiniteDynamics`](crate::Error::NonFiniteDynamics)).
+/// mechanism at the state; non-finite derivatives
+/// ([`Error::NonFiniteDynamics`](crate::Error::NonFiniteDynamics)).
 pub fn input_matrix<E, const N: usize, const NU: usize>(
     mechanism: &E,
     inputs: &<E::Model as Actuated<NU>>::Inputs,

@@ -9,13 +9,13 @@
 //! accelerations. Seeded on a parameter, the parameters are dual numbers too
 //! ([`crate::parameters::Lifted`]) and the accelerations come from the generic dynamics of
 //! [`crate::dynamics`] on the lifted model (whose forces read the inputs a driven mechanism
-//! holds). Seeded on an input of a driven mechanism
-//! ([`crate::inputs::Driven`]), the inputs are dual numbers held over the whole run and the
-//! forces read them through [`crate::inputs::WithInputs`] on the seeds' dual type
-//! ([`Dynamics::accelerations_with_inputs_at`]). Every step is the method's own code on the dual type:
-//! with a fixed step, RK4's step on the duals is the step (the state is its real parts, the plain
-//! run bit for bit on initial values alone); with Dopri5 the plain step chooses its size and is
-//! taken again on the duals with that size frozen (how the controller's choices depend on the
+//! holds). Seeded on an input of a driven mechanism ([`crate::inputs::Driven`]), the inputs are
+//! dual numbers held over the whole run and the forces read them through
+//! [`crate::inputs::WithInputs`] on the seeds' dual type
+//! ([`Dynamics::accelerations_with_inputs_at`]). Every step is the method's own code on the dual
+//! type: with a fixed step, RK4's step on the duals is the step (the state is its real parts, the
+//! plain run bit for bit on initial values alone); with Dopri5 the plain step chooses its size and
+//! is taken again on the duals with that size frozen (how the controller's choices depend on the
 //! seeds is not differentiated, which changes the result by about the tolerance). A step with `P`
 //! seeds costs one pass of the accelerations on duals of width `P` per stage. The example is on
 //! [`Stepper::with_sensitivities`].
@@ -224,8 +224,9 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
     /// that declares none), a parameter that carries no derivative
     /// ([`Error::UnseedableParameter`]), a parameter seeded beside an input
     /// ([`Error::ParameterSeedWithInputs`]), a mechanism that declares constraints or does not
-    /// say (the projection onto the constraints is not differentiated), a method whose steps are not
-    /// taken on dual numbers (with a fixed step RK4, adaptively Dopri5) ([`Error::UnsuitableMethod`]).
+    /// say (the projection onto the constraints is not differentiated), a method whose steps are
+    /// not taken on dual numbers (with a fixed step RK4, adaptively Dopri5)
+    /// ([`Error::UnsuitableMethod`]).
     ///
     /// ```
     /// use lagrange_core::integrate::Stepper;

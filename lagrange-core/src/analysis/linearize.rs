@@ -209,8 +209,9 @@ pub fn linearize<M: Mechanism<N>, const N: usize>(
 /// [`Inputs::NAMES`](crate::inputs::Inputs::NAMES). What [`linearize_driven`] returns.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DrivenLinearization<const N: usize, const NU: usize> {
-    /// The linearization of the driven mechanism (its `dqdd_du` is M⁻¹, for generalized forces on
-    /// every coordinate; the declared inputs' are [`dqdd_dinputs`](DrivenLinearization::dqdd_dinputs)).
+    /// The linearization of the driven mechanism (its `dqdd_du` is M⁻¹, for generalized forces
+    /// on every coordinate; the declared inputs' are
+    /// [`dqdd_dinputs`](DrivenLinearization::dqdd_dinputs)).
     pub linearization: Linearization<N>,
     /// The inputs linearized about, flat.
     pub inputs: [f64; NU],
@@ -245,7 +246,8 @@ impl<const N: usize, const NU: usize> DrivenLinearization<N, NU> {
 /// use lagrange_core::analysis::linearize_driven;
 /// # use lagrange_core::analysis::doc_models::{DrivenPendulum, Pendulum, Torque};
 /// use lagrange_core::State;
-/// // A pendulum (m = 2, l = 3, g = 9.81) driven by a torque τ at its pivot: m l² θ̈ = τ − m g l sin θ.
+/// // A pendulum (m = 2, l = 3, g = 9.81) driven by a torque τ at its pivot:
+/// // m l² θ̈ = τ − m g l sin θ.
 /// let sys = DrivenPendulum(Pendulum { m: 2.0, l: 3.0, g: 9.81 });
 /// let lin = linearize_driven(&sys, &State::at_rest([0.0]), &Torque { tau: 1.0 })?;
 /// assert!((lin.linearization.accelerations[0] - 1.0 / 18.0).abs() < 1e-15);
