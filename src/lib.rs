@@ -136,9 +136,9 @@ pub use lagrange_macros::urdf;
 pub use prelude::*;
 
 pub use lagrange_core::analysis::{
-    constrained_equilibrium, continuation, equilibrium, linearize, normal_modes, stability, Branch,
-    BranchPoint, ConstrainedEquilibrium, Equilibrium, EquilibriumOptions, Linearization,
-    NormalModes, Stability, StabilityAnalysis,
+    constrained_equilibrium, continuation, equilibrium, linearize, linearize_driven, normal_modes,
+    stability, Branch, BranchPoint, ConstrainedEquilibrium, DrivenLinearization, Equilibrium,
+    EquilibriumOptions, Linearization, NormalModes, Stability, StabilityAnalysis,
 };
 pub use lagrange_core::constraints::{
     consistent_state, consistent_state_holding, constraint_forces, ConstraintForces, Constraints,

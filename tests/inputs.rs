@@ -10,7 +10,7 @@
 
 use lagrange::prelude::*;
 use lagrange::tree::rigid::RigidTree;
-use lagrange::Seed;
+use lagrange::{Inputs, Seed};
 
 /// A disc on a shaft with viscous friction, driven by a motor: j θ̈ = τ − c θ̇.
 #[mechanism]
@@ -393,37 +393,45 @@ fn the_input_matrix_is_the_derivative_of_the_accelerations_by_the_inputs() {
 }
 
 #[test]
-fn sensitivities_to_a_parameter_are_refused_on_a_driven_mechanism() {
-    let (arm, u, _) = arm_pair([0.6, -0.2], 0.4);
-    let driven = arm.driven(&u);
-    let start = driven_arm::State {
+fn sensitivities_to_a_parameter_of_a_driven_mechanism_read_the_inputs() {
+    // The motor, j θ̈ = τ − c θ̇, seeded on the friction c: θ̇(t) = τ/c + (θ̇₀ − τ/c) e^{−ct/j},
+    // so ∂θ̇/∂c and ∂θ/∂c depend on τ, which the lifted forces must read.
+    let (j, c, tau, v0, t_end) = (0.5, 0.1, 1.5, 2.0, 1.0);
+    let motor = motor::Motor { j, c };
+    let driven = motor.driven(&motor::Torque { tau });
+    let start = motor::State {
         t: 0.0,
-        q: driven_arm::Coords { q1: 0.5, q2: -0.9 },
-        v: driven_arm::Coords { q1: 0.3, q2: 0.7 },
+        q: motor::Coords { theta: 0.3 },
+        v: motor::Coords { theta: v0 },
     };
-    let refused = Stepper::new(&driven, Rk4::with_step(1e-3), &start)
-        .unwrap()
-        .with_sensitivities([Seed::Parameter("l")]);
-    assert!(matches!(
-        refused,
-        Err(Error::ParameterSeedWithInputs { name: "l" })
-    ));
-    // Seeded on initial values, the run carries the inputs.
     let mut run = Stepper::new(&driven, Rk4::with_step(1e-3), &start)
         .unwrap()
-        .with_sensitivities([Seed::Coordinate("q1")])
+        .with_sensitivities([Seed::Parameter("c")])
         .unwrap();
-    run.integrate(0.1, &mut [], |_| {}).unwrap();
-    // Against the driven run stepped by hand (the same steps; the stepper lands on 0.1 by its
-    // own step count, so a few rounding errors apart) and unlike the undriven one.
-    let (mut by_hand, mut undriven) = (start, start);
-    for _ in 0..100 {
-        driven.step::<Rk4>(&mut by_hand, 1e-3).unwrap();
-        arm.step::<Rk4>(&mut undriven, 1e-3).unwrap();
-    }
-    let q = run.sensitivities().state.q;
-    assert!(close(q.q1, by_hand.q.q1) && close(q.q2, by_hand.q.q2));
-    assert!((q.q1 - undriven.q.q1).abs() > 1e-4);
+    run.integrate(t_end, &mut [], |_| {}).unwrap();
+    let s = run.sensitivities();
+    // θ = θ₀ + a t + w (1 − E)/k with a = τ/c, w = θ̇₀ − a, k = c/j, E = e^{−kt}, differentiated
+    // by c (∂a/∂c = −τ/c², ∂w/∂c = τ/c², ∂k/∂c = 1/j, ∂E/∂c = −tE/j).
+    let (a, k) = (tau / c, c / j);
+    let (w, e) = (v0 - a, (-k * t_end).exp());
+    let dv_dc = -tau / (c * c) + tau / (c * c) * e - w * t_end / j * e;
+    let dq_dc = -tau * t_end / (c * c)
+        + tau / (c * c) * (1.0 - e) / k
+        + w * (t_end * e / j / k - (1.0 - e) / (k * k * j));
+    // RK4's error on this linear equation (rate k = 0.2, h = 1e-3) is ~(kh)⁵/120 per step, far
+    // below rounding; what is left is ~1e-13 of rounding over the 1000 steps.
+    assert!(
+        (s.dv[0].theta - dv_dc).abs() < 1e-10,
+        "{} vs {dv_dc}",
+        s.dv[0].theta
+    );
+    assert!(
+        (s.dq[0].theta - dq_dc).abs() < 1e-10,
+        "{} vs {dq_dc}",
+        s.dq[0].theta
+    );
+    // Without the torque the derivative is another: the inputs are read, not dropped.
+    assert!((dv_dc - (-v0 * t_end / j * e)).abs() > 1.0);
 }
 
 /// Two point masses on massless rods, a motor at the elbow only (an acrobot): underactuated.
@@ -507,4 +515,247 @@ fn inverse_dynamics_gives_the_inputs_where_each_acts_on_a_coordinate_of_its_own(
         arm.inverse_dynamics_inputs(&arm_state, &driven_arm::Coords { q1: 0.0, q2: 0.0 }),
         Err(Error::UnsuitableMethod { .. })
     ));
+}
+
+#[test]
+fn linearize_driven_gives_the_input_matrix_of_the_declared_inputs() {
+    use lagrange::analysis::{linearize, linearize_driven};
+    let (arm, u, _) = arm_pair([0.6, -0.2], 0.4);
+    let state = driven_arm::State {
+        t: 0.0,
+        q: driven_arm::Coords { q1: 0.5, q2: -0.9 },
+        v: driven_arm::Coords { q1: 0.3, q2: 0.7 },
+    };
+    let lin = linearize_driven(&arm, &state, &u).unwrap();
+    // A is linearize's at the driven state, q̈₀ the driven accelerations.
+    assert_eq!(
+        lin.linearization,
+        linearize(&arm.driven(&u), &state).unwrap()
+    );
+    let a = arm.driven(&u).accelerations(&state).unwrap();
+    assert!(close(lin.linearization.accelerations[0], a.q1));
+    assert!(close(lin.linearization.accelerations[1], a.q2));
+    assert_eq!(lin.inputs, [0.6, -0.2, 0.4]);
+    // B = [0; ∂q̈/∂u], 2N × NU, against central differences of the driven accelerations. q̈ is
+    // affine in the inputs here (motor torques and a wrist torque), so the differences have no
+    // truncation error (their error term is h²/6 ∂³q̈/∂u³ = 0); rounding leaves ~1e-16 |q̈| / h
+    // with h = 1e-4, ~1e-11 — 1e-9 is a margin of 100 over it.
+    let b = lin.b_matrix();
+    assert_eq!(b.shape(), (4, 3));
+    let h = 1e-4;
+    for (j, name) in <driven_arm::Torques as Inputs<3>>::NAMES.iter().enumerate() {
+        let shifted = |s: f64| {
+            let mut values = u.to_array();
+            values[j] += s;
+            arm.driven(&driven_arm::Torques::from_array(values))
+                .accelerations(&state)
+                .unwrap()
+        };
+        let (plus, minus) = (shifted(h), shifted(-h));
+        let column = [
+            (plus.q1 - minus.q1) / (2.0 * h),
+            (plus.q2 - minus.q2) / (2.0 * h),
+        ];
+        for i in 0..2 {
+            assert_eq!(b[(i, j)], 0.0);
+            assert!(
+                (b[(2 + i, j)] - column[i]).abs() < 1e-9,
+                "B[{}, {name}] = {} vs {}",
+                2 + i,
+                b[(2 + i, j)],
+                column[i]
+            );
+        }
+    }
+    // Through a validated handle, the same.
+    let handle = arm.validated().unwrap();
+    let through_handle = linearize_driven(&handle, &state, &u).unwrap();
+    for (x, y) in through_handle
+        .dqdd_dinputs
+        .iter()
+        .zip(lin.dqdd_dinputs.iter())
+    {
+        assert!(close(*x, *y));
+    }
+}
+
+#[test]
+fn the_input_matrix_of_a_constrained_mechanism_is_the_constrained_solves() {
+    use lagrange::analysis::linearize_driven;
+    // The bob on its rod, pushed along x by f: only the push's component along the circle
+    // accelerates it, ∂q̈/∂f = (I − n nᵀ) eₓ / m with n = (x, y) / l the rod's direction
+    // (the rod takes the rest) — not the unconstrained M⁻¹ eₓ = (1/m, 0).
+    let (m, l, g) = (0.7, 1.3, 9.81);
+    let sys = driven_pendulum::DrivenPendulum { m, l, g };
+    let angle: f64 = 0.6;
+    let (x, y) = (l * angle.sin(), -l * angle.cos());
+    let state = driven_pendulum::State {
+        t: 0.0,
+        q: driven_pendulum::Coords { x, y },
+        v: driven_pendulum::Coords {
+            x: 0.8 * angle.cos(),
+            y: 0.8 * angle.sin(),
+        },
+    };
+    let u = driven_pendulum::Push { f: 2.2 };
+    let lin = linearize_driven(&sys, &state, &u).unwrap();
+    let b = lin.dqdd_dinputs;
+    let expected = [(1.0 - x * x / (l * l)) / m, -x * y / (l * l) / m];
+    for i in 0..2 {
+        // The constrained solve's few operations: a few rounding errors.
+        assert!(
+            (b[(i, 0)] - expected[i]).abs() < 1e-12,
+            "{} vs {}",
+            b[(i, 0)],
+            expected[i]
+        );
+    }
+    // Against central differences of the driven accelerations: q̈ of the constrained solve is
+    // affine in the force at a fixed state (λ solves a linear system whose right-hand side is
+    // affine in 𝓕), so no truncation error; rounding ~1e-16 |q̈| / h with h = 1e-4.
+    let h = 1e-4;
+    let at = |f: f64| {
+        sys.driven(&driven_pendulum::Push { f })
+            .accelerations(&state)
+            .unwrap()
+    };
+    let (plus, minus) = (at(u.f + h), at(u.f - h));
+    let column = [
+        (plus.x - minus.x) / (2.0 * h),
+        (plus.y - minus.y) / (2.0 * h),
+    ];
+    for i in 0..2 {
+        assert!(
+            (b[(i, 0)] - column[i]).abs() < 1e-9,
+            "{} vs {}",
+            b[(i, 0)],
+            column[i]
+        );
+    }
+}
+
+/// The arm stepped by RK4 (h = 1e-3) to `t_end` from `start` with the inputs `u` held.
+fn driven_run(u: &driven_arm::Torques, start: &driven_arm::State, t_end: f64) -> driven_arm::State {
+    let (arm, _, _) = arm_pair(u.tau, u.push);
+    let driven = arm.driven(u);
+    let mut run = Stepper::new(&driven, Rk4::with_step(1e-3), start).unwrap();
+    run.integrate(t_end, &mut [], |_| {}).unwrap();
+    run.state()
+}
+
+#[test]
+fn sensitivities_seeded_on_inputs_match_differences_of_driven_runs() {
+    let (arm, u, _) = arm_pair([0.6, -0.2], 0.4);
+    let driven = arm.driven(&u);
+    let start = driven_arm::State {
+        t: 0.0,
+        q: driven_arm::Coords { q1: 0.5, q2: -0.9 },
+        v: driven_arm::Coords { q1: 0.3, q2: 0.7 },
+    };
+    let t_end = 0.5;
+    let seeds = [
+        Seed::Input("tau[1]"),
+        Seed::Input("push"),
+        Seed::Coordinate("q1"),
+    ];
+    let mut run = Stepper::new(&driven, Rk4::with_step(1e-3), &start)
+        .unwrap()
+        .with_sensitivities(seeds)
+        .unwrap();
+    run.integrate(t_end, &mut [], |_| {}).unwrap();
+    let s = run.sensitivities();
+    assert_eq!(s.seeds, seeds);
+    assert_eq!(Seed::Input("tau[1]").label(), "tau[1]");
+    // The state is the driven run's (the same RK4 steps, on the duals' real parts).
+    let plain = driven_run(&u, &start, t_end);
+    assert!(close(s.state.q.q1, plain.q.q1) && close(s.state.q.q2, plain.q.q2));
+    // ∂q(T)/∂u against central differences of two driven runs of the same steps: both are
+    // derivatives of the same discrete RK4 map, so they differ by the differences' error alone,
+    // δ²/6 |∂³(q, q̇)(T)/∂u³| + ~1e-16 |(q, q̇)| / δ. The arm swings far over T = 0.5 and the third
+    // derivatives are large (the differences close in on the tangent as δ², from ~6e-5 relative
+    // at δ = 1e-3 to ~6e-9 at δ = 1e-5 for ∂q₁/∂τ₁, ~2e-8 for ∂q̇₁/∂τ₁): at δ = 1e-5 the
+    // truncation is ≲ 2e-8 relative and rounding ~1e-10, inside 1e-7 (relative to 1 + |∂/∂u|).
+    let delta = 1e-5;
+    for (j, slot) in [(0, 1), (1, 2)] {
+        let shifted = |s: f64| {
+            let mut values = u.to_array();
+            values[slot] += s;
+            driven_run(&driven_arm::Torques::from_array(values), &start, t_end)
+        };
+        let (plus, minus) = (shifted(delta), shifted(-delta));
+        let dq = [
+            (plus.q.q1 - minus.q.q1) / (2.0 * delta),
+            (plus.q.q2 - minus.q.q2) / (2.0 * delta),
+        ];
+        let dv = [
+            (plus.v.q1 - minus.v.q1) / (2.0 * delta),
+            (plus.v.q2 - minus.v.q2) / (2.0 * delta),
+        ];
+        let tangent = [s.dq[j].q1, s.dq[j].q2, s.dv[j].q1, s.dv[j].q2];
+        for (k, (got, want)) in tangent.iter().zip(dq.iter().chain(dv.iter())).enumerate() {
+            assert!(
+                (got - want).abs() < 1e-7 * (1.0 + want.abs()),
+                "seed {:?}, component {k}: {got} vs {want}",
+                seeds[j]
+            );
+        }
+        // An input that acts moves the state.
+        assert!(tangent.iter().any(|x| x.abs() > 1e-3), "{tangent:?}");
+    }
+}
+
+#[test]
+fn seeds_on_inputs_are_refused_where_there_is_no_such_input() {
+    let (arm, u, twin) = arm_pair([0.6, -0.2], 0.4);
+    let start = driven_arm::State {
+        t: 0.0,
+        q: driven_arm::Coords { q1: 0.5, q2: -0.9 },
+        v: driven_arm::Coords { q1: 0.3, q2: 0.7 },
+    };
+    let driven = arm.driven(&u);
+    // A name the inputs do not have (the array field's name alone is not an input).
+    for name in ["tau", "tau[2]", "l"] {
+        let refused = Stepper::new(&driven, Rk4::with_step(1e-3), &start)
+            .unwrap()
+            .with_sensitivities([Seed::Input(name)])
+            .err();
+        assert!(
+            matches!(&refused, Some(Error::UnknownInput { name: n, known })
+                if n == name && known == "`tau[0]`, `tau[1]`, `push`"),
+            "{refused:?}"
+        );
+    }
+    // A mechanism that declares no inputs.
+    let twin_start = twin_arm::State::at_rest(twin_arm::Coords { q1: 0.5, q2: -0.9 });
+    let refused = Stepper::new(&twin, Rk4::with_step(1e-3), &twin_start)
+        .unwrap()
+        .with_sensitivities([Seed::Input("push")])
+        .err();
+    assert!(
+        matches!(&refused, Some(Error::UnknownInput { known, .. }) if known.starts_with("none")),
+        "{refused:?}"
+    );
+    // A parameter beside an input: the lifted forces read no inputs.
+    let refused = Stepper::new(&arm, Rk4::with_step(1e-3), &start)
+        .unwrap()
+        .with_sensitivities([Seed::Input("push"), Seed::Parameter("l")])
+        .err();
+    assert!(matches!(
+        refused,
+        Some(Error::ParameterSeedWithInputs { name: "l" })
+    ));
+    // A constrained mechanism: the projection is not differentiated, inputs or not.
+    let (m, l, g) = (0.7, 1.3, 9.81);
+    let pendulum = driven_pendulum::DrivenPendulum { m, l, g };
+    let push = driven_pendulum::Push { f: 1.0 };
+    let pushed = pendulum.driven(&push);
+    let hanging = driven_pendulum::State::at_rest(driven_pendulum::Coords { x: 0.0, y: -l });
+    let refused = Stepper::new(&pushed, Rk4::with_step(1e-3), &hanging)
+        .unwrap()
+        .with_sensitivities([Seed::Input("f")])
+        .err();
+    assert!(
+        matches!(refused, Some(Error::UnsuitableMethod { .. })),
+        "{refused:?}"
+    );
 }

@@ -323,6 +323,16 @@ pub enum Error {
         known: String,
     },
 
+    /// A sensitivity seed names no input of the mechanism (or the mechanism declares no
+    /// `#[inputs]`).
+    #[error("no input named `{name}` to differentiate by; the inputs are {known}")]
+    UnknownInput {
+        /// The name given.
+        name: String,
+        /// The mechanism's inputs, flat, in declaration order.
+        known: String,
+    },
+
     /// A sensitivity seed names a parameter that enters the dynamics as a plain number (a mass, a
     /// moment of inertia or a uniform field's strength), which carries no derivative.
     #[error(
@@ -335,13 +345,12 @@ pub enum Error {
         name: &'static str,
     },
 
-    /// A sensitivity seed names a parameter of a mechanism driven by inputs
-    /// ([`crate::inputs::Driven`]): the forces the parameters are lifted into read no inputs, so the
-    /// run would drop them. Seeds on initial values carry the inputs.
+    /// A sensitivity seed names a parameter beside a seed on an input: the forces read either
+    /// parameters or inputs on dual numbers, not both (seeded on parameters alone, a driven
+    /// mechanism's forces read the inputs it holds).
     #[error(
-        "parameter `{name}` cannot be differentiated by on a driven mechanism: the forces with \
-         the parameters lifted read no inputs (seed initial values, or declare the input as a \
-         parameter)"
+        "parameter `{name}` cannot be differentiated by in the same run as an input: seed the \
+         parameters and the inputs in two runs, or declare the input as a parameter"
     )]
     ParameterSeedWithInputs {
         /// The parameter's name.

@@ -5,9 +5,13 @@
 //!
 //! Evaluation knows nothing of time stepping: nothing here imports [`crate::integrate`].
 
+mod diagnosis;
+pub use diagnosis::diagnose;
+pub(crate) use diagnosis::non_finite_at;
+
 use crate::constraints::{ConstraintCounts, ContactModel};
 use crate::dynamics::{solve_accelerations, EquationsOfMotion};
-use crate::error::{describe_configuration, Error, Result};
+use crate::error::{Error, Result};
 use crate::geometry::Scalar;
 use crate::model::{check_state, Coordinates, State};
 use nalgebra::SMatrix;
@@ -280,6 +284,33 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
         (plain.momenta_at(t, q, v), momentum_rate(&plain, t, q, v))
     }
 
+    /// The declaration's inputs' names, flat (its `#[inputs]` struct's
+    /// [`Inputs::NAMES`](crate::inputs::Inputs::NAMES)), empty without `#[inputs]`: what a
+    /// sensitivity seed on an input is named by.
+    const INPUT_NAMES: &'static [&'static str] = &[];
+
+    /// q̈ at (t, q, q̇) with the inputs `inputs` (flat, in the order of
+    /// [`INPUT_NAMES`](Dynamics::INPUT_NAMES), zeros where it has fewer) of the same scalar as the
+    /// state, so dual numbers seeded on inputs carry ∂q̈/∂u: the declaration's forces read them
+    /// through [`WithInputs`](crate::inputs::WithInputs) on that scalar, and q̈ is the generic
+    /// solve of [`crate::dynamics`] (of [`crate::constraints`] with constraint rows, in the mode
+    /// inferred from the state). `#[mechanism]` writes it for a declaration with `#[inputs]`; the
+    /// default refuses ([`Error::UnsuitableMethod`]: no inputs to read).
+    #[inline]
+    fn accelerations_with_inputs_at<S: Scalar>(
+        &self,
+        inputs: &[S],
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> Result<[S; N]> {
+        let _ = (inputs, t, q, v);
+        Err(Error::UnsuitableMethod {
+            method: "accelerations_with_inputs_at",
+            reason: "the mechanism declares no inputs".to_string(),
+        })
+    }
+
     /// Mechanisms with holonomic constraints: their values g(q, t) at (t, q), for any scalar, in
     /// declaration order and padded with zeros to N entries (see
     /// [`crate::constraints::holonomic_values`]); `None` (the default) when the implementation
@@ -545,46 +576,4 @@ pub fn momentum_rate<M: Evaluate<N>, S: Scalar, const N: usize>(
         Some(grad) => std::array::from_fn(|k| grad[k] + forces[k]),
         None => forces.into(),
     }
-}
-
-/// Re-examines an error of the accelerations at (t, q, q̇) for its real cause: a mass matrix
-/// reported singular because one of its entries overflowed (a coordinate of 1e300 in a mass
-/// matrix that grows like its square, or the stage of a step that blew up) is
-/// [`Error::NonFiniteDynamics`] at that state, not a singular matrix with a meaningless pivot. Other
-/// errors pass unchanged. Only called on the error path.
-#[cold]
-#[inline(never)]
-pub fn diagnose<M: Evaluate<N>, const N: usize>(
-    mechanism: &M,
-    t: f64,
-    q: &[f64; N],
-    v: &[f64; N],
-    error: Error,
-) -> Error {
-    if let Error::SingularMassMatrix { .. } = error {
-        let m = mechanism.equations_of_motion_at(t, q, v).mass_matrix;
-        if !m.iter().all(|x| x.is_finite()) {
-            return non_finite_at::<M::Coords, N>(t, q, Some(v));
-        }
-    }
-    error
-}
-
-/// [`Error::NonFiniteDynamics`] at (t, q), naming the velocities too when they were an input (a
-/// huge velocity overflows T while q is harmless).
-#[cold]
-#[inline(never)]
-pub(crate) fn non_finite_at<C: Coordinates<N>, const N: usize>(
-    t: f64,
-    q: &[f64; N],
-    v: Option<&[f64; N]>,
-) -> Error {
-    let mut configuration = describe_configuration(&C::NAMES, q);
-    if let Some(v) = v {
-        configuration = format!(
-            "{configuration}, velocities ({})",
-            describe_configuration(&C::NAMES, v)
-        );
-    }
-    Error::NonFiniteDynamics { t, configuration }
 }

@@ -33,6 +33,11 @@
 /// [`Constraints`](crate::constraints::Constraints): accelerations solve the constrained system,
 /// integrators project after every step and refuse inconsistent states.
 ///
+/// `impl_mechanism!(Type, N, K, inputs NU)` is for a model without constraints whose forces read
+/// `NU` inputs: it implements [`ActuatedModel`](crate::inputs::ActuatedModel) and
+/// [`Actuated`](crate::inputs::Actuated) too, and every evaluation reads the inputs a
+/// [`Driven`](crate::inputs::Driven) holds (zeros without).
+///
 /// `impl_mechanism!(Type, N, K, affine)` is for a model without constraints whose x is affine in
 /// q with constant coefficients and independent of t (x = A q + c; [`crate::affine`]): its
 /// [`Validated`](crate::Validated) handle computes J = A and the factorisation of the constant
@@ -41,7 +46,7 @@
 #[macro_export]
 macro_rules! impl_mechanism {
     ($ty:ty, $n:tt, $k:tt, constraints) => {
-        $crate::impl_mechanism!(@impl $ty, $n, $k, {
+        $crate::impl_mechanism!(@impl $ty, $n, $k, none, {
             type Contacts = $crate::constraints::ContactState<$k, {
                 use $crate::constraints::Constraints as _;
                 $crate::constraints::row_count(&<$ty>::NAMES)
@@ -88,7 +93,7 @@ macro_rules! impl_mechanism {
         $crate::impl_mechanism!(@prepare_nothing $ty);
     };
     ($ty:ty, $n:tt, $k:tt, affine) => {
-        $crate::impl_mechanism!(@impl $ty, $n, $k, {
+        $crate::impl_mechanism!(@impl $ty, $n, $k, none, {
             type Contacts = $crate::constraints::NoContacts;
             const CONSTRAINT_COUNTS: Option<$crate::constraints::ConstraintCounts> =
                 Some($crate::constraints::ConstraintCounts::NONE);
@@ -115,12 +120,55 @@ macro_rules! impl_mechanism {
         }
     };
     ($ty:ty, $n:tt, $k:tt) => {
-        $crate::impl_mechanism!(@impl $ty, $n, $k, {
+        $crate::impl_mechanism!(@impl $ty, $n, $k, none, {
             type Contacts = $crate::constraints::NoContacts;
             const CONSTRAINT_COUNTS: Option<$crate::constraints::ConstraintCounts> =
                 Some($crate::constraints::ConstraintCounts::NONE);
         });
         $crate::impl_mechanism!(@prepare_nothing $ty);
+    };
+    ($ty:ty, $n:tt, $k:tt, inputs $nu:tt) => {
+        $crate::impl_mechanism!(@impl $ty, $n, $k, [inputs $nu], {
+            type Contacts = $crate::constraints::NoContacts;
+            const CONSTRAINT_COUNTS: Option<$crate::constraints::ConstraintCounts> =
+                Some($crate::constraints::ConstraintCounts::NONE);
+        });
+        $crate::impl_mechanism!(@prepare_nothing $ty);
+    };
+    // M, 𝓕 and b: of the model, or of the model with the inputs its constants hold.
+    (@equations $ty:ty, $n:tt, $k:tt, none) => {
+        fn equations_of_motion_at<S: $crate::Scalar>(
+            &self,
+            _constants: $crate::evaluation::Constants<'_, Self>,
+            t: S,
+            q: &[S; $n],
+            v: &[S; $n],
+        ) -> $crate::dynamics::EquationsOfMotion<S, $n> {
+            $crate::dynamics::equations_of_motion::<$ty, S, $n, $k>(self, t, q, v)
+        }
+    };
+    (@equations $ty:ty, $n:tt, $k:tt, [inputs $nu:tt]) => {
+        fn equations_of_motion_at<S: $crate::Scalar>(
+            &self,
+            constants: $crate::evaluation::Constants<'_, Self>,
+            t: S,
+            q: &[S; $n],
+            v: &[S; $n],
+        ) -> $crate::dynamics::EquationsOfMotion<S, $n> {
+            let held = $crate::inputs::WithInputs::<$ty, f64, $nu>::held(self, constants.inputs);
+            $crate::dynamics::equations_of_motion::<_, S, $n, $k>(&held, t, q, v)
+        }
+        const INPUT_NAMES: &'static [&'static str] = &<<$ty as $crate::inputs::Actuated<$nu>>::Inputs as $crate::inputs::Inputs<$nu>>::NAMES;
+        fn accelerations_with_inputs_at<S: $crate::Scalar>(
+            &self,
+            inputs: &[S],
+            t: S,
+            q: &[S; $n],
+            v: &[S; $n],
+        ) -> $crate::Result<[S; $n]> {
+            let held = $crate::inputs::WithInputs::<$ty, S, $nu>::held(self, inputs);
+            $crate::dynamics::accelerations_generic::<_, S, $n, $k>(&held, t, q, v)
+        }
     };
     (@prepare_nothing $ty:ty) => {
         impl $crate::evaluation::Prepare for $ty {
@@ -130,7 +178,7 @@ macro_rules! impl_mechanism {
             }
         }
     };
-    (@impl $ty:ty, $n:tt, $k:tt, { $($extra:tt)* }) => {
+    (@impl $ty:ty, $n:tt, $k:tt, $inputs:tt, { $($extra:tt)* }) => {
         // A hand-written model reads no parameter through an array: there is nothing to seed.
         impl $crate::parameters::Parametrized<$n, $k, 0> for $ty {
             const PARAMETER_NAMES: [&'static str; 0] = [];
@@ -152,15 +200,7 @@ macro_rules! impl_mechanism {
             fn check_parameters(&self) -> $crate::Result<()> {
                 <$ty as $crate::Model<$n, $k>>::validate(self)
             }
-            fn equations_of_motion_at<S: $crate::Scalar>(
-                &self,
-                _constants: $crate::evaluation::Constants<'_, Self>,
-                t: S,
-                q: &[S; $n],
-                v: &[S; $n],
-            ) -> $crate::dynamics::EquationsOfMotion<S, $n> {
-                $crate::dynamics::equations_of_motion::<$ty, S, $n, $k>(self, t, q, v)
-            }
+            $crate::impl_mechanism!(@equations $ty, $n, $k, $inputs);
             fn kinetic_energy_at<S: $crate::Scalar>(
                 &self,
                 _constants: $crate::evaluation::Constants<'_, Self>,

@@ -106,14 +106,15 @@ pub struct WithInputs<'m, M, U, const NU: usize> {
     inputs: [U; NU],
 }
 
-impl<'m, M, const NU: usize> WithInputs<'m, M, f64, NU> {
-    /// `model` with the inputs a [`Constants`] holds: `inputs` in order, zeros where it has none
-    /// (a mechanism evaluated without inputs).
+impl<'m, M, U: Scalar, const NU: usize> WithInputs<'m, M, U, NU> {
+    /// `model` with the inputs held flat — those a [`Constants`] holds, or dual numbers seeded on
+    /// some of them ([`Dynamics::accelerations_with_inputs_at`](crate::evaluation::Dynamics::accelerations_with_inputs_at)):
+    /// `inputs` in order, zeros where it has none (a mechanism evaluated without inputs).
     #[inline(always)]
-    pub fn held(model: &'m M, inputs: &[f64]) -> Self {
+    pub fn held(model: &'m M, inputs: &[U]) -> Self {
         WithInputs {
             model,
-            inputs: std::array::from_fn(|i| inputs.get(i).copied().unwrap_or(0.0)),
+            inputs: std::array::from_fn(|i| inputs.get(i).copied().unwrap_or(U::zero())),
         }
     }
 }
@@ -341,53 +342,53 @@ impl<E: Evaluate<N>, I: AsRef<[f64]>, const N: usize> Evaluate<N> for Driven<'_,
     }
 }
 
-/// ∂q̈/∂u: how the accelerations of a mechanism without constraint rows change with its inputs at
-/// a state, the inputs at `inputs` — the input matrix B of the linearized system
-/// d/dt (δq, δq̇) = A (δq, δq̇) + [0; B] δu beside [`linearize`](crate::analysis::linearize)'s A.
-/// With M q̈ = 𝓕(u) − b, B = M⁻¹ ∂𝓕/∂u: ∂𝓕/∂u from one pass of the generalized forces on dual
-/// numbers seeded on the inputs ([`WithInputs`] on `DualSVec<f64, NU>`), M⁻¹ from its Cholesky
-/// factor. Exact for inputs that enter the forces non-linearly too.
+/// ∂q̈/∂u: how the accelerations of a mechanism change with its inputs at a state, the inputs at
+/// `inputs` — the input matrix B of the linearized system d/dt (δq, δq̇) = A (δq, δq̇) + [0; B] δu
+/// beside [`linearize`](crate::analysis::linearize)'s A (both at once:
+/// [`linearize_driven`](crate::analysis::linearize_driven)). One evaluation of q̈ on dual numbers
+/// seeded on the inputs
+/// ([`Dynamics::accelerations_with_inputs_at`](crate::evaluation::Dynamics::accelerations_with_inputs_at)):
+/// without constraint rows B = M⁻¹ ∂𝓕/∂u, differentiated through the solve of M q̈ = 𝓕 − b;
+/// with them, through the constrained solve too, in the contact mode the state implies (which
+/// holds for a small enough δu away from a mode change). Exact for inputs that enter the forces
+/// non-linearly too.
 ///
-/// Errors: those of [`Mechanism::accelerations`](crate::Mechanism::accelerations) at the state;
-/// a mechanism with constraint rows ([`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod):
-/// its B is the constrained solve's, not M⁻¹ ∂𝓕/∂u).
-pub fn input_matrix<M, const N: usize, const K: usize, const NU: usize>(
-    mechanism: &M,
-    inputs: &M::Inputs,
-    state: &crate::State<<M as crate::evaluation::Dynamics<N>>::Coords>,
+/// Errors: those of [`Mechanism::accelerations`](crate::Mechanism::accelerations) of the driven
+/// mechanism at the state; non-finite derivatives
+/// ([`Error::NonFiniteDynamics`](crate::Error::NonFiniteDynamics)).
+pub fn input_matrix<E, const N: usize, const NU: usize>(
+    mechanism: &E,
+    inputs: &<E::Model as Actuated<NU>>::Inputs,
+    state: &crate::State<E::Coords>,
 ) -> crate::Result<nalgebra::SMatrix<f64, N, NU>>
 where
-    M: ActuatedModel<N, K, NU> + Actuated<NU> + crate::evaluation::Dynamics<N>,
+    E: Evaluate<N>,
+    E::Model: Actuated<NU>,
 {
     use crate::evaluation::Dynamics;
     use crate::Mechanism;
     use num_dual::DualSVec;
-    if M::CONSTRAINTS != Some(0) {
-        return Err(crate::Error::UnsuitableMethod {
-            method: "input_matrix",
-            reason:
-                "the mechanism has constraint rows: its input matrix is the constrained solve's"
-                    .to_string(),
-        });
-    }
     let u = inputs.to_array();
     let driven = Driven::new(mechanism, u);
     let (q, v) = driven.check(state)?;
     driven.accelerations(state)?;
     let seeded: [DualSVec<f64, NU>; NU] =
         std::array::from_fn(|j| DualSVec::from_re(u[j]).derivative(j));
-    let with = WithInputs::new(mechanism, seeded);
     let constant = |x: &[f64; N]| x.map(DualSVec::<f64, NU>::from_re);
     let t = DualSVec::from_re(state.t);
-    let forces = crate::dynamics::equations_of_motion(&with, t, &constant(&q), &constant(&v))
-        .generalized_forces;
-    let mass_matrix = Dynamics::mass_matrix_at(mechanism, Constants::NONE, state.t, &q);
-    let l = crate::analysis::mass_cholesky::<M, N>(&mass_matrix, state.t, &q)?;
-    let mut b = nalgebra::SMatrix::<f64, N, NU>::zeros();
-    for j in 0..NU {
-        let column =
-            nalgebra::SVector::<f64, N>::from_fn(|i, _| forces[i].eps.0.map_or(0.0, |d| d[j]));
-        b.set_column(j, &crate::linalg::cholesky_substitute(&l, &column));
+    let qdd =
+        mechanism
+            .model()
+            .accelerations_with_inputs_at(&seeded, t, &constant(&q), &constant(&v))?;
+    let b = nalgebra::SMatrix::<f64, N, NU>::from_fn(|i, j| qdd[i].eps.0.map_or(0.0, |d| d[j]));
+    if !b.iter().all(|x| x.is_finite()) {
+        return Err(crate::Error::NonFiniteDynamics {
+            t: state.t,
+            configuration: crate::error::describe_configuration(
+                &<E::Coords as crate::model::Coordinates<N>>::NAMES,
+                &q,
+            ),
+        });
     }
     Ok(b)
 }

@@ -59,6 +59,28 @@ pub trait Parametrized<const N: usize, const K: usize, const NP: usize>: Model<N
         let _ = p;
         self.applied_forces(t, q, v, x, x_dot, cartesian_force, generalized_force)
     }
+
+    /// The applied forces with the parameters `p` and the inputs `inputs` held (a declaration's
+    /// `#[inputs]`, flat, zeros past the end of `inputs`): what a mechanism driven by inputs
+    /// ([`crate::inputs::Driven`]) evaluates with its parameters lifted. The default is
+    /// [`applied_forces_with`](Parametrized::applied_forces_with), right for a model whose forces
+    /// read no inputs; `#[mechanism]` writes it for a declaration with `#[inputs]`.
+    #[allow(clippy::too_many_arguments)]
+    fn applied_forces_with_inputs_held<S: Scalar, D: Scalar>(
+        &self,
+        p: &[S; NP],
+        inputs: &[f64],
+        t: D,
+        q: &[D; N],
+        v: &[D; N],
+        x: &[D; K],
+        x_dot: &[D; K],
+        cartesian_force: &mut [D; K],
+        generalized_force: &mut [D; N],
+    ) {
+        let _ = inputs;
+        self.applied_forces_with(p, t, q, v, x, x_dot, cartesian_force, generalized_force)
+    }
 }
 
 /// A parameter's value `s` as the scalar `D` a generated function evaluates on: `s` itself when
@@ -103,6 +125,8 @@ fn lift_into<S: Scalar, D: DualNum>(s: &S) -> D {
 
 /// A mechanism with its parameters replaced by values of the scalar `S` (dual numbers seeded on some
 /// of them): a [`Model`] whose functions forward to the `*_with` functions of [`Parametrized`].
+/// The inputs of a driven mechanism are held beside them ([`Lifted::with_inputs`]); none by
+/// default (all zero).
 ///
 /// ```
 /// use lagrange_core::parameters::{Lifted, Parametrized};
@@ -145,12 +169,23 @@ fn lift_into<S: Scalar, D: DualNum>(s: &S) -> D {
 pub struct Lifted<'m, M, S, const K: usize, const NP: usize> {
     model: &'m M,
     parameters: [S; NP],
+    inputs: &'m [f64],
 }
 
 impl<'m, M, S: Copy, const K: usize, const NP: usize> Lifted<'m, M, S, K, NP> {
     /// `model` with its parameters replaced by `parameters`.
     pub fn new(model: &'m M, parameters: [S; NP]) -> Self {
-        Lifted { model, parameters }
+        Lifted {
+            model,
+            parameters,
+            inputs: &[],
+        }
+    }
+
+    /// The same with the inputs `inputs` held (flat, as [`crate::evaluation::Constants::inputs`]
+    /// holds them), which its forces read.
+    pub fn with_inputs(self, inputs: &'m [f64]) -> Self {
+        Lifted { inputs, ..self }
     }
 
     /// The mechanism whose parameters are replaced.
@@ -219,8 +254,9 @@ where
         cartesian_force: &mut [D; K],
         generalized_force: &mut [D; N],
     ) {
-        self.model.applied_forces_with(
+        self.model.applied_forces_with_inputs_held(
             &self.parameters,
+            self.inputs,
             t,
             q,
             v,

@@ -8,24 +8,28 @@
 //! Seeded on initial values only, every evaluation is the mechanism's own scalar-generic
 //! accelerations. Seeded on a parameter, the parameters are dual numbers too
 //! ([`crate::parameters::Lifted`]) and the accelerations come from the generic dynamics of
-//! [`crate::dynamics`] on the lifted model. Every step is the method's own code on the dual type:
-//! with a fixed step, RK4's step on the duals is the step (the state is its real parts, the plain
-//! run bit for bit on initial values alone); with Dopri5 the plain step chooses its size and is
-//! taken again on the duals with that size frozen (how the controller's choices depend on the
+//! [`crate::dynamics`] on the lifted model (whose forces read the inputs a driven mechanism
+//! holds). Seeded on an input of a driven mechanism ([`crate::inputs::Driven`]), the inputs are
+//! dual numbers held over the whole run and the forces read them through
+//! [`crate::inputs::WithInputs`] on the seeds' dual type
+//! ([`Dynamics::accelerations_with_inputs_at`]). Every step is the method's own code on the dual
+//! type: with a fixed step, RK4's step on the duals is the step (the state is its real parts, the
+//! plain run bit for bit on initial values alone); with Dopri5 the plain step chooses its size and
+//! is taken again on the duals with that size frozen (how the controller's choices depend on the
 //! seeds is not differentiated, which changes the result by about the tolerance). A step with `P`
 //! seeds costs one pass of the accelerations on duals of width `P` per stage. The example is on
 //! [`Stepper::with_sensitivities`].
 
 use crate::dynamics::accelerations_generic;
 use crate::error::{Error, Result};
-use crate::evaluation::{diagnose, Evaluate};
+use crate::evaluation::{diagnose, Dynamics, Evaluate};
 use crate::integrate::{EmbeddedPair, Integrator, Method, Stats, Stepper, Tangent};
 use crate::model::{Coordinates, State};
 use crate::parameters::{Lifted, Parametrized};
 use num_dual::DualSVec;
 
-/// What to differentiate by: an initial value, named by its coordinate, or a parameter, named by
-/// its field.
+/// What to differentiate by: an initial value, named by its coordinate, a parameter, named by its
+/// field, or an input, named by its field.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Seed {
     /// The initial value of the coordinate (q₀).
@@ -36,6 +40,29 @@ pub enum Seed {
     /// the forces; not a mass, a moment of inertia or a uniform field's strength
     /// ([`Error::UnseedableParameter`]).
     Parameter(&'static str),
+    /// An input of the mechanism's `#[inputs]`, named as in
+    /// [`Inputs::NAMES`](crate::inputs::Inputs::NAMES) (`tau[1]` for an element of an array
+    /// field), held at its value over the whole run: on `sys.driven(&u)` the derivative is by
+    /// that input of `u` held constant from now on.
+    ///
+    /// ```
+    /// use lagrange_core::integrate::Stepper;
+    /// use lagrange_core::sensitivity::Seed;
+    /// # use lagrange_core::analysis::doc_models::{DrivenPendulum, Pendulum, Torque};
+    /// use lagrange_core::{Integrator, Mechanism, Rk4, State};
+    /// // A pendulum (m = 2, l = 1, g = 9.81) at rest, a torque τ = 0 held at its pivot: the
+    /// // tangent follows m l² δθ̈ = δτ − m g l δθ, so ∂θ(t)/∂τ = (1 − cos ωt) / (m g l), ω² = g/l.
+    /// let sys = DrivenPendulum(Pendulum { m: 2.0, l: 1.0, g: 9.81 });
+    /// let driven = sys.driven(&Torque { tau: 0.0 });
+    /// let mut run = Stepper::new(&driven, Rk4::with_step(1e-3), &State::at_rest([0.0]))?
+    ///     .with_sensitivities([Seed::Input("tau")])?;
+    /// run.integrate(1.0, &mut [], |_| {})?;
+    /// let by_tau = run.sensitivities().dq[0][0];
+    /// // RK4's error over the run, ~(ωh)⁴ ωt, is ~1e-11.
+    /// assert!((by_tau - (1.0 - 9.81f64.sqrt().cos()) / (2.0 * 9.81)).abs() < 1e-9);
+    /// # Ok::<(), lagrange_core::Error>(())
+    /// ```
+    Input(&'static str),
 }
 
 impl Seed {
@@ -44,7 +71,7 @@ impl Seed {
         match self {
             Seed::Coordinate(name) => format!("{name}(0)"),
             Seed::Velocity(name) => format!("{name}_dot(0)"),
-            Seed::Parameter(name) => name.to_string(),
+            Seed::Parameter(name) | Seed::Input(name) => name.to_string(),
         }
     }
 }
@@ -64,23 +91,40 @@ pub struct Sensitivities<C, const P: usize> {
 }
 
 /// The tangent of a trajectory a [`Stepper`] carries ([`Stepper::with_sensitivities`]): the
-/// state on dual numbers of width `P`, one per seed, and the parameters lifted to them where a
-/// parameter is seeded. `K` and `NP` are the model's Cartesian rows and parameters (inferred
-/// from its [`Parametrized`] implementation).
+/// state on dual numbers of width `P`, one per seed, the parameters lifted to them where a
+/// parameter is seeded and the inputs where an input is. `K` and `NP` are the model's Cartesian
+/// rows and parameters (inferred from its [`Parametrized`] implementation).
 pub struct SeededTangent<'m, L, const N: usize, const K: usize, const NP: usize, const P: usize> {
     lifted: Lifted<'m, L, DualSVec<f64, P>, K, NP>,
-    /// Whether a parameter is seeded: then the accelerations come from the lifted model.
-    by_parameter: bool,
+    /// Where the accelerations on the duals come from.
+    by: SeededOn,
+    /// The inputs held over the run, flat, on the duals (seeded where an input is); empty unless
+    /// an input is seeded.
+    inputs: Vec<DualSVec<f64, P>>,
     seeds: [Seed; P],
     q: [DualSVec<f64, P>; N],
     v: [DualSVec<f64, P>; N],
+}
+
+/// What the seeds of a tangent reach beyond the state, and so which accelerations it evaluates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum SeededOn {
+    /// Initial values only: the mechanism's own accelerations.
+    State,
+    /// A parameter: the lifted model's.
+    Parameters,
+    /// An input: the model's with the inputs on the duals.
+    Inputs,
 }
 
 impl<L, const N: usize, const K: usize, const NP: usize, const P: usize> Clone
     for SeededTangent<'_, L, N, K, NP, P>
 {
     fn clone(&self) -> Self {
-        SeededTangent { ..*self }
+        SeededTangent {
+            inputs: self.inputs.clone(),
+            ..*self
+        }
     }
 }
 
@@ -100,10 +144,10 @@ impl<L, const N: usize, const K: usize, const NP: usize, const P: usize> std::fm
 impl<'m, L, const N: usize, const K: usize, const NP: usize, const P: usize>
     SeededTangent<'m, L, N, K, NP, P>
 where
-    L: Parametrized<N, K, NP>,
+    L: Parametrized<N, K, NP> + Dynamics<N>,
 {
-    /// q̈ on the duals: the mechanism's own accelerations, or the lifted model's when a parameter
-    /// is seeded.
+    /// q̈ on the duals: the mechanism's own accelerations, the lifted model's when a parameter is
+    /// seeded, the model's with the inputs on the duals when an input is.
     fn accelerations<M: Evaluate<N, Model = L>>(
         &self,
         mechanism: &M,
@@ -112,10 +156,16 @@ where
         v: &[DualSVec<f64, P>; N],
     ) -> Result<[DualSVec<f64, P>; N]> {
         let t_dual = DualSVec::from_re(t);
-        let a = if self.by_parameter {
-            accelerations_generic(&self.lifted, t_dual, q, v)
-        } else {
-            mechanism.accelerations_at(t_dual, q, v)
+        let a = match self.by {
+            SeededOn::State => mechanism.accelerations_at(t_dual, q, v),
+            SeededOn::Parameters => accelerations_generic(&self.lifted, t_dual, q, v),
+            SeededOn::Inputs => Dynamics::accelerations_with_inputs_at(
+                mechanism.model(),
+                &self.inputs,
+                t_dual,
+                q,
+                v,
+            ),
         };
         a.map_err(|e| {
             let (qr, vr) = (q.map(|x| x.re), v.map(|x| x.re));
@@ -128,7 +178,7 @@ impl<'m, M, L, const N: usize, const K: usize, const NP: usize, const P: usize> 
     for SeededTangent<'m, L, N, K, NP, P>
 where
     M: Evaluate<N, Model = L>,
-    L: Parametrized<N, K, NP>,
+    L: Parametrized<N, K, NP> + Dynamics<N>,
 {
     const ACTIVE: bool = true;
 
@@ -173,11 +223,14 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
     /// derivative 1 along each seed: after any steps, [`sensitivities`](Stepper::sensitivities)
     /// are the derivatives of the state with respect to the seeds' values now.
     ///
-    /// Errors: a seed naming no coordinate ([`Error::UnknownCoordinate`]) or no parameter
-    /// ([`Error::UnknownParameter`]), a parameter that carries no derivative
-    /// ([`Error::UnseedableParameter`]), a mechanism that declares constraints or does not say
-    /// (the projection onto the constraints is not differentiated), a method whose steps are not
-    /// taken on dual numbers (with a fixed step RK4, adaptively Dopri5) ([`Error::UnsuitableMethod`]).
+    /// Errors: a seed naming no coordinate ([`Error::UnknownCoordinate`]), no parameter
+    /// ([`Error::UnknownParameter`]) or no input ([`Error::UnknownInput`], also on a mechanism
+    /// that declares none), a parameter that carries no derivative
+    /// ([`Error::UnseedableParameter`]), a parameter seeded beside an input
+    /// ([`Error::ParameterSeedWithInputs`]), a mechanism that declares constraints or does not
+    /// say (the projection onto the constraints is not differentiated), a method whose steps are
+    /// not taken on dual numbers (with a fixed step RK4, adaptively Dopri5)
+    /// ([`Error::UnsuitableMethod`]).
     ///
     /// ```
     /// use lagrange_core::integrate::Stepper;
@@ -231,29 +284,40 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
             Seed::Parameter(name) => Some(*name),
             _ => None,
         });
-        if let (Some(name), false) = (parameter, self.mechanism.prepared().inputs.is_empty()) {
+        let held = self.mechanism.prepared().inputs;
+        let input_seeded = seeds.iter().any(|seed| matches!(seed, Seed::Input(_)));
+        if let (Some(name), true) = (parameter, input_seeded) {
             return Err(Error::ParameterSeedWithInputs { name });
         }
-        let tangent =
-            seeded::<M::Coords, _, N, K, NP, P>(self.mechanism.model(), (&self.q, &self.v), seeds)?;
+        let tangent = seeded::<M::Coords, _, N, K, NP, P>(
+            self.mechanism.model(),
+            (&self.q, &self.v),
+            held,
+            seeds,
+        )?;
         Ok(self.carrying(tangent))
     }
 }
 
-/// The tangent at (q, q̇) seeded on `seeds`, the coordinates named as `C`.
+/// The tangent at (q, q̇) with the inputs `held` (flat, zeros where it has fewer than the
+/// declaration) seeded on `seeds`, the coordinates named as `C`.
 fn seeded<'m, C, L, const N: usize, const K: usize, const NP: usize, const P: usize>(
     model: &'m L,
     (q0, v0): (&[f64; N], &[f64; N]),
+    held: &'m [f64],
     seeds: [Seed; P],
 ) -> Result<SeededTangent<'m, L, N, K, NP, P>>
 where
     C: Coordinates<N>,
-    L: Parametrized<N, K, NP>,
+    L: Parametrized<N, K, NP> + Dynamics<N>,
 {
     let mut q: [DualSVec<f64, P>; N] = std::array::from_fn(|i| DualSVec::from_re(q0[i]));
     let mut v: [DualSVec<f64, P>; N] = std::array::from_fn(|i| DualSVec::from_re(v0[i]));
     let mut p: [DualSVec<f64, P>; NP] = model.parameters().map(DualSVec::from_re);
-    let mut by_parameter = false;
+    let mut inputs: Vec<DualSVec<f64, P>> = (0..L::INPUT_NAMES.len())
+        .map(|i| DualSVec::from_re(held.get(i).copied().unwrap_or(0.0)))
+        .collect();
+    let mut by = SeededOn::State;
     for (j, seed) in seeds.iter().enumerate() {
         match seed {
             Seed::Coordinate(name) => {
@@ -267,13 +331,22 @@ where
             Seed::Parameter(name) => {
                 let i = parameter::<L, N, K, NP>(name)?;
                 p[i] = p[i].derivative(j);
-                by_parameter = true;
+                by = SeededOn::Parameters;
+            }
+            Seed::Input(name) => {
+                let i = input::<L, N>(name)?;
+                inputs[i] = inputs[i].derivative(j);
+                by = SeededOn::Inputs;
             }
         }
     }
+    if by != SeededOn::Inputs {
+        inputs.clear();
+    }
     Ok(SeededTangent {
-        lifted: Lifted::new(model, p),
-        by_parameter,
+        lifted: Lifted::new(model, p).with_inputs(held),
+        by,
+        inputs,
         seeds,
         q,
         v,
@@ -340,6 +413,25 @@ fn parameter<M: Parametrized<N, K, NP>, const N: usize, const K: usize, const NP
         });
     }
     Ok(i)
+}
+
+/// Index of `name` among the declaration's inputs, or [`Error::UnknownInput`] (a mechanism
+/// without `#[inputs]` has none).
+fn input<L: Dynamics<N>, const N: usize>(name: &str) -> Result<usize> {
+    L::INPUT_NAMES
+        .iter()
+        .position(|n| *n == name)
+        .ok_or_else(|| Error::UnknownInput {
+            name: name.to_string(),
+            known: match L::INPUT_NAMES {
+                [] => "none (the mechanism declares no `#[inputs]`)".to_string(),
+                names => names
+                    .iter()
+                    .map(|n| format!("`{n}`"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            },
+        })
 }
 
 fn constrained() -> Error {

@@ -129,3 +129,89 @@ impl crate::constraints::Constraints<2, 2, 1> for CartesianPendulum {
     }
 }
 impl_mechanism!(CartesianPendulum, 2, 2, constraints);
+
+/// [`Pendulum`] driven by a torque τ at its pivot (the one input, [`Torque`]):
+/// m l² θ̈ = τ − m g l sin θ.
+#[derive(Clone, Copy, Debug)]
+pub struct DrivenPendulum(pub Pendulum);
+
+/// The input of [`DrivenPendulum`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Torque {
+    /// The torque at the pivot.
+    pub tau: f64,
+}
+
+impl crate::inputs::Inputs<1> for Torque {
+    const NAMES: [&'static str; 1] = ["tau"];
+    fn to_array(&self) -> [f64; 1] {
+        [self.tau]
+    }
+    fn from_array([tau]: [f64; 1]) -> Self {
+        Torque { tau }
+    }
+}
+
+impl crate::inputs::Actuated<1> for DrivenPendulum {
+    type Inputs = Torque;
+}
+
+impl Model<1, 2> for DrivenPendulum {
+    type Coords = [f64; 1];
+    const RHEONOMIC: bool = false;
+    const HAS_POTENTIAL: bool = true;
+    const HAS_FORCES: bool = true;
+    fn validate(&self) -> Result<()> {
+        self.0.validate()
+    }
+    fn masses(&self) -> [f64; 2] {
+        self.0.masses()
+    }
+    fn cartesian<D: Scalar>(&self, t: D, q: &[D; 1]) -> [D; 2] {
+        self.0.cartesian(t, q)
+    }
+    fn potential<D: Scalar>(&self, t: D, q: &[D; 1], x: &[D; 2]) -> D {
+        self.0.potential(t, q, x)
+    }
+    #[allow(clippy::too_many_arguments)]
+    fn applied_forces<S: Scalar>(
+        &self,
+        t: S,
+        q: &[S; 1],
+        v: &[S; 1],
+        x: &[S; 2],
+        x_dot: &[S; 2],
+        cartesian_force: &mut [S; 2],
+        generalized_force: &mut [S; 1],
+    ) {
+        use crate::inputs::ActuatedModel;
+        let zero = [0.0];
+        self.applied_forces_with_inputs(
+            &zero,
+            t,
+            q,
+            v,
+            x,
+            x_dot,
+            cartesian_force,
+            generalized_force,
+        )
+    }
+}
+
+impl crate::inputs::ActuatedModel<1, 2, 1> for DrivenPendulum {
+    fn applied_forces_with_inputs<S: Scalar, U: Scalar>(
+        &self,
+        u: &[U; 1],
+        _t: S,
+        _q: &[S; 1],
+        _v: &[S; 1],
+        _x: &[S; 2],
+        _x_dot: &[S; 2],
+        _cartesian_force: &mut [S; 2],
+        generalized_force: &mut [S; 1],
+    ) {
+        generalized_force[0] += crate::inputs::input::<U, S>(&u[0]);
+    }
+}
+impl_mechanism!(DrivenPendulum, 1, 2, inputs 1);

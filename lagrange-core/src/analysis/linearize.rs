@@ -2,6 +2,7 @@
 
 use super::to_dmatrix;
 use crate::error::{Error, Result};
+use crate::inputs::{Actuated, Inputs as _};
 use crate::mechanism::Mechanism;
 use crate::model::State;
 use nalgebra::{DMatrix, SMatrix};
@@ -24,7 +25,8 @@ use num_dual::DualSVec;
 /// M q̈ = 𝓕 − b + u; hence B = [0; M⁻¹] ([`Linearization::b_matrix`]). A declared input acting as a
 /// direct generalized force on coordinate k is column k of B. An input that is a Cartesian force
 /// F on a point with Jacobian Jₚ = ∂rₚ/∂q enters as u = Jₚᵀ F, so its B is [0; M⁻¹Jₚᵀ]; inputs that
-/// enter the forces non-linearly need their own derivative and are not covered here.
+/// enter the forces non-linearly need their own derivative: for a declaration's `#[inputs]`,
+/// [`linearize_driven`] gives B for the inputs themselves.
 ///
 /// ```
 /// use lagrange_core::analysis::linearize;
@@ -192,5 +194,84 @@ pub fn linearize<M: Mechanism<N>, const N: usize>(
         dqdd_dq,
         dqdd_dv,
         dqdd_du,
+    })
+}
+
+/// The linearization of a mechanism driven by its declared inputs `u₀` about a state: A at the
+/// driven state, and the input matrix of the inputs themselves,
+///
+/// ```text
+/// d/dt δx = ẋ₀ + A δx + B δu,   B = [ 0       ]  (2N × NU),
+///                                   [ ∂q̈/∂u ]
+/// ```
+///
+/// δu the change of the inputs from `u₀`, in the order of
+/// [`Inputs::NAMES`](crate::inputs::Inputs::NAMES). What [`linearize_driven`] returns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DrivenLinearization<const N: usize, const NU: usize> {
+    /// The linearization of the driven mechanism (its `dqdd_du` is M⁻¹, for generalized forces
+    /// on every coordinate; the declared inputs' are
+    /// [`dqdd_dinputs`](DrivenLinearization::dqdd_dinputs)).
+    pub linearization: Linearization<N>,
+    /// The inputs linearized about, flat.
+    pub inputs: [f64; NU],
+    /// ∂q̈/∂u: column j for input j.
+    pub dqdd_dinputs: SMatrix<f64, N, NU>,
+}
+
+impl<const N: usize, const NU: usize> DrivenLinearization<N, NU> {
+    /// A, 2N × 2N (see [`Linearization::a_matrix`]).
+    pub fn a_matrix(&self) -> DMatrix<f64> {
+        self.linearization.a_matrix()
+    }
+
+    /// B = [0; ∂q̈/∂u], 2N × NU: rows (q₀ … q_{N−1}, v₀ … v_{N−1}), a column per input.
+    pub fn b_matrix(&self) -> DMatrix<f64> {
+        let mut b = DMatrix::zeros(2 * N, NU);
+        b.view_mut((N, 0), (N, NU))
+            .copy_from(&to_dmatrix(&self.dqdd_dinputs));
+        b
+    }
+}
+
+/// Linearizes a mechanism with `#[inputs]` about `state` with the inputs `inputs` held:
+/// [`linearize`] of `mechanism.driven(inputs)`, and ∂q̈/∂u for the declared inputs
+/// ([`input_matrix`](crate::inputs::input_matrix): q̈ on dual numbers seeded on the inputs,
+/// through the constrained solve where the mechanism has constraint rows). Exact.
+///
+/// Errors: those of [`linearize`] and of [`input_matrix`](crate::inputs::input_matrix). The state
+/// is not modified.
+///
+/// ```
+/// use lagrange_core::analysis::linearize_driven;
+/// # use lagrange_core::analysis::doc_models::{DrivenPendulum, Pendulum, Torque};
+/// use lagrange_core::State;
+/// // A pendulum (m = 2, l = 3, g = 9.81) driven by a torque τ at its pivot:
+/// // m l² θ̈ = τ − m g l sin θ.
+/// let sys = DrivenPendulum(Pendulum { m: 2.0, l: 3.0, g: 9.81 });
+/// let lin = linearize_driven(&sys, &State::at_rest([0.0]), &Torque { tau: 1.0 })?;
+/// assert!((lin.linearization.accelerations[0] - 1.0 / 18.0).abs() < 1e-15);
+/// assert!((lin.dqdd_dinputs[(0, 0)] - 1.0 / 18.0).abs() < 1e-15);
+/// // B = [0; 1/(m l²)], beside A = [[0, 1], [−g/l, 0]].
+/// assert_eq!(lin.b_matrix().shape(), (2, 1));
+/// assert!((lin.b_matrix()[(1, 0)] - 1.0 / 18.0).abs() < 1e-15);
+/// assert!((lin.a_matrix()[(1, 0)] + 9.81 / 3.0).abs() < 1e-12);
+/// # Ok::<(), lagrange_core::Error>(())
+/// ```
+pub fn linearize_driven<E, const N: usize, const NU: usize>(
+    mechanism: &E,
+    state: &State<E::Coords>,
+    inputs: &<E::Model as Actuated<NU>>::Inputs,
+) -> Result<DrivenLinearization<N, NU>>
+where
+    E: Mechanism<N>,
+    E::Model: Actuated<NU>,
+{
+    let linearization = linearize(&mechanism.driven(inputs), state)?;
+    let dqdd_dinputs = crate::inputs::input_matrix(mechanism, inputs, state)?;
+    Ok(DrivenLinearization {
+        linearization,
+        inputs: inputs.to_array(),
+        dqdd_dinputs,
     })
 }

@@ -64,7 +64,7 @@ mod stability;
 pub use constrained::{constrained_equilibrium, ConstrainedEquilibrium};
 pub use continuation::{continuation, Branch, BranchPoint};
 pub use equilibrium::{equilibrium, unbalanced_forces, Equilibrium, EquilibriumOptions};
-pub use linearize::{linearize, Linearization};
+pub use linearize::{linearize, linearize_driven, DrivenLinearization, Linearization};
 pub use modes::{normal_modes, NormalModes};
 pub use stability::{stability, Stability, StabilityAnalysis, StabilityMethod, MARGINAL_TOLERANCE};
 

@@ -65,6 +65,36 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
     }
 }
 
+/// The `Dynamics` items of a declaration with `nu` inputs (N = `n`, K = `k`, `constrained` rows):
+/// the inputs' names, and q̈ with inputs of the state's scalar — the generic solve on the
+/// declaration with those inputs held (`WithInputs`), the constrained one where it has rows.
+pub(super) fn dynamics_items(
+    n: usize,
+    k: usize,
+    nu: usize,
+    constrained: Option<usize>,
+) -> TokenStream {
+    let p = private();
+    let (n, k, nu) = (lit(n), lit(k), lit(nu));
+    let held =
+        quote!(#p::lagrange_core::inputs::WithInputs::<'_, Self, S, #nu>::held(self, inputs));
+    let solve = match constrained {
+        Some(c) => {
+            let c = lit(c);
+            quote!(#p::lagrange_core::constraints::accelerations::<_, S, #n, #k, #c>(&#held, t, q, v))
+        }
+        None => quote!(#p::dynamics::accelerations_generic::<_, S, #n, #k>(&#held, t, q, v)),
+    };
+    quote! {
+        const INPUT_NAMES: &'static [&'static str] =
+            &<<Self as #p::lagrange_core::inputs::Actuated<#nu>>::Inputs as #p::lagrange_core::inputs::Inputs<#nu>>::NAMES;
+        #[inline]
+        fn accelerations_with_inputs_at<S: #p::Scalar>(&self, inputs: &[S], t: S, q: &[S; #n], v: &[S; #n]) -> #p::Result<[S; #n]> {
+            #solve
+        }
+    }
+}
+
 /// The coordinate each input acts on, in input order, where every input is the whole of one
 /// `#[generalized_force(on = q)]` (`{ u }`, or `{ tau[2] }` for an element) named by no other
 /// force, each on a coordinate of its own; `None` otherwise.

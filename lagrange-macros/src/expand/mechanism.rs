@@ -1,8 +1,11 @@
 //! The `Dynamics` impl (with `Prepare`): how the equations are evaluated, with or without the
 //! constants a validated handle prepares, and the constraint hooks of a constrained mechanism.
 
+mod hooks;
+
 use super::{lit, private};
-use crate::check::{Chart, ChartKind};
+use crate::check::Chart;
+use hooks::{constraint_hooks, switch_charts};
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
@@ -124,6 +127,8 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let mass_matrix = mass_matrix(glue);
     let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
     let switch_charts = switch_charts(glue);
+    let inputs =
+        (glue.inputs).map(|nu| super::inputs::dynamics_items(glue.n, glue.k, nu, glue.constrained));
     quote! {
         #prepare
         impl #p::Dynamics<#n> for #params {
@@ -158,33 +163,9 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
             #canonical
             #constraint_hooks
             #switch_charts
+            #inputs
         }
     }
-}
-
-/// A declaration with rotation charts keeps each regular after every step
-/// (`lagrange_core::geometry::switch_chart`); without, the trait's default (no switch).
-fn switch_charts(glue: &Glue) -> Option<TokenStream> {
-    if glue.charts.is_empty() {
-        return None;
-    }
-    let p = private();
-    let n = lit(glue.n);
-    let geometry = quote!(#p::lagrange_core::geometry);
-    let switches = glue.charts.iter().map(|chart| {
-        let kind = match chart.kind {
-            ChartKind::Vector => quote!(Vector),
-            ChartKind::Mrp => quote!(Mrp),
-        };
-        let slots = chart.slots.map(lit);
-        quote!(#geometry::switch_chart(#geometry::RotationChart::#kind, [#(#slots),*], q, v))
-    });
-    Some(quote! {
-        #[inline]
-        fn switch_charts<S: #p::Scalar>(&self, q: &mut [S; #n], v: &mut [S; #n]) -> bool {
-            false #(| #switches)*
-        }
-    })
 }
 
 /// The declaration's constraint rows by kind, and its contact modes: `ContactState` over its rows
@@ -574,51 +555,5 @@ fn prepare_impl(params: &Ident, n: &Literal, k: &Literal, prepared: Prepared) ->
                 }
             }
         },
-    }
-}
-
-/// The hooks of a constrained mechanism that make every integrator enforce its constraints: the
-/// rows' values, the projection after a step (from an affine mechanism's prepared constants
-/// through a handle), the checks of the declaration and of a state.
-fn constraint_hooks(glue: &Glue, c: Literal) -> TokenStream {
-    let p = private();
-    let (n, k) = glue.sizes();
-    let constraints = quote!(#p::lagrange_core::constraints);
-    let plain_projection = quote!({
-        let mode = #constraints::infer_mode::<Self, #n, #k, #c>(self, t, q, v)?;
-        #constraints::project::<Self, #n, #k, #c>(self, t, q, v, &mode)
-    });
-    let projection = match glue.prepared() {
-        Prepared::Affine { .. } => quote! {
-            match prepared {
-                #p::core::option::Option::Some(prepared) => {
-                    #constraints::project_prepared::<Self, #n, #k, #c>(self, prepared, t, q, v)
-                }
-                #p::core::option::Option::None => #plain_projection,
-            }
-        },
-        _ => quote!({
-            let _ = prepared;
-            #plain_projection
-        }),
-    };
-    quote! {
-        #[inline]
-        fn holonomic_constraints_at<S: #p::Scalar>(&self, t: S, q: &[S; #n]) -> #p::core::option::Option<[S; #n]> {
-            #p::core::option::Option::Some(#constraints::holonomic_values::<Self, S, #n, #k, #c>(self, t, q))
-        }
-        fn project(&self, __constants: #p::lagrange_core::evaluation::Constants<'_, Self>, t: f64, q: &mut [f64; #n], v: &mut [f64; #n]) -> #p::Result<()> {
-            let prepared = __constants.prepared;
-            #projection
-        }
-        // Inlined (the mechanism is often declared in another crate than the caller): without
-        // velocity rows the check is a constant `Ok`.
-        #[inline]
-        fn check_declaration_at(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
-            #constraints::check_velocity_rows_affine::<Self, #n, #k, #c>(self, t, q, v)
-        }
-        fn check_constraints(&self, t: f64, q: &[f64; #n], v: &[f64; #n]) -> #p::Result<()> {
-            #constraints::check_consistent::<Self, #n, #k, #c>(self, t, q, v, #constraints::CONSISTENCY_TOLERANCE)
-        }
     }
 }

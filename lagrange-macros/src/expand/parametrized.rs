@@ -49,6 +49,8 @@ pub(super) fn parametrized_items(model: &Model) -> TokenStream {
     let has_potential = !model.potentials.is_empty() || !model.gravities.is_empty();
     let potential = has_potential.then(|| potential_fn(model, Params::Array));
     let forces = (!model.forces.is_empty()).then(|| applied_forces_fn(model, Forces::Parametrized));
+    let held = (!model.forces.is_empty() && model.input_count().is_some())
+        .then(|| applied_forces_fn(model, Forces::ParametrizedHeld));
     quote! {
         impl #params {
             #bodies
@@ -64,6 +66,7 @@ pub(super) fn parametrized_items(model: &Model) -> TokenStream {
             #cartesian
             #potential
             #forces
+            #held
         }
     }
 }

@@ -568,6 +568,34 @@ pub mod motor {
                 )
             }
         }
+        const INPUT_NAMES: &'static [&'static str] = &<<Self as ::lagrange::__private::lagrange_core::inputs::Actuated<
+            1,
+        >>::Inputs as ::lagrange::__private::lagrange_core::inputs::Inputs<1>>::NAMES;
+        #[inline]
+        fn accelerations_with_inputs_at<S: ::lagrange::__private::Scalar>(
+            &self,
+            inputs: &[S],
+            t: S,
+            q: &[S; 1],
+            v: &[S; 1],
+        ) -> ::lagrange::__private::Result<[S; 1]> {
+            ::lagrange::__private::dynamics::accelerations_generic::<
+                _,
+                S,
+                1,
+                3,
+            >(
+                &::lagrange::__private::lagrange_core::inputs::WithInputs::<
+                    '_,
+                    Self,
+                    S,
+                    1,
+                >::held(self, inputs),
+                t,
+                q,
+                v,
+            )
+        }
     }
     impl ::lagrange::__private::lagrange_core::declaration::Declaration for Motor {
         const DOF: usize = 1;
@@ -654,13 +682,49 @@ pub mod motor {
             let __bodies = self.__lagrange_bodies_with(__p, __t, __q);
             [__bodies.disc.position.x, __bodies.disc.position.y, __bodies.disc.angle]
         }
-        #[allow(unused_variables, clippy::all)]
+        #[inline(always)]
         fn applied_forces_with<
             __S: ::lagrange::__private::Scalar,
             __D: ::lagrange::__private::Scalar,
         >(
             &self,
             __p: &[__S; 2],
+            __t: __D,
+            __q: &[__D; 1],
+            __v: &[__D; 1],
+            __x: &[__D; 3],
+            __x_dot: &[__D; 3],
+            __cartesian_force: &mut [__D; 3],
+            __generalized_force: &mut [__D; 1],
+        ) {
+            <Self as ::lagrange::__private::parameters::Parametrized<
+                1,
+                3,
+                2,
+            >>::applied_forces_with_inputs_held::<
+                __S,
+                __D,
+            >(
+                self,
+                __p,
+                &[],
+                __t,
+                __q,
+                __v,
+                __x,
+                __x_dot,
+                __cartesian_force,
+                __generalized_force,
+            )
+        }
+        #[allow(unused_variables, clippy::all)]
+        fn applied_forces_with_inputs_held<
+            __S: ::lagrange::__private::Scalar,
+            __D: ::lagrange::__private::Scalar,
+        >(
+            &self,
+            __p: &[__S; 2],
+            __u: &[f64],
             __t: __D,
             __q: &[__D; 1],
             __v: &[__D; 1],
@@ -678,7 +742,7 @@ pub mod motor {
             use ::lagrange::__private::DualNum as _;
             let [theta] = *__q;
             let c: __D = ::lagrange::__private::parameters::lift::<__S, __D>(&__p[1]);
-            let tau: __D = <__D>::from(0.0);
+            let tau: __D = <__D>::from(__u.get(0).copied().unwrap_or(0.0));
             let [theta_dot] = *__v;
             let __generalized_force_drive: __D = { tau - c * theta_dot };
             __generalized_force[0] += __generalized_force_drive;

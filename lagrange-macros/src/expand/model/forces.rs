@@ -16,8 +16,12 @@ use quote::{format_ident, quote};
 pub(in crate::expand) enum Forces {
     /// `Model::applied_forces`: the parameters from the fields (the inputs, if any, zero).
     Plain,
-    /// `Parametrized::applied_forces_with`: the parameters from an array (the inputs zero).
+    /// `Parametrized::applied_forces_with`: the parameters from an array (the inputs zero). A
+    /// declaration with inputs has it forward to `ParametrizedHeld` with none held.
     Parametrized,
+    /// `Parametrized::applied_forces_with_inputs_held`: the parameters from an array, the inputs
+    /// from the held flat values `__u: &[f64]` (zeros past its end).
+    ParametrizedHeld,
     /// `ActuatedModel::applied_forces_with_inputs`: the parameters from the fields, the inputs
     /// from `__u: &[__U; NU]`.
     WithInputs,
@@ -53,8 +57,10 @@ fn forces_fn(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream 
         false => "applied_forces",
         true => "coordinate_forces",
     };
-    if let (Forces::Plain, Some(nu)) = (which, model.input_count()) {
-        return at_zero_inputs(model, prefix, nu, (&rows, &row_args));
+    match (which, model.input_count()) {
+        (Forces::Plain, Some(nu)) => return at_zero_inputs(model, prefix, nu, (&rows, &row_args)),
+        (Forces::Parametrized, Some(_)) => return none_held(model, (&rows, &row_args)),
+        _ => {}
     }
     let (name, generics, array) = signature(model, which, prefix);
     let body = forces_body(model, which, on_coordinates);
@@ -97,6 +103,20 @@ fn at_zero_inputs(
     }
 }
 
+/// A declaration with inputs: `applied_forces_with` is `applied_forces_with_inputs_held` with no
+/// inputs held (all zero).
+fn none_held(model: &Model, (rows, row_args): (&TokenStream, &TokenStream)) -> TokenStream {
+    let p = private();
+    let (n, k) = (lit(model.dof()), lit(model.rows));
+    let np = lit(crate::ast::slot_count(model.params));
+    quote! {
+        #[inline(always)]
+        fn applied_forces_with<__S: #p::Scalar, __D: #p::Scalar>(&self, __p: &[__S; #np], __t: __D, __q: &[__D; #n], __v: &[__D; #n], #rows __generalized_force: &mut [__D; #n]) {
+            <Self as #p::parameters::Parametrized<#n, #k, #np>>::applied_forces_with_inputs_held::<__S, __D>(self, __p, &[], __t, __q, __v, #row_args __generalized_force)
+        }
+    }
+}
+
 /// The function's name, generic parameters and leading argument (the parameters' or the inputs'
 /// array) for `which`.
 fn signature(
@@ -118,6 +138,14 @@ fn signature(
                 quote!(__p: &[__S; #np],),
             )
         }
+        Forces::ParametrizedHeld => {
+            let np = lit(crate::ast::slot_count(model.params));
+            (
+                quote!(applied_forces_with_inputs_held),
+                quote!(<__S: #p::Scalar, __D: #p::Scalar>),
+                quote!(__p: &[__S; #np], __u: &[f64],),
+            )
+        }
         Forces::WithInputs => {
             let nu = lit(model.input_count().unwrap_or(0));
             let name = format_ident!("{prefix}_with_inputs");
@@ -133,7 +161,7 @@ fn signature(
 /// The forces' body: the names they read bound, then each force added where it acts.
 fn forces_body(model: &Model, which: Forces, on_coordinates: bool) -> TokenStream {
     let params = match which {
-        Forces::Parametrized => Params::Array,
+        Forces::Parametrized | Forces::ParametrizedHeld => Params::Array,
         Forces::Plain | Forces::WithInputs => Params::Fields,
     };
     let prelude = prelude();
@@ -191,8 +219,8 @@ pub(in crate::expand) fn names_a_body(
 }
 
 /// `let tau: __D = input::<__U, __D>(&__u[0]);` for each input the forces name (an array input
-/// element by element): from `__u` in `applied_forces_with_inputs`, zero in the parametrized
-/// forces.
+/// element by element): from `__u` in `applied_forces_with_inputs` and (held values, zeros past
+/// its end) in `applied_forces_with_inputs_held`, zero elsewhere.
 fn bind_input_values(
     model: &Model,
     used: &std::collections::BTreeSet<String>,
@@ -203,6 +231,10 @@ fn bind_input_values(
         Forces::WithInputs => {
             let slot = lit(slot);
             quote!(#p::lagrange_core::inputs::input::<__U, __D>(&__u[#slot]))
+        }
+        Forces::ParametrizedHeld => {
+            let slot = lit(slot);
+            quote!(<__D>::from(__u.get(#slot).copied().unwrap_or(0.0)))
         }
         Forces::Plain | Forces::Parametrized => quote!(<__D>::from(0.0)),
     };
