@@ -98,22 +98,7 @@ impl Declaration<'_> {
             "Parameters of the model: `g`, gravity's magnitude along −z, and each joint's \
              `<dynamics>` coefficients. `{ty}::default()` holds the file's values (g = {STANDARD_GRAVITY})."
         );
-        let (base_coords, base_body) = match &self.base {
-            Some(base) => {
-                let (p, r) = (ident(BASE_POSITION), ident(BASE_ROTATION));
-                (
-                    quote! {
-                        /// The floating base's frame origin in the world frame.
-                        pub #p: [f64; 3],
-                        /// The floating base's orientation: modified Rodrigues parameters
-                        /// n tan(θ/4) of the rotation by θ about n, kept within |σ| ≤ 1 (θ ≤ π).
-                        pub #r: [f64; 3],
-                    },
-                    Some(self.base_body(base)),
-                )
-            }
-            None => (quote!(), None),
-        };
+        let (base_coords, base_body) = self.base_items();
         quote! {
             pub struct Coords { #base_coords #(pub #coords: f64,)* }
             #[doc = #doc]
@@ -132,6 +117,22 @@ impl Declaration<'_> {
             fn gravity() -> Vec3 { vec3(0.0, 0.0, -g) }
             #(#forces)*
         }
+    }
+
+    /// A floating base's coordinates (before the joints') and its body; nothing without one.
+    fn base_items(&self) -> (TokenStream, Option<TokenStream>) {
+        let Some(base) = &self.base else {
+            return (quote!(), None);
+        };
+        let (p, r) = (ident(BASE_POSITION), ident(BASE_ROTATION));
+        let coords = quote! {
+            /// The floating base's frame origin in the world frame.
+            pub #p: [f64; 3],
+            /// The floating base's orientation: modified Rodrigues parameters
+            /// n tan(θ/4) of the rotation by θ about n, kept within |σ| ≤ 1 (θ ≤ π).
+            pub #r: [f64; 3],
+        };
+        (coords, Some(self.base_body(base)))
     }
 
     /// The floating base: the root link's frame at `base_position`, turned by `base_rotation`

@@ -116,7 +116,24 @@ pub fn bodies(robot: &Robot, floating: bool) -> Result<(Vec<Body>, Option<MassPa
         }
         attached[c] = Some(here);
     }
-    for (body, parts) in bodies.iter_mut().zip(&parts) {
+    finish(
+        robot,
+        bodies,
+        &parts,
+        floating.then_some((root, base.as_slice())),
+    )
+}
+
+/// Each body's mass from its parts, and the floating base's from its own (`base`: the root link
+/// and its parts) — refused where there is none; without a floating base, refused when nothing
+/// moves.
+fn finish(
+    robot: &Robot,
+    mut bodies: Vec<Body>,
+    parts: &[Vec<MassPart>],
+    base: Option<(usize, &[MassPart])>,
+) -> Result<(Vec<Body>, Option<MassPart>), Refusal> {
+    for (body, parts) in bodies.iter_mut().zip(parts) {
         body.inertia = combine(parts).ok_or_else(|| {
             format!(
                 "link `{}`, moved by joint `{}`, has no mass (no `<inertial>` of positive mass on it \
@@ -126,15 +143,15 @@ pub fn bodies(robot: &Robot, floating: bool) -> Result<(Vec<Body>, Option<MassPa
             )
         })?;
     }
-    if !floating {
+    let Some((root, base)) = base else {
         if bodies.is_empty() {
             return Err(
                 "the file has no revolute, continuous or prismatic joint: nothing moves".into(),
             );
         }
         return Ok((bodies, None));
-    }
-    let base_mass = combine(&base).ok_or_else(|| {
+    };
+    let base_mass = combine(base).ok_or_else(|| {
         format!(
             "the root link `{}` is a floating base with no mass (no `<inertial>` of positive \
              mass on it or on a link fixed to it): its acceleration is undefined",
