@@ -15,7 +15,7 @@
 //!   velocity.
 //! - [`rot_mrp`]: modified Rodrigues parameters σ = n tan(θ/4), R rational in σ. Singular at
 //!   θ = 2π (|σ| → ∞); past |σ| = 1 (θ = π) the shadow set −σ/|σ|² is taken (Schaub & Junkins,
-//!   *Analytical Mechanics of Space Systems*, 2nd ed., 2009, §3.8.3). At σ = 0 the rates σ̇ are a
+//!   *Analytical Mechanics of Space Systems*, 2nd ed., 2009, §3.8). At σ = 0 the rates σ̇ are a
 //!   quarter of the angular velocity.
 //!
 //! A switch maps the rates with the switch's Jacobian, so the rotation and the angular velocity
@@ -104,7 +104,7 @@ pub fn rot_vector<D: Scalar>(phi: Vec3<D>) -> Rot3<D> {
 /// The rotation with modified Rodrigues parameters `sigma` (σ = n tan(θ/4) for the rotation by θ
 /// about the unit vector n): R = I + (8 \[σ\]×² + 4 (1 − s) \[σ\]×)/(1 + s)², s = |σ|² (the
 /// transpose of the direction cosine matrix of Schaub & Junkins, *Analytical Mechanics of Space
-/// Systems*, 2nd ed., 2009, eq. (3.154), which maps the other way). Rational in σ: no branch and
+/// Systems*, 2nd ed., 2009, §3.8, which maps the other way). Rational in σ: no branch and
 /// no trigonometry.
 ///
 /// ```
@@ -132,7 +132,7 @@ pub fn rot_mrp<D: Scalar>(sigma: Vec3<D>) -> Rot3<D> {
 ///
 /// - Rotation vector, θ = |φ| > π: φ′ = φ (1 − 2π/θ), φ̇′ = φ̇ − (2π/θ)(φ̇ − n (n·φ̇)), n = φ/θ.
 /// - Modified Rodrigues parameters, s = |σ|² > 1: σ′ = −σ/s, σ̇′ = −σ̇/s + 2σ (σ·σ̇)/s²
-///   (Schaub & Junkins, §3.8.3, the shadow set and its rates).
+///   (Schaub & Junkins, §3.8, the shadow set; its rates by differentiating σ′ = −σ/s).
 ///
 /// ```
 /// use lagrange_core::geometry::{rot_vector, switch_chart, vec3, RotationChart};
