@@ -8,8 +8,9 @@
 //! `floating-check ROBOT STATES` (ROBOT: `quadruped`, or `solo12` with the `example-robot-data`
 //! feature).
 
+use lagrange::geometry::{chart_rates, RotationChart};
 use lagrange::prelude::*;
-use num_dual::{Dual2_64, Dual64};
+use num_dual::Dual2_64;
 
 /// The tests' quadruped (12 joints) with a free-flying root.
 #[lagrange::urdf("../tests/urdf/quadruped.urdf", floating)]
@@ -20,7 +21,7 @@ pub mod quadruped {}
 #[lagrange::urdf("robots/example-robot-data/solo12.urdf", floating)]
 pub mod solo12 {}
 
-/// The skew part of Rᵀ Ṙ (or Rᵀ R̈) as a vector, from R's values and a derivative's.
+/// The skew part of Rᵀ R̈ as a vector, from R's values and its second derivatives.
 fn skew_vee(value: &Rot3<f64>, derivative: &Rot3<f64>) -> [f64; 3] {
     let m = |i: usize, j: usize| {
         (0..3)
@@ -29,19 +30,6 @@ fn skew_vee(value: &Rot3<f64>, derivative: &Rot3<f64>) -> [f64; 3] {
     };
     let skew = |i: usize, j: usize| -> f64 { (m(i, j) - m(j, i)) / 2.0 };
     [skew(2, 1), skew(0, 2), skew(1, 0)]
-}
-
-/// The body-frame angular velocity of R(σ) moving at σ̇: ω = vee(RᵀṘ), one dual pass.
-fn angular_velocity(sigma: [f64; 3], rate: [f64; 3]) -> [f64; 3] {
-    let d = |k: usize| Dual64::new(sigma[k], rate[k]);
-    let r = rot_mrp(vec3(d(0), d(1), d(2)));
-    let re = Rot3 {
-        rows: r.rows.map(|row| row.map(|x| x.re)),
-    };
-    let eps = Rot3 {
-        rows: r.rows.map(|row| row.map(|x| x.eps)),
-    };
-    skew_vee(&re, &eps)
 }
 
 /// The body-frame angular acceleration along σ(t) = σ + σ̇ t + σ̈ t²/2: ω̇ = vee(RᵀR̈), ṘᵀṘ being
@@ -56,20 +44,6 @@ fn angular_acceleration(sigma: [f64; 3], rate: [f64; 3], acc: [f64; 3]) -> [f64;
         rows: r.rows.map(|row| row.map(|x| x.v2)),
     };
     skew_vee(&re, &second)
-}
-
-/// σ̇ for the body-frame angular velocity ω at σ: ω is linear in σ̇, its matrix's columns the
-/// angular velocities of unit rates.
-fn parameter_rates(sigma: [f64; 3], omega: [f64; 3]) -> [f64; 3] {
-    let columns: Vec<[f64; 3]> = (0..3)
-        .map(|k| angular_velocity(sigma, std::array::from_fn(|j| f64::from(u8::from(j == k)))))
-        .collect();
-    let j = nalgebra::Matrix3::from_fn(|r, c| columns[c][r]);
-    let rates = j
-        .lu()
-        .solve(&nalgebra::Vector3::from(omega))
-        .expect("σ in the chart's ball");
-    [rates[0], rates[1], rates[2]]
 }
 
 /// The rotation of a unit quaternion (x, y, z, w).
@@ -145,7 +119,7 @@ fn check<M: Mechanism<N>, const N: usize>(sys: &M, path: &str) -> f64 {
         }
         let (linear, omega) = ([v[0], v[1], v[2]], [v[3], v[4], v[5]]);
         let world = r * vec3(linear[0], linear[1], linear[2]);
-        let rates = parameter_rates(sigma, omega);
+        let rates = chart_rates(RotationChart::Mrp, sigma, omega).expect("σ in the chart's ball");
         let (mut qs, mut vs) = ([0.0; N], [0.0; N]);
         qs[..3].copy_from_slice(&q[..3]);
         qs[3..6].copy_from_slice(&sigma);

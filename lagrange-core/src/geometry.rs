@@ -61,7 +61,9 @@ use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
 mod charts;
 mod rotations;
-pub use charts::{rot_mrp, rot_vector, rotation, switch_chart, RotationChart};
+pub use charts::{
+    body_angular_velocity, chart_rates, rot_mrp, rot_vector, rotation, switch_chart, RotationChart,
+};
 pub use rotations::{rot3, rot_axis, rpy};
 
 /// A real number or a dual number over `f64`: what positions, potentials and the dynamics are

@@ -186,6 +186,54 @@ pub fn rotation<D: Scalar>(chart: RotationChart, coordinates: Vec3<D>) -> Rot3<D
     }
 }
 
+/// The body-frame angular velocity ω = vee(RᵀṘ) of the chart's rotation at `coordinates` moving
+/// at `rates` (one pass of dual numbers): what a free body's state means as a spin.
+///
+/// ```
+/// use lagrange_core::geometry::{body_angular_velocity, RotationChart};
+/// // At the origin the rotation vector's rates are ω, the parameters' a quarter of it.
+/// let w = body_angular_velocity(RotationChart::Mrp, [0.0; 3], [0.25, 0.0, -0.5]);
+/// assert!((w[0] - 1.0).abs() < 1e-15 && (w[2] + 2.0).abs() < 1e-15);
+/// ```
+pub fn body_angular_velocity(
+    chart: RotationChart,
+    coordinates: [f64; 3],
+    rates: [f64; 3],
+) -> [f64; 3] {
+    let d = |k: usize| num_dual::Dual64::new(coordinates[k], rates[k]);
+    let r = rotation(chart, super::vec3(d(0), d(1), d(2)));
+    // (RᵀṘ)ᵢⱼ = Σₖ Rₖᵢ Ṙₖⱼ, skew: ω = ((RᵀṘ)₃₂, (RᵀṘ)₁₃, (RᵀṘ)₂₁).
+    let entry = |i: usize, j: usize| (0..3).map(|k| r.rows[k][i].re * r.rows[k][j].eps).sum();
+    [entry(2, 1), entry(0, 2), entry(1, 0)]
+}
+
+/// The chart's rates that give the body-frame angular velocity `omega` at `coordinates`: the
+/// inverse of [`body_angular_velocity`], which is linear in the rates (its 3 × 3 matrix from
+/// three dual passes, solved by LU). `None` where the chart is singular (a turn of 2π). How a
+/// free body's state is set from a spin:
+///
+/// ```
+/// use lagrange_core::geometry::{body_angular_velocity, chart_rates, RotationChart};
+/// let (sigma, omega) = ([0.3, -0.5, 0.4], [1.0, 2.0, -0.5]);
+/// let rates = chart_rates(RotationChart::Mrp, sigma, omega).unwrap();
+/// let back = body_angular_velocity(RotationChart::Mrp, sigma, rates);
+/// assert!((0..3).all(|k| (back[k] - omega[k]).abs() < 1e-14));
+/// ```
+pub fn chart_rates(
+    chart: RotationChart,
+    coordinates: [f64; 3],
+    omega: [f64; 3],
+) -> Option<[f64; 3]> {
+    let unit = |k: usize| std::array::from_fn(|j| if j == k { 1.0 } else { 0.0 });
+    let columns = [0, 1, 2].map(|k| body_angular_velocity(chart, coordinates, unit(k)));
+    let matrix = nalgebra::Matrix3::from_fn(|i, j| columns[j][i]);
+    let rates = matrix.lu().solve(&nalgebra::Vector3::from(omega))?;
+    rates
+        .iter()
+        .all(|x| x.is_finite())
+        .then(|| [rates[0], rates[1], rates[2]])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
