@@ -21,11 +21,11 @@
 
 use super::inertia::Inertia;
 use super::kinematics::{
-    force_to_parent, ground_acceleration, inertia_to_parent, motion_to_child, rate_of, velocity,
+    force_to_parent, ground_acceleration, inertia_to_parent, motion_to_child, velocity,
     JointState,
 };
 use super::spatial::{Force, Motion};
-use super::{joint_at, Joint, JointKind, RigidConstants, RUNTIME};
+use super::{free, joint_at, Joint, JointKind, RigidConstants, RUNTIME};
 use crate::dynamics::{finite_accelerations, non_finite_dynamics, singular_mass_matrix};
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
@@ -63,7 +63,8 @@ struct Moving<S> {
     bias_acceleration: Motion<S>,
 }
 
-/// A body's joint after the second sweep: U_b, 1 / D_b and u_b (nothing for a fixed joint).
+/// A body's joint after the second sweep: U_b, 1 / D_b and u_b (nothing for a fixed joint; a
+/// free root's acceleration, its whole articulated equation solved).
 #[derive(Clone, Copy)]
 enum Projected<S> {
     Moved {
@@ -72,6 +73,7 @@ enum Projected<S> {
         free: S,
     },
     Welded,
+    Root(Motion<S>),
 }
 
 /// A pivot D_b that is not clearly positive: the body, and the pivot's value.
@@ -134,7 +136,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         let parent = joint
             .parent
             .map(|p| filled(&self.moving[p], "a parent's velocity").velocity);
-        let (vb, c) = velocity(joint, kb, state, parent.as_ref(), rate_of(joint, v));
+        let (vb, c) = velocity(joint, kb, state, parent.as_ref(), v);
         self.moving[b] = Some(Moving {
             state,
             velocity: vb,
@@ -163,6 +165,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             JointKind::Revolute(axis) => Some((axis, inertia.angular_column(axis), true)),
             JointKind::Prismatic(axis) => Some((axis, inertia.linear_column(axis), false)),
             JointKind::Fixed => None,
+            JointKind::Free => return self.articulate_root(joint, moving.state, (inertia, bias), tau, b),
         };
         self.projected[b] = Some(Projected::Welded);
         if let Some((axis, column, angular)) = projected {
@@ -207,6 +210,33 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         Ok(())
     }
 
+    /// A free root (no parent): its whole articulated equation solved for its acceleration.
+    #[inline(always)]
+    fn articulate_root<const N: usize>(
+        &mut self,
+        joint: &Joint,
+        state: JointState<S>,
+        (inertia, bias): (Inertia<S>, Force<S>),
+        tau: &[S; N],
+        b: usize,
+    ) -> core::result::Result<(), Pivot> {
+        let JointState::Free(sigma) = state else {
+            out_of_order("a free joint without its orientation")
+        };
+        let tau = free::rates(tau, joint.coordinate);
+        match free::root_acceleration(sigma, &inertia, &bias, tau) {
+            Ok(a) => {
+                self.projected[b] = Some(Projected::Root(a));
+                Ok(())
+            }
+            Err(e) => Err(Pivot {
+                body: b,
+                value: e.pivot,
+                scale: inertia.diagonal_scale(e.index < 3),
+            }),
+        }
+    }
+
     /// Body `b`, root to leaf: q̈_b and the body's acceleration,
     /// a' = X_b a_p + c_b, q̈_b = (u_b − U_bᵀ a') / D_b, a_b = a' + S_b q̈_b.
     #[inline(always)]
@@ -231,6 +261,12 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             &self.projected[b],
             "a body accelerated before its articulation",
         );
+        if let (Projected::Root(a), JointState::Free(sigma)) = (projected, moving.state) {
+            let rates = free::accelerations(sigma, &a, &above, &moving.bias_acceleration);
+            qdd[joint.coordinate..joint.coordinate + 6].copy_from_slice(&rates);
+            self.acceleration[b] = Some(a);
+            return;
+        }
         let (axis, angular, column, inverse_pivot, free) = match (joint.kind, projected) {
             (
                 JointKind::Revolute(axis),

@@ -11,10 +11,10 @@
 //! spatial momentum of b's subtree: p = ∂T/∂q̇ for T = ½ Σ v_bᵀ I_b v_b.
 
 use super::inertia::Inertia;
-use super::kinematics::{force_to_parent, inertia_to_parent, rate_of, velocity, JointState};
-use super::newton_euler::along_joint;
+use super::kinematics::{force_to_parent, inertia_to_parent, velocity, JointState};
+use super::newton_euler::{along_joint, project};
 use super::spatial::{Force, Motion};
-use super::{Joint, JointKind, RigidConstants};
+use super::{free, Joint, JointKind, RigidConstants};
 use crate::geometry::Scalar;
 use nalgebra::SMatrix;
 
@@ -33,6 +33,10 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
             JointKind::Revolute(axis) => Some(composite[b].angular_column(axis)),
             JointKind::Prismatic(axis) => Some(composite[b].linear_column(axis)),
             JointKind::Fixed => None,
+            JointKind::Free => {
+                free_block(joint, state[b], &composite[b], &mut m);
+                None
+            }
         };
         if let Some(mut f) = column {
             let i = joint.coordinate;
@@ -45,6 +49,13 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
                     let c = joints[j].coordinate;
                     m[(i, c)] = entry;
                     m[(c, i)] = entry;
+                } else if let JointState::Free(sigma) = state[j] {
+                    // A free root: M_jb = S_jᵀ F, six entries.
+                    let c = joints[j].coordinate;
+                    for (l, entry) in free::forces_of(sigma, &f).into_iter().enumerate() {
+                        m[(i, c + l)] = entry;
+                        m[(c + l, i)] = entry;
+                    }
                 }
             }
         }
@@ -55,6 +66,26 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
         }
     }
     m
+}
+
+/// A free root's 6 × 6 block Sᵀ I^C S: column k is Sᵀ (I^C S e_k).
+fn free_block<S: Scalar, const N: usize>(
+    joint: &Joint,
+    state: JointState<S>,
+    composite: &Inertia<S>,
+    m: &mut SMatrix<S, N, N>,
+) {
+    let JointState::Free(sigma) = state else {
+        return;
+    };
+    let c = joint.coordinate;
+    for k in 0..6 {
+        let unit = std::array::from_fn(|l| if l == k { S::one() } else { S::zero() });
+        let column = composite.apply(&free::motion_of(sigma, unit));
+        for (l, entry) in free::forces_of(sigma, &column).into_iter().enumerate() {
+            m[(c + l, c + k)] = entry;
+        }
+    }
 }
 
 /// p = M q̇ at (q, q̇) from the composite momenta (see the [module docs](self)).
@@ -71,15 +102,13 @@ pub fn momenta<S: Scalar, const N: usize, const B: usize>(
         let (joint, kb) = (&joints[b], &k.bodies[b]);
         state[b] = JointState::of(joint, q);
         let parent = joint.parent.map(|p| &vel[p]);
-        vel[b] = velocity(joint, kb, state[b], parent, rate_of(joint, v)).0;
+        vel[b] = velocity(joint, kb, state[b], parent, v).0;
         momentum[b] = kb.inertia.apply(&vel[b]);
     }
     let mut p = [S::zero(); N];
     for b in (0..B).rev() {
         let joint = &joints[b];
-        if let Some(pb) = along_joint(joint, &momentum[b]) {
-            p[joint.coordinate] = pb;
-        }
+        project(joint, state[b], &momentum[b], &mut p);
         if let Some(parent) = joint.parent {
             let pushed = force_to_parent(joint, &k.bodies[b], state[b], &momentum[b]);
             momentum[parent] = momentum[parent] + pushed;

@@ -138,6 +138,17 @@ impl<S: Scalar> Inertia<S> {
         }
     }
 
+    /// The 6 × 6 matrix [A B; Bᵀ C] (angular rows and columns first).
+    #[inline(always)]
+    pub fn matrix(&self) -> nalgebra::SMatrix<S, 6, 6> {
+        nalgebra::SMatrix::<S, 6, 6>::from_fn(|i, j| match (i < 3, j < 3) {
+            (true, true) => self.a.at(i, j),
+            (true, false) => self.b[i][j - 3],
+            (false, true) => self.b[j][i - 3],
+            (false, false) => self.c.at(i - 3, j - 3),
+        })
+    }
+
     /// I (e_axis; 0): the angular column for `axis` (a revolute joint's U).
     #[inline(always)]
     pub fn angular_column(&self, axis: Axis) -> Force<S> {

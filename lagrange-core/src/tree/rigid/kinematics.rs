@@ -7,7 +7,7 @@ use super::spatial::{
     add3, cross_axis, cross_const, mul3, mul3_transpose, scale3, turn, turn_back, Force, Motion,
     M3, V3,
 };
-use super::{BodyConstants, Joint, JointKind, RigidConstants};
+use super::{free, BodyConstants, Joint, JointKind, RigidConstants};
 use crate::geometry::Scalar;
 
 /// The joint's own part of a body's frame change at the body's coordinate: the rotation's
@@ -17,6 +17,8 @@ pub enum JointState<S> {
     Turned(S, S),
     Slid(S),
     Welded,
+    /// A free joint's orientation σ (its origin p enters no frame change the recursions make).
+    Free(V3<S>),
 }
 
 impl<S: Scalar> JointState<S> {
@@ -30,6 +32,7 @@ impl<S: Scalar> JointState<S> {
             }
             JointKind::Prismatic(_) => JointState::Slid(q[joint.coordinate]),
             JointKind::Fixed => JointState::Welded,
+            JointKind::Free => JointState::Free(free::orientation(q, joint.coordinate)),
         }
     }
 }
@@ -43,6 +46,9 @@ pub(crate) fn motion_to_child<S: Scalar>(
     state: JointState<S>,
     m: &Motion<S>,
 ) -> Motion<S> {
+    if let JointState::Free(sigma) = state {
+        return free::from_ground(sigma, m);
+    }
     // ω × r = −(r × ω).
     let r_cross_w = cross_const(&k.offset, joint.offset, m.angular);
     let v_at = [
@@ -133,17 +139,21 @@ pub(crate) fn inertia_to_parent<S: Scalar>(
     inertia.shift(k.offset, joint.offset);
 }
 
-/// The body's velocity from its parent's (`None` for the ground, at rest) and its joint's rate,
-/// v_b = X v_p + S q̇, and the velocity-product acceleration c = v_b × S q̇ (Featherstone eq. 7.31,
-/// S constant in the body's frame).
+/// The body's velocity from its parent's (`None` for the ground, at rest) and its joint's rates
+/// in `q_dot`, v_b = X v_p + S q̇, and the velocity-product acceleration c = v_b × S q̇
+/// (Featherstone eq. 7.31, S constant in the body's frame; a free root's c = Ṡ q̇, see [`free`]).
 #[inline(always)]
-pub(crate) fn velocity<S: Scalar>(
+pub(crate) fn velocity<S: Scalar, const N: usize>(
     joint: &Joint,
     k: &BodyConstants,
     state: JointState<S>,
     parent: Option<&Motion<S>>,
-    rate: S,
+    q_dot: &[S; N],
 ) -> (Motion<S>, Motion<S>) {
+    if let JointState::Free(sigma) = state {
+        return free::velocity(sigma, free::rates(q_dot, joint.coordinate));
+    }
+    let rate = rate_of(joint, q_dot);
     let mut v = match parent {
         Some(m) => motion_to_child(joint, k, state, m),
         None => Motion::zero(),
@@ -159,7 +169,7 @@ pub(crate) fn velocity<S: Scalar>(
             v.linear[axis.indices().0] += rate;
             c
         }
-        JointKind::Fixed => Motion::zero(),
+        JointKind::Fixed | JointKind::Free => Motion::zero(),
     };
     (v, c)
 }
@@ -185,20 +195,19 @@ pub fn kinetic_energy<S: Scalar, const N: usize, const B: usize>(
     for b in 0..B {
         let joint = &joints[b];
         let state = JointState::of(joint, q);
-        let rate = rate_of(joint, v);
         let parent = joint.parent.map(|p| &velocities[p]);
-        let (vb, _) = velocity(joint, &k.bodies[b], state, parent, rate);
+        let (vb, _) = velocity(joint, &k.bodies[b], state, parent, v);
         velocities[b] = vb;
         energy += vb.dot(&k.bodies[b].inertia.apply(&vb));
     }
     energy * 0.5
 }
 
-/// The joint's rate q̇ (zero for a fixed joint).
+/// A one-coordinate joint's rate q̇ (zero for a fixed joint and, as it has six, a free one).
 #[inline(always)]
 pub(crate) fn rate_of<S: Scalar, const N: usize>(joint: &Joint, v: &[S; N]) -> S {
     match joint.kind {
-        JointKind::Fixed => S::zero(),
+        JointKind::Fixed | JointKind::Free => S::zero(),
         _ => v[joint.coordinate],
     }
 }
@@ -213,7 +222,8 @@ pub struct Frame<S> {
     pub origin: V3<S>,
 }
 
-/// Every body's frame in the world at q: R_b = R_p E R_a(q), o_b = o_p + R_p (r + slide).
+/// Every body's frame in the world at q: R_b = R_p E R_a(q), o_b = o_p + R_p (r + slide); a
+/// free root's R(σ) and p.
 pub fn world_frames<S: Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,
@@ -229,6 +239,14 @@ pub fn world_frames<S: Scalar, const N: usize, const B: usize>(
     }; B];
     for b in 0..B {
         let (joint, kb) = (&joints[b], &k.bodies[b]);
+        if let JointState::Free(sigma) = JointState::of(joint, q) {
+            let c = joint.coordinate;
+            frames[b] = Frame {
+                rotation: free::rotation(sigma),
+                origin: [q[c], q[c + 1], q[c + 2]],
+            };
+            continue;
+        }
         let parent = match joint.parent {
             Some(p) => frames[p],
             None => Frame {

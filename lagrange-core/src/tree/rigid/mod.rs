@@ -34,6 +34,7 @@ pub mod spatial;
 mod articulated;
 mod composite;
 mod declared;
+pub mod free;
 mod kinematics;
 mod newton_euler;
 
@@ -60,6 +61,11 @@ pub enum JointKind {
     Prismatic(Axis),
     /// No motion: the body is welded to its parent (no coordinate).
     Fixed,
+    /// A free body (six coordinates from `coordinate` on): its origin p in the world by three,
+    /// then its orientation R(σ) by three modified Rodrigues parameters
+    /// ([`rot_mrp`](crate::geometry::rot_mrp)). Only a root (no parent) is free, with E the
+    /// identity and r zero: R_b = R(σ), o_b = p (see [`free`]).
+    Free,
 }
 
 /// A body's joint, as the declaration states it: what the compiler knows of the tree.
@@ -88,6 +94,7 @@ impl Joint {
             JointKind::Revolute(a) => (0, a),
             JointKind::Prismatic(a) => (1, a),
             JointKind::Fixed => (2, Axis::X),
+            JointKind::Free => (3, Axis::X),
         };
         let axis = match axis {
             Axis::X => 0,
@@ -114,7 +121,8 @@ impl Joint {
         let kind = match code & 3 {
             0 => JointKind::Revolute(axis),
             1 => JointKind::Prismatic(axis),
-            _ => JointKind::Fixed,
+            2 => JointKind::Fixed,
+            _ => JointKind::Free,
         };
         let parent = match (on(code, 8), self.parent) {
             (true, Some(p)) => Some(p),

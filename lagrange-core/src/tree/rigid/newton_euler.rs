@@ -11,10 +11,10 @@
 //! must add to the field's for the bodies to move with q̈.
 
 use super::kinematics::{
-    force_to_parent, ground_acceleration, motion_to_child, rate_of, velocity, JointState,
+    force_to_parent, ground_acceleration, motion_to_child, velocity, JointState,
 };
 use super::spatial::{Force, Motion};
-use super::{joint_at, Joint, JointKind, RigidConstants, RUNTIME};
+use super::{free, joint_at, Joint, JointKind, RigidConstants, RUNTIME};
 use crate::geometry::Scalar;
 use nalgebra::SVector;
 
@@ -82,14 +82,14 @@ impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
             kb,
             state,
             parent.as_ref().map(|m| &m.0),
-            rate_of(joint, v),
+            v,
         );
         let above = match parent {
             Some((_, a)) => a,
             None => ground_acceleration(k),
         };
         let mut ab = motion_to_child(joint, kb, state, &above) + c;
-        add_along_joint(joint, &mut ab, rate_of(joint, qdd));
+        add_along_joint(joint, state, &mut ab, qdd);
         let inertia = &kb.inertia;
         self.body[b] = Some(Moved {
             state,
@@ -112,9 +112,7 @@ impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
         let Some(moved) = self.body[b] else {
             out_of_order("a body backward before forward")
         };
-        if let Some(t) = along_joint(joint, &moved.force) {
-            tau[joint.coordinate] = t;
-        }
+        project(joint, moved.state, &moved.force, tau);
         if let Some(p) = joint.parent {
             let pushed = force_to_parent(joint, &k.bodies[b], moved.state, &moved.force);
             match &mut self.body[p] {
@@ -162,7 +160,7 @@ pub fn bias_and_gravity<S: Scalar, const N: usize, const B: usize>(
         let (joint, kb) = (&joints[b], &k.bodies[b]);
         state[b] = JointState::of(joint, q);
         let parent = joint.parent.map(|p| &vel[p]);
-        let (vb, c) = velocity(joint, kb, state[b], parent, rate_of(joint, v));
+        let (vb, c) = velocity(joint, kb, state[b], parent, v);
         let (above, falling) = match joint.parent {
             Some(p) => (acc[p], fall[p]),
             None => (Motion::zero(), ground_acceleration(k)),
@@ -174,40 +172,63 @@ pub fn bias_and_gravity<S: Scalar, const N: usize, const B: usize>(
         weight[b] = inertia.apply(&gb);
         (vel[b], acc[b], fall[b]) = (vb, ab, gb);
     }
-    let (mut bias, mut gravity) = (SVector::<S, N>::zeros(), SVector::<S, N>::zeros());
+    let (mut bias, mut gravity) = ([S::zero(); N], [S::zero(); N]);
     for b in (0..B).rev() {
         let (joint, kb) = (&joints[b], &k.bodies[b]);
-        if let (Some(f), Some(w)) = (
-            along_joint(joint, &force[b]),
-            along_joint(joint, &weight[b]),
-        ) {
-            bias[joint.coordinate] = f;
-            gravity[joint.coordinate] = -w;
-        }
+        project(joint, state[b], &force[b], &mut bias);
+        project(joint, state[b], &weight[b].scale(-S::one()), &mut gravity);
         if let Some(p) = joint.parent {
             force[p] = force[p] + force_to_parent(joint, kb, state[b], &force[b]);
             weight[p] = weight[p] + force_to_parent(joint, kb, state[b], &weight[b]);
         }
     }
-    (bias, gravity)
+    (SVector::from(bias), SVector::from(gravity))
 }
 
-/// a += S q̈ for the joint's axis.
+/// a += S q̈ for the joint's accelerations in `qdd`.
 #[inline(always)]
-fn add_along_joint<S: Scalar>(joint: &Joint, a: &mut Motion<S>, qdd: S) {
-    match joint.kind {
-        JointKind::Revolute(axis) => a.angular[axis.indices().0] += qdd,
-        JointKind::Prismatic(axis) => a.linear[axis.indices().0] += qdd,
-        JointKind::Fixed => {}
+fn add_along_joint<S: Scalar, const N: usize>(
+    joint: &Joint,
+    state: JointState<S>,
+    a: &mut Motion<S>,
+    qdd: &[S; N],
+) {
+    match (joint.kind, state) {
+        (JointKind::Revolute(axis), _) => a.angular[axis.indices().0] += qdd[joint.coordinate],
+        (JointKind::Prismatic(axis), _) => a.linear[axis.indices().0] += qdd[joint.coordinate],
+        (JointKind::Free, JointState::Free(sigma)) => {
+            *a = *a + free::motion_of(sigma, free::rates(qdd, joint.coordinate))
+        }
+        _ => {}
     }
 }
 
-/// Sᵀ f: the force's component along the joint (`None` for a fixed joint).
+/// Sᵀ f: the force's component along a one-coordinate joint (`None` for a fixed joint and for a
+/// free one, whose six [`project`] writes).
 #[inline(always)]
 pub(crate) fn along_joint<S: Scalar>(joint: &Joint, f: &Force<S>) -> Option<S> {
     match joint.kind {
         JointKind::Revolute(axis) => Some(f.moment[axis.indices().0]),
         JointKind::Prismatic(axis) => Some(f.force[axis.indices().0]),
-        JointKind::Fixed => None,
+        JointKind::Fixed | JointKind::Free => None,
+    }
+}
+
+/// Sᵀ f written to the joint's coordinates of `out` (nothing for a fixed joint).
+#[inline(always)]
+pub(crate) fn project<S: Scalar, const N: usize>(
+    joint: &Joint,
+    state: JointState<S>,
+    f: &Force<S>,
+    out: &mut [S; N],
+) {
+    match along_joint(joint, f) {
+        Some(x) => out[joint.coordinate] = x,
+        None => {
+            if let JointState::Free(sigma) = state {
+                let c = joint.coordinate;
+                out[c..c + 6].copy_from_slice(&free::forces_of(sigma, f));
+            }
+        }
     }
 }
