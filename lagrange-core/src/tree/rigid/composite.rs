@@ -82,8 +82,10 @@ fn free_block<S: Scalar, const N: usize>(
     for k in 0..6 {
         let unit = std::array::from_fn(|l| if l == k { S::one() } else { S::zero() });
         let column = composite.apply(&free::motion_of(sigma, unit));
-        for (l, entry) in free::forces_of(sigma, &column).into_iter().enumerate() {
+        // The upper triangle, mirrored: M symmetric to the last bit.
+        for (l, entry) in free::forces_of(sigma, &column).into_iter().enumerate().take(k + 1) {
             m[(c + l, c + k)] = entry;
+            m[(c + k, c + l)] = entry;
         }
     }
 }

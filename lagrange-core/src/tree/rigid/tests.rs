@@ -62,6 +62,39 @@ fn tree() -> ([Joint; B], RigidConstants<B>) {
     )
 }
 
+/// The same tree with its root free: six coordinates (origin, modified Rodrigues parameters)
+/// before the other five, the root's E the identity and r zero as a free joint has them.
+fn floating_tree() -> ([Joint; B], RigidConstants<B>) {
+    let (mut joints, mut k) = tree();
+    for joint in joints.iter_mut().skip(1) {
+        if joint.kind != JointKind::Fixed {
+            joint.coordinate += 5;
+        }
+    }
+    joints[0] = Joint {
+        parent: None,
+        kind: JointKind::Free,
+        coordinate: 0,
+        rotated: false,
+        offset: [false; 3],
+    };
+    k.bodies[0].rotation = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    k.bodies[0].offset = [0.0; 3];
+    (joints, k)
+}
+
+/// A state of the floating tree: σ of a turn by 2 tan⁻¹(0.9)·4 ≈ 170° (|σ| = 0.9, near the
+/// switch), the root moving and spinning.
+fn floating_state() -> ([f64; N + 5], [f64; N + 5]) {
+    let (q, v) = state();
+    let root_q = [0.4, -0.2, 1.1, 0.5, -0.6, 0.4];
+    let root_v = [0.3, 1.2, -0.8, 0.7, -0.4, 1.1];
+    (
+        std::array::from_fn(|j| if j < 6 { root_q[j] } else { q[j - 5] }),
+        std::array::from_fn(|j| if j < 6 { root_v[j] } else { v[j - 5] }),
+    )
+}
+
 fn state() -> ([f64; N], [f64; N]) {
     (
         [0.3, -1.1, 0.25, 0.8, -0.4, 2.0],
@@ -71,7 +104,7 @@ fn state() -> ([f64; N], [f64; N]) {
 
 /// The world-frame Lagrangian's pieces at q on any scalar: each body's centre of mass and
 /// orientation from [`world_frames`].
-fn centres_and_rotations<S: crate::geometry::Scalar>(
+fn centres_and_rotations<S: crate::geometry::Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,
     q: &[S; N],
@@ -93,7 +126,7 @@ fn centres_and_rotations<S: crate::geometry::Scalar>(
 
 /// T at (q, q̇) from the world frames: ½ m |ċ|² + ½ ωᵀ R Ī_c Rᵀ ω per body, with ċ and Ṙ the
 /// derivatives along q̇ (dual numbers) and ω from Ṙ Rᵀ.
-fn reference_kinetic_energy(
+fn reference_kinetic_energy<const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,
     q: &[f64; N],
@@ -127,7 +160,7 @@ fn reference_kinetic_energy(
     t
 }
 
-fn reference_potential<S: crate::geometry::Scalar>(
+fn reference_potential<S: crate::geometry::Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,
     q: &[S; N],
@@ -142,10 +175,10 @@ fn reference_potential<S: crate::geometry::Scalar>(
     v
 }
 
-#[test]
-fn the_mass_matrix_is_the_kinetic_energy_s_hessian() {
-    let (joints, k) = tree();
-    let (q, v) = state();
+fn mass_matrix_is_the_hessian<const N: usize, const B: usize>(
+    (joints, k): ([Joint; B], RigidConstants<B>),
+    (q, v): ([f64; N], [f64; N]),
+) {
     let m = mass_matrix(&joints, &k, &q);
     let t = kinetic_energy(&joints, &k, &q, &v);
     let qdot = SVector::<f64, N>::from(v);
@@ -173,10 +206,10 @@ fn the_mass_matrix_is_the_kinetic_energy_s_hessian() {
     assert_eq!(m, m.transpose());
 }
 
-#[test]
-fn momenta_are_m_times_the_velocities() {
-    let (joints, k) = tree();
-    let (q, v) = state();
+fn momenta_are_m_q_dot<const N: usize, const B: usize>(
+    (joints, k): ([Joint; B], RigidConstants<B>),
+    (q, v): ([f64; N], [f64; N]),
+) {
     let p = momenta(&joints, &k, &q, &v);
     let expected = mass_matrix(&joints, &k, &q) * SVector::<f64, N>::from(v);
     for j in 0..N {
@@ -184,10 +217,10 @@ fn momenta_are_m_times_the_velocities() {
     }
 }
 
-#[test]
-fn gravity_is_minus_the_potential_s_gradient() {
-    let (joints, k) = tree();
-    let (q, v) = state();
+fn gravity_is_minus_grad_v<const N: usize, const B: usize>(
+    (joints, k): ([Joint; B], RigidConstants<B>),
+    (q, v): ([f64; N], [f64; N]),
+) {
     let (_, gravity) = bias_and_gravity(&joints, &k, &q, &v);
     for j in 0..N {
         let qd: [Dual64; N] =
@@ -202,11 +235,11 @@ fn gravity_is_minus_the_potential_s_gradient() {
     }
 }
 
-#[test]
-fn the_inertial_terms_are_lagrange_s() {
-    // b = Ṁ q̇ − ∂T/∂q (Lagrange's equations at q̈ = 0), Ṁ along q̇ and ∂T/∂q by dual numbers.
-    let (joints, k) = tree();
-    let (q, v) = state();
+/// b = Ṁ q̇ − ∂T/∂q (Lagrange's equations at q̈ = 0), Ṁ along q̇ and ∂T/∂q by dual numbers.
+fn inertial_terms_are_lagrange_s<const N: usize, const B: usize>(
+    (joints, k): ([Joint; B], RigidConstants<B>),
+    (q, v): ([f64; N], [f64; N]),
+) {
     let (bias, _) = bias_and_gravity(&joints, &k, &q, &v);
     let along: [Dual64; N] = std::array::from_fn(|j| Dual64::new(q[j], v[j]));
     let m_dot = mass_matrix(&joints, &k, &along).map(|x| x.eps);
@@ -225,13 +258,16 @@ fn the_inertial_terms_are_lagrange_s() {
     }
 }
 
-#[test]
-fn the_articulated_body_algorithm_solves_m_qdd_equals_tau_plus_f_minus_b() {
-    type Names = [f64; N];
-    let (joints, k) = tree();
-    let (q, v) = state();
-    let tau = [0.5, -1.0, 2.0, 0.1, -0.3, 0.7];
-    let qdd = accelerations::<Names, f64, N, B>(&joints, &k, 0.0, &q, &v, &tau).unwrap();
+/// q̈ = M⁻¹ (τ + 𝓕_g − b), undone by inverse dynamics; on dual numbers ∂q̈/∂τ₀ = M⁻¹ e₀.
+fn articulated_solves_the_equations<const N: usize, const B: usize>(
+    (joints, k): ([Joint; B], RigidConstants<B>),
+    (q, v): ([f64; N], [f64; N]),
+) where
+    [f64; N]: Default,
+{
+    type Names<const N: usize> = [f64; N];
+    let tau: [f64; N] = std::array::from_fn(|j| [0.5, -1.0, 2.0, 0.1, -0.3, 0.7][j % 6] + 0.1 * j as f64);
+    let qdd = accelerations::<Names<N>, f64, N, B>(&joints, &k, 0.0, &q, &v, &tau).unwrap();
     let m = mass_matrix(&joints, &k, &q);
     let (bias, gravity) = bias_and_gravity(&joints, &k, &q, &v);
     let rhs = SVector::<f64, N>::from(tau) + gravity - bias;
@@ -249,13 +285,43 @@ fn the_articulated_body_algorithm_solves_m_qdd_equals_tau_plus_f_minus_b() {
         std::array::from_fn(|j| Dual64::new(tau[j], if j == 0 { 1.0 } else { 0.0 }));
     let (qd, vd) = (q.map(Dual64::from), v.map(Dual64::from));
     let qdd_d =
-        accelerations::<Names, Dual64, N, B>(&joints, &k, Dual64::from(0.0), &qd, &vd, &taud)
+        accelerations::<Names<N>, Dual64, N, B>(&joints, &k, Dual64::from(0.0), &qd, &vd, &taud)
             .unwrap();
     let column = m.try_inverse().unwrap().column(0).into_owned();
     for j in 0..N {
         assert!((qdd_d[j].eps - column[j]).abs() < 1e-11);
         assert!((qdd_d[j].re - qdd[j]).abs() < 1e-12);
     }
+}
+
+#[test]
+fn the_mass_matrix_is_the_kinetic_energy_s_hessian() {
+    mass_matrix_is_the_hessian(tree(), state());
+    mass_matrix_is_the_hessian(floating_tree(), floating_state());
+}
+
+#[test]
+fn momenta_are_m_times_the_velocities() {
+    momenta_are_m_q_dot(tree(), state());
+    momenta_are_m_q_dot(floating_tree(), floating_state());
+}
+
+#[test]
+fn gravity_is_minus_the_potential_s_gradient() {
+    gravity_is_minus_grad_v(tree(), state());
+    gravity_is_minus_grad_v(floating_tree(), floating_state());
+}
+
+#[test]
+fn the_inertial_terms_are_lagrange_s() {
+    inertial_terms_are_lagrange_s(tree(), state());
+    inertial_terms_are_lagrange_s(floating_tree(), floating_state());
+}
+
+#[test]
+fn the_articulated_body_algorithm_solves_m_qdd_equals_tau_plus_f_minus_b() {
+    articulated_solves_the_equations(tree(), state());
+    articulated_solves_the_equations(floating_tree(), floating_state());
 }
 
 #[test]
