@@ -21,8 +21,7 @@
 
 use super::inertia::Inertia;
 use super::kinematics::{
-    force_to_parent, ground_acceleration, inertia_to_parent, motion_to_child, velocity,
-    JointState,
+    force_to_parent, ground_acceleration, inertia_to_parent, motion_to_child, velocity, JointState,
 };
 use super::spatial::{Force, Motion};
 use super::{free, joint_at, Joint, JointKind, RigidConstants, RUNTIME};
@@ -165,7 +164,9 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             JointKind::Revolute(axis) => Some((axis, inertia.angular_column(axis), true)),
             JointKind::Prismatic(axis) => Some((axis, inertia.linear_column(axis), false)),
             JointKind::Fixed => None,
-            JointKind::Free => return self.articulate_root(joint, moving.state, (inertia, bias), tau, b),
+            JointKind::Free => {
+                return self.articulate_root(joint, moving.state, (inertia, bias), tau, b)
+            }
         };
         self.projected[b] = Some(Projected::Welded);
         if let Some((axis, column, angular)) = projected {

@@ -83,7 +83,11 @@ fn free_block<S: Scalar, const N: usize>(
         let unit = std::array::from_fn(|l| if l == k { S::one() } else { S::zero() });
         let column = composite.apply(&free::motion_of(sigma, unit));
         // The upper triangle, mirrored: M symmetric to the last bit.
-        for (l, entry) in free::forces_of(sigma, &column).into_iter().enumerate().take(k + 1) {
+        for (l, entry) in free::forces_of(sigma, &column)
+            .into_iter()
+            .enumerate()
+            .take(k + 1)
+        {
             m[(c + l, c + k)] = entry;
             m[(c + k, c + l)] = entry;
         }

@@ -20,7 +20,7 @@
 //! Ṡ q̇ = (Ḃ σ̇ ; −ω_b × Rᵀ ṗ),   Ḃ σ̇ = 8 |σ̇|² σ / (1+s)² − 4 (σ·σ̇) ω_b / (1+s),
 //! ```
 //!
-//! from Ṙᵀ = −[ω_b]× Rᵀ and d/dt of B with σ̈ held (derived for this module; the unit tests
+//! from Ṙᵀ = −\[ω_b\]× Rᵀ and d/dt of B with σ̈ held (derived for this module; the unit tests
 //! check both against dual-number derivatives of R(σ(t))).
 
 use super::inertia::Inertia;
@@ -149,10 +149,7 @@ pub(crate) fn forces_of<S: Scalar>(sigma: V3<S>, f: &Force<S>) -> [S; 6] {
 pub(crate) fn force_of<S: Scalar>(sigma: V3<S>, tau: [S; 6]) -> Force<S> {
     let r = rotation(sigma);
     Force {
-        moment: scale3(
-            a_map(sigma, [tau[3], tau[4], tau[5]], false),
-            S::from(0.25),
-        ),
+        moment: scale3(a_map(sigma, [tau[3], tau[4], tau[5]], false), S::from(0.25)),
         force: rotate_back(&r, [tau[0], tau[1], tau[2]]),
     }
 }
@@ -231,7 +228,11 @@ mod tests {
             force: [1.0, -2.0, 0.5],
         };
         let power = motion_of(SIGMA, RATES).dot(&f);
-        let generalized: f64 = forces_of(SIGMA, &f).iter().zip(RATES).map(|(a, b)| a * b).sum();
+        let generalized: f64 = forces_of(SIGMA, &f)
+            .iter()
+            .zip(RATES)
+            .map(|(a, b)| a * b)
+            .sum();
         assert!((power - generalized).abs() < 1e-14);
     }
 

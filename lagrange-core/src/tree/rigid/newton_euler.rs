@@ -77,13 +77,7 @@ impl<S: Scalar, const B: usize> NewtonEuler<S, B> {
             },
             None => None,
         };
-        let (vb, c) = velocity(
-            joint,
-            kb,
-            state,
-            parent.as_ref().map(|m| &m.0),
-            v,
-        );
+        let (vb, c) = velocity(joint, kb, state, parent.as_ref().map(|m| &m.0), v);
         let above = match parent {
             Some((_, a)) => a,
             None => ground_acceleration(k),

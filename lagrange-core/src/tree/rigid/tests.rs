@@ -266,7 +266,8 @@ fn articulated_solves_the_equations<const N: usize, const B: usize>(
     [f64; N]: Default,
 {
     type Names<const N: usize> = [f64; N];
-    let tau: [f64; N] = std::array::from_fn(|j| [0.5, -1.0, 2.0, 0.1, -0.3, 0.7][j % 6] + 0.1 * j as f64);
+    let tau: [f64; N] =
+        std::array::from_fn(|j| [0.5, -1.0, 2.0, 0.1, -0.3, 0.7][j % 6] + 0.1 * j as f64);
     let qdd = accelerations::<Names<N>, f64, N, B>(&joints, &k, 0.0, &q, &v, &tau).unwrap();
     let m = mass_matrix(&joints, &k, &q);
     let (bias, gravity) = bias_and_gravity(&joints, &k, &q, &v);
