@@ -283,7 +283,7 @@ fn read_samples<M: Mechanism<N>, const N: usize>(path: &Path) -> BoxResult<Sampl
         .collect::<std::result::Result<Vec<usize>, _>>()?;
     let nj = order.len();
     if N != 6 + nj {
-        return Err(format!("{nj} joints in the file, {} declared", N - 6).into());
+        return Err(format!("{nj} joints in the file, {N} declared coordinates").into());
     }
     let mut samples = Vec::new();
     for line in lines {

@@ -28,6 +28,7 @@ mkdir -p "$out"
 
 # 1. Virtual environment and compile commands (env.sh); Pinocchio's driver, rebuilt when a
 # source is newer than the binary; lagrange's side, with Solo12 when its file is there.
+# shellcheck source-path=SCRIPTDIR # env.sh
 . ./env.sh
 if stale build/pinocchio_floating pinocchio_floating.cpp robots_common.h timing.h; then
   build_pinocchio pinocchio_floating.cpp build/pinocchio_floating \
@@ -73,25 +74,19 @@ side() {
 # divided by 2·CALLS (start-up cancels).
 if [ "$mode" = callgrind ]; then
   calls=${CALLS:-200}
-  count() {
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 |
-      grep -o 'refs: *[0-9,]*' | tr -d ', ' | cut -d: -f2
-  }
-  # count_side SIDE ROBOT LABEL CALLS: instructions of CALLS calls, start-up included.
-  count_side() {
+  # count_calls SIDE ROBOT LABEL N: the instructions of N calls (env.sh's counts_line).
+  # shellcheck disable=SC2317 # called through counts_line
+  count_calls() {
     if [ "$1" = lagrange ]; then
-      count "$lagrange" count --robot "$2" --states "$out/$2.tsv" --label "$3" --calls "$4"
+      instructions "$lagrange" count --robot "$2" --states "$out/$2.tsv" --label "$3" --calls "$4"
     else
-      count build/pinocchio_floating count "$2" "$out/$2.tsv" "$out/$2.txt" "$3" "$4"
+      instructions build/pinocchio_floating count "$2" "$out/$2.tsv" "$out/$2.txt" "$3" "$4"
     fi
   }
   : >"$out/counts.tsv"
   for name in $names; do
     for pair in lagrange:accelerations pinocchio:aba lagrange:inverse_dynamics pinocchio:rnea; do
-      s=${pair%%:*} label=${pair#*:}
-      a=$(count_side "$s" "$name" "$label" "$calls")
-      b=$(count_side "$s" "$name" "$label" $((3 * calls)))
-      printf '%s\t%s\t%s\t%d\n' "$s" "$name" "$label" $(((b - a) / (2 * calls))) >>"$out/counts.tsv"
+      counts_line "${pair%%:*}" "$name" "${pair#*:}" "$calls" >>"$out/counts.tsv"
     done
   done
   .venv/bin/python robots_report.py counts "$out/counts.tsv"

@@ -1,4 +1,5 @@
-"""The check and the table of robots.sh, from the drivers' tab-separated output (robots_common.h).
+"""The check and the table of robots.sh, from the drivers' tab-separated output (robots_common.h);
+the table and the counts of floating.sh too.
 
     python3 robots_report.py check VALUES.tsv...            exit 2 when a check fails
     python3 robots_report.py table LOAD DOFS TIMES.tsv...   the timing table, one file per round
@@ -9,10 +10,10 @@ check: Pinocchio's values are the reference. For every other side, robot, quanti
 the largest difference relative to the size of the reference, max_i |x_i − ref_i| / max_i |ref_i|
 (q̈, τ: the vector's ∞-norm; M: the largest entry), must be ≤ 1e-10.
 
-table: per robot and label, the min over rounds of each round's min per-call time, and the
-median over rounds of each round's median; ratios of the mins; the growth exponent of each
-column from `arm7` to `humanoid`, log(t_humanoid / t_arm7) / log(30 / 7) (from `panda` to
-`talos` for the robots of example-robot-data).
+table: per robot and label (a column for each side and label present), the min over rounds of
+each round's min per-call time, and the median over rounds of each round's median; ratios of the
+mins; the growth exponent of each column from `arm7` to `humanoid`, log(t_humanoid / t_arm7) /
+log(30 / 7) (from `panda` to `talos` for the robots of example-robot-data).
 """
 
 import math
