@@ -18,14 +18,16 @@
 //! loop is theirs too (a warm-up of about 50 ms that sizes a repetition to about 10 ms, then 21
 //! repetitions, each one call at every state of the robot; min and median per call).
 
+mod peer_timing;
+
 use clap::{Parser, Subcommand, ValueEnum};
 use lagrange::prelude::*;
 use lagrange_robots::quadruped::Quadruped;
 use lagrange_robots::{arm14::Arm14, arm3::Arm3, arm7::Arm7, humanoid::Humanoid};
+use peer_timing::{as_coordinate, print_time};
 use std::error::Error as StdError;
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 type BoxResult<T> = std::result::Result<T, Box<dyn StdError>>;
 
@@ -133,22 +135,6 @@ fn read_states(path: &Path) -> BoxResult<Vec<(String, Rows)>> {
     Ok(robots)
 }
 
-/// A URDF joint's name as `#[lagrange::urdf]` names its coordinate (for the states of
-/// `example_robots.py`, which carry the files' joint names): lower case, every character that
-/// cannot be in an identifier turned into `_` (the names of these files need no other rule).
-fn as_coordinate(joint: &str) -> String {
-    joint
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() {
-                c.to_ascii_lowercase()
-            } else {
-                '_'
-            }
-        })
-        .collect()
-}
-
 /// Where each of the file's coordinates stands in the declaration: `order[i]` is the declared
 /// index of the file's `i`-th name. The file may list the coordinates in another order (the
 /// peers' joint order) and by their URDF joint names, but every name must be a declared one, each
@@ -237,40 +223,6 @@ fn call<M: Mechanism<N>, const N: usize>(
     Ok(())
 }
 
-/// The timing loop of the C drivers (`timing.h`): `batch` runs one call at each state; a warm-up
-/// of at least 50 ms sizes a repetition to about 10 ms, then 21 repetitions; min and median of the
-/// time per batch, in ns, and the batches per repetition.
-fn time_batches(mut batch: impl FnMut()) -> (f64, f64, u64) {
-    const REPS: usize = 21;
-    const REP_NS: f64 = 10e6;
-    const WARMUP_NS: f64 = 50e6;
-    let run = |batch: &mut dyn FnMut(), iters: u64| {
-        let t0 = Instant::now();
-        for _ in 0..iters {
-            batch();
-        }
-        t0.elapsed().as_nanos() as f64
-    };
-    let (mut iters, mut total) = (1u64, 0.0);
-    let mut elapsed;
-    loop {
-        elapsed = run(&mut batch, iters);
-        total += elapsed;
-        if total >= WARMUP_NS && elapsed >= REP_NS / 4.0 {
-            break;
-        }
-        if elapsed < REP_NS {
-            iters *= 2;
-        }
-    }
-    let iters = (iters as f64 * REP_NS / elapsed) as u64 + 1;
-    let mut per: Vec<f64> = (0..REPS)
-        .map(|_| run(&mut batch, iters) / iters as f64)
-        .collect();
-    per.sort_by(f64::total_cmp);
-    (per[0], per[REPS / 2], iters)
-}
-
 fn run<M: Mechanism<N>, const N: usize>(
     sys: &M,
     robot: &str,
@@ -303,19 +255,11 @@ fn run<M: Mechanism<N>, const N: usize>(
                 for s in &states {
                     call(sys, label, s)?;
                 }
-                let (min, median, iters) = time_batches(|| {
+                print_time(robot, label.name(), states.len(), || {
                     for s in &states {
                         let _ = call(sys, label, s);
                     }
                 });
-                let n = states.len() as f64;
-                println!(
-                    "lagrange\t{robot}\t{}\t{:.1}\t{:.1}\t{}",
-                    label.name(),
-                    min / n,
-                    median / n,
-                    iters * states.len() as u64
-                );
             }
         }
         Mode::Count { label, calls, .. } => {

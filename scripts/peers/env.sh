@@ -1,5 +1,6 @@
-# Sourced by run.sh and robots.sh (from this directory): the virtual environment with the peers'
-# wheels, the paths into it, and the compile commands of the drivers.
+# Sourced by run.sh, robots.sh and floating.sh (from this directory): the virtual environment with
+# the peers' wheels, the paths into it, the compile commands of the drivers, and the count of
+# instructions per call.
 #
 # Environment: MUJOCO_VERSION, PIN_VERSION, EIGEN_VERSION override the pinned PyPI versions;
 # CC, CXX the compilers.
@@ -48,4 +49,21 @@ build_pinocchio() {
     -DBOOST_MPL_LIMIT_LIST_SIZE=30 -DBOOST_MPL_LIMIT_VECTOR_SIZE=30 \
     -DBOOST_MPL_CFG_NO_PREPROCESSED_HEADERS -DBOOST_FUSION_INVOKE_MAX_ARITY=12 \
     -w -I"$prefix/include" -I"$prefix/include/eigen3" "$1" -lquadmath "${@:3}" -o "$2"
+}
+
+# instructions COMMAND...: the instructions COMMAND runs, counted by callgrind.
+instructions() {
+  valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 |
+    grep -o 'refs: *[0-9,]*' | tr -d ', ' | cut -d: -f2
+}
+
+# counts_line SIDE ROBOT LABEL CALLS: a line of robots_report.py's counts, the instructions per
+# call of one side's label: those of 3·CALLS calls less those of CALLS calls, over 2·CALLS
+# (start-up cancels). `count_calls SIDE ROBOT LABEL N`, the calling script's, prints the
+# instructions of N calls.
+counts_line() {
+  local few many
+  few=$(count_calls "$1" "$2" "$3" "$4")
+  many=$(count_calls "$1" "$2" "$3" $((3 * $4)))
+  printf '%s\t%s\t%s\t%d\n' "$1" "$2" "$3" $(((many - few) / (2 * $4)))
 }

@@ -134,9 +134,16 @@ fi
 # divided by 2·CALLS (start-up cancels).
 if [ "$mode" = callgrind ]; then
   calls=${CALLS:-500}
-  count() {
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 |
-      grep -o 'refs: *[0-9,]*' | tr -d ', ' | cut -d: -f2
+  # count_calls SIDE ROBOT LABEL N: the instructions of N calls (env.sh's counts_line).
+  # shellcheck disable=SC2317 # called through counts_line
+  count_calls() {
+    if [ "$1" = lagrange ]; then
+      instructions "$lagrange" count --states "$out/states.tsv" --robot "$2" --label "$3" --calls "$4"
+    else
+      dir=$urdf_dir
+      [ "$1" = pinocchio ] && dir="$out/models"
+      instructions "build/$1_robots" count "$out/states.tsv" "$dir" "$2" "$3" "$4"
+    fi
   }
   : >"$out/counts.tsv"
   for robot in $robots; do
@@ -144,16 +151,7 @@ if [ "$mode" = callgrind ]; then
       lagrange:inverse_dynamics pinocchio:rnea pinocchio:crba lagrange:mass_matrix; do
       s=${pair%%:*} label=${pair#*:}
       case " $sides " in *" $s "*) ;; *) continue ;; esac
-      if [ "$s" = lagrange ]; then
-        a=$(count "$lagrange" count --states "$out/states.tsv" --robot "$robot" --label "$label" --calls "$calls")
-        b=$(count "$lagrange" count --states "$out/states.tsv" --robot "$robot" --label "$label" --calls $((3 * calls)))
-      else
-        dir=$urdf_dir
-        [ "$s" = pinocchio ] && dir="$out/models"
-        a=$(count "build/${s}_robots" count "$out/states.tsv" "$dir" "$robot" "$label" "$calls")
-        b=$(count "build/${s}_robots" count "$out/states.tsv" "$dir" "$robot" "$label" $((3 * calls)))
-      fi
-      printf '%s\t%s\t%s\t%d\n' "$s" "$robot" "$label" $(((b - a) / (2 * calls))) >>"$out/counts.tsv"
+      counts_line "$s" "$robot" "$label" "$calls" >>"$out/counts.tsv"
     done
   done
   .venv/bin/python robots_report.py counts "$out/counts.tsv"

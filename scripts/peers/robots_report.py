@@ -1,4 +1,5 @@
-"""The check and the table of robots.sh, from the drivers' tab-separated output (robots_common.h).
+"""The check and the table of robots.sh, from the drivers' tab-separated output (robots_common.h);
+the table and the counts of floating.sh too.
 
     python3 robots_report.py check VALUES.tsv...            exit 2 when a check fails
     python3 robots_report.py table LOAD DOFS TIMES.tsv...   the timing table, one file per round
@@ -9,10 +10,10 @@ check: Pinocchio's values are the reference. For every other side, robot, quanti
 the largest difference relative to the size of the reference, max_i |x_i − ref_i| / max_i |ref_i|
 (q̈, τ: the vector's ∞-norm; M: the largest entry), must be ≤ 1e-10.
 
-table: per robot and label, the min over rounds of each round's min per-call time, and the
-median over rounds of each round's median; ratios of the mins; the growth exponent of each
-column from `arm7` to `humanoid`, log(t_humanoid / t_arm7) / log(30 / 7) (from `panda` to
-`talos` for the robots of example-robot-data).
+table: per robot and label (a column for each side and label present), the min over rounds of
+each round's min per-call time, and the median over rounds of each round's median; ratios of the
+mins; the growth exponent of each column from `arm7` to `humanoid`, log(t_humanoid / t_arm7) /
+log(30 / 7) (from `panda` to `talos` for the robots of example-robot-data).
 """
 
 import math
@@ -113,16 +114,20 @@ def table(load, paths) -> int:
             return "n/a"
         return f"{fmt_ns(min(mins[key]))} ({fmt_ns(statistics.median(medians[key]))})"
 
+    # The columns of the sides and labels timed (floating.sh times two of each).
+    columns = [c for c in COLUMNS if any((c[0], c[1], r) in mins for r in robots)]
+    ratios = [r for r in RATIOS if any((*r[0], x) in mins and (*r[1], x) in mins
+                                       for x in robots)]
     rounds = max((len(v) for v in mins.values()), default=0)
     print(f"Per call, min (median) over {rounds} interleaved rounds; each round's figure is the "
           "min (median) of 21 repetitions of ≈ 10 ms, one call at each of the robot's states.")
     print()
-    print("| robot | DoF | " + " | ".join(c[2] for c in COLUMNS) + " | "
-          + " | ".join(r[2] for r in RATIOS) + " |")
-    print("|---|---:|" + "---:|" * (len(COLUMNS) + len(RATIOS)))
+    print("| robot | DoF | " + " | ".join(c[2] for c in columns) + " | "
+          + " | ".join(r[2] for r in ratios) + " |")
+    print("|---|---:|" + "---:|" * (len(columns) + len(ratios)))
     for robot in robots:
-        cells = [cell(side, label, robot) for side, label, _ in COLUMNS]
-        for (a, b, _) in RATIOS:
+        cells = [cell(side, label, robot) for side, label, _ in columns]
+        for (a, b, _) in ratios:
             ta, tb = best((*a, robot)), best((*b, robot))
             cells.append("n/a" if ta is None or tb is None else f"{ta / tb:.2f}")
         print(f"| {robot} | {dof.get(robot, '?')} | " + " | ".join(cells) + " |")
@@ -130,12 +135,12 @@ def table(load, paths) -> int:
         if lo not in dof or hi not in dof or lo not in robots:
             continue
         cells = []
-        for side, label, _ in COLUMNS:
+        for side, label, _ in columns:
             ta, tb = best((side, label, lo)), best((side, label, hi))
             cells.append("n/a" if ta is None or tb is None else
                          f"{math.log(tb / ta) / math.log(dof[hi] / dof[lo]):.2f}")
         print(f"| growth exponent {lo} → {hi} | {dof[lo]} → {dof[hi]} | " + " | ".join(cells)
-              + " |" + " |" * len(RATIOS))
+              + " |" + " |" * len(ratios))
     print()
     print(f"load: {load[0]}")
     return 0
