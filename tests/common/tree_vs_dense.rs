@@ -7,6 +7,9 @@
 //! of the result leaves a margin of about 10⁴ over the observed differences (~1e-14) while
 //! catching any wrong term.
 
+// Each test file uses its own part of the helpers.
+#![allow(dead_code)]
+
 use lagrange::dynamics::{equations_of_motion, kinetic_energy, momenta};
 use lagrange::model::Model;
 use lagrange::prelude::*;
@@ -30,9 +33,16 @@ pub fn states<const N: usize>(count: usize) -> Vec<([f64; N], [f64; N])> {
         .collect()
 }
 
+/// The tolerance of the module docs, relative to the result's size (at least 1).
+pub const TOLERANCE: f64 = 1e-10;
+
 pub fn close(a: f64, b: f64, scale: f64, what: &str) {
+    close_within(a, b, scale, TOLERANCE, what);
+}
+
+pub fn close_within(a: f64, b: f64, scale: f64, tolerance: f64, what: &str) {
     assert!(
-        (a - b).abs() <= 1e-10 * scale.max(1.0),
+        (a - b).abs() <= tolerance * scale.max(1.0),
         "{what}: tree {a}, dense {b}"
     );
 }
@@ -46,7 +56,21 @@ where
     M: Model<N, K>,
     H: Mechanism<N>,
 {
-    for (q, v) in states::<N>(6) {
+    agrees_with_dense_at::<M, H, N, K>(declared, sys, &states::<N>(6), TOLERANCE);
+}
+
+/// [`agrees_with_dense`] at the given states (q, q̇), within `tolerance` relative.
+pub fn agrees_with_dense_at<M, H, const N: usize, const K: usize>(
+    declared: &M,
+    sys: &H,
+    states: &[([f64; N], [f64; N])],
+    tolerance: f64,
+) where
+    M: Model<N, K>,
+    H: Mechanism<N>,
+{
+    let close = |a: f64, b: f64, scale: f64, what: &str| close_within(a, b, scale, tolerance, what);
+    for &(q, v) in states {
         let s = State::new(
             0.0,
             Named::<H, N>::from_array(q),

@@ -118,6 +118,7 @@ fn joint(node: &Node, nodes: &[Node]) -> TokenStream {
             (quote!(#r::JointKind::Prismatic(#a)), slot)
         }
         Joint::Fixed => (quote!(#r::JointKind::Fixed), 0),
+        Joint::Free(first) => (quote!(#r::JointKind::Free), first),
     };
     let parent = match node.parent {
         Some(p) => {

@@ -157,3 +157,145 @@ fn a_body_declared_by_its_frame() {
     // Principal moments need no decomposition: the lower link's frame has no axes to turn.
     assert!(!out.contains("principal_axes(&__inertia_lower"));
 }
+
+/// A floating base as `#[lagrange::urdf(.., floating)]` writes it: the root's six consecutive
+/// coordinates (origin, then modified Rodrigues parameters) are the runtime's free joint, and a
+/// link hinged on it is placed from it as from any body.
+#[test]
+fn a_floating_base_takes_the_rigid_tree_pass_as_a_free_joint() {
+    let out = snapshot(
+        "floating_base",
+        quote! {
+            pub mod floating {
+                pub struct Coords { pub base_position: [f64; 3], pub base_rotation: [f64; 3], pub q: f64 }
+                pub struct Floating { pub m: f64, pub g: f64 }
+                #[rigid_body(mass = m, inertia = [0.3, 0.2, 0.1])]
+                fn base() -> Spatial {
+                    spatial(
+                        vec3(base_position[0], base_position[1], base_position[2]),
+                        rot_mrp(vec3(base_rotation[0], base_rotation[1], base_rotation[2])),
+                    )
+                }
+                #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
+                fn leg() -> Spatial {
+                    base.joint(vec3(0.2, 0.0, -0.1), rot_y(q))
+                }
+                #[gravity]
+                fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+            }
+        },
+    );
+    let squeezed: String = out.split_whitespace().collect();
+    assert!(out.contains("tree::rigid::RigidTree<7, 2> for Floating"));
+    // The base: a root, free on coordinates 0..6, with no constant rotation or offset.
+    assert!(squeezed.contains(
+        "parent:::lagrange::__private::core::option::Option::None,kind:::lagrange::__private::tree::rigid::JointKind::Free,coordinate:0,rotated:false,offset:[false,false,false],"
+    ));
+    // The leg: hinged on the base by coordinate 6.
+    assert!(squeezed.contains(
+        "parent:::lagrange::__private::core::option::Option::Some(0),kind:::lagrange::__private::tree::rigid::JointKind::Revolute(::lagrange::__private::tree::rigid::spatial::Axis::Y,),coordinate:6,"
+    ));
+    assert!(!out.contains("dynamics::equations_of_motion::<Self"));
+}
+
+/// A free body the tree pass cannot take as the runtime's free joint keeps the dense pass: its six
+/// coordinates out of order, its orientation a rotation vector, the parameters before the origin,
+/// a constant offset in the world frame or a constant rotation before `rot_mrp`, or a parent.
+#[test]
+fn a_free_body_not_written_as_a_free_root_keeps_the_dense_pass() {
+    let base = |pose: TokenStream| {
+        quote! {
+            pub mod floating {
+                pub struct Coords { pub p: [f64; 3], pub s: [f64; 3], pub q: f64 }
+                pub struct Floating { pub m: f64, pub g: f64 }
+                #[rigid_body(mass = m, inertia = [0.3, 0.2, 0.1])]
+                fn base() -> Spatial { #pose }
+                #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
+                fn leg() -> Spatial { base.joint(vec3(0.2, 0.0, -0.1), rot_y(q)) }
+                #[gravity]
+                fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+            }
+        }
+    };
+    let dense = |module: TokenStream, why: &str| {
+        let out: String = pretty(expand(TokenStream::new(), module))
+            .split_whitespace()
+            .collect();
+        assert!(!out.contains("tree::rigid::RigidTree<"), "{why}");
+        assert!(
+            out.contains("dynamics::equations_of_motion::<Self"),
+            "{why}"
+        );
+    };
+    let cases = [
+        (
+            quote!(spatial(
+                vec3(p[0], p[2], p[1]),
+                rot_mrp(vec3(s[0], s[1], s[2]))
+            )),
+            "origin's coordinates out of order",
+        ),
+        (
+            quote!(spatial(
+                vec3(p[0], p[1], p[2]),
+                rot_vector(vec3(s[0], s[1], s[2]))
+            )),
+            "a rotation vector",
+        ),
+        (
+            quote!(spatial(
+                vec3(p[0], p[1], p[2]) + vec3(0.0, 0.0, 1.0),
+                rot_mrp(vec3(s[0], s[1], s[2]))
+            )),
+            "a constant offset in the world frame",
+        ),
+        (
+            quote!(spatial(
+                vec3(p[0], p[1], p[2]),
+                rot_x(0.1) * rot_mrp(vec3(s[0], s[1], s[2]))
+            )),
+            "a constant rotation before the parameters'",
+        ),
+    ];
+    for (pose, why) in cases {
+        dense(base(pose), why);
+    }
+    // The parameters' coordinates before the origin's: were it taken for a free joint on the six
+    // coordinates from the origin's, the base would claim a, b and c, the hinges s, and each
+    // coordinate would move one node (the point moves no node): a wrong tree.
+    dense(
+        quote! {
+            pub mod floating {
+                pub struct Coords { pub s: [f64; 3], pub p: [f64; 3], pub a: f64, pub b: f64, pub c: f64 }
+                pub struct Floating { pub m: f64 }
+                #[rigid_body(mass = m, inertia = [0.3, 0.2, 0.1])]
+                fn base() -> Spatial { spatial(vec3(p[0], p[1], p[2]), rot_mrp(vec3(s[0], s[1], s[2]))) }
+                #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
+                fn leg1() -> Spatial { base.joint(vec3(0.2, 0.0, -0.1), rot_y(s[0])) }
+                #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
+                fn leg2() -> Spatial { base.joint(vec3(-0.2, 0.0, -0.1), rot_y(s[1])) }
+                #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
+                fn leg3() -> Spatial { base.joint(vec3(0.0, 0.2, -0.1), rot_x(s[2])) }
+                #[point]
+                fn marker() -> Vec3 { vec3(a, b, c) }
+            }
+        },
+        "the parameters' coordinates before the origin's",
+    );
+    // Free on a parent, in the parent's frame: the runtime's free joint is a root's.
+    dense(
+        quote! {
+            pub mod floating {
+                pub struct Coords { pub q: f64, pub p: [f64; 3], pub s: [f64; 3] }
+                pub struct Floating { pub m: f64 }
+                #[rigid_body(mass = m, inertia = [0.3, 0.2, 0.1])]
+                fn link() -> Spatial { spatial(vec3(0.0, 0.0, 1.0), rot_z(q)) }
+                #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
+                fn rider() -> Spatial {
+                    spatial(link.point(vec3(p[0], p[1], p[2])), link.rotation * rot_mrp(vec3(s[0], s[1], s[2])))
+                }
+            }
+        },
+        "a free body with a parent",
+    );
+}

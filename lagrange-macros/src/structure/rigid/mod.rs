@@ -1,6 +1,7 @@
 //! The kinematic tree of rigid bodies a declaration states (see `lagrange_core::tree::rigid`):
 //! each body placed from an earlier one (or the ground) by constant rotations and offsets and at
-//! most one joint — a rotation about a coordinate axis by one coordinate, or a slide along one.
+//! most one joint — a rotation about a coordinate axis by one coordinate, or a slide along one — or,
+//! for a root, a free joint of six coordinates (see [`free`]).
 //!
 //! ```text
 //! #[rigid_body(mass = m2, inertia = [ix2, iy2, iz2])]
@@ -21,6 +22,7 @@
 //! Which declarations this reads is listed in the facade's README ("How it works"); anything else
 //! keeps the dense pass, which is what the tree is tested against.
 
+mod free;
 mod value;
 
 use crate::check::{family_index, Model, Shape};
@@ -37,6 +39,9 @@ pub enum Joint {
     /// Along an axis of the joint frame, by coordinate `slot`.
     Prismatic(Axis, usize),
     Fixed,
+    /// A root moved by coordinates `slot..slot + 6`: its origin, then its orientation's modified
+    /// Rodrigues parameters (see [`free`]).
+    Free(usize),
 }
 
 /// A constant vector turned by constant rotation factors (`Rot3<f64>` and `Vec3<f64>`
@@ -153,8 +158,16 @@ fn without_massless_leaves(model: &Model, nodes: Vec<Node>) -> Vec<Node> {
 fn each_coordinate_moves_one_node(model: &Model, nodes: &[Node]) -> bool {
     let mut owners = vec![0; model.dof()];
     for node in nodes {
-        if let Joint::Revolute(_, slot) | Joint::Prismatic(_, slot) = node.joint {
-            owners[slot] += 1;
+        let slots = match node.joint {
+            Joint::Revolute(_, slot) | Joint::Prismatic(_, slot) => slot..slot + 1,
+            Joint::Free(first) => first..first + 6,
+            Joint::Fixed => continue,
+        };
+        for slot in slots {
+            match owners.get_mut(slot) {
+                Some(n) => *n += 1,
+                None => return false,
+            }
         }
     }
     owners.iter().all(|&n| n == 1)
@@ -211,6 +224,10 @@ fn node(nodes: &[Node], body: usize, member: Option<usize>, value: Value) -> Opt
         None => None,
     };
     let mut node = place(rotation, terms)?;
+    // The runtime's free joint is a root's (its E the identity, its r zero).
+    if matches!(node.joint, Joint::Free(_)) && parent.is_some() {
+        return None;
+    }
     node.body = body;
     node.member = member;
     node.parent = parent;
@@ -248,7 +265,10 @@ fn place(rotation: Option<Vec<Factor>>, terms: Vec<(Vec<Factor>, Piece)>) -> Opt
     let joints: Vec<usize> = (0..turned.len())
         .filter(|&i| matches!(turned[i], Factor::Joint(..)))
         .collect();
+    let free = turned.iter().any(|f| matches!(f, Factor::Mrp(_)));
     match (joints.as_slice(), slides) {
+        ([], 0) if free && rotation.is_some() => free::free(&turned, terms),
+        _ if free => None,
         ([], 0) => fixed(&turned, terms),
         ([j], 0) => revolute(&turned, *j, terms, rotation.is_some()),
         ([], 1) => prismatic(&turned, terms),
@@ -396,6 +416,7 @@ fn same(a: &[Factor], b: &[Factor]) -> bool {
         && a.iter().zip(b).all(|(x, y)| match (x, y) {
             (Factor::Body(m), Factor::Body(n)) => m == n,
             (Factor::Joint(a, s), Factor::Joint(b, t)) => a == b && s == t,
+            (Factor::Mrp(s), Factor::Mrp(t)) => s == t,
             (Factor::Constant(c), Factor::Constant(d)) => c.to_string() == d.to_string(),
             _ => false,
         })

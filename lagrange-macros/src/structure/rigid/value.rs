@@ -30,6 +30,8 @@ pub enum Factor {
     Constant(TokenStream),
     /// A rotation about a coordinate axis by coordinate `slot`.
     Joint(Axis, usize),
+    /// `rot_mrp` of the coordinates `slot`, `slot + 1`, `slot + 2` (see [`super::free`]).
+    Mrp(usize),
 }
 
 /// What a piece of a position is before the rotations of its term act on it.
@@ -43,6 +45,8 @@ pub enum Piece {
     /// c ± e_axis q_slot: a slide along a coordinate axis by a coordinate (backwards when the flag
     /// is set), from a constant.
     Slide(Option<TokenStream>, Axis, usize, bool),
+    /// (q_slot, q_slot+1, q_slot+2): three consecutive coordinates (see [`super::free`]).
+    Coordinates(usize),
 }
 
 /// A term of a position: rotations (left to right) applied to a piece.
@@ -242,6 +246,7 @@ impl<'a> Reader<'a> {
                 Some(Value::Rotation(vec![Factor::Constant(quote!(rot3(#m)))]))
             }
             ("rot_axis", [axis, angle]) => rotation_about_axis(axis, angle),
+            ("rot_mrp", [parameters]) => super::free::mrp(parameters),
             ("spatial", [Value::Vector(position), Value::Rotation(rotation)]) => {
                 Some(Value::Pose {
                     position: position.clone(),
@@ -405,6 +410,9 @@ fn scalar(e: &Expr) -> Value {
 
 /// `vec3(x, y, z)` of constants, or with one coordinate as a component (a slide).
 fn vector(components: &[&Value]) -> Option<Value> {
+    if let Some(v) = super::free::coordinates(components) {
+        return Some(v);
+    }
     let mut exprs = Vec::new();
     let mut slide = None;
     let mut zeros = [false; 3];

@@ -63,8 +63,8 @@ pub mod by_euler {
     }
 }
 
-/// The tests' quadruped with its root link flying free (18 coordinates: the general pass), and the
-/// same file with its root fixed to the ground (12: the rigid tree pass).
+/// The tests' quadruped with its root link flying free (18 coordinates: the rigid tree pass, its
+/// root a free joint), and the same file with its root fixed to the ground (12: the rigid tree pass).
 #[lagrange::urdf("../../tests/urdf/quadruped.urdf", floating)]
 pub mod floating_quadruped {}
 #[lagrange::urdf("../../tests/urdf/quadruped.urdf")]
