@@ -127,7 +127,8 @@ fn both_charts_give_the_same_motion() {
 }
 
 /// A quadruped from a URDF file the repository writes, its root link flying free: 6 coordinates of
-/// the base (position, rotation vector) and 12 joints.
+/// the base (position, modified Rodrigues parameters) and 12 joints; the rigid tree pass with a
+/// free root.
 #[lagrange::urdf("tests/urdf/quadruped.urdf", floating)]
 pub mod quadruped {}
 
