@@ -1,7 +1,7 @@
 //! [`impl_mechanism!`](crate::impl_mechanism): the glue `#[mechanism]` generates, for models
 //! written by hand.
 
-/// Implements [`Mechanism`] for a hand-written [`Model`](crate::Model) with `N` coordinates and `K`
+/// Implements [`Mechanism`](crate::Mechanism) for a hand-written [`Model`](crate::Model) with `N` coordinates and `K`
 /// Cartesian coordinates, forwarding every method to [`crate::dynamics`]: the same glue
 /// `#[mechanism]` generates, for models written by hand (tests, benchmarks, peers).
 ///

@@ -35,7 +35,7 @@ pub trait Mechanism<const N: usize>: Evaluate<N> {
 
     /// The mechanism with the inputs `inputs` held (a declaration with `#[inputs]`): every
     /// evaluation, step and analysis of the result sees them, constant over each step (see
-    /// [`Driven`](crate::inputs::Driven)). Without it the inputs are zero.
+    /// [`Driven`]). Without it the inputs are zero.
     fn driven<const NU: usize>(
         &self,
         inputs: &<Self::Model as Actuated<NU>>::Inputs,

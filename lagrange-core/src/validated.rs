@@ -69,7 +69,7 @@ impl<M: Prepare> Validated<M> {
     }
 
     /// The parameters, to change them (and check them again with
-    /// [`Mechanism::validated`]).
+    /// [`Mechanism::validated`](crate::Mechanism::validated)).
     pub fn into_inner(self) -> M {
         self.0
     }

@@ -16,7 +16,7 @@ use num_dual::{Dual, Dual2};
 
 /// Relative tolerance under which [`check_consistent`] accepts a state, [`infer_mode`] counts a
 /// contact as closed or a slip velocity as zero, and [`project`] is done: each row's residual is
-/// measured against its own size at the state ([`RowScales`]: the change of the row over a motion
+/// measured against its own size at the state (`RowScales`: the change of the row over a motion
 /// of the configuration's own size, or at its velocity), so the test is the same in every system
 /// of units and for a row written in any unit. States produced by [`project`] are at round-off,
 /// far below it.

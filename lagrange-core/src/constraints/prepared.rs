@@ -404,9 +404,9 @@ pub fn project_prepared<M: Constraints<N, K, C>, const N: usize, const K: usize,
     Ok(())
 }
 
-/// [`accelerations`] of a mechanism whose positions are affine in the coordinates (x = A q + c,
+/// [`accelerations`](super::accelerations) of a mechanism whose positions are affine in the coordinates (x = A q + c,
 /// see [`crate::affine`]), with the constants prepared once from its parameters: what a
-/// constrained affine mechanism's validated handle evaluates. Agrees with [`accelerations`] to
+/// constrained affine mechanism's validated handle evaluates. Agrees with [`accelerations`](super::accelerations) to
 /// round-off.
 ///
 /// ```

@@ -2,7 +2,7 @@
 //! and what MPI ranks send to each other.
 
 /// A value stored as a fixed number of cells, each an `f64` or missing (`None`): a cell is a
-/// column of a part file ([`Parts`](super::Parts)), and a missing cell is a null there.
+/// column of a part file (`Parts`, with the `parquet` feature), and a missing cell is a null there.
 ///
 /// Implemented for `f64` (one cell, never missing), `Option<f64>` (one cell, missing for `None`),
 /// arrays `[f64; N]`, and pairs and triples of implementors (their cells side by side).

@@ -8,7 +8,7 @@
 //! (the state a loop carries, not another solver); trajectory sensitivities are a solver that
 //! carries the tangent of the trajectory ([`Stepper::with_sensitivities`]).
 //!
-//! What is here: method data ([`rk4`], the explicit pairs [`dopri5`] and [`dop853`] and their
+//! What is here: method data (`rk4`, the explicit pairs [`dopri5`] and [`dop853`] and their
 //! dense outputs, [`radau`]'s stages, the collocation methods of [`implicit`], the symplectic
 //! schemes [`verlet`] and [`variational`] with [`rattle`]), two loops (the fixed-step one,
 //! generic over the one-step method, and the adaptive one, generic over the [`EmbeddedPair`]),
@@ -52,7 +52,7 @@
 //! loop a held mode's closed unilateral contacts are such rows for the step (released where their
 //! multiplier crosses 0, closed where their gap does): symplectic on the manifold of the contacts
 //! that hold. They refuse velocity constraints and friction, whose rows constrain q̇, with
-//! [`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod) (the other methods integrate
+//! [`Error::UnsuitableMethod`] (the other methods integrate
 //! those). Which constraints a method enforces is decided by the declaration alone —
 //! `Dynamics::CONSTRAINT_COUNTS` and `Dynamics::CONSTRAINTS` — never by the multipliers at
 //! some state (a pendulum released horizontally at rest has λ = 0 at its first step and is treated

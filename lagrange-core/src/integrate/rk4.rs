@@ -94,7 +94,7 @@ impl Integrator for Rk4 {
     type Memory<const N: usize> = ();
     const STEPS_ON_DUALS: bool = true;
 
-    /// [`rk4_step`] on any scalar: four evaluations of `acc`.
+    /// `rk4_step` on any scalar: four evaluations of `acc`.
     #[inline]
     fn advance_on_duals<S: Scalar, const N: usize>(
         t: f64,

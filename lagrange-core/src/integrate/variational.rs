@@ -26,7 +26,7 @@
 //! [`Integrator`] on the (q, v) [`State`] by a Legendre transform at both ends of a step:
 //! p₀ = ∂L/∂v(t₀, q₀, v₀) before, and after it v₁ solves ∂L/∂v(t₁, q₁, v₁) = p₁: T is quadratic
 //! in v for every mechanism, so v₁ = M⁻¹(p₁ − p(t₁, q₁, 0)), one solve with the mass matrix
-//! M(q₁, t₁) (see [`canonical::velocities_from_momenta`]). Because the Legendre
+//! M(q₁, t₁) (see `canonical::velocities_from_momenta`). Because the Legendre
 //! transform at t₁ is inverted exactly (to round-off), the next step's p₀ is this step's p₁ and
 //! the sequence of (q, p) is that of the discrete flow: the step map is symplectic in (q, p) for any
 //! Lagrangian, second order, symmetric. [`Variational::step_momenta`] works on (q, p) directly.
@@ -339,7 +339,7 @@ impl Variational {
     }
 
     /// The velocities v with ∂L/∂v(t, q, v) = p (inverse Legendre transform), one solve with the
-    /// mass matrix (see [`canonical::velocities_from_momenta`]). Returns v and the solves (1).
+    /// mass matrix (see `canonical::velocities_from_momenta`). Returns v and the solves (1).
     pub fn velocities_from_momenta<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
         t: f64,

@@ -21,7 +21,8 @@ use nalgebra::{SMatrix, SVector};
 /// An LU factorisation with scaled partial pivoting of a matrix of S×S blocks of size N×N (an
 /// (S·N)-square matrix; stable Rust cannot name S·N as an array length, so the blocks are
 /// indexed through r ↦ (r / N, r % N)): factorised once, solved many times — the simplified Newton
-/// iteration's matrix (see the [module docs](self) for the pivots).
+/// iteration's matrix: its pivots are chosen and tested on scaled rows, so the test does not depend
+/// on the units of the unknowns.
 ///
 /// ```
 /// use lagrange_core::linalg::BlockLu;

@@ -303,8 +303,8 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
     }
 }
 
-/// q̈ at (t, q, q̇) under the generalized forces τ, by the three sweeps as loops (see the
-/// [module docs](self)). Errors name the coordinates `C`: a singular mass matrix (a pivot D_b not
+/// q̈ at (t, q, q̇) under the generalized forces τ, by the three sweeps as loops (Featherstone
+/// §7.3, Table 7.1). Errors name the coordinates `C`: a singular mass matrix (a pivot D_b not
 /// clearly positive), non-finite dynamics.
 pub fn accelerations<C: Coordinates<N>, S: Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],

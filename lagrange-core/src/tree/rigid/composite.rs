@@ -18,7 +18,7 @@ use super::{free, Joint, JointKind, RigidConstants};
 use crate::geometry::Scalar;
 use nalgebra::SMatrix;
 
-/// M(q) by the composite-rigid-body algorithm (see the [module docs](self)).
+/// M(q) by the composite-rigid-body algorithm (Featherstone §6.2, Table 6.2).
 pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,
@@ -94,7 +94,8 @@ fn free_block<S: Scalar, const N: usize>(
     }
 }
 
-/// p = M q̇ at (q, q̇) from the composite momenta (see the [module docs](self)).
+/// p = M q̇ at (q, q̇) from the composite momenta: p_j = S_jᵀ h^C_j, h^C_b the spatial momentum
+/// of b's subtree.
 pub fn momenta<S: Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,

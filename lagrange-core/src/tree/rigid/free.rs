@@ -1,5 +1,5 @@
 //! The free joint: a root body's six coordinates, its origin p in the world and its orientation in
-//! modified Rodrigues parameters σ (R = [`rot_mrp`](crate::geometry::rot_mrp)(σ), body to world;
+//! modified Rodrigues parameters σ (R = [`rot_mrp`]\(σ\), body to world;
 //! Schaub & Junkins, *Analytical Mechanics of Space Systems*, 2nd ed., 2009, §3.8), as the
 //! recursions take it (Featherstone, *Rigid Body Dynamics Algorithms*, 2008, §4.4 and §9.3: a
 //! floating base is a six-degree-of-freedom joint to the ground).
