@@ -95,7 +95,7 @@ impl<'a, M: Prepare + ?Sized> Constants<'a, M> {
 /// | item | what |
 /// |---|---|
 /// | `type Coords` | the named coordinates |
-/// | `type Contacts` | the contact modes of its rows ([`NoContacts`](crate::constraints::NoContacts), or [`ContactState`](crate::constraints::ContactState) with unilateral or friction rows): what a time loop holds over a step |
+/// | `type Contacts` | the contact modes of its rows ([`NoContacts`](crate::constraints::NoContacts), or [`ContactState`](crate::constraints::ContactState) with unilateral or friction rows, [`DrivenContacts`](crate::inputs::DrivenContacts) with inputs too): what a time loop holds over a step |
 /// | `CONSTRAINT_COUNTS`, `CONSTRAINTS`, `SCLERONOMIC`, `CLOSED_FORM` | what the declaration states |
 /// | `check_parameters` | finite parameters, positive masses and inertias |
 /// | `equations_of_motion_at(prepared, t, q, q̇)` | M, 𝓕 and b |
@@ -125,7 +125,9 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     /// The contact modes of the declaration's constraint rows and their evaluation:
     /// [`NoContacts`](crate::constraints::NoContacts) without unilateral or friction rows,
     /// [`ContactState`](crate::constraints::ContactState) with them (or with any constraint rows,
-    /// its `SWITCHES` then false).
+    /// its `SWITCHES` then false), [`DrivenContacts`](crate::inputs::DrivenContacts) for a
+    /// declaration with inputs (the same modes, evaluated with the inputs of the call holding
+    /// them).
     type Contacts: ContactModel<Self, N>;
 
     /// The constraint rows the declaration has, by kind (`Some(ConstraintCounts::NONE)` for none),

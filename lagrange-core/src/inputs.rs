@@ -16,8 +16,11 @@
 //! applied forces, which read the inputs. With inputs of a dual-number type, the same functions
 //! give ∂q̈/∂u ([`input_matrix`]).
 
+mod contacts;
+pub use contacts::DrivenContacts;
+
 use crate::constraints::{CartesianMotion, ConstraintKind, ConstraintRows, Constraints, Coulomb};
-use crate::evaluation::{Constants, Evaluate};
+use crate::evaluation::{Constants, Evaluate, Prepare};
 use crate::geometry::Scalar;
 use crate::model::{Model, GRADIENT_COEFFICIENTS};
 use crate::parameters::lift;
@@ -228,6 +231,15 @@ where
             cartesian_force,
             generalized_force,
         )
+    }
+}
+
+/// The declaration's constants: holding inputs changes no parameter.
+impl<M: Prepare, U, const NU: usize> Prepare for WithInputs<'_, M, U, NU> {
+    type Prepared = M::Prepared;
+    const PREPARED_IN_ONE_BRANCH: bool = M::PREPARED_IN_ONE_BRANCH;
+    fn prepare(&self) -> crate::Result<M::Prepared> {
+        self.model.prepare()
     }
 }
 

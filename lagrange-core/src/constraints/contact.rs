@@ -9,6 +9,7 @@ use super::switch::transition;
 use super::{accelerations_in_mode, cone, infer_mode, project, ConstraintCounts, Constraints};
 use super::{Mode, RowMode};
 use crate::error::{Error, Result};
+use crate::evaluation::{Constants, Prepare};
 use crate::geometry::Scalar;
 
 /// The contact mode of a declaration as a time loop holds it over a step: the accelerations, the
@@ -28,9 +29,12 @@ use crate::geometry::Scalar;
 ///
 /// A row whose event just fired is disarmed until its new event function is positive, which rules
 /// out chattering at a stick/slip boundary or a grazing release. Implemented by [`ContactState`]
-/// for a [`Constraints`] declaration and by [`NoContacts`] (nothing switches) for any other;
-/// `M` is the declaration's model, every method evaluates on it.
-pub trait ContactModel<M, const N: usize>: Copy + PartialEq + std::fmt::Debug {
+/// for a [`Constraints`] declaration, by [`DrivenContacts`](crate::inputs::DrivenContacts) for one
+/// with inputs and by [`NoContacts`] (nothing switches) for any other; `M` is the declaration's
+/// model, every method evaluates on it with the constants of the call that holds the mode (the
+/// inputs a [`Driven`](crate::inputs::Driven) mechanism holds, a validated handle's prepared
+/// constants), so a mode held over a step sees what the step's other evaluations see.
+pub trait ContactModel<M: Prepare, const N: usize>: Copy + PartialEq + std::fmt::Debug {
     /// Whether the declaration has rows whose mode switches (unilateral contacts, friction):
     /// otherwise nothing is held and a time loop takes the mechanism's own steps.
     const SWITCHES: bool;
@@ -45,28 +49,70 @@ pub trait ContactModel<M, const N: usize>: Copy + PartialEq + std::fmt::Debug {
 
     /// The mode at (t, q, q̇) by complementarity ([`infer_mode`]), with the rows whose event
     /// function is positive armed. The state is assumed checked and on the constraints.
-    fn start(model: &M, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<Self>;
+    fn start(
+        model: &M,
+        constants: Constants<'_, M>,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+    ) -> Result<Self>;
     /// A mode held by nobody: what a solver keeps for a declaration whose mode does not switch.
     fn idle() -> Self;
     /// Before an interval of length `span` from (t, q, q̇): a sliding friction cone continues its
     /// slip direction of the interval's start (see [`Mode::reference`]).
-    fn refresh(&mut self, model: &M, t: f64, q: &[f64; N], v: &[f64; N], span: f64) -> Result<()>;
+    fn refresh(
+        &mut self,
+        model: &M,
+        constants: Constants<'_, M>,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        span: f64,
+    ) -> Result<()>;
     /// q̈ in the mode ([`accelerations_in_mode`]), for any scalar.
-    fn accelerations<S: Scalar>(&self, model: &M, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]>;
+    fn accelerations<S: Scalar>(
+        &self,
+        model: &M,
+        constants: Constants<'_, M>,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> Result<[S; N]>;
     /// Projects (q, q̇) onto the rows the mode enforces ([`project`]); unchanged on error.
-    fn project(&self, model: &M, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()>;
+    fn project(
+        &self,
+        model: &M,
+        constants: Constants<'_, M>,
+        t: f64,
+        q: &mut [f64; N],
+        v: &mut [f64; N],
+    ) -> Result<()>;
     /// The values g(q, t) of the position rows the mode enforces (holonomic rows and closed
     /// contacts), in declaration order, padded with zeros to N entries: what RATTLE enforces.
-    fn held_positions<S: Scalar>(&self, model: &M, t: S, q: &[S; N]) -> [S; N];
+    fn held_positions<S: Scalar>(
+        &self,
+        model: &M,
+        constants: Constants<'_, M>,
+        t: S,
+        q: &[S; N],
+    ) -> [S; N];
     /// How many of [`held_positions`](Self::held_positions) are rows.
     fn held_position_rows(&self) -> usize;
     /// The event function of every row (+∞ for rows without one).
-    fn event_values(&self, model: &M, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<Self::Values>;
+    fn event_values(
+        &self,
+        model: &M,
+        constants: Constants<'_, M>,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+    ) -> Result<Self::Values>;
     /// The rows whose event fired over an interval from (t, q, q̇) whose end has the event values
     /// `end`: armed rows negative there, and a contact that bounced off and closes again.
     fn triggered(
         &self,
         model: &M,
+        constants: Constants<'_, M>,
         t: f64,
         q: &[f64; N],
         v: &[f64; N],
@@ -78,9 +124,11 @@ pub trait ContactModel<M, const N: usize>: Copy + PartialEq + std::fmt::Debug {
     /// applies the switch (impact with coefficient `restitution`, release, slip stop, stick break,
     /// then complementarity and the projection onto the new mode, moving (q, q̇)), and disarms
     /// every row whose mode changed. Returns the change.
+    #[allow(clippy::too_many_arguments)]
     fn switch(
         &mut self,
         model: &M,
+        constants: Constants<'_, M>,
         restitution: f64,
         t: f64,
         state: (&mut [f64; N], &mut [f64; N]),
@@ -94,43 +142,81 @@ pub trait ContactModel<M, const N: usize>: Copy + PartialEq + std::fmt::Debug {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct NoContacts;
 
-impl<M, const N: usize> ContactModel<M, N> for NoContacts {
+impl<M: Prepare, const N: usize> ContactModel<M, N> for NoContacts {
     const SWITCHES: bool = false;
     const HELD_COUNTS: ConstraintCounts = ConstraintCounts::NONE;
     type Values = [f64; 0];
     type Rows = [bool; 0];
 
-    fn start(_: &M, _: f64, _: &[f64; N], _: &[f64; N]) -> Result<Self> {
+    fn start(_: &M, _: Constants<'_, M>, _: f64, _: &[f64; N], _: &[f64; N]) -> Result<Self> {
         Ok(NoContacts)
     }
     fn idle() -> Self {
         NoContacts
     }
-    fn refresh(&mut self, _: &M, _: f64, _: &[f64; N], _: &[f64; N], _: f64) -> Result<()> {
+    fn refresh(
+        &mut self,
+        _: &M,
+        _: Constants<'_, M>,
+        _: f64,
+        _: &[f64; N],
+        _: &[f64; N],
+        _: f64,
+    ) -> Result<()> {
         Ok(())
     }
-    fn accelerations<S: Scalar>(&self, _: &M, _: S, _: &[S; N], _: &[S; N]) -> Result<[S; N]> {
+    fn accelerations<S: Scalar>(
+        &self,
+        _: &M,
+        _: Constants<'_, M>,
+        _: S,
+        _: &[S; N],
+        _: &[S; N],
+    ) -> Result<[S; N]> {
         Err(no_contacts())
     }
-    fn project(&self, _: &M, _: f64, _: &mut [f64; N], _: &mut [f64; N]) -> Result<()> {
+    fn project(
+        &self,
+        _: &M,
+        _: Constants<'_, M>,
+        _: f64,
+        _: &mut [f64; N],
+        _: &mut [f64; N],
+    ) -> Result<()> {
         Ok(())
     }
-    fn held_positions<S: Scalar>(&self, _: &M, _: S, _: &[S; N]) -> [S; N] {
+    fn held_positions<S: Scalar>(&self, _: &M, _: Constants<'_, M>, _: S, _: &[S; N]) -> [S; N] {
         [S::zero(); N]
     }
     fn held_position_rows(&self) -> usize {
         0
     }
-    fn event_values(&self, _: &M, _: f64, _: &[f64; N], _: &[f64; N]) -> Result<[f64; 0]> {
+    fn event_values(
+        &self,
+        _: &M,
+        _: Constants<'_, M>,
+        _: f64,
+        _: &[f64; N],
+        _: &[f64; N],
+    ) -> Result<[f64; 0]> {
         Ok([])
     }
-    fn triggered(&self, _: &M, _: f64, _: &[f64; N], _: &[f64; N], _: &[f64; 0]) -> [bool; 0] {
+    fn triggered(
+        &self,
+        _: &M,
+        _: Constants<'_, M>,
+        _: f64,
+        _: &[f64; N],
+        _: &[f64; N],
+        _: &[f64; 0],
+    ) -> [bool; 0] {
         []
     }
     fn rearm(&mut self, _: &[f64; 0]) {}
     fn switch(
         &mut self,
         _: &M,
+        _: Constants<'_, M>,
         _: f64,
         _: f64,
         _: (&mut [f64; N], &mut [f64; N]),
@@ -169,9 +255,11 @@ fn position_rows<M: Constraints<N, K, C>, const N: usize, const K: usize, const 
     (0..C).filter(|&i| M::KINDS[i].is_position() && mode.enforced(i))
 }
 
+/// The declaration as it is: it has no inputs to hold, and the mode's solve is the general one,
+/// which reads no prepared constants.
 impl<M, const N: usize, const K: usize, const C: usize> ContactModel<M, N> for ContactState<K, C>
 where
-    M: Constraints<N, K, C>,
+    M: Constraints<N, K, C> + Prepare,
 {
     const SWITCHES: bool = {
         let counts = ConstraintCounts::of(&M::KINDS);
@@ -188,7 +276,7 @@ where
     type Values = [f64; C];
     type Rows = [bool; C];
 
-    fn start(model: &M, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<Self> {
+    fn start(model: &M, _: Constants<'_, M>, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<Self> {
         let mode = infer_mode(model, t, q, v)?;
         let phi = event_values(model, t, q, v, &mode)?;
         Ok(ContactState {
@@ -204,20 +292,48 @@ where
         }
     }
 
-    fn refresh(&mut self, model: &M, t: f64, q: &[f64; N], v: &[f64; N], span: f64) -> Result<()> {
+    fn refresh(
+        &mut self,
+        model: &M,
+        _: Constants<'_, M>,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+        span: f64,
+    ) -> Result<()> {
         cone::refresh_references(model, t, q, v, span, &mut self.mode)
     }
 
     #[inline]
-    fn accelerations<S: Scalar>(&self, model: &M, t: S, q: &[S; N], v: &[S; N]) -> Result<[S; N]> {
+    fn accelerations<S: Scalar>(
+        &self,
+        model: &M,
+        _: Constants<'_, M>,
+        t: S,
+        q: &[S; N],
+        v: &[S; N],
+    ) -> Result<[S; N]> {
         Ok(accelerations_in_mode(model, t, q, v, &self.mode)?.accelerations)
     }
 
-    fn project(&self, model: &M, t: f64, q: &mut [f64; N], v: &mut [f64; N]) -> Result<()> {
+    fn project(
+        &self,
+        model: &M,
+        _: Constants<'_, M>,
+        t: f64,
+        q: &mut [f64; N],
+        v: &mut [f64; N],
+    ) -> Result<()> {
         project(model, t, q, v, &self.mode)
     }
 
-    fn held_positions<S: Scalar>(&self, model: &M, t: S, q: &[S; N]) -> [S; N] {
+    fn held_positions<S: Scalar>(
+        &self,
+        model: &M,
+        _: Constants<'_, M>,
+        t: S,
+        q: &[S; N],
+    ) -> [S; N] {
         let x = model.cartesian(t, q);
         let g = model.position_constraints(t, q, &x);
         let mut out = [S::zero(); N];
@@ -231,13 +347,21 @@ where
         position_rows::<M, N, K, C>(&self.mode).count()
     }
 
-    fn event_values(&self, model: &M, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<[f64; C]> {
+    fn event_values(
+        &self,
+        model: &M,
+        _: Constants<'_, M>,
+        t: f64,
+        q: &[f64; N],
+        v: &[f64; N],
+    ) -> Result<[f64; C]> {
         event_values(model, t, q, v, &self.mode)
     }
 
     fn triggered(
         &self,
         model: &M,
+        _: Constants<'_, M>,
         t: f64,
         q: &[f64; N],
         v: &[f64; N],
@@ -255,6 +379,7 @@ where
     fn switch(
         &mut self,
         model: &M,
+        _: Constants<'_, M>,
         restitution: f64,
         t: f64,
         (q, v): (&mut [f64; N], &mut [f64; N]),

@@ -28,7 +28,7 @@ use super::stepper::{ContactsOf, Method, Stepper, Tangent};
 use super::{EmbeddedPair, Integrator, Stats};
 use crate::constraints::{ContactModel, ModeChange};
 use crate::error::{Error, Result};
-use crate::evaluation::{diagnose, Dynamics, Evaluate};
+use crate::evaluation::{diagnose, Constants, Dynamics, Evaluate, Prepare};
 use crate::model::{check_state, Coordinates};
 use nalgebra::SMatrix;
 
@@ -81,6 +81,7 @@ impl<P: EmbeddedPair, const N: usize> Method<N> for P {
                 if ContactsOf::<M, N>::SWITCHES {
                     let field = InMode {
                         model: s.mechanism.model(),
+                        constants: s.mechanism.prepared(),
                         contacts: s.contacts,
                     };
                     s.method.start(&field, start, &mut stats)
@@ -223,16 +224,19 @@ fn project_accepted<M: Evaluate<N>, const N: usize>(
 
 /// The accelerations of a constrained mechanism in a held contact mode: q̈ in `f64`, and its
 /// Jacobians by dual numbers through the same solve (exact for the mode: the mode's rows
-/// enforced, its sliding directions and slip signs fixed).
-struct InMode<'m, M, X> {
+/// enforced, its sliding directions and slip signs fixed), with the constants of the call that
+/// holds the mode.
+struct InMode<'m, M: Prepare, X> {
     model: &'m M,
+    constants: Constants<'m, M>,
     contacts: X,
 }
 
-impl<M, X: ContactModel<M, N>, const N: usize> AccelerationField<N> for InMode<'_, M, X> {
+impl<M: Prepare, X: ContactModel<M, N>, const N: usize> AccelerationField<N> for InMode<'_, M, X> {
     #[inline]
     fn accelerations(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<[f64; N]> {
-        self.contacts.accelerations(self.model, t, q, v)
+        self.contacts
+            .accelerations(self.model, self.constants, t, q, v)
     }
 
     fn jacobians(
@@ -242,7 +246,8 @@ impl<M, X: ContactModel<M, N>, const N: usize> AccelerationField<N> for InMode<'
         v: &[f64; N],
     ) -> Result<(SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
         let (_, by_q, by_v) = jacobians_by_duals(t, q, v, |t, q, v| {
-            self.contacts.accelerations(self.model, t, q, v)
+            self.contacts
+                .accelerations(self.model, self.constants, t, q, v)
         })?;
         Ok((by_q, by_v))
     }
@@ -273,13 +278,17 @@ where
     M: Evaluate<N>,
     T: Tangent<M, N>,
 {
-    let model = s.mechanism.model();
+    let (model, constants) = (s.mechanism.model(), s.mechanism.prepared());
     let (t, q, v) = (s.t, s.q, s.v);
     let mut contacts = s.contacts;
     // A sliding cone continues its slip direction of the step's start.
     let h_next = <P as EmbeddedPair>::proposed_step(&memory).min(t_limit - t);
-    contacts.refresh(model, t, &q, &v, h_next)?;
-    let field = InMode { model, contacts };
+    contacts.refresh(model, constants, t, &q, &v, h_next)?;
+    let field = InMode {
+        model,
+        constants,
+        contacts,
+    };
     let a = if contacts == s.contacts {
         s.a
     } else {
@@ -294,13 +303,13 @@ where
         working.0, working.1, &field, start, t_limit, &mut stats, &mut dense,
     )?;
     stats.event_evaluations += 1;
-    let phi_end = contacts.event_values(model, step.t, &step.q, &step.v)?;
+    let phi_end = contacts.event_values(model, constants, step.t, &step.q, &step.v)?;
     let step_end = (step, &phi_end);
     let mut end = cut_at_event::<P, M::Model, M::Coords, N>(
         &method, working, &field, start, step_end, &mut dense, &mut stats,
     )?;
     let unprojected = (end.q, end.v);
-    contacts.project(model, end.t, &mut end.q, &mut end.v)?;
+    contacts.project(model, constants, end.t, &mut end.q, &mut end.v)?;
     if (end.q, end.v) != unprojected {
         check_state(&M::Coords::NAMES, end.t, &end.q, &end.v)?;
     }
@@ -311,7 +320,7 @@ where
         // In the regular chart the end's q̈ is another vector (the dense output stays in the
         // chart the step was taken in).
         stats.evaluations += 1;
-        a_end = contacts.accelerations(model, end.t, &end.q, &end.v)?;
+        a_end = contacts.accelerations(model, constants, end.t, &end.q, &end.v)?;
         P::field_changed(&mut memory);
     } else if event.is_some() {
         P::field_changed(&mut memory);
@@ -353,7 +362,7 @@ fn cut_at_event<P: EmbeddedPair, M: Dynamics<N>, C: Coordinates<N>, const N: usi
     dense: &mut DenseOutput<N>,
     stats: &mut Stats,
 ) -> Result<StepEnd<N>> {
-    let (model, contacts) = (field.model, &field.contacts);
+    let (model, constants, contacts) = (field.model, field.constants, &field.contacts);
     let (t, q, v, a) = start;
     let mut end = StepEnd {
         t: step.t,
@@ -362,16 +371,16 @@ fn cut_at_event<P: EmbeddedPair, M: Dynamics<N>, C: Coordinates<N>, const N: usi
         a: step.a,
         change: None,
     };
-    let triggered = contacts.triggered(model, t, q, v, phi_end);
+    let triggered = contacts.triggered(model, constants, t, q, v, phi_end);
     if !triggered.as_ref().iter().any(|&b| b) {
         return Ok(end);
     }
     stats.event_evaluations += 1;
-    let phi_start = contacts.event_values(model, t, q, v)?;
+    let phi_start = contacts.event_values(model, constants, t, q, v)?;
     let mut first: Option<(f64, usize)> = None;
     for (row, _) in triggered.as_ref().iter().enumerate().filter(|(_, &b)| b) {
         let phi = (phi_start.as_ref()[row], phi_end.as_ref()[row]);
-        let root = locate(model, contacts, dense, row, phi, stats);
+        let root = locate(field, dense, row, phi, stats);
         if first.is_none_or(|f| root < f.0) {
             first = Some((root, row));
         }
@@ -405,7 +414,7 @@ fn switch_or_rearm<P: EmbeddedPair, M: Evaluate<N>, const N: usize>(
     phi_end: &<ContactsOf<M, N> as ContactModel<M::Model, N>>::Values,
     stats: &mut Stats,
 ) -> Result<([f64; N], Option<ModeChange>)> {
-    let model = field.model;
+    let (model, constants) = (field.model, field.constants);
     match end.change {
         None => {
             let a = match end.a {
@@ -422,11 +431,11 @@ fn switch_or_rearm<P: EmbeddedPair, M: Evaluate<N>, const N: usize>(
             stats.event_evaluations += 1;
             let restitution = s.options.restitution;
             let state = (&mut end.q, &mut end.v);
-            let change = contacts.switch(model, restitution, end.t, state, row)?;
+            let change = contacts.switch(model, constants, restitution, end.t, state, row)?;
             check_state(&M::Coords::NAMES, end.t, &end.q, &end.v)?;
             // The next step integrates another field (or the same from a state that jumped).
             stats.evaluations += 1;
-            let a = contacts.accelerations(model, end.t, &end.q, &end.v)?;
+            let a = contacts.accelerations(model, constants, end.t, &end.q, &end.v)?;
             Ok((a, Some(change)))
         }
     }
@@ -436,17 +445,16 @@ fn switch_or_rearm<P: EmbeddedPair, M: Evaluate<N>, const N: usize>(
 /// values at both ends. A function that starts at zero (a contact that just bounced off) is
 /// bracketed from the first of t₀ + h·2⁻ᵏ (k = 40, …, 1) where it is positive, as the fixed-step
 /// loop does; if there is none, the event is at t₀. Adds the evaluations to `stats`.
-fn locate<M, X: ContactModel<M, N>, const N: usize>(
-    model: &M,
-    contacts: &X,
+fn locate<M: Prepare, X: ContactModel<M, N>, const N: usize>(
+    field: &InMode<'_, M, X>,
     dense: &DenseOutput<N>,
     row: usize,
     (phi_start, phi_end): (f64, f64),
     stats: &mut Stats,
 ) -> f64 {
     let g = |t: f64, q: &[f64; N], v: &[f64; N]| {
-        contacts
-            .event_values(model, t, q, v)
+        (field.contacts)
+            .event_values(field.model, field.constants, t, q, v)
             .map_or(f64::NAN, |phi| phi.as_ref()[row])
     };
     let (t0, t1) = (dense.t_start(), dense.t_end());

@@ -176,14 +176,14 @@ where
     M: Evaluate<N>,
     T: Tangent<M, N>,
 {
-    let (m, model) = (s.mechanism, s.mechanism.model());
+    let (m, model, constants) = (s.mechanism, s.mechanism.model(), s.mechanism.prepared());
     let mut contacts = s.contacts;
     let mut stats = Stats::default();
     let start = (s.t, &s.q, &s.v);
     let ((q1, v1), changes) =
         hold_over_step::<I, M, N>(m, &mut contacts, &s.options, start, h, &mut stats)?;
     let a1 = contacts
-        .accelerations(model, t1, &q1, &v1)
+        .accelerations(model, constants, t1, &q1, &v1)
         .unwrap_or([f64::NAN; N]);
     stats.evaluations += 1;
     s.dense
@@ -192,7 +192,7 @@ where
     let a1 = if m.switch_charts(&mut q1, &mut v1) {
         stats.evaluations += 1;
         contacts
-            .accelerations(model, t1, &q1, &v1)
+            .accelerations(model, constants, t1, &q1, &v1)
             .unwrap_or([f64::NAN; N])
     } else {
         a1
@@ -216,7 +216,8 @@ pub(super) fn step_holding_contacts<I: Integrator, M: Evaluate<N>, const N: usiz
     check_step_at(state.t, h)?;
     let (q, v) = mechanism.check(state)?;
     mechanism.check_constraints(state.t, &q, &v)?;
-    let mut contacts = ContactsOf::<M, N>::start(mechanism.model(), state.t, &q, &v)?;
+    let (model, constants) = (mechanism.model(), mechanism.prepared());
+    let mut contacts = ContactsOf::<M, N>::start(model, constants, state.t, &q, &v)?;
     let options = ContactOptions::default();
     let start = (state.t, &q, &v);
     let mut stats = Stats::default();
@@ -226,23 +227,18 @@ pub(super) fn step_holding_contacts<I: Integrator, M: Evaluate<N>, const N: usiz
     commit(state, state.t + h, &q1, &v1)
 }
 
-/// A (sub)step of length τ from (t, q, q̇) with the contact mode `contacts` held: one step of `I`
-/// with fresh working memory on the mechanism in that mode ([`HeldMode`]), projected onto the
-/// mode's rows.
+/// A (sub)step of length τ from (t, q, q̇) with a contact mode held: one step of `I` with fresh
+/// working memory on the mechanism in that mode ([`HeldMode`], with the outer call's constants),
+/// projected onto the mode's rows.
 fn held_step<I: Integrator, M: Dynamics<N>, const N: usize>(
-    model: &M,
-    contacts: &M::Contacts,
+    held: &HeldMode<'_, M, M::Contacts>,
     (t, q, v): (f64, &[f64; N], &[f64; N]),
     tau: f64,
     stats: &mut Stats,
 ) -> Result<([f64; N], [f64; N])> {
-    let held = HeldMode {
-        model,
-        contacts: *contacts,
-    };
     let mut memory = I::Memory::<N>::default();
-    let (mut q1, mut v1) = I::advance(&held, &mut memory, t, q, v, tau, stats)?;
-    contacts.project(model, t + tau, &mut q1, &mut v1)?;
+    let (mut q1, mut v1) = I::advance(held, &mut memory, t, q, v, tau, stats)?;
+    held.project(t + tau, &mut q1, &mut v1)?;
     Ok((q1, v1))
 }
 
@@ -271,7 +267,7 @@ pub(super) fn hold_over_step<I: Integrator, M: Evaluate<N>, const N: usize>(
     stats: &mut Stats,
 ) -> Result<(([f64; N], [f64; N]), Vec<ModeChange>)> {
     refuse_velocity_rows::<I, M, N>()?;
-    let model = mechanism.model();
+    let (model, constants) = (mechanism.model(), mechanism.prepared());
     let t_end = t0 + h;
     let (mut t, mut q, mut v) = (t0, *q0, *v0);
     let mut x = *contacts;
@@ -279,10 +275,15 @@ pub(super) fn hold_over_step<I: Integrator, M: Evaluate<N>, const N: usize>(
     let mut changes: Vec<ModeChange> = Vec::new();
     loop {
         let span = t_end - t;
-        x.refresh(model, t, &q, &v, span)?;
-        let end = held_step::<I, M::Model, N>(model, &x, (t, &q, &v), span, &mut cost)?;
-        let phi1 = x.event_values(model, t_end, &end.0, &end.1)?;
-        let triggered = x.triggered(model, t, &q, &v, &phi1);
+        x.refresh(model, constants, t, &q, &v, span)?;
+        let held = HeldMode {
+            model,
+            constants,
+            contacts: x,
+        };
+        let end = held_step::<I, M::Model, N>(&held, (t, &q, &v), span, &mut cost)?;
+        let phi1 = x.event_values(model, constants, t_end, &end.0, &end.1)?;
+        let triggered = x.triggered(model, constants, t, &q, &v, &phi1);
         let Some(first) = triggered.as_ref().iter().position(|&b| b) else {
             x.rearm(&phi1);
             (q, v) = end;
@@ -296,10 +297,11 @@ pub(super) fn hold_over_step<I: Integrator, M: Evaluate<N>, const N: usize>(
         };
         let fired = (first, &triggered);
         let (tau, row, state) =
-            earliest_event::<I, M::Model, N>(model, &x, options, &interval, fired, &mut cost)?;
+            earliest_event::<I, M::Model, N>(&held, options, &interval, fired, &mut cost)?;
         t += tau;
         (q, v) = state;
-        changes.push(x.switch(model, options.restitution, t, (&mut q, &mut v), row)?);
+        let restitution = options.restitution;
+        changes.push(x.switch(model, constants, restitution, t, (&mut q, &mut v), row)?);
         if changes.len() > options.max_events_per_step {
             return Err(Error::TooManyEvents {
                 t,
@@ -334,18 +336,19 @@ struct Interval<'a, V, const N: usize> {
 /// after it): its (sub)step length just past the event, its row and the state there.
 #[allow(clippy::type_complexity)]
 fn earliest_event<I: Integrator, M: Dynamics<N>, const N: usize>(
-    model: &M,
-    x: &M::Contacts,
+    held: &HeldMode<'_, M, M::Contacts>,
     options: &ContactOptions,
     interval: &Interval<'_, <M::Contacts as ContactModel<M, N>>::Values, N>,
     (first, triggered): (usize, &<M::Contacts as ContactModel<M, N>>::Rows),
     stats: &mut Stats,
 ) -> Result<(f64, usize, ([f64; N], [f64; N]))> {
     let (t, q, v) = interval.start;
-    let phi0 = x.event_values(model, t, q, v)?;
+    let phi0 = held
+        .contacts
+        .event_values(held.model, held.constants, t, q, v)?;
     let locate_row = |row: usize, stats: &mut Stats| {
         let phi = (phi0.as_ref()[row], interval.phi_end.as_ref()[row]);
-        locate::<I, M, N>(model, x, options, interval, row, phi, stats)
+        locate::<I, M, N>(held, options, interval, row, phi, stats)
     };
     let (tau, state) = locate_row(first, stats)?;
     let mut earliest = (tau, first, state);
@@ -366,8 +369,7 @@ fn earliest_event<I: Integrator, M: Dynamics<N>, const N: usize>(
 /// at the start.
 #[allow(clippy::type_complexity)]
 fn locate<I: Integrator, M: Dynamics<N>, const N: usize>(
-    model: &M,
-    x: &M::Contacts,
+    held: &HeldMode<'_, M, M::Contacts>,
     options: &ContactOptions,
     interval: &Interval<'_, <M::Contacts as ContactModel<M, N>>::Values, N>,
     row: usize,
@@ -377,8 +379,12 @@ fn locate<I: Integrator, M: Dynamics<N>, const N: usize>(
     let (t, q, v) = interval.start;
     let span = interval.span;
     let at = |tau: f64, stats: &mut Stats| -> Result<(f64, ([f64; N], [f64; N]))> {
-        let state = held_step::<I, M, N>(model, x, (t, q, v), tau, stats)?;
-        let value = x.event_values(model, t + tau, &state.0, &state.1)?.as_ref()[row];
+        let state = held_step::<I, M, N>(held, (t, q, v), tau, stats)?;
+        let (model, constants) = (held.model, held.constants);
+        let value = held
+            .contacts
+            .event_values(model, constants, t + tau, &state.0, &state.1)?;
+        let value = value.as_ref()[row];
         Ok((value, state))
     };
     let (mut a, mut fa) = (0.0, phi_start);

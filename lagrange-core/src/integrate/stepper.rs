@@ -208,10 +208,13 @@ impl<'m, M: Evaluate<N>, Me: Method<N>, const N: usize> Stepper<'m, M, Me, N> {
         q: [f64; N],
         v: [f64; N],
     ) -> Result<Self> {
-        let model = mechanism.model();
+        let (model, constants) = (mechanism.model(), mechanism.prepared());
         let (contacts, a) = if ContactsOf::<M, N>::SWITCHES {
-            let contacts = ContactsOf::<M, N>::start(model, t, &q, &v)?;
-            (contacts, contacts.accelerations(model, t, &q, &v)?)
+            let contacts = ContactsOf::<M, N>::start(model, constants, t, &q, &v)?;
+            (
+                contacts,
+                contacts.accelerations(model, constants, t, &q, &v)?,
+            )
         } else {
             let a = mechanism
                 .accelerations_at(t, &q, &v)

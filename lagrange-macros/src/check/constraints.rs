@@ -102,28 +102,6 @@ pub(super) fn check_constraint_count(cx: &Ctxt, model: &Model) {
     }
 }
 
-/// Inputs reach the forces through the evaluation's constants; a contact mode held over a step
-/// evaluates the mechanism without them, so a mechanism with unilateral or friction rows declares
-/// no inputs (rather than silently stepping its contacts with the inputs zero).
-pub(super) fn check_inputs_without_contacts(cx: &Ctxt, model: &Model) {
-    let Some(inputs) = model.inputs_ident else {
-        return;
-    };
-    let contact = model
-        .constraints
-        .iter()
-        .find(|r| matches!(r.decl.kind(), Kind::Unilateral | Kind::Friction));
-    if let Some(row) = contact {
-        cx.error_spanned_by(
-            inputs,
-            format!(
-                "inputs are not supported on a mechanism with contact rows (`{}`): a contact mode is stepped without them",
-                row.decl.ident()
-            ),
-        );
-    }
-}
-
 /// A friction row: its slip velocity, its contact row and its Coulomb coefficients. Records the
 /// contact.
 pub(super) fn check_friction(cx: &Ctxt, model: &mut Model, decl: &Decl) {

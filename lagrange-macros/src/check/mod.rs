@@ -40,7 +40,6 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     indices::check_indices(cx, &model);
     indices::check_arrays_read_by_element(cx, &model);
     constraints::check_constraint_count(cx, &model);
-    constraints::check_inputs_without_contacts(cx, &model);
     masses::check_coordinates_are_used(cx, &model);
     helpers::check_helper_calls(cx, &model);
     model.charts = charts::rotation_charts(cx, &model);

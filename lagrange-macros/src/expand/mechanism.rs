@@ -169,7 +169,8 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
 }
 
 /// The declaration's constraint rows by kind, and its contact modes: `ContactState` over its rows
-/// when it has any (the loops hold a mode only where unilateral or friction rows switch it),
+/// when it has any (the loops hold a mode only where unilateral or friction rows switch it), with
+/// inputs `DrivenContacts` (the same mode, evaluated with the inputs the loop's call holds),
 /// `NoContacts` otherwise. Declared, so integrators decide from the declaration which constraint
 /// forces act.
 fn declared_rows(glue: &Glue) -> (TokenStream, TokenStream) {
@@ -182,7 +183,14 @@ fn declared_rows(glue: &Glue) -> (TokenStream, TokenStream) {
             let counts = quote!(#constraints::ConstraintCounts::of(
                 &<Self as #constraints::Constraints<#n, #k, #c>>::KINDS
             ));
-            (counts, quote!(#constraints::ContactState<#k, #c>))
+            let contacts = match glue.inputs {
+                None => quote!(#constraints::ContactState<#k, #c>),
+                Some(nu) => {
+                    let nu = lit(nu);
+                    quote!(#p::lagrange_core::inputs::DrivenContacts<#k, #c, #nu>)
+                }
+            };
+            (counts, contacts)
         }
         None => (
             quote!(#constraints::ConstraintCounts::NONE),

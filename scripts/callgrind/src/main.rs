@@ -666,6 +666,40 @@ fn main() {
             }
             acc += q[0];
         }
+        // One step per call of the gallery's block sliding on a rough incline (a unilateral
+        // contact and a friction cone, the contact mode held over the step): `sys.step::<Rk4>`
+        // (h = 10⁻³; the mode inferred at every call) through a validated handle, or an accepted
+        // step of a Dopri5 `Stepper` (the mode held across steps) up to the next 10⁻² of time.
+        "rk4_pushed_block" | "dopri5_pushed_block" => {
+            use lagrange_gallery::scenes::pushed_block::pushed_block::*;
+            let sys = PushedBlock {
+                m: 2.0,
+                g: 9.81,
+                alpha: 0.3,
+                mu_k: 0.4,
+                mu_s: 0.5,
+                push: 12.0,
+            }
+            .validated()
+            .unwrap();
+            let mut s = State::at_rest(Coords {
+                x: 0.0,
+                y: 0.0,
+                z: 0.0,
+            });
+            if which == "rk4_pushed_block" {
+                for _ in 0..n {
+                    black_box(&sys).step::<Rk4>(&mut s, 1e-3).unwrap();
+                }
+            } else {
+                let mut stepper = Stepper::new(&sys, Dopri5::default(), &s).unwrap();
+                for i in 0..n {
+                    stepper.step(1e-2 * (i + 1) as f64).unwrap();
+                }
+                s = stepper.state();
+            }
+            acc += s.q.x;
+        }
         "wedge_block" => {
             use wedge_block::*;
             let sys = WedgeBlock {
