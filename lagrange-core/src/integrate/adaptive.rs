@@ -66,7 +66,7 @@ impl<P: EmbeddedPair, const N: usize> Method<N> for P {
     }
 
     /// One accepted step, not past `t_limit`, cut at the first mode change inside it for a
-    /// declaration with unilateral or friction rows (see the [module docs](self)). On error the
+    /// declaration with unilateral or friction rows (see the [`integrate`](crate::integrate) module docs). On error the
     /// solver (state, memory, statistics, contact mode, mode changes) is unchanged.
     #[inline]
     fn step<M: Evaluate<N>, T: Tangent<M, N>>(

@@ -113,7 +113,7 @@ impl<M: Evaluate<N>, const N: usize> Tangent<M, N> for NoTangent {
     fn switch_charts(&mut self, _: &M) {}
 }
 
-/// A solver: a mechanism stepped by one method from a state (see the [module docs](self)).
+/// A solver: a mechanism stepped by one method from a state (see the [`integrate`](crate::integrate) module docs).
 ///
 /// ```
 /// use lagrange_core::integrate::{Direction, Event, Observation, StopReason, Stepper};
