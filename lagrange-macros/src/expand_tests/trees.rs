@@ -201,32 +201,36 @@ fn a_floating_base_takes_the_rigid_tree_pass_as_a_free_joint() {
 /// A free body the tree pass cannot take as the runtime's free joint keeps the dense pass: its six
 /// coordinates out of order, its orientation a rotation vector, the parameters before the origin,
 /// a constant offset in the world frame or a constant rotation before `rot_mrp`, or a parent.
+/// A floating base placed by `pose`, with a leg on a hinge.
+fn floating_with_base(pose: TokenStream) -> TokenStream {
+    quote! {
+        pub mod floating {
+            pub struct Coords { pub p: [f64; 3], pub s: [f64; 3], pub q: f64 }
+            pub struct Floating { pub m: f64, pub g: f64 }
+            #[rigid_body(mass = m, inertia = [0.3, 0.2, 0.1])]
+            fn base() -> Spatial { #pose }
+            #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
+            fn leg() -> Spatial { base.joint(vec3(0.2, 0.0, -0.1), rot_y(q)) }
+            #[gravity]
+            fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
+        }
+    }
+}
+
+/// The declaration expands to the dense pass, not a rigid tree.
+fn dense(module: TokenStream, why: &str) {
+    let out: String = pretty(expand(TokenStream::new(), module))
+        .split_whitespace()
+        .collect();
+    assert!(!out.contains("tree::rigid::RigidTree<"), "{why}");
+    assert!(
+        out.contains("dynamics::equations_of_motion::<Self"),
+        "{why}"
+    );
+}
+
 #[test]
 fn a_free_body_not_written_as_a_free_root_keeps_the_dense_pass() {
-    let base = |pose: TokenStream| {
-        quote! {
-            pub mod floating {
-                pub struct Coords { pub p: [f64; 3], pub s: [f64; 3], pub q: f64 }
-                pub struct Floating { pub m: f64, pub g: f64 }
-                #[rigid_body(mass = m, inertia = [0.3, 0.2, 0.1])]
-                fn base() -> Spatial { #pose }
-                #[rigid_body(mass = 0.5, inertia = [0.01, 0.01, 0.002])]
-                fn leg() -> Spatial { base.joint(vec3(0.2, 0.0, -0.1), rot_y(q)) }
-                #[gravity]
-                fn down() -> Vec3 { vec3(0.0, 0.0, -g) }
-            }
-        }
-    };
-    let dense = |module: TokenStream, why: &str| {
-        let out: String = pretty(expand(TokenStream::new(), module))
-            .split_whitespace()
-            .collect();
-        assert!(!out.contains("tree::rigid::RigidTree<"), "{why}");
-        assert!(
-            out.contains("dynamics::equations_of_motion::<Self"),
-            "{why}"
-        );
-    };
     let cases = [
         (
             quote!(spatial(
@@ -258,8 +262,12 @@ fn a_free_body_not_written_as_a_free_root_keeps_the_dense_pass() {
         ),
     ];
     for (pose, why) in cases {
-        dense(base(pose), why);
+        dense(floating_with_base(pose), why);
     }
+}
+
+#[test]
+fn a_free_body_with_its_parameters_before_its_origin_keeps_the_dense_pass() {
     // The parameters' coordinates before the origin's: were it taken for a free joint on the six
     // coordinates from the origin's, the base would claim a, b and c, the hinges s, and each
     // coordinate would move one node (the point moves no node): a wrong tree.
@@ -282,6 +290,10 @@ fn a_free_body_not_written_as_a_free_root_keeps_the_dense_pass() {
         },
         "the parameters' coordinates before the origin's",
     );
+}
+
+#[test]
+fn a_free_body_with_a_parent_keeps_the_dense_pass() {
     // Free on a parent, in the parent's frame: the runtime's free joint is a root's.
     dense(
         quote! {
