@@ -111,11 +111,11 @@ pub(crate) fn velocity<S: Scalar>(sigma: V3<S>, q_dot: [S; 6]) -> (Motion<S>, Mo
     (velocity, bias)
 }
 
-/// S⁻¹ m: the rates (p̈, σ̈) whose joint motion is m = (ω; v), p̈ = R v, σ̈ = A₊(σ) ω / 4.
+/// S⁻¹ m: the rates (p̈, σ̈) whose joint motion is m = (ω; v), p̈ = R v, σ̈ = A₊(σ) ω / 4, with
+/// R = R(σ) given.
 #[inline(always)]
-pub(crate) fn rates_of<S: Scalar>(sigma: V3<S>, m: &Motion<S>) -> [S; 6] {
-    let r = rotation(sigma);
-    let p = rotate(&r, m.linear);
+pub(crate) fn rates_of<S: Scalar>(r: &M3<S>, sigma: V3<S>, m: &Motion<S>) -> [S; 6] {
+    let p = rotate(r, m.linear);
     let s = scale3(a_map(sigma, m.angular, true), S::from(0.25));
     [p[0], p[1], p[2], s[0], s[1], s[2]]
 }
@@ -177,7 +177,9 @@ pub(crate) fn root_acceleration<S: Scalar>(
 }
 
 /// q̈ of the joint from the root's acceleration a: S q̈ = a − X a₀ − Ṡ q̇, with X a₀ the ground's
-/// acceleration (the uniform field's) in the body's frame and Ṡ q̇ the joint's bias.
+/// acceleration (the uniform field's) in the body's frame and Ṡ q̇ the joint's bias. R is formed
+/// once for X and S⁻¹: p̈ = R (a_v − c_v) − R Rᵀ a₀_v = R (a_v − c_v) − a₀_v (a₀ has no angular
+/// part), σ̈ = A₊(σ)(a_ω − c_ω)/4.
 #[inline(always)]
 pub(crate) fn accelerations<S: Scalar>(
     sigma: V3<S>,
@@ -185,12 +187,15 @@ pub(crate) fn accelerations<S: Scalar>(
     ground: &Motion<S>,
     bias: &Motion<S>,
 ) -> [S; 6] {
-    let from = from_ground(sigma, ground);
     let joint = Motion {
-        angular: sub3(sub3(a.angular, from.angular), bias.angular),
-        linear: sub3(sub3(a.linear, from.linear), bias.linear),
+        angular: sub3(a.angular, bias.angular),
+        linear: sub3(a.linear, bias.linear),
     };
-    rates_of(sigma, &joint)
+    let mut rates = rates_of(&rotation(sigma), sigma, &joint);
+    for k in 0..3 {
+        rates[k] -= ground.linear[k];
+    }
+    rates
 }
 
 #[cfg(test)]
@@ -217,7 +222,7 @@ mod tests {
 
     #[test]
     fn the_inverse_maps_undo_the_joint() {
-        let back = rates_of(SIGMA, &motion_of(SIGMA, RATES));
+        let back = rates_of(&rotation(SIGMA), SIGMA, &motion_of(SIGMA, RATES));
         close(&back, &RATES, 1e-14);
         // Sᵀ (S⁻ᵀ τ) = τ.
         let tau = [1.5, -0.3, 0.8, 0.2, -1.0, 0.6];
