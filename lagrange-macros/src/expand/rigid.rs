@@ -4,7 +4,7 @@
 //! constant body index so that it is compiled for its own joint (`lagrange_core::tree::rigid`).
 
 use crate::attr::Inertia;
-use crate::check::{family_index, Dim, Model, Shape};
+use crate::check::{family_index, ChartKind, Dim, Model, Shape};
 use crate::expand::{lit, prelude, private};
 use crate::structure::rigid::{product, Axis, Joint, Node, Offset, RigidTree};
 use proc_macro2::TokenStream;
@@ -118,7 +118,17 @@ fn joint(node: &Node, nodes: &[Node]) -> TokenStream {
             (quote!(#r::JointKind::Prismatic(#a)), slot)
         }
         Joint::Fixed => (quote!(#r::JointKind::Fixed), 0),
-        Joint::Free(first) => (quote!(#r::JointKind::Free), first),
+        Joint::Free(chart, first) => {
+            let chart = match chart {
+                ChartKind::Mrp => quote!(Mrp),
+                ChartKind::Vector => quote!(Vector),
+            };
+            let geometry = quote!(::lagrange::__private::lagrange_core::geometry);
+            (
+                quote!(#r::JointKind::Free(#geometry::RotationChart::#chart)),
+                first,
+            )
+        }
     };
     let parent = match node.parent {
         Some(p) => {

@@ -470,7 +470,9 @@ pub mod floating {
         const JOINTS: [::lagrange::__private::tree::rigid::Joint; 2] = [
             ::lagrange::__private::tree::rigid::Joint {
                 parent: ::lagrange::__private::core::option::Option::None,
-                kind: ::lagrange::__private::tree::rigid::JointKind::Free,
+                kind: ::lagrange::__private::tree::rigid::JointKind::Free(
+                    ::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,
+                ),
                 coordinate: 0,
                 rotated: false,
                 offset: [false, false, false],

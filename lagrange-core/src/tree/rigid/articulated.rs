@@ -164,7 +164,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             JointKind::Revolute(axis) => Some((axis, inertia.angular_column(axis), true)),
             JointKind::Prismatic(axis) => Some((axis, inertia.linear_column(axis), false)),
             JointKind::Fixed => None,
-            JointKind::Free => {
+            JointKind::Free(_) => {
                 return self.articulate_root(joint, moving.state, (inertia, bias), tau, b)
             }
         };
@@ -221,11 +221,11 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         tau: &[S; N],
         b: usize,
     ) -> core::result::Result<(), Pivot> {
-        let JointState::Free(sigma) = state else {
+        let JointState::Free(o) = state else {
             out_of_order("a free joint without its orientation")
         };
         let tau = free::rates(tau, joint.coordinate);
-        match free::root_acceleration(sigma, &inertia, &bias, tau) {
+        match free::root_acceleration(o, &inertia, &bias, tau) {
             Ok(a) => {
                 self.projected[b] = Some(Projected::Root(a));
                 Ok(())
@@ -262,8 +262,8 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             &self.projected[b],
             "a body accelerated before its articulation",
         );
-        if let (Projected::Root(a), JointState::Free(sigma)) = (projected, moving.state) {
-            let rates = free::accelerations(sigma, &a, &above, &moving.bias_acceleration);
+        if let (Projected::Root(a), JointState::Free(o)) = (projected, moving.state) {
+            let rates = free::accelerations(o, &a, &above, &moving.bias_acceleration);
             qdd[joint.coordinate..joint.coordinate + 6].copy_from_slice(&rates);
             self.acceleration[b] = Some(a);
             return;

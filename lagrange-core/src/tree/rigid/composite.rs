@@ -33,7 +33,7 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
             JointKind::Revolute(axis) => Some(composite[b].angular_column(axis)),
             JointKind::Prismatic(axis) => Some(composite[b].linear_column(axis)),
             JointKind::Fixed => None,
-            JointKind::Free => {
+            JointKind::Free(_) => {
                 free_block(joint, state[b], &composite[b], &mut m);
                 None
             }
@@ -49,10 +49,10 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
                     let c = joints[j].coordinate;
                     m[(i, c)] = entry;
                     m[(c, i)] = entry;
-                } else if let JointState::Free(sigma) = state[j] {
+                } else if let JointState::Free(o) = state[j] {
                     // A free root: M_jb = S_jᵀ F, six entries.
                     let c = joints[j].coordinate;
-                    for (l, entry) in free::forces_of(sigma, &f).into_iter().enumerate() {
+                    for (l, entry) in free::forces_of(o, &f).into_iter().enumerate() {
                         m[(i, c + l)] = entry;
                         m[(c + l, i)] = entry;
                     }
@@ -75,15 +75,15 @@ fn free_block<S: Scalar, const N: usize>(
     composite: &Inertia<S>,
     m: &mut SMatrix<S, N, N>,
 ) {
-    let JointState::Free(sigma) = state else {
+    let JointState::Free(o) = state else {
         return;
     };
     let c = joint.coordinate;
     for k in 0..6 {
         let unit = std::array::from_fn(|l| if l == k { S::one() } else { S::zero() });
-        let column = composite.apply(&free::motion_of(sigma, unit));
+        let column = composite.apply(&free::motion_of(o, unit));
         // The upper triangle, mirrored: M symmetric to the last bit.
-        for (l, entry) in free::forces_of(sigma, &column)
+        for (l, entry) in free::forces_of(o, &column)
             .into_iter()
             .enumerate()
             .take(k + 1)

@@ -17,8 +17,8 @@ pub enum JointState<S> {
     Turned(S, S),
     Slid(S),
     Welded,
-    /// A free joint's orientation σ (its origin p enters no frame change the recursions make).
-    Free(V3<S>),
+    /// A free joint's orientation (its origin p enters no frame change the recursions make).
+    Free(free::Orientation<S>),
 }
 
 impl<S: Scalar> JointState<S> {
@@ -32,7 +32,9 @@ impl<S: Scalar> JointState<S> {
             }
             JointKind::Prismatic(_) => JointState::Slid(q[joint.coordinate]),
             JointKind::Fixed => JointState::Welded,
-            JointKind::Free => JointState::Free(free::orientation(q, joint.coordinate)),
+            JointKind::Free(chart) => {
+                JointState::Free(free::orientation(chart, q, joint.coordinate))
+            }
         }
     }
 }
@@ -46,8 +48,8 @@ pub(crate) fn motion_to_child<S: Scalar>(
     state: JointState<S>,
     m: &Motion<S>,
 ) -> Motion<S> {
-    if let JointState::Free(sigma) = state {
-        return free::from_ground(sigma, m);
+    if let JointState::Free(o) = state {
+        return free::from_ground(o, m);
     }
     // ω × r = −(r × ω).
     let r_cross_w = cross_const(&k.offset, joint.offset, m.angular);
@@ -150,8 +152,8 @@ pub(crate) fn velocity<S: Scalar, const N: usize>(
     parent: Option<&Motion<S>>,
     q_dot: &[S; N],
 ) -> (Motion<S>, Motion<S>) {
-    if let JointState::Free(sigma) = state {
-        return free::velocity(sigma, free::rates(q_dot, joint.coordinate));
+    if let JointState::Free(o) = state {
+        return free::velocity(o, free::rates(q_dot, joint.coordinate));
     }
     let rate = rate_of(joint, q_dot);
     let mut v = match parent {
@@ -169,7 +171,7 @@ pub(crate) fn velocity<S: Scalar, const N: usize>(
             v.linear[axis.indices().0] += rate;
             c
         }
-        JointKind::Fixed | JointKind::Free => Motion::zero(),
+        JointKind::Fixed | JointKind::Free(_) => Motion::zero(),
     };
     (v, c)
 }
@@ -207,7 +209,7 @@ pub fn kinetic_energy<S: Scalar, const N: usize, const B: usize>(
 #[inline(always)]
 pub(crate) fn rate_of<S: Scalar, const N: usize>(joint: &Joint, v: &[S; N]) -> S {
     match joint.kind {
-        JointKind::Fixed | JointKind::Free => S::zero(),
+        JointKind::Fixed | JointKind::Free(_) => S::zero(),
         _ => v[joint.coordinate],
     }
 }
@@ -239,10 +241,10 @@ pub fn world_frames<S: Scalar, const N: usize, const B: usize>(
     }; B];
     for b in 0..B {
         let (joint, kb) = (&joints[b], &k.bodies[b]);
-        if let JointState::Free(sigma) = JointState::of(joint, q) {
+        if let JointState::Free(o) = JointState::of(joint, q) {
             let c = joint.coordinate;
             frames[b] = Frame {
-                rotation: free::rotation(sigma),
+                rotation: o.rotation(),
                 origin: [q[c], q[c + 1], q[c + 2]],
             };
             continue;

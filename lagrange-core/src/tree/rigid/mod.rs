@@ -52,6 +52,7 @@ pub use kinematics::{kinetic_energy, world_frames, Frame};
 pub use newton_euler::inverse_dynamics as joint_torques;
 pub use newton_euler::{bias_and_gravity, NewtonEuler};
 
+use crate::geometry::RotationChart;
 use spatial::{Axis, RigidInertia, M3, V3};
 
 /// How a body moves relative to its parent's frame (after the constant rotation and offset).
@@ -64,10 +65,11 @@ pub enum JointKind {
     /// No motion: the body is welded to its parent (no coordinate).
     Fixed,
     /// A free body (six coordinates from `coordinate` on): its origin p in the world by three,
-    /// then its orientation R(σ) by three modified Rodrigues parameters
-    /// ([`rot_mrp`](crate::geometry::rot_mrp)). Only a root (no parent) is free, with E the
-    /// identity and r zero: R_b = R(σ), o_b = p (see [`free`]).
-    Free,
+    /// then its orientation R(c) by three coordinates of the chart
+    /// ([`rot_mrp`](crate::geometry::rot_mrp) or [`rot_vector`](crate::geometry::rot_vector)).
+    /// Only a root (no parent) is free, with E the identity and r zero: R_b = R(c), o_b = p (see
+    /// [`free`]).
+    Free(RotationChart),
 }
 
 /// A body's joint, as the declaration states it: what the compiler knows of the tree.
@@ -96,7 +98,9 @@ impl Joint {
             JointKind::Revolute(a) => (0, a),
             JointKind::Prismatic(a) => (1, a),
             JointKind::Fixed => (2, Axis::X),
-            JointKind::Free => (3, Axis::X),
+            // A free joint has no axis: the two bits say its chart.
+            JointKind::Free(RotationChart::Mrp) => (3, Axis::X),
+            JointKind::Free(RotationChart::Vector) => (3, Axis::Y),
         };
         let axis = match axis {
             Axis::X => 0,
@@ -124,7 +128,10 @@ impl Joint {
             0 => JointKind::Revolute(axis),
             1 => JointKind::Prismatic(axis),
             2 => JointKind::Fixed,
-            _ => JointKind::Free,
+            _ => JointKind::Free(match axis {
+                Axis::Y => RotationChart::Vector,
+                _ => RotationChart::Mrp,
+            }),
         };
         let parent = match (on(code, 8), self.parent) {
             (true, Some(p)) => Some(p),

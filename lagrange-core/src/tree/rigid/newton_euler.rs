@@ -190,8 +190,8 @@ fn add_along_joint<S: Scalar, const N: usize>(
     match (joint.kind, state) {
         (JointKind::Revolute(axis), _) => a.angular[axis.indices().0] += qdd[joint.coordinate],
         (JointKind::Prismatic(axis), _) => a.linear[axis.indices().0] += qdd[joint.coordinate],
-        (JointKind::Free, JointState::Free(sigma)) => {
-            *a = *a + free::motion_of(sigma, free::rates(qdd, joint.coordinate))
+        (JointKind::Free(_), JointState::Free(o)) => {
+            *a = *a + free::motion_of(o, free::rates(qdd, joint.coordinate))
         }
         _ => {}
     }
@@ -204,7 +204,7 @@ pub(crate) fn along_joint<S: Scalar>(joint: &Joint, f: &Force<S>) -> Option<S> {
     match joint.kind {
         JointKind::Revolute(axis) => Some(f.moment[axis.indices().0]),
         JointKind::Prismatic(axis) => Some(f.force[axis.indices().0]),
-        JointKind::Fixed | JointKind::Free => None,
+        JointKind::Fixed | JointKind::Free(_) => None,
     }
 }
 
@@ -219,9 +219,9 @@ pub(crate) fn project<S: Scalar, const N: usize>(
     match along_joint(joint, f) {
         Some(x) => out[joint.coordinate] = x,
         None => {
-            if let JointState::Free(sigma) = state {
+            if let JointState::Free(o) = state {
                 let c = joint.coordinate;
-                out[c..c + 6].copy_from_slice(&free::forces_of(sigma, f));
+                out[c..c + 6].copy_from_slice(&free::forces_of(o, f));
             }
         }
     }

@@ -62,9 +62,9 @@ fn tree() -> ([Joint; B], RigidConstants<B>) {
     )
 }
 
-/// The same tree with its root free: six coordinates (origin, modified Rodrigues parameters)
+/// The same tree with its root free: six coordinates (origin, then the orientation in `chart`)
 /// before the other five, the root's E the identity and r zero as a free joint has them.
-fn floating_tree() -> ([Joint; B], RigidConstants<B>) {
+fn floating_tree(chart: RotationChart) -> ([Joint; B], RigidConstants<B>) {
     let (mut joints, mut k) = tree();
     for joint in joints.iter_mut().skip(1) {
         if joint.kind != JointKind::Fixed {
@@ -73,7 +73,7 @@ fn floating_tree() -> ([Joint; B], RigidConstants<B>) {
     }
     joints[0] = Joint {
         parent: None,
-        kind: JointKind::Free,
+        kind: JointKind::Free(chart),
         coordinate: 0,
         rotated: false,
         offset: [false; 3],
@@ -83,8 +83,9 @@ fn floating_tree() -> ([Joint; B], RigidConstants<B>) {
     (joints, k)
 }
 
-/// A state of the floating tree: σ of a turn by 2 tan⁻¹(0.9)·4 ≈ 170° (|σ| = 0.9, near the
-/// switch), the root moving and spinning.
+/// A state of the floating tree: the orientation's coordinates of norm 0.877 (as modified Rodrigues
+/// parameters a turn by 4 tan⁻¹(0.877) ≈ 166°, near the switch; as a rotation vector by 50°), the
+/// root moving and spinning.
 fn floating_state() -> ([f64; N + 5], [f64; N + 5]) {
     let (q, v) = state();
     let root_q = [0.4, -0.2, 1.1, 0.5, -0.6, 0.4];
@@ -298,31 +299,41 @@ fn articulated_solves_the_equations<const N: usize, const B: usize>(
 #[test]
 fn the_mass_matrix_is_the_kinetic_energy_s_hessian() {
     mass_matrix_is_the_hessian(tree(), state());
-    mass_matrix_is_the_hessian(floating_tree(), floating_state());
+    for chart in [RotationChart::Mrp, RotationChart::Vector] {
+        mass_matrix_is_the_hessian(floating_tree(chart), floating_state());
+    }
 }
 
 #[test]
 fn momenta_are_m_times_the_velocities() {
     momenta_are_m_q_dot(tree(), state());
-    momenta_are_m_q_dot(floating_tree(), floating_state());
+    for chart in [RotationChart::Mrp, RotationChart::Vector] {
+        momenta_are_m_q_dot(floating_tree(chart), floating_state());
+    }
 }
 
 #[test]
 fn gravity_is_minus_the_potential_s_gradient() {
     gravity_is_minus_grad_v(tree(), state());
-    gravity_is_minus_grad_v(floating_tree(), floating_state());
+    for chart in [RotationChart::Mrp, RotationChart::Vector] {
+        gravity_is_minus_grad_v(floating_tree(chart), floating_state());
+    }
 }
 
 #[test]
 fn the_inertial_terms_are_lagrange_s() {
     inertial_terms_are_lagrange_s(tree(), state());
-    inertial_terms_are_lagrange_s(floating_tree(), floating_state());
+    for chart in [RotationChart::Mrp, RotationChart::Vector] {
+        inertial_terms_are_lagrange_s(floating_tree(chart), floating_state());
+    }
 }
 
 #[test]
 fn the_articulated_body_algorithm_solves_m_qdd_equals_tau_plus_f_minus_b() {
     articulated_solves_the_equations(tree(), state());
-    articulated_solves_the_equations(floating_tree(), floating_state());
+    for chart in [RotationChart::Mrp, RotationChart::Vector] {
+        articulated_solves_the_equations(floating_tree(chart), floating_state());
+    }
 }
 
 #[test]

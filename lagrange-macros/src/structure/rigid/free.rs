@@ -1,5 +1,6 @@
 //! A free root body: one placed from the ground by six consecutive coordinates, its origin p and
-//! its orientation's modified Rodrigues parameters σ, as a floating base is written:
+//! its orientation's three coordinates c in a rotation chart (`rot_mrp` or `rot_vector`), as a
+//! floating base is written:
 //!
 //! ```text
 //! #[rigid_body(mass = m, inertia = [..])]
@@ -8,14 +9,15 @@
 //! }
 //! ```
 //!
-//! reads as the runtime's free joint (`lagrange_core::tree::rigid::JointKind::Free`: R_b = R(σ),
-//! o_b = p, E the identity and r zero) on the coordinates from p's first, σ's three following
-//! p's. As for a revolute joint, constant rotations after `rot_mrp(..)` are the body's C_b and
+//! reads as the runtime's free joint (`lagrange_core::tree::rigid::JointKind::Free`: R_b = R(c),
+//! o_b = p, E the identity and r zero) on the coordinates from p's first, c's three following
+//! p's. As for a revolute joint, constant rotations after the chart's are the body's C_b and
 //! offsets turned by it its s_b; anything else — a parent, a constant rotation before it, a
 //! position term in the world frame other than p, coordinates out of that order — is not read.
 
 use super::value::{Factor, Piece, Term, Value};
 use super::{blank, constants, offsets, Joint, Node};
+use crate::check::ChartKind;
 
 /// `vec3(a, b, c)` of three consecutive coordinates, in order.
 pub(super) fn coordinates(components: &[&Value]) -> Option<Value> {
@@ -30,24 +32,25 @@ pub(super) fn coordinates(components: &[&Value]) -> Option<Value> {
     })
 }
 
-/// `rot_mrp(vec3(a, b, c))` of three consecutive coordinates (the checks admit no other argument).
-pub(super) fn mrp(parameters: &Value) -> Option<Value> {
-    let Value::Vector(terms) = parameters else {
+/// `rot_mrp(vec3(a, b, c))` or `rot_vector(..)` of three consecutive coordinates (the checks admit
+/// no other argument).
+pub(super) fn chart(kind: ChartKind, coordinates: &Value) -> Option<Value> {
+    let Value::Vector(terms) = coordinates else {
         return None;
     };
     match terms.as_slice() {
         [Term {
             rotation,
             piece: Piece::Coordinates(slot),
-        }] if rotation.is_empty() => Some(Value::Rotation(vec![Factor::Mrp(*slot)])),
+        }] if rotation.is_empty() => Some(Value::Rotation(vec![Factor::Chart(kind, *slot)])),
         _ => None,
     }
 }
 
-/// The free joint of a body whose rotation `R(σ) C` starts with `rot_mrp` and whose position is
-/// p plus terms turned by R(σ) (s_b). Whether the body is a root is left to the caller.
+/// The free joint of a body whose rotation `R(c) C` starts with a chart's and whose position is
+/// p plus terms turned by R(c) (s_b). Whether the body is a root is left to the caller.
 pub(super) fn free(rotation: &[Factor], terms: Vec<(Vec<Factor>, Piece)>) -> Option<Node> {
-    let Some(Factor::Mrp(sigma)) = rotation.first() else {
+    let Some(&Factor::Chart(kind, sigma)) = rotation.first() else {
         return None;
     };
     let (origin, other): (Vec<_>, Vec<_>) = terms
@@ -56,15 +59,15 @@ pub(super) fn free(rotation: &[Factor], terms: Vec<(Vec<Factor>, Piece)>) -> Opt
     let [(turn, Piece::Coordinates(first))] = origin.as_slice() else {
         return None;
     };
-    if !turn.is_empty() || first + 3 != *sigma {
+    if !turn.is_empty() || first + 3 != sigma {
         return None;
     }
-    let mut node = blank(Joint::Free(*first));
+    let mut node = blank(Joint::Free(kind, *first));
     node.after = constants(&rotation[1..])?;
     let own = other
         .into_iter()
         .map(|(f, p)| match f.first() {
-            Some(Factor::Mrp(s)) if s == sigma => Some((f[1..].to_vec(), p)),
+            Some(&Factor::Chart(k, s)) if k == kind && s == sigma => Some((f[1..].to_vec(), p)),
             _ => None,
         })
         .collect::<Option<Vec<_>>>()?;

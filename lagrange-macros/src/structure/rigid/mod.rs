@@ -25,7 +25,7 @@
 mod free;
 mod value;
 
-use crate::check::{family_index, Model, Shape};
+use crate::check::{family_index, ChartKind, Model, Shape};
 use proc_macro2::TokenStream;
 use quote::quote;
 pub use value::Axis;
@@ -39,9 +39,9 @@ pub enum Joint {
     /// Along an axis of the joint frame, by coordinate `slot`.
     Prismatic(Axis, usize),
     Fixed,
-    /// A root moved by coordinates `slot..slot + 6`: its origin, then its orientation's modified
-    /// Rodrigues parameters (see [`free`]).
-    Free(usize),
+    /// A root moved by coordinates `slot..slot + 6`: its origin, then its orientation in the
+    /// chart (see [`free`]).
+    Free(ChartKind, usize),
 }
 
 /// A constant vector turned by constant rotation factors (`Rot3<f64>` and `Vec3<f64>`
@@ -160,7 +160,7 @@ fn each_coordinate_moves_one_node(model: &Model, nodes: &[Node]) -> bool {
     for node in nodes {
         let slots = match node.joint {
             Joint::Revolute(_, slot) | Joint::Prismatic(_, slot) => slot..slot + 1,
-            Joint::Free(first) => first..first + 6,
+            Joint::Free(_, first) => first..first + 6,
             Joint::Fixed => continue,
         };
         for slot in slots {
@@ -225,7 +225,7 @@ fn node(nodes: &[Node], body: usize, member: Option<usize>, value: Value) -> Opt
     };
     let mut node = place(rotation, terms)?;
     // The runtime's free joint is a root's (its E the identity, its r zero).
-    if matches!(node.joint, Joint::Free(_)) && parent.is_some() {
+    if matches!(node.joint, Joint::Free(..)) && parent.is_some() {
         return None;
     }
     node.body = body;
@@ -265,7 +265,7 @@ fn place(rotation: Option<Vec<Factor>>, terms: Vec<(Vec<Factor>, Piece)>) -> Opt
     let joints: Vec<usize> = (0..turned.len())
         .filter(|&i| matches!(turned[i], Factor::Joint(..)))
         .collect();
-    let free = turned.iter().any(|f| matches!(f, Factor::Mrp(_)));
+    let free = turned.iter().any(|f| matches!(f, Factor::Chart(..)));
     match (joints.as_slice(), slides) {
         ([], 0) if free && rotation.is_some() => free::free(&turned, terms),
         _ if free => None,
@@ -416,7 +416,7 @@ fn same(a: &[Factor], b: &[Factor]) -> bool {
         && a.iter().zip(b).all(|(x, y)| match (x, y) {
             (Factor::Body(m), Factor::Body(n)) => m == n,
             (Factor::Joint(a, s), Factor::Joint(b, t)) => a == b && s == t,
-            (Factor::Mrp(s), Factor::Mrp(t)) => s == t,
+            (Factor::Chart(a, s), Factor::Chart(b, t)) => a == b && s == t,
             (Factor::Constant(c), Factor::Constant(d)) => c.to_string() == d.to_string(),
             _ => false,
         })

@@ -7,7 +7,7 @@
 //! Constants (everything that names only parameters, literals, module items and the family index)
 //! are kept as expressions to be evaluated once, in `f64`, when the constants are prepared.
 
-use crate::check::Model;
+use crate::check::{ChartKind, Model};
 use crate::structure::{condition, evaluate, strip, Family};
 use proc_macro2::TokenStream;
 use quote::{quote, ToTokens};
@@ -30,8 +30,9 @@ pub enum Factor {
     Constant(TokenStream),
     /// A rotation about a coordinate axis by coordinate `slot`.
     Joint(Axis, usize),
-    /// `rot_mrp` of the coordinates `slot`, `slot + 1`, `slot + 2` (see [`super::free`]).
-    Mrp(usize),
+    /// `rot_mrp` or `rot_vector` of the coordinates `slot`, `slot + 1`, `slot + 2` (see
+    /// [`super::free`]).
+    Chart(ChartKind, usize),
 }
 
 /// What a piece of a position is before the rotations of its term act on it.
@@ -246,7 +247,8 @@ impl<'a> Reader<'a> {
                 Some(Value::Rotation(vec![Factor::Constant(quote!(rot3(#m)))]))
             }
             ("rot_axis", [axis, angle]) => rotation_about_axis(axis, angle),
-            ("rot_mrp", [parameters]) => super::free::mrp(parameters),
+            ("rot_mrp", [parameters]) => super::free::chart(ChartKind::Mrp, parameters),
+            ("rot_vector", [vector]) => super::free::chart(ChartKind::Vector, vector),
             ("spatial", [Value::Vector(position), Value::Rotation(rotation)]) => {
                 Some(Value::Pose {
                     position: position.clone(),

@@ -1,0 +1,205 @@
+//! A free joint's orientation in one of the two rotation charts
+//! ([`RotationChart`](crate::geometry::RotationChart)), and the maps between its coordinates'
+//! rates ċ and the body's angular velocity ω_b = B(c) ċ (in the body's frame) that the joint's
+//! motion subspace is made of.
+//!
+//! - Modified Rodrigues parameters σ, s = |σ|²: B = 4/(1+s)² A₋(σ), B⁻¹ = A₊(σ)/4 with
+//!   A±(σ) x = (1 − s) x ± 2 σ × x + 2 σ (σ·x) (Schaub & Junkins, *Analytical Mechanics of Space
+//!   Systems*, 2nd ed., 2009, §3.8, eq. 3.155), and Ḃ σ̇ = 8 |σ̇|² σ/(1+s)² − 4 (σ·σ̇) ω_b/(1+s)
+//!   (d/dt of B σ̇ with σ̈ held, derived for this module).
+//! - The rotation vector φ, θ = |φ|: B is the right Jacobian of the exponential map,
+//!   B x = x − a φ × x + b φ × (φ × x) with a = (1 − cos θ)/θ², b = (θ − sin θ)/θ³, and
+//!   B⁻¹ x = x + ½ φ × x + c φ × (φ × x) with c = (1 − (θ/2) cot(θ/2))/θ² (Chirikjian,
+//!   *Stochastic Models, Information Theory, and Lie Groups*, vol. 2, 2012, §10.2; Barfoot,
+//!   *State Estimation for Robotics*, 2017, eqs. 7.77 and 7.79). With φ̈ held,
+//!   Ḃ φ̇ = −ȧ φ × φ̇ + ḃ φ × (φ × φ̇) + b φ̇ × (φ × φ̇), ȧ = 2 a′ (φ·φ̇), ḃ = 2 b′ (φ·φ̇), a′ and b′
+//!   the derivatives in θ² (derived for this module: φ̇ × φ̇ = 0 removes the other terms).
+//!
+//! Bᵀ and B⁻ᵀ follow by flipping the sign of the cross product's term (φ×, σ× are skew; the
+//! double cross product is symmetric). The unit tests check every map against
+//! [`body_angular_velocity`](crate::geometry::body_angular_velocity) and dual-number derivatives.
+
+use super::super::spatial::{add3, cross, dot3, scale3, sub3, M3, V3};
+use crate::geometry::{rot_mrp, rot_vector, vec3, RotationChart, Scalar};
+
+/// A free joint's orientation: its chart and its three coordinates in it.
+#[derive(Clone, Copy, Debug)]
+pub struct Orientation<S> {
+    pub chart: RotationChart,
+    pub c: V3<S>,
+}
+
+/// x + k₁ c × x + k₂ c × (c × x): the shape every map of the rotation vector takes.
+#[inline(always)]
+fn turned<S: Scalar>(c: V3<S>, x: V3<S>, k1: S, k2: S) -> V3<S> {
+    let once = cross(c, x);
+    add3(add3(x, scale3(once, k1)), scale3(cross(c, once), k2))
+}
+
+/// A±(σ) x = (1 − s) x ± 2 σ × x + 2 σ (σ·x).
+#[inline(always)]
+fn a_map<S: Scalar>(sigma: V3<S>, x: V3<S>, plus: bool) -> V3<S> {
+    let s = dot3(sigma, sigma);
+    let turn = scale3(cross(sigma, x), if plus { 2.0 } else { -2.0 }.into());
+    let along = scale3(sigma, dot3(sigma, x) * 2.0);
+    add3(add3(scale3(x, S::one() - s), turn), along)
+}
+
+/// 4/(1+s)², the factor of B and Bᵀ for the modified Rodrigues parameters.
+#[inline(always)]
+fn b_factor<S: Scalar>(sigma: V3<S>) -> S {
+    let d = S::one() + dot3(sigma, sigma);
+    (d * d).recip() * 4.0
+}
+
+/// The rotation vector's coefficients at t = θ²: [a, b, c, a′, b′] (see the module docs; a′, b′
+/// the derivatives in t). Below t = 10⁻² each is its Taylor series in t (truncated where the next
+/// term is below 10⁻¹⁷ relative), so the maps and their derivatives are smooth through φ = 0.
+#[inline(always)]
+fn vector_coefficients<S: Scalar>(t: S) -> [S; 5] {
+    if t.re() < 1e-2 {
+        let f = |k: [f64; 5]| {
+            S::from(k[0])
+                + t * (S::from(k[1]) + t * (S::from(k[2]) + t * (S::from(k[3]) + t * k[4])))
+        };
+        return [
+            f([
+                0.5,
+                -1.0 / 24.0,
+                1.0 / 720.0,
+                -1.0 / 40320.0,
+                1.0 / 3628800.0,
+            ]),
+            f([
+                1.0 / 6.0,
+                -1.0 / 120.0,
+                1.0 / 5040.0,
+                -1.0 / 362880.0,
+                1.0 / 39916800.0,
+            ]),
+            f([
+                1.0 / 12.0,
+                1.0 / 720.0,
+                1.0 / 30240.0,
+                1.0 / 1209600.0,
+                1.0 / 47900160.0,
+            ]),
+            f([
+                -1.0 / 24.0,
+                1.0 / 360.0,
+                -1.0 / 13440.0,
+                1.0 / 907200.0,
+                -1.0 / 95800320.0,
+            ]),
+            f([
+                -1.0 / 120.0,
+                1.0 / 2520.0,
+                -1.0 / 120960.0,
+                1.0 / 9979200.0,
+                -1.0 / 1245404160.0,
+            ]),
+        ];
+    }
+    let theta = t.sqrt();
+    let sin = theta.sin();
+    let half = (theta * 0.5).sin();
+    // 1 − cos θ = 2 sin²(θ/2), without the cancellation.
+    let versine = half * half * 2.0;
+    let (t2, t3) = (t * t, t * theta);
+    let a = versine / t;
+    let b = (theta - sin) / t3;
+    // (θ/2) cot(θ/2) = (θ/2) cos(θ/2)/sin(θ/2): regular at θ = π, where sin θ is not.
+    let c = (S::one() - theta * 0.5 * (theta * 0.5).cos() / half) / t;
+    let a_prime = (theta * sin - versine * 2.0) / (t2 * 2.0);
+    let b_prime = (versine * theta - (theta - sin) * 3.0) / (t2 * theta * 2.0);
+    [a, b, c, a_prime, b_prime]
+}
+
+impl<S: Scalar> Orientation<S> {
+    /// R(c), by rows: the body's axes in the world by columns.
+    #[inline(always)]
+    pub fn rotation(&self) -> M3<S> {
+        let c = vec3(self.c[0], self.c[1], self.c[2]);
+        match self.chart {
+            RotationChart::Mrp => rot_mrp(c).rows,
+            RotationChart::Vector => rot_vector(c).rows,
+        }
+    }
+
+    /// ω_b = B ċ: the body's angular velocity from the coordinates' rates.
+    #[inline(always)]
+    pub fn angular_velocity(&self, rates: V3<S>) -> V3<S> {
+        let c = self.c;
+        match self.chart {
+            RotationChart::Mrp => scale3(a_map(c, rates, false), b_factor(c)),
+            RotationChart::Vector => {
+                let [a, b, ..] = vector_coefficients(dot3(c, c));
+                turned(c, rates, -a, b)
+            }
+        }
+    }
+
+    /// Bᵀ n: the generalized forces of a moment n (body frame) on the coordinates.
+    #[inline(always)]
+    pub fn generalized_moment(&self, n: V3<S>) -> V3<S> {
+        let c = self.c;
+        match self.chart {
+            RotationChart::Mrp => scale3(a_map(c, n, true), b_factor(c)),
+            RotationChart::Vector => {
+                let [a, b, ..] = vector_coefficients(dot3(c, c));
+                turned(c, n, a, b)
+            }
+        }
+    }
+
+    /// B⁻¹ ω: the rates whose angular velocity is ω.
+    #[inline(always)]
+    pub fn rates_of(&self, omega: V3<S>) -> V3<S> {
+        let c = self.c;
+        match self.chart {
+            RotationChart::Mrp => scale3(a_map(c, omega, true), S::from(0.25)),
+            RotationChart::Vector => {
+                let [_, _, k, ..] = vector_coefficients(dot3(c, c));
+                turned(c, omega, S::from(0.5), k)
+            }
+        }
+    }
+
+    /// B⁻ᵀ τ: the moment whose generalized forces on the coordinates are τ.
+    #[inline(always)]
+    pub fn moment_of(&self, tau: V3<S>) -> V3<S> {
+        let c = self.c;
+        match self.chart {
+            RotationChart::Mrp => scale3(a_map(c, tau, false), S::from(0.25)),
+            RotationChart::Vector => {
+                let [_, _, k, ..] = vector_coefficients(dot3(c, c));
+                turned(c, tau, S::from(-0.5), k)
+            }
+        }
+    }
+
+    /// Ḃ ċ with c̈ held, given ω_b = B ċ: the angular part of the joint's bias acceleration.
+    #[inline(always)]
+    pub fn angular_bias(&self, rates: V3<S>, omega: V3<S>) -> V3<S> {
+        let c = self.c;
+        let along = dot3(c, rates);
+        match self.chart {
+            RotationChart::Mrp => {
+                let d = S::one() + dot3(c, c);
+                sub3(
+                    scale3(c, dot3(rates, rates) * 8.0 / (d * d)),
+                    scale3(omega, along * 4.0 / d),
+                )
+            }
+            RotationChart::Vector => {
+                let [_, b, _, a_prime, b_prime] = vector_coefficients(dot3(c, c));
+                let once = cross(c, rates);
+                let (a_dot, b_dot) = (a_prime * along * 2.0, b_prime * along * 2.0);
+                add3(
+                    sub3(scale3(cross(c, once), b_dot), scale3(once, a_dot)),
+                    scale3(cross(rates, once), b),
+                )
+            }
+        }
+    }
+}
