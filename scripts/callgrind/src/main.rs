@@ -4,191 +4,17 @@
 //! `project_cartesian_pendulum` (`validated_project_…` through the handle) the projection after a
 //! step, from a state off the circle by a step's drift. See count.sh.
 
+mod calls;
+mod mechanisms;
+
+use calls::{calls, Via};
 use lagrange::prelude::*;
+use mechanisms::*;
 use std::hint::black_box;
 
 // Constrained mechanisms, from the gallery's scenes.
 use lagrange_gallery::scenes::cartesian_pendulum as cartesian_pendulum_scene;
 use lagrange_gallery::scenes::four_bar as four_bar_scene;
-// The constrained mechanisms' KKT systems written out by hand, as in the accelerations benchmark.
-#[path = "../../../benches/common/constrained.rs"]
-#[allow(dead_code)]
-mod constrained;
-// The N-link chains declared link by link, as in the chain benchmark.
-#[path = "../../../benches/chains/mod.rs"]
-#[allow(dead_code)]
-mod chains;
-// The FPU chain of the work-precision report, each spring a potential of its own, and its forces
-// written by hand.
-#[path = "../../../lagrange-bench/src/fpu.rs"]
-mod fpu_report;
-use fpu_report::{fpu_chain, fpu_forces};
-// Andrews' squeezer (seven bodies, six closure rows), the tests' reference problem.
-#[path = "../../../tests/common/squeezer.rs"]
-#[allow(dead_code)]
-mod squeezer_model;
-// Kepler's problem of the work-precision report, and its accelerations written by hand.
-#[path = "../../../lagrange-bench/src/kepler.rs"]
-mod kepler_report;
-use kepler_report::{kepler, kepler_rhs, KEPLER};
-// A three-link spatial arm declared by its joint frames (centres of mass, full inertia tensors)
-// and by its principal axes, as in tests/body_frames.rs.
-#[path = "../../../tests/common/framed_arms.rs"]
-#[allow(dead_code)]
-mod framed_arms;
-
-#[mechanism]
-pub mod pendulum {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Pendulum {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-#[mechanism]
-pub mod double_pendulum {
-    pub struct Coords {
-        pub theta1: f64,
-        pub theta2: f64,
-    }
-    pub struct DoublePendulum {
-        pub m1: f64,
-        pub m2: f64,
-        pub l1: f64,
-        pub l2: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m1)]
-    fn bob1() -> Vec2 {
-        vec2(theta1.sin(), -theta1.cos()) * l1
-    }
-    #[particle(mass = m2)]
-    fn bob2() -> Vec2 {
-        bob1 + vec2(theta2.sin(), -theta2.cos()) * l2
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-/// The double pendulum every mode that evaluates it takes: its parameters and its start.
-const DOUBLE_PENDULUM: double_pendulum::DoublePendulum = double_pendulum::DoublePendulum {
-    m1: 1.0,
-    m2: 1.3,
-    l1: 1.0,
-    l2: 0.8,
-    g: 9.81,
-};
-
-fn double_pendulum_start() -> double_pendulum::State {
-    use double_pendulum::{Coords, State};
-    State::new(
-        0.0,
-        Coords {
-            theta1: 0.7,
-            theta2: -1.2,
-        },
-        Coords {
-            theta1: 1.1,
-            theta2: -0.4,
-        },
-    )
-}
-
-#[mechanism]
-pub mod wedge_block {
-    pub struct Coords {
-        pub x: f64,
-        pub d: f64,
-    }
-    pub struct WedgeBlock {
-        pub wedge_mass: f64,
-        pub block_mass: f64,
-        pub alpha: f64,
-        pub h: f64,
-        pub g: f64,
-    }
-    #[particle(mass = wedge_mass)]
-    fn wedge() -> Vec2 {
-        vec2(x, 0.0)
-    }
-    #[particle(mass = block_mass)]
-    fn block() -> Vec2 {
-        vec2(x + d * alpha.cos(), h - d * alpha.sin())
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-/// The FPU chain of the work-precision report (`fpu_report`) with its potential written as one sum
-/// instead of spring by spring: the mode `fpu` counts the macro's term-by-term reading of a sum
-/// against the declaration of the report (`fpu_springs`).
-#[mechanism]
-pub mod fpu {
-    pub const MASSES: usize = 6;
-    pub struct Coords {
-        pub q: [f64; MASSES],
-    }
-    pub struct Fpu {
-        pub m: f64,
-        pub omega: f64,
-    }
-    #[particle(mass = m, count = MASSES)]
-    fn mass(i: usize) -> Vec2 {
-        vec2(q[i], 0.0)
-    }
-    #[potential]
-    fn springs() -> f64 {
-        let (s1, s2, s3) = (q[1] - q[0], q[3] - q[2], q[5] - q[4]);
-        let (w1, w2) = (q[2] - q[1], q[4] - q[3]);
-        omega * omega / 4.0 * (s1 * s1 + s2 * s2 + s3 * s3)
-            + q[0].powi(4)
-            + w1.powi(4)
-            + w2.powi(4)
-            + q[5].powi(4)
-    }
-}
-
-#[mechanism]
-pub mod cart_pendulum {
-    pub struct Coords {
-        pub x: f64,
-        pub theta: f64,
-    }
-    pub struct CartPendulum {
-        pub cart_mass: f64,
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = cart_mass)]
-    fn cart() -> Vec2 {
-        vec2(x, 0.0)
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        cart + vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
 
 fn hw_pendulum(p: &pendulum::Pendulum, q: [f64; 1], _v: [f64; 1]) -> [f64; 1] {
     [-p.g / p.l * q[0].sin()]
@@ -316,140 +142,17 @@ fn hw_cart(p: &cart_pendulum::CartPendulum, q: [f64; 2], v: [f64; 2]) -> [f64; 2
     [xdd, tdd]
 }
 
-#[mechanism]
-pub mod chain32 {
-    pub const LINKS: usize = 32;
-    pub struct Coords {
-        pub theta: [f64; LINKS],
-    }
-    pub struct Chain {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-    }
-    #[particle(mass = m, count = LINKS)]
-    fn bob(i: usize) -> Vec2 {
-        let link = vec2(theta[i].sin(), -theta[i].cos()) * l;
-        if i == 0 {
-            link
-        } else {
-            bob[i - 1] + link
-        }
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-#[mechanism]
-pub mod drag {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Drag {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-        pub c: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(theta.sin(), -theta.cos()) * l
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-    #[force(on = bob)]
-    fn air() -> Vec2 {
-        bob_dot * (-c)
-    }
-}
-
-#[mechanism]
-pub mod driven {
-    pub struct Coords {
-        pub theta: f64,
-    }
-    pub struct Driven {
-        pub m: f64,
-        pub l: f64,
-        pub g: f64,
-        pub a: f64,
-        pub w: f64,
-    }
-    #[particle(mass = m)]
-    fn bob() -> Vec2 {
-        vec2(a * (w * t).cos() + l * theta.sin(), -l * theta.cos())
-    }
-    #[gravity]
-    fn down() -> Vec2 {
-        vec2(0.0, -g)
-    }
-}
-
-/// How `calls` evaluates q̈: `accelerations` on the parameters (checked every call) or through a
-/// validated handle, or the hook the integrators call (`hot_NAME`).
-#[derive(Clone, Copy, PartialEq)]
-enum Via {
-    Parameters,
-    Validated,
-    Hot,
-}
-
-/// Σ q̈₀ over `n` calls: of `accelerations`, on the parameters or through a validated handle,
-/// whose parameters were checked once; or (`Via::Hot`) of the hook the integrators call on every
-/// stage, `Evaluate::accelerations_at` on the validated handle (with the constants it prepared): no
-/// parameter or state check, as within a step.
-fn calls<M: lagrange::evaluation::Dynamics<N>, const N: usize>(
-    sys: M,
-    s: &State<M::Coords>,
-    n: usize,
-    via: Via,
-) -> f64 {
-    fn run<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
-        let mut acc = 0.0;
-        for _ in 0..n {
-            acc += black_box(sys)
-                .accelerations(black_box(s))
-                .unwrap()
-                .to_array()[0];
-        }
-        acc
-    }
-    fn hot<M: Mechanism<N>, const N: usize>(sys: &M, s: &State<M::Coords>, n: usize) -> f64 {
-        let (q, v) = (s.q.to_array(), s.v.to_array());
-        let mut acc = 0.0;
-        for _ in 0..n {
-            acc += black_box(sys)
-                .accelerations_at(black_box(s.t), black_box(&q), black_box(&v))
-                .unwrap()[0];
-        }
-        acc
-    }
-    match via {
-        Via::Parameters => run(&sys, s, n),
-        Via::Validated => run(&sys.validated().unwrap(), s, n),
-        Via::Hot => hot(&sys.validated().unwrap(), s, n),
-    }
-}
-
 fn main() {
     let arg = std::env::args().nth(1).unwrap();
     // `validated_NAME`: the generated mechanism NAME through `sys.validated()`; `hot_NAME`: the
     // hook the integrators call, on the same handle (see `calls`).
-    let (via, which) = match (arg.strip_prefix("validated_"), arg.strip_prefix("hot_")) {
-        (Some(name), _) => (Via::Validated, name.to_string()),
-        (_, Some(name)) => (Via::Hot, name.to_string()),
-        _ => (Via::Parameters, arg.clone()),
-    };
+    let (via, which) = Via::read(&arg);
     let n: usize = std::env::args()
         .nth(2)
         .map(|s| s.parse().unwrap())
         .unwrap_or(1000);
     let mut acc = 0.0;
-    match which.as_str() {
+    match which {
         "pendulum" => {
             use pendulum::*;
             let sys = Pendulum {
@@ -618,7 +321,9 @@ fn main() {
                     black_box(&sys).step::<Rk4>(&mut s, h).unwrap();
                 }
             } else if which == "rk4_simulate_squeezer" {
-                black_box(&sys).simulate::<Rk4>(&mut s, h, n, |_| {}).unwrap();
+                black_box(&sys)
+                    .simulate::<Rk4>(&mut s, h, n, |_| {})
+                    .unwrap();
             } else if which == "gl2_simulate_squeezer" {
                 black_box(&sys)
                     .simulate::<GaussLegendre2>(&mut s, h, n, |_| {})
