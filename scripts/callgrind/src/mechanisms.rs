@@ -51,6 +51,13 @@ pub mod pendulum {
     }
 }
 
+/// The pendulum the modes on it take.
+pub const PENDULUM: pendulum::Pendulum = pendulum::Pendulum {
+    m: 1.0,
+    l: 0.8,
+    g: 9.81,
+};
+
 #[mechanism]
 pub mod double_pendulum {
     pub struct Coords {
@@ -129,6 +136,15 @@ pub mod wedge_block {
     }
 }
 
+/// The wedge and block the modes on it take.
+pub const WEDGE_BLOCK: wedge_block::WedgeBlock = wedge_block::WedgeBlock {
+    wedge_mass: 3.0,
+    block_mass: 1.0,
+    alpha: 0.5,
+    h: 1.0,
+    g: 9.81,
+};
+
 /// The FPU chain of the work-precision report (`fpu_report`) with its potential written as one sum
 /// instead of spring by spring: the mode `fpu` counts the macro's term-by-term reading of a sum
 /// against the declaration of the report (`fpu_springs`).
@@ -183,6 +199,15 @@ pub mod cart_pendulum {
         vec2(0.0, -g)
     }
 }
+
+/// The cart pendulum the modes on it take.
+pub const CART_PENDULUM: cart_pendulum::CartPendulum = cart_pendulum::CartPendulum {
+    cart_mass: 2.0,
+    m: 1.0,
+    l: 0.8,
+    g: 9.81,
+};
+
 /// The 32-link chain as a family (`count = LINKS`, each bob on the one before), against
 /// `chains::chain32` declared link by link.
 #[mechanism]
