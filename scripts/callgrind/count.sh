@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 cargo build --release --quiet
-bin=target/release/${BIN:-lagrange-callgrind}
+bin=${CARGO_TARGET_DIR:-target}/release/${BIN:-lagrange-callgrind}
 calls=${CALLS:-1000}
 count() {
   valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bin" "$1" "$2" 2>&1 |

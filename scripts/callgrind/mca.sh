@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 cargo build --release --quiet --bin hooks
-bin=target/release/hooks
+bin=${CARGO_TARGET_DIR:-target}/release/hooks
 out=$(mktemp -d)
 for f in ${FUNCTIONS:-kepler hw_kepler fpu hw_fpu}; do
   objdump -d --no-show-raw-insn -C --disassemble="hooks::$f" "$bin" | grep -E '^\s+[0-9a-f]+:' |
