@@ -18,6 +18,7 @@ mod diffsol_peer;
 mod dop853_steps;
 mod fpu;
 mod kepler;
+mod load;
 mod pendulums;
 mod plot;
 mod problems;
@@ -916,12 +917,9 @@ fn factor(x: f64) -> String {
     }
 }
 
-/// The load averages of `/proc/loadavg` (what `uptime` prints), or "unknown".
+/// The load averages, or "unknown".
 fn load_average() -> String {
-    std::fs::read_to_string("/proc/loadavg")
-        .ok()
-        .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(", "))
-        .unwrap_or_else(|| "unknown".into())
+    load::load_averages(", ").unwrap_or_else(|| "unknown".into())
 }
 
 /// `results.csv`: one record per run. Fields are quoted where they need it (a failed run's status
