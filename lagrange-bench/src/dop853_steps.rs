@@ -9,7 +9,7 @@
 //! like `dop853.f` it does not count rejections before the first accepted step. Then, per problem
 //! and accuracy, the fewest evaluations of a run reaching it (the report's "cheapest" criterion).
 
-use crate::{distance, Setup};
+use crate::setup::{distance, Problem, Setup};
 use lagrange_core::integrate::{Dop853, Stats, Stepper};
 use lagrange_core::{Coordinates, Mechanism, State};
 use std::fmt::Write as _;
@@ -55,7 +55,7 @@ fn peer<const N: usize, const N2: usize>(
         ode_solvers::SVector::<f64, N2>::from_fn(|i, _| if i < N { s.q[i] } else { s.v[i - N] });
     let span = t_end - s.t;
     let mut solver = ode_solvers::Dop853::from_param(
-        crate::Peer::<N, N2> { rhs },
+        crate::peer::FirstOrder::<N, N2> { rhs },
         s.t,
         t_end,
         span,
@@ -95,12 +95,12 @@ fn cell<const N: usize>(run: &Run<N>, reference: &([f64; N], [f64; N])) -> Strin
 }
 
 /// The variants compared, in the columns' order.
-pub const VARIANTS: [&str; 3] = ["Dop853 β = 0.04", "Dop853 β = 0", "ode_solvers Dop853"];
+const VARIANTS: [&str; 3] = ["Dop853 β = 0.04", "Dop853 β = 0", "ode_solvers Dop853"];
 
 /// The table of one problem, as markdown rows, and per variant the fewest evaluations of a run
 /// reaching an end error ≤ 1e-6 and ≤ 1e-10 (`None`: no run did).
 pub fn table<M: Mechanism<N>, const N: usize, const N2: usize>(
-    setup: &Setup<M, N>,
+    setup: &Setup<M, N, N2>,
 ) -> (String, [[Option<usize>; 2]; 3]) {
     let mut rows = String::new();
     let mut cheapest = [[None; 2]; 3];
@@ -138,8 +138,31 @@ pub fn table<M: Mechanism<N>, const N: usize, const N2: usize>(
 }
 
 /// The header of [`table`]'s rows.
-pub const HEADER: &str = "| problem | tol | Dop853 β = 0.04: accepted / rejected / evaluations, \
+const HEADER: &str = "| problem | tol | Dop853 β = 0.04: accepted / rejected / evaluations, \
                           end error | Dop853 β = 0 | ode_solvers Dop853 |\n|---|---|---|---|---|\n";
+
+/// The `--dop853-steps` output: every problem's table, then per problem and accuracy the fewest
+/// evaluations of each variant.
+pub fn print(problems: &[Box<dyn Problem>]) {
+    let parts: Vec<_> = problems.iter().map(|p| p.dop853_steps()).collect();
+    print!("{HEADER}");
+    for (rows, _) in &parts {
+        print!("{rows}");
+    }
+    println!(
+        "\nFewest evaluations of a run reaching the accuracy ({}):\n",
+        VARIANTS.join(" / ")
+    );
+    println!("| problem | ≤ 1e-6 | ≤ 1e-10 |\n|---|---|---|");
+    let show = |c: [Option<usize>; 3]| {
+        c.map(|e| e.map_or("–".to_string(), |e| e.to_string()))
+            .join(" / ")
+    };
+    for ((_, cheapest), problem) in parts.iter().zip(problems) {
+        let at = |k: usize| show([cheapest[0][k], cheapest[1][k], cheapest[2][k]]);
+        println!("| {} | {} | {} |", problem.name(), at(0), at(1));
+    }
+}
 
 #[cfg(test)]
 mod tests {

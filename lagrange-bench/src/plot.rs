@@ -2,7 +2,7 @@
 
 use crate::kepler::{kepler, KEPLER};
 use crate::problems::kepler_start;
-use crate::Row;
+use crate::sweep::Row;
 use lagrange_core::integrate::{Observation, Stepper};
 use lagrange_core::{
     Coordinates, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State,
