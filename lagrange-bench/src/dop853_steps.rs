@@ -9,7 +9,8 @@
 //! like `dop853.f` it does not count rejections before the first accepted step. Then, per problem
 //! and accuracy, the fewest evaluations of a run reaching it (the report's "cheapest" criterion).
 
-use crate::setup::{distance, Problem, Setup};
+use crate::peer::PeerMethod;
+use crate::setup::{distance, in_coordinates, split_qv, Problem, Rhs, Setup};
 use lagrange_core::integrate::{Dop853, Stats, Stepper};
 use lagrange_core::{Coordinates, Mechanism, State};
 use std::fmt::Write as _;
@@ -24,8 +25,7 @@ fn ours<M: Mechanism<N>, const N: usize>(
     t_end: f64,
     settings: Dop853,
 ) -> Run<N> {
-    let s = start;
-    let start = State::new(s.t, M::Coords::from_array(s.q), M::Coords::from_array(s.v));
+    let start = in_coordinates::<M, N>(start);
     let out = Stepper::new(mechanism, settings, &start)
         .and_then(|mut solver| solver.integrate(t_end, &mut [], |_| {}))
         .map_err(|e| e.to_string())?;
@@ -45,45 +45,21 @@ fn ours<M: Mechanism<N>, const N: usize>(
 /// The `ode_solvers` Dop853 on the hand-written `rhs` at rtol = atol = `tol` with the report's
 /// settings (`dop853.f`'s defaults): its counts and end state.
 fn peer<const N: usize, const N2: usize>(
-    rhs: fn(f64, &[f64; N], &[f64; N]) -> [f64; N],
+    rhs: Rhs<N>,
     start: &State<[f64; N]>,
     t_end: f64,
     tol: f64,
 ) -> Run<N> {
-    let s = start;
-    let y0 =
-        ode_solvers::SVector::<f64, N2>::from_fn(|i, _| if i < N { s.q[i] } else { s.v[i - N] });
-    let span = t_end - s.t;
-    let mut solver = ode_solvers::Dop853::from_param(
-        crate::peer::FirstOrder::<N, N2> { rhs },
-        s.t,
-        t_end,
-        span,
-        y0,
-        tol,
-        tol,
-        0.9,
-        0.0,
-        0.333,
-        6.0,
-        span,
-        0.0,
-        10_000_000,
-        1000,
-        ode_solvers::OutputType::Sparse,
-    );
-    let stats = solver.integrate().map_err(|e| e.to_string())?;
-    let y = solver.y_out().last().ok_or("no output")?;
+    let (stats, ys) =
+        crate::peer::solve::<N, N2>(rhs, start, t_end, tol, PeerMethod::Dop853, false)?;
+    let y = ys.last().ok_or("no output")?;
     Ok((
         (
             stats.accepted_steps as usize,
             stats.rejected_steps as usize,
             stats.num_eval as usize,
         ),
-        (
-            std::array::from_fn(|i| y[i]),
-            std::array::from_fn(|i| y[N + i]),
-        ),
+        split_qv(y.as_slice()),
     ))
 }
 

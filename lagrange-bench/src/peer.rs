@@ -8,8 +8,8 @@ use ode_solvers::dop_shared::Stats;
 use ode_solvers::SVector;
 
 /// The first-order system y' = (v, q̈(t, q, v)), y = (q, v).
-pub struct FirstOrder<const N: usize, const N2: usize> {
-    pub rhs: Rhs<N>,
+struct FirstOrder<const N: usize, const N2: usize> {
+    rhs: Rhs<N>,
 }
 
 impl<const N: usize, const N2: usize> ode_solvers::System<f64, SVector<f64, N2>>
