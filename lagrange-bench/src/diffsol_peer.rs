@@ -3,11 +3,10 @@
 //! y = (q, v) with the hand-written accelerations and Jacobian-vector product, dense nalgebra
 //! matrices and LU.
 
+use crate::setup::{split_qv, Rhs};
 use diffsol::{NalgebraLU, NalgebraMat, OdeBuilder, OdeSolverMethod, OdeSolverStopReason};
 use std::cell::Cell;
 
-/// Hand-written accelerations q̈(t, q, v).
-pub type Rhs<const N: usize> = fn(f64, &[f64; N], &[f64; N]) -> [f64; N];
 /// Hand-written Jacobian of (q̇, q̈) applied to (dq, dv).
 pub type JacobianTimes<const N: usize> =
     fn(f64, &[f64; N], &[f64; N], &[f64; N], &[f64; N]) -> ([f64; N], [f64; N]);
@@ -46,12 +45,6 @@ pub fn run<const N: usize>(
 ) -> Result<Outcome<N>, String> {
     let evaluations = Cell::new(0usize);
     let products = Cell::new(0usize);
-    let split = |y: &[f64]| -> ([f64; N], [f64; N]) {
-        (
-            std::array::from_fn(|i| y[i]),
-            std::array::from_fn(|i| y[N + i]),
-        )
-    };
     let problem = OdeBuilder::<NalgebraMat<f64>>::new()
         .t0(t0)
         .rtol(tol)
@@ -59,15 +52,15 @@ pub fn run<const N: usize>(
         .rhs_implicit(
             |y: &[f64], _p: &[f64], t: f64, dy: &mut [f64]| {
                 evaluations.set(evaluations.get() + 1);
-                let (q, v) = split(y);
+                let (q, v) = split_qv(y);
                 let a = rhs(t, &q, &v);
                 dy[..N].copy_from_slice(&v);
                 dy[N..].copy_from_slice(&a);
             },
             |y: &[f64], _p: &[f64], t: f64, d: &[f64], out: &mut [f64]| {
                 products.set(products.get() + 1);
-                let (q, v) = split(y);
-                let (dq, dv) = split(d);
+                let (q, v) = split_qv(y);
+                let (dq, dv) = split_qv(d);
                 let (jq, jv) = jac(t, &q, &v, &dq, &dv);
                 out[..N].copy_from_slice(&jq);
                 out[N..].copy_from_slice(&jv);
@@ -102,6 +95,6 @@ pub fn run<const N: usize>(
         Method::Bdf => go!(problem.bdf::<NalgebraLU<f64>>()),
         Method::Esdirk34 => go!(problem.esdirk34::<NalgebraLU<f64>>()),
     };
-    let (q, v) = split(&y);
+    let (q, v) = split_qv(&y);
     Ok((q, v, evaluations.get(), products.get(), steps))
 }

@@ -9,7 +9,8 @@
 //! like `dop853.f` it does not count rejections before the first accepted step. Then, per problem
 //! and accuracy, the fewest evaluations of a run reaching it (the report's "cheapest" criterion).
 
-use crate::{distance, Setup};
+use crate::peer::PeerMethod;
+use crate::setup::{distance, in_coordinates, split_qv, Problem, Rhs, Setup};
 use lagrange_core::integrate::{Dop853, Stats, Stepper};
 use lagrange_core::{Coordinates, Mechanism, State};
 use std::fmt::Write as _;
@@ -24,8 +25,7 @@ fn ours<M: Mechanism<N>, const N: usize>(
     t_end: f64,
     settings: Dop853,
 ) -> Run<N> {
-    let s = start;
-    let start = State::new(s.t, M::Coords::from_array(s.q), M::Coords::from_array(s.v));
+    let start = in_coordinates::<M, N>(start);
     let out = Stepper::new(mechanism, settings, &start)
         .and_then(|mut solver| solver.integrate(t_end, &mut [], |_| {}))
         .map_err(|e| e.to_string())?;
@@ -45,45 +45,21 @@ fn ours<M: Mechanism<N>, const N: usize>(
 /// The `ode_solvers` Dop853 on the hand-written `rhs` at rtol = atol = `tol` with the report's
 /// settings (`dop853.f`'s defaults): its counts and end state.
 fn peer<const N: usize, const N2: usize>(
-    rhs: fn(f64, &[f64; N], &[f64; N]) -> [f64; N],
+    rhs: Rhs<N>,
     start: &State<[f64; N]>,
     t_end: f64,
     tol: f64,
 ) -> Run<N> {
-    let s = start;
-    let y0 =
-        ode_solvers::SVector::<f64, N2>::from_fn(|i, _| if i < N { s.q[i] } else { s.v[i - N] });
-    let span = t_end - s.t;
-    let mut solver = ode_solvers::Dop853::from_param(
-        crate::Peer::<N, N2> { rhs },
-        s.t,
-        t_end,
-        span,
-        y0,
-        tol,
-        tol,
-        0.9,
-        0.0,
-        0.333,
-        6.0,
-        span,
-        0.0,
-        10_000_000,
-        1000,
-        ode_solvers::OutputType::Sparse,
-    );
-    let stats = solver.integrate().map_err(|e| e.to_string())?;
-    let y = solver.y_out().last().ok_or("no output")?;
+    let (stats, ys) =
+        crate::peer::solve::<N, N2>(rhs, start, t_end, tol, PeerMethod::Dop853, false)?;
+    let y = ys.last().ok_or("no output")?;
     Ok((
         (
             stats.accepted_steps as usize,
             stats.rejected_steps as usize,
             stats.num_eval as usize,
         ),
-        (
-            std::array::from_fn(|i| y[i]),
-            std::array::from_fn(|i| y[N + i]),
-        ),
+        split_qv(y.as_slice()),
     ))
 }
 
@@ -95,12 +71,12 @@ fn cell<const N: usize>(run: &Run<N>, reference: &([f64; N], [f64; N])) -> Strin
 }
 
 /// The variants compared, in the columns' order.
-pub const VARIANTS: [&str; 3] = ["Dop853 β = 0.04", "Dop853 β = 0", "ode_solvers Dop853"];
+const VARIANTS: [&str; 3] = ["Dop853 β = 0.04", "Dop853 β = 0", "ode_solvers Dop853"];
 
 /// The table of one problem, as markdown rows, and per variant the fewest evaluations of a run
 /// reaching an end error ≤ 1e-6 and ≤ 1e-10 (`None`: no run did).
 pub fn table<M: Mechanism<N>, const N: usize, const N2: usize>(
-    setup: &Setup<M, N>,
+    setup: &Setup<M, N, N2>,
 ) -> (String, [[Option<usize>; 2]; 3]) {
     let mut rows = String::new();
     let mut cheapest = [[None; 2]; 3];
@@ -138,8 +114,31 @@ pub fn table<M: Mechanism<N>, const N: usize, const N2: usize>(
 }
 
 /// The header of [`table`]'s rows.
-pub const HEADER: &str = "| problem | tol | Dop853 β = 0.04: accepted / rejected / evaluations, \
+const HEADER: &str = "| problem | tol | Dop853 β = 0.04: accepted / rejected / evaluations, \
                           end error | Dop853 β = 0 | ode_solvers Dop853 |\n|---|---|---|---|---|\n";
+
+/// The `--dop853-steps` output: every problem's table, then per problem and accuracy the fewest
+/// evaluations of each variant.
+pub fn print(problems: &[Box<dyn Problem>]) {
+    let parts: Vec<_> = problems.iter().map(|p| p.dop853_steps()).collect();
+    print!("{HEADER}");
+    for (rows, _) in &parts {
+        print!("{rows}");
+    }
+    println!(
+        "\nFewest evaluations of a run reaching the accuracy ({}):\n",
+        VARIANTS.join(" / ")
+    );
+    println!("| problem | ≤ 1e-6 | ≤ 1e-10 |\n|---|---|---|");
+    let show = |c: [Option<usize>; 3]| {
+        c.map(|e| e.map_or("–".to_string(), |e| e.to_string()))
+            .join(" / ")
+    };
+    for ((_, cheapest), problem) in parts.iter().zip(problems) {
+        let at = |k: usize| show([cheapest[0][k], cheapest[1][k], cheapest[2][k]]);
+        println!("| {} | {} | {} |", problem.name(), at(0), at(1));
+    }
+}
 
 #[cfg(test)]
 mod tests {

@@ -2,11 +2,12 @@
 
 use crate::kepler::{kepler, KEPLER};
 use crate::problems::kepler_start;
-use crate::Row;
+use crate::setup::in_coordinates;
+use crate::sweep::Row;
 use lagrange_core::integrate::{Observation, Stepper};
 use lagrange_core::{
-    Coordinates, Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State,
-    StormerVerlet, Variational,
+    Dopri5, GaussLegendre2, ImplicitMidpoint, Integrator, Mechanism, Rk4, State, StormerVerlet,
+    Variational,
 };
 use plotters::prelude::*;
 use std::path::Path;
@@ -146,12 +147,7 @@ pub fn work_precision(dir: &Path, problem: &str, rows: &[Row]) {
 /// methods) and Dopri5 at tol 1e-8.
 pub fn kepler_long_run(periods: usize) -> Vec<(String, Vec<(f64, f64)>)> {
     fn kepler_state() -> State<kepler::Coords> {
-        let s = kepler_start();
-        State::new(
-            s.t,
-            Coordinates::from_array(s.q),
-            Coordinates::from_array(s.v),
-        )
+        in_coordinates::<kepler::Kepler, 2>(&kepler_start())
     }
     let per = 200;
     let h = 2.0 * std::f64::consts::PI / per as f64;

@@ -10,6 +10,8 @@
 //! steps (`step_with_memory`, what `FixedStepper` does), and through the one-step shorthand
 //! `sys.step::<I>` (fresh memory: one Jacobian per step).
 
+mod load;
+
 use lagrange::constraints::consistent_state;
 use lagrange::integrate::{ImplicitStepStats, NewtonMemory};
 use lagrange::prelude::*;
@@ -154,9 +156,20 @@ fn add(c: &mut Cost, s: ImplicitStepStats) {
     c.velocity += s.velocity_iterations as f64 / n;
 }
 
+/// `STEPS` implicit steps taken by `step`, and their statistics averaged per step.
+fn implicit_steps(mut step: impl FnMut() -> ImplicitStepStats) -> Cost {
+    let mut c = Cost::default();
+    for _ in 0..STEPS {
+        add(&mut c, step());
+    }
+    c
+}
+
 type Run<'a, C> = Box<dyn Fn(&mut State<C>) -> Cost + 'a>;
 
-fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M::Coords>) {
+/// The five runs of the table, labelled: RK4, then the implicit methods with their Newton matrix
+/// kept between steps (`step_with_memory`) and through the one-step shorthand (fresh memory).
+fn runs<M: Mechanism<N>, const N: usize>(sys: &M) -> [(&'static str, Run<'_, M::Coords>); 5] {
     let rk4: Run<M::Coords> = Box::new(|s| {
         for _ in 0..STEPS {
             sys.step::<Rk4>(s, H).expect("RK4 step");
@@ -165,53 +178,29 @@ fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M:
     });
     let mid_kept: Run<M::Coords> = Box::new(|s| {
         let mut memory = NewtonMemory::<N, 1>::default();
-        let mut c = Cost::default();
-        for _ in 0..STEPS {
-            add(
-                &mut c,
-                ImplicitMidpoint::step_with_memory(sys, &mut memory, s, H).expect("step"),
-            );
-        }
-        c
+        implicit_steps(|| ImplicitMidpoint::step_with_memory(sys, &mut memory, s, H).expect("step"))
     });
     let gl_kept: Run<M::Coords> = Box::new(|s| {
         let mut memory = NewtonMemory::<N, 2>::default();
-        let mut c = Cost::default();
-        for _ in 0..STEPS {
-            add(
-                &mut c,
-                GaussLegendre2::step_with_memory(sys, &mut memory, s, H).expect("step"),
-            );
-        }
-        c
+        implicit_steps(|| GaussLegendre2::step_with_memory(sys, &mut memory, s, H).expect("step"))
     });
     let mid_fresh: Run<M::Coords> = Box::new(|s| {
-        let mut c = Cost::default();
-        for _ in 0..STEPS {
-            add(
-                &mut c,
-                ImplicitMidpoint::step_with_stats(sys, s, H).expect("step"),
-            );
-        }
-        c
+        implicit_steps(|| ImplicitMidpoint::step_with_stats(sys, s, H).expect("step"))
     });
-    let gl_fresh: Run<M::Coords> = Box::new(|s| {
-        let mut c = Cost::default();
-        for _ in 0..STEPS {
-            add(
-                &mut c,
-                GaussLegendre2::step_with_stats(sys, s, H).expect("step"),
-            );
-        }
-        c
-    });
-    let runs: [(&str, Run<M::Coords>); 5] = [
+    let gl_fresh: Run<M::Coords> =
+        Box::new(|s| implicit_steps(|| GaussLegendre2::step_with_stats(sys, s, H).expect("step")));
+    [
         ("RK4", rk4),
         ("implicit midpoint, matrix kept", mid_kept),
         ("Gauss-Legendre 2, matrix kept", gl_kept),
         ("implicit midpoint, sys.step (fresh)", mid_fresh),
         ("Gauss-Legendre 2, sys.step (fresh)", gl_fresh),
-    ];
+    ]
+}
+
+/// `ROUNDS` interleaved rounds of `runs` from `start`: the minimum time per step of each run, and
+/// its costs.
+fn time_interleaved<C: Copy>(runs: &[(&str, Run<C>); 5], start: State<C>) -> ([f64; 5], [Cost; 5]) {
     let mut best = [f64::INFINITY; 5];
     let mut costs = [Cost::default(); 5];
     for _ in 0..ROUNDS {
@@ -222,12 +211,17 @@ fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M:
             best[i] = best[i].min(t0.elapsed().as_secs_f64() / STEPS as f64);
         }
     }
+    (best, costs)
+}
+
+/// The markdown table of one mechanism: time per step, its ratio to RK4's, and costs per step.
+fn print_table(name: &str, n: usize, labels: [&str; 5], best: [f64; 5], costs: [Cost; 5]) {
     println!(
-        "\n### {name} (N = {N}, h = {H}, {STEPS} steps, min over {ROUNDS} interleaved rounds)\n"
+        "\n### {name} (N = {n}, h = {H}, {STEPS} steps, min over {ROUNDS} interleaved rounds)\n"
     );
     println!("| method | µs per step | / RK4 | Newton iterations | field evaluations | Jacobians | factorisations | velocity-recovery iterations |");
     println!("|---|---|---|---|---|---|---|---|");
-    for (i, (label, _)) in runs.iter().enumerate() {
+    for (i, label) in labels.iter().enumerate() {
         let c = costs[i];
         if i == 0 {
             println!(
@@ -249,84 +243,86 @@ fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M:
     }
 }
 
+fn measure<M: Mechanism<N>, const N: usize>(name: &str, sys: &M, start: State<M::Coords>) {
+    let runs = runs(sys);
+    let (best, costs) = time_interleaved(&runs, start);
+    print_table(name, N, runs.map(|(label, _)| label), best, costs);
+}
+
+fn measure_double_pendulum() {
+    use double_pendulum::{Coords, DoublePendulum, State};
+    let sys = DoublePendulum {
+        m1: 1.0,
+        m2: 1.0,
+        l1: 1.0,
+        l2: 1.0,
+        g: 9.81,
+    };
+    let s = State::at_rest(Coords {
+        theta1: 1.0,
+        theta2: 0.5,
+    });
+    measure("double pendulum", &sys, s);
+}
+
+fn measure_four_bar() {
+    use four_bar::{Coords, FourBar, State};
+    let sys = FourBar {
+        l1: 1.0,
+        l2: 3.0,
+        l3: 2.0,
+        m1: 1.0,
+        m2: 2.0,
+        m3: 1.5,
+        d: 3.0,
+        g: 9.81,
+    };
+    let guess = State::new(
+        0.0,
+        Coords {
+            theta1: 1.0,
+            theta2: 0.2,
+            theta3: 1.6,
+        },
+        Coords {
+            theta1: 3.0,
+            theta2: 0.0,
+            theta3: 0.0,
+        },
+    );
+    let s = consistent_state(&sys, &guess).expect("consistent initial state");
+    measure("four-bar linkage", &sys, s);
+}
+
+fn measure_rolling_wheel() {
+    use rolling_wheel::{Coords, RollingWheel, State};
+    let w = RollingWheel { m: 2.0, r: 0.3 };
+    let (big_omega, phi0, omega) = (5.0f64, 0.4f64, 2.0f64);
+    let q0 = Coords {
+        x: 0.1,
+        y: -0.2,
+        phi: phi0,
+        theta: 0.0,
+    };
+    let v0 = Coords {
+        x: w.r * big_omega * phi0.cos(),
+        y: w.r * big_omega * phi0.sin(),
+        phi: omega,
+        theta: big_omega,
+    };
+    measure("rolling wheel", &w, State::new(0.0, q0, v0));
+}
+
 fn main() {
-    let uptime = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!(
         "load average (1, 5, 15 min) at start: {}",
-        uptime
-            .split_whitespace()
-            .take(3)
-            .collect::<Vec<_>>()
-            .join(" ")
+        load::load_averages(" ").unwrap_or_default()
     );
-    {
-        use double_pendulum::{Coords, DoublePendulum, State};
-        let sys = DoublePendulum {
-            m1: 1.0,
-            m2: 1.0,
-            l1: 1.0,
-            l2: 1.0,
-            g: 9.81,
-        };
-        let s = State::at_rest(Coords {
-            theta1: 1.0,
-            theta2: 0.5,
-        });
-        measure("double pendulum", &sys, s);
-    }
-    {
-        use four_bar::{Coords, FourBar, State};
-        let sys = FourBar {
-            l1: 1.0,
-            l2: 3.0,
-            l3: 2.0,
-            m1: 1.0,
-            m2: 2.0,
-            m3: 1.5,
-            d: 3.0,
-            g: 9.81,
-        };
-        let guess = State::new(
-            0.0,
-            Coords {
-                theta1: 1.0,
-                theta2: 0.2,
-                theta3: 1.6,
-            },
-            Coords {
-                theta1: 3.0,
-                theta2: 0.0,
-                theta3: 0.0,
-            },
-        );
-        let s = consistent_state(&sys, &guess).expect("consistent initial state");
-        measure("four-bar linkage", &sys, s);
-    }
-    {
-        use rolling_wheel::{Coords, RollingWheel, State};
-        let w = RollingWheel { m: 2.0, r: 0.3 };
-        let (big_omega, phi0, omega) = (5.0f64, 0.4f64, 2.0f64);
-        let q0 = Coords {
-            x: 0.1,
-            y: -0.2,
-            phi: phi0,
-            theta: 0.0,
-        };
-        let v0 = Coords {
-            x: w.r * big_omega * phi0.cos(),
-            y: w.r * big_omega * phi0.sin(),
-            phi: omega,
-            theta: big_omega,
-        };
-        measure("rolling wheel", &w, State::new(0.0, q0, v0));
-    }
-    let uptime = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    measure_double_pendulum();
+    measure_four_bar();
+    measure_rolling_wheel();
     println!(
         "\nload average at end: {}",
-        uptime
-            .split_whitespace()
-            .take(3)
-            .collect::<Vec<_>>()
-            .join(" ")
+        load::load_averages(" ").unwrap_or_default()
     );
 }
