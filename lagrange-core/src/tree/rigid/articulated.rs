@@ -164,8 +164,9 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             JointKind::Revolute(axis) => Some((axis, inertia.angular_column(axis), true)),
             JointKind::Prismatic(axis) => Some((axis, inertia.linear_column(axis), false)),
             JointKind::Fixed => None,
-            JointKind::Free(_) => {
-                return self.articulate_root(joint, moving.state, (inertia, bias), tau, b)
+            JointKind::Free(_) | JointKind::Ball(_) => {
+                let ground = ground_acceleration(k);
+                return self.articulate_root(joint, moving.state, (inertia, bias), tau, &ground, b);
             }
         };
         self.projected[b] = Some(Projected::Welded);
@@ -211,7 +212,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         Ok(())
     }
 
-    /// A free root (no parent): its whole articulated equation solved for its acceleration.
+    /// A free or ball root (no parent): its articulated equation solved for its acceleration.
     #[inline(always)]
     fn articulate_root<const N: usize>(
         &mut self,
@@ -219,13 +220,18 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         state: JointState<S>,
         (inertia, bias): (Inertia<S>, Force<S>),
         tau: &[S; N],
+        ground: &Motion<S>,
         b: usize,
     ) -> core::result::Result<(), Pivot> {
         let JointState::Free(o) = state else {
             out_of_order("a free joint without its orientation")
         };
-        let tau = free::rates(tau, joint.coordinate);
-        match free::root_acceleration(o, &inertia, &bias, tau) {
+        let tau = free::rates(tau, joint);
+        let acceleration = match free::translates(joint) {
+            true => free::root_acceleration(o, &inertia, &bias, tau),
+            false => free::pivot_acceleration(o, &inertia, &bias, tau, ground),
+        };
+        match acceleration {
             Ok(a) => {
                 self.projected[b] = Some(Projected::Root(a));
                 Ok(())
@@ -264,7 +270,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
         );
         if let (Projected::Root(a), JointState::Free(o)) = (projected, moving.state) {
             let rates = free::accelerations(o, &a, &above, &moving.bias_acceleration);
-            qdd[joint.coordinate..joint.coordinate + 6].copy_from_slice(&rates);
+            free::store(qdd, joint, rates);
             self.acceleration[b] = Some(a);
             return;
         }

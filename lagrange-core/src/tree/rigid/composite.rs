@@ -33,7 +33,7 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
             JointKind::Revolute(axis) => Some(composite[b].angular_column(axis)),
             JointKind::Prismatic(axis) => Some(composite[b].linear_column(axis)),
             JointKind::Fixed => None,
-            JointKind::Free(_) => {
+            JointKind::Free(_) | JointKind::Ball(_) => {
                 free_block(joint, state[b], &composite[b], &mut m);
                 None
             }
@@ -50,11 +50,12 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
                     m[(i, c)] = entry;
                     m[(c, i)] = entry;
                 } else if let JointState::Free(o) = state[j] {
-                    // A free root: M_jb = S_jᵀ F, six entries.
-                    let c = joints[j].coordinate;
+                    // A free or ball root: M_jb = S_jᵀ F, six or three entries.
                     for (l, entry) in free::forces_of(o, &f).into_iter().enumerate() {
-                        m[(i, c + l)] = entry;
-                        m[(c + l, i)] = entry;
+                        if let Some(c) = free::index(&joints[j], l) {
+                            m[(i, c)] = entry;
+                            m[(c, i)] = entry;
+                        }
                     }
                 }
             }
@@ -68,7 +69,8 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
     m
 }
 
-/// A free root's 6 × 6 block Sᵀ I^C S: column k is Sᵀ (I^C S e_k).
+/// A free root's 6 × 6 block Sᵀ I^C S (a ball root's 3 × 3, its rows and columns of c): column k
+/// is Sᵀ (I^C S e_k).
 fn free_block<S: Scalar, const N: usize>(
     joint: &Joint,
     state: JointState<S>,
@@ -78,8 +80,10 @@ fn free_block<S: Scalar, const N: usize>(
     let JointState::Free(o) = state else {
         return;
     };
-    let c = joint.coordinate;
     for k in 0..6 {
+        let Some(ck) = free::index(joint, k) else {
+            continue;
+        };
         let unit = std::array::from_fn(|l| if l == k { S::one() } else { S::zero() });
         let column = composite.apply(&free::motion_of(o, unit));
         // The upper triangle, mirrored: M symmetric to the last bit.
@@ -88,8 +92,10 @@ fn free_block<S: Scalar, const N: usize>(
             .enumerate()
             .take(k + 1)
         {
-            m[(c + l, c + k)] = entry;
-            m[(c + k, c + l)] = entry;
+            if let Some(cl) = free::index(joint, l) {
+                m[(cl, ck)] = entry;
+                m[(ck, cl)] = entry;
+            }
         }
     }
 }

@@ -32,8 +32,8 @@ impl<S: Scalar> JointState<S> {
             }
             JointKind::Prismatic(_) => JointState::Slid(q[joint.coordinate]),
             JointKind::Fixed => JointState::Welded,
-            JointKind::Free(chart) => {
-                JointState::Free(free::orientation(chart, q, joint.coordinate))
+            JointKind::Free(chart) | JointKind::Ball(chart) => {
+                JointState::Free(free::orientation(chart, q, free::orientation_at(joint)))
             }
         }
     }
@@ -153,7 +153,7 @@ pub(crate) fn velocity<S: Scalar, const N: usize>(
     q_dot: &[S; N],
 ) -> (Motion<S>, Motion<S>) {
     if let JointState::Free(o) = state {
-        return free::velocity(o, free::rates(q_dot, joint.coordinate));
+        return free::velocity(o, free::rates(q_dot, joint));
     }
     let rate = rate_of(joint, q_dot);
     let mut v = match parent {
@@ -171,7 +171,7 @@ pub(crate) fn velocity<S: Scalar, const N: usize>(
             v.linear[axis.indices().0] += rate;
             c
         }
-        JointKind::Fixed | JointKind::Free(_) => Motion::zero(),
+        JointKind::Fixed | JointKind::Free(_) | JointKind::Ball(_) => Motion::zero(),
     };
     (v, c)
 }
@@ -205,11 +205,12 @@ pub fn kinetic_energy<S: Scalar, const N: usize, const B: usize>(
     energy * 0.5
 }
 
-/// A one-coordinate joint's rate q̇ (zero for a fixed joint and, as it has six, a free one).
+/// A one-coordinate joint's rate q̇ (zero for a fixed joint and, as they have six or three, a free
+/// or a ball joint).
 #[inline(always)]
 pub(crate) fn rate_of<S: Scalar, const N: usize>(joint: &Joint, v: &[S; N]) -> S {
     match joint.kind {
-        JointKind::Fixed | JointKind::Free(_) => S::zero(),
+        JointKind::Fixed | JointKind::Free(_) | JointKind::Ball(_) => S::zero(),
         _ => v[joint.coordinate],
     }
 }
@@ -225,7 +226,7 @@ pub struct Frame<S> {
 }
 
 /// Every body's frame in the world at q: R_b = R_p E R_a(q), o_b = o_p + R_p (r + slide); a
-/// free root's R(σ) and p.
+/// free root's R(c) and p, a ball root's R(c) and r.
 pub fn world_frames<S: Scalar, const N: usize, const B: usize>(
     joints: &[Joint; B],
     k: &RigidConstants<B>,
@@ -245,7 +246,10 @@ pub fn world_frames<S: Scalar, const N: usize, const B: usize>(
             let c = joint.coordinate;
             frames[b] = Frame {
                 rotation: o.rotation(),
-                origin: [q[c], q[c + 1], q[c + 2]],
+                origin: match free::translates(joint) {
+                    true => [q[c], q[c + 1], q[c + 2]],
+                    false => kb.offset.map(S::from),
+                },
             };
             continue;
         }

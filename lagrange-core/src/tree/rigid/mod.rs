@@ -70,6 +70,10 @@ pub enum JointKind {
     /// Only a root (no parent) is free, with E the identity and r zero: R_b = R(c), o_b = p (see
     /// [`free`]).
     Free(RotationChart),
+    /// A ball joint (three coordinates from `coordinate` on): the body turns about its origin,
+    /// fixed at the offset r in the world, by R(c) of the chart. Only a root has one, with E the
+    /// identity: R_b = R(c), o_b = r (see [`free`]).
+    Ball(RotationChart),
 }
 
 /// A body's joint, as the declaration states it: what the compiler knows of the tree.
@@ -94,18 +98,14 @@ impl Joint {
     /// `#[mechanism]` calls, so each distinct kind of joint is compiled once, its structural zeros
     /// folded, however many bodies have it.
     pub const fn code(&self) -> u16 {
+        // A joint that turns freely has no axis: the two bits say whether it translates and its
+        // chart.
         let (kind, axis) = match self.kind {
-            JointKind::Revolute(a) => (0, a),
-            JointKind::Prismatic(a) => (1, a),
-            JointKind::Fixed => (2, Axis::X),
-            // A free joint has no axis: the two bits say its chart.
-            JointKind::Free(RotationChart::Mrp) => (3, Axis::X),
-            JointKind::Free(RotationChart::Vector) => (3, Axis::Y),
-        };
-        let axis = match axis {
-            Axis::X => 0,
-            Axis::Y => 1,
-            Axis::Z => 2,
+            JointKind::Revolute(a) => (0, axis_bits(a)),
+            JointKind::Prismatic(a) => (1, axis_bits(a)),
+            JointKind::Fixed => (2, 0),
+            JointKind::Free(c) => (3, chart_bit(c)),
+            JointKind::Ball(c) => (3, 2 + chart_bit(c)),
         };
         kind | axis << 2
             | bit(self.rotated, 4)
@@ -119,19 +119,22 @@ impl Joint {
     /// its parent's index and coordinate from `self`.
     #[inline(always)]
     pub const fn decoded(&self, code: u16) -> Joint {
-        let axis = match (code >> 2) & 3 {
+        let bits = (code >> 2) & 3;
+        let axis = match bits {
             0 => Axis::X,
             1 => Axis::Y,
             _ => Axis::Z,
         };
-        let kind = match code & 3 {
-            0 => JointKind::Revolute(axis),
-            1 => JointKind::Prismatic(axis),
-            2 => JointKind::Fixed,
-            _ => JointKind::Free(match axis {
-                Axis::Y => RotationChart::Vector,
-                _ => RotationChart::Mrp,
-            }),
+        let chart = match bits & 1 {
+            0 => RotationChart::Mrp,
+            _ => RotationChart::Vector,
+        };
+        let kind = match (code & 3, bits >> 1) {
+            (0, _) => JointKind::Revolute(axis),
+            (1, _) => JointKind::Prismatic(axis),
+            (2, _) => JointKind::Fixed,
+            (_, 0) => JointKind::Free(chart),
+            (_, _) => JointKind::Ball(chart),
         };
         let parent = match (on(code, 8), self.parent) {
             (true, Some(p)) => Some(p),
@@ -146,6 +149,23 @@ impl Joint {
             rotated: on(code, 4),
             offset: [on(code, 5), on(code, 6), on(code, 7)],
         }
+    }
+}
+
+/// An axis in two bits.
+const fn axis_bits(a: Axis) -> u16 {
+    match a {
+        Axis::X => 0,
+        Axis::Y => 1,
+        Axis::Z => 2,
+    }
+}
+
+/// A chart in one bit.
+const fn chart_bit(c: RotationChart) -> u16 {
+    match c {
+        RotationChart::Mrp => 0,
+        RotationChart::Vector => 1,
     }
 }
 

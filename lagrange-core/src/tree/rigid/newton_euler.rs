@@ -190,21 +190,21 @@ fn add_along_joint<S: Scalar, const N: usize>(
     match (joint.kind, state) {
         (JointKind::Revolute(axis), _) => a.angular[axis.indices().0] += qdd[joint.coordinate],
         (JointKind::Prismatic(axis), _) => a.linear[axis.indices().0] += qdd[joint.coordinate],
-        (JointKind::Free(_), JointState::Free(o)) => {
-            *a = *a + free::motion_of(o, free::rates(qdd, joint.coordinate))
+        (JointKind::Free(_) | JointKind::Ball(_), JointState::Free(o)) => {
+            *a = *a + free::motion_of(o, free::rates(qdd, joint))
         }
         _ => {}
     }
 }
 
 /// Sᵀ f: the force's component along a one-coordinate joint (`None` for a fixed joint and for a
-/// free one, whose six [`project`] writes).
+/// free or a ball one, whose six or three [`project`] writes).
 #[inline(always)]
 pub(crate) fn along_joint<S: Scalar>(joint: &Joint, f: &Force<S>) -> Option<S> {
     match joint.kind {
         JointKind::Revolute(axis) => Some(f.moment[axis.indices().0]),
         JointKind::Prismatic(axis) => Some(f.force[axis.indices().0]),
-        JointKind::Fixed | JointKind::Free(_) => None,
+        JointKind::Fixed | JointKind::Free(_) | JointKind::Ball(_) => None,
     }
 }
 
@@ -220,8 +220,7 @@ pub(crate) fn project<S: Scalar, const N: usize>(
         Some(x) => out[joint.coordinate] = x,
         None => {
             if let JointState::Free(o) = state {
-                let c = joint.coordinate;
-                out[c..c + 6].copy_from_slice(&free::forces_of(o, f));
+                free::store(out, joint, free::forces_of(o, f));
             }
         }
     }

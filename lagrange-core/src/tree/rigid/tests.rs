@@ -96,6 +96,30 @@ fn floating_state() -> ([f64; N + 5], [f64; N + 5]) {
     )
 }
 
+/// The same tree with its root on a ball joint: three coordinates (the orientation in `chart`)
+/// before the other five, the root's origin held at a constant offset, E the identity.
+fn ball_tree(chart: RotationChart) -> ([Joint; B], RigidConstants<B>) {
+    let (mut joints, mut k) = floating_tree(chart);
+    for joint in joints.iter_mut().skip(1) {
+        if joint.kind != JointKind::Fixed {
+            joint.coordinate -= 3;
+        }
+    }
+    joints[0].kind = JointKind::Ball(chart);
+    joints[0].offset = [true; 3];
+    k.bodies[0].offset = [0.2, -0.1, 0.4];
+    (joints, k)
+}
+
+/// A state of the ball tree: the floating state without the root's position.
+fn ball_state() -> ([f64; N + 2], [f64; N + 2]) {
+    let (q, v) = floating_state();
+    (
+        std::array::from_fn(|j| q[j + 3]),
+        std::array::from_fn(|j| v[j + 3]),
+    )
+}
+
 fn state() -> ([f64; N], [f64; N]) {
     (
         [0.3, -1.1, 0.25, 0.8, -0.4, 2.0],
@@ -301,6 +325,7 @@ fn the_mass_matrix_is_the_kinetic_energy_s_hessian() {
     mass_matrix_is_the_hessian(tree(), state());
     for chart in [RotationChart::Mrp, RotationChart::Vector] {
         mass_matrix_is_the_hessian(floating_tree(chart), floating_state());
+        mass_matrix_is_the_hessian(ball_tree(chart), ball_state());
     }
 }
 
@@ -309,6 +334,7 @@ fn momenta_are_m_times_the_velocities() {
     momenta_are_m_q_dot(tree(), state());
     for chart in [RotationChart::Mrp, RotationChart::Vector] {
         momenta_are_m_q_dot(floating_tree(chart), floating_state());
+        momenta_are_m_q_dot(ball_tree(chart), ball_state());
     }
 }
 
@@ -317,6 +343,7 @@ fn gravity_is_minus_the_potential_s_gradient() {
     gravity_is_minus_grad_v(tree(), state());
     for chart in [RotationChart::Mrp, RotationChart::Vector] {
         gravity_is_minus_grad_v(floating_tree(chart), floating_state());
+        gravity_is_minus_grad_v(ball_tree(chart), ball_state());
     }
 }
 
@@ -325,6 +352,7 @@ fn the_inertial_terms_are_lagrange_s() {
     inertial_terms_are_lagrange_s(tree(), state());
     for chart in [RotationChart::Mrp, RotationChart::Vector] {
         inertial_terms_are_lagrange_s(floating_tree(chart), floating_state());
+        inertial_terms_are_lagrange_s(ball_tree(chart), ball_state());
     }
 }
 
@@ -333,6 +361,7 @@ fn the_articulated_body_algorithm_solves_m_qdd_equals_tau_plus_f_minus_b() {
     articulated_solves_the_equations(tree(), state());
     for chart in [RotationChart::Mrp, RotationChart::Vector] {
         articulated_solves_the_equations(floating_tree(chart), floating_state());
+        articulated_solves_the_equations(ball_tree(chart), ball_state());
     }
 }
 
@@ -390,4 +419,28 @@ fn structural_zeros_left_out_change_nothing() {
     }
     let m: SMatrix<f64, N, N> = mass_matrix(&declared, &k, &q);
     assert!(m.cholesky().is_some());
+}
+
+#[test]
+fn a_joint_s_code_holds_its_kind() {
+    use RotationChart::{Mrp, Vector};
+    let kinds = [
+        JointKind::Revolute(Axis::Z),
+        JointKind::Prismatic(Axis::Y),
+        JointKind::Fixed,
+        JointKind::Free(Mrp),
+        JointKind::Free(Vector),
+        JointKind::Ball(Mrp),
+        JointKind::Ball(Vector),
+    ];
+    for kind in kinds {
+        let joint = Joint {
+            parent: None,
+            kind,
+            coordinate: 4,
+            rotated: true,
+            offset: [true, false, true],
+        };
+        assert_eq!(joint.decoded(joint.code()), joint);
+    }
 }

@@ -19,34 +19,72 @@
 //! ```
 //!
 //! from Ṙᵀ = −\[ω_b\]× Rᵀ and d/dt of B with c̈ held (the chart's, see [`charts`]).
+//!
+//! A ball joint is the free joint with its origin held: three coordinates c, ṗ = 0, the body's
+//! origin at the constant offset r. Its functions here are the free joint's with p's rates zero
+//! and p's entries left out ([`rates`], [`store`]); its articulated equation keeps only the
+//! angular rows ([`pivot_acceleration`]).
 
 mod charts;
 
 use super::inertia::Inertia;
 use super::spatial::{cross, scale3, sub3, Force, Motion, M3, V3};
+use super::{Joint, JointKind};
 use crate::geometry::RotationChart;
 use crate::geometry::Scalar;
 use crate::linalg::{cholesky_solve, NotPositiveDefinite};
 pub(crate) use charts::Orientation;
-use nalgebra::SVector;
+use nalgebra::{SMatrix, SVector};
 
-/// The free joint's orientation in `chart`, from the joint's first coordinate.
+/// Whether the joint translates too: a free joint (six coordinates, p then c), not a ball joint
+/// (three, c).
+#[inline(always)]
+pub(crate) fn translates(joint: &Joint) -> bool {
+    matches!(joint.kind, JointKind::Free(_))
+}
+
+/// The index of c's first coordinate.
+#[inline(always)]
+pub(crate) fn orientation_at(joint: &Joint) -> usize {
+    joint.coordinate + if translates(joint) { 3 } else { 0 }
+}
+
+/// The orientation in `chart` of the coordinates `q[at..at + 3]`.
 #[inline(always)]
 pub(crate) fn orientation<S: Scalar, const N: usize>(
     chart: RotationChart,
     q: &[S; N],
-    first: usize,
+    at: usize,
 ) -> Orientation<S> {
     Orientation {
         chart,
-        c: [q[first + 3], q[first + 4], q[first + 5]],
+        c: [q[at], q[at + 1], q[at + 2]],
     }
 }
 
-/// The six rates (ṗ, ċ) from the joint's first coordinate.
+/// Where entry `l` of the six (p, c) is among the coordinates: a ball joint has no p.
 #[inline(always)]
-pub(crate) fn rates<S: Scalar, const N: usize>(v: &[S; N], first: usize) -> [S; 6] {
-    std::array::from_fn(|k| v[first + k])
+pub(crate) fn index(joint: &Joint, l: usize) -> Option<usize> {
+    match translates(joint) {
+        true => Some(joint.coordinate + l),
+        false => (l >= 3).then(|| joint.coordinate + l - 3),
+    }
+}
+
+/// The six rates (ṗ, ċ) of the joint in `v`: a ball joint's ṗ is zero.
+#[inline(always)]
+pub(crate) fn rates<S: Scalar, const N: usize>(v: &[S; N], joint: &Joint) -> [S; 6] {
+    std::array::from_fn(|l| index(joint, l).map_or(S::zero(), |i| v[i]))
+}
+
+/// Writes the six (p, c) entries `six` to the joint's coordinates of `out` (a ball joint's c).
+#[inline(always)]
+pub(crate) fn store<S: Copy>(out: &mut [S], joint: &Joint, six: [S; 6]) {
+    for (l, x) in six.into_iter().enumerate() {
+        if let Some(i) = index(joint, l) {
+            out[i] = x;
+        }
+    }
 }
 
 /// Rᵀ x.
@@ -160,6 +198,33 @@ pub(crate) fn root_acceleration<S: Scalar>(
     Ok(Motion {
         angular: [a[0], a[1], a[2]],
         linear: [a[3], a[4], a[5]],
+    })
+}
+
+/// A ball root's acceleration: its origin held, the linear part is the ground's, a_v = Rᵀ a₀_v
+/// (the uniform field's, in the body's frame); the angular part solves the articulated equation's
+/// angular rows Sᵀ (I^A a + p^A) = τ with S = (B; 0): I^A_ωω a_ω = B⁻ᵀ τ_c − p^A_n − I^A_ωv a_v
+/// (Featherstone §7.3's projection, S of three columns), by Cholesky on the 3 × 3.
+#[inline(always)]
+pub(crate) fn pivot_acceleration<S: Scalar>(
+    o: Orientation<S>,
+    inertia: &Inertia<S>,
+    bias: &Force<S>,
+    tau: [S; 6],
+    ground: &Motion<S>,
+) -> Result<Motion<S>, NotPositiveDefinite> {
+    let linear = rotate_back(&o.rotation(), ground.linear);
+    let coupling = inertia.apply(&Motion {
+        angular: [S::zero(); 3],
+        linear,
+    });
+    let n = o.moment_of(angular(tau));
+    let rhs = SVector::<S, 3>::from_fn(|i, _| n[i] - bias.moment[i] - coupling.moment[i]);
+    let block = SMatrix::<S, 3, 3>::from_fn(|i, j| inertia.a.at(i, j));
+    let a = cholesky_solve(&block, &rhs)?;
+    Ok(Motion {
+        angular: [a[0], a[1], a[2]],
+        linear,
     })
 }
 
