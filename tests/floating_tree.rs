@@ -1,7 +1,8 @@
 //! Floating mechanisms take the rigid tree pass: a root body placed by six consecutive coordinates,
 //! `spatial(vec3(p..), rot_mrp(vec3(σ..)))` or `spatial(vec3(p..), rot_vector(vec3(φ..)))`, is the
-//! runtime's free joint (`lagrange::tree::rigid::JointKind::Free`; the generated `RigidTree` impl
-//! below is the proof). Every result must equal the dense pass's (`lagrange::dynamics`, over the
+//! runtime's free joint (`lagrange::tree::rigid::JointKind::Free`), and one turned by a chart about
+//! a fixed point its ball joint (`JointKind::Ball`; the generated `RigidTree` impls below are the
+//! proof). Every result must equal the dense pass's (`lagrange::dynamics`, over the
 //! same declaration's Cartesian model, which shares no code with the recursions) at random states,
 //! among them orientations at and near a rotation by π, where the charts switch.
 //!
@@ -83,6 +84,46 @@ macro_rules! floater {
 floater!(floater, rot_mrp);
 floater!(vector_floater, rot_vector);
 
+/// A top: a body turning about a fixed point (the pivot at a constant offset, its centre of mass
+/// off the pivot along its own axis), in the chart `$chart`, with a pendulum hinged on it and a
+/// torque about its axis: the runtime's ball joint.
+macro_rules! top {
+    ($module:ident, $chart:ident) => {
+        #[mechanism]
+        pub mod $module {
+            pub struct Coords {
+                pub attitude: [f64; 3],
+                pub swing: f64,
+            }
+            pub struct Top {
+                pub m: f64,
+                pub spin: f64,
+                pub g: f64,
+            }
+            #[rigid_body(mass = m, inertia = [0.3, 0.3, 0.5])]
+            fn top() -> Spatial {
+                let r = $chart(vec3(attitude[0], attitude[1], attitude[2]));
+                spatial(vec3(0.1, -0.2, 0.5) + r * vec3(0.0, 0.0, 0.3), r)
+            }
+            #[rigid_body(mass = 0.2 * m, inertia = [0.01, 0.01, 0.002])]
+            fn bob() -> Spatial {
+                top.joint(vec3(0.2, 0.0, 0.3), rot_x(swing))
+            }
+            #[gravity]
+            fn down() -> Vec3 {
+                vec3(0.0, 0.0, -g)
+            }
+            #[torque(on = top)]
+            fn drive() -> Vec3 {
+                top.rotation * vec3(0.0, 0.0, spin)
+            }
+        }
+    };
+}
+
+top!(mrp_top, rot_mrp);
+top!(vector_top, rot_vector);
+
 const FLOATER: floater::Floater = floater::Floater {
     m: 3.0,
     l: 0.6,
@@ -159,4 +200,53 @@ fn the_floating_quadruped_takes_the_tree_pass_and_agrees_with_the_dense_one() {
     agrees_with_dense_at::<_, _, 18, 156>(&sys, &sys, &states, TOLERANCE);
     let handle = quadruped::Quadruped::default().validated().unwrap();
     agrees_with_dense_at::<_, _, 18, 156>(&sys, &handle, &states, TOLERANCE);
+}
+
+const MRP_TOP: mrp_top::Top = mrp_top::Top {
+    m: 2.0,
+    spin: 0.4,
+    g: 9.81,
+};
+const VECTOR_TOP: vector_top::Top = vector_top::Top {
+    m: 2.0,
+    spin: 0.4,
+    g: 9.81,
+};
+
+/// The random states of `tree_vs_dense`, then the same with the orientation's coordinates (0 to
+/// 2) scaled to each norm of `norms`.
+fn turning_states<const N: usize>(norms: &[f64]) -> Vec<([f64; N], [f64; N])> {
+    let random = states::<N>(6);
+    let mut out = random.clone();
+    for (k, &norm) in norms.iter().enumerate() {
+        let (mut q, v) = random[k];
+        let size = q[0..3].iter().map(|s| s * s).sum::<f64>().sqrt();
+        q[0..3].iter_mut().for_each(|s| *s *= norm / size);
+        out.push((q, v));
+    }
+    out
+}
+
+#[test]
+fn a_top_on_a_ball_joint_takes_the_tree_pass_and_agrees_with_the_dense_one() {
+    let joints = <mrp_top::Top as RigidTree<4, 2>>::JOINTS;
+    assert_eq!(joints[0].kind, JointKind::Ball(RotationChart::Mrp));
+    assert_eq!((joints[0].parent, joints[0].coordinate), (None, 0));
+    assert_eq!(joints[1].parent, Some(0));
+    let states = turning_states::<4>(&MRP_NORMS);
+    agrees_with_dense_at::<_, _, 4, 24>(&MRP_TOP, &MRP_TOP, &states, TOLERANCE);
+    let handle = MRP_TOP.validated().unwrap();
+    agrees_with_dense_at::<_, _, 4, 24>(&MRP_TOP, &handle, &states, TOLERANCE);
+
+    let joints = <vector_top::Top as RigidTree<4, 2>>::JOINTS;
+    assert_eq!(joints[0].kind, JointKind::Ball(RotationChart::Vector));
+    // The gallery's torque-free body, turning about its centre of mass, is one too.
+    let tumbling =
+        <lagrange_gallery::scenes::tumbling_body::tumbling::Tumbling as RigidTree<3, 1>>::JOINTS;
+    assert_eq!(tumbling[0].kind, JointKind::Ball(RotationChart::Vector));
+    let pi = std::f64::consts::PI;
+    let states = turning_states::<4>(&[0.05, 2.2, pi - 1e-3, pi, pi + 0.05]);
+    agrees_with_dense_at::<_, _, 4, 24>(&VECTOR_TOP, &VECTOR_TOP, &states, TOLERANCE);
+    let handle = VECTOR_TOP.validated().unwrap();
+    agrees_with_dense_at::<_, _, 4, 24>(&VECTOR_TOP, &handle, &states, TOLERANCE);
 }

@@ -100,6 +100,15 @@ pub fn rigid_items(model: &Model, tree: &RigidTree) -> TokenStream {
     }
 }
 
+/// A chart as the runtime names it.
+fn rotation_chart(chart: ChartKind) -> TokenStream {
+    let geometry = quote!(::lagrange::__private::lagrange_core::geometry);
+    match chart {
+        ChartKind::Mrp => quote!(#geometry::RotationChart::Mrp),
+        ChartKind::Vector => quote!(#geometry::RotationChart::Vector),
+    }
+}
+
 /// A joint as a constant of the runtime.
 fn joint(node: &Node, nodes: &[Node]) -> TokenStream {
     let r = quote!(::lagrange::__private::tree::rigid);
@@ -119,15 +128,12 @@ fn joint(node: &Node, nodes: &[Node]) -> TokenStream {
         }
         Joint::Fixed => (quote!(#r::JointKind::Fixed), 0),
         Joint::Free(chart, first) => {
-            let chart = match chart {
-                ChartKind::Mrp => quote!(Mrp),
-                ChartKind::Vector => quote!(Vector),
-            };
-            let geometry = quote!(::lagrange::__private::lagrange_core::geometry);
-            (
-                quote!(#r::JointKind::Free(#geometry::RotationChart::#chart)),
-                first,
-            )
+            let chart = rotation_chart(chart);
+            (quote!(#r::JointKind::Free(#chart)), first)
+        }
+        Joint::Ball(chart, first) => {
+            let chart = rotation_chart(chart);
+            (quote!(#r::JointKind::Ball(#chart)), first)
         }
     };
     let parent = match node.parent {

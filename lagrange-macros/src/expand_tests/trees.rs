@@ -233,6 +233,30 @@ fn a_floating_base_in_the_rotation_vector_is_a_free_joint_of_that_chart() {
     assert!(!out.contains("dynamics::equations_of_motion::<Self"));
 }
 
+#[test]
+fn a_body_turning_about_a_fixed_point_is_a_ball_joint() {
+    let module = quote! {
+        pub mod top {
+            pub struct Coords { pub s: [f64; 3] }
+            pub struct Top { pub m: f64 }
+            #[rigid_body(mass = m, inertia = [0.3, 0.3, 0.5])]
+            fn top() -> Spatial {
+                let r = rot_mrp(vec3(s[0], s[1], s[2]));
+                spatial(vec3(0.0, 0.0, 0.5) + r * vec3(0.0, 0.0, 0.3), r)
+            }
+        }
+    };
+    let out: String = pretty(expand(TokenStream::new(), module))
+        .split_whitespace()
+        .collect();
+    assert!(out.contains("tree::rigid::RigidTree<3,1>for"));
+    // Its pivot is the offset r (only z can be non-zero), its centre of mass the body's own.
+    assert!(out.contains(
+        "kind:::lagrange::__private::tree::rigid::JointKind::Ball(::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,),coordinate:0,rotated:false,offset:[false,false,true],"
+    ));
+    assert!(!out.contains("dynamics::equations_of_motion::<Self"));
+}
+
 /// The declaration expands to the dense pass, not a rigid tree.
 fn dense(module: TokenStream, why: &str) {
     let out: String = pretty(expand(TokenStream::new(), module))

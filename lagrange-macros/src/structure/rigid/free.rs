@@ -1,6 +1,6 @@
-//! A free root body: one placed from the ground by six consecutive coordinates, its origin p and
-//! its orientation's three coordinates c in a rotation chart (`rot_mrp` or `rot_vector`), as a
-//! floating base is written:
+//! A root body that turns freely: placed from the ground by a rotation chart (`rot_mrp` or
+//! `rot_vector`) of three consecutive coordinates c, and either by three more consecutive
+//! coordinates p just before them, as a floating base is written,
 //!
 //! ```text
 //! #[rigid_body(mass = m, inertia = [..])]
@@ -9,11 +9,13 @@
 //! }
 //! ```
 //!
-//! reads as the runtime's free joint (`lagrange_core::tree::rigid::JointKind::Free`: R_b = R(c),
-//! o_b = p, E the identity and r zero) on the coordinates from p's first, c's three following
-//! p's. As for a revolute joint, constant rotations after the chart's are the body's C_b and
-//! offsets turned by it its s_b; anything else — a parent, a constant rotation before it, a
-//! position term in the world frame other than p, coordinates out of that order — is not read.
+//! which reads as the runtime's free joint (`lagrange_core::tree::rigid::JointKind::Free`:
+//! R_b = R(c), o_b = p, E the identity and r zero) on the coordinates from p's first; or by
+//! constants only, `spatial(vec3(0.0, 0.0, 0.5), rot_vector(vec3(a, b, c)))`, a body turning about
+//! a fixed point, which reads as the runtime's ball joint (`JointKind::Ball`: R_b = R(c), o_b = r,
+//! the constant). As for a revolute joint, constant rotations after the chart's are the body's C_b
+//! and offsets turned by it its s_b; anything else — a parent, a constant rotation before it, a
+//! position term in the world frame beside p, coordinates out of that order — is not read.
 
 use super::value::{Factor, Piece, Term, Value};
 use super::{blank, constants, offsets, Joint, Node};
@@ -47,24 +49,34 @@ pub(super) fn chart(kind: ChartKind, coordinates: &Value) -> Option<Value> {
     }
 }
 
-/// The free joint of a body whose rotation `R(c) C` starts with a chart's and whose position is
-/// p plus terms turned by R(c) (s_b). Whether the body is a root is left to the caller.
+/// The free or ball joint of a body whose rotation `R(c) C` starts with a chart's and whose
+/// position is p plus terms turned by R(c) (s_b; a free joint), or constants plus such terms (a
+/// ball joint). Whether the body is a root is left to the caller.
 pub(super) fn free(rotation: &[Factor], terms: Vec<(Vec<Factor>, Piece)>) -> Option<Node> {
     let Some(&Factor::Chart(kind, sigma)) = rotation.first() else {
         return None;
     };
-    let (origin, other): (Vec<_>, Vec<_>) = terms
+    let (turned, world): (Vec<_>, Vec<_>) = terms
         .into_iter()
-        .partition(|(_, p)| matches!(p, Piece::Coordinates(_)));
-    let [(turn, Piece::Coordinates(first))] = origin.as_slice() else {
-        return None;
+        .partition(|(f, _)| matches!(f.first(), Some(&Factor::Chart(..))));
+    let mut node = match world.as_slice() {
+        [(turn, Piece::Coordinates(first))] if turn.is_empty() && first + 3 == sigma => {
+            blank(Joint::Free(kind, *first))
+        }
+        _ if world
+            .iter()
+            .any(|(_, p)| matches!(p, Piece::Coordinates(_))) =>
+        {
+            return None
+        }
+        _ => {
+            let mut node = blank(Joint::Ball(kind, sigma));
+            node.offset = offsets(world)?;
+            node
+        }
     };
-    if !turn.is_empty() || first + 3 != sigma {
-        return None;
-    }
-    let mut node = blank(Joint::Free(kind, *first));
     node.after = constants(&rotation[1..])?;
-    let own = other
+    let own = turned
         .into_iter()
         .map(|(f, p)| match f.first() {
             Some(&Factor::Chart(k, s)) if k == kind && s == sigma => Some((f[1..].to_vec(), p)),

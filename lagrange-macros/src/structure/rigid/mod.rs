@@ -42,6 +42,9 @@ pub enum Joint {
     /// A root moved by coordinates `slot..slot + 6`: its origin, then its orientation in the
     /// chart (see [`free`]).
     Free(ChartKind, usize),
+    /// A root turned by coordinates `slot..slot + 3` in the chart about its origin, held at a
+    /// constant offset (see [`free`]).
+    Ball(ChartKind, usize),
 }
 
 /// A constant vector turned by constant rotation factors (`Rot3<f64>` and `Vec3<f64>`
@@ -161,6 +164,7 @@ fn each_coordinate_moves_one_node(model: &Model, nodes: &[Node]) -> bool {
         let slots = match node.joint {
             Joint::Revolute(_, slot) | Joint::Prismatic(_, slot) => slot..slot + 1,
             Joint::Free(_, first) => first..first + 6,
+            Joint::Ball(_, first) => first..first + 3,
             Joint::Fixed => continue,
         };
         for slot in slots {
@@ -224,8 +228,8 @@ fn node(nodes: &[Node], body: usize, member: Option<usize>, value: Value) -> Opt
         None => None,
     };
     let mut node = place(rotation, terms)?;
-    // The runtime's free joint is a root's (its E the identity, its r zero).
-    if matches!(node.joint, Joint::Free(..)) && parent.is_some() {
+    // The runtime's free and ball joints are a root's (E the identity, a free joint's r zero).
+    if matches!(node.joint, Joint::Free(..) | Joint::Ball(..)) && parent.is_some() {
         return None;
     }
     node.body = body;
