@@ -4,8 +4,9 @@
 //! switches (`tests/floating.rs`): the same torque-free asymmetric body as the gallery's
 //! `tumbling_body`, against Euler's closed form.
 //!
-//! The rotation is written homogeneous of degree two in e (Shuster, "A survey of attitude
-//! representations", *J. Astronautical Sciences* 41(4), 1993, eq. 161, times |e|²): on the sphere
+//! The rotation is written homogeneous of degree two in e (the transpose of Shuster's attitude
+//! matrix, which maps the other way: "A survey of attitude representations", *J. Astronautical
+//! Sciences* 41(4), 1993, eq. 161, times |e|²): on the sphere
 //! it is the rotation of the unit quaternion, and off it R = |e|² R̂, so a velocity along e
 //! changes the body's size, costs kinetic energy, and the mass matrix stays regular on the whole
 //! space of four coordinates (the Lagrange multiplier of the norm takes that direction out).
@@ -125,7 +126,9 @@ fn rk4_follows_eulers_closed_form_with_the_norm_kept() {
     let coarse = run::<Rk4>(0.01, 40.0);
     let fine = run::<Rk4>(0.005, 40.0);
     let ratio = coarse.omega_error / fine.omega_error;
-    assert!(coarse.omega_error < 1e-4, "{:e}", coarse.omega_error);
+    // RK4's local error, (h|ω|)⁵/5! ≈ 5·10⁻¹¹ per step at |ω| ≈ 2.2, over 4 000 steps: ≈ 2·10⁻⁷
+    // of |ω|, times the growth of a phase error along the elliptic functions over a few periods.
+    assert!(coarse.omega_error < 1e-5, "{:e}", coarse.omega_error);
     assert!((12.0..20.0).contains(&ratio), "ratio {ratio}");
     assert!(coarse.norm_error < 1e-12, "{:e}", coarse.norm_error);
     println!(

@@ -198,9 +198,6 @@ fn a_floating_base_takes_the_rigid_tree_pass_as_a_free_joint() {
     assert!(!out.contains("dynamics::equations_of_motion::<Self"));
 }
 
-/// A free body the tree pass cannot take as the runtime's free joint keeps the dense pass: its six
-/// coordinates out of order, the parameters before the origin, a constant offset in the world frame
-/// or a constant rotation before `rot_mrp`, or a parent.
 /// A floating base placed by `pose`, with a leg on a hinge.
 fn floating_with_base(pose: TokenStream) -> TokenStream {
     quote! {
@@ -254,7 +251,84 @@ fn a_body_turning_about_a_fixed_point_is_a_ball_joint() {
     assert!(out.contains(
         "kind:::lagrange::__private::tree::rigid::JointKind::Ball(::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,),coordinate:0,rotated:false,offset:[false,false,true],"
     ));
+    let constant = |name: &str| {
+        let at = out.find(&format!("let{name}:Vec3<f64>=")).expect(name);
+        out[at..at + out[at..].find(';').unwrap()].to_string()
+    };
+    assert!(
+        constant("__offset").contains("vec3((0.0),(0.0),(0.5))"),
+        "{}",
+        constant("__offset")
+    );
+    assert!(
+        constant("__own_0").contains("vec3((0.0),(0.0),(0.3))"),
+        "{}",
+        constant("__own_0")
+    );
     assert!(!out.contains("dynamics::equations_of_motion::<Self"));
+}
+
+/// A body turned by a chart that the runtime's ball joint cannot take keeps the dense pass: a
+/// constant rotation before the chart, a pivot that names a coordinate, a parent.
+#[test]
+fn a_turning_body_not_written_as_a_ball_root_keeps_the_dense_pass() {
+    let top = |coords: TokenStream, pose: TokenStream| {
+        quote! {
+            pub mod top {
+                pub struct Coords { #coords }
+                pub struct Top { pub m: f64 }
+                #[rigid_body(mass = m, inertia = [0.3, 0.3, 0.5])]
+                fn link() -> Spatial { spatial(vec3(0.0, 0.0, 0.2), rot_y(h)) }
+                #[rigid_body(mass = m, inertia = [0.3, 0.3, 0.5])]
+                fn top() -> Spatial { #pose }
+            }
+        }
+    };
+    let (coords, with_z) = (
+        quote!(pub h: f64, pub s: [f64; 3]),
+        quote!(pub h: f64, pub s: [f64; 3], pub z: f64),
+    );
+    let cases = [
+        (
+            &coords,
+            quote!(spatial(
+                vec3(0.0, 0.0, 0.5),
+                rot_x(0.1) * rot_vector(vec3(s[0], s[1], s[2]))
+            )),
+            "a constant rotation before the chart",
+        ),
+        (
+            &with_z,
+            quote!(spatial(
+                vec3(0.0, 0.0, z),
+                rot_vector(vec3(s[0], s[1], s[2]))
+            )),
+            "a pivot that names a coordinate",
+        ),
+        (
+            &coords,
+            quote!(spatial(
+                link.point(vec3(0.0, 0.0, 0.5)),
+                link.rotation * rot_vector(vec3(s[0], s[1], s[2]))
+            )),
+            "a parent",
+        ),
+    ];
+    for (coords, pose, why) in cases {
+        dense(top(coords.clone(), pose), why);
+    }
+    // The same declarations read as trees when the ball is a root written as one.
+    let out = pretty(expand(
+        TokenStream::new(),
+        top(
+            coords,
+            quote!(spatial(
+                vec3(0.0, 0.0, 0.5),
+                rot_vector(vec3(s[0], s[1], s[2]))
+            )),
+        ),
+    ));
+    assert!(out.contains("JointKind::Ball"));
 }
 
 /// The declaration expands to the dense pass, not a rigid tree.
@@ -269,6 +343,9 @@ fn dense(module: TokenStream, why: &str) {
     );
 }
 
+/// A free body the tree pass cannot take as the runtime's free joint keeps the dense pass: its six
+/// coordinates out of order, a constant offset in the world frame or a constant rotation before
+/// `rot_mrp` (the parameters before the origin, and a parent, below).
 #[test]
 fn a_free_body_not_written_as_a_free_root_keeps_the_dense_pass() {
     let cases = [

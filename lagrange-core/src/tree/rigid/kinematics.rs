@@ -33,6 +33,10 @@ impl<S: Scalar> JointState<S> {
             JointKind::Prismatic(_) => JointState::Slid(q[joint.coordinate]),
             JointKind::Fixed => JointState::Welded,
             JointKind::Free(chart) | JointKind::Ball(chart) => {
+                // The recursions take these joints as a root's, with E the identity (and a free
+                // joint's r zero).
+                debug_assert!(joint.parent.is_none() && !joint.rotated);
+                debug_assert!(joint.offset == [false; 3] || !free::translates(joint));
                 JointState::Free(free::orientation(chart, q, free::orientation_at(joint)))
             }
         }

@@ -11,12 +11,14 @@
 //! revolute about axis a:   R_b = R_p E R_a(q),    o_b = o_p + R_p r,
 //! prismatic along axis a:  R_b = R_p E,           o_b = o_p + R_p (r + E e_a q),
 //! fixed:                   R_b = R_p E,           o_b = o_p + R_p r,
-//! free (a root only):      R_b = R(σ),            o_b = p,
+//! free (a root only):      R_b = R(c),            o_b = p,
+//! ball (a root only):      R_b = R(c),            o_b = r,
 //! ```
 //!
 //! with (R_b, o_b) the body's frame (orientation and origin) in the world, a a coordinate axis of
 //! the joint's frame (so the joint's motion subspace S = (e_a; 0) or (0; e_a) has one non-zero
-//! entry; a free root's six coordinates (p, σ) enter by S(q) = diag(B(σ), Rᵀ), see [`free`]) and
+//! entry; a free root's six coordinates (p, c) enter by S(q) = diag(B(c), Rᵀ), a ball root's three by
+//! S(q) = (B(c); 0), c in a rotation chart, see [`free`]) and
 //! the body's inertia constant in its frame ([`spatial::RigidInertia`]: mass, centre of mass,
 //! rotational inertia). Everything that does not depend on the state — E, r, the inertias and
 //! the uniform field g — is prepared once ([`RigidConstants`], computed by the validated handle);

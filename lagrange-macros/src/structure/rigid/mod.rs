@@ -1,7 +1,7 @@
 //! The kinematic tree of rigid bodies a declaration states (see `lagrange_core::tree::rigid`):
 //! each body placed from an earlier one (or the ground) by constant rotations and offsets and at
 //! most one joint — a rotation about a coordinate axis by one coordinate, or a slide along one — or,
-//! for a root, a free joint of six coordinates (see [`free`]).
+//! for a root, a free joint of six coordinates or a ball joint of three (see [`free`]).
 //!
 //! ```text
 //! #[rigid_body(mass = m2, inertia = [ix2, iy2, iz2])]
