@@ -4,56 +4,17 @@
 //! switches (`tests/floating.rs`): the same torque-free asymmetric body as the gallery's
 //! `tumbling_body`, against Euler's closed form.
 //!
-//! The rotation is written homogeneous of degree two in e (the transpose of Shuster's attitude
-//! matrix, which maps the other way: "A survey of attitude representations", *J. Astronautical
-//! Sciences* 41(4), 1993, eq. 161, times |e|²): on the sphere
-//! it is the rotation of the unit quaternion, and off it R = |e|² R̂, so a velocity along e
+//! The rotation is written homogeneous of degree two in e (`common/quaternion_body.rs`): on the
+//! sphere it is the rotation of the unit quaternion, and off it R = |e|² R̂, so a velocity along e
 //! changes the body's size, costs kinetic energy, and the mass matrix stays regular on the whole
 //! space of four coordinates (the Lagrange multiplier of the norm takes that direction out).
 
 use lagrange::prelude::*;
 use lagrange_gallery::scenes::tumbling_body::{closed_form, BODY, OMEGA0};
 
-#[mechanism]
-pub mod quaternion_body {
-    pub struct Coords {
-        /// (w, x, y, z): the body is turned by 2 acos w about (x, y, z).
-        pub e: [f64; 4],
-    }
-    pub struct QuaternionBody {
-        pub i1: f64,
-        pub i2: f64,
-        pub i3: f64,
-    }
-    #[rigid_body(mass = 1.0, inertia = [i1, i2, i3])]
-    fn body() -> Spatial {
-        let (w, x, y, z) = (e[0], e[1], e[2], e[3]);
-        spatial(
-            vec3(0.0, 0.0, 0.0),
-            rot3([
-                [
-                    w * w + x * x - y * y - z * z,
-                    2.0 * (x * y - w * z),
-                    2.0 * (x * z + w * y),
-                ],
-                [
-                    2.0 * (x * y + w * z),
-                    w * w - x * x + y * y - z * z,
-                    2.0 * (y * z - w * x),
-                ],
-                [
-                    2.0 * (x * z - w * y),
-                    2.0 * (y * z + w * x),
-                    w * w - x * x - y * y + z * z,
-                ],
-            ]),
-        )
-    }
-    #[constraint]
-    fn unit() -> f64 {
-        e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3] - 1.0
-    }
-}
+#[path = "common/quaternion_body.rs"]
+mod declaration;
+use declaration::quaternion_body;
 
 use quaternion_body::{Coords, QuaternionBody, State};
 

@@ -59,7 +59,7 @@ use nalgebra::{DefaultAllocator, Dim, U1};
 use num_dual::DualNum;
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
-mod charts;
+pub(crate) mod charts;
 mod rotations;
 pub use charts::{
     body_angular_velocity, chart_rates, rot_mrp, rot_vector, rotation, switch_chart, RotationChart,

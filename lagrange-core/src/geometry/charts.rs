@@ -57,6 +57,21 @@ fn rotation_from<D: Scalar>(a: Vec3<D>, skew: D, identity: D, outer: D) -> Rot3<
     }
 }
 
+/// (1 − cos θ)/θ² = Σₖ (−θ²)ᵏ/(2k + 2)!, to θ⁸.
+pub(crate) const VERSINE_SERIES: [f64; 5] = [
+    0.5,
+    -1.0 / 24.0,
+    1.0 / 720.0,
+    -1.0 / 40320.0,
+    1.0 / 3628800.0,
+];
+
+/// c₀ + c₁ t + … + c₄ t⁴ by Horner's rule: the charts' coefficients by their series in t = θ².
+#[inline(always)]
+pub(crate) fn series<D: Scalar>(t: D, c: [f64; 5]) -> D {
+    D::from(c[0]) + t * (D::from(c[1]) + t * (D::from(c[2]) + t * (D::from(c[3]) + t * c[4])))
+}
+
 /// The rotation with rotation vector `phi`: R = exp(\[φ\]×) = I + a \[φ\]× + b \[φ\]×², with
 /// a = sin θ/θ, b = (1 − cos θ)/θ², θ = |φ| (Rodrigues' formula; Murray, Li & Sastry, *A
 /// Mathematical Introduction to Robotic Manipulation*, 1994, eq. (2.14)), and \[φ\]×² = φφᵀ − θ² I.
@@ -77,20 +92,12 @@ pub fn rot_vector<D: Scalar>(phi: Vec3<D>) -> Rot3<D> {
     let theta2 = phi.x * phi.x + phi.y * phi.y + phi.z * phi.z;
     let (sinc, versine) = if theta2.re() < 1e-2 {
         // sin θ/θ and (1 − cos θ)/θ² by their series in θ².
-        let t = theta2;
-        let f = |c: [f64; 5]| {
-            D::from(c[0])
-                + t * (D::from(c[1]) + t * (D::from(c[2]) + t * (D::from(c[3]) + t * c[4])))
-        };
         (
-            f([1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0]),
-            f([
-                0.5,
-                -1.0 / 24.0,
-                1.0 / 720.0,
-                -1.0 / 40320.0,
-                1.0 / 3628800.0,
-            ]),
+            series(
+                theta2,
+                [1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0],
+            ),
+            series(theta2, VERSINE_SERIES),
         )
     } else {
         let theta = theta2.sqrt();

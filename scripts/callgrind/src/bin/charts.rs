@@ -81,11 +81,23 @@ thrown!(thrown_mrp, rot_mrp);
 /// q̈ of a thrown body at the charts' state of `run!`, moving along all six coordinates.
 macro_rules! thrown_calls {
     ($m:ident, $calls:expr) => {{
-        let sys = $m::Body { i1: 1.0, i2: 2.0, i3: 3.0 }.validated().unwrap();
+        let sys = $m::Body {
+            i1: 1.0,
+            i2: 2.0,
+            i3: 3.0,
+        }
+        .validated()
+        .unwrap();
         let s = $m::State::new(
             0.0,
-            $m::Coords { p: [0.1, 0.2, 0.3], c: [0.4, -0.7, 1.1] },
-            $m::Coords { p: [1.0, -0.5, 2.0], c: [0.3, 0.5, -0.2] },
+            $m::Coords {
+                p: [0.1, 0.2, 0.3],
+                c: [0.4, -0.7, 1.1],
+            },
+            $m::Coords {
+                p: [1.0, -0.5, 2.0],
+                c: [0.3, 0.5, -0.2],
+            },
         );
         let mut sum = 0.0;
         for _ in 0..$calls {
@@ -95,35 +107,11 @@ macro_rules! thrown_calls {
     }};
 }
 
-/// The quaternion e = (w, x, y, z) as the tests' `quaternion_body` writes it: the rotation
-/// homogeneous of degree two in e, the norm a holonomic constraint.
-#[mechanism]
-pub mod by_quaternion {
-    pub struct Coords {
-        pub e: [f64; 4],
-    }
-    pub struct Body {
-        pub i1: f64,
-        pub i2: f64,
-        pub i3: f64,
-    }
-    #[rigid_body(mass = 1.0, inertia = [i1, i2, i3])]
-    fn body() -> Spatial {
-        let (w, x, y, z) = (e[0], e[1], e[2], e[3]);
-        spatial(
-            vec3(0.0, 0.0, 0.0),
-            rot3([
-                [w * w + x * x - y * y - z * z, 2.0 * (x * y - w * z), 2.0 * (x * z + w * y)],
-                [2.0 * (x * y + w * z), w * w - x * x + y * y - z * z, 2.0 * (y * z - w * x)],
-                [2.0 * (x * z - w * y), 2.0 * (y * z + w * x), w * w - x * x - y * y + z * z],
-            ]),
-        )
-    }
-    #[constraint]
-    fn unit() -> f64 {
-        e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3] - 1.0
-    }
-}
+// The quaternion e = (w, x, y, z) of the tests: the rotation homogeneous of degree two in e, the
+// norm a holonomic constraint.
+#[path = "../../../../tests/common/quaternion_body.rs"]
+mod quaternion_declaration;
+use quaternion_declaration::quaternion_body as by_quaternion;
 
 #[mechanism]
 pub mod by_euler {
@@ -164,12 +152,26 @@ fn quadruped<M: Mechanism<N>, const N: usize>(sys: &M, calls: usize) -> f64 {
 
 macro_rules! run {
     ($m:ident, $calls:expr, $step:expr) => {{
-        let sys = $m::Body { i1: 1.0, i2: 2.0, i3: 3.0 }.validated().unwrap();
+        let sys = $m::Body {
+            i1: 1.0,
+            i2: 2.0,
+            i3: 3.0,
+        }
+        .validated()
+        .unwrap();
         // A generic state away from every chart's origin and from gimbal lock.
         let mut s = $m::State::new(
             0.0,
-            $m::Coords { a: 0.4, b: -0.7, c: 1.1 },
-            $m::Coords { a: 0.3, b: 0.5, c: -0.2 },
+            $m::Coords {
+                a: 0.4,
+                b: -0.7,
+                c: 1.1,
+            },
+            $m::Coords {
+                a: 0.3,
+                b: 0.5,
+                c: -0.2,
+            },
         );
         let mut sum = 0.0;
         for _ in 0..$calls {
@@ -205,12 +207,22 @@ fn quaternion_state(phi: [f64; 3], omega: [f64; 3]) -> by_quaternion::State {
         0.5 * (e[0] * omega[1] + cross[1]),
         0.5 * (e[0] * omega[2] + cross[2]),
     ];
-    by_quaternion::State::new(0.0, by_quaternion::Coords { e }, by_quaternion::Coords { e: rate })
+    by_quaternion::State::new(
+        0.0,
+        by_quaternion::Coords { e },
+        by_quaternion::Coords { e: rate },
+    )
 }
 
 /// `accelerations` (or an RK4 step) of the quaternion body, at the charts' state of `run!`.
 fn quaternion(calls: usize, step: bool) -> f64 {
-    let sys = by_quaternion::Body { i1: 1.0, i2: 2.0, i3: 3.0 }.validated().unwrap();
+    let sys = by_quaternion::QuaternionBody {
+        i1: 1.0,
+        i2: 2.0,
+        i3: 3.0,
+    }
+    .validated()
+    .unwrap();
     let mut s = quaternion_state([0.4, -0.7, 1.1], [0.3, 0.5, -0.2]);
     let mut sum = 0.0;
     for _ in 0..calls {
@@ -227,8 +239,14 @@ fn quaternion(calls: usize, step: bool) -> f64 {
 /// The largest error of the body-frame angular velocity Rᵀω against Euler's closed form, sampled
 /// every second over 1000 s of RK4 at step `h`, from the start state `s`.
 macro_rules! omega_error {
-    ($m:ident, $s:expr, $h:expr) => {{
-        let sys = $m::Body { i1: 1.0, i2: 2.0, i3: 3.0 }.validated().unwrap();
+    ($m:ident :: $body:ident, $s:expr, $h:expr) => {{
+        let sys = $m::$body {
+            i1: 1.0,
+            i2: 2.0,
+            i3: 3.0,
+        }
+        .validated()
+        .unwrap();
         let mut s = $s;
         let h: f64 = $h;
         let per_second = (1.0 / h).round() as usize;
@@ -255,20 +273,36 @@ fn accuracy() {
     for h in [0.01, 0.005] {
         let vector = by_vector::State::new(
             0.0,
-            by_vector::Coords { a: 0.0, b: 0.0, c: 0.0 },
-            by_vector::Coords { a: w[0], b: w[1], c: w[2] },
+            by_vector::Coords {
+                a: 0.0,
+                b: 0.0,
+                c: 0.0,
+            },
+            by_vector::Coords {
+                a: w[0],
+                b: w[1],
+                c: w[2],
+            },
         );
         let mrp = by_mrp::State::new(
             0.0,
-            by_mrp::Coords { a: 0.0, b: 0.0, c: 0.0 },
-            by_mrp::Coords { a: w[0] / 4.0, b: w[1] / 4.0, c: w[2] / 4.0 },
+            by_mrp::Coords {
+                a: 0.0,
+                b: 0.0,
+                c: 0.0,
+            },
+            by_mrp::Coords {
+                a: w[0] / 4.0,
+                b: w[1] / 4.0,
+                c: w[2] / 4.0,
+            },
         );
         let quaternion = quaternion_state([0.0; 3], w);
         println!(
             "h = {h}: rotation vector {:.1e}, modified Rodrigues parameters {:.1e}, quaternion {:.1e}",
-            omega_error!(by_vector, vector, h),
-            omega_error!(by_mrp, mrp, h),
-            omega_error!(by_quaternion, quaternion, h),
+            omega_error!(by_vector::Body, vector, h),
+            omega_error!(by_mrp::Body, mrp, h),
+            omega_error!(by_quaternion::QuaternionBody, quaternion, h),
         );
     }
 }
@@ -291,11 +325,15 @@ fn main() {
         "thrown_mrp" => thrown_calls!(thrown_mrp, calls),
         "quaternion_step" => quaternion(calls, true),
         "quadruped_floating" => quadruped(
-            &floating_quadruped::FloatingQuadruped::default().validated().unwrap(),
+            &floating_quadruped::FloatingQuadruped::default()
+                .validated()
+                .unwrap(),
             calls,
         ),
         "quadruped_fixed" => quadruped(
-            &fixed_quadruped::FixedQuadruped::default().validated().unwrap(),
+            &fixed_quadruped::FixedQuadruped::default()
+                .validated()
+                .unwrap(),
             calls,
         ),
         mode => panic!("unknown mode {mode}"),

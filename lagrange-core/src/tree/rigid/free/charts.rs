@@ -21,6 +21,7 @@
 //! [`body_angular_velocity`](crate::geometry::body_angular_velocity) and dual-number derivatives.
 
 use super::super::spatial::{add3, cross, dot3, scale3, sub3, M3, V3};
+use crate::geometry::charts::{series, VERSINE_SERIES};
 use crate::geometry::{rot_mrp, rot_vector, vec3, RotationChart, Scalar};
 
 /// A free joint's orientation: its chart and its three coordinates in it.
@@ -59,46 +60,48 @@ fn b_factor<S: Scalar>(sigma: V3<S>) -> S {
 #[inline(always)]
 fn vector_coefficients<S: Scalar>(t: S) -> [S; 5] {
     if t.re() < 1e-2 {
-        let f = |k: [f64; 5]| {
-            S::from(k[0])
-                + t * (S::from(k[1]) + t * (S::from(k[2]) + t * (S::from(k[3]) + t * k[4])))
-        };
         return [
-            f([
-                0.5,
-                -1.0 / 24.0,
-                1.0 / 720.0,
-                -1.0 / 40320.0,
-                1.0 / 3628800.0,
-            ]),
-            f([
-                1.0 / 6.0,
-                -1.0 / 120.0,
-                1.0 / 5040.0,
-                -1.0 / 362880.0,
-                1.0 / 39916800.0,
-            ]),
-            f([
-                1.0 / 12.0,
-                1.0 / 720.0,
-                1.0 / 30240.0,
-                1.0 / 1209600.0,
-                1.0 / 47900160.0,
-            ]),
-            f([
-                -1.0 / 24.0,
-                1.0 / 360.0,
-                -1.0 / 13440.0,
-                1.0 / 907200.0,
-                -1.0 / 95800320.0,
-            ]),
-            f([
-                -1.0 / 120.0,
-                1.0 / 2520.0,
-                -1.0 / 120960.0,
-                1.0 / 9979200.0,
-                -1.0 / 1245404160.0,
-            ]),
+            series(t, VERSINE_SERIES),
+            series(
+                t,
+                [
+                    1.0 / 6.0,
+                    -1.0 / 120.0,
+                    1.0 / 5040.0,
+                    -1.0 / 362880.0,
+                    1.0 / 39916800.0,
+                ],
+            ),
+            series(
+                t,
+                [
+                    1.0 / 12.0,
+                    1.0 / 720.0,
+                    1.0 / 30240.0,
+                    1.0 / 1209600.0,
+                    1.0 / 47900160.0,
+                ],
+            ),
+            series(
+                t,
+                [
+                    -1.0 / 24.0,
+                    1.0 / 360.0,
+                    -1.0 / 13440.0,
+                    1.0 / 907200.0,
+                    -1.0 / 95800320.0,
+                ],
+            ),
+            series(
+                t,
+                [
+                    -1.0 / 120.0,
+                    1.0 / 2520.0,
+                    -1.0 / 120960.0,
+                    1.0 / 9979200.0,
+                    -1.0 / 1245404160.0,
+                ],
+            ),
         ];
     }
     let theta = t.sqrt();
