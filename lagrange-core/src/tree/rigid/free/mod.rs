@@ -1,5 +1,5 @@
 //! The free joint: a root body's six coordinates, its origin p in the world and its orientation c
-//! in a rotation chart (R = R(c), body to world; [`charts`] gives the chart's maps), as the
+//! in a rotation chart (R = R(c), body to world; the private module `charts` gives the chart's maps), as the
 //! recursions take it (Featherstone, *Rigid Body Dynamics Algorithms*, 2008, §4.4 and §9.3: a
 //! floating base is a six-degree-of-freedom joint to the ground).
 //!
@@ -18,12 +18,12 @@
 //! Ṡ q̇ = (Ḃ ċ ; −ω_b × Rᵀ ṗ),
 //! ```
 //!
-//! from Ṙᵀ = −\[ω_b\]× Rᵀ and d/dt of B with c̈ held (the chart's, see [`charts`]).
+//! from Ṙᵀ = −\[ω_b\]× Rᵀ and d/dt of B with c̈ held (the chart's, see `charts`).
 //!
 //! A ball joint is the free joint with its origin held: three coordinates c, ṗ = 0, the body's
 //! origin at the constant offset r. Its functions here are the free joint's with p's rates zero
-//! and p's entries left out ([`rates`], [`store`]); its articulated equation keeps only the
-//! angular rows ([`pivot_acceleration`]).
+//! and p's entries left out (`rates`, `store`); its articulated equation keeps only the
+//! angular rows (`pivot_acceleration`).
 
 mod charts;
 
