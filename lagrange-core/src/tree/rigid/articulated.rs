@@ -263,17 +263,18 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             ),
             None => ground_acceleration(k),
         };
-        let mut a = motion_to_child(joint, kb, moving.state, &above) + moving.bias_acceleration;
         let projected = filled(
             &self.projected[b],
             "a body accelerated before its articulation",
         );
+        // A free or ball root's acceleration is its articulated equation's solution already.
         if let (Projected::Root(a), JointState::Free(o)) = (projected, moving.state) {
             let rates = free::accelerations(o, &a, &above, &moving.bias_acceleration);
             free::store(qdd, joint, rates);
             self.acceleration[b] = Some(a);
             return;
         }
+        let mut a = motion_to_child(joint, kb, moving.state, &above) + moving.bias_acceleration;
         let (axis, angular, column, inverse_pivot, free) = match (joint.kind, projected) {
             (
                 JointKind::Revolute(axis),
