@@ -24,11 +24,14 @@ use super::super::spatial::{add3, cross, dot3, scale3, sub3, M3, V3};
 use crate::geometry::charts::{series, VERSINE_SERIES};
 use crate::geometry::{rot_mrp, rot_vector, vec3, RotationChart, Scalar};
 
-/// A free joint's orientation: its chart and its three coordinates in it.
+/// A free joint's orientation: its chart and its three coordinates in it, with what every map
+/// needs formed once: R(c) and, for the rotation vector, its coefficients.
 #[derive(Clone, Copy, Debug)]
 pub struct Orientation<S> {
     pub chart: RotationChart,
     pub c: V3<S>,
+    r: M3<S>,
+    k: [S; 5],
 }
 
 /// x + k₁ c × x + k₂ c × (c × x): the shape every map of the rotation vector takes.
@@ -120,14 +123,21 @@ fn vector_coefficients<S: Scalar>(t: S) -> [S; 5] {
 }
 
 impl<S: Scalar> Orientation<S> {
+    /// The orientation at the coordinates `c` of `chart`.
+    #[inline(always)]
+    pub fn new(chart: RotationChart, c: V3<S>) -> Self {
+        let v = vec3(c[0], c[1], c[2]);
+        let (r, k) = match chart {
+            RotationChart::Mrp => (rot_mrp(v).rows, [S::zero(); 5]),
+            RotationChart::Vector => (rot_vector(v).rows, vector_coefficients(dot3(c, c))),
+        };
+        Orientation { chart, c, r, k }
+    }
+
     /// R(c), by rows: the body's axes in the world by columns.
     #[inline(always)]
     pub fn rotation(&self) -> M3<S> {
-        let c = vec3(self.c[0], self.c[1], self.c[2]);
-        match self.chart {
-            RotationChart::Mrp => rot_mrp(c).rows,
-            RotationChart::Vector => rot_vector(c).rows,
-        }
+        self.r
     }
 
     /// ω_b = B ċ: the body's angular velocity from the coordinates' rates.
@@ -137,7 +147,7 @@ impl<S: Scalar> Orientation<S> {
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, rates, false), b_factor(c)),
             RotationChart::Vector => {
-                let [a, b, ..] = vector_coefficients(dot3(c, c));
+                let [a, b, ..] = self.k;
                 turned(c, rates, -a, b)
             }
         }
@@ -150,7 +160,7 @@ impl<S: Scalar> Orientation<S> {
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, n, true), b_factor(c)),
             RotationChart::Vector => {
-                let [a, b, ..] = vector_coefficients(dot3(c, c));
+                let [a, b, ..] = self.k;
                 turned(c, n, a, b)
             }
         }
@@ -163,7 +173,7 @@ impl<S: Scalar> Orientation<S> {
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, omega, true), S::from(0.25)),
             RotationChart::Vector => {
-                let [_, _, k, ..] = vector_coefficients(dot3(c, c));
+                let [_, _, k, ..] = self.k;
                 turned(c, omega, S::from(0.5), k)
             }
         }
@@ -176,7 +186,7 @@ impl<S: Scalar> Orientation<S> {
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, tau, false), S::from(0.25)),
             RotationChart::Vector => {
-                let [_, _, k, ..] = vector_coefficients(dot3(c, c));
+                let [_, _, k, ..] = self.k;
                 turned(c, tau, S::from(-0.5), k)
             }
         }
@@ -196,7 +206,7 @@ impl<S: Scalar> Orientation<S> {
                 )
             }
             RotationChart::Vector => {
-                let [_, b, _, a_prime, b_prime] = vector_coefficients(dot3(c, c));
+                let [_, b, _, a_prime, b_prime] = self.k;
                 let once = cross(c, rates);
                 let (a_dot, b_dot) = (a_prime * along * 2.0, b_prime * along * 2.0);
                 add3(

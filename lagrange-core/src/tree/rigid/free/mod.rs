@@ -56,10 +56,7 @@ pub(crate) fn orientation<S: Scalar, const N: usize>(
     q: &[S; N],
     at: usize,
 ) -> Orientation<S> {
-    Orientation {
-        chart,
-        c: [q[at], q[at + 1], q[at + 2]],
-    }
+    Orientation::new(chart, [q[at], q[at + 1], q[at + 2]])
 }
 
 /// Where entry `l` of the six (p, c) is among the coordinates: a ball joint has no p.
@@ -272,7 +269,7 @@ mod tests {
         let charts = [RotationChart::Mrp, RotationChart::Vector];
         charts
             .into_iter()
-            .flat_map(|chart| points.map(|c| Orientation { chart, c }))
+            .flat_map(|chart| points.map(|c| Orientation::new(chart, c)))
             .collect()
     }
 
@@ -318,10 +315,10 @@ mod tests {
     #[test]
     fn the_bias_is_the_joint_motions_derivative() {
         for o in orientations() {
-            let moving = Orientation {
-                chart: o.chart,
-                c: std::array::from_fn(|k| Dual64::new(o.c[k], RATES[3 + k])),
-            };
+            let moving = Orientation::new(
+                o.chart,
+                std::array::from_fn(|k| Dual64::new(o.c[k], RATES[3 + k])),
+            );
             let (v, _) = velocity(moving, RATES.map(Dual64::from));
             let (_, c) = velocity(o, RATES);
             close(&c.angular, &v.angular.map(|x| x.eps));
@@ -336,9 +333,8 @@ mod tests {
     #[test]
     fn the_series_meet_the_closed_forms() {
         let direction = [0.6, -0.48, 0.64];
-        let at = |theta2: f64| Orientation {
-            chart: RotationChart::Vector,
-            c: direction.map(|x| x * theta2.sqrt()),
+        let at = |theta2: f64| {
+            Orientation::new(RotationChart::Vector, direction.map(|x| x * theta2.sqrt()))
         };
         let (below, above) = (at(1e-2 * (1.0 - 1e-12)), at(1e-2 * (1.0 + 1e-12)));
         let omega = [0.3, 1.1, -0.7];
