@@ -142,11 +142,10 @@ pub(crate) fn velocity<S: Scalar>(o: Orientation<S>, q_dot: [S; 6]) -> (Motion<S
     (velocity, bias)
 }
 
-/// S⁻¹ m: the rates (ṗ, ċ) whose joint motion is m = (ω; v), ṗ = R v, ċ = B⁻¹ ω, with R = R(c)
-/// given.
+/// S⁻¹ m: the rates (ṗ, ċ) whose joint motion is m = (ω; v), ṗ = R v, ċ = B⁻¹ ω.
 #[inline(always)]
-pub(crate) fn rates_of<S: Scalar>(r: &M3<S>, o: Orientation<S>, m: &Motion<S>) -> [S; 6] {
-    six(rotate(r, m.linear), o.rates_of(m.angular))
+pub(crate) fn rates_of<S: Scalar>(o: Orientation<S>, m: &Motion<S>) -> [S; 6] {
+    six(rotate(&o.rotation(), m.linear), o.rates_of(m.angular))
 }
 
 /// S m for joint rates `rates` = (ṗ, ċ) (or accelerations): (B ċ ; Rᵀ ṗ).
@@ -226,9 +225,9 @@ pub(crate) fn pivot_acceleration<S: Scalar>(
 }
 
 /// q̈ of the joint from the root's acceleration a: S q̈ = a − X a₀ − Ṡ q̇, with X a₀ the ground's
-/// acceleration (the uniform field's) in the body's frame and Ṡ q̇ the joint's bias. R is formed
-/// once for X and S⁻¹: p̈ = R (a_v − c_v) − R Rᵀ a₀_v = R (a_v − c_v) − a₀_v (a₀ has no angular
-/// part), c̈ = B⁻¹ (a_ω − c_ω).
+/// acceleration (the uniform field's) in the body's frame and Ṡ q̇ the joint's bias:
+/// p̈ = R (a_v − c_v) − R Rᵀ a₀_v = R (a_v − c_v) − a₀_v (a₀ has no angular part),
+/// c̈ = B⁻¹ (a_ω − c_ω).
 #[inline(always)]
 pub(crate) fn accelerations<S: Scalar>(
     o: Orientation<S>,
@@ -240,7 +239,7 @@ pub(crate) fn accelerations<S: Scalar>(
         angular: sub3(a.angular, bias.angular),
         linear: sub3(a.linear, bias.linear),
     };
-    let mut rates = rates_of(&o.rotation(), o, &joint);
+    let mut rates = rates_of(o, &joint);
     for k in 0..3 {
         rates[k] -= ground.linear[k];
     }
@@ -301,7 +300,7 @@ mod tests {
             force: [1.0, -2.0, 0.5],
         };
         for o in orientations() {
-            close(&rates_of(&o.rotation(), o, &motion_of(o, RATES)), &RATES);
+            close(&rates_of(o, &motion_of(o, RATES)), &RATES);
             // Sᵀ (S⁻ᵀ τ) = τ.
             close(&forces_of(o, &force_of(o, tau)), &tau);
             // Power: (S q̇)·f = q̇·(Sᵀ f).
