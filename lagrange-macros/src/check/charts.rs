@@ -16,6 +16,17 @@ pub enum ChartKind {
     Mrp,
 }
 
+impl ChartKind {
+    /// The chart a function of the declarations names: `rot_vector` or `rot_mrp`.
+    pub fn named(function: &str) -> Option<ChartKind> {
+        match function {
+            "rot_vector" => Some(ChartKind::Vector),
+            "rot_mrp" => Some(ChartKind::Mrp),
+            _ => None,
+        }
+    }
+}
+
 /// A chart and the flat indices of its three coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Chart {
@@ -46,10 +57,8 @@ struct Charts<'c, 'm> {
 impl<'ast> Visit<'ast> for Charts<'_, '_> {
     fn visit_expr_call(&mut self, call: &'ast ExprCall) {
         syn::visit::visit_expr_call(self, call);
-        let kind = match called(&call.func).as_deref() {
-            Some("rot_vector") => ChartKind::Vector,
-            Some("rot_mrp") => ChartKind::Mrp,
-            _ => return,
+        let Some(kind) = called(&call.func).as_deref().and_then(ChartKind::named) else {
+            return;
         };
         let [argument] = call.args.iter().collect::<Vec<_>>()[..] else {
             return; // rustc reports the count.

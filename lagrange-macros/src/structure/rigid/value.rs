@@ -247,8 +247,7 @@ impl<'a> Reader<'a> {
                 Some(Value::Rotation(vec![Factor::Constant(quote!(rot3(#m)))]))
             }
             ("rot_axis", [axis, angle]) => rotation_about_axis(axis, angle),
-            ("rot_mrp", [parameters]) => super::free::chart(ChartKind::Mrp, parameters),
-            ("rot_vector", [vector]) => super::free::chart(ChartKind::Vector, vector),
+            ("rot_mrp" | "rot_vector", [c]) => super::free::chart(ChartKind::named(&name)?, c),
             ("spatial", [Value::Vector(position), Value::Rotation(rotation)]) => {
                 Some(Value::Pose {
                     position: position.clone(),
