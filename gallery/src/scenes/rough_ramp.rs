@@ -21,6 +21,8 @@ use crate::Check;
 use lagrange::animation::Recorder;
 use lagrange::constraints::{constraint_forces, RowMode};
 use lagrange::prelude::*;
+use lagrange::Fixed;
+use rough_ramp::{Coords, RoughRamp, State};
 use std::path::Path;
 
 #[mechanism]
@@ -65,205 +67,36 @@ pub mod rough_ramp {
 
 const SCENE: &str = "block on a rough ramp";
 
-pub fn run(plots: &Path) -> Vec<Check> {
-    use rough_ramp::{Coords, RoughRamp, State};
-    let (g, alpha, h) = (9.81, 0.5f64, 1e-3); // tan α = 0.546
-    let (sn, cs) = alpha.sin_cos();
-    let along = |s: &State| (s.q.x * cs + s.q.y * sn, s.v.x * cs + s.v.y * sn);
-    let mut checks = Vec::new();
+// Gravity, the ramp's angle (tan α = 0.546) and the RK4 step of every run.
+const G: f64 = 9.81;
+const ALPHA: f64 = 0.5;
+const STEP: f64 = 1e-3;
+/// The speed up the ramp the block is sent with.
+const SENT_UP_SPEED: f64 = 2.0;
 
-    // Sliding down from rest, tan α > μₛ.
-    let sys = RoughRamp {
+pub fn run(plots: &Path) -> Vec<Check> {
+    // tan α > μₛ: the block cannot rest on this ramp.
+    let slippery = RoughRamp {
         m: 2.0,
-        alpha,
-        g,
+        alpha: ALPHA,
+        g: G,
         mu_k: 0.3,
         mu_s: 0.4,
     };
-    let mut s = State::at_rest(Coords { x: 0.0, y: 0.0 });
-    let mut stepper = Stepper::new(&sys, Rk4::with_step(h), &s).expect("stepper");
-    let starts_sliding = stepper.contacts().mode().rows == [RowMode::Active, RowMode::SlipNegative];
-    for _ in 0..1000 {
-        stepper.step(f64::INFINITY).expect("step");
-        s = stepper.state();
-    }
-    let a = g * (sn - sys.mu_k * cs);
-    let (d, _) = along(&s);
-    let f = constraint_forces(&sys, &s).expect("forces");
-    let normal = sys.m * g * cs;
-    // Constant acceleration: RK4 is exact, round-off over 1000 steps only.
-    checks.push(Check::new(
-        SCENE,
-        format!(
-            "from rest, μₛ < tan α: distance down the ramp at t = {:.0} s",
-            s.t
-        ),
-        -d,
-        0.5 * a * s.t * s.t,
-        1e-12,
-    ));
-    // λ from the KKT solve against the closed forms at the same state: round-off.
-    checks.push(Check::new(
-        SCENE,
-        "sliding: normal force λ = m g cos α",
-        f.multipliers[0],
-        normal,
-        1e-12,
-    ));
-    checks.push(Check::new(
-        SCENE,
-        "sliding: friction force up the ramp μₖ m g cos α",
-        f.multipliers[1],
-        sys.mu_k * normal,
-        1e-12,
-    ));
-    checks.push(Check::new(
-        SCENE,
-        "sliding from rest: starts sliding and never changes mode (1 = yes)",
-        f64::from(u8::from(
-            starts_sliding && stepper.mode_changes().is_empty(),
-        )),
-        1.0,
-        0.0,
-    ));
-
-    // At rest, tan α ≤ μₛ.
-    let sticky = RoughRamp {
+    let mut checks = slides_from_rest(&slippery);
+    checks.extend(rests(&RoughRamp {
         mu_k: 0.5,
         mu_s: 0.6,
-        ..sys
-    };
-    let mut s = State::at_rest(Coords { x: 0.0, y: 0.0 });
-    let mut stepper = Stepper::new(&sticky, Rk4::with_step(h), &s).expect("stepper");
-    let starts_stuck = stepper.contacts().mode().rows == [RowMode::Active, RowMode::Stick];
-    for _ in 0..2000 {
-        stepper.step(f64::INFINITY).expect("step");
-        s = stepper.state();
-    }
-    // Sticking is enforced as a velocity constraint: the block does not move, to round-off.
-    checks.push(Check::new(
-        SCENE,
-        "from rest, tan α ≤ μₛ: |r| after 2 s (m)",
-        s.q.x.hypot(s.q.y),
-        0.0,
-        1e-15,
-    ));
-    checks.push(Check::new(
-        SCENE,
-        "from rest, tan α ≤ μₛ: stuck, no mode change (1 = yes)",
-        f64::from(u8::from(starts_stuck && stepper.mode_changes().is_empty())),
-        1.0,
-        0.0,
-    ));
-
-    // Sent up the ramp: stops, then sticks or slides back.
-    let u = 2.0;
+        ..slippery
+    }));
     let mut series = Vec::new();
     for (mu_k, mu_s, sticks) in [(0.5, 0.6, true), (0.2, 0.3, false)] {
-        let sys = RoughRamp { mu_k, mu_s, ..sys };
-        let label = if sticks { "sticks" } else { "slides back" };
-        let mut s = State::new(
-            0.0,
-            Coords { x: 0.0, y: 0.0 },
-            Coords {
-                x: u * cs,
-                y: u * sn,
-            },
-        );
-        let mut stepper = Stepper::new(&sys, Rk4::with_step(h), &s).expect("stepper");
-        let starts_up = stepper.contacts().mode().rows == [RowMode::Active, RowMode::SlipPositive];
-        let up = g * (sn + mu_k * cs);
-        let down = g * (sn - mu_k * cs);
-        let (t_stop, d_stop) = (u / up, u * u / (2.0 * up));
-        let exact = |t: f64| {
-            if t <= t_stop {
-                u * t - 0.5 * up * t * t
-            } else if sticks {
-                d_stop
-            } else {
-                d_stop - 0.5 * down * (t - t_stop).powi(2)
-            }
+        let sys = RoughRamp {
+            mu_k,
+            mu_s,
+            ..slippery
         };
-        let mut worst = 0.0f64;
-        let (mut trace, mut closed) = (vec![(0.0, 0.0)], vec![(0.0, 0.0)]);
-        let mut film = Recorder::new(&sys).title(format!("{SCENE}: sent up, {label}"));
-        film.push(&sys, &s).expect("a finite state");
-        for step in 1..=3000 {
-            stepper.step(f64::INFINITY).expect("step");
-            s = stepper.state();
-            film.push(&sys, &s).expect("a finite state");
-            let (d, _) = along(&s);
-            worst = worst.max((d - exact(s.t)).abs());
-            if step % 10 == 0 {
-                trace.push((s.t, d));
-                closed.push((s.t, exact(s.t)));
-            }
-        }
-        if !sticks {
-            // The ramp, over the stretch the block covers.
-            let (lo, hi) = trace
-                .iter()
-                .fold((0.0f64, 0.0f64), |(lo, hi), &(_, d)| (lo.min(d), hi.max(d)));
-            outline(
-                &mut film,
-                "ramp",
-                &[&[lo * cs, lo * sn], &[hi * cs, hi * sn]],
-                false,
-            )
-            .expect("the ramp");
-            let _ = film.write_html(plots.join("rough_ramp.html"));
-        }
-        let events = stepper.mode_changes();
-        println!(
-            "{SCENE} (sent up, μₛ = {mu_s}, {label}): {} mode change(s) in 3000 steps, stop at t = {:.15} s \
-             (exact {t_stop:.15}), |d − exact| ≤ {worst:.1e} m",
-            events.len(),
-            events.first().map_or(f64::NAN, |e| e.t)
-        );
-        let after = if sticks {
-            RowMode::Stick
-        } else {
-            RowMode::SlipNegative
-        };
-        // The count of mode changes is the chattering test: one stop, decided once.
-        checks.push(Check::new(
-            SCENE,
-            format!("sent up, μₛ = {mu_s} ({label}): mode changes in 3 s"),
-            events.len() as f64,
-            1.0,
-            0.0,
-        ));
-        checks.push(Check::new(
-            SCENE,
-            format!("sent up, μₛ = {mu_s}: slip up, then {after:?} (1 = yes)"),
-            f64::from(u8::from(
-                starts_up && events.first().is_some_and(|e| e.to == after),
-            )),
-            1.0,
-            0.0,
-        ));
-        // The event is located to 1e-13 relative on the step length, and the motion before it is
-        // quadratic in t, which RK4 integrates exactly.
-        checks.push(Check::new(
-            SCENE,
-            format!("sent up, μₛ = {mu_s}: stop time u / (g(sin α + μₖ cos α))"),
-            events.first().map_or(f64::NAN, |e| e.t),
-            t_stop,
-            1e-12,
-        ));
-        // Piecewise quadratic motion, exact for RK4 on each piece: round-off only.
-        checks.push(Check::new(
-            SCENE,
-            format!("sent up, μₛ = {mu_s}: max |d − closed form| over 3 s (m)"),
-            worst,
-            0.0,
-            1e-11,
-        ));
-        series.push(Series::new(
-            format!("μₛ = {mu_s}, simulated ({label})"),
-            trace,
-        ));
-        series.push(Series::new(format!("μₛ = {mu_s}, closed form"), closed));
+        checks.extend(sent_up(&sys, sticks, plots, &mut series));
     }
     let _ = plot::lines(
         &plots.join("rough_ramp.svg"),
@@ -273,4 +106,258 @@ pub fn run(plots: &Path) -> Vec<Check> {
         &series,
     );
     checks
+}
+
+/// The block's distance up the ramp, t̂·r.
+fn distance_up(s: &State) -> f64 {
+    let (sn, cs) = ALPHA.sin_cos();
+    s.q.x * cs + s.q.y * sn
+}
+
+/// A stepper for `sys` from `s0`, with the RK4 step of every run.
+fn stepper(sys: &RoughRamp, s0: State) -> Stepper<'_, RoughRamp, Fixed<Rk4>, 2> {
+    Stepper::new(sys, Rk4::with_step(STEP), &s0).expect("stepper")
+}
+
+/// Takes `steps` steps, calling `observe` with the step's number (from 1) and the state it reaches;
+/// returns the last state.
+fn advance(
+    stepper: &mut Stepper<'_, RoughRamp, Fixed<Rk4>, 2>,
+    steps: usize,
+    mut observe: impl FnMut(usize, &State),
+) -> State {
+    let mut s = stepper.state();
+    for step in 1..=steps {
+        stepper.step(f64::INFINITY).expect("step");
+        s = stepper.state();
+        observe(step, &s);
+    }
+    s
+}
+
+/// Released from rest with tan α > μₛ: slides down at a = g (sin α − μₖ cos α), N = m g cos α.
+fn slides_from_rest(sys: &RoughRamp) -> Vec<Check> {
+    let (sn, cs) = ALPHA.sin_cos();
+    let mut stepper = stepper(sys, State::at_rest(Coords { x: 0.0, y: 0.0 }));
+    let starts_sliding = stepper.contacts().mode().rows == [RowMode::Active, RowMode::SlipNegative];
+    let s = advance(&mut stepper, 1000, |_, _| {});
+    let a = G * (sn - sys.mu_k * cs);
+    let d = distance_up(&s);
+    let f = constraint_forces(sys, &s).expect("forces");
+    let normal = sys.m * G * cs;
+    vec![
+        // Constant acceleration: RK4 is exact, round-off over 1000 steps only.
+        Check::new(
+            SCENE,
+            format!(
+                "from rest, μₛ < tan α: distance down the ramp at t = {:.0} s",
+                s.t
+            ),
+            -d,
+            0.5 * a * s.t * s.t,
+            1e-12,
+        ),
+        // λ from the KKT solve against the closed forms at the same state: round-off.
+        Check::new(
+            SCENE,
+            "sliding: normal force λ = m g cos α",
+            f.multipliers[0],
+            normal,
+            1e-12,
+        ),
+        Check::new(
+            SCENE,
+            "sliding: friction force up the ramp μₖ m g cos α",
+            f.multipliers[1],
+            sys.mu_k * normal,
+            1e-12,
+        ),
+        Check::new(
+            SCENE,
+            "sliding from rest: starts sliding and never changes mode (1 = yes)",
+            f64::from(u8::from(
+                starts_sliding && stepper.mode_changes().is_empty(),
+            )),
+            1.0,
+            0.0,
+        ),
+    ]
+}
+
+/// Released from rest with tan α ≤ μₛ: static friction holds the block.
+fn rests(sys: &RoughRamp) -> Vec<Check> {
+    let mut stepper = stepper(sys, State::at_rest(Coords { x: 0.0, y: 0.0 }));
+    let starts_stuck = stepper.contacts().mode().rows == [RowMode::Active, RowMode::Stick];
+    let s = advance(&mut stepper, 2000, |_, _| {});
+    vec![
+        // Sticking is enforced as a velocity constraint: the block does not move, to round-off.
+        Check::new(
+            SCENE,
+            "from rest, tan α ≤ μₛ: |r| after 2 s (m)",
+            s.q.x.hypot(s.q.y),
+            0.0,
+            1e-15,
+        ),
+        Check::new(
+            SCENE,
+            "from rest, tan α ≤ μₛ: stuck, no mode change (1 = yes)",
+            f64::from(u8::from(starts_stuck && stepper.mode_changes().is_empty())),
+            1.0,
+            0.0,
+        ),
+    ]
+}
+
+/// The closed-form distance up the ramp after sending the block up at speed u: decelerating at
+/// g (sin α + μₖ cos α) until t_s, then held (`sticks`) or sliding back at g (sin α − μₖ cos α).
+/// Returns t_s and d(t).
+fn sent_up_closed_form(sys: &RoughRamp, sticks: bool) -> (f64, impl Fn(f64) -> f64) {
+    let (sn, cs) = ALPHA.sin_cos();
+    let u = SENT_UP_SPEED;
+    let up = G * (sn + sys.mu_k * cs);
+    let down = G * (sn - sys.mu_k * cs);
+    let (t_stop, d_stop) = (u / up, u * u / (2.0 * up));
+    let distance = move |t: f64| {
+        if t <= t_stop {
+            u * t - 0.5 * up * t * t
+        } else if sticks {
+            d_stop
+        } else {
+            d_stop - 0.5 * down * (t - t_stop).powi(2)
+        }
+    };
+    (t_stop, distance)
+}
+
+/// What a run sent up the ramp measured.
+struct SentUp {
+    starts_up: bool,
+    mode_changes: usize,
+    /// The first mode change: its time (NaN if none) and the mode it enters.
+    stop: f64,
+    stops_into: Option<RowMode>,
+    /// Distance up the ramp every 10 steps, simulated and closed form.
+    trace: Vec<(f64, f64)>,
+    closed: Vec<(f64, f64)>,
+    /// max |d − closed form| over every step.
+    worst: f64,
+}
+
+/// Sends the block up the ramp for 3 s against the closed form; the sliding-back run is filmed.
+fn simulate_sent_up(sys: &RoughRamp, sticks: bool, plots: &Path) -> SentUp {
+    let (sn, cs) = ALPHA.sin_cos();
+    let u = SENT_UP_SPEED;
+    let label = if sticks { "sticks" } else { "slides back" };
+    let s0 = State::new(
+        0.0,
+        Coords { x: 0.0, y: 0.0 },
+        Coords {
+            x: u * cs,
+            y: u * sn,
+        },
+    );
+    let mut stepper = stepper(sys, s0);
+    let starts_up = stepper.contacts().mode().rows == [RowMode::Active, RowMode::SlipPositive];
+    let (_, exact) = sent_up_closed_form(sys, sticks);
+    let mut worst = 0.0f64;
+    let (mut trace, mut closed) = (vec![(0.0, 0.0)], vec![(0.0, 0.0)]);
+    let mut film = Recorder::new(sys).title(format!("{SCENE}: sent up, {label}"));
+    film.push(sys, &s0).expect("a finite state");
+    advance(&mut stepper, 3000, |step, s| {
+        film.push(sys, s).expect("a finite state");
+        let d = distance_up(s);
+        worst = worst.max((d - exact(s.t)).abs());
+        if step % 10 == 0 {
+            trace.push((s.t, d));
+            closed.push((s.t, exact(s.t)));
+        }
+    });
+    if !sticks {
+        write_film(&mut film, &trace, plots);
+    }
+    let events = stepper.mode_changes();
+    SentUp {
+        starts_up,
+        mode_changes: events.len(),
+        stop: events.first().map_or(f64::NAN, |e| e.t),
+        stops_into: events.first().map(|e| e.to),
+        trace,
+        closed,
+        worst,
+    }
+}
+
+/// Sent up the ramp: stops once, then sticks (`sticks`) or slides back. Adds the simulated and
+/// closed-form distances to `series`.
+fn sent_up(sys: &RoughRamp, sticks: bool, plots: &Path, series: &mut Vec<Series>) -> Vec<Check> {
+    let mu_s = sys.mu_s;
+    let label = if sticks { "sticks" } else { "slides back" };
+    let (t_stop, _) = sent_up_closed_form(sys, sticks);
+    let run = simulate_sent_up(sys, sticks, plots);
+    let (stop, worst) = (run.stop, run.worst);
+    println!(
+        "{SCENE} (sent up, μₛ = {mu_s}, {label}): {} mode change(s) in 3000 steps, stop at t = {stop:.15} s \
+         (exact {t_stop:.15}), |d − exact| ≤ {worst:.1e} m",
+        run.mode_changes,
+    );
+    let after = if sticks {
+        RowMode::Stick
+    } else {
+        RowMode::SlipNegative
+    };
+    series.push(Series::new(
+        format!("μₛ = {mu_s}, simulated ({label})"),
+        run.trace,
+    ));
+    series.push(Series::new(format!("μₛ = {mu_s}, closed form"), run.closed));
+    vec![
+        // The count of mode changes is the chattering test: one stop, decided once.
+        Check::new(
+            SCENE,
+            format!("sent up, μₛ = {mu_s} ({label}): mode changes in 3 s"),
+            run.mode_changes as f64,
+            1.0,
+            0.0,
+        ),
+        Check::new(
+            SCENE,
+            format!("sent up, μₛ = {mu_s}: slip up, then {after:?} (1 = yes)"),
+            f64::from(u8::from(run.starts_up && run.stops_into == Some(after))),
+            1.0,
+            0.0,
+        ),
+        // The event is located to 1e-13 relative on the step length, and the motion before it is
+        // quadratic in t, which RK4 integrates exactly.
+        Check::new(
+            SCENE,
+            format!("sent up, μₛ = {mu_s}: stop time u / (g(sin α + μₖ cos α))"),
+            stop,
+            t_stop,
+            1e-12,
+        ),
+        // Piecewise quadratic motion, exact for RK4 on each piece: round-off only.
+        Check::new(
+            SCENE,
+            format!("sent up, μₛ = {mu_s}: max |d − closed form| over 3 s (m)"),
+            worst,
+            0.0,
+            1e-11,
+        ),
+    ]
+}
+
+/// Draws the ramp over the stretch the block covers (`trace`: (t, distance up)) and writes the film.
+fn write_film(film: &mut Recorder<RoughRamp, 2>, trace: &[(f64, f64)], plots: &Path) {
+    let (sn, cs) = ALPHA.sin_cos();
+    let (lo, hi) = trace
+        .iter()
+        .fold((0.0f64, 0.0f64), |(lo, hi), &(_, d)| (lo.min(d), hi.max(d)));
+    outline(
+        film,
+        "ramp",
+        &[&[lo * cs, lo * sn], &[hi * cs, hi * sn]],
+        false,
+    )
+    .expect("the ramp");
+    let _ = film.write_html(plots.join("rough_ramp.html"));
 }
