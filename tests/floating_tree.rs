@@ -14,7 +14,7 @@
 
 use lagrange::geometry::RotationChart;
 use lagrange::prelude::*;
-use lagrange::tree::rigid::{JointKind, RigidTree};
+use lagrange::tree::rigid::{JointKind, RigidTree, Velocities};
 
 #[path = "common/tree_vs_dense.rs"]
 mod tree_vs_dense;
@@ -163,7 +163,10 @@ const MRP_NORMS: [f64; 4] = [0.5, 0.99, 1.0, 1.01];
 #[test]
 fn a_free_base_with_a_hinge_and_a_slide_takes_the_tree_pass_and_agrees_with_the_dense_one() {
     let joints = <floater::Floater as RigidTree<8, 3>>::JOINTS;
-    assert_eq!(joints[0].kind, JointKind::Free(RotationChart::Mrp));
+    assert_eq!(
+        joints[0].kind,
+        JointKind::Free(RotationChart::Mrp, Velocities::ChartRates)
+    );
     assert_eq!((joints[0].parent, joints[0].coordinate), (None, 0));
     assert!(!joints[0].rotated && joints[0].offset == [false; 3]);
     assert_eq!(joints[1].parent, Some(0));
@@ -181,7 +184,10 @@ fn a_free_base_with_a_hinge_and_a_slide_takes_the_tree_pass_and_agrees_with_the_
 #[test]
 fn a_free_base_in_the_rotation_vector_takes_the_tree_pass_and_agrees_with_the_dense_one() {
     let joints = <vector_floater::Floater as RigidTree<8, 3>>::JOINTS;
-    assert_eq!(joints[0].kind, JointKind::Free(RotationChart::Vector));
+    assert_eq!(
+        joints[0].kind,
+        JointKind::Free(RotationChart::Vector, Velocities::ChartRates)
+    );
     let pi = std::f64::consts::PI;
     let states = floating_states::<8>(&[0.05, 2.2, pi - 1e-3, pi, pi + 0.05]);
     agrees_with_dense_at::<_, _, 8, 36>(&VECTOR_FLOATER, &VECTOR_FLOATER, &states, TOLERANCE);
@@ -192,7 +198,10 @@ fn a_free_base_in_the_rotation_vector_takes_the_tree_pass_and_agrees_with_the_de
 #[test]
 fn the_floating_quadruped_takes_the_tree_pass_and_agrees_with_the_dense_one() {
     let joints = <quadruped::Quadruped as RigidTree<18, 13>>::JOINTS;
-    assert_eq!(joints[0].kind, JointKind::Free(RotationChart::Mrp));
+    assert_eq!(
+        joints[0].kind,
+        JointKind::Free(RotationChart::Mrp, Velocities::ChartRates)
+    );
     assert_eq!((joints[0].parent, joints[0].coordinate), (None, 0));
     assert!(joints[1..].iter().all(|j| j.parent.is_some()));
     let sys = quadruped::Quadruped::default();
@@ -230,7 +239,10 @@ fn turning_states<const N: usize>(norms: &[f64]) -> Vec<([f64; N], [f64; N])> {
 #[test]
 fn a_top_on_a_ball_joint_takes_the_tree_pass_and_agrees_with_the_dense_one() {
     let joints = <mrp_top::Top as RigidTree<4, 2>>::JOINTS;
-    assert_eq!(joints[0].kind, JointKind::Ball(RotationChart::Mrp));
+    assert_eq!(
+        joints[0].kind,
+        JointKind::Ball(RotationChart::Mrp, Velocities::ChartRates)
+    );
     assert_eq!((joints[0].parent, joints[0].coordinate), (None, 0));
     assert_eq!(joints[1].parent, Some(0));
     let states = turning_states::<4>(&MRP_NORMS);
@@ -239,11 +251,17 @@ fn a_top_on_a_ball_joint_takes_the_tree_pass_and_agrees_with_the_dense_one() {
     agrees_with_dense_at::<_, _, 4, 24>(&MRP_TOP, &handle, &states, TOLERANCE);
 
     let joints = <vector_top::Top as RigidTree<4, 2>>::JOINTS;
-    assert_eq!(joints[0].kind, JointKind::Ball(RotationChart::Vector));
+    assert_eq!(
+        joints[0].kind,
+        JointKind::Ball(RotationChart::Vector, Velocities::ChartRates)
+    );
     // The gallery's torque-free body, turning about its centre of mass, is one too.
     let tumbling =
         <lagrange_gallery::scenes::tumbling_body::tumbling::Tumbling as RigidTree<3, 1>>::JOINTS;
-    assert_eq!(tumbling[0].kind, JointKind::Ball(RotationChart::Vector));
+    assert_eq!(
+        tumbling[0].kind,
+        JointKind::Ball(RotationChart::Vector, Velocities::ChartRates)
+    );
     let pi = std::f64::consts::PI;
     let states = turning_states::<4>(&[0.05, 2.2, pi - 1e-3, pi, pi + 0.05]);
     agrees_with_dense_at::<_, _, 4, 24>(&VECTOR_TOP, &VECTOR_TOP, &states, TOLERANCE);

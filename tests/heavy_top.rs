@@ -13,7 +13,7 @@
 
 use lagrange::geometry::{chart_rates, RotationChart};
 use lagrange::prelude::*;
-use lagrange::tree::rigid::{JointKind, RigidTree};
+use lagrange::tree::rigid::{JointKind, RigidTree, Velocities};
 
 #[mechanism]
 pub mod top {
@@ -95,7 +95,10 @@ fn departures(h: f64, duration: f64) -> (f64, f64) {
 #[test]
 fn the_top_is_a_ball_joint() {
     let joints = <top::Top as RigidTree<3, 1>>::JOINTS;
-    assert_eq!(joints[0].kind, JointKind::Ball(RotationChart::Vector));
+    assert_eq!(
+        joints[0].kind,
+        JointKind::Ball(RotationChart::Vector, Velocities::ChartRates)
+    );
 }
 
 /// Over 5 s (Ω ≈ 1.28 rad/s: a turn of precession; ≈ 16 chart switches) the top keeps θ₀

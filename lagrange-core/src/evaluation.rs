@@ -157,6 +157,23 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     /// the dual-number passes of [`crate::dynamics`].
     const CLOSED_FORM: bool = false;
 
+    /// Whether some of the velocities v are not the coordinates' rates but quasi-velocities — the
+    /// angular velocity of a free or ball joint declared with `#[angular_velocity]`
+    /// ([`Velocities::AngularVelocity`](crate::tree::rigid::Velocities::AngularVelocity)) — so
+    /// that q̇ = G(q) v ([`position_rates_at`](Dynamics::position_rates_at)) and every method
+    /// below reads v and returns v̇, the generalized forces and momenta dual to v. `false` (the
+    /// default): q̇ = v. The methods that step momenta conjugate to q̇ refuse such a mechanism
+    /// ([`Error::UnsuitableMethod`]); the explicit Runge–Kutta methods step it.
+    const QUASI_VELOCITIES: bool = false;
+
+    /// q̇ = G(q) v: the coordinates' rates at velocities v (v itself, the default, unless
+    /// [`QUASI_VELOCITIES`](Dynamics::QUASI_VELOCITIES)), for any scalar.
+    #[inline(always)]
+    fn position_rates_at<S: Scalar>(&self, q: &[S; N], v: &[S; N]) -> [S; N] {
+        let _ = q;
+        *v
+    }
+
     /// Checks the parameters: finite, masses and inertias positive (what `Mechanism::validate`
     /// calls).
     fn check_parameters(&self) -> Result<()>;
@@ -392,6 +409,8 @@ pub trait Evaluate<const N: usize>: Sized {
     const CONSTRAINTS: Option<usize> = <Self::Model as Dynamics<N>>::CONSTRAINTS;
     /// Whether x does not depend on time (the model's).
     const SCLERONOMIC: bool = <Self::Model as Dynamics<N>>::SCLERONOMIC;
+    /// Whether some velocities are quasi-velocities, q̇ = G(q) v (the model's).
+    const QUASI_VELOCITIES: bool = <Self::Model as Dynamics<N>>::QUASI_VELOCITIES;
     /// Whether [`regular_accelerations_at`](Evaluate::regular_accelerations_at) checks a call in
     /// one branch: the closed form, and through a handle the prepared straight-line code.
     const ONE_BRANCH: bool = <Self::Model as Dynamics<N>>::CLOSED_FORM;
@@ -406,6 +425,11 @@ pub trait Evaluate<const N: usize>: Sized {
         Dynamics::check_parameters(self.model())
     }
 
+    /// [`Dynamics::position_rates_at`]: q̇ = G(q) v.
+    #[inline(always)]
+    fn position_rates_at<S: Scalar>(&self, q: &[S; N], v: &[S; N]) -> [S; N] {
+        Dynamics::position_rates_at(self.model(), q, v)
+    }
     /// [`Dynamics::equations_of_motion_at`].
     #[inline(always)]
     fn equations_of_motion_at<S: Scalar>(

@@ -62,7 +62,8 @@ use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 pub(crate) mod charts;
 mod rotations;
 pub use charts::{
-    body_angular_velocity, chart_rates, rot_mrp, rot_vector, rotation, switch_chart, RotationChart,
+    body_angular_velocity, chart_rates, rot_mrp, rot_vector, rotation, switch_chart,
+    switch_orientation, RotationChart,
 };
 pub use rotations::{rot3, rot_axis, rpy};
 

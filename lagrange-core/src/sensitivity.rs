@@ -193,7 +193,10 @@ where
         let acc = |t: f64, q: &[DualSVec<f64, P>; N], v: &[DualSVec<f64, P>; N]| {
             self.accelerations(mechanism, t, q, v)
         };
-        let (q1, v1) = I::advance_on_duals(t, (&q, &v), h, acc, stats)?;
+        let rates = |q: &[DualSVec<f64, P>; N], v: &[DualSVec<f64, P>; N]| {
+            mechanism.position_rates_at(q, v)
+        };
+        let (q1, v1) = I::advance_on_duals(t, (&q, &v), h, rates, acc, stats)?;
         (self.q, self.v) = (q1, v1);
         Ok((q1.map(|x| x.re), v1.map(|x| x.re)))
     }
@@ -209,7 +212,10 @@ where
         let acc = |t: f64, q: &[DualSVec<f64, P>; N], v: &[DualSVec<f64, P>; N]| {
             self.accelerations(mechanism, t, q, v)
         };
-        (self.q, self.v) = method.replay(t, (&q, &v), h, acc)?;
+        let rates = |q: &[DualSVec<f64, P>; N], v: &[DualSVec<f64, P>; N]| {
+            mechanism.position_rates_at(q, v)
+        };
+        (self.q, self.v) = method.replay(t, (&q, &v), h, rates, acc)?;
         Ok(())
     }
 

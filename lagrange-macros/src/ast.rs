@@ -52,6 +52,9 @@ const LAGRANGE_PRELUDE: &[&str] = &[
 pub struct Field {
     pub attrs: Vec<Attribute>,
     pub ident: Ident,
+    /// `#[angular_velocity]` on a coordinate (removed from `attrs`): its velocities are a free or
+    /// ball joint's angular velocity, not its rates (see `check::velocities`).
+    pub angular_velocity: Option<Attribute>,
     /// For an array coordinate or parameter: its length as written (a literal or a module `const`) and its
     /// value, once resolved.
     pub array: Option<(syn::Expr, usize)>,
@@ -510,9 +513,11 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, what: Fields) -> Vec<Field> {
                     }
                     _ => None,
                 };
+                let (attrs, angular_velocity) = angular_velocity_marker(cx, &f.attrs, what);
                 Field {
-                    attrs: f.attrs.clone(),
+                    attrs,
                     ident: f.ident.clone().unwrap(),
+                    angular_velocity,
                     array,
                 }
             })
@@ -530,6 +535,39 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, what: Fields) -> Vec<Field> {
             Vec::new()
         }
     }
+}
+
+/// A field's attributes without `#[angular_velocity]`, and that marker: on a coordinate, once and
+/// without arguments; anywhere else an error.
+fn angular_velocity_marker(
+    cx: &Ctxt,
+    attrs: &[Attribute],
+    what: Fields,
+) -> (Vec<Attribute>, Option<Attribute>) {
+    let (markers, rest): (Vec<Attribute>, Vec<Attribute>) = attrs
+        .iter()
+        .cloned()
+        .partition(|a| a.path().is_ident("angular_velocity"));
+    let mut markers = markers.into_iter();
+    let marker = markers.next();
+    for extra in markers {
+        cx.error_spanned_by(&extra, "`#[angular_velocity]` is written once");
+    }
+    match (&marker, what) {
+        (Some(m), Fields::Coordinates) if !matches!(m.meta, syn::Meta::Path(_)) => {
+            cx.error_spanned_by(m, "`#[angular_velocity]` takes no arguments");
+        }
+        (Some(m), Fields::Parameters | Fields::Inputs) => {
+            cx.error_spanned_by(
+                m,
+                "`#[angular_velocity]` marks generalized coordinates (the three of a free or \
+                 ball joint's rotation chart, in `Coords`)",
+            );
+            return (rest, None);
+        }
+        _ => {}
+    }
+    (rest, marker)
 }
 
 /// `#[cfg(..)]` and `#[cfg_attr(..)]` where the macro cannot honour them. `#[mechanism]` runs before

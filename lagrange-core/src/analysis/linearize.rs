@@ -16,6 +16,11 @@ use num_dual::DualSVec;
 ///     [ ∂q̈/∂q  ∂q̈/∂v ]     [ ∂q̈/∂q   ∂q̈/∂v ]          [ M⁻¹ ]
 /// ```
 ///
+/// — the top row [0, I] where the velocities are the coordinates' rates. Where some are
+/// quasi-velocities (a free or ball joint's angular velocity, `Dynamics::QUASI_VELOCITIES`),
+/// q̇ = G(q) v and the top row is [∂(G v)/∂q, G] ([`dqd_dq`](Linearization::dqd_dq),
+/// [`dqd_dv`](Linearization::dqd_dv)); the bottom row is then v̇'s, and M the mass matrix on v.
+///
 /// ẋ₀ = (v₀, q̈₀) is zero about an equilibrium at rest. A is 2N × 2N, which a fixed-size nalgebra
 /// type cannot spell on stable Rust (`SMatrix<f64, {2 * N}, {2 * N}>` needs `generic_const_exprs`),
 /// so the two non-trivial N × N blocks are stored and [`Linearization::a_matrix`] assembles a
@@ -44,7 +49,7 @@ pub struct Linearization<const N: usize> {
     pub t: f64,
     /// q₀.
     pub q: [f64; N],
-    /// v₀ = q̇₀.
+    /// v₀ (q̇₀ unless the velocities are quasi-velocities).
     pub v: [f64; N],
     /// q̈₀: the accelerations at the state (zero at an equilibrium).
     pub accelerations: [f64; N],
@@ -55,10 +60,16 @@ pub struct Linearization<const N: usize> {
     pub dqdd_dv: SMatrix<f64, N, N>,
     /// ∂q̈/∂u = M⁻¹: the lower block of B for generalized-force inputs.
     pub dqdd_du: SMatrix<f64, N, N>,
+    /// ∂q̇/∂q: the upper-left block of A (zero unless the velocities are quasi-velocities).
+    pub dqd_dq: SMatrix<f64, N, N>,
+    /// ∂q̇/∂v: the upper-right block of A (the identity unless the velocities are
+    /// quasi-velocities, then G(q₀)).
+    pub dqd_dv: SMatrix<f64, N, N>,
 }
 
 impl<const N: usize> Linearization<N> {
-    /// The four N × N blocks of A, row-major: `[[∂q̇/∂q, ∂q̇/∂v], [∂q̈/∂q, ∂q̈/∂v]]` = `[[0, I], [dqdd_dq, dqdd_dv]]`.
+    /// The four N × N blocks of A, row-major: `[[∂q̇/∂q, ∂q̇/∂v], [∂q̈/∂q, ∂q̈/∂v]]` =
+    /// `[[dqd_dq, dqd_dv], [dqdd_dq, dqdd_dv]]` (`[[0, I], …]` where the velocities are rates).
     ///
     /// ```
     /// use lagrange_core::analysis::linearize;
@@ -71,10 +82,7 @@ impl<const N: usize> Linearization<N> {
     /// # Ok::<(), lagrange_core::Error>(())
     /// ```
     pub fn blocks(&self) -> [[SMatrix<f64, N, N>; 2]; 2] {
-        [
-            [SMatrix::zeros(), SMatrix::identity()],
-            [self.dqdd_dq, self.dqdd_dv],
-        ]
+        [[self.dqd_dq, self.dqd_dv], [self.dqdd_dq, self.dqdd_dv]]
     }
 
     /// The full 2N × 2N matrix A of d/dt(δq, δv) = A (δq, δv), rows and columns ordered
@@ -93,9 +101,10 @@ impl<const N: usize> Linearization<N> {
     /// ```
     pub fn a_matrix(&self) -> DMatrix<f64> {
         let mut a = DMatrix::zeros(2 * N, 2 * N);
-        for i in 0..N {
-            a[(i, N + i)] = 1.0;
-        }
+        a.view_mut((0, 0), (N, N))
+            .copy_from(&to_dmatrix(&self.dqd_dq));
+        a.view_mut((0, N), (N, N))
+            .copy_from(&to_dmatrix(&self.dqd_dv));
         a.view_mut((N, 0), (N, N))
             .copy_from(&to_dmatrix(&self.dqdd_dq));
         a.view_mut((N, N), (N, N))
@@ -164,6 +173,7 @@ pub fn linearize<M: Mechanism<N>, const N: usize>(
         dqdd_dv.set_row(i, &super::gradient(&by_v[i]).transpose());
     }
     let accelerations: [f64; N] = std::array::from_fn(|i| by_q[i].re);
+    let (dqd_dq, dqd_dv) = position_rate_jacobians(mechanism, &q, &v);
 
     // ∂q̈/∂u = M⁻¹, column by column from the Cholesky factor.
     let mass_matrix = mechanism.equations_of_motion_at(t, &q, &v).mass_matrix;
@@ -178,6 +188,8 @@ pub fn linearize<M: Mechanism<N>, const N: usize>(
         .iter()
         .chain(dqdd_dv.iter())
         .chain(dqdd_du.iter())
+        .chain(dqd_dq.iter())
+        .chain(dqd_dv.iter())
         .chain(accelerations.iter())
         .all(|x| x.is_finite());
     if !finite {
@@ -194,7 +206,30 @@ pub fn linearize<M: Mechanism<N>, const N: usize>(
         dqdd_dq,
         dqdd_dv,
         dqdd_du,
+        dqd_dq,
+        dqd_dv,
     })
+}
+
+/// (∂q̇/∂q, ∂q̇/∂v) of q̇ = G(q) v at (q, v): (0, I) where the velocities are the rates, else two
+/// dual passes through `Dynamics::position_rates_at`.
+fn position_rate_jacobians<M: Mechanism<N>, const N: usize>(
+    mechanism: &M,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+    if !M::QUASI_VELOCITIES {
+        return (SMatrix::zeros(), SMatrix::identity());
+    }
+    let seeded = |x: &[f64; N]| -> [DualSVec<f64, N>; N] {
+        std::array::from_fn(|j| DualSVec::from_re(x[j]).derivative(j))
+    };
+    let plain = |x: &[f64; N]| x.map(DualSVec::<f64, N>::from_re);
+    let by_q = mechanism.position_rates_at(&seeded(q), &plain(v));
+    let by_v = mechanism.position_rates_at(&plain(q), &seeded(v));
+    let rows =
+        |x: [DualSVec<f64, N>; N]| SMatrix::<f64, N, N>::from_fn(|i, j| super::gradient(&x[i])[j]);
+    (rows(by_q), rows(by_v))
 }
 
 /// The linearization of a mechanism driven by its declared inputs `u₀` about a state: A at the

@@ -185,6 +185,28 @@ pub fn switch_chart<S: Scalar, const N: usize>(
     true
 }
 
+/// [`switch_chart`] for coordinates whose velocities are not their rates but the body's angular
+/// velocity ω_b (a free or ball joint with
+/// [`Velocities::AngularVelocity`](crate::tree::rigid::Velocities::AngularVelocity)): the
+/// coordinates move to the equivalent point, the velocities stay (ω_b is the rotation's, not the
+/// chart's).
+///
+/// ```
+/// use lagrange_core::geometry::{switch_orientation, RotationChart};
+/// let mut q = [0.0, 1.2, 0.5, 0.0];
+/// assert!(switch_orientation(RotationChart::Mrp, [1, 2, 3], &mut q));
+/// // The shadow set: −σ/|σ|².
+/// assert!((q[1] + 1.2 / 1.69).abs() < 1e-15 && (q[2] + 0.5 / 1.69).abs() < 1e-15);
+/// ```
+pub fn switch_orientation<S: Scalar, const N: usize>(
+    chart: RotationChart,
+    at: [usize; 3],
+    q: &mut [S; N],
+) -> bool {
+    let mut rates = [S::zero(); N];
+    switch_chart(chart, at, q, &mut rates)
+}
+
 /// The rotation a chart's coordinates give.
 pub fn rotation<D: Scalar>(chart: RotationChart, coordinates: Vec3<D>) -> Rot3<D> {
     match chart {

@@ -232,11 +232,23 @@ struct InMode<'m, M: Prepare, X> {
     contacts: X,
 }
 
-impl<M: Prepare, X: ContactModel<M, N>, const N: usize> AccelerationField<N> for InMode<'_, M, X> {
+impl<M: Dynamics<N>, X: ContactModel<M, N>, const N: usize> AccelerationField<N>
+    for InMode<'_, M, X>
+{
     #[inline]
     fn accelerations(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<[f64; N]> {
         self.contacts
             .accelerations(self.model, self.constants, t, q, v)
+    }
+
+    #[inline(always)]
+    fn position_rates(&self, q: &[f64; N], v: &[f64; N]) -> [f64; N] {
+        Dynamics::position_rates_at(self.model, q, v)
+    }
+
+    #[inline(always)]
+    fn quasi_velocities(&self) -> bool {
+        M::QUASI_VELOCITIES
     }
 
     fn jacobians(

@@ -6,11 +6,13 @@ use super::Stats;
 use crate::error::{Error, Result};
 
 /// The starting step of an embedded pair of order `order` on the accelerations `acc` (HNW I
-/// §II.4, "Starting step size"; Hairer's HINIT): one extra evaluation of q̈.
+/// §II.4, "Starting step size"; Hairer's HINIT), with q̇ = `rates` at the start: one extra
+/// evaluation of v̇.
 pub(crate) fn initial_step_on<const N: usize>(
     acc: impl FnOnce(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
     st: &Dopri5,
     (t, q, v, a): (f64, &[f64; N], &[f64; N], &[f64; N]),
+    rates: &[f64; N],
     order: i32,
     stats: &mut Stats,
 ) -> f64 {
@@ -18,7 +20,7 @@ pub(crate) fn initial_step_on<const N: usize>(
     for i in 0..N {
         let sq = st.atol + st.rtol * q[i].abs();
         let sv = st.atol + st.rtol * v[i].abs();
-        dnf += (v[i] / sq).powi(2) + (a[i] / sv).powi(2);
+        dnf += (rates[i] / sq).powi(2) + (a[i] / sv).powi(2);
         dny += (q[i] / sq).powi(2) + (v[i] / sv).powi(2);
     }
     let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
@@ -27,7 +29,7 @@ pub(crate) fn initial_step_on<const N: usize>(
         (dny / dnf).sqrt() * 0.01
     };
     h = h.min(st.h_max);
-    let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * v[i]);
+    let q1: [f64; N] = std::array::from_fn(|i| q[i] + h * rates[i]);
     let v1: [f64; N] = std::array::from_fn(|i| v[i] + h * a[i]);
     stats.evaluations += 1;
     let Ok(a1) = acc(t + h, &q1, &v1) else {

@@ -35,8 +35,9 @@ impl<const N: usize> DenseOutput<N> {
         d
     }
 
-    /// The cubic Hermite interpolant over [t₀, t₀ + h] of (q, v) with derivatives (v, q̈) at both
-    /// ends (`start` and `end` are (q, v, q̈)): order 3 (HNW I §II.6, (6.7)), written over `self` in
+    /// The cubic Hermite interpolant over [t₀, t₀ + h] of (q, v) with derivatives (q̇, v̇) at both
+    /// ends (`start` and `end` are (q, v, v̇), `rates` q̇ = G(q) v at both, v itself unless the
+    /// velocities are quasi-velocities): order 3 (HNW I §II.6, (6.7)), written over `self` in
     /// place (the rows it does not use are left as they are): what an integrator that keeps its
     /// dense output does after every step.
     #[inline]
@@ -46,17 +47,18 @@ impl<const N: usize> DenseOutput<N> {
         h: f64,
         start: (&[f64; N], &[f64; N], &[f64; N]),
         end: (&[f64; N], &[f64; N], &[f64; N]),
+        (r0, r1): (&[f64; N], &[f64; N]),
     ) {
-        hermite_rows(&mut self.q, h, start.0, end.0, start.1, end.1);
+        hermite_rows(&mut self.q, h, start.0, end.0, r0, r1);
         hermite_rows(&mut self.v, h, start.1, end.1, start.2, end.2);
         self.q[4] = [0.0; N];
         self.v[4] = [0.0; N];
         (self.t0, self.h, self.terms) = (t0, h, 5);
     }
 
-    /// Without q̈ at the ends: the cubic Hermite interpolant of q (from q and q̇ at both ends) and
-    /// the straight line between the two q̇ — what a fixed-step solver without dense output keeps,
-    /// written over `self` in place.
+    /// Without v̇ at the ends: the cubic Hermite interpolant of q (from q and q̇ = `rates` at both
+    /// ends) and the straight line between the two v — what a fixed-step solver without dense
+    /// output keeps, written over `self` in place.
     #[inline]
     pub(crate) fn set_hermite_positions(
         &mut self,
@@ -64,8 +66,9 @@ impl<const N: usize> DenseOutput<N> {
         h: f64,
         (q0, v0): (&[f64; N], &[f64; N]),
         (q1, v1): (&[f64; N], &[f64; N]),
+        (r0, r1): (&[f64; N], &[f64; N]),
     ) {
-        hermite_rows(&mut self.q, h, q0, q1, v0, v1);
+        hermite_rows(&mut self.q, h, q0, q1, r0, r1);
         for i in 0..N {
             self.v[0][i] = v0[i];
             self.v[1][i] = v1[i] - v0[i];

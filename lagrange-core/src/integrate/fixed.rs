@@ -132,16 +132,22 @@ where
     m.project(t1, &mut q1, &mut v1)?;
     check_state(&M::Coords::NAMES, t1, &q1, &v1)?;
     let start = (&s.q, &s.v);
+    let rates = (
+        m.position_rates_at(&s.q, &s.v),
+        m.position_rates_at(&q1, &v1),
+    );
+    let rates = (&rates.0, &rates.1);
     let a1 = if s.method.dense {
         let a1 = m
             .accelerations_at(t1, &q1, &v1)
             .map_err(|e| diagnose(m, t1, &q1, &v1, e))?;
         stats.evaluations += 1;
-        s.dense
-            .set_hermite(s.t, h, (start.0, start.1, &s.a), (&q1, &v1, &a1));
+        let (start, end) = ((start.0, start.1, &s.a), (&q1, &v1, &a1));
+        s.dense.set_hermite(s.t, h, start, end, rates);
         a1
     } else {
-        s.dense.set_hermite_positions(s.t, h, start, (&q1, &v1));
+        s.dense
+            .set_hermite_positions(s.t, h, start, (&q1, &v1), rates);
         s.a
     };
     // The dense output stays in the chart the step was taken in; the next step starts in the
@@ -186,8 +192,13 @@ where
         .accelerations(model, constants, t1, &q1, &v1)
         .unwrap_or([f64::NAN; N]);
     stats.evaluations += 1;
+    let rates = (
+        m.position_rates_at(&s.q, &s.v),
+        m.position_rates_at(&q1, &v1),
+    );
+    let (start, end) = ((&s.q, &s.v, &s.a), (&q1, &v1, &a1));
     s.dense
-        .set_hermite(s.t, h, (&s.q, &s.v, &s.a), (&q1, &v1, &a1));
+        .set_hermite(s.t, h, start, end, (&rates.0, &rates.1));
     let (mut q1, mut v1) = (q1, v1);
     let a1 = if m.switch_charts(&mut q1, &mut v1) {
         stats.evaluations += 1;

@@ -278,18 +278,20 @@ pub trait Integrator: Sized {
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N])>;
 
-    /// One step of h from (t, q, q̇) on any scalar (dual numbers carrying sensitivities) with the
-    /// accelerations `acc`, adding its cost to `stats`: the same operations as
-    /// [`advance`](Self::advance) in the same order, so the real parts are the `f64` step's.
-    /// [`Error::UnsuitableMethod`] unless [`STEPS_ON_DUALS`](Self::STEPS_ON_DUALS).
+    /// One step of h from (t, q, v) on any scalar (dual numbers carrying sensitivities) with the
+    /// position rates `rates` (q̇ = G(q) v) and the accelerations `acc`, adding its cost to
+    /// `stats`: the same operations as [`advance`](Self::advance) in the same order, so the real
+    /// parts are the `f64` step's. [`Error::UnsuitableMethod`] unless
+    /// [`STEPS_ON_DUALS`](Self::STEPS_ON_DUALS).
     fn advance_on_duals<S: Scalar, const N: usize>(
         t: f64,
         y: (&[S; N], &[S; N]),
         h: f64,
+        rates: impl Fn(&[S; N], &[S; N]) -> [S; N],
         acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
         stats: &mut Stats,
     ) -> Result<([S; N], [S; N])> {
-        let _ = (t, y, h, acc, stats);
+        let _ = (t, y, h, rates, acc, stats);
         Err(Error::UnsuitableMethod {
             method: Self::NAME,
             reason: "it does not step on dual numbers: sensitivities with a fixed step are RK4's"

@@ -59,8 +59,22 @@ pub(crate) mod sealed {
 /// # Ok::<(), lagrange_core::Error>(())
 /// ```
 pub trait AccelerationField<const N: usize> {
-    /// q̈ at (t, q, q̇).
+    /// q̈ at (t, q, q̇) (v̇ at (t, q, v) where the velocities are quasi-velocities).
     fn accelerations(&self, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<[f64; N]>;
+
+    /// q̇ = G(q) v (see [`Evaluate::position_rates_at`]): v itself, the default.
+    #[inline(always)]
+    fn position_rates(&self, q: &[f64; N], v: &[f64; N]) -> [f64; N] {
+        let _ = q;
+        *v
+    }
+
+    /// Whether the velocities are quasi-velocities (q̇ = G(q) v, not v), which the methods whose
+    /// Newton iteration takes q̇ = v refuse (Radau5); `false`, the default.
+    #[inline(always)]
+    fn quasi_velocities(&self) -> bool {
+        false
+    }
 
     /// The exact Jacobians ∂q̈/∂q and ∂q̈/∂q̇ at (t, q, q̇).
     #[allow(clippy::type_complexity)]
@@ -82,6 +96,16 @@ impl<M: Evaluate<N>, const N: usize> AccelerationField<N> for OfMechanism<'_, M>
         let m = self.0;
         m.accelerations_at(t, q, v)
             .map_err(|e| diagnose(m, t, q, v, e))
+    }
+
+    #[inline(always)]
+    fn position_rates(&self, q: &[f64; N], v: &[f64; N]) -> [f64; N] {
+        self.0.position_rates_at(q, v)
+    }
+
+    #[inline(always)]
+    fn quasi_velocities(&self) -> bool {
+        M::QUASI_VELOCITIES
     }
 
     fn jacobians(
@@ -204,17 +228,19 @@ pub trait EmbeddedPair: Copy + sealed::Sealed {
     /// iteration extrapolates); keeps the proposed step.
     fn field_changed<const N: usize>(memory: &mut Self::Memory<N>);
 
-    /// An accepted step of length `h` from (t, q, q̇) taken again, without error control, on any
-    /// scalar (dual numbers carrying sensitivities) with the accelerations `acc`: (q, q̇) at t + h.
-    /// [`Error::UnsuitableMethod`] unless [`REPLAYS_ON_DUALS`](Self::REPLAYS_ON_DUALS).
+    /// An accepted step of length `h` from (t, q, v) taken again, without error control, on any
+    /// scalar (dual numbers carrying sensitivities) with the position rates `rates` (q̇ = G(q) v)
+    /// and the accelerations `acc`: (q, v) at t + h. [`Error::UnsuitableMethod`] unless
+    /// [`REPLAYS_ON_DUALS`](Self::REPLAYS_ON_DUALS).
     fn replay<S: Scalar, const N: usize>(
         &self,
         t: f64,
         y: (&[S; N], &[S; N]),
         h: f64,
+        rates: impl Fn(&[S; N], &[S; N]) -> [S; N],
         acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
     ) -> Result<([S; N], [S; N])> {
-        let _ = (t, y, h, acc);
+        let _ = (t, y, h, rates, acc);
         Err(not_replayed(Self::NAME))
     }
 }
@@ -258,9 +284,10 @@ pub(crate) trait ExplicitPair: Copy {
         t: f64,
         y: (&[S; N], &[S; N]),
         h: f64,
+        rates: impl Fn(&[S; N], &[S; N]) -> [S; N],
         acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
     ) -> Option<Result<([S; N], [S; N])>> {
-        let _ = (t, y, h, acc);
+        let _ = (t, y, h, rates, acc);
         None
     }
 
@@ -309,6 +336,7 @@ pub(crate) fn explicit_start<P: ExplicitPair, const N: usize>(
             |t, q, v| field.accelerations(t, q, v),
             &settings,
             start,
+            &field.position_rates(start.1, start.2),
             P::ORDER,
             stats,
         ),
@@ -468,9 +496,10 @@ macro_rules! explicit_embedded_pair {
                 t: f64,
                 y: (&[S; N], &[S; N]),
                 h: f64,
+                rates: impl Fn(&[S; N], &[S; N]) -> [S; N],
                 acc: impl FnMut(f64, &[S; N], &[S; N]) -> $crate::error::Result<[S; N]>,
             ) -> $crate::error::Result<([S; N], [S; N])> {
-                <$method as $crate::integrate::pair::ExplicitPair>::replay(t, y, h, acc)
+                <$method as $crate::integrate::pair::ExplicitPair>::replay(t, y, h, rates, acc)
                     .unwrap_or_else(|| {
                         Err($crate::integrate::pair::not_replayed(
                             <$method as $crate::integrate::pair::ExplicitPair>::NAME,

@@ -43,28 +43,29 @@ fn axpy<S: Scalar, const N: usize>(y: &[S; N], a: f64, x: &[S; N]) -> [S; N] {
     std::array::from_fn(|i| y[i] + x[i] * a)
 }
 
-/// One classical RK4 step of (q, v)' = (v, `acc`(t, q, v)) from (t, q, v): (q, v) at t + h. The
-/// one implementation of the method, on `f64` ([`Rk4`]'s step, also with a contact mode held) and
-/// on dual numbers `S` (trajectory sensitivities: the same operations in the same order, so the
-/// real parts are the f64 run bit for bit).
+/// One classical RK4 step of (q, v)' = (`rates`(q, v), `acc`(t, q, v)) from (t, q, v): (q, v) at
+/// t + h, with `rates` q̇ = G(q) v ([`Evaluate::position_rates_at`]: v itself unless the mechanism
+/// has quasi-velocities). The one implementation of the method, on `f64` ([`Rk4`]'s step, also
+/// with a contact mode held) and on dual numbers `S` (trajectory sensitivities: the same
+/// operations in the same order, so the real parts are the f64 run bit for bit).
 #[inline(always)]
 pub(crate) fn rk4_step<S: Scalar, const N: usize>(
     t: f64,
-    q: &[S; N],
-    v: &[S; N],
+    (q, v): (&[S; N], &[S; N]),
     h: f64,
+    rates: impl Fn(&[S; N], &[S; N]) -> [S; N],
     mut acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
 ) -> Result<([S; N], [S; N])> {
     let half = 0.5 * h;
-    let a1 = acc(t, q, v)?;
-    let (q2, v2) = (axpy(q, half, v), axpy(v, half, &a1));
-    let a2 = acc(t + half, &q2, &v2)?;
-    let (q3, v3) = (axpy(q, half, &v2), axpy(v, half, &a2));
-    let a3 = acc(t + half, &q3, &v3)?;
-    let (q4, v4) = (axpy(q, h, &v3), axpy(v, h, &a3));
-    let a4 = acc(t + h, &q4, &v4)?;
+    let (r1, a1) = (rates(q, v), acc(t, q, v)?);
+    let (q2, v2) = (axpy(q, half, &r1), axpy(v, half, &a1));
+    let (r2, a2) = (rates(&q2, &v2), acc(t + half, &q2, &v2)?);
+    let (q3, v3) = (axpy(q, half, &r2), axpy(v, half, &a2));
+    let (r3, a3) = (rates(&q3, &v3), acc(t + half, &q3, &v3)?);
+    let (q4, v4) = (axpy(q, h, &r3), axpy(v, h, &a3));
+    let (r4, a4) = (rates(&q4, &v4), acc(t + h, &q4, &v4)?);
     let w = h / 6.0;
-    let q_new = std::array::from_fn(|i| q[i] + (v[i] + (v2[i] + v3[i]) * 2.0 + v4[i]) * w);
+    let q_new = std::array::from_fn(|i| q[i] + (r1[i] + (r2[i] + r3[i]) * 2.0 + r4[i]) * w);
     let v_new = std::array::from_fn(|i| v[i] + (a1[i] + (a2[i] + a3[i]) * 2.0 + a4[i]) * w);
     Ok((q_new, v_new))
 }
@@ -81,7 +82,8 @@ impl Rk4 {
         v: &[f64; N],
         h: f64,
     ) -> Result<([f64; N], [f64; N])> {
-        rk4_step(t, q, v, h, |t, q, v| {
+        let rates = |q: &[f64; N], v: &[f64; N]| mechanism.position_rates_at(q, v);
+        rk4_step(t, (q, v), h, rates, |t, q, v| {
             mechanism
                 .accelerations_at(t, q, v)
                 .map_err(|e| diagnose(mechanism, t, q, v, e))
@@ -98,13 +100,14 @@ impl Integrator for Rk4 {
     #[inline]
     fn advance_on_duals<S: Scalar, const N: usize>(
         t: f64,
-        (q, v): (&[S; N], &[S; N]),
+        y: (&[S; N], &[S; N]),
         h: f64,
+        rates: impl Fn(&[S; N], &[S; N]) -> [S; N],
         acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
         stats: &mut Stats,
     ) -> Result<([S; N], [S; N])> {
         stats.evaluations += 4;
-        rk4_step(t, q, v, h, acc)
+        rk4_step(t, y, h, rates, acc)
     }
 
     #[inline]

@@ -53,9 +53,9 @@
 //! step (see [`rattle`](super::rattle)).
 
 use super::canonical::{self, momentum_rate};
-use super::newton::MAX_NEWTON_ITERATIONS;
 use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
 use super::newton::{mass_weights, position_floor, NewtonScale, Unknowns as _};
+use super::newton::{refuse_quasi_velocities, MAX_NEWTON_ITERATIONS};
 use super::rattle::{rows_and_jacobian, rows_in_force, rows_on};
 use super::validated_step;
 use super::{Integrator, Stats};
@@ -375,6 +375,7 @@ impl Variational {
         stats: &mut Stats,
         counts: &mut VariationalStepStats,
     ) -> Result<([f64; N], [f64; N])> {
+        refuse_quasi_velocities(Self::NAME, M::QUASI_VELOCITIES)?;
         // Which constraints are enforced is the declaration's, decided before anything is evaluated.
         let rows = rows_in_force(mechanism, Self::NAME)?;
         let p0 = mechanism.momenta_at(t, q, v);

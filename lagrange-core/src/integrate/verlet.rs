@@ -46,6 +46,7 @@
 // `!(a <= b)` comparisons are deliberate (they also catch NaN); stage loops index several arrays.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
+use super::newton::refuse_quasi_velocities;
 use super::rattle::{position_stage, rows_and_jacobian, rows_in_force};
 use super::{Integrator, Stats};
 use crate::dynamics::{mass_matrix_failure, solve_accelerations};
@@ -185,6 +186,7 @@ impl Integrator for StormerVerlet {
         h: f64,
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N])> {
+        refuse_quasi_velocities(Self::NAME, M::QUASI_VELOCITIES)?;
         // Two solves with the mass matrix, and RATTLE's Newton iterations (counted there).
         Self::step_counted(mechanism, t, q, v, h, stats)
     }

@@ -15,6 +15,7 @@ mod potentials;
 mod resolve;
 mod signatures;
 mod structs;
+mod velocities;
 
 pub use charts::{Chart, ChartKind};
 pub use model::{attribute_sets, family_index, Body, Dim, Force, Model, Shape};
@@ -43,6 +44,7 @@ pub fn check<'a>(cx: &Ctxt, mechanism: &'a Mechanism) -> Option<Model<'a>> {
     masses::check_coordinates_are_used(cx, &model);
     helpers::check_helper_calls(cx, &model);
     model.charts = charts::rotation_charts(cx, &model);
+    model.angular_velocities = velocities::check_angular_velocities(cx, &model);
     Some(model)
 }
 

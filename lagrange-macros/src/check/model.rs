@@ -182,6 +182,9 @@ pub struct Model<'a> {
     pub inertial_rows: usize,
     /// The rotations written in a chart of three coordinates (`rot_vector`, `rot_mrp`).
     pub charts: Vec<super::Chart>,
+    /// The charts (their three slots) whose velocities are the angular velocity
+    /// (`#[angular_velocity]`, see `check::velocities`).
+    pub angular_velocities: Vec<[usize; 3]>,
 }
 
 impl<'a> Model<'a> {
@@ -233,6 +236,7 @@ impl<'a> Model<'a> {
                 .sum(),
             bodies,
             charts: Vec::new(),
+            angular_velocities: Vec::new(),
         }
     }
 

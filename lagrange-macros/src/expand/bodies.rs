@@ -99,11 +99,14 @@ pub(super) fn inherent_impl(model: &Model) -> TokenStream {
             }
 
             /// The velocity of every body and point at `state`, by name (one forward-mode pass
-            /// along (q̇, 1)).
+            /// along (q̇, 1), q̇ the coordinates' rates at the state's velocities).
             #[allow(dead_code)]
             pub fn body_velocities(&self, state: &State) -> BodyVelocities {
                 let q = <Coords as #p::Coordinates<#n>>::to_array(&state.q);
                 let v = <Coords as #p::Coordinates<#n>>::to_array(&state.v);
+                // The coordinates' rates (the velocities themselves unless some are angular
+                // velocities).
+                let v = <Self as #p::Dynamics<#n>>::position_rates_at(self, &q, &v);
                 let (x, x_dot) = #p::dynamics::cartesian_velocities::<Self, f64, #n, #k>(self, state.t, &q, &v);
                 self.__lagrange_velocities_from_cartesian(&x, &x_dot)
             }

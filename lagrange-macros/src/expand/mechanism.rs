@@ -5,7 +5,7 @@ mod hooks;
 
 use super::{lit, private};
 use crate::check::Chart;
-use hooks::{constraint_hooks, switch_charts};
+use hooks::{constraint_hooks, quasi_velocities, switch_charts};
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
@@ -54,6 +54,8 @@ pub(super) struct Glue<'a> {
     pub(super) inputs: Option<usize>,
     /// The rotations written in a chart of three coordinates.
     pub(super) charts: &'a [Chart],
+    /// The charts' slots whose velocities are the angular velocity (`#[angular_velocity]`).
+    pub(super) angular_velocities: &'a [[usize; 3]],
 }
 
 /// What a validated handle prepares.
@@ -127,6 +129,7 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let mass_matrix = mass_matrix(glue);
     let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
     let switch_charts = switch_charts(glue);
+    let quasi_velocities = quasi_velocities(glue);
     let inputs =
         (glue.inputs).map(|nu| super::inputs::dynamics_items(glue.n, glue.k, nu, glue.constrained));
     quote! {
@@ -163,6 +166,7 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
             #canonical
             #constraint_hooks
             #switch_charts
+            #quasi_velocities
             #inputs
         }
     }

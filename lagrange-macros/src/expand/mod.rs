@@ -174,6 +174,7 @@ fn generate(model: &Model) -> TokenStream {
         positions,
         inputs: model.input_count(),
         charts: &model.charts,
+        angular_velocities: &model.angular_velocities,
     });
     let constraints_impl = constrained.map(|_| constraints_impl(model));
     let declaration_impl = declaration_impl(model);
@@ -212,10 +213,12 @@ fn equations_items(model: &Model, affine: bool) -> (Equations, TokenStream) {
         false => crate::structure::rigid::rigid_tree(model),
     };
     // Inputs reach the forces as data the closed form and a tree of translations do not read:
-    // a declaration with inputs takes the rigid tree's recursion or the dense pass.
+    // a declaration with inputs takes the rigid tree's recursion or the dense pass. Angular
+    // velocities are the rigid tree's alone (the checks saw that it takes them).
     let actuated = model.inputs_ident.is_some();
-    let tree = tree.filter(|_| !actuated);
-    let closed_form = crate::symbolic::equations(model).filter(|_| !actuated);
+    let rigid_only = actuated || !model.angular_velocities.is_empty();
+    let tree = tree.filter(|_| !rigid_only);
+    let closed_form = crate::symbolic::equations(model).filter(|_| !rigid_only);
     let closed_form = closed_form.filter(|equations| {
         !recursion_is_cheaper(model, equations, tree.as_ref())
             && !rigid_recursion_is_cheaper(equations, rigid.as_ref())

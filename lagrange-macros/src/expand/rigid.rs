@@ -84,7 +84,10 @@ pub fn rigid_items(model: &Model, tree: &RigidTree) -> TokenStream {
     let p = private();
     let params = model.params_ident;
     let (n, b) = (lit(model.dof()), lit(tree.nodes.len()));
-    let joints = tree.nodes.iter().map(|node| joint(node, &tree.nodes));
+    let joints = tree
+        .nodes
+        .iter()
+        .map(|node| joint(node, &tree.nodes, &model.angular_velocities));
     let constants = constants_fn(model, tree);
     let accelerations = accelerations_fn(model, tree);
     let inverse = inverse_dynamics_fn(model, tree);
@@ -109,8 +112,18 @@ fn rotation_chart(chart: ChartKind) -> TokenStream {
     }
 }
 
+/// A free or ball joint's velocities as the runtime names them: the angular velocity where its
+/// chart, `slots`, is among `angular` (`#[angular_velocity]`), else the chart's rates.
+fn velocities(slots: [usize; 3], angular: &[[usize; 3]]) -> TokenStream {
+    let r = quote!(::lagrange::__private::tree::rigid);
+    match angular.contains(&slots) {
+        true => quote!(#r::Velocities::AngularVelocity),
+        false => quote!(#r::Velocities::ChartRates),
+    }
+}
+
 /// A joint as a constant of the runtime.
-fn joint(node: &Node, nodes: &[Node]) -> TokenStream {
+fn joint(node: &Node, nodes: &[Node], angular: &[[usize; 3]]) -> TokenStream {
     let r = quote!(::lagrange::__private::tree::rigid);
     let axis = |a: Axis| match a {
         Axis::X => quote!(#r::spatial::Axis::X),
@@ -129,11 +142,13 @@ fn joint(node: &Node, nodes: &[Node]) -> TokenStream {
         Joint::Fixed => (quote!(#r::JointKind::Fixed), 0),
         Joint::Free(chart, first) => {
             let chart = rotation_chart(chart);
-            (quote!(#r::JointKind::Free(#chart)), first)
+            let v = velocities([first + 3, first + 4, first + 5], angular);
+            (quote!(#r::JointKind::Free(#chart, #v)), first)
         }
         Joint::Ball(chart, first) => {
             let chart = rotation_chart(chart);
-            (quote!(#r::JointKind::Ball(#chart)), first)
+            let v = velocities([first, first + 1, first + 2], angular);
+            (quote!(#r::JointKind::Ball(#chart, #v)), first)
         }
     };
     let parent = match node.parent {
@@ -351,7 +366,7 @@ fn accelerations_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             __v: &[S; #n],
         ) -> #p::Result<[S; #n]> {
             let __joints = &<Self as #r::RigidTree<#n, #b>>::JOINTS;
-            let __tau: [S; #n] = #r::other_generalized_forces::<__F, S, #n, #k>(__forces, __t, __q, __v).into();
+            let __tau: [S; #n] = #r::other_generalized_forces::<__F, S, #n, #k, #b>(__forces, __joints, __t, __q, __v).into();
             let mut __ws = #r::Articulated::<S, #b>::new();
             let mut __qdd = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
             if let ::lagrange::__private::core::result::Result::Err(__pivot) =
@@ -426,7 +441,7 @@ fn inverse_dynamics_fn(model: &Model, tree: &RigidTree) -> TokenStream {
             let mut __ws = #r::NewtonEuler::<S, #b>::new();
             let mut __tau = [<S as ::lagrange::__private::core::convert::From<f64>>::from(0.0); #n];
             let _ = self.__lagrange_rigid_newton_euler(&mut __ws, __joints, __k, (__q, __v, __qdd), &mut __tau);
-            #r::less_other_forces::<__F, S, #n, #k>(__forces, __tau, __t, __q, __v)
+            #r::less_other_forces::<__F, S, #n, #k, #b>(__forces, __joints, __tau, __t, __q, __v)
         }
     }
 }

@@ -189,7 +189,7 @@ fn a_floating_base_takes_the_rigid_tree_pass_as_a_free_joint() {
     assert!(out.contains("tree::rigid::RigidTree<7, 2> for Floating"));
     // The base: a root, free on coordinates 0..6, with no constant rotation or offset.
     assert!(squeezed.contains(
-        "parent:::lagrange::__private::core::option::Option::None,kind:::lagrange::__private::tree::rigid::JointKind::Free(::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,),coordinate:0,rotated:false,offset:[false,false,false],"
+        "parent:::lagrange::__private::core::option::Option::None,kind:::lagrange::__private::tree::rigid::JointKind::Free(::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,::lagrange::__private::tree::rigid::Velocities::ChartRates,),coordinate:0,rotated:false,offset:[false,false,false],"
     ));
     // The leg: hinged on the base by coordinate 6.
     assert!(squeezed.contains(
@@ -225,7 +225,7 @@ fn a_floating_base_in_the_rotation_vector_is_a_free_joint_of_that_chart() {
         .collect();
     assert!(out.contains("tree::rigid::RigidTree<7,2>for"));
     assert!(out.contains(
-        "kind:::lagrange::__private::tree::rigid::JointKind::Free(::lagrange::__private::lagrange_core::geometry::RotationChart::Vector,),coordinate:0,"
+        "kind:::lagrange::__private::tree::rigid::JointKind::Free(::lagrange::__private::lagrange_core::geometry::RotationChart::Vector,::lagrange::__private::tree::rigid::Velocities::ChartRates,),coordinate:0,"
     ));
     assert!(!out.contains("dynamics::equations_of_motion::<Self"));
 }
@@ -249,7 +249,7 @@ fn a_body_turning_about_a_fixed_point_is_a_ball_joint() {
     assert!(out.contains("tree::rigid::RigidTree<3,1>for"));
     // Its pivot is the offset r (only z can be non-zero), its centre of mass the body's own.
     assert!(out.contains(
-        "kind:::lagrange::__private::tree::rigid::JointKind::Ball(::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,),coordinate:0,rotated:false,offset:[false,false,true],"
+        "kind:::lagrange::__private::tree::rigid::JointKind::Ball(::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,::lagrange::__private::tree::rigid::Velocities::ChartRates,),coordinate:0,rotated:false,offset:[false,false,true],"
     ));
     let constant = |name: &str| {
         let at = out.find(&format!("let{name}:Vec3<f64>=")).expect(name);

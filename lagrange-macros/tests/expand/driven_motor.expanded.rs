@@ -162,7 +162,7 @@ pub mod motor {
             self.__lagrange_bodies(state.t, &q)
         }
         /// The velocity of every body and point at `state`, by name (one forward-mode pass
-        /// along (q̇, 1)).
+        /// along (q̇, 1), q̇ the coordinates' rates at the state's velocities).
         #[allow(dead_code)]
         pub fn body_velocities(&self, state: &State) -> BodyVelocities {
             let q = <Coords as ::lagrange::__private::Coordinates<
@@ -171,6 +171,9 @@ pub mod motor {
             let v = <Coords as ::lagrange::__private::Coordinates<
                 1,
             >>::to_array(&state.v);
+            let v = <Self as ::lagrange::__private::Dynamics<
+                1,
+            >>::position_rates_at(self, &q, &v);
             let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
                 Self,
                 f64,

@@ -102,7 +102,7 @@ pub mod floating {
             self.__lagrange_bodies(state.t, &q)
         }
         /// The velocity of every body and point at `state`, by name (one forward-mode pass
-        /// along (q̇, 1)).
+        /// along (q̇, 1), q̇ the coordinates' rates at the state's velocities).
         #[allow(dead_code)]
         pub fn body_velocities(&self, state: &State) -> BodyVelocities {
             let q = <Coords as ::lagrange::__private::Coordinates<
@@ -111,6 +111,9 @@ pub mod floating {
             let v = <Coords as ::lagrange::__private::Coordinates<
                 7,
             >>::to_array(&state.v);
+            let v = <Self as ::lagrange::__private::Dynamics<
+                7,
+            >>::position_rates_at(self, &q, &v);
             let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
                 Self,
                 f64,
@@ -472,6 +475,7 @@ pub mod floating {
                 parent: ::lagrange::__private::core::option::Option::None,
                 kind: ::lagrange::__private::tree::rigid::JointKind::Free(
                     ::lagrange::__private::lagrange_core::geometry::RotationChart::Mrp,
+                    ::lagrange::__private::tree::rigid::Velocities::ChartRates,
                 ),
                 coordinate: 0,
                 rotated: false,
@@ -659,7 +663,8 @@ pub mod floating {
                 S,
                 7,
                 24,
-            >(__forces, __t, __q, __v)
+                2,
+            >(__forces, __joints, __t, __q, __v)
                 .into();
             let mut __ws = ::lagrange::__private::tree::rigid::Articulated::<
                 S,
@@ -781,7 +786,8 @@ pub mod floating {
                 S,
                 7,
                 24,
-            >(__forces, __tau, __t, __q, __v)
+                2,
+            >(__forces, __joints, __tau, __t, __q, __v)
         }
     }
     impl ::lagrange::__private::Prepare for Floating {

@@ -79,7 +79,7 @@ pub mod arm {
             self.__lagrange_bodies(state.t, &q)
         }
         /// The velocity of every body and point at `state`, by name (one forward-mode pass
-        /// along (q̇, 1)).
+        /// along (q̇, 1), q̇ the coordinates' rates at the state's velocities).
         #[allow(dead_code)]
         pub fn body_velocities(&self, state: &State) -> BodyVelocities {
             let q = <Coords as ::lagrange::__private::Coordinates<
@@ -88,6 +88,9 @@ pub mod arm {
             let v = <Coords as ::lagrange::__private::Coordinates<
                 2,
             >>::to_array(&state.v);
+            let v = <Self as ::lagrange::__private::Dynamics<
+                2,
+            >>::position_rates_at(self, &q, &v);
             let (x, x_dot) = ::lagrange::__private::dynamics::cartesian_velocities::<
                 Self,
                 f64,
@@ -892,7 +895,8 @@ pub mod arm {
                 S,
                 2,
                 24,
-            >(__forces, __t, __q, __v)
+                2,
+            >(__forces, __joints, __t, __q, __v)
                 .into();
             let mut __ws = ::lagrange::__private::tree::rigid::Articulated::<
                 S,
@@ -1014,7 +1018,8 @@ pub mod arm {
                 S,
                 2,
                 24,
-            >(__forces, __tau, __t, __q, __v)
+                2,
+            >(__forces, __joints, __tau, __t, __q, __v)
         }
     }
     impl ::lagrange::__private::Prepare for Arm {

@@ -5,10 +5,11 @@ use super::tableau::{A, B, BHH, C, E};
 use super::Dop853;
 use crate::error::{Error, Result};
 use crate::integrate::control::ratio;
+use crate::integrate::pair::AccelerationField;
 use crate::integrate::Stats;
 use crate::model::{check_state, Coordinates};
 
-/// The stages of one [`Dop853`] step, position parts kq (the stage velocities) and velocity parts
+/// The stages of one [`Dop853`] step, position parts kq (the stage position rates) and velocity parts
 /// ka (the stage accelerations): stages 1…12 of the trial, 13 the FSAL evaluation at the new point,
 /// 14…16 those of the dense output. A step computes them in place, without copying them around.
 #[derive(Clone, Copy, Debug)]
@@ -28,7 +29,7 @@ impl<const N: usize> Stages<N> {
 }
 
 /// Evaluates stage I (0-based) of a step of size h from (t, q, v) into kq[I], ka[I]: the stage
-/// point (q, v) + h Σ_{j<I} a_Ij (kqⱼ, kaⱼ), its velocity and q̈ there. The stage is a constant,
+/// point (q, v) + h Σ_{j<I} a_Ij (kqⱼ, kaⱼ), its position rates and v̇ there. The stage is a constant,
 /// so the sum is unrolled over its nonzero aᵢⱼ alone.
 #[inline(always)]
 pub(super) fn evaluate_stage<const I: usize, const N: usize>(
@@ -36,7 +37,7 @@ pub(super) fn evaluate_stage<const I: usize, const N: usize>(
     h: f64,
     k: &mut Stages<N>,
     stats: &mut Stats,
-    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+    field: &impl AccelerationField<N>,
 ) -> Result<()> {
     let (mut qi, mut vi) = (*q, *v);
     for j in 0..I {
@@ -49,8 +50,8 @@ pub(super) fn evaluate_stage<const I: usize, const N: usize>(
         }
     }
     stats.evaluations += 1;
-    k.ka[I] = acc(t + C[I] * h, &qi, &vi)?;
-    k.kq[I] = vi;
+    k.ka[I] = field.accelerations(t + C[I] * h, &qi, &vi)?;
+    k.kq[I] = field.position_rates(&qi, &vi);
     Ok(())
 }
 
@@ -69,7 +70,7 @@ fn weighted<const N: usize>(w: &[f64; 12], k: &[[f64; N]; 16]) -> [f64; N] {
     s
 }
 
-/// One trial step of size h from (t, q, v) with q̈ = `a` there, on the accelerations `acc`: stages
+/// One trial step of size h from (t, q, v) with v̇ = `a` there, on `field`: stages
 /// 1…12 into `k`, the 8th-order solution (q₁, q̇₁) and the error norm. What every Dop853 step
 /// attempts, on a mechanism's accelerations or those of a held contact mode.
 pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
@@ -78,22 +79,22 @@ pub(crate) fn attempt<Q: Coordinates<N>, const N: usize>(
     h: f64,
     k: &mut Stages<N>,
     stats: &mut Stats,
-    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+    field: &impl AccelerationField<N>,
 ) -> Result<([f64; N], [f64; N], f64)> {
-    k.kq[0] = *v;
+    k.kq[0] = field.position_rates(q, v);
     k.ka[0] = *a;
     let y = (t, q, v);
-    evaluate_stage::<1, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<2, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<3, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<4, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<5, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<6, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<7, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<8, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<9, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<10, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<11, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<1, N>(y, h, k, stats, field)?;
+    evaluate_stage::<2, N>(y, h, k, stats, field)?;
+    evaluate_stage::<3, N>(y, h, k, stats, field)?;
+    evaluate_stage::<4, N>(y, h, k, stats, field)?;
+    evaluate_stage::<5, N>(y, h, k, stats, field)?;
+    evaluate_stage::<6, N>(y, h, k, stats, field)?;
+    evaluate_stage::<7, N>(y, h, k, stats, field)?;
+    evaluate_stage::<8, N>(y, h, k, stats, field)?;
+    evaluate_stage::<9, N>(y, h, k, stats, field)?;
+    evaluate_stage::<10, N>(y, h, k, stats, field)?;
+    evaluate_stage::<11, N>(y, h, k, stats, field)?;
     // dop853.f: k₄ = Σⱼ bⱼ kⱼ and y₁ = y₀ + h·k₄; the 5th-order error h·Σⱼ eⱼ kⱼ and the 3rd-order
     // one h·(k₄ − bhh₁k₁ − bhh₂k₉ − bhh₃k₁₂) (the factor h is applied to the norm below).
     // The sums of squares run over y = (q, q̇) in this order, as over dop853.f's y.

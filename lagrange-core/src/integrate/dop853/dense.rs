@@ -6,6 +6,7 @@ use super::tableau::D;
 use super::Dop853;
 use crate::error::Result;
 use crate::integrate::dense::{hermite_rows, DenseOutput};
+use crate::integrate::pair::AccelerationField;
 use crate::integrate::Stats;
 
 /// Completes an accepted [`attempt`](super::attempt) of size h from (t, q, v, q̈) to (q₁, q̇₁),
@@ -22,21 +23,22 @@ pub(crate) fn accept<const N: usize>(
     (q1, v1): (&[f64; N], &[f64; N]),
     k: &mut Stages<N>,
     stats: &mut Stats,
-    acc: &impl Fn(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
+    field: &impl AccelerationField<N>,
     dense: &mut DenseOutput<N>,
 ) -> Result<[f64; N]> {
     stats.evaluations += 1;
-    let a1 = acc(t + h, q1, v1)?;
-    k.kq[12] = *v1;
+    let a1 = field.accelerations(t + h, q1, v1)?;
+    k.kq[12] = field.position_rates(q1, v1);
     k.ka[12] = a1;
     if !st.dense {
-        dense.set_hermite(t, h, (q, v, a), (q1, v1, &a1));
+        let rates = (&k.kq[0], &k.kq[12]);
+        dense.set_hermite(t, h, (q, v, a), (q1, v1, &a1), rates);
         return Ok(a1);
     }
     let y = (t, q, v);
-    evaluate_stage::<13, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<14, N>(y, h, k, stats, acc)?;
-    evaluate_stage::<15, N>(y, h, k, stats, acc)?;
+    evaluate_stage::<13, N>(y, h, k, stats, field)?;
+    evaluate_stage::<14, N>(y, h, k, stats, field)?;
+    evaluate_stage::<15, N>(y, h, k, stats, field)?;
     let make = |y0: &[f64; N], y1: &[f64; N], k: &[[f64; N]; 16]| {
         let mut r = [[0.0; N]; 8];
         // Stage 1 is the derivative at the step's start, stage 13 (FSAL) the one at its end.

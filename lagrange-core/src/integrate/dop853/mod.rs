@@ -211,8 +211,7 @@ impl ExplicitPair for Dop853 {
         stats: &mut Stats,
         field: &impl AccelerationField<N>,
     ) -> Result<([f64; N], [f64; N], f64)> {
-        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-        attempt::<C, N>(self, start, h, stages, stats, &acc)
+        attempt::<C, N>(self, start, h, stages, stats, field)
     }
 
     fn accept<const N: usize>(
@@ -225,8 +224,7 @@ impl ExplicitPair for Dop853 {
         field: &impl AccelerationField<N>,
         dense: &mut DenseOutput<N>,
     ) -> Result<[f64; N]> {
-        let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-        accept(self, start, h, end, stages, stats, &acc, dense)
+        accept(self, start, h, end, stages, stats, field, dense)
     }
 }
 

@@ -63,11 +63,12 @@ impl ExplicitPair for Dopri5 {
         t: f64,
         (q, v): (&[S; N], &[S; N]),
         h: f64,
+        rates: impl Fn(&[S; N], &[S; N]) -> [S; N],
         mut acc: impl FnMut(f64, &[S; N], &[S; N]) -> Result<[S; N]>,
     ) -> Option<Result<([S; N], [S; N])>> {
         let step = || {
             let a = acc(t, q, v)?;
-            let (q1, v1, _, _) = stages(t, q, v, a, h, acc)?;
+            let (q1, v1, _, _) = stages(t, (q, v), a, h, rates, acc)?;
             Ok((q1, v1))
         };
         Some(step())
@@ -86,7 +87,8 @@ impl ExplicitPair for Dopri5 {
         stats: &mut Stats,
         field: &impl AccelerationField<N>,
     ) -> Result<([f64; N], [f64; N], f64)> {
-        trial::<C, N>(self, start, h, stages, stats, |t, q, v| {
+        let rates = |q: &[f64; N], v: &[f64; N]| field.position_rates(q, v);
+        trial::<C, N>(self, start, h, stages, stats, rates, |t, q, v| {
             field.accelerations(t, q, v)
         })
     }

@@ -30,43 +30,44 @@ pub(crate) fn combo<T: Scalar, const N: usize, const S: usize>(
     })
 }
 
-/// The stages of one Dormand–Prince step of size h from (t, q, v) with q̈ = `a1` there: the new
-/// (q₁, v₁) and the stage velocities kq and accelerations ka of stages 1…6 (stage 7, FSAL, is q̈ at
-/// the new point). On any scalar: the f64 step, and the trajectory sensitivities on dual numbers.
+/// The stages of one Dormand–Prince step of size h from (t, q, v) with v̇ = `a1` there: the new
+/// (q₁, v₁) and the stage position rates kq (`rates`, q̇ = G(q) v) and accelerations ka of stages
+/// 1…6 (stage 7, FSAL, is v̇ at the new point). On any scalar: the f64 step, and the trajectory
+/// sensitivities on dual numbers.
 #[allow(clippy::type_complexity)]
 #[inline(always)]
 pub(crate) fn stages<T: Scalar, const N: usize>(
     t: f64,
-    q: &[T; N],
-    v: &[T; N],
+    (q, v): (&[T; N], &[T; N]),
     a1: [T; N],
     h: f64,
+    rates: impl Fn(&[T; N], &[T; N]) -> [T; N],
     mut acc: impl FnMut(f64, &[T; N], &[T; N]) -> Result<[T; N]>,
 ) -> Result<([T; N], [T; N], [[T; N]; 6], [[T; N]; 6])> {
-    let (kq1, ka1) = (*v, a1);
-    // Stage i: position increments use the stage velocities kqⱼ, velocity increments the stage
-    // accelerations kaⱼ.
+    let (kq1, ka1) = (rates(q, v), a1);
+    // Stage i: position increments use the stage position rates kqⱼ, velocity increments the
+    // stage accelerations kaⱼ.
     let (q2, v2) = (combo(q, h, [A21], [&kq1]), combo(v, h, [A21], [&ka1]));
     let ka2 = acc(t + C2 * h, &q2, &v2)?;
-    let kq2 = v2;
+    let kq2 = rates(&q2, &v2);
     let (q3, v3) = (
         combo(q, h, [A31, A32], [&kq1, &kq2]),
         combo(v, h, [A31, A32], [&ka1, &ka2]),
     );
     let ka3 = acc(t + C3 * h, &q3, &v3)?;
-    let kq3 = v3;
+    let kq3 = rates(&q3, &v3);
     let (q4, v4) = (
         combo(q, h, [A41, A42, A43], [&kq1, &kq2, &kq3]),
         combo(v, h, [A41, A42, A43], [&ka1, &ka2, &ka3]),
     );
     let ka4 = acc(t + C4 * h, &q4, &v4)?;
-    let kq4 = v4;
+    let kq4 = rates(&q4, &v4);
     let (q5, v5) = (
         combo(q, h, [A51, A52, A53, A54], [&kq1, &kq2, &kq3, &kq4]),
         combo(v, h, [A51, A52, A53, A54], [&ka1, &ka2, &ka3, &ka4]),
     );
     let ka5 = acc(t + C5 * h, &q5, &v5)?;
-    let kq5 = v5;
+    let kq5 = rates(&q5, &v5);
     let (q6, v6) = (
         combo(
             q,
@@ -82,7 +83,7 @@ pub(crate) fn stages<T: Scalar, const N: usize>(
         ),
     );
     let ka6 = acc(t + h, &q6, &v6)?;
-    let kq6 = v6;
+    let kq6 = rates(&q6, &v6);
     let q1 = combo(
         q,
         h,
@@ -116,9 +117,10 @@ pub(crate) fn trial<C: Coordinates<N>, const N: usize>(
     h: f64,
     (a_end, k): &mut Stages<N>,
     stats: &mut Stats,
+    rates: impl Fn(&[f64; N], &[f64; N]) -> [f64; N],
     mut acc: impl FnMut(f64, &[f64; N], &[f64; N]) -> Result<[f64; N]>,
 ) -> Result<([f64; N], [f64; N], f64)> {
-    let (q1, v1, kq, ka) = stages(t, q, v, *a, h, |t, q, v| {
+    let (q1, v1, kq, ka) = stages(t, (q, v), *a, h, &rates, |t, q, v| {
         stats.evaluations += 1;
         acc(t, q, v)
     })?;
@@ -127,7 +129,7 @@ pub(crate) fn trial<C: Coordinates<N>, const N: usize>(
     check_state(&C::NAMES, t + h, &q1, &v1)?;
     stats.evaluations += 1;
     let ka7 = acc(t + h, &q1, &v1)?;
-    let kq7 = v1;
+    let kq7 = rates(&q1, &v1);
     let mut sum = 0.0;
     for i in 0..N {
         let eq =
@@ -181,7 +183,7 @@ pub(crate) fn dense_output<const N: usize>(
     (q1, v1): (&[f64; N], &[f64; N]),
     k: &[[f64; N]; 6],
 ) -> DenseOutput<N> {
-    // Stage 1 is (v₀, q̈₀) and stage 7 (FSAL) is (v₁, q̈₁): the derivatives of (q, v) at the ends.
+    // Stage 1 is (q̇₀, v̇₀) and stage 7 (FSAL) is (q̇₁, v̇₁): the derivatives of (q, v) at the ends.
     let [kq1, ka1, kq7, ka7, dq, dv] = k;
     let make = |y0: &[f64; N],
                 y1: &[f64; N],

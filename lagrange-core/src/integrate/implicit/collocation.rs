@@ -125,6 +125,7 @@ pub(super) fn collocation_step<M: Evaluate<N>, const N: usize, const S: usize>(
     stats: &mut Stats,
 ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
     newton::refuse_contacts::<M, N>(tableau.name)?;
+    newton::refuse_quasi_velocities(tableau.name, M::QUASI_VELOCITIES)?;
     // The previous step of this solver, if it ended where this one starts.
     let previous = memory.previous.filter(|prev| prev.t_end == t);
     let step = Collocation::start(mechanism, tableau, previous.as_ref(), (t, h), (q, v));

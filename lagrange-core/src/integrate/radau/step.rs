@@ -13,7 +13,7 @@ use crate::error::{Error, Result};
 use crate::integrate::control::{check_limit, initial_step_on, next_attempt};
 use crate::integrate::dense::DenseOutput;
 use crate::integrate::dopri5::settings::Dopri5;
-use crate::integrate::newton::breakdown;
+use crate::integrate::newton::{breakdown, refuse_quasi_velocities};
 use crate::integrate::pair::{sealed, AccelerationField, Accepted, EmbeddedPair, StepStart};
 use crate::integrate::Stats;
 use crate::model::{check_state, Coordinates};
@@ -226,7 +226,7 @@ impl EmbeddedPair for Radau5 {
                     ..Dopri5::default()
                 };
                 let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-                initial_step_on(acc, &dopri, start, 5, stats)
+                initial_step_on(acc, &dopri, start, start.2, 5, stats)
             }
         };
         Radau5Memory {
@@ -264,6 +264,7 @@ impl EmbeddedPair for Radau5 {
         stats: &mut Stats,
         dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
+        refuse_quasi_velocities("Radau5", field.quasi_velocities())?;
         let t = start.0;
         check_limit(t, t_limit)?;
         let (y0, f0) = first_order(start);
@@ -323,6 +324,7 @@ impl EmbeddedPair for Radau5 {
         stats: &mut Stats,
         dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
+        refuse_quasi_velocities("Radau5", field.quasi_velocities())?;
         let t = start.0;
         let (y0, _) = first_order(start);
         let mut fresh = memory.jacobians.is_none();

@@ -164,7 +164,7 @@ impl<S: Scalar, const B: usize> Articulated<S, B> {
             JointKind::Revolute(axis) => Some((axis, inertia.angular_column(axis), true)),
             JointKind::Prismatic(axis) => Some((axis, inertia.linear_column(axis), false)),
             JointKind::Fixed => None,
-            JointKind::Free(_) | JointKind::Ball(_) => {
+            JointKind::Free(..) | JointKind::Ball(..) => {
                 let ground = ground_acceleration(k);
                 return self.articulate_root(joint, moving.state, (inertia, bias), tau, &ground, b);
             }

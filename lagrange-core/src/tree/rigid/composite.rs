@@ -33,7 +33,7 @@ pub fn mass_matrix<S: Scalar, const N: usize, const B: usize>(
             JointKind::Revolute(axis) => Some(composite[b].angular_column(axis)),
             JointKind::Prismatic(axis) => Some(composite[b].linear_column(axis)),
             JointKind::Fixed => None,
-            JointKind::Free(_) | JointKind::Ball(_) => {
+            JointKind::Free(..) | JointKind::Ball(..) => {
                 free_block(joint, state[b], &composite[b], &mut m);
                 None
             }

@@ -3,7 +3,7 @@
 //! `#[mechanism]` prepares them from.
 
 use super::spatial::RigidInertia;
-use super::{composite, newton_euler, BodyConstants, RigidConstants, RigidTree};
+use super::{composite, free, newton_euler, BodyConstants, Joint, RigidConstants, RigidTree};
 use crate::dynamics::{self, finite_accelerations, EquationsOfMotion};
 use crate::error::Result;
 use crate::geometry::{Rot3, Scalar, Vec3};
@@ -14,16 +14,42 @@ use nalgebra::SVector;
 /// potentials — everything the declaration adds to the uniform field, which the recursions take as
 /// the ground's acceleration. Jᵀ F + Q − ∇V from one gradient pass over x (the tree's positions do
 /// not depend on t, so ẋ = J q̇). Zero, with no pass, when nothing of the kind is declared.
-pub fn other_generalized_forces<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+///
+/// The declaration's forces are functions of (q, q̇); where some of the tree's joints have the
+/// angular velocity for velocities (q̇ = G(q) v, [`free::position_rates`](super::free::position_rates)),
+/// they are evaluated at q̇ = G v and returned dual to v: Gᵀ (Jᵀ F + Q − ∇V), the power
+/// τ_q · q̇ = (Gᵀ τ_q) · v ([`free::velocity_forces`](super::free::velocity_forces)).
+pub fn other_generalized_forces<
+    M: Model<N, K>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const B: usize,
+>(
+    model: &M,
+    joints: &[Joint; B],
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> SVector<S, N> {
+    if !M::HAS_FORCES && !M::HAS_POTENTIAL {
+        return SVector::<S, N>::zeros();
+    }
+    if !free::has_angular_velocities(joints) {
+        return rate_forces(model, t, q, v);
+    }
+    let rates = free::position_rates(joints, q, v);
+    free::velocity_forces(joints, q, rate_forces(model, t, q, &rates))
+}
+
+/// [`other_generalized_forces`] at (t, q, q̇): Jᵀ F + Q − ∇V, dual to q̇.
+fn rate_forces<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
     model: &M,
     t: S,
     q: &[S; N],
     v: &[S; N],
 ) -> SVector<S, N> {
     let mut forces = SVector::<S, N>::zeros();
-    if !M::HAS_FORCES && !M::HAS_POTENTIAL {
-        return forces;
-    }
     // Motors and joint damping alone: no x, no Jacobian (the forces read neither).
     if M::GENERALIZED_FORCES_ONLY && !M::HAS_POTENTIAL {
         let mut direct = [S::zero(); N];
@@ -72,7 +98,7 @@ pub fn equations_of_motion<
     let (inertial_terms, gravity) = newton_euler::bias_and_gravity(&M::JOINTS, k, q, v);
     EquationsOfMotion {
         mass_matrix: composite::mass_matrix(&M::JOINTS, k, q),
-        generalized_forces: gravity + other_generalized_forces(model, t, q, v),
+        generalized_forces: gravity + other_generalized_forces(model, &M::JOINTS, t, q, v),
         inertial_terms,
     }
 }
@@ -94,19 +120,26 @@ pub fn inverse_dynamics<
     qdd: &[S; N],
 ) -> [S; N] {
     let tau = newton_euler::inverse_dynamics(&M::JOINTS, k, q, v, qdd);
-    less_other_forces(model, tau, t, q, v)
+    less_other_forces(model, &M::JOINTS, tau, t, q, v)
 }
 
 /// τ − (𝓕 − 𝓕_g): the bodies' joint torques less what the declaration's other forces supply.
 #[inline(always)]
-pub fn less_other_forces<M: Model<N, K>, S: Scalar, const N: usize, const K: usize>(
+pub fn less_other_forces<
+    M: Model<N, K>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const B: usize,
+>(
     model: &M,
+    joints: &[Joint; B],
     tau: [S; N],
     t: S,
     q: &[S; N],
     v: &[S; N],
 ) -> [S; N] {
-    (SVector::from(tau) - other_generalized_forces(model, t, q, v)).into()
+    (SVector::from(tau) - other_generalized_forces(model, joints, t, q, v)).into()
 }
 
 /// q̈ from the last sweep of the articulated-body algorithm, checked finite (the error names the

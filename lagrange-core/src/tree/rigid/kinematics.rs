@@ -32,12 +32,16 @@ impl<S: Scalar> JointState<S> {
             }
             JointKind::Prismatic(_) => JointState::Slid(q[joint.coordinate]),
             JointKind::Fixed => JointState::Welded,
-            JointKind::Free(chart) | JointKind::Ball(chart) => {
+            JointKind::Free(chart, velocities) | JointKind::Ball(chart, velocities) => {
                 // The recursions take these joints as a root's, with E the identity (and a free
                 // joint's r zero).
                 debug_assert!(joint.parent.is_none() && !joint.rotated);
                 debug_assert!(joint.offset == [false; 3] || !free::translates(joint));
-                JointState::Free(free::orientation(chart, q, free::orientation_at(joint)))
+                JointState::Free(free::orientation(
+                    (chart, velocities),
+                    q,
+                    free::orientation_at(joint),
+                ))
             }
         }
     }
@@ -175,7 +179,7 @@ pub(crate) fn velocity<S: Scalar, const N: usize>(
             v.linear[axis.indices().0] += rate;
             c
         }
-        JointKind::Fixed | JointKind::Free(_) | JointKind::Ball(_) => Motion::zero(),
+        JointKind::Fixed | JointKind::Free(..) | JointKind::Ball(..) => Motion::zero(),
     };
     (v, c)
 }
@@ -214,7 +218,7 @@ pub fn kinetic_energy<S: Scalar, const N: usize, const B: usize>(
 #[inline(always)]
 pub(crate) fn rate_of<S: Scalar, const N: usize>(joint: &Joint, v: &[S; N]) -> S {
     match joint.kind {
-        JointKind::Fixed | JointKind::Free(_) | JointKind::Ball(_) => S::zero(),
+        JointKind::Fixed | JointKind::Free(..) | JointKind::Ball(..) => S::zero(),
         _ => v[joint.coordinate],
     }
 }

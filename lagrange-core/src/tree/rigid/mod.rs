@@ -70,12 +70,24 @@ pub enum JointKind {
     /// then its orientation R(c) by three coordinates of the chart
     /// ([`rot_mrp`](crate::geometry::rot_mrp) or [`rot_vector`](crate::geometry::rot_vector)).
     /// Only a root (no parent) is free, with E the identity and r zero: R_b = R(c), o_b = p (see
-    /// [`free`]).
-    Free(RotationChart),
+    /// [`free`]). Its velocities are (ṗ, ċ) or (ṗ, ω_b), as the [`Velocities`] say.
+    Free(RotationChart, Velocities),
     /// A ball joint (three coordinates from `coordinate` on): the body turns about its origin,
     /// fixed at the offset r in the world, by R(c) of the chart. Only a root has one, with E the
-    /// identity: R_b = R(c), o_b = r (see [`free`]).
-    Ball(RotationChart),
+    /// identity: R_b = R(c), o_b = r (see [`free`]). Its velocities are ċ or ω_b, as the
+    /// [`Velocities`] say.
+    Ball(RotationChart, Velocities),
+}
+
+/// What the velocities of a free or ball joint's orientation are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Velocities {
+    /// The chart's rates ċ: the coordinates' time derivatives, as for every other joint.
+    ChartRates,
+    /// The body's angular velocity ω_b (in its own frame), quasi-velocities: the coordinates
+    /// move by ċ = B(c)⁻¹ ω_b ([`free::position_rates`]), and the joint's motion subspace on them
+    /// is the identity (no B, no Ḃ in the recursions).
+    AngularVelocity,
 }
 
 /// A body's joint, as the declaration states it: what the compiler knows of the tree.
@@ -101,13 +113,13 @@ impl Joint {
     /// folded, however many bodies have it.
     pub const fn code(&self) -> u16 {
         // A joint that turns freely has no axis: the two bits say whether it translates and its
-        // chart.
+        // chart, bit 9 whether its velocities are the angular velocity.
         let (kind, axis) = match self.kind {
             JointKind::Revolute(a) => (0, axis_bits(a)),
             JointKind::Prismatic(a) => (1, axis_bits(a)),
             JointKind::Fixed => (2, 0),
-            JointKind::Free(c) => (3, chart_bit(c)),
-            JointKind::Ball(c) => (3, 2 + chart_bit(c)),
+            JointKind::Free(c, _) => (3, chart_bit(c)),
+            JointKind::Ball(c, _) => (3, 2 + chart_bit(c)),
         };
         kind | axis << 2
             | bit(self.rotated, 4)
@@ -115,6 +127,18 @@ impl Joint {
             | bit(self.offset[1], 6)
             | bit(self.offset[2], 7)
             | bit(self.parent.is_some(), 8)
+            | bit(
+                matches!(self.velocities(), Some(Velocities::AngularVelocity)),
+                9,
+            )
+    }
+
+    /// A free or ball joint's velocities, `None` for another joint.
+    pub const fn velocities(&self) -> Option<Velocities> {
+        match self.kind {
+            JointKind::Free(_, v) | JointKind::Ball(_, v) => Some(v),
+            _ => None,
+        }
     }
 
     /// The joint with what `code` holds taken from it (known where the code is a constant) and
@@ -131,12 +155,16 @@ impl Joint {
             0 => RotationChart::Mrp,
             _ => RotationChart::Vector,
         };
+        let velocities = match on(code, 9) {
+            false => Velocities::ChartRates,
+            true => Velocities::AngularVelocity,
+        };
         let kind = match (code & 3, bits >> 1) {
             (0, _) => JointKind::Revolute(axis),
             (1, _) => JointKind::Prismatic(axis),
             (2, _) => JointKind::Fixed,
-            (_, 0) => JointKind::Free(chart),
-            (_, _) => JointKind::Ball(chart),
+            (_, 0) => JointKind::Free(chart, velocities),
+            (_, _) => JointKind::Ball(chart, velocities),
         };
         let parent = match (on(code, 8), self.parent) {
             (true, Some(p)) => Some(p),

@@ -190,7 +190,7 @@ fn add_along_joint<S: Scalar, const N: usize>(
     match (joint.kind, state) {
         (JointKind::Revolute(axis), _) => a.angular[axis.indices().0] += qdd[joint.coordinate],
         (JointKind::Prismatic(axis), _) => a.linear[axis.indices().0] += qdd[joint.coordinate],
-        (JointKind::Free(_) | JointKind::Ball(_), JointState::Free(o)) => {
+        (JointKind::Free(..) | JointKind::Ball(..), JointState::Free(o)) => {
             *a = *a + free::motion_of(o, free::rates(qdd, joint))
         }
         _ => {}
@@ -204,7 +204,7 @@ pub(crate) fn along_joint<S: Scalar>(joint: &Joint, f: &Force<S>) -> Option<S> {
     match joint.kind {
         JointKind::Revolute(axis) => Some(f.moment[axis.indices().0]),
         JointKind::Prismatic(axis) => Some(f.force[axis.indices().0]),
-        JointKind::Fixed | JointKind::Free(_) | JointKind::Ball(_) => None,
+        JointKind::Fixed | JointKind::Free(..) | JointKind::Ball(..) => None,
     }
 }
 

@@ -73,7 +73,7 @@ fn floating_tree(chart: RotationChart) -> ([Joint; B], RigidConstants<B>) {
     }
     joints[0] = Joint {
         parent: None,
-        kind: JointKind::Free(chart),
+        kind: JointKind::Free(chart, Velocities::ChartRates),
         coordinate: 0,
         rotated: false,
         offset: [false; 3],
@@ -105,7 +105,7 @@ fn ball_tree(chart: RotationChart) -> ([Joint; B], RigidConstants<B>) {
             joint.coordinate -= 3;
         }
     }
-    joints[0].kind = JointKind::Ball(chart);
+    joints[0].kind = JointKind::Ball(chart, Velocities::ChartRates);
     joints[0].offset = [true; 3];
     k.bodies[0].offset = [0.2, -0.1, 0.4];
     (joints, k)
@@ -424,14 +424,19 @@ fn structural_zeros_left_out_change_nothing() {
 #[test]
 fn a_joint_s_code_holds_its_kind() {
     use RotationChart::{Mrp, Vector};
+    use Velocities::{AngularVelocity, ChartRates};
     let kinds = [
         JointKind::Revolute(Axis::Z),
         JointKind::Prismatic(Axis::Y),
         JointKind::Fixed,
-        JointKind::Free(Mrp),
-        JointKind::Free(Vector),
-        JointKind::Ball(Mrp),
-        JointKind::Ball(Vector),
+        JointKind::Free(Mrp, ChartRates),
+        JointKind::Free(Vector, ChartRates),
+        JointKind::Ball(Mrp, ChartRates),
+        JointKind::Ball(Vector, ChartRates),
+        JointKind::Free(Mrp, AngularVelocity),
+        JointKind::Free(Vector, AngularVelocity),
+        JointKind::Ball(Mrp, AngularVelocity),
+        JointKind::Ball(Vector, AngularVelocity),
     ];
     for kind in kinds {
         let joint = Joint {

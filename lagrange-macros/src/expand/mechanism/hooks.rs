@@ -1,7 +1,7 @@
 //! The step hooks of the `Dynamics` impl: what every integrator calls around a step — the
 //! constraints' projection and checks, and the rotation charts' switch.
 
-use super::{Glue, Prepared};
+use super::{Equations, Glue, Prepared};
 use crate::check::ChartKind;
 use crate::expand::{lit, private};
 use proc_macro2::{Literal, TokenStream};
@@ -54,7 +54,9 @@ pub(super) fn constraint_hooks(glue: &Glue, c: Literal) -> TokenStream {
 }
 
 /// A declaration with rotation charts keeps each regular after every step
-/// (`lagrange_core::geometry::switch_chart`); without, the trait's default (no switch).
+/// (`lagrange_core::geometry::switch_chart`, or `switch_orientation` for a chart whose velocities
+/// are the angular velocity: the coordinates move, the velocities stay); without, the trait's
+/// default (no switch).
 pub(super) fn switch_charts(glue: &Glue) -> Option<TokenStream> {
     if glue.charts.is_empty() {
         return None;
@@ -67,13 +69,37 @@ pub(super) fn switch_charts(glue: &Glue) -> Option<TokenStream> {
             ChartKind::Vector => quote!(Vector),
             ChartKind::Mrp => quote!(Mrp),
         };
+        let angular = glue.angular_velocities.contains(&chart.slots);
         let slots = chart.slots.map(lit);
-        quote!(#geometry::switch_chart(#geometry::RotationChart::#kind, [#(#slots),*], q, v))
+        match angular {
+            // The angular velocity is the rotation's, whatever its chart.
+            true => quote!(#geometry::switch_orientation(#geometry::RotationChart::#kind, [#(#slots),*], q)),
+            false => quote!(#geometry::switch_chart(#geometry::RotationChart::#kind, [#(#slots),*], q, v)),
+        }
     });
     Some(quote! {
         #[inline]
         fn switch_charts<S: #p::Scalar>(&self, q: &mut [S; #n], v: &mut [S; #n]) -> bool {
             false #(| #switches)*
+        }
+    })
+}
+
+/// A declaration with `#[angular_velocity]` charts (a rigid tree's free or ball joints, see
+/// `check::velocities`): its velocities are quasi-velocities and q̇ = G(q) v is the tree's
+/// (`lagrange_core::tree::rigid::free::position_rates`); without, the trait's defaults (q̇ = v).
+pub(super) fn quasi_velocities(glue: &Glue) -> Option<TokenStream> {
+    let (&Equations::Rigid(b), false) = (&glue.equations, glue.angular_velocities.is_empty())
+    else {
+        return None;
+    };
+    let p = private();
+    let (n, b) = (lit(glue.n), lit(b));
+    Some(quote! {
+        const QUASI_VELOCITIES: bool = true;
+        #[inline(always)]
+        fn position_rates_at<S: #p::Scalar>(&self, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
+            #p::tree::rigid::free::position_rates(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, q, v)
         }
     })
 }

@@ -21,17 +21,21 @@
 //! [`body_angular_velocity`](crate::geometry::body_angular_velocity) and dual-number derivatives.
 
 use super::super::spatial::{add3, cross, dot3, scale3, sub3, M3, V3};
+use super::super::Velocities;
 use crate::geometry::charts::{series, VERSINE_SERIES};
 use crate::geometry::{rot_mrp, rot_vector, vec3, RotationChart, Scalar};
 
 /// A free joint's orientation: its chart and its three coordinates in it, with what every map
-/// needs formed once: R(c) and, for the rotation vector, its coefficients.
+/// needs formed once: R(c) and, for the rotation vector, its coefficients. On a joint whose
+/// velocities are the angular velocity ω_b ([`Velocities::AngularVelocity`]) the maps between
+/// "rates" and ω_b are the identity and the bias zero: its velocities enter the body as they are.
 #[derive(Clone, Copy, Debug)]
 pub struct Orientation<S> {
     pub chart: RotationChart,
     pub c: V3<S>,
     r: M3<S>,
     k: [S; 5],
+    angular: bool,
 }
 
 /// x + k₁ c × x + k₂ c × (c × x): the shape every map of the rotation vector takes.
@@ -123,15 +127,31 @@ fn vector_coefficients<S: Scalar>(t: S) -> [S; 5] {
 }
 
 impl<S: Scalar> Orientation<S> {
-    /// The orientation at the coordinates `c` of `chart`.
+    /// The orientation at the coordinates `c` of `chart`, its maps those between the chart's
+    /// rates and the angular velocity.
     #[inline(always)]
     pub fn new(chart: RotationChart, c: V3<S>) -> Self {
+        Self::of(chart, Velocities::ChartRates, c)
+    }
+
+    /// The orientation at the coordinates `c` of `chart` of a joint with `velocities`.
+    #[inline(always)]
+    pub fn of(chart: RotationChart, velocities: Velocities, c: V3<S>) -> Self {
         let v = vec3(c[0], c[1], c[2]);
+        let angular = velocities == Velocities::AngularVelocity;
         let (r, k) = match chart {
             RotationChart::Mrp => (rot_mrp(v).rows, [S::zero(); 5]),
+            // The coefficients serve the maps alone, which the angular velocity does not take.
+            RotationChart::Vector if angular => (rot_vector(v).rows, [S::zero(); 5]),
             RotationChart::Vector => (rot_vector(v).rows, vector_coefficients(dot3(c, c))),
         };
-        Orientation { chart, c, r, k }
+        Orientation {
+            chart,
+            c,
+            r,
+            k,
+            angular,
+        }
     }
 
     /// R(c), by rows: the body's axes in the world by columns.
@@ -143,6 +163,9 @@ impl<S: Scalar> Orientation<S> {
     /// ω_b = B ċ: the body's angular velocity from the coordinates' rates.
     #[inline(always)]
     pub fn angular_velocity(&self, rates: V3<S>) -> V3<S> {
+        if self.angular {
+            return rates;
+        }
         let c = self.c;
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, rates, false), b_factor(c)),
@@ -156,6 +179,9 @@ impl<S: Scalar> Orientation<S> {
     /// Bᵀ n: the generalized forces of a moment n (body frame) on the coordinates.
     #[inline(always)]
     pub fn generalized_moment(&self, n: V3<S>) -> V3<S> {
+        if self.angular {
+            return n;
+        }
         let c = self.c;
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, n, true), b_factor(c)),
@@ -169,6 +195,9 @@ impl<S: Scalar> Orientation<S> {
     /// B⁻¹ ω: the rates whose angular velocity is ω.
     #[inline(always)]
     pub fn rates_of(&self, omega: V3<S>) -> V3<S> {
+        if self.angular {
+            return omega;
+        }
         let c = self.c;
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, omega, true), S::from(0.25)),
@@ -182,6 +211,9 @@ impl<S: Scalar> Orientation<S> {
     /// B⁻ᵀ τ: the moment whose generalized forces on the coordinates are τ.
     #[inline(always)]
     pub fn moment_of(&self, tau: V3<S>) -> V3<S> {
+        if self.angular {
+            return tau;
+        }
         let c = self.c;
         match self.chart {
             RotationChart::Mrp => scale3(a_map(c, tau, false), S::from(0.25)),
@@ -195,6 +227,9 @@ impl<S: Scalar> Orientation<S> {
     /// Ḃ ċ with c̈ held, given ω_b = B ċ: the angular part of the joint's bias acceleration.
     #[inline(always)]
     pub fn angular_bias(&self, rates: V3<S>, omega: V3<S>) -> V3<S> {
+        if self.angular {
+            return [S::zero(); 3];
+        }
         let c = self.c;
         let along = dot3(c, rates);
         match self.chart {
