@@ -8,6 +8,7 @@
 use lagrange::geometry::{body_angular_velocity, chart_rates, RotationChart};
 use lagrange::prelude::*;
 use lagrange::tree::rigid::{JointKind, RigidTree, Velocities};
+use lagrange::Seed;
 use lagrange_gallery::scenes::tumbling_body::{closed_form, BODY, OMEGA0};
 
 /// The gallery's tumbling body (moments 1, 2, 3), turned by the chart `$chart` about a fixed point,
@@ -410,3 +411,131 @@ agrees_converted!(
         std::f64::consts::PI + 0.05
     ]
 );
+
+/// The methods built on q̇ = v — the collocation methods and the variational integrator, which step
+/// momenta conjugate to q̇, Störmer–Verlet, Radau5's Newton matrix — refuse such a declaration,
+/// decided by the declaration: the state is unchanged.
+#[test]
+fn methods_built_on_rates_refuse_angular_velocities() {
+    let start = spinning_vector::Coords {
+        attitude: [0.1, 0.2, 0.3],
+    };
+    let spin = spinning_vector::Coords { attitude: OMEGA0 };
+    let s0 = spinning_vector::State::new(0.0, start, spin);
+    let refused = |result: lagrange::Result<()>| {
+        let error = result.expect_err("refused");
+        assert!(
+            matches!(error, lagrange::Error::UnsuitableMethod { .. }),
+            "{error}"
+        );
+        assert!(error.to_string().contains("#[angular_velocity]"), "{error}");
+    };
+    let mut s = s0;
+    refused(VECTOR.step::<GaussLegendre2>(&mut s, 0.01));
+    refused(VECTOR.step::<ImplicitMidpoint>(&mut s, 0.01));
+    refused(VECTOR.step::<Variational>(&mut s, 0.01));
+    refused(VECTOR.step::<StormerVerlet>(&mut s, 0.01));
+    assert_eq!(s, s0);
+    let mut run = Stepper::new(&VECTOR, Radau5::new(1e-8, 1e-8), &s0).unwrap();
+    refused(run.integrate(1.0, &mut [], |_| {}).map(|_| ()));
+}
+
+/// The linearization's top row is [∂(G v)/∂q, G] (not [0, I]): G from the chart's inverse map and
+/// ∂(G v)/∂q by central differences of G v (step 1e-6: O(δ²) truncation, 1e-10 rounding; 1e-7
+/// allowed); the bottom row is v̇'s, checked against central differences of the accelerations.
+#[test]
+fn linearization_has_the_position_rates_row() {
+    use lagrange::analysis::linearize;
+    let sys = quasi_mrp::Floater {
+        m: 1.3,
+        push: 0.7,
+        g: 9.81,
+    };
+    let (q, v) = floater_states(&[0.7])[0];
+    let state = |q: [f64; 7], v: [f64; 7]| {
+        quasi_mrp::State::new(
+            0.0,
+            quasi_mrp::Coords::from_array(q),
+            quasi_mrp::Coords::from_array(v),
+        )
+    };
+    let lin = linearize(&sys, &state(q, v)).unwrap();
+    let delta = 1e-6;
+    for j in 0..7 {
+        let moved = |sign: f64| -> [f64; 7] {
+            std::array::from_fn(|i| if i == j { q[i] + sign * delta } else { q[i] })
+        };
+        let (plus, minus) = (moved(1.0), moved(-1.0));
+        let rates = |x: &[f64; 7]| rates_of(RotationChart::Mrp, x, &v);
+        let column: Vec<f64> = (0..7)
+            .map(|i| (rates(&plus)[i] - rates(&minus)[i]) / (2.0 * delta))
+            .collect();
+        let got: Vec<f64> = lin.dqd_dq.column(j).iter().copied().collect();
+        agree(&got, &column, 1e-7, "∂(G v)/∂q");
+        let unit: [f64; 7] = std::array::from_fn(|i| if i == j { 1.0 } else { 0.0 });
+        let column = rates_of(RotationChart::Mrp, &q, &unit);
+        let got: Vec<f64> = lin.dqd_dv.column(j).iter().copied().collect();
+        agree(&got, &column, 1e-14, "G");
+        let acc = |x: [f64; 7]| sys.accelerations(&state(x, v)).unwrap().to_array();
+        let (a, b) = (acc(plus), acc(minus));
+        let column: Vec<f64> = (0..7).map(|i| (a[i] - b[i]) / (2.0 * delta)).collect();
+        let got: Vec<f64> = lin.dqdd_dq.column(j).iter().copied().collect();
+        agree(&got, &column, 1e-7, "∂v̇/∂q");
+    }
+    // The assembled A carries the blocks.
+    let a = lin.a_matrix();
+    assert_eq!(a[(AT, 7 + AT)], lin.dqd_dv[(AT, AT)]);
+    assert_ne!(a[(AT, AT + 1)], 0.0);
+}
+
+/// Trajectory sensitivities (RK4 on dual numbers, the position rates along) seeded on ω_b(0):
+/// against central differences of two runs (δ = 1e-6; the runs are the same f64 operations, so
+/// the quotient's error is O(δ²) and 1e-16/δ, 1e-7 allowed).
+#[test]
+fn sensitivities_carry_the_position_rates() {
+    let start = spinning_vector::Coords {
+        attitude: [0.2, -0.1, 0.3],
+    };
+    let run = |w: f64| {
+        let spin = spinning_vector::Coords {
+            attitude: [w, 0.0, 2.0],
+        };
+        let s0 = spinning_vector::State::new(0.0, start, spin);
+        let mut run = Stepper::new(&VECTOR, Rk4::with_step(0.01), &s0)
+            .unwrap()
+            .with_sensitivities([Seed::Velocity("attitude[0]")])
+            .unwrap();
+        run.integrate(3.0, &mut [], |_| {}).unwrap();
+        let s = run.sensitivities();
+        (s.state, s.dq[0], s.dv[0])
+    };
+    let (state, dq, dv) = run(1.0);
+    // The tangent's real parts are the plain run's (to rounding: the tree's passes on dual numbers
+    // and on f64 are not the same operations everywhere).
+    let spin = spinning_vector::Coords {
+        attitude: [1.0, 0.0, 2.0],
+    };
+    let s0 = spinning_vector::State::new(0.0, start, spin);
+    let mut plain = Stepper::new(&VECTOR, Rk4::with_step(0.01), &s0).unwrap();
+    plain.integrate(3.0, &mut [], |_| {}).unwrap();
+    let end = plain.state();
+    agree(&state.q.attitude, &end.q.attitude, 1e-12, "q");
+    agree(&state.v.attitude, &end.v.attitude, 1e-12, "v");
+    let delta = 1e-6;
+    let (plus, minus) = (run(1.0 + delta).0, run(1.0 - delta).0);
+    let quotient = |a: [f64; 3], b: [f64; 3]| -> Vec<f64> {
+        (0..3).map(|k| (a[k] - b[k]) / (2.0 * delta)).collect()
+    };
+    agree(
+        &dq.attitude,
+        &quotient(plus.q.attitude, minus.q.attitude),
+        1e-7,
+        "∂q/∂ω₁(0)",
+    );
+    agree(
+        &dv.attitude,
+        &quotient(plus.v.attitude, minus.v.attitude),
+        1e-7,
+        "∂ω/∂ω₁(0)",
+    );
+}

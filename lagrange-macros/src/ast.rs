@@ -364,6 +364,8 @@ impl Mechanism {
             false => Fields::Parameters,
         };
         let fields = struct_fields(cx, &s, what);
+        let mut s = s;
+        strip_angular_velocity(&mut s);
         reject_cfg(cx, &s.attrs, &format!("`{}`", s.ident));
         if s.ident == "Coords" {
             // Two `struct Coords`: rustc would say so too, but only once here.
@@ -403,6 +405,8 @@ impl Mechanism {
             return;
         }
         let fields = struct_fields(cx, &s, Fields::Inputs);
+        let mut s = s;
+        strip_angular_velocity(&mut s);
         if let Some((first, known)) = &mut self.inputs {
             cx.error_spanned_by(
                 &s.ident,
@@ -534,6 +538,16 @@ fn struct_fields(cx: &Ctxt, s: &ItemStruct, what: Fields) -> Vec<Field> {
             );
             Vec::new()
         }
+    }
+}
+
+/// The struct as the module keeps it: `#[angular_velocity]`, which [`struct_fields`] read (and
+/// reported where it does not belong), taken off its fields.
+fn strip_angular_velocity(s: &mut ItemStruct) {
+    for field in s.fields.iter_mut() {
+        field
+            .attrs
+            .retain(|a| !a.path().is_ident("angular_velocity"));
     }
 }
 
