@@ -14,6 +14,7 @@ use crate::dynamics::{solve_accelerations, EquationsOfMotion};
 use crate::error::{Error, Result};
 use crate::geometry::Scalar;
 use crate::model::{check_state, Coordinates, State};
+use crate::tree::rigid::{free, Joint};
 use nalgebra::SMatrix;
 use num_dual::DualSVec;
 
@@ -157,21 +158,31 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     /// the dual-number passes of [`crate::dynamics`].
     const CLOSED_FORM: bool = false;
 
-    /// Whether some of the velocities v are not the coordinates' rates but quasi-velocities — the
-    /// angular velocity of a free or ball joint declared with `#[angular_velocity]`
-    /// ([`Velocities::AngularVelocity`](crate::tree::rigid::Velocities::AngularVelocity)) — so
-    /// that q̇ = G(q) v ([`position_rates_at`](Dynamics::position_rates_at)) and every method
-    /// below reads v and returns v̇, the generalized forces and momenta dual to v. `false` (the
-    /// default): q̇ = v. The methods that step momenta conjugate to q̇ refuse such a mechanism
-    /// ([`Error::UnsuitableMethod`]); the explicit Runge–Kutta methods step it.
-    const QUASI_VELOCITIES: bool = false;
+    /// The joints whose free and ball members with
+    /// [`Velocities::AngularVelocity`](crate::tree::rigid::Velocities::AngularVelocity) (declared
+    /// `#[angular_velocity]`) have the body's angular velocity ω_b for velocities, not their
+    /// chart's rates: a rigid tree's joints, or none, the default, where every velocity is its
+    /// coordinate's rate. With such a joint the velocities are quasi-velocities, q̇ = G(q) v
+    /// ([`position_rates_at`](Dynamics::position_rates_at), the maps of
+    /// [`crate::tree::rigid::free`]), and every method below reads v and returns v̇, and
+    /// generalized forces and momenta dual to v.
+    const QUASI_VELOCITY_JOINTS: &'static [Joint] = &[];
 
-    /// q̇ = G(q) v: the coordinates' rates at velocities v (v itself, the default, unless
+    /// Whether the velocities are quasi-velocities (some joint of
+    /// [`QUASI_VELOCITY_JOINTS`](Dynamics::QUASI_VELOCITY_JOINTS) has the angular velocity). The
+    /// explicit Runge–Kutta methods step them; the methods on momenta conjugate to q̇ step the
+    /// coordinates' rates between conversions; Störmer–Verlet and Radau5 refuse them
+    /// ([`Error::UnsuitableMethod`]).
+    const QUASI_VELOCITIES: bool = free::has_angular_velocities(Self::QUASI_VELOCITY_JOINTS);
+
+    /// q̇ = G(q) v: the coordinates' rates at velocities v (v itself unless
     /// [`QUASI_VELOCITIES`](Dynamics::QUASI_VELOCITIES)), for any scalar.
     #[inline(always)]
     fn position_rates_at<S: Scalar>(&self, q: &[S; N], v: &[S; N]) -> [S; N] {
-        let _ = q;
-        *v
+        match Self::QUASI_VELOCITIES {
+            false => *v,
+            true => free::position_rates(Self::QUASI_VELOCITY_JOINTS, q, v),
+        }
     }
 
     /// Checks the parameters: finite, masses and inertias positive (what `Mechanism::validate`

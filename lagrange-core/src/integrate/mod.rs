@@ -73,6 +73,7 @@ pub mod implicit;
 pub(crate) mod newton;
 pub mod pair;
 pub mod radau;
+mod rates;
 pub mod rattle;
 pub(crate) mod rk4;
 mod stepper;

@@ -53,9 +53,10 @@
 //! step (see [`rattle`](super::rattle)).
 
 use super::canonical::{self, momentum_rate};
+use super::newton::MAX_NEWTON_ITERATIONS;
 use super::newton::{breakdown, count_exact_jacobians, jacobian_rows, max_norm, newton, seeded};
 use super::newton::{mass_weights, position_floor, NewtonScale, Unknowns as _};
-use super::newton::{refuse_quasi_velocities, MAX_NEWTON_ITERATIONS};
+use super::rates::step_in_rates;
 use super::rattle::{rows_and_jacobian, rows_in_force, rows_on};
 use super::validated_step;
 use super::{Integrator, Stats};
@@ -365,6 +366,8 @@ impl Variational {
         Ok((q1, v1, stats_out))
     }
 
+    /// A step and its counts; a mechanism with quasi-velocities stepped in its coordinates'
+    /// rates ([`step_in_rates`]).
     #[allow(clippy::type_complexity)]
     fn advance_counted<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
@@ -375,7 +378,27 @@ impl Variational {
         stats: &mut Stats,
         counts: &mut VariationalStepStats,
     ) -> Result<([f64; N], [f64; N])> {
-        refuse_quasi_velocities(Self::NAME, M::QUASI_VELOCITIES)?;
+        if !M::QUASI_VELOCITIES {
+            return Self::advance_counted_on(mechanism, t, (q, v), h, stats, counts);
+        }
+        let step = step_in_rates(mechanism, (q, v), |in_rates, rates| {
+            let (q1, rates1) = Self::advance_counted_on(in_rates, t, (q, rates), h, stats, counts)?;
+            Ok((q1, rates1, ()))
+        })?;
+        Ok((step.0, step.1))
+    }
+
+    /// [`advance_counted`](Self::advance_counted) on a mechanism whose velocities are the
+    /// coordinates' rates.
+    #[allow(clippy::type_complexity)]
+    fn advance_counted_on<M: Evaluate<N>, const N: usize>(
+        mechanism: &M,
+        t: f64,
+        (q, v): (&[f64; N], &[f64; N]),
+        h: f64,
+        stats: &mut Stats,
+        counts: &mut VariationalStepStats,
+    ) -> Result<([f64; N], [f64; N])> {
         // Which constraints are enforced is the declaration's, decided before anything is evaluated.
         let rows = rows_in_force(mechanism, Self::NAME)?;
         let p0 = mechanism.momenta_at(t, q, v);

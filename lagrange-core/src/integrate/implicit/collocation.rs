@@ -13,6 +13,7 @@ use crate::integrate::newton::{
     self, breakdown, carries_constraint_forces, mass_weights, max_norm, newton, position_floor,
     BlockLu, NewtonEnd, NewtonScale, Unknowns as _, MAX_NEWTON_ITERATIONS,
 };
+use crate::integrate::rates::step_in_rates;
 use crate::integrate::Stats;
 use nalgebra::{SMatrix, SVector};
 
@@ -113,6 +114,8 @@ impl<'a, M: Evaluate<N>, const N: usize, const S: usize> Collocation<'a, M, N, S
 
 /// One collocation step: the simplified Newton iteration with the memory's matrix (or a fresh one),
 /// falling back to the exact Newton iteration when even a fresh simplified one does not contract.
+/// A mechanism with quasi-velocities is stepped in its coordinates' rates ([`step_in_rates`]),
+/// the memory's matrices and predictor with them.
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub(super) fn collocation_step<M: Evaluate<N>, const N: usize, const S: usize>(
     mechanism: &M,
@@ -125,7 +128,24 @@ pub(super) fn collocation_step<M: Evaluate<N>, const N: usize, const S: usize>(
     stats: &mut Stats,
 ) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
     newton::refuse_contacts::<M, N>(tableau.name)?;
-    newton::refuse_quasi_velocities(tableau.name, M::QUASI_VELOCITIES)?;
+    if M::QUASI_VELOCITIES {
+        return step_in_rates(mechanism, (q, v), |in_rates, rates| {
+            collocation_step_on(in_rates, tableau, memory, (t, q, rates), h, stats)
+        });
+    }
+    collocation_step_on(mechanism, tableau, memory, (t, q, v), h, stats)
+}
+
+/// [`collocation_step`] on a mechanism whose velocities are the coordinates' rates.
+#[allow(clippy::type_complexity)]
+fn collocation_step_on<M: Evaluate<N>, const N: usize, const S: usize>(
+    mechanism: &M,
+    tableau: &Tableau<S>,
+    memory: &mut NewtonMemory<N, S>,
+    (t, q, v): (f64, &[f64; N], &[f64; N]),
+    h: f64,
+    stats: &mut Stats,
+) -> Result<([f64; N], [f64; N], ImplicitStepStats)> {
     // The previous step of this solver, if it ended where this one starts.
     let previous = memory.previous.filter(|prev| prev.t_end == t);
     let step = Collocation::start(mechanism, tableau, previous.as_ref(), (t, h), (q, v));

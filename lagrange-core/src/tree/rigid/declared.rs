@@ -39,7 +39,8 @@ pub fn other_generalized_forces<
         return rate_forces(model, t, q, v);
     }
     let rates = free::position_rates(joints, q, v);
-    free::velocity_forces(joints, q, rate_forces(model, t, q, &rates))
+    let forces: [S; N] = rate_forces(model, t, q, &rates).into();
+    free::velocity_forces(joints, q, &forces).into()
 }
 
 /// [`other_generalized_forces`] at (t, q, q̇): Jᵀ F + Q − ∇V, dual to q̇.

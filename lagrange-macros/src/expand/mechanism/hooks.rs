@@ -86,20 +86,18 @@ pub(super) fn switch_charts(glue: &Glue) -> Option<TokenStream> {
 }
 
 /// A declaration with `#[angular_velocity]` charts (a rigid tree's free or ball joints, see
-/// `check::velocities`): its velocities are quasi-velocities and q̇ = G(q) v is the tree's
-/// (`lagrange_core::tree::rigid::free::position_rates`); without, the trait's defaults (q̇ = v).
+/// `check::velocities`): the tree's joints, among which those whose velocities are the angular
+/// velocity, from which `lagrange_core` forms q̇ = G(q) v and the other maps
+/// (`tree::rigid::free`); without, the trait's default (none: q̇ = v).
 pub(super) fn quasi_velocities(glue: &Glue) -> Option<TokenStream> {
     let (&Equations::Rigid(b), false) = (&glue.equations, glue.angular_velocities.is_empty())
     else {
         return None;
     };
     let p = private();
-    let (n, b) = (lit(glue.n), lit(b));
+    let (n, bodies) = (lit(glue.n), lit(b));
     Some(quote! {
-        const QUASI_VELOCITIES: bool = true;
-        #[inline(always)]
-        fn position_rates_at<S: #p::Scalar>(&self, q: &[S; #n], v: &[S; #n]) -> [S; #n] {
-            #p::tree::rigid::free::position_rates(&<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS, q, v)
-        }
+        const QUASI_VELOCITY_JOINTS: &'static [#p::tree::rigid::Joint] =
+            &<Self as #p::tree::rigid::RigidTree<#n, #bodies>>::JOINTS;
     })
 }

@@ -26,6 +26,7 @@
 //! angular rows (`pivot_acceleration`).
 
 mod charts;
+mod quasi;
 
 use super::inertia::Inertia;
 use super::spatial::{cross, scale3, sub3, Force, Motion, M3, V3};
@@ -35,6 +36,10 @@ use crate::geometry::Scalar;
 use crate::linalg::{cholesky_solve, NotPositiveDefinite};
 pub(crate) use charts::Orientation;
 use nalgebra::{SMatrix, SVector};
+pub use quasi::{
+    has_angular_velocities, position_rates, rate_forces, velocities_from_rates, velocity_bias,
+    velocity_forces,
+};
 
 /// Whether the joint translates too: a free joint (six coordinates, p then c), not a ball joint
 /// (three, c).
@@ -57,63 +62,6 @@ pub(crate) fn orientation<S: Scalar, const N: usize>(
     at: usize,
 ) -> Orientation<S> {
     Orientation::of(chart, velocities, [q[at], q[at + 1], q[at + 2]])
-}
-
-/// q̇ = G(q) v for the coordinates of a tree whose free and ball joints may have the angular
-/// velocity for velocities: v itself, but ċ = B(c)⁻¹ ω_b on the orientation of every joint with
-/// [`Velocities::AngularVelocity`] (the chart's map, see `charts`). What the integrators advance
-/// the positions by.
-#[inline]
-pub fn position_rates<S: Scalar, const N: usize, const B: usize>(
-    joints: &[Joint; B],
-    q: &[S; N],
-    v: &[S; N],
-) -> [S; N] {
-    let mut rates = *v;
-    for joint in joints {
-        if let JointKind::Free(chart, Velocities::AngularVelocity)
-        | JointKind::Ball(chart, Velocities::AngularVelocity) = joint.kind
-        {
-            let at = orientation_at(joint);
-            let c = Orientation::new(chart, [q[at], q[at + 1], q[at + 2]]);
-            let dc = c.rates_of([v[at], v[at + 1], v[at + 2]]);
-            rates[at..at + 3].copy_from_slice(&dc);
-        }
-    }
-    rates
-}
-
-/// Whether some free or ball joint among `joints` has the angular velocity for velocities.
-#[inline(always)]
-pub fn has_angular_velocities<const B: usize>(joints: &[Joint; B]) -> bool {
-    joints
-        .iter()
-        .any(|j| j.velocities() == Some(Velocities::AngularVelocity))
-}
-
-/// Gᵀ τ: generalized forces τ dual to the coordinates' rates q̇ made dual to the velocities v,
-/// q̇ = G v ([`position_rates`]) — τ itself but B⁻ᵀ τ_c on the orientation of every joint with
-/// [`Velocities::AngularVelocity`] (the moment whose generalized forces are τ_c).
-#[inline]
-pub fn velocity_forces<S: Scalar, const N: usize, const B: usize>(
-    joints: &[Joint; B],
-    q: &[S; N],
-    tau: SVector<S, N>,
-) -> SVector<S, N> {
-    let mut out = tau;
-    for joint in joints {
-        if let JointKind::Free(chart, Velocities::AngularVelocity)
-        | JointKind::Ball(chart, Velocities::AngularVelocity) = joint.kind
-        {
-            let at = orientation_at(joint);
-            let c = Orientation::new(chart, [q[at], q[at + 1], q[at + 2]]);
-            let n = c.moment_of([tau[at], tau[at + 1], tau[at + 2]]);
-            for k in 0..3 {
-                out[at + k] = n[k];
-            }
-        }
-    }
-    out
 }
 
 /// Where entry `l` of the six (p, c) is among the coordinates: a ball joint has no p.
