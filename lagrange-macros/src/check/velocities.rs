@@ -7,30 +7,27 @@
 
 use super::model::Model;
 use crate::ast::Field;
+use crate::attr::Kind;
 use crate::ctxt::Ctxt;
 use crate::structure::rigid::{rigid_tree, Joint};
 
 /// The charts whose velocities are angular velocities, as their three flat slots. Reported: a
-/// marked field on a declaration with constraint rows or `#[inputs]`, or whose bodies the rigid
-/// tree pass does not take; a marked coordinate outside every free or ball joint's chart; a chart
-/// marked in part.
+/// marked field on a declaration with constraint rows, or whose bodies the rigid tree pass does
+/// not take; a marked coordinate outside every free or ball joint's chart; a generalized force on
+/// a marked coordinate; a chart marked in part.
 pub(super) fn check_angular_velocities(cx: &Ctxt, model: &Model) -> Vec<[usize; 3]> {
     let marked = marked_fields(model.coords);
     let Some((first, _)) = marked.first() else {
         return Vec::new();
     };
     let marker = |f: &Field| f.angular_velocity.clone().expect("a marked field");
-    if !model.constraints.is_empty() || model.inputs_ident.is_some() {
-        let what = match model.constraints.is_empty() {
-            true => "`#[inputs]`",
-            false => "constraint rows",
-        };
-        let message = format!(
-            "`#[angular_velocity]` with {what} is not supported yet: they read the velocities as \
-             the coordinates' rates; leave the attribute out (the velocities are then the chart's \
-             rates)"
+    if !model.constraints.is_empty() {
+        cx.error_spanned_by(
+            marker(first),
+            "`#[angular_velocity]` with constraint rows is not supported yet: the rows read the \
+             velocities as the coordinates' rates; leave the attribute out (the velocities are \
+             then the chart's rates)",
         );
-        cx.error_spanned_by(marker(first), message);
         return Vec::new();
     }
     let Some(tree) = rigid_tree(model) else {
@@ -61,6 +58,16 @@ pub(super) fn check_angular_velocities(cx: &Ctxt, model: &Model) -> Vec<[usize; 
                 field.ident
             );
             cx.error_spanned_by(marker(field), message);
+        }
+    }
+    for force in &model.forces {
+        if force.kind == Kind::GeneralizedForce && is_marked(force.target) {
+            cx.error_spanned_by(
+                force.decl.ident(),
+                "a generalized force on a coordinate whose velocity is an angular velocity \
+                 (`#[angular_velocity]`) would be dual to the chart's rate, not to the velocity: \
+                 turn the body with `#[torque(on = body)]`",
+            );
         }
     }
     for chart in &charts {

@@ -65,25 +65,35 @@ pub(super) fn inputs_items(model: &Model) -> TokenStream {
     }
 }
 
-/// The `Dynamics` items of a declaration with `nu` inputs (N = `n`, K = `k`, `constrained` rows):
-/// the inputs' names, and q̈ with inputs of the state's scalar — the generic solve on the
-/// declaration with those inputs held (`WithInputs`), the constrained one where it has rows.
+/// The `Dynamics` items of a declaration with `nu` inputs (N = `n`, K = `k`, `constrained` rows,
+/// `rigid` the bodies of a rigid tree it takes the recursions of): the inputs' names, and q̈ with
+/// inputs of the state's scalar — the declaration with those inputs held (`WithInputs`) through
+/// the constrained solve where it has rows, else the rigid tree's recursion (whose velocities may
+/// be angular velocities), else the generic solve.
 pub(super) fn dynamics_items(
-    n: usize,
-    k: usize,
-    nu: usize,
+    (n, k, nu): (usize, usize, usize),
     constrained: Option<usize>,
+    rigid: bool,
 ) -> TokenStream {
     let p = private();
     let (n, k, nu) = (lit(n), lit(k), lit(nu));
     let held =
         quote!(#p::lagrange_core::inputs::WithInputs::<'_, Self, S, #nu>::held(self, inputs));
-    let solve = match constrained {
-        Some(c) => {
+    let solve = match (constrained, rigid) {
+        (Some(c), _) => {
             let c = lit(c);
             quote!(#p::lagrange_core::constraints::accelerations::<_, S, #n, #k, #c>(&#held, t, q, v))
         }
-        None => quote!(#p::dynamics::accelerations_generic::<_, S, #n, #k>(&#held, t, q, v)),
+        (None, true) => quote!(self.__lagrange_rigid_accelerations(
+            &#held,
+            &self.__lagrange_rigid_constants(),
+            t,
+            q,
+            v
+        )),
+        (None, false) => {
+            quote!(#p::dynamics::accelerations_generic::<_, S, #n, #k>(&#held, t, q, v))
+        }
     };
     quote! {
         const INPUT_NAMES: &'static [&'static str] =

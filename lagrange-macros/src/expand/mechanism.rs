@@ -130,8 +130,10 @@ pub(super) fn mechanism_impl(glue: &Glue) -> TokenStream {
     let constraint_hooks = glue.constrained.map(|c| constraint_hooks(glue, lit(c)));
     let switch_charts = switch_charts(glue);
     let quasi_velocities = quasi_velocities(glue);
-    let inputs =
-        (glue.inputs).map(|nu| super::inputs::dynamics_items(glue.n, glue.k, nu, glue.constrained));
+    let inputs = (glue.inputs).map(|nu| {
+        let rigid = matches!(glue.equations, Equations::Rigid(_));
+        super::inputs::dynamics_items((glue.n, glue.k, nu), glue.constrained, rigid)
+    });
     quote! {
         #prepare
         impl #p::Dynamics<#n> for #params {
