@@ -2,7 +2,8 @@
 //! (`scripts/peers/floating.sh`), on `#[lagrange::urdf(.., floating)]` declarations against
 //! Pinocchio's free flyer, at the states and with the values that `scripts/peers/floating.py`
 //! wrote, converted to the declaration's coordinates — base position p, modified Rodrigues
-//! parameters σ of the base's rotation, joints — and back.
+//! parameters σ of the base's rotation (its velocities the base's angular velocity ω, as
+//! Pinocchio's), joints — and back.
 //!
 //! ```text
 //! floating-check check --robot R --states FILE   q̈ (`accelerations`) against Pinocchio's ABA and
@@ -18,19 +19,16 @@
 //! loop are those of the C drivers (`robots_common.h`, `timing.h`).
 //!
 //! The conversions (Pinocchio's velocity: the base's linear velocity u and angular velocity ω in
-//! the base frame; B(σ) the map σ̇ ↦ ω, R the base's rotation):
-//! - velocity: ṗ = R u, σ̇ = B⁻¹ ω;
-//! - acceleration: Pinocchio's is the derivative of (u, ω), so p̈ = R (u̇ + ω × u) and
-//!   ω̇ = B σ̈ + Ḃ σ̇;
-//! - force: Pinocchio's (f, n) in the base frame does the work of (R f, Bᵀ n) on (ṗ, σ̇), the
+//! the base frame, R the base's rotation; the declaration's: ṗ in the world frame and the same ω):
+//! - velocity: ṗ = R u, ω as it is;
+//! - acceleration: Pinocchio's is the derivative of (u, ω), so p̈ = R (u̇ + ω × u), ω̇ as it is;
+//! - force: Pinocchio's (f, n) in the base frame does the work of (R f, n) on (ṗ, ω), the
 //!   transpose of the velocity's map.
 
 mod peer_timing;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use lagrange::geometry::{body_angular_velocity, chart_rates, RotationChart};
 use lagrange::prelude::*;
-use num_dual::Dual2_64;
 use peer_timing::{as_coordinate, print_time};
 use std::error::Error as StdError;
 use std::hint::black_box;
@@ -98,12 +96,11 @@ enum Label {
     InverseDynamics,
 }
 
-/// The base of a state: its rotation R (from Pinocchio's unit quaternion), σ, σ̇ = B⁻¹ ω, and
-/// Pinocchio's base-frame velocity (u, ω).
+/// The base of a state: its rotation R (from Pinocchio's unit quaternion), σ, and Pinocchio's
+/// base-frame velocity (u, ω).
 struct Base {
     rotation: Rot3<f64>,
     sigma: [f64; 3],
-    rates: [f64; 3],
     linear: [f64; 3],
     omega: [f64; 3],
 }
@@ -123,31 +120,6 @@ struct Sample<C> {
 /// A file's states: where each of Pinocchio's joints stands among the declaration's coordinates,
 /// and the samples.
 type Samples<C> = (Vec<usize>, Vec<Sample<C>>);
-
-/// The skew part of Rᵀ R̈ as a vector, from R's values and its second derivatives.
-fn skew_vee(value: &Rot3<f64>, derivative: &Rot3<f64>) -> [f64; 3] {
-    let m = |i: usize, j: usize| {
-        (0..3)
-            .map(|k| value.rows[k][i] * derivative.rows[k][j])
-            .sum::<f64>()
-    };
-    let skew = |i: usize, j: usize| -> f64 { (m(i, j) - m(j, i)) / 2.0 };
-    [skew(2, 1), skew(0, 2), skew(1, 0)]
-}
-
-/// The body-frame angular acceleration along σ(t) = σ + σ̇ t + σ̈ t²/2: ω̇ = vee(RᵀR̈), ṘᵀṘ being
-/// symmetric.
-fn angular_acceleration(sigma: [f64; 3], rate: [f64; 3], acc: [f64; 3]) -> [f64; 3] {
-    let d = |k: usize| Dual2_64::new(sigma[k], rate[k], acc[k]);
-    let r = rot_mrp(vec3(d(0), d(1), d(2)));
-    let re = Rot3 {
-        rows: r.rows.map(|row| row.map(|x| x.re)),
-    };
-    let second = Rot3 {
-        rows: r.rows.map(|row| row.map(|x| x.v2)),
-    };
-    skew_vee(&re, &second)
-}
 
 /// The rotation of a unit quaternion (x, y, z, w).
 fn quaternion_rotation([x, y, z, w]: [f64; 4]) -> Rot3<f64> {
@@ -184,14 +156,11 @@ fn base(q: &[f64], v: &[f64]) -> BoxResult<Base> {
             return Err("R(σ) differs from the quaternion's rotation".into());
         }
     }
-    let omega = [v[3], v[4], v[5]];
-    let rates = chart_rates(RotationChart::Mrp, sigma, omega).ok_or("σ outside the chart")?;
     Ok(Base {
         rotation,
         sigma,
-        rates,
         linear: [v[0], v[1], v[2]],
-        omega,
+        omega: [v[3], v[4], v[5]],
     })
 }
 
@@ -224,45 +193,27 @@ fn declared<const N: usize>(
     x
 }
 
-/// Pinocchio's acceleration (u̇, ω̇, joints) as the declaration's q̈: p̈ = R (u̇ + ω × u), σ̈ =
-/// B⁻¹ (ω̇ − Ḃ σ̇), Ḃ σ̇ being the angular acceleration at σ̈ = 0.
-fn acceleration_to_ours<const N: usize>(
-    b: &Base,
-    a: &[f64],
-    order: &[usize],
-) -> BoxResult<[f64; N]> {
+/// Pinocchio's acceleration (u̇, ω̇, joints) as the declaration's v̇: p̈ = R (u̇ + ω × u), ω̇.
+fn acceleration_to_ours<const N: usize>(b: &Base, a: &[f64], order: &[usize]) -> [f64; N] {
     let turn = cross(b.omega, b.linear);
     let linear = rotate(&b.rotation, [0, 1, 2].map(|k| a[k] + turn[k]));
-    let coriolis = angular_acceleration(b.sigma, b.rates, [0.0; 3]);
-    let spin = [0, 1, 2].map(|k| a[3 + k] - coriolis[k]);
-    let angular = chart_rates(RotationChart::Mrp, b.sigma, spin).ok_or("σ outside the chart")?;
-    Ok(declared(linear, angular, &a[6..], order))
+    declared(linear, [a[3], a[4], a[5]], &a[6..], order)
 }
 
-/// The declaration's q̈ as Pinocchio's acceleration: u̇ = Rᵀ p̈ − ω × u, ω̇ = vee(RᵀR̈).
+/// The declaration's v̇ as Pinocchio's acceleration: u̇ = Rᵀ p̈ − ω × u, ω̇.
 fn acceleration_to_pinocchio(b: &Base, qdd: &[f64], order: &[usize]) -> Vec<f64> {
     let body = rotate(&b.rotation.transpose(), [qdd[0], qdd[1], qdd[2]]);
     let turn = cross(b.omega, b.linear);
     let mut a: Vec<f64> = (0..3).map(|k| body[k] - turn[k]).collect();
-    a.extend(angular_acceleration(
-        b.sigma,
-        b.rates,
-        [qdd[3], qdd[4], qdd[5]],
-    ));
+    a.extend([qdd[3], qdd[4], qdd[5]]);
     a.extend(order.iter().map(|&i| qdd[i]));
     a
 }
 
-/// Pinocchio's generalized force (f, n in the base frame, joints) as the declaration's: R f and
-/// Bᵀ n, (Bᵀ n)ₖ = n · B eₖ.
+/// Pinocchio's generalized force (f, n in the base frame, joints) as the declaration's: R f, n.
 fn force_to_ours<const N: usize>(b: &Base, tau: &[f64], order: &[usize]) -> [f64; N] {
     let linear = rotate(&b.rotation, [tau[0], tau[1], tau[2]]);
-    let angular = [0, 1, 2].map(|k| {
-        let unit = std::array::from_fn(|j| if j == k { 1.0 } else { 0.0 });
-        let column = body_angular_velocity(RotationChart::Mrp, b.sigma, unit);
-        (0..3).map(|j| tau[3 + j] * column[j]).sum()
-    });
-    declared(linear, angular, &tau[6..], order)
+    declared(linear, [tau[3], tau[4], tau[5]], &tau[6..], order)
 }
 
 /// The file's states in the declaration's coordinates (the file: `floating.py`).
@@ -299,9 +250,9 @@ fn read_samples<M: Mechanism<N>, const N: usize>(path: &Path) -> BoxResult<Sampl
         let base = base(q, v)?;
         let position = [q[0], q[1], q[2]];
         let coords = declared(position, base.sigma, &q[7..], &order);
-        let rates = declared(
+        let velocities = declared(
             rotate(&base.rotation, base.linear),
-            base.rates,
+            base.omega,
             &v[6..],
             &order,
         );
@@ -309,9 +260,9 @@ fn read_samples<M: Mechanism<N>, const N: usize>(path: &Path) -> BoxResult<Sampl
             state: State::new(
                 0.0,
                 Coordinates::from_array(coords),
-                Coordinates::from_array(rates),
+                Coordinates::from_array(velocities),
             ),
-            qdd: Coordinates::from_array(acceleration_to_ours(&base, b, &order)?),
+            qdd: Coordinates::from_array(acceleration_to_ours(&base, b, &order)),
             tau: force_to_ours::<N>(&base, tau, &order).to_vec(),
             aba: a.to_vec(),
             base,

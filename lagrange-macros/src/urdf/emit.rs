@@ -129,7 +129,9 @@ impl Declaration<'_> {
             /// The floating base's frame origin in the world frame.
             pub #p: [f64; 3],
             /// The floating base's orientation: modified Rodrigues parameters
-            /// n tan(θ/4) of the rotation by θ about n, kept within |σ| ≤ 1 (θ ≤ π).
+            /// n tan(θ/4) of the rotation by θ about n, kept within |σ| ≤ 1 (θ ≤ π); its
+            /// velocities are the base's angular velocity in the base's frame.
+            #[angular_velocity]
             pub #r: [f64; 3],
         };
         (coords, Some(self.base_body(base)))
