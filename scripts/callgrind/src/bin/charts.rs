@@ -3,7 +3,10 @@
 //! (`rot_vector`), as modified Rodrigues parameters (`rot_mrp`), as a unit quaternion (four
 //! coordinates and the norm as a `#[constraint]`) and as z-x-z Euler angles (the chart with a
 //! singularity, for reference); a body thrown free in either chart (`thrown_vector`, `thrown_mrp`:
-//! the rigid tree's free joint); and a quadruped's q̈ with a floating base and with its root fixed.
+//! the rigid tree's free joint); each chart's body again with `#[angular_velocity]`
+//! (`vector_omega`, `mrp_omega`, their `_step`s, `thrown_vector_omega`, `thrown_mrp_omega`); and a
+//! quadruped's q̈ with a floating base (whose velocities are its angular velocity) and with its
+//! root fixed.
 //! `charts MODE CALLS`; count.sh takes the difference of two call counts under callgrind
 //! (`BIN=charts MODES="vector mrp quaternion euler vector_step mrp_step quaternion_step
 //! euler_step" scripts/callgrind/count.sh`). `charts accuracy` prints each orientation's largest
@@ -13,50 +16,46 @@ use lagrange::prelude::*;
 use lagrange_gallery::scenes::tumbling_body::{closed_form, OMEGA0};
 use std::hint::black_box;
 
-#[mechanism]
-pub mod by_vector {
-    pub struct Coords {
-        pub a: f64,
-        pub b: f64,
-        pub c: f64,
-    }
-    pub struct Body {
-        pub i1: f64,
-        pub i2: f64,
-        pub i3: f64,
-    }
-    #[rigid_body(mass = 1.0, inertia = [i1, i2, i3])]
-    fn body() -> Spatial {
-        spatial(vec3(0.0, 0.0, 0.0), rot_vector(vec3(a, b, c)))
-    }
+/// The torque-free body turned by `$chart` about its centre; with `#[angular_velocity]`, its
+/// velocities the body's angular velocity rather than the chart's rates.
+macro_rules! spinning {
+    ($module:ident, $chart:ident $(, #[$marker:ident])?) => {
+        #[mechanism]
+        pub mod $module {
+            pub struct Coords {
+                $(#[$marker])?
+                pub a: f64,
+                $(#[$marker])?
+                pub b: f64,
+                $(#[$marker])?
+                pub c: f64,
+            }
+            pub struct Body {
+                pub i1: f64,
+                pub i2: f64,
+                pub i3: f64,
+            }
+            #[rigid_body(mass = 1.0, inertia = [i1, i2, i3])]
+            fn body() -> Spatial {
+                spatial(vec3(0.0, 0.0, 0.0), $chart(vec3(a, b, c)))
+            }
+        }
+    };
 }
-
-#[mechanism]
-pub mod by_mrp {
-    pub struct Coords {
-        pub a: f64,
-        pub b: f64,
-        pub c: f64,
-    }
-    pub struct Body {
-        pub i1: f64,
-        pub i2: f64,
-        pub i3: f64,
-    }
-    #[rigid_body(mass = 1.0, inertia = [i1, i2, i3])]
-    fn body() -> Spatial {
-        spatial(vec3(0.0, 0.0, 0.0), rot_mrp(vec3(a, b, c)))
-    }
-}
+spinning!(by_vector, rot_vector);
+spinning!(by_mrp, rot_mrp);
+spinning!(by_vector_omega, rot_vector, #[angular_velocity]);
+spinning!(by_mrp_omega, rot_mrp, #[angular_velocity]);
 
 /// A body thrown in a uniform field, free in both charts: six coordinates, position first (the
 /// rigid tree's free joint).
 macro_rules! thrown {
-    ($module:ident, $chart:ident) => {
+    ($module:ident, $chart:ident $(, #[$marker:ident])?) => {
         #[mechanism]
         pub mod $module {
             pub struct Coords {
                 pub p: [f64; 3],
+                $(#[$marker])?
                 pub c: [f64; 3],
             }
             pub struct Body {
@@ -77,6 +76,8 @@ macro_rules! thrown {
 }
 thrown!(thrown_vector, rot_vector);
 thrown!(thrown_mrp, rot_mrp);
+thrown!(thrown_vector_omega, rot_vector, #[angular_velocity]);
+thrown!(thrown_mrp_omega, rot_mrp, #[angular_velocity]);
 
 /// q̈ of a thrown body at the charts' state of `run!`, moving along all six coordinates.
 macro_rules! thrown_calls {
@@ -298,11 +299,26 @@ fn accuracy() {
             },
         );
         let quaternion = quaternion_state([0.0; 3], w);
+        // With the angular velocity for velocities, ω itself in every chart.
+        let vector_omega = by_vector_omega::State::new(
+            0.0,
+            by_vector_omega::Coords { a: 0.0, b: 0.0, c: 0.0 },
+            by_vector_omega::Coords { a: w[0], b: w[1], c: w[2] },
+        );
+        let mrp_omega = by_mrp_omega::State::new(
+            0.0,
+            by_mrp_omega::Coords { a: 0.0, b: 0.0, c: 0.0 },
+            by_mrp_omega::Coords { a: w[0], b: w[1], c: w[2] },
+        );
         println!(
-            "h = {h}: rotation vector {:.1e}, modified Rodrigues parameters {:.1e}, quaternion {:.1e}",
+            "h = {h}: rotation vector {:.1e}, modified Rodrigues parameters {:.1e}, quaternion {:.1e}; \
+             with the angular velocity for velocities: rotation vector {:.1e}, modified Rodrigues \
+             parameters {:.1e}",
             omega_error!(by_vector::Body, vector, h),
             omega_error!(by_mrp::Body, mrp, h),
             omega_error!(by_quaternion::QuaternionBody, quaternion, h),
+            omega_error!(by_vector_omega::Body, vector_omega, h),
+            omega_error!(by_mrp_omega::Body, mrp_omega, h),
         );
     }
 }
@@ -323,6 +339,12 @@ fn main() {
         "quaternion" => quaternion(calls, false),
         "thrown_vector" => thrown_calls!(thrown_vector, calls),
         "thrown_mrp" => thrown_calls!(thrown_mrp, calls),
+        "vector_omega" => run!(by_vector_omega, calls, false),
+        "mrp_omega" => run!(by_mrp_omega, calls, false),
+        "vector_omega_step" => run!(by_vector_omega, calls, true),
+        "mrp_omega_step" => run!(by_mrp_omega, calls, true),
+        "thrown_vector_omega" => thrown_calls!(thrown_vector_omega, calls),
+        "thrown_mrp_omega" => thrown_calls!(thrown_mrp_omega, calls),
         "quaternion_step" => quaternion(calls, true),
         "quadruped_floating" => quadruped(
             &floating_quadruped::FloatingQuadruped::default()
