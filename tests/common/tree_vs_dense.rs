@@ -3,8 +3,8 @@
 //! recursions), at random states; shared by the test files of tree-shaped declarations. Where the
 //! declaration's velocities are quasi-velocities (a free or ball joint's angular velocity, q̇ =
 //! G(q) v), the dense pass runs at q̇ = G v and the tree's quantities are converted to the rates
-//! (`lagrange::tree::rigid::free`: M_q̇ = Bᵀ M B, 𝓕_q̇ = Bᵀ 𝓕, q̈ = G (v̇ − Ḃ q̇), p_q̇ = Bᵀ p); elsewhere
-//! every map is the identity.
+//! (`lagrange::tree::rigid::free`: M_q̇ = Bᵀ M B, 𝓕_q̇ = Bᵀ 𝓕, q̈ = G (v̇ − Ḃ q̇), p_q̇ = Bᵀ p);
+//! elsewhere every map is the identity.
 //!
 //! Tolerance: both passes are exact formulas evaluated in double precision; they differ by the
 //! rounding of a few hundred operations on quantities of order one, so 1e-10 relative to the size

@@ -21,9 +21,9 @@ use nalgebra::{SMatrix, SVector};
 /// b = Bᵀ (b_v + M_v Ḃ q̇),   q̈ = G (v̇ − Ḃ q̇),   τ = Bᵀ τ_v(q, v, B q̈ + Ḃ q̇),
 /// ```
 ///
-/// the last three from M_v v̇ + b_v = 𝓕_v with v̇ = B q̈ + Ḃ q̇, multiplied by Bᵀ. The canonical field
-/// is the generic one of these ([`crate::evaluation::momentum_rate`]: ∂T/∂q at fixed q̇ by dual
-/// numbers through T(q, B(q) q̇)).
+/// the last three from M_v v̇ + b_v = 𝓕_v with v̇ = B q̈ + Ḃ q̇, multiplied by Bᵀ. The canonical
+/// field is the generic one of these ([`crate::evaluation::momentum_rate`]: ∂T/∂q at fixed q̇ by
+/// dual numbers through T(q, B(q) q̇)).
 pub(super) struct InRates<'m, M>(pub(super) &'m M);
 
 /// The joints whose velocities are angular velocities, among `M`'s.

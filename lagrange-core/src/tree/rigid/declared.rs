@@ -16,9 +16,10 @@ use nalgebra::SVector;
 /// not depend on t, so ẋ = J q̇). Zero, with no pass, when nothing of the kind is declared.
 ///
 /// The declaration's forces are functions of (q, q̇); where some of the tree's joints have the
-/// angular velocity for velocities (q̇ = G(q) v, [`free::position_rates`](super::free::position_rates)),
-/// they are evaluated at q̇ = G v and returned dual to v: Gᵀ (Jᵀ F + Q − ∇V), the power
-/// τ_q · q̇ = (Gᵀ τ_q) · v ([`free::velocity_forces`](super::free::velocity_forces)).
+/// angular velocity for velocities (q̇ = G(q) v,
+/// [`free::position_rates`](super::free::position_rates)), they are evaluated at q̇ = G v and
+/// returned dual to v: Gᵀ (Jᵀ F + Q − ∇V), the power τ_q · q̇ = (Gᵀ τ_q) · v
+/// ([`free::velocity_forces`](super::free::velocity_forces)).
 pub fn other_generalized_forces<
     M: Model<N, K>,
     S: Scalar,
