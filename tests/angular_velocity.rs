@@ -682,3 +682,50 @@ fn inputs_drive_a_base_with_angular_velocities() {
         "{got:?}"
     );
 }
+
+/// A physical pendulum on a ball joint (its frame at the pivot, the centre of mass at `com`
+/// below it), the chart's velocities the angular velocity.
+#[mechanism]
+pub mod hanging {
+    pub struct Coords {
+        #[angular_velocity]
+        pub attitude: [f64; 3],
+    }
+    pub struct Hanging {
+        pub m: f64,
+        pub l: f64,
+        pub g: f64,
+    }
+    #[rigid_body(mass = m, inertia = [0.02, 0.05, 0.04], com = vec3(0.0, 0.0, -l))]
+    fn bob() -> Spatial {
+        spatial(
+            vec3(0.0, 0.0, 0.0),
+            rot_mrp(vec3(attitude[0], attitude[1], attitude[2])),
+        )
+    }
+    #[gravity]
+    fn down() -> Vec3 {
+        vec3(0.0, 0.0, -g)
+    }
+}
+
+/// The analyses at rest linearize in the coordinates (M δq̈ + K δq = 0, δq̇ = G δv between them):
+/// hanging, the pendulum's stiffness eigenvalues relative to M are the physical pendulum's
+/// ω² = m g l / (Iₖ + m l²) about x and y, and 0 about the vertical (Landau & Lifshitz, *Mechanics*,
+/// §21 for the small oscillations; Steiner's theorem for the pivot's moments). Exact formulas in
+/// double precision: 1e-12.
+#[test]
+fn small_oscillations_are_the_physical_pendulum_s() {
+    use lagrange::analysis::stability;
+    let sys = hanging::Hanging {
+        m: 0.8,
+        l: 0.3,
+        g: 9.81,
+    };
+    let rest = hanging::Coords { attitude: [0.0; 3] };
+    let analysis = stability(&sys, 0.0, &rest).unwrap();
+    let swing = |i: f64| sys.m * sys.g * sys.l / (i + sys.m * sys.l * sys.l);
+    let mut expected = [swing(0.02), swing(0.05), 0.0];
+    expected.sort_by(f64::total_cmp);
+    agree(&analysis.stiffness_eigenvalues, &expected, 1e-12, "ω²");
+}

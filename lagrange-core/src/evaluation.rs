@@ -7,6 +7,7 @@
 
 mod constants;
 mod diagnosis;
+pub(crate) mod rates;
 pub use constants::{Constants, Prepare};
 pub use diagnosis::diagnose;
 pub(crate) use diagnosis::non_finite_at;

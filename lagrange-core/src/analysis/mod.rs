@@ -69,6 +69,8 @@ pub use modes::{normal_modes, NormalModes};
 pub use stability::{stability, Stability, StabilityAnalysis, StabilityMethod, MARGINAL_TOLERANCE};
 
 use crate::error::{describe_configuration, Error, Result};
+use crate::evaluation::rates::InRates;
+use crate::evaluation::Evaluate;
 use crate::mechanism::Mechanism;
 use crate::model::Coordinates;
 use nalgebra::{DMatrix, SMatrix, SVector};
@@ -106,9 +108,24 @@ pub(crate) struct RestTerms<const N: usize> {
     pub mass_matrix: SMatrix<f64, N, N>,
 }
 
-/// r, K and M at rest at (t, q), by one pass of gradient duals seeded on q.
+/// r, K and M at rest at (t, q), by one pass of gradient duals seeded on q. Of a mechanism with
+/// quasi-velocities (q̇ = G(q) v), in the coordinates' rates ([`InRates`]): there the linearized
+/// motion is M δq̈ + K δq = 0 in the coordinates themselves, as for every other mechanism (in the
+/// velocities it would be M_v G⁻¹ δq̈ + K_v δq = 0).
 pub(crate) fn rest_terms<M: Mechanism<N>, const N: usize>(
     mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+) -> RestTerms<N> {
+    match M::QUASI_VELOCITIES {
+        true => rest_terms_of(&InRates(mechanism), t, q),
+        false => rest_terms_of(mechanism, t, q),
+    }
+}
+
+/// [`rest_terms`] of an evaluation whose velocities are the coordinates' rates.
+fn rest_terms_of<E: Evaluate<N>, const N: usize>(
+    mechanism: &E,
     t: f64,
     q: &[f64; N],
 ) -> RestTerms<N> {
@@ -136,9 +153,22 @@ pub(crate) fn rest_terms<M: Mechanism<N>, const N: usize>(
 }
 
 /// D = ∂(b − 𝓕)/∂q̇ at rest at (t, q), and its parts −∂𝓕/∂q̇ and ∂b/∂q̇, by one pass of gradient
-/// duals seeded on q̇.
+/// duals seeded on q̇ (in the coordinates' rates, as [`rest_terms`]).
 pub(crate) fn rest_velocity_matrix<M: Mechanism<N>, const N: usize>(
     mechanism: &M,
+    t: f64,
+    q: &[f64; N],
+) -> (SMatrix<f64, N, N>, [SMatrix<f64, N, N>; 2]) {
+    match M::QUASI_VELOCITIES {
+        true => rest_velocity_matrix_of(&InRates(mechanism), t, q),
+        false => rest_velocity_matrix_of(mechanism, t, q),
+    }
+}
+
+/// [`rest_velocity_matrix`] of an evaluation whose velocities are the coordinates' rates.
+#[allow(clippy::type_complexity)]
+fn rest_velocity_matrix_of<E: Evaluate<N>, const N: usize>(
+    mechanism: &E,
     t: f64,
     q: &[f64; N],
 ) -> (SMatrix<f64, N, N>, [SMatrix<f64, N, N>; 2]) {
@@ -154,13 +184,17 @@ pub(crate) fn rest_velocity_matrix<M: Mechanism<N>, const N: usize>(
     )
 }
 
-/// r = 𝓕 − b at rest, values only (the cheap evaluation of a line search).
+/// r = 𝓕 − b at rest, values only (the cheap evaluation of a line search; in the coordinates'
+/// rates, as [`rest_terms`]).
 pub(crate) fn rest_residual<M: Mechanism<N>, const N: usize>(
     mechanism: &M,
     t: f64,
     q: &[f64; N],
 ) -> SVector<f64, N> {
-    let eom = mechanism.equations_of_motion_at(t, q, &[0.0; N]);
+    let eom = match M::QUASI_VELOCITIES {
+        true => InRates(mechanism).equations_of_motion_at(t, q, &[0.0; N]),
+        false => mechanism.equations_of_motion_at(t, q, &[0.0; N]),
+    };
     eom.generalized_forces - eom.inertial_terms
 }
 
