@@ -79,6 +79,11 @@ macro_rules! floater {
             fn twist() -> Vec3 {
                 vec3(0.0, 0.1 * push, 0.2 * push)
             }
+            /// A drag on the base's turning: a force that reads the velocities.
+            #[torque(on = base)]
+            fn drag() -> Vec3 {
+                base_dot.angular * (-0.3 * push)
+            }
         }
     };
 }
@@ -162,8 +167,8 @@ fn a_chart_switch_leaves_the_velocities() {
     for _ in 0..2000 {
         let (before, velocity) = (s.q.attitude, s.v.attitude);
         sys.step::<Rk4>(&mut s, 0.01).unwrap();
-        let size = |x: [f64; 3]| x.iter().map(|c| c * c).sum::<f64>();
-        if size(before) > 0.8 && size(s.q.attitude) < 0.8 {
+        // A switch to the shadow set turns σ about: the new vector points against the old.
+        if (0..3).map(|k| before[k] * s.q.attitude[k]).sum::<f64>() < 0.0 {
             switched += 1;
             let change = (0..3).map(|k| (s.v.attitude[k] - velocity[k]).abs());
             assert!(
@@ -728,4 +733,120 @@ fn small_oscillations_are_the_physical_pendulum_s() {
     let mut expected = [swing(0.02), swing(0.05), 0.0];
     expected.sort_by(f64::total_cmp);
     agree(&analysis.stiffness_eigenvalues, &expected, 1e-12, "ω²");
+    // Turned about the vertical (σ = (0, 0, 0.4)), it hangs all the same, and the verdict is the
+    // same: marginal (the free turn about the vertical), the swings' eigenvalues unchanged.
+    let turned = hanging::Coords {
+        attitude: [0.0, 0.0, 0.4],
+    };
+    let analysis = stability(&sys, 0.0, &turned).unwrap();
+    assert_eq!(analysis.stability, lagrange::analysis::Stability::Marginal);
+    agree(
+        &analysis.stiffness_eigenvalues,
+        &expected,
+        1e-12,
+        "ω² turned",
+    );
+}
+
+/// Dop853 (its stages and its 7th-order dense output on (q, ω)) follows Euler's closed form to the
+/// tolerance's order over 20 s of switches, as Dopri5 does.
+#[test]
+fn dop853_steps_the_angular_velocity() {
+    let start = spinning_vector::Coords { attitude: [0.0; 3] };
+    let spin = spinning_vector::Coords { attitude: OMEGA0 };
+    let s0 = spinning_vector::State::new(0.0, start, spin);
+    let mut run = Stepper::new(&VECTOR, Dop853::new(1e-10, 1e-12), &s0).unwrap();
+    let mut worst = 0.0f64;
+    for k in 1..=20 {
+        run.integrate(k as f64, &mut [], |_| {}).unwrap();
+        worst = worst.max(max_difference(
+            run.state().v.attitude,
+            closed_form(k as f64),
+        ));
+    }
+    // A local tolerance of 1e-10 accumulates to well below 1e-7 over 20 s of a few periods.
+    assert!(worst < 1e-7, "{worst:e}");
+}
+
+/// A step's dense output moves the positions by their rates G v, not by v: at the middle of a
+/// step of the floater (MRP, where G is a quarter of the identity near the origin) it meets an
+/// accurate solution (RK4 at a thousandth of the step from the step's start) to the interpolant's
+/// order — cubic Hermite O(h⁴), Dopri5's order 4, Dop853's 7: with h ≤ 0.05 and derivatives of
+/// order one, below 1e-6 — where interpolating with v would be off by h |v − G v| ≈ 0.03. The
+/// velocities to `$v_tolerance`: the same orders, but a straight line between the step's two v
+/// without the dense output's end evaluation (off by h²/8 |v̈| ≲ 1e-3).
+macro_rules! dense_output_moves_by_the_rates {
+    ($name:ident, $method:expr, $v_tolerance:expr) => {
+        #[test]
+        fn $name() {
+            let sys = quasi_mrp::Floater {
+                m: 1.3,
+                push: 0.7,
+                g: 9.81,
+            };
+            let (q, v) = floater_states(&[0.3])[0];
+            let coords = quasi_mrp::Coords::from_array;
+            let s0 = quasi_mrp::State::new(0.0, coords(q), coords(v));
+            let mut run = Stepper::new(&sys, $method, &s0).unwrap();
+            let start = run.state();
+            run.step(0.05).unwrap();
+            let h = run.last_step();
+            let (q_mid, v_mid) = run.dense().eval(0.5 * h);
+            let mut exact = start;
+            let fine = h / 1000.0;
+            for _ in 0..500 {
+                sys.step::<Rk4>(&mut exact, fine).unwrap();
+            }
+            agree(
+                &q_mid,
+                &exact.q.to_array(),
+                1e-6,
+                "q at the middle of the step",
+            );
+            agree(
+                &v_mid,
+                &exact.v.to_array(),
+                $v_tolerance,
+                "v at the middle of the step",
+            );
+        }
+    };
+}
+
+dense_output_moves_by_the_rates!(
+    rk4_dense_output_moves_by_the_rates,
+    Rk4::with_step(0.05),
+    1e-5
+);
+dense_output_moves_by_the_rates!(
+    rk4_positions_only_dense_output_moves_by_the_rates,
+    Rk4::with_step(0.05).without_dense(),
+    1e-2
+);
+dense_output_moves_by_the_rates!(
+    dopri5_dense_output_moves_by_the_rates,
+    Dopri5::new(1e-8, 1e-10),
+    1e-5
+);
+dense_output_moves_by_the_rates!(
+    dop853_dense_output_moves_by_the_rates,
+    Dop853::new(1e-8, 1e-10),
+    1e-5
+);
+
+/// A floating URDF base whose module adds constraint rows (a foot's contact) keeps its chart's
+/// rates for velocities — the rows read the velocities as rates — and compiles.
+#[lagrange::urdf("tests/urdf/quadruped.urdf", floating)]
+pub mod standing_quadruped {
+    #[unilateral]
+    fn above_ground() -> f64 {
+        base_position[2]
+    }
+}
+
+#[test]
+fn a_floating_urdf_base_with_contacts_keeps_its_rates() {
+    let joints = <standing_quadruped::StandingQuadruped as RigidTree<18, 13>>::JOINTS;
+    let kind = JointKind::Free(RotationChart::Mrp, Velocities::ChartRates);
+    assert_eq!(joints[0].kind, kind);
 }

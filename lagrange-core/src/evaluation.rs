@@ -101,7 +101,9 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
     /// coordinate's rate. With such a joint the velocities are quasi-velocities, q̇ = G(q) v
     /// ([`position_rates_at`](Dynamics::position_rates_at), the maps of
     /// [`crate::tree::rigid::free`]), and every method below reads v and returns v̇, and
-    /// generalized forces and momenta dual to v.
+    /// generalized forces and momenta dual to v — but `canonical_field_at`, which reads its
+    /// velocities as the coordinates' rates q̇ (the methods on (q, p) step such a mechanism in its
+    /// rates through an adapter with its own canonical field, and never call it).
     const QUASI_VELOCITY_JOINTS: &'static [Joint] = &[];
 
     /// Whether the velocities are quasi-velocities (some joint of

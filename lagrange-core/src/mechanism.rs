@@ -231,7 +231,8 @@ pub trait Mechanism<const N: usize>: Evaluate<N> {
         Ok(energy)
     }
 
-    /// p = ∂L/∂q̇, by name.
+    /// p = ∂L/∂q̇, by name (∂L/∂v where the velocities are quasi-velocities, a free or ball
+    /// joint's angular velocity: the body's angular momentum in its frame there).
     ///
     /// Errors: non-finite parameters or state, momenta that overflow
     /// ([`Error::NonFiniteDynamics`]).

@@ -21,10 +21,10 @@ use num_dual::DualSVec;
 /// q̇ = G(q) v and the top row is [∂(G v)/∂q, G] ([`dqd_dq`](Linearization::dqd_dq),
 /// [`dqd_dv`](Linearization::dqd_dv)); the bottom row is then v̇'s, and M the mass matrix on v.
 ///
-/// ẋ₀ = (v₀, q̈₀) is zero about an equilibrium at rest. A is 2N × 2N, which a fixed-size nalgebra
-/// type cannot spell on stable Rust (`SMatrix<f64, {2 * N}, {2 * N}>` needs `generic_const_exprs`),
-/// so the two non-trivial N × N blocks are stored and [`Linearization::a_matrix`] assembles a
-/// `DMatrix`.
+/// ẋ₀ = (G v₀, v̇₀) (= (v₀, q̈₀) where the velocities are the rates) is zero about an equilibrium at
+/// rest. A is 2N × 2N, which a fixed-size nalgebra type cannot spell on stable Rust
+/// (`SMatrix<f64, {2 * N}, {2 * N}>` needs `generic_const_exprs`), so its four N × N blocks are
+/// stored and [`Linearization::a_matrix`] assembles a `DMatrix`.
 ///
 /// **Inputs.** `u` is a vector of additional generalized forces, one per coordinate, entering as
 /// M q̈ = 𝓕 − b + u; hence B = [0; M⁻¹] ([`Linearization::b_matrix`]). A declared input acting as a

@@ -164,7 +164,10 @@ pub struct VariationalStepStats {
 
 impl Variational {
     /// One step of the discrete flow on (q, p): returns (q₁, p₁) and the midpoint velocity v_m
-    /// (a good starting guess for recovering v₁). No validation.
+    /// (a good starting guess for recovering v₁). No validation. p is conjugate to q̇, so a
+    /// mechanism with quasi-velocities (whose momenta are dual to v) is refused
+    /// ([`Error::UnsuitableMethod`](crate::Error::UnsuitableMethod)); its steps are
+    /// [`Integrator::step`]'s, which convert.
     #[allow(clippy::type_complexity)]
     pub fn step_momenta<M: Evaluate<N>, const N: usize>(
         mechanism: &M,
@@ -174,6 +177,7 @@ impl Variational {
         v_guess: &[f64; N],
         h: f64,
     ) -> Result<([f64; N], [f64; N], [f64; N], usize)> {
+        super::newton::refuse_quasi_velocities(Self::NAME, M::QUASI_VELOCITIES)?;
         let mut stats = Stats::default();
         let rows = rows_in_force(mechanism, Self::NAME)?;
         let (q1, p1, vm, iterations) =

@@ -118,6 +118,7 @@ impl StormerVerlet {
         h: f64,
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N])> {
+        refuse_quasi_velocities(Self::NAME, M::QUASI_VELOCITIES)?;
         // Which constraints are enforced is the declaration's, decided before anything is evaluated.
         let rows = rows_in_force(mechanism, Self::NAME)?;
         let eom0 = mechanism.equations_of_motion_at(t, q, v);
@@ -186,7 +187,6 @@ impl Integrator for StormerVerlet {
         h: f64,
         stats: &mut Stats,
     ) -> Result<([f64; N], [f64; N])> {
-        refuse_quasi_velocities(Self::NAME, M::QUASI_VELOCITIES)?;
         // Two solves with the mass matrix, and RATTLE's Newton iterations (counted there).
         Self::step_counted(mechanism, t, q, v, h, stats)
     }

@@ -147,8 +147,8 @@ mod tests {
         assert!(worst < 1e-14, "{a:?} against {b:?}");
     }
 
-    /// B and G undo each other, Bᵀ and Gᵀ too, and power is kept: (Gᵀ τ) · v = τ · (G v). Each a
-    /// few dozen operations on numbers of order one: 1e-14.
+    /// B and G undo each other, Bᵀ and Gᵀ too, and power is kept: (Gᵀ τ) · v = τ · (G v) and
+    /// (Bᵀ τ) · q̇ = τ · (B q̇). Each a few dozen operations on numbers of order one: 1e-14.
     #[test]
     fn the_maps_are_inverse_and_dual() {
         for chart in [RotationChart::Mrp, RotationChart::Vector] {
@@ -159,12 +159,16 @@ mod tests {
                 &rate_forces(&joints, &Q, &velocity_forces(&joints, &Q, &X)),
                 &X,
             );
+            // τ ≠ v, so that a map and its transpose are told apart.
+            let tau: [f64; 10] = std::array::from_fn(|i| 0.3 - 0.2 * i as f64);
             let power = |a: &[f64; 10], b: &[f64; 10]| a.iter().zip(b).map(|(x, y)| x * y).sum();
-            let forces = velocity_forces(&joints, &Q, &X);
-            close(&[power(&forces, &X)], &[power(&X, &rates)]);
+            let forces = velocity_forces(&joints, &Q, &tau);
+            close(&[power(&forces, &X)], &[power(&tau, &rates)]);
+            let back = rate_forces(&joints, &Q, &tau);
+            close(&[power(&back, &rates)], &[power(&tau, &X)]);
             // Off the angular orientation every map is the identity.
             close(&rates[6..], &X[6..]);
-            close(&forces[..3], &X[..3]);
+            close(&forces[..3], &tau[..3]);
         }
     }
 
