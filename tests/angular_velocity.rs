@@ -833,20 +833,3 @@ dense_output_moves_by_the_rates!(
     Dop853::new(1e-8, 1e-10),
     1e-5
 );
-
-/// A floating URDF base whose module adds constraint rows (a foot's contact) keeps its chart's
-/// rates for velocities — the rows read the velocities as rates — and compiles.
-#[lagrange::urdf("tests/urdf/quadruped.urdf", floating)]
-pub mod standing_quadruped {
-    #[unilateral]
-    fn above_ground() -> f64 {
-        base_position[2]
-    }
-}
-
-#[test]
-fn a_floating_urdf_base_with_contacts_keeps_its_rates() {
-    let joints = <standing_quadruped::StandingQuadruped as RigidTree<18, 13>>::JOINTS;
-    let kind = JointKind::Free(RotationChart::Mrp, Velocities::ChartRates);
-    assert_eq!(joints[0].kind, kind);
-}

@@ -256,6 +256,8 @@ where
 {
     const NAMES: [&'static str; C] = <M as Constraints<N, K, C>>::NAMES;
     const KINDS: [ConstraintKind; C] = M::KINDS;
+    const QUASI_VELOCITY_JOINTS: &'static [Joint] =
+        <M as Constraints<N, K, C>>::QUASI_VELOCITY_JOINTS;
     const POSITION_DERIVATIVES: [bool; C] = M::POSITION_DERIVATIVES;
 
     #[inline(always)]

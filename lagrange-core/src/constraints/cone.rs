@@ -124,8 +124,9 @@ pub(super) fn refresh_references<
             }
         }
     }
-    let qdd =
-        nalgebra::SVector::from(super::accelerations_in_mode(model, t, q, v, mode)?.accelerations);
+    let qdd = nalgebra::SVector::from(
+        super::solve::accelerations_in_mode_in_rates(model, t, q, v, mode)?.accelerations,
+    );
     for j in 0..C {
         if let Some((k, _)) = first_of_pair(M::KINDS[j], j) {
             if mode.rows[j] != RowMode::Sliding {

@@ -5,6 +5,7 @@
 use super::kinds::has_velocity;
 use super::mode::friction_rows_follow;
 use super::projection::project_holding;
+use super::quasi;
 use super::rows::rows_and_scales;
 #[cfg(doc)]
 use super::{infer_mode, project};
@@ -111,6 +112,22 @@ impl<const C: usize> RowScales<C> {
 /// (a property of the declaration, reported whether or not the state satisfies the rows),
 /// [`Error::ConstraintViolation`] listing the violated rows and residuals.
 pub fn check_consistent<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    tol: f64,
+) -> Result<()> {
+    check_consistent_in_rates(model, t, q, &quasi::rates::<M, f64, N, K, C>(q, v), tol)
+}
+
+/// [`check_consistent`] at (q, q̇), the coordinates' rates.
+pub(crate) fn check_consistent_in_rates<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
     model: &M,
     t: f64,
     q: &[f64; N],
@@ -295,11 +312,14 @@ pub fn consistent_state_holding<
     model.validate()?;
     let free_q = free_mask::<N>(&<M::Coords as Coordinates<N>>::NAMES, hold_q)?;
     let free_v = free_mask::<N>(&<M::Coords as Coordinates<N>>::NAMES, hold_v)?;
-    let (mut q, mut v) = (guess.q.to_array(), guess.v.to_array());
+    let (mut q, v) = (guess.q.to_array(), guess.v.to_array());
     crate::model::check_state(&<M::Coords as Coordinates<N>>::NAMES, guess.t, &q, &v)?;
+    refuse_held_angular_velocities::<M, N, K, C>(&free_v)?;
+    // Projected in the coordinates' rates, the velocities converted back at the end.
+    let mut v = quasi::rates::<M, f64, N, K, C>(&q, &v);
     // The declaration is checked before projecting (friction coefficients, velocity rows linear
     // in q̇); the guess itself may violate the rows.
-    match check_consistent(model, guess.t, &q, &v, CONSISTENCY_TOLERANCE) {
+    match check_consistent_in_rates(model, guess.t, &q, &v, CONSISTENCY_TOLERANCE) {
         Ok(()) | Err(Error::ConstraintViolation { .. }) => {}
         Err(e) => return Err(e),
     }
@@ -320,12 +340,39 @@ pub fn consistent_state_holding<
     enough_free("coordinates", hold_q, &free_q, position_rows)?;
     enough_free("velocities", hold_v, &free_v, velocity_rows)?;
     project_holding(model, guess.t, &mut q, &mut v, &mode, &free_q, &free_v)?;
-    check_consistent(model, guess.t, &q, &v, CONSISTENCY_TOLERANCE)?;
+    check_consistent_in_rates(model, guess.t, &q, &v, CONSISTENCY_TOLERANCE)?;
+    let v = quasi::velocities::<M, f64, N, K, C>(&q, &v);
     Ok(State::new(
         guess.t,
         M::Coords::from_array(q),
         M::Coords::from_array(v),
     ))
+}
+
+/// [`Error::UnsuitableMethod`] when a held velocity (`free_v` unset) is a component of an angular
+/// velocity ([`Constraints::QUASI_VELOCITY_JOINTS`]): the velocities are projected as the
+/// coordinates' rates, and ω = B(q) ċ moves with q even where ċ is held.
+fn refuse_held_angular_velocities<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    free_v: &[bool; N],
+) -> Result<()> {
+    let angular = crate::tree::rigid::free::angular_velocity_slots(M::QUASI_VELOCITY_JOINTS);
+    match (0..N).find(|&j| !free_v[j] && angular.contains(&j)) {
+        None => Ok(()),
+        Some(j) => Err(Error::UnsuitableMethod {
+            method: "consistent_state_holding",
+            reason: format!(
+                "the velocity of `{}` is a component of an angular velocity \
+                 (`#[angular_velocity]`), which the projection cannot hold: hold other \
+                 velocities only",
+                <M::Coords as Coordinates<N>>::NAMES[j]
+            ),
+        }),
+    }
 }
 
 /// Which coordinates are free: all but the named ones; a name that is not a coordinate is

@@ -5,8 +5,11 @@
 //! loops that hold it, locate its events and apply its switches are in [`crate::integrate`].
 
 use super::events::{event_values, triggered_rows};
+#[cfg(doc)]
+use super::infer_mode;
+use super::mode::infer_mode_in_rates;
 use super::switch::transition;
-use super::{accelerations_in_mode, cone, infer_mode, project, ConstraintCounts, Constraints};
+use super::{accelerations_in_mode, cone, project, quasi, ConstraintCounts, Constraints};
 use super::{Mode, RowMode};
 use crate::error::{Error, Result};
 use crate::evaluation::{Constants, Prepare};
@@ -277,8 +280,9 @@ where
     type Rows = [bool; C];
 
     fn start(model: &M, _: Constants<'_, M>, t: f64, q: &[f64; N], v: &[f64; N]) -> Result<Self> {
-        let mode = infer_mode(model, t, q, v)?;
-        let phi = event_values(model, t, q, v, &mode)?;
+        let rates = quasi::rates::<M, f64, N, K, C>(q, v);
+        let mode = infer_mode_in_rates(model, t, q, &rates)?;
+        let phi = event_values(model, t, q, &rates, &mode)?;
         Ok(ContactState {
             mode,
             armed: std::array::from_fn(|i| phi[i] > 0.0),
@@ -301,7 +305,8 @@ where
         v: &[f64; N],
         span: f64,
     ) -> Result<()> {
-        cone::refresh_references(model, t, q, v, span, &mut self.mode)
+        let rates = quasi::rates::<M, f64, N, K, C>(q, v);
+        cone::refresh_references(model, t, q, &rates, span, &mut self.mode)
     }
 
     #[inline]
@@ -355,7 +360,13 @@ where
         q: &[f64; N],
         v: &[f64; N],
     ) -> Result<[f64; C]> {
-        event_values(model, t, q, v, &self.mode)
+        event_values(
+            model,
+            t,
+            q,
+            &quasi::rates::<M, f64, N, K, C>(q, v),
+            &self.mode,
+        )
     }
 
     fn triggered(
@@ -367,7 +378,8 @@ where
         v: &[f64; N],
         end: &[f64; C],
     ) -> [bool; C] {
-        triggered_rows(model, t, q, v, &self.mode, &self.armed, end)
+        let rates = quasi::rates::<M, f64, N, K, C>(q, v);
+        triggered_rows(model, t, q, &rates, &self.mode, &self.armed, end)
     }
 
     fn rearm(&mut self, end: &[f64; C]) {
@@ -385,12 +397,16 @@ where
         (q, v): (&mut [f64; N], &mut [f64; N]),
         row: usize,
     ) -> Result<ModeChange> {
-        let at_event = event_values(model, t, q, v, &self.mode)?;
+        let rates = quasi::rates::<M, f64, N, K, C>(q, v);
+        let at_event = event_values(model, t, q, &rates, &self.mode)?;
         for i in 0..C {
             self.armed[i] |= i != row && at_event[i] > 0.0;
         }
         let (before, from) = (self.mode, self.mode.rows[row]);
-        transition(model, restitution, t, (q, v), &mut self.mode, row)?;
+        let mode = &mut self.mode;
+        quasi::in_rates::<M, _, N, K, C>(q, v, |q, rates| {
+            transition(model, restitution, t, (q, rates), mode, row)
+        })?;
         for i in 0..C {
             if self.mode.rows[i] != before.rows[i] || i == row {
                 self.armed[i] = false;

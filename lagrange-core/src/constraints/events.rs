@@ -2,7 +2,7 @@
 //! rows whose event fired over an interval (see the table at [`ContactModel`](super::ContactModel)).
 
 use super::cone;
-use super::solve::accelerations_in_mode;
+use super::solve::accelerations_in_mode_in_rates;
 use super::{ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE};
 use crate::error::Result;
 
@@ -26,7 +26,7 @@ pub(crate) fn event_values<
         )
     });
     let lambda = if needs_lambda {
-        accelerations_in_mode(model, t, q, v, mode)?.multipliers
+        accelerations_in_mode_in_rates(model, t, q, v, mode)?.multipliers
     } else {
         [0.0; C]
     };

@@ -1,12 +1,14 @@
 //! The forces each constraint applies at a state: [`ConstraintForces`] and [`constraint_forces`].
 
+use super::consistency::check_consistent_in_rates;
 use super::kinds::{has_position, has_velocity};
-use super::rows::{constraint_rows, gradient};
+use super::mode::infer_mode_in_rates;
+use super::quasi;
+use super::rows::{constraint_rows_in_rates, gradient};
+use super::solve::accelerations_in_mode_in_rates;
 #[cfg(doc)]
-use super::ConstrainedAccelerations;
-use super::{
-    accelerations_in_mode, check_consistent, infer_mode, Constraints, Mode, CONSISTENCY_TOLERANCE,
-};
+use super::{infer_mode, ConstrainedAccelerations};
+use super::{Constraints, Mode, CONSISTENCY_TOLERANCE};
 use crate::dynamics;
 use crate::error::{Error, Result};
 use crate::model::{Coordinates, State};
@@ -31,7 +33,8 @@ pub struct ConstraintForces<const N: usize, const K: usize, const C: usize> {
 }
 
 /// Multipliers, generalized and Cartesian forces of every constraint at a state (mode by
-/// [`infer_mode`]).
+/// [`infer_mode`]). With quasi-velocities ([`Constraints::QUASI_VELOCITY_JOINTS`]) the
+/// accelerations are v̇ and the generalized forces are dual to v (Gᵀ rᵢ λᵢ).
 pub fn constraint_forces<
     M: Constraints<N, K, C>,
     const N: usize,
@@ -47,15 +50,24 @@ pub fn constraint_forces<
     let t = state.t;
     // Refuse what the integrators refuse about the declaration (friction coefficients, velocity
     // rows not linear in q̇), but compute forces at states off the constraints too.
-    match check_consistent(model, t, &q, &v, CONSISTENCY_TOLERANCE) {
+    let rates = quasi::rates::<M, f64, N, K, C>(&q, &v);
+    match check_consistent_in_rates(model, t, &q, &rates, CONSISTENCY_TOLERANCE) {
         Ok(()) | Err(Error::ConstraintViolation { .. }) => {}
         Err(e) => return Err(e),
     }
-    let mode = infer_mode(model, t, &q, &v)?;
-    forces_in_mode(model, t, &q, &v, &mode)
+    let mode = infer_mode_in_rates(model, t, &q, &rates)?;
+    let mut forces = forces_in_mode(model, t, &q, &rates, &mode)?;
+    if quasi::quasi::<M, N, K, C>() {
+        forces.accelerations =
+            quasi::accelerations::<M, f64, N, K, C>(&q, &rates, &forces.accelerations);
+        for row in &mut forces.generalized {
+            *row = quasi::forces::<M, f64, N, K, C>(&q, row);
+        }
+    }
+    Ok(forces)
 }
 
-/// [`constraint_forces`] in a given mode.
+/// [`constraint_forces`] in a given mode, at (q, q̇), the coordinates' rates.
 pub(crate) fn forces_in_mode<
     M: Constraints<N, K, C>,
     const N: usize,
@@ -68,8 +80,8 @@ pub(crate) fn forces_in_mode<
     v: &[f64; N],
     mode: &Mode<C>,
 ) -> Result<ConstraintForces<N, K, C>> {
-    let sol = accelerations_in_mode(model, t, q, v, mode)?;
-    let cr = constraint_rows(model, t, q, v);
+    let sol = accelerations_in_mode_in_rates(model, t, q, v, mode)?;
+    let cr = constraint_rows_in_rates(model, t, q, v);
     let generalized: [[f64; N]; C] =
         std::array::from_fn(|i| std::array::from_fn(|j| sol.multipliers[i] * cr.rows[i][j]));
     // ∂f/∂x (position rows) and ∂f/∂ẋ (velocity rows), x and ẋ seeded as independent gradient duals.

@@ -119,6 +119,18 @@
 //! adds the projection (one or two Newton corrections and one velocity correction) and the
 //! consistency check.
 //!
+//! # Quasi-velocities
+//!
+//! A rigid tree whose free or ball joints have the body's angular velocity for velocities
+//! (`#[angular_velocity]`, [`Constraints::QUASI_VELOCITY_JOINTS`]) carries v with q̇ = G(q) v. The
+//! rows are written on the coordinates' rates, and everything above is said of (q, q̇); the
+//! public functions that take a state's velocities convert at their entry (q̇ = G v) and exit
+//! (v̇ = B q̈ + Ḃ q̇, rows and generalized forces dual to v by Gᵀ). Each statement is unchanged by
+//! the change of velocities at fixed q: the multipliers are the same, and the velocity projection
+//! in the metric of M = Bᵀ M_v B onto R q̇ = r is the projection in the metric of M_v onto
+//! (R G) v = r, so the impact law and the projection are those of v. `consistent_state_holding`
+//! refuses to hold a component of an angular velocity (ω = B(q) ċ moves with q where ċ is held).
+//!
 //! # Only what is declared
 //!
 //! Every branch on [`Constraints::KINDS`] is on a constant, so a mechanism with only holonomic rows
@@ -228,6 +240,7 @@ mod kinds;
 mod mode;
 mod prepared;
 mod projection;
+mod quasi;
 mod rows;
 mod sliding;
 mod solve;
@@ -249,6 +262,7 @@ pub use solve::{accelerations_in_mode, ConstrainedAccelerations};
 
 use crate::geometry::Scalar;
 use crate::model::Model;
+use crate::tree::rigid::Joint;
 
 /// Coulomb friction coefficients of a friction row.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -356,6 +370,14 @@ pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, 
     const NAMES: [&'static str; C];
     /// Row kinds, in declaration order.
     const KINDS: [ConstraintKind; C];
+
+    /// The rigid tree's joints when some of its free or ball joints have the body's angular
+    /// velocity for velocities (`#[angular_velocity]`, `Dynamics::QUASI_VELOCITY_JOINTS`); none
+    /// (the default) where every velocity is its coordinate's rate. The rows, the solve and the
+    /// projection work on the coordinates' rates q̇ = G(q) v; the functions of this module that
+    /// take a state's velocities convert at their entry and exit (see
+    /// [the module's docs](crate::constraints#quasi-velocities)).
+    const QUASI_VELOCITY_JOINTS: &'static [Joint] = &[];
 
     /// g or c for position rows (holonomic, unilateral); zero for the others.
     fn position_constraints<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> [D; C];

@@ -3,8 +3,9 @@
 
 use super::cone;
 use super::kinds::always_active;
+use super::quasi;
 use super::rows::{real, rows_and_scales};
-use super::solve::accelerations_in_mode;
+use super::solve::accelerations_in_mode_in_rates;
 use super::{ConstraintKind, Constraints, Mode, RowMode, CONSISTENCY_TOLERANCE};
 use crate::error::Result;
 use crate::geometry::Scalar;
@@ -15,6 +16,21 @@ use crate::geometry::Scalar;
 /// |λₜ| ≤ μₛ|λₙ|, otherwise it slides against the force static friction would have had to supply.
 /// Candidates are dropped one at a time, the most violated first, until the mode is consistent.
 pub fn infer_mode<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usize>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+) -> Result<Mode<C>> {
+    infer_mode_in_rates(model, t, q, &quasi::rates::<M, f64, N, K, C>(q, v))
+}
+
+/// [`infer_mode`] at (q, q̇), the coordinates' rates.
+pub(crate) fn infer_mode_in_rates<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
     model: &M,
     t: f64,
     q: &[f64; N],
@@ -39,7 +55,7 @@ pub fn infer_mode<M: Constraints<N, K, C>, const N: usize, const K: usize, const
         if always_active::<M, N, K, C>() {
             break;
         }
-        let sol = accelerations_in_mode(model, t, q, v, &mode)?;
+        let sol = accelerations_in_mode_in_rates(model, t, q, v, &mode)?;
         match worst_violation(model, &mode, &sol.multipliers) {
             None => break,
             Some((i, new)) => apply_fix::<M, N, K, C>(&mut mode, i, new, &sol.multipliers),
@@ -171,10 +187,12 @@ pub fn accelerations<
     q: &[S; N],
     v: &[S; N],
 ) -> Result<[S; N]> {
+    let rates = quasi::rates::<M, S, N, K, C>(q, v);
     let mode = if always_active::<M, N, K, C>() {
         Mode::all_active::<M, N, K>()
     } else {
-        infer_mode(model, t.re(), &real(q), &real(v))?
+        infer_mode_in_rates(model, t.re(), &real(q), &real(&rates))?
     };
-    accelerations_in_mode(model, t, q, v, &mode).map(|a| a.accelerations)
+    let qdd = accelerations_in_mode_in_rates(model, t, q, &rates, &mode)?.accelerations;
+    Ok(quasi::accelerations::<M, S, N, K, C>(q, &rates, &qdd))
 }

@@ -21,11 +21,15 @@
 //! give the velocity projection its G and ġ.
 
 use super::kinds::{always_active, written_holonomic};
-use super::mode::infer_mode;
-use super::projection::{newton_onto_positions, project, projection_failed, relative_residual};
+use super::mode::infer_mode_in_rates;
+use super::projection::{
+    newton_onto_positions, project_in_rates, projection_failed, relative_residual,
+};
 use super::rows::{real, CartesianMotion, ConstraintRows};
 use super::solve::ConstrainedAccelerations;
 use super::solve::{accelerations_in_mode_prepared, finish, singular_constraints};
+#[cfg(doc)]
+use super::{infer_mode, project};
 use super::{Constraints, Mode};
 use crate::affine::{self, AffineConstants};
 use crate::error::{describe_state, Error, Result};
@@ -372,8 +376,8 @@ pub fn project_prepared<M: Constraints<N, K, C>, const N: usize, const K: usize,
     v: &mut [f64; N],
 ) -> Result<()> {
     if !written_holonomic::<M, N, K, C>() {
-        let mode = infer_mode(model, t, q, v)?;
-        return project(model, t, q, v, &mode);
+        let mode = infer_mode_in_rates(model, t, q, v)?;
+        return project_in_rates(model, t, q, v, &mode);
     }
     // Each row's residual against its size at the start (see CONSISTENCY_TOLERANCE).
     let start: ConstraintRows<f64, N, C> = affine_rows(model, constants, t, q, v);
@@ -465,7 +469,7 @@ pub fn accelerations_prepared<
     let mode = if always_active::<M, N, K, C>() {
         Mode::all_active::<M, N, K>()
     } else {
-        infer_mode(model, t.re(), &real(q), &real(v))?
+        infer_mode_in_rates(model, t.re(), &real(q), &real(v))?
     };
     accelerations_in_mode_prepared(model, constants, t, q, v, &mode).map(|a| a.accelerations)
 }

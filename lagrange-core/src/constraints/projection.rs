@@ -205,6 +205,24 @@ pub fn project<M: Constraints<N, K, C>, const N: usize, const K: usize, const C:
     v: &mut [f64; N],
     mode: &Mode<C>,
 ) -> Result<()> {
+    super::quasi::in_rates::<M, _, N, K, C>(q, v, |q, rates| {
+        project_in_rates(model, t, q, rates, mode)
+    })
+}
+
+/// [`project`] of (q, q̇), the coordinates' rates.
+pub(crate) fn project_in_rates<
+    M: Constraints<N, K, C>,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: f64,
+    q: &mut [f64; N],
+    v: &mut [f64; N],
+    mode: &Mode<C>,
+) -> Result<()> {
     project_holding(model, t, q, v, mode, &[true; N], &[true; N])
 }
 

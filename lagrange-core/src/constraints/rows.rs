@@ -2,7 +2,7 @@
 //! [`constraint_rows`] and the passes the solve and the projection build on.
 
 use super::kinds::{has_position_on_duals, has_velocity, has_written_derivatives, on_duals};
-use super::{ConstraintKind, Constraints};
+use super::{quasi, ConstraintKind, Constraints};
 use crate::dynamics;
 use crate::geometry::Scalar;
 use nalgebra::SVector;
@@ -351,8 +351,37 @@ pub(super) fn velocity_rows_and_jacobian<
     (rows, rate, jac)
 }
 
-/// The constraint rows rᵢ, biases βᵢ, values and rates at (t, q, q̇), for any scalar.
+/// The constraint rows rᵢ, biases βᵢ, values and rates at (t, q, v), for any scalar. With
+/// quasi-velocities ([`Constraints::QUASI_VELOCITY_JOINTS`], q̇ = G v) the rows and biases are
+/// those of the velocities: from rᵢ·q̈ + βᵢ with q̈ = G (v̇ − Ḃ q̇), the row Gᵀ rᵢ and the bias
+/// βᵢ − (Gᵀ rᵢ)·(Ḃ q̇); values and rates are the same.
 pub fn constraint_rows<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> ConstraintRows<S, N, C> {
+    let rates = quasi::rates::<M, S, N, K, C>(q, v);
+    let mut rows = constraint_rows_in_rates(model, t, q, &rates);
+    if quasi::quasi::<M, N, K, C>() {
+        let bias = SVector::from(quasi::velocity_bias::<M, S, N, K, C>(q, &rates));
+        for i in 0..C {
+            let row = quasi::forces::<M, S, N, K, C>(q, &rows.rows[i].into());
+            rows.rows[i] = SVector::from(row);
+            rows.bias[i] -= rows.rows[i].dot(&bias);
+        }
+    }
+    rows
+}
+
+/// [`constraint_rows`] at (q, q̇), the coordinates' rates.
+pub(crate) fn constraint_rows_in_rates<
     M: Constraints<N, K, C>,
     S: Scalar,
     const N: usize,

@@ -1,7 +1,8 @@
 //! The Schur-complement solve of the KKT system in a mode: [`ConstrainedAccelerations`] and
 //! [`accelerations_in_mode`] (sliding friction included).
 
-use super::rows::{constraint_rows, real, rows_from_pass, ConstraintRows};
+use super::quasi;
+use super::rows::{constraint_rows_in_rates, real, rows_from_pass, ConstraintRows};
 use super::sliding::{slip_sign, SlidingSystem};
 use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
@@ -139,6 +140,29 @@ pub fn accelerations_in_mode<
     v: &[S; N],
     mode: &Mode<C>,
 ) -> Result<ConstrainedAccelerations<S, N, C>> {
+    let rates = quasi::rates::<M, S, N, K, C>(q, v);
+    let solved = accelerations_in_mode_in_rates(model, t, q, &rates, mode)?;
+    Ok(ConstrainedAccelerations {
+        accelerations: quasi::accelerations::<M, S, N, K, C>(q, &rates, &solved.accelerations),
+        multipliers: solved.multipliers,
+    })
+}
+
+/// [`accelerations_in_mode`] at (q, q̇), the coordinates' rates: q̈ and λ.
+#[inline(always)]
+pub(crate) fn accelerations_in_mode_in_rates<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    mode: &Mode<C>,
+) -> Result<ConstrainedAccelerations<S, N, C>> {
     // A scleronomic mechanism evaluates x(q) once, for M, 𝓕, b and the constraint rows alike.
     let pass = (!M::RHEONOMIC).then(|| dynamics::motion_pass(model, t, q, v));
     let eom = match &pass {
@@ -154,7 +178,7 @@ pub fn accelerations_in_mode<
     let u = l.solve(&(eom.generalized_forces - eom.inertial_terms));
     let rows = || match &pass {
         Some(pass) => rows_from_pass(model, pass, t, q, v).0,
-        None => constraint_rows(model, t, q, v),
+        None => constraint_rows_in_rates(model, t, q, v),
     };
     solve_kkt(model, t, q, mode, |b| l.solve(b), u, rows)
 }
@@ -182,7 +206,7 @@ pub(crate) fn accelerations_in_mode_prepared<
     let u = affine::free_accelerations(model, constants, t, q, v);
     let rows = || match M::RHEONOMIC {
         // Constraints that read t (x itself cannot, to be affine): ∂/∂t seeded as well.
-        true => constraint_rows(model, t, q, v),
+        true => constraint_rows_in_rates(model, t, q, v),
         false => rows_from_pass(model, &dynamics::motion_pass(model, t, q, v), t, q, v).0,
     };
     solve_kkt(

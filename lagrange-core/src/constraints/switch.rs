@@ -4,10 +4,12 @@
 
 use super::cone;
 use super::mode::{apply_fix, friction_rows_follow, worst_violation};
+use super::projection::project_in_rates;
+use super::rows::constraint_rows_in_rates;
 use super::rows::rows_and_scales;
-use super::solve::accelerations_in_mode;
+use super::solve::accelerations_in_mode_in_rates;
 use super::CONSISTENCY_TOLERANCE;
-use super::{constraint_rows, project, ConstraintKind, Constraints, Mode, RowMode};
+use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::error::{describe_configuration, Error, Result};
 use crate::model::Coordinates;
 
@@ -43,10 +45,10 @@ pub(crate) fn transition<
         (ConstraintKind::Friction { .. }, RowMode::SlipPositive | RowMode::SlipNegative) => {
             // The slip velocity reached zero: make it exactly zero, then test static friction.
             mode.rows[row] = RowMode::Stick;
-            project(model, t, q, v, mode)?;
+            project_in_rates(model, t, q, v, mode)?;
         }
         (ConstraintKind::Friction { .. }, RowMode::Stick) => {
-            let lambda = accelerations_in_mode(model, t, q, v, mode)?.multipliers;
+            let lambda = accelerations_in_mode_in_rates(model, t, q, v, mode)?.multipliers;
             mode.rows[row] = if lambda[row] > 0.0 {
                 RowMode::SlipNegative
             } else {
@@ -60,10 +62,10 @@ pub(crate) fn transition<
                 mode.reference[i] = 0.0;
                 mode.stopping[i] = false;
             }
-            project(model, t, q, v, mode)?;
+            project_in_rates(model, t, q, v, mode)?;
         }
         (ConstraintKind::FrictionCone { partner, .. }, RowMode::Stick) => {
-            let lambda = accelerations_in_mode(model, t, q, v, mode)?.multipliers;
+            let lambda = accelerations_in_mode_in_rates(model, t, q, v, mode)?.multipliers;
             cone::break_stick(mode, row, partner, &lambda);
         }
         _ => {}
@@ -125,13 +127,13 @@ fn restore_complementarity<
     mode: &mut Mode<C>,
 ) -> Result<()> {
     for _ in 0..=2 * C {
-        let lambda = accelerations_in_mode(model, t, q, v, mode)?.multipliers;
+        let lambda = accelerations_in_mode_in_rates(model, t, q, v, mode)?.multipliers;
         match worst_violation(model, mode, &lambda) {
             None => break,
             Some((i, new)) => apply_fix::<M, N, K, C>(mode, i, new, &lambda),
         }
     }
-    project(model, t, q, v, mode)
+    project_in_rates(model, t, q, v, mode)
 }
 
 /// Velocity jump v ← v − M⁻¹Rᵀ(RM⁻¹Rᵀ)⁻¹d over the rows enforced in `mode`: an impulse along those
@@ -145,7 +147,7 @@ fn impulse<M: Constraints<N, K, C>, const N: usize, const K: usize, const C: usi
     decrease: &[f64; C],
 ) -> Result<()> {
     let names = &<M::Coords as Coordinates<N>>::NAMES;
-    let cr = constraint_rows(model, t, q, v);
+    let cr = constraint_rows_in_rates(model, t, q, v);
     let mass = crate::dynamics::mass_matrix(model, t, q);
     let l = crate::linalg::cholesky(&mass).map_err(|e| Error::SingularMassMatrix {
         t,

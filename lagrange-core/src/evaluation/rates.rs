@@ -142,6 +142,30 @@ impl<M: Evaluate<N>, const N: usize> Evaluate<N> for InRates<'_, M> {
         let rate = momentum_rate(self, t, q, rates);
         (self.momenta_at(t, q, rates), rate)
     }
+    #[inline(always)]
+    fn holonomic_constraints_at<S: Scalar>(&self, t: S, q: &[S; N]) -> Option<[S; N]> {
+        self.0.holonomic_constraints_at(t, q)
+    }
+    #[inline(always)]
+    fn enforced_holonomic_rows(&self) -> Option<usize> {
+        self.0.enforced_holonomic_rows()
+    }
+    /// The mechanism's projection of (q, v = B q̇), its q̇ = G v back (the same projection: see
+    /// `constraints::quasi`).
+    fn project(&self, t: f64, q: &mut [f64; N], rates: &mut [f64; N]) -> Result<()> {
+        let mut v = velocities::<M, f64, N>(q, rates);
+        self.0.project(t, q, &mut v)?;
+        *rates = self.0.position_rates_at(q, &v);
+        Ok(())
+    }
+    fn check_constraints(&self, t: f64, q: &[f64; N], rates: &[f64; N]) -> Result<()> {
+        self.0
+            .check_constraints(t, q, &velocities::<M, f64, N>(q, rates))
+    }
+    fn check_declaration_at(&self, t: f64, q: &[f64; N], rates: &[f64; N]) -> Result<()> {
+        self.0
+            .check_declaration_at(t, q, &velocities::<M, f64, N>(q, rates))
+    }
     fn switch_charts<S: Scalar>(&self, _: &mut [S; N], _: &mut [S; N]) -> bool {
         // The loop switches the mechanism's charts, on its own velocities, after converting back.
         false

@@ -12,8 +12,7 @@ use crate::ctxt::Ctxt;
 use crate::structure::rigid::{rigid_tree, Joint};
 
 /// The charts whose velocities are angular velocities, as their three flat slots. Reported: a
-/// marked field on a declaration with constraint rows, or whose bodies the rigid tree pass does
-/// not take; a marked coordinate outside every free or ball joint's chart; a generalized force on
+/// marked field on a declaration whose bodies the rigid tree pass does not take; a marked coordinate outside every free or ball joint's chart; a generalized force on
 /// a marked coordinate; a chart marked in part.
 pub(super) fn check_angular_velocities(cx: &Ctxt, model: &Model) -> Vec<[usize; 3]> {
     let marked = marked_fields(model.coords);
@@ -21,15 +20,6 @@ pub(super) fn check_angular_velocities(cx: &Ctxt, model: &Model) -> Vec<[usize; 
         return Vec::new();
     };
     let marker = |f: &Field| f.angular_velocity.clone().expect("a marked field");
-    if !model.constraints.is_empty() {
-        cx.error_spanned_by(
-            marker(first),
-            "`#[angular_velocity]` with constraint rows is not supported yet: the rows read the \
-             velocities as the coordinates' rates; leave the attribute out (the velocities are \
-             then the chart's rates)",
-        );
-        return Vec::new();
-    }
     let Some(tree) = rigid_tree(model) else {
         cx.error_spanned_by(
             marker(first),

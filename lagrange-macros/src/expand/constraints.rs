@@ -63,10 +63,16 @@ pub(super) fn constraints_impl(model: &Model) -> TokenStream {
         .any(|r| r.decl.kind() == Kind::Friction)
         .then(|| friction_fn(model));
     let derivatives = position_derivatives_fn(model);
+    // The rows are written on the rates; the module's functions convert a state's velocities.
+    let quasi = (!model.angular_velocities.is_empty()).then(|| {
+        quote!(const QUASI_VELOCITY_JOINTS: &'static [#p::tree::rigid::Joint] =
+            <Self as #p::Dynamics<#n>>::QUASI_VELOCITY_JOINTS;)
+    });
     quote! {
         impl #constraints::Constraints<#n, #k, #c> for #params {
             const NAMES: [&'static str; #c] = [#(#names),*];
             const KINDS: [#constraints::ConstraintKind; #c] = [#(#kinds),*];
+            #quasi
             #position
             #velocity
             #friction

@@ -24,9 +24,6 @@ pub struct Base {
     pub mass: MassPart,
     pub ident: Ident,
     pub link: String,
-    /// Whether its orientation's velocities are its angular velocity (`#[angular_velocity]`):
-    /// unless the module's own items add constraint rows, which read the velocities as rates.
-    pub angular_velocity: bool,
 }
 
 pub struct Declaration<'a> {
@@ -128,25 +125,14 @@ impl Declaration<'_> {
             return (quote!(), None);
         };
         let (p, r) = (ident(BASE_POSITION), ident(BASE_ROTATION));
-        let (velocities, marker) = match base.angular_velocity {
-            true => (
-                "the base's angular velocity in the base's frame",
-                quote!(#[angular_velocity]),
-            ),
-            false => (
-                "their rates (the module declares constraint rows)",
-                quote!(),
-            ),
-        };
-        let doc = format!(
-            " The floating base's orientation: modified Rodrigues parameters n tan(θ/4) of the \
-             rotation by θ about n, kept within |σ| ≤ 1 (θ ≤ π); its velocities are {velocities}."
-        );
+        let doc = " The floating base's orientation: modified Rodrigues parameters n tan(θ/4) of \
+                   the rotation by θ about n, kept within |σ| ≤ 1 (θ ≤ π); its velocities are the \
+                   base's angular velocity in the base's frame.";
         let coords = quote! {
             /// The floating base's frame origin in the world frame.
             pub #p: [f64; 3],
             #[doc = #doc]
-            #marker
+            #[angular_velocity]
             pub #r: [f64; 3],
         };
         (coords, Some(self.base_body(base)))

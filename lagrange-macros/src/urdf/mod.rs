@@ -110,7 +110,6 @@ fn declaration(
             mass,
             ident: emit::ident(&all[all.len() - 1].ident),
             link: root.unwrap_or_default().to_string(),
-            angular_velocity: !declares_constraint_rows(module),
         }),
     };
     let items = decl.items();
@@ -131,25 +130,6 @@ fn declaration(
             #items
             #(#user)*
         }
-    })
-}
-
-/// Whether the module's own items declare constraint rows (`#[constraint]`, `#[unilateral]`, …),
-/// with which a floating base keeps its chart's rates for velocities (`check::velocities`).
-fn declares_constraint_rows(module: &syn::ItemMod) -> bool {
-    let rows = [
-        "constraint",
-        "velocity_constraint",
-        "unilateral",
-        "friction",
-    ];
-    let items = module.content.as_ref().map(|(_, items)| items.as_slice());
-    items.unwrap_or_default().iter().any(|item| match item {
-        syn::Item::Fn(f) => f
-            .attrs
-            .iter()
-            .any(|a| rows.iter().any(|r| a.path().is_ident(r))),
-        _ => false,
     })
 }
 

@@ -37,8 +37,8 @@ use crate::linalg::{cholesky_solve, NotPositiveDefinite};
 pub(crate) use charts::Orientation;
 use nalgebra::{SMatrix, SVector};
 pub use quasi::{
-    has_angular_velocities, position_rates, rate_forces, velocities_from_rates, velocity_bias,
-    velocity_forces,
+    angular_velocity_slots, has_angular_velocities, position_rates, rate_forces,
+    velocities_from_rates, velocity_bias, velocity_forces,
 };
 
 /// Whether the joint translates too: a free joint (six coordinates, p then c), not a ball joint

@@ -29,6 +29,13 @@ pub const fn has_angular_velocities(joints: &[Joint]) -> bool {
     false
 }
 
+/// The slots whose velocities are components of an angular velocity, in order.
+pub fn angular_velocity_slots(joints: &[Joint]) -> Vec<usize> {
+    angular_orientations(joints)
+        .flat_map(|(at, _)| at..at + 3)
+        .collect()
+}
+
 /// Where each orientation with the angular velocity for velocities starts, and its chart.
 #[inline(always)]
 fn angular_orientations(joints: &[Joint]) -> impl Iterator<Item = (usize, RotationChart)> + '_ {
