@@ -5,8 +5,8 @@
 //! singularity, for reference); a body thrown free in either chart (`thrown_vector`, `thrown_mrp`:
 //! the rigid tree's free joint); each chart's body again with `#[angular_velocity]`
 //! (`vector_omega`, `mrp_omega`, their `_step`s, `thrown_vector_omega`, `thrown_mrp_omega`); and a
-//! quadruped's q̈ with a floating base (whose velocities are its angular velocity) and with its
-//! root fixed.
+//! quadruped's q̈ with a floating base (whose velocities are its angular velocity), with its
+//! root fixed, and floating above a ground row (`quadruped_standing`: the constrained solve).
 //! `charts MODE CALLS`; count.sh takes the difference of two call counts under callgrind
 //! (`BIN=charts MODES="vector mrp quaternion euler vector_step mrp_step quaternion_step
 //! euler_step" scripts/callgrind/count.sh`). `charts accuracy` prints each orientation's largest
@@ -138,6 +138,15 @@ pub mod by_euler {
 pub mod floating_quadruped {}
 #[lagrange::urdf("../../tests/urdf/quadruped.urdf")]
 pub mod fixed_quadruped {}
+/// The floating quadruped with a ground its base stays above (a unilateral row, separated at the
+/// state below): the constrained solve.
+#[lagrange::urdf("../../tests/urdf/quadruped.urdf", floating)]
+pub mod standing_quadruped {
+    #[unilateral]
+    fn above_ground() -> f64 {
+        base_position[2] + 1.0
+    }
+}
 
 /// q̈ of a quadruped at a bent, moving state.
 fn quadruped<M: Mechanism<N>, const N: usize>(sys: &M, calls: usize) -> f64 {
@@ -354,6 +363,12 @@ fn main() {
         ),
         "quadruped_fixed" => quadruped(
             &fixed_quadruped::FixedQuadruped::default()
+                .validated()
+                .unwrap(),
+            calls,
+        ),
+        "quadruped_standing" => quadruped(
+            &standing_quadruped::StandingQuadruped::default()
                 .validated()
                 .unwrap(),
             calls,
