@@ -19,7 +19,7 @@
 use super::Constraints;
 use crate::error::Result;
 use crate::geometry::Scalar;
-use crate::tree::rigid::free;
+use crate::tree::rigid::{free, Joint};
 
 /// Whether `M`'s velocities are quasi-velocities (a constant).
 #[inline(always)]
@@ -30,6 +30,22 @@ pub(super) const fn quasi<
     const C: usize,
 >() -> bool {
     free::has_angular_velocities(M::QUASI_VELOCITY_JOINTS)
+}
+
+/// One of the maps of [`free`]: the joints, q, x.
+type JointMap<S, const N: usize> = fn(&[Joint], &[S; N], &[S; N]) -> [S; N];
+
+/// `map` of `M`'s joints at q applied to x; x itself without quasi-velocities.
+#[inline(always)]
+fn through<M: Constraints<N, K, C>, S: Scalar, const N: usize, const K: usize, const C: usize>(
+    q: &[S; N],
+    x: &[S; N],
+    map: JointMap<S, N>,
+) -> [S; N] {
+    match quasi::<M, N, K, C>() {
+        false => *x,
+        true => map(M::QUASI_VELOCITY_JOINTS, q, x),
+    }
 }
 
 /// q̇ = G(q) v.
@@ -44,10 +60,7 @@ pub(super) fn rates<
     q: &[S; N],
     v: &[S; N],
 ) -> [S; N] {
-    match quasi::<M, N, K, C>() {
-        false => *v,
-        true => free::position_rates(M::QUASI_VELOCITY_JOINTS, q, v),
-    }
+    through::<M, S, N, K, C>(q, v, free::position_rates)
 }
 
 /// v = B(q) q̇.
@@ -62,10 +75,7 @@ pub(super) fn velocities<
     q: &[S; N],
     rates: &[S; N],
 ) -> [S; N] {
-    match quasi::<M, N, K, C>() {
-        false => *rates,
-        true => free::velocities_from_rates(M::QUASI_VELOCITY_JOINTS, q, rates),
-    }
+    through::<M, S, N, K, C>(q, rates, free::velocities_from_rates)
 }
 
 /// v̇ = B q̈ + Ḃ q̇ from q̈ at (q, q̇).
@@ -118,10 +128,7 @@ pub(super) fn forces<
     q: &[S; N],
     f: &[S; N],
 ) -> [S; N] {
-    match quasi::<M, N, K, C>() {
-        false => *f,
-        true => free::velocity_forces(M::QUASI_VELOCITY_JOINTS, q, f),
-    }
+    through::<M, S, N, K, C>(q, f, free::velocity_forces)
 }
 
 /// Runs `change` on (q, q̇ = G v), which may move both, and writes v = B(q) q̇ back at the moved
