@@ -418,3 +418,52 @@ fn a_floating_urdf_base_with_contacts_has_angular_velocities() {
         end.q.base_position
     );
 }
+
+/// The quadruped standing on its base's contact (closed, pressed down by its weight), its joints
+/// driven: q̈ of the constrained solve, whose M, 𝓕 and b come from the tree's recursions, against
+/// the KKT system solved here on the dense Cartesian pass (`lagrange::dynamics`, which shares no
+/// code with the recursions) of the declaration with the same inputs held, in the rates and
+/// converted to ω̇. Both are exact formulas in double precision: 1e-10 relative.
+#[test]
+fn a_driven_standing_quadruped_is_the_dense_kkt_system() {
+    use lagrange::inputs::{Inputs, WithInputs};
+    use standing_quadruped::{Efforts, StandingQuadruped as Robot, DOF};
+    const NU: usize = DOF - 6;
+    let robot = Robot::default();
+    let joints = <Robot as RigidTree<DOF, 13>>::JOINTS;
+    let efforts: [f64; NU] = std::array::from_fn(|i| 0.8 * ((i as f64) * 1.7).sin());
+    let mut q: [f64; DOF] = std::array::from_fn(|k| 0.3 * ((k as f64) * 0.7).sin());
+    let mut v: [f64; DOF] = std::array::from_fn(|k| 0.5 * ((k as f64) * 1.3).cos());
+    // On the ground, not moving through it.
+    (q[2], v[2]) = (0.0, 0.0);
+    let state = standing_quadruped::State::new(
+        0.0,
+        standing_quadruped::Coords::from_array(q),
+        standing_quadruped::Coords::from_array(v),
+    );
+    let inputs = Efforts::from_array(efforts);
+    let solved = robot
+        .driven(&inputs)
+        .accelerations(&state)
+        .unwrap()
+        .to_array();
+
+    let held = WithInputs::<Robot, f64, NU>::new(&robot, efforts);
+    let rates = position_rates(&joints, &q, &v);
+    let eom = lagrange::dynamics::equations_of_motion(&held, 0.0, &q, &rates);
+    // The ground row on the rates: g = z, r = e₂, β = 0 (z is a coordinate).
+    let mut kkt = nalgebra::SMatrix::<f64, 19, 19>::zeros();
+    kkt.fixed_view_mut::<DOF, DOF>(0, 0)
+        .copy_from(&eom.mass_matrix);
+    (kkt[(2, DOF)], kkt[(DOF, 2)]) = (-1.0, 1.0);
+    let mut rhs = nalgebra::SVector::<f64, 19>::zeros();
+    rhs.fixed_rows_mut::<DOF>(0)
+        .copy_from(&(eom.generalized_forces - eom.inertial_terms));
+    let x = kkt.lu().solve(&rhs).unwrap();
+    let qdd: [f64; DOF] = std::array::from_fn(|i| x[i]);
+    assert!(x[DOF] > 0.0, "the ground pushes: λ = {}", x[DOF]);
+    let b_qdd = velocities_from_rates(&joints, &q, &qdd);
+    let bias = velocity_bias(&joints, &q, &rates);
+    let expected: [f64; DOF] = std::array::from_fn(|i| b_qdd[i] + bias[i]);
+    agree(&solved, &expected, 1e-10, "ω̇ and q̈ of the joints");
+}

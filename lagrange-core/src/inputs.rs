@@ -20,6 +20,7 @@ mod contacts;
 pub use contacts::DrivenContacts;
 
 use crate::constraints::{CartesianMotion, ConstraintKind, ConstraintRows, Constraints, Coulomb};
+use crate::dynamics::EquationsOfMotion;
 use crate::evaluation::{Constants, Evaluate, Prepare};
 use crate::geometry::Scalar;
 use crate::model::{Model, GRADIENT_COEFFICIENTS};
@@ -263,6 +264,16 @@ where
     #[inline(always)]
     fn position_constraints<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> [D; C] {
         self.model.position_constraints(t, q, x)
+    }
+    #[inline(always)]
+    fn tree_equations<F: Model<N, K>, S: Scalar>(
+        &self,
+        forces: &F,
+        t: S,
+        q: &[S; N],
+        rates: &[S; N],
+    ) -> Option<EquationsOfMotion<S, N>> {
+        self.model.tree_equations(forces, t, q, rates)
     }
     #[inline(always)]
     fn position_constraint_derivatives<S: Scalar>(

@@ -260,6 +260,7 @@ pub(crate) use rows::rows_and_scales;
 pub use rows::{constraint_rows, holonomic_values, CartesianMotion, ConstraintRows};
 pub use solve::{accelerations_in_mode, ConstrainedAccelerations};
 
+use crate::dynamics::EquationsOfMotion;
 use crate::geometry::Scalar;
 use crate::model::Model;
 use crate::tree::rigid::Joint;
@@ -381,6 +382,25 @@ pub trait Constraints<const N: usize, const K: usize, const C: usize>: Model<N, 
 
     /// g or c for position rows (holonomic, unilateral); zero for the others.
     fn position_constraints<D: Scalar>(&self, t: D, q: &[D; N], x: &[D; K]) -> [D; C];
+
+    /// M, 𝓕 and b at (t, q, q̇), q̇ the coordinates' rates, with the forces of `forces` (the
+    /// declaration, or the declaration with its inputs held), formed otherwise than by the
+    /// Cartesian pass: `#[mechanism]` writes it for a declaration the rigid tree pass takes (the
+    /// composite-rigid-body algorithm and Newton–Euler,
+    /// [`equations_of_motion_in_rates`](crate::tree::rigid::equations_of_motion_in_rates)), and
+    /// the constrained solve then takes them, the Cartesian pass forming the rows alone. `None`
+    /// (the default): the solve forms M, 𝓕 and b from the same Cartesian pass as the rows.
+    #[inline(always)]
+    fn tree_equations<F: Model<N, K>, S: Scalar>(
+        &self,
+        forces: &F,
+        t: S,
+        q: &[S; N],
+        rates: &[S; N],
+    ) -> Option<EquationsOfMotion<S, N>> {
+        let _ = (forces, t, q, rates);
+        None
+    }
 
     /// The position rows whose derivatives [`position_constraint_derivatives`](Self::position_constraint_derivatives)
     /// writes out; the others are differentiated on dual numbers through

@@ -6,7 +6,7 @@ use super::rows::{constraint_rows_in_rates, real, rows_from_pass, ConstraintRows
 use super::sliding::{slip_sign, SlidingSystem};
 use super::{ConstraintKind, Constraints, Mode, RowMode};
 use crate::affine::{self, AffineConstants};
-use crate::dynamics;
+use crate::dynamics::{self, EquationsOfMotion};
 use crate::error::{describe_configuration, Error, Result};
 use crate::geometry::Scalar;
 use crate::linalg::{factor_pattern, mass_pattern, Ldlt, NotPositiveDefinite, SINGULAR_PIVOT};
@@ -163,24 +163,94 @@ pub(crate) fn accelerations_in_mode_in_rates<
     v: &[S; N],
     mode: &Mode<C>,
 ) -> Result<ConstrainedAccelerations<S, N, C>> {
-    // A scleronomic mechanism evaluates x(q) once, for M, 𝓕, b and the constraint rows alike.
+    // A rigid tree's recursions give M, 𝓕 and b where the declaration has them (the rows then
+    // from a Cartesian pass of their own); otherwise the Cartesian pass gives both.
+    match model.tree_equations(model, t, q, v) {
+        Some(eom) => on_equations(model, t, q, v, mode, &eom),
+        None => on_cartesian_pass(model, t, q, v, mode),
+    }
+}
+
+// Each path of the solve is its own function in a build without optimisation, where frames are
+// not shared: a rigid tree's solve then does not carry the Cartesian pass's large locals on the
+// stack. Optimised, both are inlined and the path not taken is removed.
+
+/// The solve on M, 𝓕 and b given (a rigid tree's), the rows by their own Cartesian pass.
+#[cfg_attr(debug_assertions, inline(never))]
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn on_equations<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    mode: &Mode<C>,
+    eom: &EquationsOfMotion<S, N>,
+) -> Result<ConstrainedAccelerations<S, N, C>> {
+    let (l, u) = factorised::<M, S, N, K, C>(eom, t, q)?;
+    let rows = || constraint_rows_in_rates(model, t, q, v);
+    solve_kkt(model, t, q, mode, |b| l.solve(b), u, rows)
+}
+
+/// The solve with M, 𝓕, b and the rows from one Cartesian pass (a scleronomic mechanism
+/// evaluates x(q) once for all of them).
+#[cfg_attr(debug_assertions, inline(never))]
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn on_cartesian_pass<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    model: &M,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+    mode: &Mode<C>,
+) -> Result<ConstrainedAccelerations<S, N, C>> {
     let pass = (!M::RHEONOMIC).then(|| dynamics::motion_pass(model, t, q, v));
     let eom = match &pass {
         Some(pass) => dynamics::equations_of_motion_from_pass(model, pass, t, q, v),
         None => dynamics::equations_of_motion(model, t, q, v),
     };
-    // LDLᵀ with reciprocal pivots: no square roots, no divisions in the solves (see `Ldlt`). The
-    // entries of L that the declaration rules out (coordinates no massive row couples, and no
-    // elimination fills in) are constants: never formed, in the factorisation or the C + 1 solves.
-    let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
-    let l = Ldlt::with_pattern(&eom.mass_matrix, pattern)
-        .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, S, N>(&eom.mass_matrix, e, t, q))?;
-    let u = l.solve(&(eom.generalized_forces - eom.inertial_terms));
+    let (l, u) = factorised::<M, S, N, K, C>(&eom, t, q)?;
     let rows = || match &pass {
         Some(pass) => rows_from_pass(model, pass, t, q, v).0,
         None => constraint_rows_in_rates(model, t, q, v),
     };
     solve_kkt(model, t, q, mode, |b| l.solve(b), u, rows)
+}
+
+/// The factors of M and u = M⁻¹(𝓕 − b).
+type Factorised<S, const N: usize> = (Ldlt<S, N, [[bool; N]; N]>, SVector<S, N>);
+
+/// M = LDLᵀ and u = M⁻¹(𝓕 − b). LDLᵀ with reciprocal pivots: no square roots, no divisions in
+/// the solves (see `Ldlt`). The entries of L that the declaration rules out (coordinates no
+/// massive row couples, and no elimination fills in) are constants: never formed, in the
+/// factorisation or the C + 1 solves.
+#[inline(always)]
+fn factorised<
+    M: Constraints<N, K, C>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const C: usize,
+>(
+    eom: &EquationsOfMotion<S, N>,
+    t: S,
+    q: &[S; N],
+) -> Result<Factorised<S, N>> {
+    let pattern = const { factor_pattern(&mass_pattern(&M::DEPENDS, M::INERTIAL)) };
+    let l = Ldlt::with_pattern(&eom.mass_matrix, pattern)
+        .map_err(|e| dynamics::mass_matrix_failure::<M::Coords, S, N>(&eom.mass_matrix, e, t, q))?;
+    let u = l.solve(&(eom.generalized_forces - eom.inertial_terms));
+    Ok((l, u))
 }
 
 /// [`accelerations_in_mode`] of a mechanism whose positions are affine in the coordinates, with

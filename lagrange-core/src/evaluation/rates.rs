@@ -12,7 +12,7 @@ use crate::dynamics::EquationsOfMotion;
 use crate::error::Result;
 use crate::geometry::Scalar;
 use crate::tree::rigid::free;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SMatrix;
 
 /// The mechanism `M` with the coordinates' rates q̇ for velocities. With v = B q̇ (B = G⁻¹), every
 /// quantity is the mechanism's converted (see [`crate::tree::rigid::free`]):
@@ -46,15 +46,6 @@ pub(crate) fn velocities<M: Evaluate<N>, S: Scalar, const N: usize>(
 #[inline(always)]
 fn to_rates<M: Evaluate<N>, S: Scalar, const N: usize>(q: &[S; N], x: &[S; N]) -> [S; N] {
     free::rate_forces(joints::<M, N>(), q, x)
-}
-
-/// Bᵀ x for a vector.
-#[inline(always)]
-fn to_rates_vector<M: Evaluate<N>, S: Scalar, const N: usize>(
-    q: &[S; N],
-    x: &SVector<S, N>,
-) -> SVector<S, N> {
-    to_rates::<M, S, N>(q, &(*x).into()).into()
 }
 
 /// Ḃ q̇.
@@ -92,16 +83,10 @@ impl<M: Evaluate<N>, const N: usize> Evaluate<N> for InRates<'_, M> {
     ) -> EquationsOfMotion<S, N> {
         let v = velocities::<M, S, N>(q, rates);
         let eom = self.0.equations_of_motion_at(t, q, &v);
-        let bias = SVector::from(bias::<M, S, N>(q, rates));
-        let inertial = eom.inertial_terms + eom.mass_matrix * bias;
-        EquationsOfMotion {
-            mass_matrix: congruent::<M, S, N>(q, &eom.mass_matrix),
-            generalized_forces: to_rates_vector::<M, S, N>(q, &eom.generalized_forces),
-            inertial_terms: to_rates_vector::<M, S, N>(q, &inertial),
-        }
+        free::equations_in_rates(joints::<M, N>(), q, rates, eom)
     }
     fn mass_matrix_at<S: Scalar>(&self, t: S, q: &[S; N]) -> SMatrix<S, N, N> {
-        congruent::<M, S, N>(q, &self.0.mass_matrix_at(t, q))
+        free::congruent(joints::<M, N>(), q, &self.0.mass_matrix_at(t, q))
     }
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], rates: &[S; N]) -> Result<[S; N]> {
         let v = velocities::<M, S, N>(q, rates);
@@ -170,18 +155,4 @@ impl<M: Evaluate<N>, const N: usize> Evaluate<N> for InRates<'_, M> {
         // The loop switches the mechanism's charts, on its own velocities, after converting back.
         false
     }
-}
-
-/// Bᵀ M B: a matrix on the velocities made one on the rates (column j is Bᵀ M B eⱼ).
-fn congruent<M: Evaluate<N>, S: Scalar, const N: usize>(
-    q: &[S; N],
-    m: &SMatrix<S, N, N>,
-) -> SMatrix<S, N, N> {
-    let mut out = SMatrix::<S, N, N>::zeros();
-    for j in 0..N {
-        let unit: [S; N] = std::array::from_fn(|i| if i == j { S::one() } else { S::zero() });
-        let column = *m * SVector::from(velocities::<M, S, N>(q, &unit));
-        out.set_column(j, &to_rates_vector::<M, S, N>(q, &column));
-    }
-    out
 }

@@ -8,8 +8,9 @@ use crate::symbolic::constraint_rows::ConstraintDerivatives;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-/// The `Constraints` impl: one row per constraint item, in declaration order.
-pub(super) fn constraints_impl(model: &Model) -> TokenStream {
+/// The `Constraints` impl: one row per constraint item, in declaration order; with `rigid`, the
+/// bodies of the rigid tree the declaration takes, whose recursions give the solve M, 𝓕 and b.
+pub(super) fn constraints_impl(model: &Model, rigid: Option<usize>) -> TokenStream {
     let p = private();
     let constraints = quote!(#p::lagrange_core::constraints);
     let (params, n, k, c) = (
@@ -68,15 +69,40 @@ pub(super) fn constraints_impl(model: &Model) -> TokenStream {
         quote!(const QUASI_VELOCITY_JOINTS: &'static [#p::tree::rigid::Joint] =
             <Self as #p::Dynamics<#n>>::QUASI_VELOCITY_JOINTS;)
     });
+    let tree = rigid.map(|b| tree_equations_fn(model, b));
     quote! {
         impl #constraints::Constraints<#n, #k, #c> for #params {
             const NAMES: [&'static str; #c] = [#(#names),*];
             const KINDS: [#constraints::ConstraintKind; #c] = [#(#kinds),*];
             #quasi
+            #tree
             #position
             #velocity
             #friction
             #derivatives
+        }
+    }
+}
+
+/// `tree_equations`: M, 𝓕 and b at the coordinates' rates by the rigid tree's recursions over
+/// its `b` bodies, with the forces of the model the solve hands it.
+fn tree_equations_fn(model: &Model, b: usize) -> TokenStream {
+    let p = private();
+    let (n, k, b) = (lit(model.dof()), lit(model.rows), lit(b));
+    quote! {
+        #[inline(always)]
+        fn tree_equations<__F: #p::Model<#n, #k>, __S: #p::Scalar>(
+            &self,
+            __forces: &__F,
+            __t: __S,
+            __q: &[__S; #n],
+            __rates: &[__S; #n],
+        ) -> #p::core::option::Option<#p::dynamics::EquationsOfMotion<__S, #n>> {
+            let __joints = &<Self as #p::tree::rigid::RigidTree<#n, #b>>::JOINTS;
+            let __k = self.__lagrange_rigid_constants();
+            #p::core::option::Option::Some(#p::tree::rigid::equations_of_motion_in_rates(
+                __forces, __joints, &__k, __t, __q, __rates,
+            ))
         }
     }
 }

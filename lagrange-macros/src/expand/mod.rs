@@ -164,6 +164,10 @@ fn generate(model: &Model) -> TokenStream {
         false => Positions::General,
     };
     let (equations, equations_items) = equations_items(model, affine);
+    let rigid = match equations {
+        Equations::Rigid(b) => Some(b),
+        _ => None,
+    };
     let mechanism_impl = mechanism_impl(&Glue {
         params: model.params_ident,
         n: model.dof(),
@@ -176,7 +180,7 @@ fn generate(model: &Model) -> TokenStream {
         charts: &model.charts,
         angular_velocities: &model.angular_velocities,
     });
-    let constraints_impl = constrained.map(|_| constraints_impl(model));
+    let constraints_impl = constrained.map(|_| constraints_impl(model, rigid));
     let declaration_impl = declaration_impl(model);
     let drawable_impl = drawable_impl(model);
     let parametrized = parametrized_items(model);

@@ -97,10 +97,53 @@ pub fn equations_of_motion<
     q: &[S; N],
     v: &[S; N],
 ) -> EquationsOfMotion<S, N> {
-    let (inertial_terms, gravity) = newton_euler::bias_and_gravity(&M::JOINTS, k, q, v);
+    equations_on_joints(model, &M::JOINTS, k, t, q, v)
+}
+
+/// [`equations_of_motion`] at the coordinates' rates q̇, the forces those of `forces` (the
+/// declaration, or the declaration with its inputs held) and the tree `joints`: where a joint has
+/// the angular velocity for velocities, evaluated at v = B q̇ and converted
+/// ([`free::equations_in_rates`]). What the constrained solve takes instead of the Cartesian pass
+/// (`Constraints::tree_equations`), whose rows are written on the rates.
+pub fn equations_of_motion_in_rates<
+    F: Model<N, K>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const B: usize,
+>(
+    forces: &F,
+    joints: &[Joint; B],
+    k: &RigidConstants<B>,
+    t: S,
+    q: &[S; N],
+    rates: &[S; N],
+) -> EquationsOfMotion<S, N> {
+    let v = free::velocities_from_rates(joints, q, rates);
+    let on_velocities = equations_on_joints(forces, joints, k, t, q, &v);
+    free::equations_in_rates(joints, q, rates, on_velocities)
+}
+
+/// [`equations_of_motion`] on the tree `joints`, the forces those of `model`.
+#[inline(always)]
+fn equations_on_joints<
+    M: Model<N, K>,
+    S: Scalar,
+    const N: usize,
+    const K: usize,
+    const B: usize,
+>(
+    model: &M,
+    joints: &[Joint; B],
+    k: &RigidConstants<B>,
+    t: S,
+    q: &[S; N],
+    v: &[S; N],
+) -> EquationsOfMotion<S, N> {
+    let (inertial_terms, gravity) = newton_euler::bias_and_gravity(joints, k, q, v);
     EquationsOfMotion {
-        mass_matrix: composite::mass_matrix(&M::JOINTS, k, q),
-        generalized_forces: gravity + other_generalized_forces(model, &M::JOINTS, t, q, v),
+        mass_matrix: composite::mass_matrix(joints, k, q),
+        generalized_forces: gravity + other_generalized_forces(model, joints, t, q, v),
         inertial_terms,
     }
 }

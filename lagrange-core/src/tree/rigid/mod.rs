@@ -46,8 +46,8 @@ pub use articulated::{accelerations, singular, Articulated, Pivot};
 pub use composite::{mass_matrix, momenta};
 pub use declared::inverse_dynamics;
 pub use declared::{
-    axis_frame, body_constants, diagonal, equations_of_motion, finished, flip, less_other_forces,
-    other_generalized_forces, turned_tensor,
+    axis_frame, body_constants, diagonal, equations_of_motion, equations_of_motion_in_rates,
+    finished, flip, less_other_forces, other_generalized_forces, turned_tensor,
 };
 pub use kinematics::{kinetic_energy, world_frames, Frame};
 /// τ = M q̈ + b − 𝓕_g of the bodies alone (see [`declared::inverse_dynamics`] for a declaration's).

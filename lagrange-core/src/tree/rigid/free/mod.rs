@@ -36,9 +36,10 @@ use crate::geometry::Scalar;
 use crate::linalg::{cholesky_solve, NotPositiveDefinite};
 pub(crate) use charts::Orientation;
 use nalgebra::{SMatrix, SVector};
+pub(crate) use quasi::congruent;
 pub use quasi::{
-    angular_velocity_slots, has_angular_velocities, position_rates, rate_forces,
-    velocities_from_rates, velocity_bias, velocity_forces,
+    angular_velocity_slots, equations_in_rates, has_angular_velocities, position_rates,
+    rate_forces, velocities_from_rates, velocity_bias, velocity_forces,
 };
 
 /// Whether the joint translates too: a free joint (six coordinates, p then c), not a ball joint

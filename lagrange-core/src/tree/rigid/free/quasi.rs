@@ -13,8 +13,10 @@
 //! forces and momenta dual to the velocities by the power τ_q̇ · q̇ = τ_v · v.
 
 use super::{orientation_at, Orientation};
+use crate::dynamics::EquationsOfMotion;
 use crate::geometry::{RotationChart, Scalar};
 use crate::tree::rigid::{Joint, JointKind, Velocities};
+use nalgebra::{SMatrix, SVector};
 
 /// Whether some free or ball joint among `joints` has the angular velocity for velocities.
 #[inline(always)]
@@ -118,6 +120,52 @@ pub fn velocity_bias<S: Scalar, const N: usize>(
 ) -> [S; N] {
     let bias = |c: &Orientation<S>, r| c.angular_bias(r, c.angular_velocity(r));
     on_orientations(joints, q, (rates, [S::zero(); N]), bias)
+}
+
+/// Bᵀ M B: a matrix on the velocities made one on the rates (column j is Bᵀ M B eⱼ).
+pub(crate) fn congruent<S: Scalar, const N: usize>(
+    joints: &[Joint],
+    q: &[S; N],
+    m: &SMatrix<S, N, N>,
+) -> SMatrix<S, N, N> {
+    let mut out = SMatrix::<S, N, N>::zeros();
+    for j in 0..N {
+        let unit: [S; N] = std::array::from_fn(|i| if i == j { S::one() } else { S::zero() });
+        let column = *m * SVector::from(velocities_from_rates(joints, q, &unit));
+        out.set_column(j, &SVector::from(rate_forces(joints, q, &column.into())));
+    }
+    out
+}
+
+/// M, 𝓕 and b on the velocities v = B q̇ made those on the rates q̇:
+///
+/// ```text
+/// M = Bᵀ M_v B,   𝓕 = Bᵀ 𝓕_v,   b = Bᵀ (b_v + M_v Ḃ q̇),
+/// ```
+///
+/// from M_v v̇ + b_v = 𝓕_v with v̇ = B q̈ + Ḃ q̇, multiplied by Bᵀ. The equations as they are where
+/// no joint has the angular velocity for velocities.
+pub fn equations_in_rates<S: Scalar, const N: usize>(
+    joints: &[Joint],
+    q: &[S; N],
+    rates: &[S; N],
+    on_velocities: EquationsOfMotion<S, N>,
+) -> EquationsOfMotion<S, N> {
+    if !has_angular_velocities(joints) {
+        return on_velocities;
+    }
+    let EquationsOfMotion {
+        mass_matrix,
+        generalized_forces,
+        inertial_terms,
+    } = on_velocities;
+    let bias = SVector::from(velocity_bias(joints, q, rates));
+    let to_rates = |x: SVector<S, N>| SVector::from(rate_forces(joints, q, &x.into()));
+    EquationsOfMotion {
+        mass_matrix: congruent(joints, q, &mass_matrix),
+        generalized_forces: to_rates(generalized_forces),
+        inertial_terms: to_rates(inertial_terms + mass_matrix * bias),
+    }
 }
 
 #[cfg(test)]
