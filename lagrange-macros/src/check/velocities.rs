@@ -52,8 +52,10 @@ pub(super) fn check_angular_velocities(cx: &Ctxt, model: &Model) -> Vec<[usize; 
     }
     for force in &model.forces {
         if force.kind == Kind::GeneralizedForce && is_marked(force.target) {
+            // At the coordinate `on =` names (the function's name where it names none).
+            let at = force.decl.args.on.as_ref().unwrap_or(force.decl.ident());
             cx.error_spanned_by(
-                force.decl.ident(),
+                at,
                 "a generalized force on a coordinate whose velocity is an angular velocity \
                  (`#[angular_velocity]`) would be dual to the chart's rate, not to the velocity: \
                  turn the body with `#[torque(on = body)]`",
