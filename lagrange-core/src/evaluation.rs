@@ -108,8 +108,8 @@ pub trait Dynamics<const N: usize>: Prepare + Sized {
 
     /// Whether the velocities are quasi-velocities (some joint of
     /// [`QUASI_VELOCITY_JOINTS`](Dynamics::QUASI_VELOCITY_JOINTS) has the angular velocity). The
-    /// explicit Runge–Kutta methods step them; the methods on momenta conjugate to q̇ step the
-    /// coordinates' rates between conversions; Störmer–Verlet and Radau5 refuse them
+    /// explicit Runge–Kutta methods step them; the methods on momenta conjugate to q̇ and Radau5
+    /// step the coordinates' rates between conversions; Störmer–Verlet refuses them
     /// ([`Error::UnsuitableMethod`]).
     const QUASI_VELOCITIES: bool = free::has_angular_velocities(Self::QUASI_VELOCITY_JOINTS);
 

@@ -251,6 +251,11 @@ impl<M: Dynamics<N>, X: ContactModel<M, N>, const N: usize> AccelerationField<N>
         M::QUASI_VELOCITIES
     }
 
+    #[inline(always)]
+    fn quasi_joints(&self) -> &'static [crate::tree::rigid::Joint] {
+        M::QUASI_VELOCITY_JOINTS
+    }
+
     fn jacobians(
         &self,
         t: f64,

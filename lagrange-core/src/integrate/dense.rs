@@ -2,6 +2,8 @@
 //! what events are located on, and the cubic Hermite interpolant every method without a
 //! continuous extension of its own uses.
 
+use crate::tree::rigid::{free, Joint};
+
 /// Width under which an event's bracket counts as located (absolute, in time units; widened to
 /// 4 ulp of t for large t).
 pub const EVENT_TIME_TOLERANCE: f64 = 1e-13;
@@ -18,6 +20,10 @@ pub struct DenseOutput<const N: usize> {
     v: [[f64; N]; 8],
     /// Coefficients in use: 5 (Dopri5, Hermite) or 8 (Dop853).
     terms: usize,
+    /// Where the polynomial in v is one in the coordinates' rates q̇ of a mechanism whose
+    /// velocities are quasi-velocities (Radau5 steps the rates): its joints, by whose map
+    /// v = B(q) q̇ [`eval`](Self::eval) turns the rates into the velocities; none elsewhere.
+    rates_of: &'static [Joint],
 }
 
 impl<const N: usize> DenseOutput<N> {
@@ -29,6 +35,7 @@ impl<const N: usize> DenseOutput<N> {
             q: [[0.0; N]; 8],
             v: [[0.0; N]; 8],
             terms: 5,
+            rates_of: &[],
         };
         d.q[0] = *q;
         d.v[0] = *v;
@@ -89,6 +96,7 @@ impl<const N: usize> DenseOutput<N> {
             q,
             v,
             terms: 5,
+            rates_of: &[],
         }
     }
 
@@ -100,6 +108,7 @@ impl<const N: usize> DenseOutput<N> {
             q,
             v,
             terms: 8,
+            rates_of: &[],
         }
     }
 
@@ -115,6 +124,18 @@ impl<const N: usize> DenseOutput<N> {
 
     /// (q, v) at time t (meant for t in the step; outside it this extrapolates).
     pub fn eval(&self, t: f64) -> ([f64; N], [f64; N]) {
+        let (q, v) = self.polynomials(t);
+        match self.rates_of.is_empty() {
+            true => (q, v),
+            false => {
+                let v = free::velocities_from_rates(self.rates_of, &q, &v);
+                (q, v)
+            }
+        }
+    }
+
+    /// The two polynomials at t.
+    fn polynomials(&self, t: f64) -> ([f64; N], [f64; N]) {
         if self.h == 0.0 {
             return (self.q[0], self.v[0]);
         }
@@ -133,6 +154,12 @@ impl<const N: usize> DenseOutput<N> {
             })
         };
         (f(&self.q), f(&self.v))
+    }
+
+    /// Marks the polynomial in v as one in the rates q̇ of the quasi-velocities of `joints`, which
+    /// [`eval`](Self::eval) then converts (v = B(q) q̇).
+    pub(crate) fn evaluate_velocities(&mut self, joints: &'static [Joint]) {
+        self.rates_of = joints;
     }
 
     /// The root in (t_start, t_end] of g(t, q(t), v(t)) given its values at both ends (of opposite

@@ -382,16 +382,17 @@ pub(crate) fn refuse_contacts<M: Evaluate<N>, const N: usize>(method: &'static s
 /// Refuses a mechanism with quasi-velocities (`quasi`: `Dynamics::QUASI_VELOCITIES`, a free or
 /// ball joint whose velocities are its angular velocity) for a method built on q̇ = v that does not
 /// convert: Störmer–Verlet advances q by v (and wants a constant mass matrix, which the rates of a
-/// chart do not have), and Radau5's Newton matrix and dense output take q̇ = v. Decided by the
-/// declaration, never by a state. The explicit Runge–Kutta methods step q̇ = G(q) v; the methods on
-/// momenta conjugate to q̇ step the rates between conversions.
+/// chart do not have). Decided by the declaration, never by a state. The explicit Runge–Kutta
+/// methods step q̇ = G(q) v; the methods on momenta conjugate to q̇ and Radau5 step the rates
+/// between conversions.
 pub(crate) fn refuse_quasi_velocities(method: &'static str, quasi: bool) -> Result<()> {
     match quasi {
         true => Err(crate::Error::UnsuitableMethod {
             method,
             reason: "the declaration's velocities include a free or ball joint's angular velocity \
                      (`#[angular_velocity]`), which is not the rate of its coordinates; step it \
-                     with Rk4, Dopri5, Dop853, ImplicitMidpoint, GaussLegendre2 or Variational, \
+                     with Rk4, Dopri5, Dop853, Radau5, ImplicitMidpoint, GaussLegendre2 or \
+                     Variational, \
                      or declare the coordinates without `#[angular_velocity]` (their velocities \
                      then are the chart's rates)"
                 .to_string(),

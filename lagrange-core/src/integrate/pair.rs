@@ -10,9 +10,10 @@ use super::dopri5::settings::Dopri5;
 use super::newton::acceleration_jacobians;
 use super::Stats;
 use crate::error::{Error, Result};
-use crate::evaluation::{diagnose, Evaluate};
+use crate::evaluation::{diagnose, Dynamics, Evaluate};
 use crate::geometry::Scalar;
 use crate::model::Coordinates;
+use crate::tree::rigid::Joint;
 use nalgebra::SMatrix;
 
 /// The methods that are [`EmbeddedPair`]s (each marks itself where it is defined).
@@ -70,10 +71,17 @@ pub trait AccelerationField<const N: usize> {
     }
 
     /// Whether the velocities are quasi-velocities (q̇ = G(q) v, not v), which the methods whose
-    /// Newton iteration takes q̇ = v refuse (Radau5); `false`, the default.
+    /// Newton iteration takes q̇ = v step in the coordinates' rates (Radau5); `false`, the default.
     #[inline(always)]
     fn quasi_velocities(&self) -> bool {
         false
+    }
+
+    /// The joints whose velocities are angular velocities, by whose maps G and B the velocities
+    /// and the rates convert (`Dynamics::QUASI_VELOCITY_JOINTS`); none, the default.
+    #[inline(always)]
+    fn quasi_joints(&self) -> &'static [Joint] {
+        &[]
     }
 
     /// The exact Jacobians ∂q̈/∂q and ∂q̈/∂q̇ at (t, q, q̇).
@@ -106,6 +114,11 @@ impl<M: Evaluate<N>, const N: usize> AccelerationField<N> for OfMechanism<'_, M>
     #[inline(always)]
     fn quasi_velocities(&self) -> bool {
         M::QUASI_VELOCITIES
+    }
+
+    #[inline(always)]
+    fn quasi_joints(&self) -> &'static [Joint] {
+        <M::Model as Dynamics<N>>::QUASI_VELOCITY_JOINTS
     }
 
     fn jacobians(

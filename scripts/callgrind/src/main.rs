@@ -96,6 +96,7 @@ const MODES: &[(&str, Run)] = &[
     ("gl2_validated_double_pendulum", Fixed(steps::gl2_validated_double_pendulum)),
     ("midpoint_fresh_double_pendulum", Fixed(steps::midpoint_fresh_double_pendulum)),
     ("gl2_fresh_double_pendulum", Fixed(steps::gl2_fresh_double_pendulum)),
+    ("radau5_double_pendulum", Fixed(steps::radau5_double_pendulum)),
     // Steps of Andrews' squeezer.
     ("rk4_squeezer", Fixed(squeezer::rk4_squeezer)),
     ("rk4_simulate_squeezer", Fixed(squeezer::rk4_simulate_squeezer)),

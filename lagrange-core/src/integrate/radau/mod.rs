@@ -89,6 +89,7 @@
 mod algebra;
 mod iteration;
 mod memory;
+mod rates;
 mod settings;
 mod step;
 

@@ -8,12 +8,13 @@
 use super::algebra::*;
 use super::iteration::Attempt;
 use super::memory::Radau5Memory;
+use super::rates;
 use super::Radau5;
 use crate::error::{Error, Result};
 use crate::integrate::control::{check_limit, initial_step_on, next_attempt};
 use crate::integrate::dense::DenseOutput;
 use crate::integrate::dopri5::settings::Dopri5;
-use crate::integrate::newton::{breakdown, refuse_quasi_velocities};
+use crate::integrate::newton::breakdown;
 use crate::integrate::pair::{sealed, AccelerationField, Accepted, EmbeddedPair, StepStart};
 use crate::integrate::Stats;
 use crate::model::{check_state, Coordinates};
@@ -164,6 +165,113 @@ impl Radau5 {
     }
 }
 
+impl Radau5 {
+    /// [`EmbeddedPair::step`] on a field whose velocities are the coordinates' rates.
+    fn step_on<C: Coordinates<N>, const N: usize>(
+        &self,
+        memory: &mut Radau5Memory<N>,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        t_limit: f64,
+        stats: &mut Stats,
+        dense: &mut DenseOutput<N>,
+    ) -> Result<Accepted<N>> {
+        let t = start.0;
+        check_limit(t, t_limit)?;
+        let (y0, f0) = first_order(start);
+        let mut reject = false;
+        let mut last_error: Option<Error> = None;
+        loop {
+            let limits = (t, t_limit);
+            let (h, last) = next_attempt("Radau5", limits, memory.h, self.h_max, &mut last_error)?;
+            let (z, newt, jac, f) = match self.solve_stages(memory, field, start, &y0, h, stats)? {
+                Ok(converged) => converged,
+                Err((factor, error)) => {
+                    // `radau5.f` label 78 / the slow-convergence exit: shrink, refresh an old Jacobian.
+                    last_error = error.or(last_error);
+                    reject_step(memory, h * factor, &mut reject, stats);
+                    continue;
+                }
+            };
+            let refine = memory.first || reject;
+            let err = Self::error(
+                memory,
+                field,
+                (t, &y0, &f0),
+                h,
+                &z,
+                (&jac, &f),
+                refine,
+                stats,
+            );
+            let quot = self.step_quotient(err, newt);
+            if !(err < 1.0) {
+                let h_retry = if memory.first { 0.1 * h } else { h / quot };
+                reject_step(memory, h_retry, &mut reject, stats);
+                continue;
+            }
+            let quot = Self::predictive_quotient(memory, h, err, quot);
+            let t_new = if last { t_limit } else { t + h };
+            let accepted = Self::accepted::<C, N>((t, &y0), t_new, h, &z, dense)?;
+            stats.accepted += 1;
+            memory.last = Some(*dense);
+            self.propose_next(memory, h, quot, (last, reject));
+            return Ok(accepted);
+        }
+    }
+
+    /// [`EmbeddedPair::shorten`] on a field whose velocities are the coordinates' rates.
+    fn shorten_on<C: Coordinates<N>, const N: usize>(
+        &self,
+        memory: &mut Radau5Memory<N>,
+        field: &impl AccelerationField<N>,
+        start: StepStart<'_, N>,
+        h: f64,
+        stats: &mut Stats,
+        dense: &mut DenseOutput<N>,
+    ) -> Result<Accepted<N>> {
+        let t = start.0;
+        let (y0, _) = first_order(start);
+        let mut fresh = memory.jacobians.is_none();
+        loop {
+            // The factorisation for h is not kept: the next step starts from the proposed one.
+            let (jac, factors) = Self::newton_matrices(memory, field, start, h, stats)?;
+            let attempt = match factors {
+                Some(f) => self.newton(memory, field, (t, &y0), h, &jac, &f, stats),
+                None => Attempt::Failed(0.5, None),
+            };
+            match attempt {
+                Attempt::Converged(z, _) => {
+                    let accepted = Self::accepted::<C, N>((t, &y0), t + h, h, &z, dense)?;
+                    memory.last = Some(*dense);
+                    memory.jacobian_current = false;
+                    return Ok(accepted);
+                }
+                Attempt::Failed(_, error) if fresh => {
+                    let reason = "the step cut at an event did not converge";
+                    let iteration = self.max_newton_iterations;
+                    return Err(error.unwrap_or(breakdown("Radau5", t, h, iteration, reason)));
+                }
+                Attempt::Failed(..) => {
+                    memory.jacobians = None;
+                    fresh = true;
+                }
+            }
+        }
+    }
+}
+
+/// The first step's size, chosen as Dopri5 chooses it (HNW I §II.4) at Radau5's tolerances.
+fn first_step<const N: usize>(
+    field: &impl AccelerationField<N>,
+    dopri: &Dopri5,
+    start: StepStart<'_, N>,
+    stats: &mut Stats,
+) -> f64 {
+    let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
+    initial_step_on(acc, dopri, start, start.2, 5, stats)
+}
+
 /// A rejected attempt: the next one with `h_retry`, a Jacobian not evaluated at the step's start
 /// evaluated anew.
 fn reject_step<const N: usize>(
@@ -225,8 +333,13 @@ impl EmbeddedPair for Radau5 {
                     h_max: self.h_max,
                     ..Dopri5::default()
                 };
-                let acc = |t: f64, q: &[f64; N], v: &[f64; N]| field.accelerations(t, q, v);
-                initial_step_on(acc, &dopri, start, start.2, 5, stats)
+                // In the rates, where the steps are taken, for quasi-velocities.
+                match field.quasi_velocities() {
+                    false => first_step(field, &dopri, start, stats),
+                    true => rates::in_rates(field, start, |field, start| {
+                        first_step(field, &dopri, start, stats)
+                    }),
+                }
             }
         };
         Radau5Memory {
@@ -264,49 +377,13 @@ impl EmbeddedPair for Radau5 {
         stats: &mut Stats,
         dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
-        refuse_quasi_velocities("Radau5", field.quasi_velocities())?;
-        let t = start.0;
-        check_limit(t, t_limit)?;
-        let (y0, f0) = first_order(start);
-        let mut reject = false;
-        let mut last_error: Option<Error> = None;
-        loop {
-            let limits = (t, t_limit);
-            let (h, last) = next_attempt("Radau5", limits, memory.h, self.h_max, &mut last_error)?;
-            let (z, newt, jac, f) = match self.solve_stages(memory, field, start, &y0, h, stats)? {
-                Ok(converged) => converged,
-                Err((factor, error)) => {
-                    // `radau5.f` label 78 / the slow-convergence exit: shrink, refresh an old Jacobian.
-                    last_error = error.or(last_error);
-                    reject_step(memory, h * factor, &mut reject, stats);
-                    continue;
-                }
-            };
-            let refine = memory.first || reject;
-            let err = Self::error(
-                memory,
-                field,
-                (t, &y0, &f0),
-                h,
-                &z,
-                (&jac, &f),
-                refine,
-                stats,
-            );
-            let quot = self.step_quotient(err, newt);
-            if !(err < 1.0) {
-                let h_retry = if memory.first { 0.1 * h } else { h / quot };
-                reject_step(memory, h_retry, &mut reject, stats);
-                continue;
-            }
-            let quot = Self::predictive_quotient(memory, h, err, quot);
-            let t_new = if last { t_limit } else { t + h };
-            let accepted = Self::accepted::<C, N>((t, &y0), t_new, h, &z, dense)?;
-            stats.accepted += 1;
-            memory.last = Some(*dense);
-            self.propose_next(memory, h, quot, (last, reject));
-            return Ok(accepted);
+        if !field.quasi_velocities() {
+            return self.step_on::<C, N>(memory, field, start, t_limit, stats, dense);
         }
+        let step = rates::in_rates(field, start, |field, start| {
+            self.step_on::<C, N>(memory, field, start, t_limit, stats, dense)
+        });
+        rates::in_velocities(field.quasi_joints(), step, dense)
     }
 
     /// The collocation equations solved anew for the shorter h, from the accepted step's
@@ -324,35 +401,13 @@ impl EmbeddedPair for Radau5 {
         stats: &mut Stats,
         dense: &mut DenseOutput<N>,
     ) -> Result<Accepted<N>> {
-        refuse_quasi_velocities("Radau5", field.quasi_velocities())?;
-        let t = start.0;
-        let (y0, _) = first_order(start);
-        let mut fresh = memory.jacobians.is_none();
-        loop {
-            // The factorisation for h is not kept: the next step starts from the proposed one.
-            let (jac, factors) = Self::newton_matrices(memory, field, start, h, stats)?;
-            let attempt = match factors {
-                Some(f) => self.newton(memory, field, (t, &y0), h, &jac, &f, stats),
-                None => Attempt::Failed(0.5, None),
-            };
-            match attempt {
-                Attempt::Converged(z, _) => {
-                    let accepted = Self::accepted::<C, N>((t, &y0), t + h, h, &z, dense)?;
-                    memory.last = Some(*dense);
-                    memory.jacobian_current = false;
-                    return Ok(accepted);
-                }
-                Attempt::Failed(_, error) if fresh => {
-                    let reason = "the step cut at an event did not converge";
-                    let iteration = self.max_newton_iterations;
-                    return Err(error.unwrap_or(breakdown("Radau5", t, h, iteration, reason)));
-                }
-                Attempt::Failed(..) => {
-                    memory.jacobians = None;
-                    fresh = true;
-                }
-            }
+        if !field.quasi_velocities() {
+            return self.shorten_on::<C, N>(memory, field, start, h, stats, dense);
         }
+        let step = rates::in_rates(field, start, |field, start| {
+            self.shorten_on::<C, N>(memory, field, start, h, stats, dense)
+        });
+        rates::in_velocities(field.quasi_joints(), step, dense)
     }
 
     fn field_changed<const N: usize>(memory: &mut Radau5Memory<N>) {

@@ -1,7 +1,7 @@
 //! Steps of the integrators on the double pendulum (h = 10⁻³), one per call: RK4 on the
 //! parameters, through a validated handle, with an animation recorder, with sensitivities, and by
 //! hand on the closed form; the implicit midpoint rule and Gauss–Legendre 2 as a solver takes them
-//! (memory kept) and through `sys.step` (fresh memory).
+//! (memory kept) and through `sys.step` (fresh memory); accepted steps of Radau5 from a solver.
 
 use crate::mechanisms::{double_pendulum_start, DOUBLE_PENDULUM};
 use crate::modes::closed_forms::double_pendulum_accelerations;
@@ -188,4 +188,14 @@ pub fn gl2_fresh_double_pendulum(n: usize) -> f64 {
             .unwrap();
     }
     s.q.theta1
+}
+
+/// One accepted Radau5 step (tolerance 1e-8) per call, from a solver that keeps its memory.
+pub fn radau5_double_pendulum(n: usize) -> f64 {
+    let sys = DOUBLE_PENDULUM;
+    let mut solver = Stepper::new(&sys, Radau5::new(1e-8, 1e-8), &double_pendulum_start()).unwrap();
+    for _ in 0..n {
+        black_box(&mut solver).step(f64::INFINITY).unwrap();
+    }
+    solver.state().q.theta1
 }
