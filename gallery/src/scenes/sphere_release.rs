@@ -131,89 +131,167 @@ impl Release {
     }
 }
 
-pub fn run(plots: &Path) -> Vec<Check> {
-    use sphere_release::{Coords, SphereRelease, State};
-    let sys = SphereRelease {
-        m: 0.7,
-        r: 1.5,
-        g: 9.81,
-    };
-    let (m, r, g) = (sys.m, sys.r, sys.g);
-    let v0 = 1.2f64;
-    let cos_star = (2.0 + v0 * v0 / (g * r)) / 3.0;
-    let theta_star = cos_star.acos();
-    let speed = |th: f64| (v0 * v0 + 2.0 * g * r * (1.0 - th.cos())).sqrt();
-    let t_star = gauss_legendre(|th| r / speed(th), 0.0, theta_star, 400);
-    let normal_exact = |cos: f64| m * g * (3.0 * cos - 2.0) - m * v0 * v0 / r;
+/// The scene's particle, its start and the closed form of its release.
+struct Setup {
+    sys: sphere_release::SphereRelease,
+    s0: sphere_release::State,
+    v0: f64,
+    /// cos θ*, θ*, t*.
+    cos_star: f64,
+    theta_star: f64,
+    t_star: f64,
+}
 
-    let s0 = State::new(0.0, Coords { x: 0.0, y: r }, Coords { x: v0, y: 0.0 });
+impl Setup {
+    fn new() -> Self {
+        use sphere_release::{Coords, SphereRelease, State};
+        let sys = SphereRelease {
+            m: 0.7,
+            r: 1.5,
+            g: 9.81,
+        };
+        let (r, g) = (sys.r, sys.g);
+        let v0 = 1.2f64;
+        let cos_star = (2.0 + v0 * v0 / (g * r)) / 3.0;
+        let theta_star = cos_star.acos();
+        let speed = |th: f64| (v0 * v0 + 2.0 * g * r * (1.0 - th.cos())).sqrt();
+        let t_star = gauss_legendre(|th| r / speed(th), 0.0, theta_star, 400);
+        let s0 = State::new(0.0, Coords { x: 0.0, y: r }, Coords { x: v0, y: 0.0 });
+        Setup {
+            sys,
+            s0,
+            v0,
+            cos_star,
+            theta_star,
+            t_star,
+        }
+    }
+
+    /// The speed at angle θ, by energy.
+    fn speed(&self, theta: f64) -> f64 {
+        let (r, g, v0) = (self.sys.r, self.sys.g, self.v0);
+        (v0 * v0 + 2.0 * g * r * (1.0 - theta.cos())).sqrt()
+    }
+
+    /// The normal force at cos θ: m g (3 cos θ − 2) − m v₀²/r.
+    fn normal(&self, cos: f64) -> f64 {
+        let (m, r, g, v0) = (self.sys.m, self.sys.r, self.sys.g, self.v0);
+        m * g * (3.0 * cos - 2.0) - m * v0 * v0 / r
+    }
+}
+
+/// What the run records: the path, the normal force against the closed form, the parabola
+/// after release, and the worst departures.
+#[derive(Default)]
+struct Traces {
+    path: Vec<(f64, f64)>,
+    normal: Vec<(f64, f64)>,
+    closed: Vec<(f64, f64)>,
+    parabola: Vec<(f64, f64)>,
+    worst_normal: f64,
+    worst_parabola: f64,
+    closest: f64,
+}
+
+pub fn run(plots: &Path) -> Vec<Check> {
+    let setup = Setup::new();
+    let sys = &setup.sys;
     let h = 1e-3;
-    let mut stepper = Stepper::new(&sys, Rk4::with_step(h), &s0).expect("stepper");
+    let mut stepper = Stepper::new(sys, Rk4::with_step(h), &setup.s0).expect("stepper");
     let in_contact = stepper.contacts().mode().rows == [RowMode::Active];
-    let mut s = s0;
-    let (mut worst_normal, mut normal_trace, mut closed_trace) = (0.0f64, Vec::new(), Vec::new());
-    let mut path = vec![(s.q.x, s.q.y)];
-    let mut film = Recorder::new(&sys).title(SCENE);
+    let mut film = Recorder::new(sys).title(SCENE);
     film.fixed_point("centre", &[0.0, 0.0])
         .and_then(|f| f.trail("particle"))
         .expect("the sphere's centre");
-    film.push(&sys, &s).expect("a finite state");
-    while stepper.mode_changes().is_empty() {
-        stepper.step(f64::INFINITY).expect("contact step");
-        s = stepper.state();
-        film.push(&sys, &s).expect("a finite state");
-        path.push((s.q.x, s.q.y));
-        if stepper.mode_changes().is_empty() {
-            let lambda = constraint_forces(&sys, &s).expect("forces").multipliers[0];
-            let cos = s.q.y / r;
-            worst_normal = worst_normal.max((lambda - normal_exact(cos)).abs());
-            let theta = s.q.x.atan2(s.q.y);
-            normal_trace.push((theta, lambda));
-            closed_trace.push((theta, normal_exact(cos)));
-        }
-    }
+    film.push(sys, &setup.s0).expect("a finite state");
+    let mut traces = Traces {
+        path: vec![(setup.s0.q.x, setup.s0.q.y)],
+        closest: f64::INFINITY,
+        ..Traces::default()
+    };
+    slide(&setup, &mut stepper, &mut film, &mut traces);
     let release = stepper.mode_changes()[0];
     let released = release.from == RowMode::Active && release.to == RowMode::Inactive;
-
-    // The state at the located release instant: the same integration, its last step shortened to
-    // end at the event.
-    let mut probe = Stepper::new(&sys, Rk4::with_step(h), &s0).expect("stepper");
-    while probe.t() + h < release.t {
-        probe.step(f64::INFINITY).expect("step");
-    }
-    probe.step(release.t).expect("step");
-    let at_release = probe.state();
-    let cos_release = at_release.q.y / at_release.q.x.hypot(at_release.q.y);
-
-    // After release: a parabola from the exact release state, staying outside the sphere.
-    let r_star = [r * theta_star.sin(), r * cos_star];
-    let v_star = [
-        speed(theta_star) * cos_star,
-        -speed(theta_star) * theta_star.sin(),
-    ];
-    let (mut worst_parabola, mut closest) = (0.0f64, f64::INFINITY);
-    let mut parabola = Vec::new();
-    while s.t < t_star + 0.4 {
-        stepper.step(f64::INFINITY).expect("free step");
-        s = stepper.state();
-        film.push(&sys, &s).expect("a finite state");
-        path.push((s.q.x, s.q.y));
-        let tau = s.t - t_star;
-        let x = r_star[0] + v_star[0] * tau;
-        let y = r_star[1] + v_star[1] * tau - 0.5 * g * tau * tau;
-        parabola.push((x, y));
-        worst_parabola = worst_parabola.max((s.q.x - x).abs()).max((s.q.y - y).abs());
-        closest = closest.min(s.q.x.hypot(s.q.y) - r);
-    }
+    let cos_release = cos_at(&setup, h, release.t);
+    fly(&setup, &mut stepper, &mut film, &mut traces);
     let _ = film.write_html(plots.join("sphere_release.html"));
+    let (t_star, theta_star) = (setup.t_star, setup.theta_star);
     let release_error = (release.t - t_star).abs() / t_star;
     println!(
         "{SCENE}: released at t = {:.15} s (quadrature {t_star:.15}, rel. error {release_error:.1e}), \
-         θ* = {theta_star:.6} rad; {} mode change(s); parabola within {worst_parabola:.1e} m",
+         θ* = {theta_star:.6} rad; {} mode change(s); parabola within {:.1e} m",
         release.t,
-        stepper.mode_changes().len()
+        stepper.mode_changes().len(),
+        traces.worst_parabola
     );
+    let one_release = in_contact && released && stepper.mode_changes().len() == 1;
+    let checks = checks(&setup, one_release, (release.t, cos_release), &traces);
+    plot_traces(plots, sys.r, traces);
+    checks
+}
 
+type Solver<'a> = Stepper<'a, sphere_release::SphereRelease, lagrange::Fixed<Rk4>, 2>;
+type Film = Recorder<sphere_release::SphereRelease, 2>;
+
+/// The contact phase, up to the located release: the path, and λ against N(θ) at every step.
+fn slide(setup: &Setup, stepper: &mut Solver<'_>, film: &mut Film, traces: &mut Traces) {
+    let (sys, r) = (&setup.sys, setup.sys.r);
+    while stepper.mode_changes().is_empty() {
+        stepper.step(f64::INFINITY).expect("contact step");
+        let s = stepper.state();
+        film.push(sys, &s).expect("a finite state");
+        traces.path.push((s.q.x, s.q.y));
+        if stepper.mode_changes().is_empty() {
+            let lambda = constraint_forces(sys, &s).expect("forces").multipliers[0];
+            let cos = s.q.y / r;
+            let exact = setup.normal(cos);
+            traces.worst_normal = traces.worst_normal.max((lambda - exact).abs());
+            let theta = s.q.x.atan2(s.q.y);
+            traces.normal.push((theta, lambda));
+            traces.closed.push((theta, exact));
+        }
+    }
+}
+
+/// cos θ at the located release instant: the same integration, its last step shortened to end
+/// at the event.
+fn cos_at(setup: &Setup, h: f64, t_release: f64) -> f64 {
+    let mut probe = Stepper::new(&setup.sys, Rk4::with_step(h), &setup.s0).expect("stepper");
+    while probe.t() + h < t_release {
+        probe.step(f64::INFINITY).expect("step");
+    }
+    probe.step(t_release).expect("step");
+    let at_release = probe.state();
+    at_release.q.y / at_release.q.x.hypot(at_release.q.y)
+}
+
+/// After release, for 0.4 s: a parabola from the exact release state, staying outside the sphere.
+fn fly(setup: &Setup, stepper: &mut Solver<'_>, film: &mut Film, traces: &mut Traces) {
+    let (sys, r, g) = (&setup.sys, setup.sys.r, setup.sys.g);
+    let (cos_star, theta_star, t_star) = (setup.cos_star, setup.theta_star, setup.t_star);
+    let r_star = [r * theta_star.sin(), r * cos_star];
+    let v_star = [
+        setup.speed(theta_star) * cos_star,
+        -setup.speed(theta_star) * theta_star.sin(),
+    ];
+    let mut s = stepper.state();
+    while s.t < t_star + 0.4 {
+        stepper.step(f64::INFINITY).expect("free step");
+        s = stepper.state();
+        film.push(sys, &s).expect("a finite state");
+        traces.path.push((s.q.x, s.q.y));
+        let tau = s.t - t_star;
+        let x = r_star[0] + v_star[0] * tau;
+        let y = r_star[1] + v_star[1] * tau - 0.5 * g * tau * tau;
+        traces.parabola.push((x, y));
+        let off = (s.q.x - x).abs().max((s.q.y - y).abs());
+        traces.worst_parabola = traces.worst_parabola.max(off);
+        traces.closest = traces.closest.min(s.q.x.hypot(s.q.y) - r);
+    }
+}
+
+/// The path with the sphere and the parabola, and the normal force against the closed form.
+fn plot_traces(plots: &Path, r: f64, traces: Traces) {
     let circle: Vec<(f64, f64)> = (0..=90)
         .map(|k| {
             let a = std::f64::consts::FRAC_PI_2 * (1.0 - k as f64 / 45.0);
@@ -227,8 +305,8 @@ pub fn run(plots: &Path) -> Vec<Check> {
         "y",
         &[
             Series::new("sphere", circle),
-            Series::new("simulated path", path),
-            Series::new("parabola from the release state", parabola),
+            Series::new("simulated path", traces.path),
+            Series::new("parabola from the release state", traces.parabola),
         ],
     );
     let _ = plot::lines(
@@ -237,17 +315,26 @@ pub fn run(plots: &Path) -> Vec<Check> {
         "θ",
         "N",
         &[
-            Series::new("λ (KKT multiplier)", normal_trace),
-            Series::new("closed form", closed_trace),
+            Series::new("λ (KKT multiplier)", traces.normal),
+            Series::new("closed form", traces.closed),
         ],
     );
+}
+
+/// The scene's checks: one release from contact, its time and angle against the closed form,
+/// λ against N(θ), the parabola, and no return to the sphere.
+fn checks(
+    setup: &Setup,
+    one_release: bool,
+    (t_release, cos_release): (f64, f64),
+    traces: &Traces,
+) -> Vec<Check> {
+    let (m, g) = (setup.sys.m, setup.sys.g);
     vec![
         Check::new(
             SCENE,
             "starts in contact, one mode change, contact → separated (1 = yes)",
-            f64::from(u8::from(
-                in_contact && released && stepper.mode_changes().len() == 1,
-            )),
+            f64::from(u8::from(one_release)),
             1.0,
             0.0,
         ),
@@ -256,8 +343,8 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             "release time t* (vs Gauss–Legendre ∫ R dθ / v)",
-            release.t,
-            t_star,
+            t_release,
+            setup.t_star,
             1e-9,
         ),
         // cos θ at the located instant: RK4 error of the position, as for t*.
@@ -265,7 +352,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
             SCENE,
             "cos θ at release = (2 + v₀²/(gR))/3",
             cos_release,
-            cos_star,
+            setup.cos_star,
             1e-9,
         ),
         // λ from the KKT solve at the RK4 state against the closed form at the same θ, which uses the
@@ -273,7 +360,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             "max |λ − N(θ)| / mg while in contact",
-            worst_normal / (m * g),
+            traces.worst_normal / (m * g),
             0.0,
             1e-9,
         ),
@@ -282,7 +369,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             "max |r − parabola| over 0.4 s after release (m)",
-            worst_parabola,
+            traces.worst_parabola,
             0.0,
             1e-8,
         ),
@@ -290,7 +377,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             "outside the sphere after release (1 = yes)",
-            f64::from(u8::from(closest > 0.0)),
+            f64::from(u8::from(traces.closest > 0.0)),
             1.0,
             0.0,
         ),
