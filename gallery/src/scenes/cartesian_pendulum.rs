@@ -85,6 +85,22 @@ const LONG_RUN: usize = if cfg!(debug_assertions) {
     100_000
 };
 
+/// The worst departures over the long run, and the tension's traces.
+#[derive(Default)]
+struct Departures {
+    /// From the angle form's position (the first 10⁴ steps).
+    position: f64,
+    /// −λ from the rod tension, relative to m g.
+    tension: f64,
+    /// |g| and |ġ|.
+    g: f64,
+    gdot: f64,
+    /// |E − E₀|.
+    energy: f64,
+    lambda_trace: Vec<(f64, f64)>,
+    tension_trace: Vec<(f64, f64)>,
+}
+
 pub fn run(plots: &Path) -> Vec<Check> {
     use angle_pendulum::AnglePendulum;
     use cartesian_pendulum::{CartesianPendulum, Coords, State};
@@ -98,9 +114,9 @@ pub fn run(plots: &Path) -> Vec<Check> {
         l: sys.l,
         g: sys.g,
     };
-    let (m, l, g) = (sys.m, sys.l, sys.g);
+    let l = sys.l;
     let (th0, w0) = (1.2f64, 0.5f64);
-    let mut s = State::new(
+    let s = State::new(
         0.0,
         Coords {
             x: l * th0.sin(),
@@ -111,32 +127,65 @@ pub fn run(plots: &Path) -> Vec<Check> {
             y: l * w0 * th0.sin(),
         },
     );
-    let mut a = angle_pendulum::State::new(
+    let a = angle_pendulum::State::new(
         0.0,
         angle_pendulum::Coords { theta: th0 },
         angle_pendulum::Coords { theta: w0 },
     );
     let h = 1e-3;
     let e0 = sys.energy(&s).expect("energy");
-    let (mut worst_position, mut worst_tension, mut worst_g, mut worst_gdot, mut worst_energy) =
-        (0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    let (mut lambda_trace, mut tension_trace) = (Vec::new(), Vec::new());
-    let mut film = Recorder::new(&sys).title(SCENE);
+    let d = long_run(plots, (&sys, s), (&angle, a), h, e0);
+    println!(
+        "{SCENE}: {LONG_RUN} RK4 steps h = {h}: |g| ≤ {:.2e}, |ġ| ≤ {:.2e}, \
+         energy drift {:.2e} J, position vs angle form (1e4 steps) {:.2e}, \
+         tension rel. error {:.2e}",
+        d.g, d.gdot, d.energy, d.position, d.tension
+    );
+    let checks = checks(&d, e0);
+    let _ = plot::lines(
+        &plots.join("cartesian_pendulum_tension.svg"),
+        "Cartesian pendulum: −λ against the rod tension m(g cos θ + Lθ̇²)",
+        "t",
+        "N",
+        &[
+            Series::new("−λ (KKT multiplier)", d.lambda_trace),
+            Series::new("m(g cos θ + Lθ̇²)", d.tension_trace),
+        ],
+    );
+    checks
+}
+
+/// [`LONG_RUN`] RK4 steps of `h` of the Cartesian pendulum from `s` (energy `e0`) and of the
+/// angle form from `a`, recorded: the departures, and the tension every 100 steps.
+fn long_run(
+    plots: &Path,
+    (sys, mut s): (
+        &cartesian_pendulum::CartesianPendulum,
+        cartesian_pendulum::State,
+    ),
+    (angle, mut a): (&angle_pendulum::AnglePendulum, angle_pendulum::State),
+    h: f64,
+    e0: f64,
+) -> Departures {
+    let (m, l, g) = (sys.m, sys.l, sys.g);
+    let mut d = Departures::default();
+    let mut film = Recorder::new(sys).title(SCENE);
     film.fixed_point("pivot", &[0.0, 0.0])
         .and_then(|f| f.link("pivot", "bob"))
         .expect("the pivot");
-    film.push(&sys, &s).expect("a finite state");
+    film.push(sys, &s).expect("a finite state");
     for step in 1..=LONG_RUN {
         sys.step::<Rk4>(&mut s, h).expect("Cartesian step");
-        film.push(&sys, &s).expect("a finite state");
+        film.push(sys, &s).expect("a finite state");
         angle.step::<Rk4>(&mut a, h).expect("angle step");
-        let rows = constraint_rows(&sys, s.t, &s.q.to_array(), &s.v.to_array());
-        worst_g = worst_g.max(rows.value[0].abs());
-        worst_gdot = worst_gdot.max(rows.rate[0].abs());
-        worst_energy = worst_energy.max((sys.energy(&s).expect("energy") - e0).abs());
+        let rows = constraint_rows(sys, s.t, &s.q.to_array(), &s.v.to_array());
+        d.g = d.g.max(rows.value[0].abs());
+        d.gdot = d.gdot.max(rows.rate[0].abs());
+        d.energy = d.energy.max((sys.energy(&s).expect("energy") - e0).abs());
         if step <= 10_000 {
             let th = a.q.theta;
-            worst_position = worst_position
+            d.position = d
+                .position
                 .max((s.q.x - l * th.sin()).abs())
                 .max((s.q.y + l * th.cos()).abs());
         }
@@ -145,30 +194,22 @@ pub fn run(plots: &Path) -> Vec<Check> {
             let theta = x.atan2(-y);
             let theta_dot = (x * vy - y * vx) / (l * l);
             let tension = m * (g * theta.cos() + l * theta_dot * theta_dot);
-            let lambda = constraint_forces(&sys, &s).expect("forces").multipliers[0];
-            worst_tension = worst_tension.max((-lambda - tension).abs() / tension.abs().max(m * g));
+            let lambda = constraint_forces(sys, &s).expect("forces").multipliers[0];
+            d.tension = d
+                .tension
+                .max((-lambda - tension).abs() / tension.abs().max(m * g));
             if s.t <= 5.0 {
-                lambda_trace.push((s.t, -lambda));
-                tension_trace.push((s.t, tension));
+                d.lambda_trace.push((s.t, -lambda));
+                d.tension_trace.push((s.t, tension));
             }
         }
     }
     let _ = film.write_html(plots.join("cartesian_pendulum.html"));
-    println!(
-        "{SCENE}: {LONG_RUN} RK4 steps h = {h}: |g| ≤ {worst_g:.2e}, |ġ| ≤ {worst_gdot:.2e}, \
-         energy drift {worst_energy:.2e} J, position vs angle form (1e4 steps) {worst_position:.2e}, \
-         tension rel. error {worst_tension:.2e}"
-    );
-    let _ = plot::lines(
-        &plots.join("cartesian_pendulum_tension.svg"),
-        "Cartesian pendulum: −λ against the rod tension m(g cos θ + Lθ̇²)",
-        "t",
-        "N",
-        &[
-            Series::new("−λ (KKT multiplier)", lambda_trace),
-            Series::new("m(g cos θ + Lθ̇²)", tension_trace),
-        ],
-    );
+    d
+}
+
+/// The scene's checks, `e0` the starting energy.
+fn checks(d: &Departures, e0: f64) -> Vec<Check> {
     let steps = format!(
         "{LONG_RUN} steps{}",
         if cfg!(debug_assertions) {
@@ -183,7 +224,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             "max |r − L(sin θ, −cos θ)| over 10 s vs the angle form (m)",
-            worst_position,
+            d.position,
             0.0,
             1e-8,
         ),
@@ -192,7 +233,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             format!("max |−λ − m(g cos θ + Lθ̇²)| / mg over {steps}"),
-            worst_tension,
+            d.tension,
             0.0,
             1e-10,
         ),
@@ -201,14 +242,14 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             format!("max |g| = ||r| − L| over {steps} (m)"),
-            worst_g,
+            d.g,
             0.0,
             1e-10,
         ),
         Check::new(
             SCENE,
             format!("max |ġ| over {steps} (m/s)"),
-            worst_gdot,
+            d.gdot,
             0.0,
             1e-10,
         ),
@@ -216,7 +257,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         Check::new(
             SCENE,
             format!("max |E − E₀| / |E₀| over {steps}"),
-            worst_energy / e0.abs(),
+            d.energy / e0.abs(),
             0.0,
             1e-7,
         ),
