@@ -162,21 +162,7 @@ pub fn run(plots: &Path) -> Vec<Check> {
         film.trail("block").expect("the block's path");
         let (trace, stepper) = push_observed(&sys, h, 2000, film.observer(&sys));
         if factor > 1.0 {
-            // The incline under the path: level direction (1, 0, 0), up-slope (0, cos α, sin α).
-            let (sn, cs) = sys.alpha.sin_cos();
-            let (mut lo, mut hi) = ((-0.2f64, -0.2f64), (0.2f64, 0.2f64));
-            for &(_, level, up) in &trace {
-                lo = (lo.0.min(level - 0.2), lo.1.min(up - 0.2));
-                hi = (hi.0.max(level + 0.2), hi.1.max(up + 0.2));
-            }
-            let at = |level: f64, up: f64| [level, up * cs, up * sn];
-            let (a, b, c, d) = (
-                at(lo.0, lo.1),
-                at(hi.0, lo.1),
-                at(hi.0, hi.1),
-                at(lo.0, hi.1),
-            );
-            outline(&mut film, "incline", &[&a, &b, &c, &d], true).expect("the incline");
+            draw_incline(&mut film, sys.alpha, &trace);
             let _ = film.write_html(plots.join("pushed_block.html"));
         }
         let &(t, level, up) = trace.last().unwrap();
@@ -186,60 +172,10 @@ pub fn run(plots: &Path) -> Vec<Check> {
              (level {level:.9}, up-slope {up:.9}) m, mode {rows:?}",
             sys.push
         );
-        match slides(&sys) {
-            None => {
-                // Sticking is enforced as a velocity constraint: no motion, to round-off.
-                checks.push(Check::new(
-                    SCENE,
-                    format!("{label}: distance moved in 2 s (m)"),
-                    level.hypot(up),
-                    0.0,
-                    1e-14,
-                ));
-                checks.push(Check::new(
-                    SCENE,
-                    format!("{label}: stuck throughout (1 = yes)"),
-                    f64::from(u8::from(
-                        stepper.mode_changes().is_empty() && rows[1] == RowMode::Stick,
-                    )),
-                    1.0,
-                    0.0,
-                ));
-            }
-            Some((a, (e1, e2))) => {
-                // Constant acceleration along a fixed direction: RK4 is exact, round-off only.
-                let d = 0.5 * a * t * t;
-                checks.push(Check::new(
-                    SCENE,
-                    format!("{label}: distance along the level direction (m)"),
-                    level,
-                    d * e1,
-                    1e-12,
-                ));
-                checks.push(Check::new(
-                    SCENE,
-                    format!("{label}: distance up the slope (m)"),
-                    up,
-                    d * e2,
-                    1e-12,
-                ));
-                checks.push(Check::new(
-                    SCENE,
-                    format!("{label}: slides from the start, no mode change (1 = yes)"),
-                    f64::from(u8::from(
-                        stepper.mode_changes().is_empty() && rows[1] == RowMode::Sliding,
-                    )),
-                    1.0,
-                    0.0,
-                ));
-                let closed = trace
-                    .iter()
-                    .step_by(20)
-                    .map(|&(t, _, _)| (t, 0.5 * a * t * t))
-                    .collect();
-                series.push(Series::new(format!("{label}, closed form"), closed));
-            }
-        }
+        let settled = stepper.mode_changes().is_empty().then_some(rows[1]);
+        let (case, closed) = case_checks(&sys, label, &trace, settled);
+        checks.extend(case);
+        series.extend(closed);
         let slid = trace
             .iter()
             .step_by(20)
@@ -255,4 +191,91 @@ pub fn run(plots: &Path) -> Vec<Check> {
         &series,
     );
     checks
+}
+
+/// The incline under the path, 0.2 m beyond it each way: level direction (1, 0, 0), up-slope
+/// (0, cos α, sin α).
+fn draw_incline(film: &mut Recorder<PushedBlock, 3>, alpha: f64, trace: &[(f64, f64, f64)]) {
+    let (sn, cs) = alpha.sin_cos();
+    let (mut lo, mut hi) = ((-0.2f64, -0.2f64), (0.2f64, 0.2f64));
+    for &(_, level, up) in trace {
+        lo = (lo.0.min(level - 0.2), lo.1.min(up - 0.2));
+        hi = (hi.0.max(level + 0.2), hi.1.max(up + 0.2));
+    }
+    let at = |level: f64, up: f64| [level, up * cs, up * sn];
+    let (a, b, c, d) = (
+        at(lo.0, lo.1),
+        at(hi.0, lo.1),
+        at(hi.0, hi.1),
+        at(lo.0, hi.1),
+    );
+    outline(film, "incline", &[&a, &b, &c, &d], true).expect("the incline");
+}
+
+/// One push's checks against the closed form ([`slides`]): stuck, or sliding along the
+/// resultant with constant acceleration; `settled` is the friction row's mode when the run had
+/// no mode change. With the closed form's distance to plot where it slides.
+fn case_checks(
+    sys: &PushedBlock,
+    label: &str,
+    trace: &[(f64, f64, f64)],
+    settled: Option<RowMode>,
+) -> (Vec<Check>, Option<Series>) {
+    let &(t, level, up) = trace.last().unwrap();
+    match slides(sys) {
+        // Sticking is enforced as a velocity constraint: no motion, to round-off.
+        None => (
+            vec![
+                Check::new(
+                    SCENE,
+                    format!("{label}: distance moved in 2 s (m)"),
+                    level.hypot(up),
+                    0.0,
+                    1e-14,
+                ),
+                Check::new(
+                    SCENE,
+                    format!("{label}: stuck throughout (1 = yes)"),
+                    f64::from(u8::from(settled == Some(RowMode::Stick))),
+                    1.0,
+                    0.0,
+                ),
+            ],
+            None,
+        ),
+        Some((a, (e1, e2))) => {
+            // Constant acceleration along a fixed direction: RK4 is exact, round-off only.
+            let d = 0.5 * a * t * t;
+            let checks = vec![
+                Check::new(
+                    SCENE,
+                    format!("{label}: distance along the level direction (m)"),
+                    level,
+                    d * e1,
+                    1e-12,
+                ),
+                Check::new(
+                    SCENE,
+                    format!("{label}: distance up the slope (m)"),
+                    up,
+                    d * e2,
+                    1e-12,
+                ),
+                Check::new(
+                    SCENE,
+                    format!("{label}: slides from the start, no mode change (1 = yes)"),
+                    f64::from(u8::from(settled == Some(RowMode::Sliding))),
+                    1.0,
+                    0.0,
+                ),
+            ];
+            let closed = trace
+                .iter()
+                .step_by(20)
+                .map(|&(t, _, _)| (t, 0.5 * a * t * t))
+                .collect();
+            let series = Series::new(format!("{label}, closed form"), closed);
+            (checks, Some(series))
+        }
+    }
 }
