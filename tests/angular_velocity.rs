@@ -417,6 +417,34 @@ agrees_converted!(
     ]
 );
 
+/// The MRP floater in both descriptions, and one motion (the first of [`floater_states`] at a
+/// rotation of norm 0.8) as each one's state: ω for the one, ċ = G ω for the other.
+fn one_motion_twice() -> (
+    quasi_mrp::Floater,
+    rates_mrp::Floater,
+    quasi_mrp::State,
+    rates_mrp::State,
+) {
+    let (m, push, g) = (1.3, 0.7, 9.81);
+    let (q, v) = floater_states(&[0.8])[0];
+    let s = quasi_mrp::State::new(
+        0.0,
+        quasi_mrp::Coords::from_array(q),
+        quasi_mrp::Coords::from_array(v),
+    );
+    let r = rates_mrp::State::new(
+        0.0,
+        rates_mrp::Coords::from_array(q),
+        rates_mrp::Coords::from_array(rates_of(RotationChart::Mrp, &q, &v)),
+    );
+    (
+        quasi_mrp::Floater { m, push, g },
+        rates_mrp::Floater { m, push, g },
+        s,
+        r,
+    )
+}
+
 /// Störmer–Verlet, built on q̇ = v (and a constant mass matrix), refuses such a declaration,
 /// decided by the declaration: the state is unchanged. (On q' = G(q) v it would not be
 /// symplectic.)
@@ -456,27 +484,7 @@ fn radau5_steps_as_the_rates() {
 }
 
 fn radau5_against_the_rates() {
-    let quasi = quasi_mrp::Floater {
-        m: 1.3,
-        push: 0.7,
-        g: 9.81,
-    };
-    let rates = rates_mrp::Floater {
-        m: 1.3,
-        push: 0.7,
-        g: 9.81,
-    };
-    let (q, v) = floater_states(&[0.8])[0];
-    let s = quasi_mrp::State::new(
-        0.0,
-        quasi_mrp::Coords::from_array(q),
-        quasi_mrp::Coords::from_array(v),
-    );
-    let r = rates_mrp::State::new(
-        0.0,
-        rates_mrp::Coords::from_array(q),
-        rates_mrp::Coords::from_array(rates_of(RotationChart::Mrp, &q, &v)),
-    );
+    let (quasi, rates, s, r) = one_motion_twice();
     let method = Radau5::new(1e-8, 1e-8);
     let mut quasi_run = Stepper::new(&quasi, method, &s).unwrap();
     let mut rates_run = Stepper::new(&rates, method, &r).unwrap();
@@ -521,28 +529,7 @@ macro_rules! steps_as_the_rates {
     ($name:ident, $method:ty) => {
         #[test]
         fn $name() {
-            let quasi = quasi_mrp::Floater {
-                m: 1.3,
-                push: 0.7,
-                g: 9.81,
-            };
-            let rates = rates_mrp::Floater {
-                m: 1.3,
-                push: 0.7,
-                g: 9.81,
-            };
-            let (q, v) = floater_states(&[0.8])[0];
-            let mut s = quasi_mrp::State::new(
-                0.0,
-                quasi_mrp::Coords::from_array(q),
-                quasi_mrp::Coords::from_array(v),
-            );
-            let q_dot = rates_of(RotationChart::Mrp, &q, &v);
-            let mut r = rates_mrp::State::new(
-                0.0,
-                rates_mrp::Coords::from_array(q),
-                rates_mrp::Coords::from_array(q_dot),
-            );
+            let (quasi, rates, mut s, mut r) = one_motion_twice();
             let (mut switched, e0) = (false, quasi.energy(&s).unwrap());
             for _ in 0..300 {
                 quasi.step::<$method>(&mut s, 0.01).unwrap();

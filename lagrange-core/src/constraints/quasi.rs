@@ -91,14 +91,10 @@ pub(super) fn accelerations<
     rates: &[S; N],
     qdd: &[S; N],
 ) -> [S; N] {
-    if !quasi::<M, N, K, C>() {
-        return *qdd;
+    match quasi::<M, N, K, C>() {
+        false => *qdd,
+        true => free::velocity_accelerations(M::QUASI_VELOCITY_JOINTS, q, rates, qdd),
     }
-    let (b_qdd, bias) = (
-        free::velocities_from_rates(M::QUASI_VELOCITY_JOINTS, q, qdd),
-        velocity_bias::<M, S, N, K, C>(q, rates),
-    );
-    std::array::from_fn(|i| b_qdd[i] + bias[i])
 }
 
 /// Ḃ q̇ at (q, q̇): what v̇ adds to B q̈.

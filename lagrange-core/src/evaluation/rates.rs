@@ -48,12 +48,6 @@ fn to_rates<M: Evaluate<N>, S: Scalar, const N: usize>(q: &[S; N], x: &[S; N]) -
     free::rate_forces(joints::<M, N>(), q, x)
 }
 
-/// Ḃ q̇.
-#[inline(always)]
-fn bias<M: Evaluate<N>, S: Scalar, const N: usize>(q: &[S; N], rates: &[S; N]) -> [S; N] {
-    free::velocity_bias(joints::<M, N>(), q, rates)
-}
-
 impl<M: Evaluate<N>, const N: usize> Evaluate<N> for InRates<'_, M> {
     type Model = M::Model;
     type Coords = M::Coords;
@@ -91,9 +85,7 @@ impl<M: Evaluate<N>, const N: usize> Evaluate<N> for InRates<'_, M> {
     fn accelerations_at<S: Scalar>(&self, t: S, q: &[S; N], rates: &[S; N]) -> Result<[S; N]> {
         let v = velocities::<M, S, N>(q, rates);
         let v_dot = self.0.accelerations_at(t, q, &v)?;
-        let bias = bias::<M, S, N>(q, rates);
-        let less: [S; N] = std::array::from_fn(|i| v_dot[i] - bias[i]);
-        Ok(free::position_rates(joints::<M, N>(), q, &less))
+        Ok(free::rate_accelerations(joints::<M, N>(), q, rates, &v_dot))
     }
     fn regular_accelerations_at(&self, _: f64, _: &[f64; N], _: &[f64; N]) -> Option<[f64; N]> {
         None
@@ -106,9 +98,7 @@ impl<M: Evaluate<N>, const N: usize> Evaluate<N> for InRates<'_, M> {
         qdd: &[S; N],
     ) -> [S; N] {
         let v = velocities::<M, S, N>(q, rates);
-        // v̇ = B q̈ + Ḃ q̇.
-        let (b_qdd, bias) = (velocities::<M, S, N>(q, qdd), bias::<M, S, N>(q, rates));
-        let v_dot: [S; N] = std::array::from_fn(|i| b_qdd[i] + bias[i]);
+        let v_dot = free::velocity_accelerations(joints::<M, N>(), q, rates, qdd);
         to_rates::<M, S, N>(q, &self.0.inverse_dynamics_at(t, q, &v, &v_dot))
     }
     fn kinetic_energy_at<S: Scalar>(&self, t: S, q: &[S; N], rates: &[S; N]) -> S {

@@ -7,7 +7,7 @@
 
 use crate::error::Result;
 use crate::integrate::dense::DenseOutput;
-use crate::integrate::newton::jacobian_rows;
+use crate::integrate::newton::{jacobian_rows, seeded};
 use crate::integrate::pair::{AccelerationField, Accepted, StepStart};
 use crate::tree::rigid::{free, Joint};
 use nalgebra::SMatrix;
@@ -19,23 +19,11 @@ pub(super) struct RatesField<'f, F> {
     pub(super) joints: &'static [Joint],
 }
 
-/// q̈ at (q, q̇) from v̇ at (q, v = B q̇): q̈ = G (v̇ − Ḃ q̇).
-fn from_velocities<const N: usize>(
-    joints: &[Joint],
-    q: &[f64; N],
-    rates: &[f64; N],
-    v_dot: &[f64; N],
-) -> [f64; N] {
-    let bias = free::velocity_bias(joints, q, rates);
-    let less: [f64; N] = std::array::from_fn(|i| v_dot[i] - bias[i]);
-    free::position_rates(joints, q, &less)
-}
-
 impl<F: AccelerationField<N>, const N: usize> AccelerationField<N> for RatesField<'_, F> {
     fn accelerations(&self, t: f64, q: &[f64; N], rates: &[f64; N]) -> Result<[f64; N]> {
         let v = free::velocities_from_rates(self.joints, q, rates);
         let v_dot = self.field.accelerations(t, q, &v)?;
-        Ok(from_velocities(self.joints, q, rates, &v_dot))
+        Ok(free::rate_accelerations(self.joints, q, rates, &v_dot))
     }
 
     /// With v = B(q) q̇, w = v̇(q, v) − Ḃ(q) q̇ and q̈ = G(q) w, by the chain rule:
@@ -77,10 +65,6 @@ impl<F: AccelerationField<N>, const N: usize> AccelerationField<N> for RatesFiel
     }
 }
 
-fn seeded<const N: usize>(x: &[f64; N]) -> [DualSVec<f64, N>; N] {
-    crate::integrate::newton::seeded(x)
-}
-
 fn constant<const N: usize>(x: &[f64; N]) -> [DualSVec<f64, N>; N] {
     std::array::from_fn(|j| DualSVec::from_re(x[j]))
 }
@@ -93,7 +77,7 @@ pub(super) fn start_in_rates<F: AccelerationField<N>, const N: usize>(
     v_dot: &[f64; N],
 ) -> ([f64; N], [f64; N]) {
     let rates = free::position_rates(rates_field.joints, q, v);
-    let qdd = from_velocities(rates_field.joints, q, &rates, v_dot);
+    let qdd = free::rate_accelerations(rates_field.joints, q, &rates, v_dot);
     (rates, qdd)
 }
 

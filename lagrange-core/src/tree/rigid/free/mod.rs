@@ -39,7 +39,8 @@ use nalgebra::{SMatrix, SVector};
 pub(crate) use quasi::congruent;
 pub use quasi::{
     angular_velocity_slots, equations_in_rates, has_angular_velocities, position_rates,
-    rate_forces, velocities_from_rates, velocity_bias, velocity_forces,
+    rate_accelerations, rate_forces, velocities_from_rates, velocity_accelerations, velocity_bias,
+    velocity_forces,
 };
 
 /// Whether the joint translates too: a free joint (six coordinates, p then c), not a ball joint

@@ -122,6 +122,35 @@ pub fn velocity_bias<S: Scalar, const N: usize>(
     on_orientations(joints, q, (rates, [S::zero(); N]), bias)
 }
 
+/// v̇ = B q̈ + Ḃ q̇: the velocities' rates of change from the coordinates' accelerations q̈ at
+/// (q, q̇).
+#[inline]
+pub fn velocity_accelerations<S: Scalar, const N: usize>(
+    joints: &[Joint],
+    q: &[S; N],
+    rates: &[S; N],
+    qdd: &[S; N],
+) -> [S; N] {
+    let (b_qdd, bias) = (
+        velocities_from_rates(joints, q, qdd),
+        velocity_bias(joints, q, rates),
+    );
+    std::array::from_fn(|i| b_qdd[i] + bias[i])
+}
+
+/// q̈ = G (v̇ − Ḃ q̇), the inverse of [`velocity_accelerations`].
+#[inline]
+pub fn rate_accelerations<S: Scalar, const N: usize>(
+    joints: &[Joint],
+    q: &[S; N],
+    rates: &[S; N],
+    v_dot: &[S; N],
+) -> [S; N] {
+    let bias = velocity_bias(joints, q, rates);
+    let less: [S; N] = std::array::from_fn(|i| v_dot[i] - bias[i]);
+    position_rates(joints, q, &less)
+}
+
 /// Bᵀ M B: a matrix on the velocities made one on the rates (column j is Bᵀ M B eⱼ).
 pub(crate) fn congruent<S: Scalar, const N: usize>(
     joints: &[Joint],
